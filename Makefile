@@ -1,0 +1,98 @@
+# rbillboard_lit.h - build, test, run and benchmark.
+#   make run     the showcase (a window when a display exists, else build/showcase.png)
+#   make test    every test, headless, under EGL and OSMesa; ends with "N passed, N failed"
+#   make bench   benchmarks (-O2) -> build/bench/results.csv and a table
+#   make shaders splice shaders/*.glsl into rbillboard_lit.h
+# raylib >= 6.0 is found by tests/tools/get-raylib.sh: pkg-config, then RAYLIB_SRC=<tree>, then
+# Debian's source package (built once into build/raylib).
+
+BUILD    ?= build
+CC       ?= cc
+WARN     := -Wall -Wextra -pedantic -Werror
+CSTD     := -std=c99 -D_DEFAULT_SOURCE
+TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
+BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
+SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps
+all: test
+
+# ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
+NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps
+ifeq ($(filter $(NO_RAYLIB_GOALS),$(MAKECMDGOALS)),)
+-include $(BUILD)/raylib.mk
+ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
+.PHONY: $(BUILD)/raylib.mk
+endif
+endif
+
+$(BUILD)/raylib.mk:
+	@mkdir -p $(BUILD)
+	@bash tests/tools/deps.sh
+	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib.sh > $@.tmp || { rm -f $@.tmp; exit 1; }
+	@echo "RAYLIB_FOUND_FOR := $(RAYLIB_SRC)" >> $@.tmp
+	@mv $@.tmp $@
+
+deps:
+	@bash tests/tools/deps.sh
+
+# ---- shaders ------------------------------------------------------------------------------
+shaders:
+	@bash shaders/embed.sh rbillboard_lit.h
+	@echo "shaders: rbillboard_lit.h is up to date with shaders/"
+
+check-shaders:
+	@bash shaders/embed.sh rbillboard_lit.h $(BUILD)/rbillboard_lit.check.h && cmp -s $(BUILD)/rbillboard_lit.check.h rbillboard_lit.h \
+	  || { echo "check-shaders: rbillboard_lit.h differs from shaders/ (run make shaders)"; exit 1; }
+
+# ---- tests --------------------------------------------------------------------------------
+HEADER    := rbillboard_lit.h
+HARNESS   := tests/harness.c tests/harness.h
+CPU_TESTS := tests/test_geometry.c tests/test_shaders_source.c tests/reference.h
+GPU_TESTS := tests/test_render.c tests/reference.h
+
+$(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/test_cpu_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/tests/test_cpu_san: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_cpu_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/tests/test_gpu: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/test_gpu_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_gpu
+	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" bash tests/run.sh
+
+# ---- showcase -----------------------------------------------------------------------------
+$(BUILD)/showcase: examples/billboards_lit_showcase.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/billboards_lit_showcase.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/showcase_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+run: $(BUILD)/showcase $(BUILD)/showcase_headless
+	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
+	  cd examples && ../$(BUILD)/showcase; \
+	else \
+	  echo "run: no display; rendering the showcase headlessly"; \
+	  $(BUILD)/showcase_headless $(BUILD)/showcase.png; \
+	fi
+
+# ---- benchmarks ---------------------------------------------------------------------------
+$(BUILD)/bench/bench_geometry: tests/bench/bench_geometry.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_geometry.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+bench: $(BUILD)/bench/bench_geometry
+	@BUILD=$(BUILD) bash tests/bench/run.sh
+
+clean:
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png
+
+clean-all:
+	rm -rf $(BUILD)

@@ -1,0 +1,451 @@
+/*******************************************************************************************
+*
+*   raylib [models] example - lit billboards showcase
+*
+*   Example complexity rating: [★★★☆] 3/4
+*
+*   Example originally created with raylib 6.0, last time updated with raylib 6.0
+*
+*   Example shows rbillboard_lit.h: playing cards drawn as billboards that carry normals and
+*   tangents, so a normal map embosses their symbols under moving coloured point lights.
+*   Everything is generated in code (no asset files):
+*     - the card faces (white rounded cards, red hearts / black spades, corner indices) are
+*       drawn with raylib Image functions into one atlas,
+*     - a height map of the same card (raised symbols, slightly raised frame) is turned into a
+*       tangent-space normal map (OpenGL convention: +X right, +Y up in the image),
+*     - the floor is a GenMeshPlane() Model whose material uses the same lit shader, so cards
+*       and floor are lit by the same lights.
+*   The cards go through the batched path (RblBeginBatch/RblBatchAdd/RblEndBatch): five cards
+*   stand upright turning around +Y toward the camera (RBL_FACING_AXIS) and one lies flat on
+*   the floor (RBL_FACING_FIXED); all six share one material, so the batch draws them at once.
+*
+*   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
+*   BSD-like license that allows static linking with closed source software
+*
+*   Copyright (c) 2026 rbillboard_lit contributors
+*
+********************************************************************************************/
+
+#include "raylib.h"
+
+#define RBILLBOARD_LIT_IMPLEMENTATION
+#include "rbillboard_lit.h"
+
+#include <math.h>           // sinf, cosf, atan2f, acosf, sqrtf
+
+//----------------------------------------------------------------------------------
+// Defines and Macros
+//----------------------------------------------------------------------------------
+#define CARD_COUNT              6           // Cards in the atlas (A to 6)
+#define CARD_ATLAS_COLUMNS      3
+#define CARD_W                  256         // Card size in the atlas, pixels
+#define CARD_H                  360
+#define CARD_SUPERSAMPLE        2           // Cards are drawn at 2x and scaled down (anti-aliasing)
+#define CARD_EMBOSS_BLUR        4           // Height map blur (pixels): width of the emboss bevels
+#define CARD_EMBOSS_STRENGTH    7.0f        // Height map slope to normal map tilt
+
+#define LIGHT_COUNT             4
+
+//----------------------------------------------------------------------------------
+// Types and Structures Definition
+//----------------------------------------------------------------------------------
+typedef enum { SUIT_HEART = 0, SUIT_SPADE } Suit;
+
+// A light circles the scene centre; everything is a function of time (reproducible frames)
+typedef struct LightPath {
+    Color color;
+    float intensity;
+    float radius;           // Orbit radius around the centre
+    float height;           // Mean height above the floor
+    float bob;              // Height variation
+    float speed;            // Radians per second (negative: clockwise seen from above)
+    float phase;            // Angle at time 0
+} LightPath;
+
+//----------------------------------------------------------------------------------
+// Global Variables Definition
+//----------------------------------------------------------------------------------
+static Camera3D showcaseCamera = { 0 };
+static const Color showcaseBackground = { 18, 20, 28, 255 };
+
+static RblLitShader showcaseLit = { 0 };    // One shader variant: 4 lights, normal map
+static RblBatch showcaseBatch = { 0 };
+static Material cardMaterial = { 0 };       // Card atlas (albedo + normal map) and the lit shader
+static Texture2D cardAlbedo = { 0 };
+static Texture2D cardNormal = { 0 };
+static Model floorModel = { 0 };
+static Texture2D floorAlbedo = { 0 };
+static Texture2D floorNormal = { 0 };       // 1x1 flat normal (128,128,255)
+static RblLight showcaseLights[LIGHT_COUNT] = { 0 };
+
+static const LightPath lightPaths[LIGHT_COUNT] = {
+    { { 255, 164,  72, 255 }, 5.0f, 3.0f, 1.1f, 0.30f,  0.55f, 0.6f },    // Warm orange, outer orbit
+    { {  72, 140, 255, 255 }, 5.0f, 3.0f, 1.5f, 0.35f,  0.55f, 3.7f },    // Blue, outer orbit, opposite
+    { { 255,  64, 176, 255 }, 2.2f, 0.9f, 1.1f, 0.25f, -0.90f, 2.0f },    // Magenta, inside the ring of cards
+    { {  96, 255, 136, 255 }, 3.0f, 2.4f, 0.45f, 0.15f, -0.40f, 5.0f },   // Green, low, grazing the floor
+};
+
+// 5x7 bitmap glyphs for the card ranks (drawn without a font, so headless renders work too)
+static const char *rankGlyphs[CARD_COUNT][7] = {
+    { " ### ", "#   #", "#   #", "#####", "#   #", "#   #", "#   #" },    // A
+    { " ### ", "#   #", "    #", "   # ", "  #  ", " #   ", "#####" },    // 2
+    { "#####", "   # ", "  #  ", "   # ", "    #", "#   #", " ### " },    // 3
+    { "   # ", "  ## ", " # # ", "#  # ", "#####", "   # ", "   # " },    // 4
+    { "#####", "#    ", "#### ", "    #", "    #", "#   #", " ### " },    // 5
+    { "  ## ", " #   ", "#    ", "#### ", "#   #", "#   #", " ### " },    // 6
+};
+
+//----------------------------------------------------------------------------------
+// Module Functions Declaration
+//----------------------------------------------------------------------------------
+static void ShowcaseInit(void);             // Generate textures, load shader, batch and floor
+static void ShowcaseUpdate(float time);     // Move the lights (a function of time only)
+static void ShowcaseDraw(void);             // Draw the 3D scene (inside BeginMode3D)
+static void ShowcaseUnload(void);           // Unload everything ShowcaseInit() loaded
+
+//------------------------------------------------------------------------------------
+// Program main entry point
+//------------------------------------------------------------------------------------
+#if !defined(RBL_SHOWCASE_NO_MAIN)
+int main(void)
+{
+    // Initialization
+    //--------------------------------------------------------------------------------------
+    const int screenWidth = 800;
+    const int screenHeight = 450;
+
+    InitWindow(screenWidth, screenHeight, "raylib [models] example - lit billboards showcase");
+
+    ShowcaseInit();                 // Cards, normal maps, lit shader, floor, camera
+
+    SetTargetFPS(60);               // Set our game to run at 60 frames-per-second
+    //--------------------------------------------------------------------------------------
+
+    // Main game loop
+    while (!WindowShouldClose())    // Detect window close button or ESC key
+    {
+        // Update
+        //----------------------------------------------------------------------------------
+        UpdateCamera(&showcaseCamera, CAMERA_ORBITAL);
+        ShowcaseUpdate((float)GetTime());
+        //----------------------------------------------------------------------------------
+
+        // Draw
+        //----------------------------------------------------------------------------------
+        BeginDrawing();
+
+            ClearBackground(showcaseBackground);
+
+            BeginMode3D(showcaseCamera);
+                ShowcaseDraw();
+            EndMode3D();
+
+            DrawText("Lit billboards: embossed cards under 4 moving point lights (mouse wheel: zoom)", 10, 40, 20, RAYWHITE);
+            DrawFPS(10, 10);
+
+        EndDrawing();
+        //----------------------------------------------------------------------------------
+    }
+
+    // De-Initialization
+    //--------------------------------------------------------------------------------------
+    ShowcaseUnload();               // Unload textures, shader, batch and floor
+
+    CloseWindow();                  // Close window and OpenGL context
+    //--------------------------------------------------------------------------------------
+
+    return 0;
+}
+#endif
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: card generation
+//----------------------------------------------------------------------------------
+// Fill a suit symbol of width size centred at (cx, cy); flipped turns it 180 degrees
+// (the lower pips of a playing card). A heart is two circles and the triangle between the
+// tangents from its tip; a spade is an upside-down heart on a triangular stem.
+static void DrawSuit(Image *image, Suit suit, float cx, float cy, float size, bool flipped, Color color)
+{
+    const float r = size/3.2f;          // Lobe radius
+    const float d = 0.6f*r;             // Lobe centre offset from the axis
+    const float tip = 2.2f*r;           // Tip distance below the lobe centres
+    const float f = flipped? -1.0f : 1.0f;
+    float lobeY = -0.6f*r;              // Heart: lobes up, tip down (local y grows downward)
+    float dir = 1.0f;                   // +1: tip below the lobes, -1: tip above (spade)
+
+    if (suit == SUIT_SPADE) { lobeY = 0.45f*r; dir = -1.0f; }
+
+    // Outer tangent point on the right lobe as seen from the tip
+    float dist = sqrtf(d*d + tip*tip);
+    float angle = atan2f(tip, -d) - acosf(r/dist);
+    float tx = d + r*cosf(angle), ty = r*sinf(angle);
+
+    Vector2 lobeL = { cx - f*d, cy + f*lobeY };
+    Vector2 lobeR = { cx + f*d, cy + f*lobeY };
+    Vector2 tipP = { cx, cy + f*(lobeY + dir*tip) };
+    Vector2 tanL = { cx - f*tx, cy + f*(lobeY + dir*ty) };
+    Vector2 tanR = { cx + f*tx, cy + f*(lobeY + dir*ty) };
+
+    ImageDrawCircleV(image, lobeL, (int)(r + 0.5f), color);
+    ImageDrawCircleV(image, lobeR, (int)(r + 0.5f), color);
+    ImageDrawTriangle(image, tanL, tanR, tipP, color);
+
+    if (suit == SUIT_SPADE)
+    {
+        Vector2 top = { cx, cy + f*0.3f*r };
+        Vector2 footL = { cx - f*0.6f*r, cy + f*1.85f*r };
+        Vector2 footR = { cx + f*0.6f*r, cy + f*1.85f*r };
+        ImageDrawTriangle(image, top, footL, footR, color);
+    }
+}
+
+// Draw a 5x7 rank glyph with its top-left corner at (x, y); flipped turns it 180 degrees
+static void DrawRank(Image *image, int rank, int x, int y, int cell, bool flipped, Color color)
+{
+    for (int row = 0; row < 7; row++)
+    {
+        for (int col = 0; col < 5; col++)
+        {
+            int gr = flipped? 6 - row : row, gc = flipped? 4 - col : col;
+            if (rankGlyphs[rank][gr][gc] == '#') ImageDrawRectangle(image, x + col*cell, y + row*cell, cell, cell, color);
+        }
+    }
+}
+
+// Draw card `rank` (0 = ace) at (ox, oy) in image, at scale s (pixels per atlas pixel).
+// The same call draws the albedo (colours) and the height map (grey levels): `bodyColor`,
+// `frameColor` and `inkColor` are either colours or heights.
+static void DrawCard(Image *image, int rank, int ox, int oy, int s, Color bodyColor, Color frameColor, Color inkColor)
+{
+    Suit suit = ((rank%2) == 0)? SUIT_SPADE : SUIT_HEART;    // A, 3, 5 spades; 2, 4, 6 hearts
+    const int w = CARD_W*s, h = CARD_H*s, radius = 22*s;
+
+    // Rounded white card: two overlapping rectangles and four corner circles
+    ImageDrawRectangle(image, ox + radius, oy, w - 2*radius, h, bodyColor);
+    ImageDrawRectangle(image, ox, oy + radius, w, h - 2*radius, bodyColor);
+    ImageDrawCircle(image, ox + radius, oy + radius, radius, bodyColor);
+    ImageDrawCircle(image, ox + w - radius - 1, oy + radius, radius, bodyColor);
+    ImageDrawCircle(image, ox + radius, oy + h - radius - 1, radius, bodyColor);
+    ImageDrawCircle(image, ox + w - radius - 1, oy + h - radius - 1, radius, bodyColor);
+
+    // Frame around the pip area
+    Rectangle frame = { (float)(ox + 44*s), (float)(oy + 40*s), (float)(w - 88*s), (float)(h - 80*s) };
+    ImageDrawRectangleLines(image, frame, 3*s, frameColor);
+
+    // Corner indices: rank and a small pip, top-left and (turned) bottom-right
+    const int cell = 4*s;
+    DrawRank(image, rank, ox + 12*s, oy + 12*s, cell, false, inkColor);
+    DrawSuit(image, suit, (float)(ox + 22*s), (float)(oy + 60*s), 20.0f*s, false, inkColor);
+    DrawRank(image, rank, ox + w - 12*s - 5*cell, oy + h - 12*s - 7*cell, cell, true, inkColor);
+    DrawSuit(image, suit, (float)(ox + w - 22*s), (float)(oy + h - 60*s), 20.0f*s, true, inkColor);
+
+    // Pips: columns 1/3, 1/2, 2/3 of the width, rows 1/4, 1/2, 3/4 of the height
+    const float colX[3] = { 0.33f*w, 0.5f*w, 0.67f*w };
+    const float rowY[3] = { 0.25f*h, 0.5f*h, 0.75f*h };
+    const float pip = 46.0f*s;
+    const int n = rank + 1;
+
+    if (n == 1) DrawSuit(image, suit, ox + colX[1], oy + rowY[1], 120.0f*s, false, inkColor);
+    if ((n == 2) || (n == 3))
+    {
+        DrawSuit(image, suit, ox + colX[1], oy + rowY[0], pip, false, inkColor);
+        DrawSuit(image, suit, ox + colX[1], oy + rowY[2], pip, true, inkColor);
+    }
+    if (n >= 4)
+    {
+        DrawSuit(image, suit, ox + colX[0], oy + rowY[0], pip, false, inkColor);
+        DrawSuit(image, suit, ox + colX[2], oy + rowY[0], pip, false, inkColor);
+        DrawSuit(image, suit, ox + colX[0], oy + rowY[2], pip, true, inkColor);
+        DrawSuit(image, suit, ox + colX[2], oy + rowY[2], pip, true, inkColor);
+    }
+    if ((n == 3) || (n == 5)) DrawSuit(image, suit, ox + colX[1], oy + rowY[1], pip, false, inkColor);
+    if (n == 6)
+    {
+        DrawSuit(image, suit, ox + colX[0], oy + rowY[1], pip, false, inkColor);
+        DrawSuit(image, suit, ox + colX[2], oy + rowY[1], pip, false, inkColor);
+    }
+}
+
+// Atlas source rectangle of card `rank`
+static Rectangle CardSource(int rank)
+{
+    Rectangle source = { (float)((rank%CARD_ATLAS_COLUMNS)*CARD_W), (float)((rank/CARD_ATLAS_COLUMNS)*CARD_H), (float)CARD_W, (float)CARD_H };
+    return source;
+}
+
+// Tangent-space normal map from a height map (red channel, 0..255 = 0..1) by central differences.
+// OpenGL convention: +Y is up in the image, and image row 0 is the top, so "up" is row - 1.
+static Image GenNormalMapFromHeight(Image height, float strength)
+{
+    Color *heights = LoadImageColors(height);
+    Image normal = GenImageColor(height.width, height.height, BLANK);
+    Color *out = (Color *)normal.data;
+    const int w = height.width, h = height.height;
+
+    for (int y = 0; y < h; y++)
+    {
+        int up = (y > 0)? y - 1 : y, down = (y < h - 1)? y + 1 : y;
+        for (int x = 0; x < w; x++)
+        {
+            int left = (x > 0)? x - 1 : x, right = (x < w - 1)? x + 1 : x;
+            float dhdx = (heights[y*w + right].r - heights[y*w + left].r)/255.0f/(float)(right - left);
+            float dhdy = (heights[up*w + x].r - heights[down*w + x].r)/255.0f/(float)(down - up);  // along image up
+            float nx = -strength*dhdx, ny = -strength*dhdy, nz = 1.0f;
+            float inv = 1.0f/sqrtf(nx*nx + ny*ny + nz*nz);
+            out[y*w + x].r = (unsigned char)(127.5f + 127.5f*nx*inv);
+            out[y*w + x].g = (unsigned char)(127.5f + 127.5f*ny*inv);
+            out[y*w + x].b = (unsigned char)(127.5f + 127.5f*nz*inv);
+            out[y*w + x].a = 255;
+        }
+    }
+
+    UnloadImageColors(heights);
+    return normal;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: scene
+//----------------------------------------------------------------------------------
+static void ShowcaseInit(void)
+{
+    // Camera: orbits the scene centre (CAMERA_ORBITAL in the window)
+    showcaseCamera.position = (Vector3){ 0.0f, 2.6f, 6.2f };
+    showcaseCamera.target = (Vector3){ 0.0f, 0.55f, 0.0f };
+    showcaseCamera.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    showcaseCamera.fovy = 45.0f;
+    showcaseCamera.projection = CAMERA_PERSPECTIVE;
+
+    // Card atlas (albedo and height), drawn at CARD_SUPERSAMPLE x and scaled down
+    const int s = CARD_SUPERSAMPLE;
+    const int atlasW = CARD_ATLAS_COLUMNS*CARD_W, atlasH = ((CARD_COUNT + CARD_ATLAS_COLUMNS - 1)/CARD_ATLAS_COLUMNS)*CARD_H;
+    const Color paper = { 250, 248, 240, 255 };
+    Color clear = paper;
+    clear.a = 0;                                        // Transparent corners keep the paper colour (no dark fringes)
+    Image albedo = GenImageColor(atlasW*s, atlasH*s, clear);
+    Image height = GenImageColor(atlasW*s, atlasH*s, BLACK);
+    for (int rank = 0; rank < CARD_COUNT; rank++)
+    {
+        Rectangle cell = CardSource(rank);
+        Color ink = ((rank%2) == 0)? (Color){ 24, 24, 32, 255 } : (Color){ 200, 22, 40, 255 };
+        DrawCard(&albedo, rank, (int)cell.x*s, (int)cell.y*s, s, paper, (Color){ 214, 178, 96, 255 }, ink);
+        DrawCard(&height, rank, (int)cell.x*s, (int)cell.y*s, s, (Color){ 40, 40, 40, 255 }, (Color){ 110, 110, 110, 255 }, WHITE);
+    }
+    ImageResize(&albedo, atlasW, atlasH);
+    ImageResize(&height, atlasW, atlasH);
+    ImageBlurGaussian(&height, CARD_EMBOSS_BLUR);       // Soft bevels: the symbols read as embossed
+    Image normal = GenNormalMapFromHeight(height, CARD_EMBOSS_STRENGTH);
+
+    cardAlbedo = LoadTextureFromImage(albedo);
+    cardNormal = LoadTextureFromImage(normal);
+    GenTextureMipmaps(&cardAlbedo);
+    GenTextureMipmaps(&cardNormal);
+    SetTextureFilter(cardAlbedo, TEXTURE_FILTER_TRILINEAR);
+    SetTextureFilter(cardNormal, TEXTURE_FILTER_TRILINEAR);
+    UnloadImage(albedo);
+    UnloadImage(height);
+    UnloadImage(normal);
+
+    // One lit shader variant for cards and floor: LIGHT_COUNT lights, normal map
+    RblLitShaderDesc desc = { 0 };
+    desc.maxLights = LIGHT_COUNT;
+    desc.normalMap = true;
+    showcaseLit = RblLoadLitShader(desc);
+    if (!RblIsLitShaderValid(showcaseLit)) TraceLog(LOG_WARNING, "SHOWCASE: lit shader failed to compile");
+
+    cardMaterial = LoadMaterialDefault();
+    cardMaterial.shader = showcaseLit.shader;
+    cardMaterial.maps[MATERIAL_MAP_ALBEDO].texture = cardAlbedo;
+    cardMaterial.maps[MATERIAL_MAP_NORMAL].texture = cardNormal;
+
+    showcaseBatch = RblLoadBatch(16);
+
+    // Floor: a plane with tangents, a grey checker albedo and a flat normal map
+    Mesh plane = GenMeshPlane(16.0f, 16.0f, 1, 1);
+    GenMeshTangents(&plane);
+    floorModel = LoadModelFromMesh(plane);
+
+    Image checker = GenImageChecked(512, 512, 32, 32, (Color){ 150, 150, 156, 255 }, (Color){ 112, 112, 120, 255 });
+    floorAlbedo = LoadTextureFromImage(checker);
+    GenTextureMipmaps(&floorAlbedo);
+    SetTextureFilter(floorAlbedo, TEXTURE_FILTER_TRILINEAR);
+    UnloadImage(checker);
+
+    Image flat = GenImageColor(1, 1, (Color){ 128, 128, 255, 255 });
+    floorNormal = LoadTextureFromImage(flat);
+    UnloadImage(flat);
+
+    floorModel.materials[0].shader = showcaseLit.shader;
+    floorModel.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorAlbedo;
+    floorModel.materials[0].maps[MATERIAL_MAP_NORMAL].texture = floorNormal;
+
+    ShowcaseUpdate(0.0f);
+}
+
+static void ShowcaseUpdate(float time)
+{
+    for (int i = 0; i < LIGHT_COUNT; i++)
+    {
+        const LightPath *path = &lightPaths[i];
+        float angle = path->phase + path->speed*time;
+        showcaseLights[i].position = (Vector3){ path->radius*cosf(angle),
+                                                path->height + path->bob*sinf(2.3f*angle + path->phase),
+                                                path->radius*sinf(angle) };
+        showcaseLights[i].color = path->color;
+        showcaseLights[i].intensity = path->intensity;
+        showcaseLights[i].range = 8.0f;
+    }
+
+    RblSetLights(&showcaseLit, showcaseLights, LIGHT_COUNT, (Color){ 34, 34, 44, 255 });
+}
+
+static void ShowcaseDraw(void)
+{
+    // Floor (a raylib Model lit by the same shader)
+    DrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+
+    // Cards: one batch, one material, two facing modes
+    RblBeginBatch(&showcaseBatch, showcaseCamera);
+
+    for (int i = 0; i < 5; i++)
+    {
+        // Five cards standing on a ring, turning around +Y toward the camera
+        float angle = (126.0f + 72.0f*i)*DEG2RAD;
+        RblBillboard card = { 0 };
+        card.position = (Vector3){ 1.8f*cosf(angle), 0.0f, 1.8f*sinf(angle) };
+        card.size = (Vector2){ 1.0f, 1.4f };
+        card.origin = (Vector2){ 0.5f, 0.0f };          // Pivot at the bottom centre: stands on the floor
+        card.source = CardSource(i);
+        card.facing = RBL_FACING_AXIS;                  // Axis defaults to +Y
+        RblBatchAdd(&showcaseBatch, cardMaterial, &card);
+    }
+
+    // The six of hearts lies on the floor in the middle of the ring
+    RblBillboard flatCard = { 0 };
+    flatCard.position = (Vector3){ 0.0f, 0.01f, 0.0f };
+    flatCard.size = (Vector2){ 1.0f, 1.4f };
+    flatCard.origin = (Vector2){ 0.5f, 0.7f };
+    flatCard.source = CardSource(5);
+    flatCard.facing = RBL_FACING_FIXED;
+    flatCard.axis = (Vector3){ 0.0f, 1.0f, 0.0f };      // Faces up
+    flatCard.up = (Vector3){ 0.34f, 0.0f, -0.94f };     // Top edge points away, turned a little
+    RblBatchAdd(&showcaseBatch, cardMaterial, &flatCard);
+
+    RblEndBatch(&showcaseBatch);
+
+    // Lights, unlit
+    for (int i = 0; i < LIGHT_COUNT; i++) DrawSphereEx(showcaseLights[i].position, 0.07f, 8, 12, showcaseLights[i].color);
+}
+
+static void ShowcaseUnload(void)
+{
+    RblUnloadBatch(&showcaseBatch);
+    RblClose();                                     // Immediate path buffers (unused here, harmless)
+
+    UnloadModel(floorModel);                        // Mesh and material maps; not shaders or textures
+    MemFree(cardMaterial.maps);                     // UnloadMaterial() would unload the shared shader
+    UnloadTexture(floorAlbedo);
+    UnloadTexture(floorNormal);
+    UnloadTexture(cardAlbedo);
+    UnloadTexture(cardNormal);
+    RblUnloadLitShader(showcaseLit);
+}

@@ -1,0 +1,30 @@
+// Forward lit vertex shader: billboards (world-space vertices, matModel = identity) and raylib
+// Models (matModel = the model transform) go through the same code.
+// The loader prepends "#version 330" and the variant's #defines.
+
+in vec3 vertexPosition;
+in vec2 vertexTexCoord;
+in vec3 vertexNormal;
+in vec4 vertexColor;
+in vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)
+
+uniform mat4 mvp;
+uniform mat4 matModel;
+uniform mat4 matNormal;
+
+out vec3 fragPosition;
+out vec2 fragTexCoord;
+out vec4 fragColor;
+out vec3 fragNormal;
+out vec4 fragTangent;
+
+void main()
+{
+    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));
+    fragTexCoord = vertexTexCoord;
+    fragColor = vertexColor;
+    fragNormal = mat3(matNormal)*vertexNormal;
+    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.
+    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);
+    gl_Position = mvp*vec4(vertexPosition, 1.0);
+}

@@ -1,0 +1,524 @@
+// Benchmark suite "geometry": CPU cost of submitting camera-facing billboards, per billboard, for
+//   raylib     DrawBillboardPro() per billboard, then rlDrawRenderBatchActive()
+//   immediate  RblDrawBillboard() per billboard (one upload and one draw each)
+//   batched    RblBeginBatch(), RblBatchAdd() per billboard, RblEndBatch() (batch loaded once)
+// at 1k / 10k / 100k billboards, without and with rotation, plus bytes uploaded per billboard,
+// a memcpy bandwidth floor and the batched corners' deviation from a double-precision reference.
+//
+// Timed region: from the first draw call to the end of the flush call. glFinish() runs before
+// and after it, outside, so the GPU's earlier and later work is not counted. On a software GL
+// (llvmpipe) the driver's vertex processing and binning run inside the draw call itself, so they
+// are part of the measured submission; rasterisation is kept cheap with a 64x64 render target.
+//
+// Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
+// Usage: bench_geometry [filter]   only cases whose name (e.g. batched_100000_rot) contains filter
+// run (for profiling); the accuracy and bandwidth rows are always written.
+#define RBILLBOARD_LIT_IMPLEMENTATION
+#include "rbillboard_lit.h"
+#include "rlgl.h"
+#include "harness.h"
+#include "bench.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+//----------------------------------------------------------------------------------
+// Defines and Macros
+//----------------------------------------------------------------------------------
+#define SUITE               "geometry"
+#define MAX_BILLBOARDS      100000      // Largest case; smaller cases use a prefix of the same set
+#define TARGET_SIZE         64          // Render target side (small: rasterisation stays cheap)
+#define ATLAS_SIZE          256         // Albedo texture side
+#define ATLAS_FRAME         32          // Atlas frame side (8x8 frames)
+#define SCENE_SEED          0x2545F491u // Fixed seed of the billboard set
+#define IMMEDIATE_MAX_FRAME_S 1.0       // Immediate cases estimated slower than this per frame are skipped
+#define MEMCPY_BYTES        (64u*1024u*1024u)
+#define MEMCPY_RUNS         7
+
+//----------------------------------------------------------------------------------
+// Types and Structures Definition
+//----------------------------------------------------------------------------------
+typedef enum { PATH_RAYLIB = 0, PATH_IMMEDIATE, PATH_BATCHED, PATH_COUNT } BenchPath;
+
+// DrawBillboardPro() arguments of one billboard (up is (0,1,0) and tint WHITE for all)
+typedef struct RaylibBillboard {
+    Rectangle source;
+    Vector3 position;
+    Vector2 size;
+    Vector2 origin;
+    float rotation;
+} RaylibBillboard;
+
+// One timed case
+typedef struct FrameCase {
+    BenchPath path;
+    int count;              // Billboards per frame
+    int rotated;            // 0: rotation = 0, 1: random rotation
+} FrameCase;
+
+// Medians of one case
+typedef struct CaseResult {
+    bool measured;
+    double nsPerBillboard;  // Submission: first draw call to end of the flush
+    double submitNs;        // Draw calls only (raylib: includes its automatic flushes every 8192 quads)
+    double flushNs;         // Flush call only
+    double skippedFrameS;   // Estimated frame time when not measured
+    int frames;
+} CaseResult;
+
+//----------------------------------------------------------------------------------
+// Global Variables Definition
+//----------------------------------------------------------------------------------
+static const char *pathNames[PATH_COUNT] = { "raylib", "immediate", "batched" };
+static const int counts[] = { 1000, 10000, 100000 };
+#define COUNT_CASES ((int)(sizeof(counts)/sizeof(counts[0])))
+
+static Camera3D camera;
+static RenderTexture2D target;
+static Texture2D atlas;
+static RblLitShader lit;
+static Material material;
+static RblBatch batch;
+static RaylibBillboard *raylibSet[2];       // [rotated]
+static RblBillboard *rblSet[2];             // [rotated], the same billboards as RblBillboard
+
+static CaseResult results[PATH_COUNT][COUNT_CASES][2];
+
+//----------------------------------------------------------------------------------
+// Scene
+//----------------------------------------------------------------------------------
+// Fixed-seed billboards in a box in front of the camera: sizes 0.5..2, pivot at the centre,
+// random 32x32 atlas frames; the rotated set is the same set with a random rotation each.
+static bool BuildScene(void)
+{
+    camera.position = (Vector3){ 0.0f, 3.0f, 12.0f };
+    camera.target = (Vector3){ 0.0f, 1.0f, 0.0f };
+    camera.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    camera.fovy = 60.0f;
+    camera.projection = CAMERA_PERSPECTIVE;
+
+    for (int r = 0; r < 2; r++)
+    {
+        raylibSet[r] = (RaylibBillboard *)calloc(MAX_BILLBOARDS, sizeof(RaylibBillboard));
+        rblSet[r] = (RblBillboard *)calloc(MAX_BILLBOARDS, sizeof(RblBillboard));
+        if ((raylibSet[r] == NULL) || (rblSet[r] == NULL)) return false;
+    }
+
+    unsigned int seed = SCENE_SEED;
+    const int framesPerRow = ATLAS_SIZE/ATLAS_FRAME;
+    for (int i = 0; i < MAX_BILLBOARDS; i++)
+    {
+        RaylibBillboard a;
+        a.position.x = rtRandomRange(&seed, -10.0f, 10.0f);
+        a.position.y = rtRandomRange(&seed, -2.0f, 5.0f);
+        a.position.z = rtRandomRange(&seed, -15.0f, 3.0f);
+        a.size.x = rtRandomRange(&seed, 0.5f, 2.0f);
+        a.size.y = rtRandomRange(&seed, 0.5f, 2.0f);
+        a.origin = (Vector2){ a.size.x*0.5f, a.size.y*0.5f };
+        int frame = (int)(rtRandom(&seed)%(unsigned int)(framesPerRow*framesPerRow));
+        a.source = (Rectangle){ (float)((frame%framesPerRow)*ATLAS_FRAME), (float)((frame/framesPerRow)*ATLAS_FRAME), (float)ATLAS_FRAME, (float)ATLAS_FRAME };
+        float rotation = rtRandomRange(&seed, 0.0f, 360.0f);
+
+        for (int r = 0; r < 2; r++)
+        {
+            a.rotation = (r == 1)? rotation : 0.0f;
+            raylibSet[r][i] = a;
+
+            RblBillboard *b = &rblSet[r][i];
+            memset(b, 0, sizeof(*b));
+            b->position = a.position;
+            b->size = a.size;
+            b->origin = a.origin;
+            b->rotation = a.rotation;
+            b->source = a.source;
+            b->tint = WHITE;
+            b->facing = RBL_FACING_CAMERA_PLANE;
+            b->up = (Vector3){ 0.0f, 1.0f, 0.0f };      // as the baseline's DrawBillboardPro up
+        }
+    }
+    return true;
+}
+
+static void FreeScene(void)
+{
+    for (int r = 0; r < 2; r++) { free(raylibSet[r]); free(rblSet[r]); }
+}
+
+//----------------------------------------------------------------------------------
+// Timed frame
+//----------------------------------------------------------------------------------
+// out[0] = ns per billboard (first draw call .. end of flush), out[1] = draw calls, out[2] = flush
+static void RunFrame(void *ctx, double *out)
+{
+    const FrameCase *fc = (const FrameCase *)ctx;
+    const int n = fc->count;
+    const RaylibBillboard *args = raylibSet[fc->rotated];
+    const RblBillboard *bbs = rblSet[fc->rotated];
+    const Vector3 up = { 0.0f, 1.0f, 0.0f };
+
+    BeginTextureMode(target);
+    ClearBackground(BLACK);
+    BeginMode3D(camera);
+    rlDrawRenderBatchActive();
+    rtFinish();
+
+    double t0 = BenchNowNs(), t1 = t0;
+    switch (fc->path)
+    {
+        case PATH_RAYLIB:
+        {
+            for (int i = 0; i < n; i++)
+            {
+                const RaylibBillboard *a = &args[i];
+                DrawBillboardPro(camera, atlas, a->source, a->position, up, a->size, a->origin, a->rotation, WHITE);
+            }
+            t1 = BenchNowNs();
+            rlDrawRenderBatchActive();
+        } break;
+        case PATH_IMMEDIATE:
+        {
+            for (int i = 0; i < n; i++) RblDrawBillboard(camera, material, bbs[i]);
+            t1 = BenchNowNs();
+        } break;
+        case PATH_BATCHED:
+        {
+            RblBeginBatch(&batch, camera);
+            for (int i = 0; i < n; i++) RblBatchAdd(&batch, material, &bbs[i]);
+            t1 = BenchNowNs();
+            RblEndBatch(&batch);
+        } break;
+        default: break;
+    }
+    double t2 = BenchNowNs();
+
+    rtFinish();
+    EndMode3D();
+    EndTextureMode();
+
+    out[0] = (t2 - t0)/n;
+    out[1] = (t1 - t0)/n;
+    out[2] = (t2 - t1)/n;
+}
+
+//----------------------------------------------------------------------------------
+// Double-precision reference of DrawBillboardPro (positive sizes)
+//----------------------------------------------------------------------------------
+typedef struct D3 { double x, y, z; } D3;
+
+static D3 D3Make(double x, double y, double z) { D3 v; v.x = x; v.y = y; v.z = z; return v; }
+static D3 D3From(Vector3 v) { return D3Make(v.x, v.y, v.z); }
+static D3 D3Add(D3 a, D3 b) { return D3Make(a.x + b.x, a.y + b.y, a.z + b.z); }
+static D3 D3Sub(D3 a, D3 b) { return D3Make(a.x - b.x, a.y - b.y, a.z - b.z); }
+static D3 D3Scale(D3 a, double s) { return D3Make(a.x*s, a.y*s, a.z*s); }
+static double D3Dot(D3 a, D3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
+static double D3Length(D3 a) { return sqrt(D3Dot(a, a)); }
+static D3 D3Cross(D3 a, D3 b) { return D3Make(a.y*b.z - a.z*b.y, a.z*b.x - a.x*b.z, a.x*b.y - a.y*b.x); }
+static D3 D3Normalize(D3 a)
+{
+    double len = D3Length(a);
+    return (len > 0.0)? D3Scale(a, 1.0/len) : a;
+}
+
+// Corners bottom-left, bottom-right, top-right, top-left (DrawBillboardPro's points[0..3]):
+// right = row 0 of the lookAt view matrix scaled by size.x, up scaled by size.y, pivot origin
+// measured from the bottom-left, rotation counter-clockwise about cross(right, up).
+static void ReferenceCorners(Camera3D cam, Vector3 upIn, const RaylibBillboard *a, D3 corners[4])
+{
+    D3 back = D3Normalize(D3Sub(D3From(cam.position), D3From(cam.target)));
+    D3 right = D3Normalize(D3Cross(D3From(cam.up), back));
+    right = D3Scale(right, a->size.x);
+    D3 up = D3Scale(D3From(upIn), a->size.y);
+    D3 origin3D = D3Add(D3Scale(D3Normalize(right), a->origin.x), D3Scale(D3Normalize(up), a->origin.y));
+
+    D3 points[4] = { D3Make(0.0, 0.0, 0.0), right, D3Add(up, right), up };
+    D3 axis = D3Normalize(D3Cross(right, up));
+    double angle = (double)a->rotation*(3.14159265358979323846/180.0);
+    double c = cos(angle), s = sin(angle);
+    for (int i = 0; i < 4; i++)
+    {
+        D3 p = D3Sub(points[i], origin3D);
+        if (a->rotation != 0.0f)
+        {
+            // Rodrigues: p cos + (k x p) sin + k (k.p)(1 - cos)
+            p = D3Add(D3Add(D3Scale(p, c), D3Scale(D3Cross(axis, p), s)), D3Scale(axis, D3Dot(axis, p)*(1.0 - c)));
+        }
+        corners[i] = D3Add(p, D3From(a->position));
+    }
+}
+
+// Deviation of float corners (xyz every strideFloats floats, 4 per billboard) from the reference;
+// *maxError in world units, *scale = largest reference corner distance from the world origin
+static void CornerError(const float *positions, int strideFloats, const RaylibBillboard *args, int n, double *maxError, double *scale)
+{
+    const Vector3 up = { 0.0f, 1.0f, 0.0f };
+    for (int i = 0; i < n; i++)
+    {
+        D3 ref[4];
+        ReferenceCorners(camera, up, &args[i], ref);
+        for (int k = 0; k < 4; k++)
+        {
+            const float *p = positions + (size_t)(i*4 + k)*strideFloats;
+            double e = D3Length(D3Sub(D3Make(p[0], p[1], p[2]), ref[k]));
+            if (e > *maxError) *maxError = e;
+            double r = D3Length(ref[k]);
+            if (r > *scale) *scale = r;
+        }
+    }
+}
+
+// raylib's own corners for the same set, read back from a private rlgl batch before it is drawn
+static void RaylibCornerError(int n, int rotated, double *maxError, double *scale)
+{
+    const Vector3 up = { 0.0f, 1.0f, 0.0f };
+    rlRenderBatch own = rlLoadRenderBatch(1, n + 1);
+    BeginTextureMode(target);
+    BeginMode3D(camera);
+    rlSetRenderBatchActive(&own);
+    for (int i = 0; i < n; i++)
+    {
+        const RaylibBillboard *a = &raylibSet[rotated][i];
+        DrawBillboardPro(camera, atlas, a->source, a->position, up, a->size, a->origin, a->rotation, WHITE);
+    }
+    CornerError(own.vertexBuffer[0].vertices, 3, raylibSet[rotated], n, maxError, scale);
+    rlSetRenderBatchActive(NULL);       // draws what it holds, returns to the default batch
+    EndMode3D();
+    EndTextureMode();
+    rlUnloadRenderBatch(own);
+}
+
+//----------------------------------------------------------------------------------
+// memcpy bandwidth
+//----------------------------------------------------------------------------------
+static void *(*volatile benchCopy)(void *, const void *, size_t) = memcpy;   // not elided
+
+// Median GB/s (= bytes per ns) of copying MEMCPY_BYTES, 0 on allocation failure
+static double MeasureMemcpyBandwidth(void)
+{
+    unsigned char *src = (unsigned char *)malloc(MEMCPY_BYTES);
+    unsigned char *dst = (unsigned char *)malloc(MEMCPY_BYTES);
+    double gbps = 0.0;
+    if ((src != NULL) && (dst != NULL))
+    {
+        memset(src, 0x5A, MEMCPY_BYTES);
+        memset(dst, 0xA5, MEMCPY_BYTES);    // pages touched before timing
+        double samples[MEMCPY_RUNS];
+        benchCopy(dst, src, MEMCPY_BYTES);  // warm-up
+        for (int i = 0; i < MEMCPY_RUNS; i++)
+        {
+            double t0 = BenchNowNs();
+            benchCopy(dst, src, MEMCPY_BYTES);
+            samples[i] = (double)MEMCPY_BYTES/(BenchNowNs() - t0);
+        }
+        gbps = BenchMedian(samples, MEMCPY_RUNS);
+        if (dst[MEMCPY_BYTES/2] != 0x5A) gbps = 0.0;
+    }
+    free(src);
+    free(dst);
+    return gbps;
+}
+
+//----------------------------------------------------------------------------------
+// Main
+//----------------------------------------------------------------------------------
+static void CaseName(char *buf, size_t size, BenchPath path, int n, int rotated)
+{
+    snprintf(buf, size, "%s_%d_%s", pathNames[path], n, rotated? "rot" : "norot");
+}
+
+int main(int argc, char **argv)
+{
+    const char *filter = (argc > 1)? argv[1] : NULL;
+    double benchStart = BenchNowNs();
+    const char *backend = rtInitContext(TARGET_SIZE, TARGET_SIZE);
+    if (backend == NULL) { printf("bench_geometry: no GL context\n"); return 1; }
+
+    target = LoadRenderTexture(TARGET_SIZE, TARGET_SIZE);
+    Image checked = GenImageChecked(ATLAS_SIZE, ATLAS_SIZE, ATLAS_FRAME/2, ATLAS_FRAME/2, ORANGE, DARKBLUE);
+    atlas = LoadTextureFromImage(checked);
+    UnloadImage(checked);
+
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    lit = RblLoadLitShader(desc);
+    RblLight light = { { 0.0f, 6.0f, 8.0f }, WHITE, 60.0f, 0.0f };
+    if (!RblIsLitShaderValid(lit) || !RblSetLights(&lit, &light, 1, (Color){ 40, 40, 40, 255 }))
+    {
+        printf("bench_geometry: lit shader failed\n");
+        return 1;
+    }
+    material = LoadMaterialDefault();
+    material.shader = lit.shader;
+    material.maps[MATERIAL_MAP_ALBEDO].texture = atlas;
+
+    batch = RblLoadBatch(MAX_BILLBOARDS);     // enough for the largest case: never grows
+    if ((target.id == 0) || (atlas.id == 0) || !RblIsBatchValid(batch) || !BuildScene())
+    {
+        printf("bench_geometry: setup failed\n");
+        return 1;
+    }
+
+    printf("bench_geometry: GL context %s, render target %dx%d, atlas %dx%d, billboards in a box in front of the camera\n",
+           backend, TARGET_SIZE, TARGET_SIZE, ATLAS_SIZE, ATLAS_SIZE);
+    fflush(stdout);
+
+    const BenchTiming timing = { 2, 5, 15, 2.0e9 };     // warm-up 2, median of 5..15 frames, ~2 s per case
+    char name[64];
+    double batchedError[COUNT_CASES] = { 0 }, batchedScale[COUNT_CASES] = { 0 };
+
+    for (int c = 0; c < COUNT_CASES; c++)
+    {
+        for (int rotated = 0; rotated < 2; rotated++)
+        {
+            for (int p = 0; p < PATH_COUNT; p++)
+            {
+                CaseResult *res = &results[p][c][rotated];
+                CaseName(name, sizeof(name), (BenchPath)p, counts[c], rotated);
+                if ((filter != NULL) && (strstr(name, filter) == NULL)) continue;
+
+                // The immediate path costs one upload and one draw per billboard: skip a case whose
+                // frame the previous (smaller) case predicts to be too slow for this benchmark
+                if ((p == PATH_IMMEDIATE) && (c > 0) && results[p][c - 1][rotated].measured)
+                {
+                    double estimate = results[p][c - 1][rotated].nsPerBillboard*counts[c]*1e-9;
+                    if (estimate > IMMEDIATE_MAX_FRAME_S)
+                    {
+                        res->skippedFrameS = estimate;
+                        BenchCsvRow(SUITE, name, "skipped_estimated_frame_s", estimate, "s");
+                        printf("  %-26s skipped: estimated %.2f s per frame (> %.1f s)\n", name, estimate, IMMEDIATE_MAX_FRAME_S);
+                        fflush(stdout);
+                        continue;
+                    }
+                }
+
+                FrameCase fc = { (BenchPath)p, counts[c], rotated };
+                double medians[3];
+                res->frames = BenchMedianOfRuns(RunFrame, &fc, 3, timing, medians);
+                res->measured = true;
+                res->nsPerBillboard = medians[0];
+                res->submitNs = medians[1];
+                res->flushNs = medians[2];
+
+                BenchCsvRow(SUITE, name, "ns_per_billboard", res->nsPerBillboard, "ns");
+                if (p != PATH_IMMEDIATE)
+                {
+                    BenchCsvRow(SUITE, name, "submit_ns_per_billboard", res->submitNs, "ns");
+                    BenchCsvRow(SUITE, name, "flush_ns_per_billboard", res->flushNs, "ns");
+                }
+                BenchCsvRow(SUITE, name, "frames", res->frames, "count");
+                printf("  %-26s %10.1f ns/billboard (median of %d frames)\n", name, res->nsPerBillboard, res->frames);
+                fflush(stdout);
+
+                if (p == PATH_BATCHED)
+                {
+                    // The last frame's vertices are still in the batch: exactly what was uploaded
+                    if ((batch.count != counts[c]) || (batch.skipped != 0))
+                    {
+                        printf("bench_geometry: batch holds %d billboards (%d skipped), expected %d\n", batch.count, batch.skipped, counts[c]);
+                        return 1;
+                    }
+                    CornerError(batch.vertices[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
+                }
+            }
+
+            const CaseResult *base = &results[PATH_RAYLIB][c][rotated];
+            for (int p = 0; p < PATH_COUNT; p++)
+            {
+                const CaseResult *res = &results[p][c][rotated];
+                if (!res->measured || !base->measured) continue;
+                CaseName(name, sizeof(name), (BenchPath)p, counts[c], rotated);
+                BenchCsvRow(SUITE, name, "ratio_to_raylib", res->nsPerBillboard/base->nsPerBillboard, "x");
+            }
+        }
+    }
+
+    // Corner accuracy: batched (the immediate path runs the same code) and raylib itself, both
+    // against the double-precision DrawBillboardPro reference, over the rotated and unrotated sets
+    for (int c = 0; c < COUNT_CASES; c++)
+    {
+        double raylibError = 0.0, raylibScale = 0.0;
+        for (int rotated = 0; rotated < 2; rotated++) RaylibCornerError(counts[c], rotated, &raylibError, &raylibScale);
+        if (batchedScale[c] > 0.0)      // batched cases of this size were run
+        {
+            snprintf(name, sizeof(name), "batched_%d", counts[c]);
+            BenchCsvRow(SUITE, name, "max_corner_error", batchedError[c], "world_units");
+            BenchCsvRow(SUITE, name, "max_corner_rel_error", batchedError[c]/batchedScale[c], "rel");
+        }
+        snprintf(name, sizeof(name), "raylib_%d", counts[c]);
+        BenchCsvRow(SUITE, name, "max_corner_error", raylibError, "world_units");
+        BenchCsvRow(SUITE, name, "max_corner_rel_error", raylibError/raylibScale, "rel");
+        if ((c == COUNT_CASES - 1) && (batchedScale[c] > 0.0))
+        {
+            printf("  corner error vs double reference (%d billboards, rot+norot): batched %.3g world units (%.3g rel), raylib %.3g (%.3g rel); FLT_EPSILON 1.19e-07\n",
+                   counts[c], batchedError[c], batchedError[c]/batchedScale[c], raylibError, raylibError/raylibScale);
+        }
+    }
+
+    // Upload volume and the memory-bandwidth floor. rlgl's batch uploads, per vertex, positions
+    // (3 floats), texcoords (2 floats), normals (3 floats) and colours (4 bytes) in four
+    // glBufferSubData calls (indices are static); ours uploads RblVertex (52 bytes) once.
+    const double bytesPerBillboard[PATH_COUNT] = {
+        4.0*(3*sizeof(float) + 2*sizeof(float) + 3*sizeof(float) + 4*sizeof(unsigned char)),
+        4.0*sizeof(RblVertex),
+        4.0*sizeof(RblVertex)
+    };
+    double gbps = MeasureMemcpyBandwidth();
+    BenchCsvRow(SUITE, "memcpy_64MiB", "bandwidth", gbps, "GB/s");
+    for (int p = 0; p < PATH_COUNT; p++)
+    {
+        double floorNs = (gbps > 0.0)? bytesPerBillboard[p]/gbps : 0.0;
+        BenchCsvRow(SUITE, pathNames[p], "bytes_per_billboard", bytesPerBillboard[p], "bytes");
+        BenchCsvRow(SUITE, pathNames[p], "floor_ns_per_billboard", floorNs, "ns");
+        for (int c = 0; c < COUNT_CASES; c++)
+        {
+            for (int rotated = 0; rotated < 2; rotated++)
+            {
+                const CaseResult *res = &results[p][c][rotated];
+                if (!res->measured || (floorNs <= 0.0)) continue;
+                CaseName(name, sizeof(name), (BenchPath)p, counts[c], rotated);
+                BenchCsvRow(SUITE, name, "ratio_to_floor", res->nsPerBillboard/floorNs, "x");
+            }
+        }
+    }
+
+    // Summary
+    printf("\ngeometry summary (CPU submission per billboard; memcpy %.2f GB/s)\n", gbps);
+    printf("  %-10s %7s %-6s %14s %10s %12s %12s\n", "path", "N", "rot", "ns/billboard", "x raylib", "x floor", "bytes/bb");
+    double worstBatched = 0.0;
+    for (int c = 0; c < COUNT_CASES; c++)
+    {
+        for (int rotated = 0; rotated < 2; rotated++)
+        {
+            const CaseResult *base = &results[PATH_RAYLIB][c][rotated];
+            for (int p = 0; p < PATH_COUNT; p++)
+            {
+                const CaseResult *res = &results[p][c][rotated];
+                const char *rot = rotated? "rot" : "norot";
+                if (!res->measured && (res->skippedFrameS == 0.0)) continue;     // filtered out
+                if (!res->measured)
+                {
+                    printf("  %-10s %7d %-6s %14s   (estimated %.1f s per frame)\n", pathNames[p], counts[c], rot, "skipped", res->skippedFrameS);
+                    continue;
+                }
+                double ratio = base->measured? res->nsPerBillboard/base->nsPerBillboard : 0.0;
+                double floorRatio = (gbps > 0.0)? res->nsPerBillboard/(bytesPerBillboard[p]/gbps) : 0.0;
+                if ((p == PATH_BATCHED) && (ratio > worstBatched)) worstBatched = ratio;
+                printf("  %-10s %7d %-6s %14.1f %9.3fx %11.1fx %12.0f\n", pathNames[p], counts[c], rot, res->nsPerBillboard, ratio, floorRatio, bytesPerBillboard[p]);
+            }
+        }
+    }
+    printf("  target batched   <= 0.25x raylib: worst case %.3fx -> %s\n", worstBatched, (worstBatched <= 0.25)? "met" : "NOT met");
+    printf("  target instanced <= 0.05x raylib: no instanced path yet (not measured)\n");
+    printf("bench_geometry: done in %.1f s, rows in %s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath());
+
+    RblUnloadBatch(&batch);
+    RblClose();
+    RblUnloadLitShader(lit);
+    MemFree(material.maps);
+    UnloadTexture(atlas);
+    UnloadRenderTexture(target);
+    FreeScene();
+    rtCloseContext();
+    return 0;
+}

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Runs every test suite and prints one closing line "N passed, N failed" (exit 1 on any failure).
+#   compile checks: the header as C99 (gcc, clang) and C++ (g++, clang++), with and without the
+#                   implementation, -Wall -Wextra -pedantic -Werror
+#   cpu:            geometry and shader-source tests (plain, then under ASan+UBSan)
+#   gpu:            render tests under EGL surfaceless, then under OSMesa
+set -u
+BUILD=${BUILD:-build}
+pass=0; fail=0
+count() { # $1 = suite output; adds its "suite: N passed, M failed" line
+  local line; line=$(printf '%s\n' "$1" | grep -E '^[a-z_-]+: [0-9]+ passed, [0-9]+ failed$' | tail -1)
+  if [ -z "$line" ]; then echo "  FAIL  suite did not finish (no summary line)"; fail=$((fail + 1)); return; fi
+  local p f; p=$(echo "$line" | sed -E 's/.*: ([0-9]+) passed.*/\1/'); f=$(echo "$line" | sed -E 's/.* ([0-9]+) failed$/\1/')
+  pass=$((pass + p)); fail=$((fail + f))
+}
+
+echo "== compile checks"
+for c in "gcc -std=c99 -x c" "clang -std=c99 -x c" "g++ -std=c++11 -x c++" "clang++ -std=c++11 -x c++"; do
+  for mode in decl impl; do
+    def=""; [ $mode = impl ] && def=-DCHECK_IMPLEMENTATION
+    name="${c%% *} $mode"
+    if ! command -v "${c%% *}" >/dev/null 2>&1; then echo "  FAIL  $name (compiler not installed)"; fail=$((fail + 1)); continue; fi
+    if out=$($c -Wall -Wextra -pedantic -Werror $def -I. $RAYLIB_CFLAGS -c tests/compile_check.c -o "$BUILD/tests/compile_check.o" 2>&1); then
+      echo "  ok    $name"; pass=$((pass + 1))
+    else
+      echo "  FAIL  $name"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
+    fi
+  done
+done
+
+for suite in test_cpu test_cpu_san; do
+  echo "== $suite"
+  out=$("$BUILD/tests/$suite" 2>&1); printf '%s\n' "$out"; count "$out"
+done
+for ctx in egl osmesa; do
+  echo "== test_gpu ($ctx)"
+  out=$(RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"
+done
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,365 @@
+// Geometry specification (CPU only): corners, UVs, normals and tangents of every facing mode,
+// against a double-precision reference written independently here, plus the hard cases.
+// Included by test_cpu_main.c (one translation unit with the implementation).
+
+#include "reference.h"
+
+static RblBillboard randomBillboard(unsigned int *seed, int facing)
+{
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.facing = facing;
+    b.position = (Vector3){ rtRandomRange(seed, -20, 20), rtRandomRange(seed, -5, 5), rtRandomRange(seed, -20, 20) };
+    b.size = (Vector2){ rtRandomRange(seed, 0.1f, 4.0f), rtRandomRange(seed, 0.1f, 4.0f) };
+    b.origin = (Vector2){ rtRandomRange(seed, -1.0f, 2.0f), rtRandomRange(seed, -1.0f, 2.0f) };
+    b.rotation = (rtRandom(seed) & 1)? rtRandomRange(seed, -360.0f, 360.0f) : 0.0f;
+    b.source = (Rectangle){ rtRandomRange(seed, 0, 128), rtRandomRange(seed, 0, 128), rtRandomRange(seed, 1, 128), rtRandomRange(seed, 1, 128) };
+    if (facing == RBL_FACING_AXIS) b.axis = (Vector3){ rtRandomRange(seed, -1, 1), rtRandomRange(seed, 0.2f, 1), rtRandomRange(seed, -1, 1) };
+    if (facing == RBL_FACING_FIXED)
+    {
+        b.axis = (Vector3){ rtRandomRange(seed, -1, 1), rtRandomRange(seed, -1, 1), rtRandomRange(seed, 0.3f, 1) };
+        b.up = (Vector3){ rtRandomRange(seed, -0.2f, 0.2f), 1.0f, rtRandomRange(seed, -0.2f, 0.2f) };
+    }
+    return b;
+}
+
+// Frame invariants every emitted vertex must satisfy
+static void checkFrame(const RblVertex q[4], const char *what)
+{
+    for (int i = 0; i < 4; i++)
+    {
+        const float *all = q[i].position;
+        for (int k = 0; k < 12; k++) RT_CHECK(rtFinite(all[k]), "%s: vertex %d float %d not finite", what, i, k);
+        D3 n = vecOf(q[i].normal), t = vecOf(q[i].tangent);
+        RT_CHECK(fabs(dLen(n) - 1.0) <= 1e-5, "%s: |N| = %.8f", what, dLen(n));
+        RT_CHECK(fabs(dLen(t) - 1.0) <= 1e-5, "%s: |T| = %.8f", what, dLen(t));
+        RT_CHECK(fabs(dDot(n, t)) < 1e-5, "%s: N.T = %.3g", what, dDot(n, t));
+        RT_CHECK((q[i].tangent[3] == 1.0f) || (q[i].tangent[3] == -1.0f), "%s: w = %f", what, q[i].tangent[3]);
+    }
+}
+
+// ---- tests --------------------------------------------------------------------------------------
+static void test_geometry_corners_match_double_reference_in_every_mode(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
+    RblView view = RblGetView(cam);
+    unsigned int seed = 12345u;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    {
+        double worst = 0.0;
+        for (int n = 0; n < 500; n++)
+        {
+            RblBillboard b = randomBillboard(&seed, facing);
+            RblVertex q[4];
+            RT_CHECK(RblBillboardVertices(view, 256, 256, &b, q), "mode %d: billboard %d skipped", facing, n);
+            D3 ref[4], N;
+            refQuad(cam, &b, ref, &N);
+            double scale = fabs(b.size.x) + fabs(b.size.y) + fabs(b.origin.x) + fabs(b.origin.y) + dLen(d3f(b.position));
+            for (int i = 0; i < 4; i++)
+            {
+                double e = v3dist(q[i].position, ref[i])/scale;
+                if (e > worst) worst = e;
+            }
+            RT_CHECK(dDot(vecOf(q[0].normal), N) > 1.0 - 1e-6, "mode %d: normal differs from reference", facing);
+            checkFrame(q, "random");
+        }
+        RT_CHECK(worst < 1e-6, "mode %d: worst relative corner error %.3g", facing, worst);
+    }
+}
+
+static void test_geometry_camera_modes_face_the_eye(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 0.0f, 2.0f, 10.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+    RblView view = RblGetView(cam);
+    unsigned int seed = 99u;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_AXIS; facing++)
+    {
+        for (int n = 0; n < 100; n++)
+        {
+            RblBillboard b = randomBillboard(&seed, facing);
+            b.position.z = rtRandomRange(&seed, -30.0f, 5.0f);
+            RblVertex q[4];
+            RblBillboardVertices(view, 64, 64, &b, q);
+            D3 toEye = dSub(d3f(cam.position), d3f(b.position));
+            RT_CHECK(dDot(vecOf(q[0].normal), toEye) > 0.0, "mode %d: normal points away from the eye", facing);
+            // front face is counter-clockwise seen from the eye: (p1-p0) x (p2-p0) agrees with N
+            D3 e1 = dSub(vecOf(q[1].position), vecOf(q[0].position)), e2 = dSub(vecOf(q[2].position), vecOf(q[0].position));
+            RT_CHECK(dDot(dCross(e1, e2), vecOf(q[0].normal)) > 0.0, "mode %d: winding is not counter-clockwise", facing);
+        }
+    }
+    // Camera-position mode differs from camera-plane off-centre (that is the point of it)
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.position = (Vector3){ 8.0f, 0.0f, 0.0f }; b.size = (Vector2){ 1.0f, 1.0f };
+    RblVertex plane[4], toward[4];
+    RblBillboardVertices(view, 1, 1, &b, plane);
+    b.facing = RBL_FACING_CAMERA_POSITION;
+    RblBillboardVertices(view, 1, 1, &b, toward);
+    RT_CHECK(dDot(vecOf(plane[0].normal), vecOf(toward[0].normal)) < 0.95, "camera-position mode should turn toward the eye off-centre");
+}
+
+// Tangent = world +U and handedness, derived from the emitted positions and UVs the way raylib's
+// GenMeshTangents does (independent of how the header computes it), for every flip and rotated frame.
+static void test_geometry_tangent_follows_plus_u_under_every_flip_and_rotated_frame(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 2.0f, 3.0f, 9.0f }, (Vector3){ 0.0f, 1.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+    RblView view = RblGetView(cam);
+    int combos = 0;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    for (int mask = 0; mask < 32; mask++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.facing = facing;
+        b.position = (Vector3){ 0.5f, 1.0f, -1.0f };
+        b.size = (Vector2){ (mask & 1)? -1.5f : 1.5f, (mask & 2)? -2.0f : 2.0f };
+        b.source = (Rectangle){ 16, 32, (mask & 4)? -48.0f : 48.0f, (mask & 8)? -24.0f : 24.0f };
+        b.flags = (mask & 16)? RBL_FRAME_ROTATED : 0;
+        b.rotation = 30.0f;
+        b.axis = (facing == RBL_FACING_FIXED)? (Vector3){ 0.3f, 0.2f, 1.0f } : (Vector3){ 0, 0, 0 };
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(view, 128, 128, &b, q), "skipped");
+        checkFrame(q, "flip");
+        D3 e1 = dSub(vecOf(q[1].position), vecOf(q[0].position)), e2 = dSub(vecOf(q[3].position), vecOf(q[0].position));
+        double s1 = q[1].texcoord[0] - q[0].texcoord[0], t1 = q[1].texcoord[1] - q[0].texcoord[1];
+        double s2 = q[3].texcoord[0] - q[0].texcoord[0], t2 = q[3].texcoord[1] - q[0].texcoord[1];
+        double r = 1.0/(s1*t2 - s2*t1);
+        D3 sdir = dScale(dSub(dScale(e1, t2), dScale(e2, t1)), r);     // world d/du
+        D3 tdir = dScale(dSub(dScale(e2, s1), dScale(e1, s2)), r);     // world d/dv
+        D3 T = vecOf(q[0].tangent), N = vecOf(q[0].normal);
+        RT_CHECK(dDot(T, dNorm(sdir)) > 0.9999, "mode %d mask %d: tangent is not +U (dot %.5f)", facing, mask, dDot(T, dNorm(sdir)));
+        double hand = dDot(dCross(N, T), tdir) < 0.0? -1.0 : 1.0;
+        RT_CHECK(hand == q[0].tangent[3], "mode %d mask %d: handedness %g, UVs say %g", facing, mask, q[0].tangent[3], hand);
+        combos++;
+    }
+    RT_CHECK(combos == 128, "ran %d combinations", combos);
+}
+
+static void test_geometry_uvs_match_raylib_layout_and_mirror_inside_the_source(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
+    RblView view = RblGetView(cam);
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 3.0f, 1.0f };           // deliberately not the source size in texels
+    b.origin = (Vector2){ 1.5f, 0.0f };
+    b.source = (Rectangle){ 32, 64, 64, 32 };
+    RblVertex q[4], m[4];
+    RblBillboardVertices(view, 256, 128, &b, q);
+    // raylib: 0 = (x, y+h), 1 = (x+w, y+h), 2 = (x+w, y), 3 = (x, y), divided by the texture size
+    const float expect[4][2] = { { 32/256.0f, 96/128.0f }, { 96/256.0f, 96/128.0f }, { 96/256.0f, 64/128.0f }, { 32/256.0f, 64/128.0f } };
+    for (int i = 0; i < 4; i++) RT_CHECK(rtNear(q[i].texcoord[0], expect[i][0], 1e-7) && rtNear(q[i].texcoord[1], expect[i][1], 1e-7), "uv %d", i);
+    // Negative size: same footprint and pivot, u mirrored within [x, x+w] (raylib would shift by size.x)
+    b.size.x = -3.0f;
+    RblBillboardVertices(view, 256, 128, &b, m);
+    for (int i = 0; i < 4; i++)
+    {
+        RT_CHECK(v3dist(m[i].position, vecOf(q[i].position)) < 1e-6, "flipped footprint moved at corner %d", i);
+        RT_CHECK(rtNear(m[i].texcoord[0], (32 + 96)/256.0f - q[i].texcoord[0], 1e-7), "flipped u %d = %f", i, m[i].texcoord[0]);
+        RT_CHECK(m[i].texcoord[0] >= 32/256.0f - 1e-7 && m[i].texcoord[0] <= 96/256.0f + 1e-7, "flipped u left the source rectangle");
+        RT_CHECK(rtNear(m[i].texcoord[1], q[i].texcoord[1], 1e-7), "flipped v changed");
+    }
+    // A negative source width flips the same way; both together cancel
+    b.size.x = 3.0f; b.source.width = -64.0f;
+    RblBillboardVertices(view, 256, 128, &b, m);
+    RT_CHECK(rtNear(m[0].texcoord[0], 96/256.0f, 1e-7), "negative source width should mirror");
+    b.size.x = -3.0f;
+    RblBillboardVertices(view, 256, 128, &b, m);
+    RT_CHECK(rtNear(m[0].texcoord[0], 32/256.0f, 1e-7), "two mirrors should cancel");
+    // Rotated frame: the sprite's top-left texel sits at the frame's top-right (packed clockwise)
+    b.size.x = 3.0f; b.source.width = 64.0f; b.flags = RBL_FRAME_ROTATED;
+    RblBillboardVertices(view, 256, 128, &b, m);
+    RT_CHECK(rtNear(m[3].texcoord[0], 96/256.0f, 1e-7) && rtNear(m[3].texcoord[1], 64/128.0f, 1e-7), "rotated frame: top-left corner uv (%f,%f)", m[3].texcoord[0], m[3].texcoord[1]);
+    RT_CHECK(rtNear(m[0].texcoord[0], 32/256.0f, 1e-7) && rtNear(m[0].texcoord[1], 64/128.0f, 1e-7), "rotated frame: bottom-left corner uv (%f,%f)", m[0].texcoord[0], m[0].texcoord[1]);
+    // Zero source = whole texture
+    memset(&b.source, 0, sizeof(b.source)); b.flags = 0;
+    RblBillboardVertices(view, 256, 128, &b, m);
+    RT_CHECK(m[0].texcoord[0] == 0.0f && m[0].texcoord[1] == 1.0f && m[2].texcoord[0] == 1.0f && m[2].texcoord[1] == 0.0f, "zero source should span the texture");
+}
+
+static void test_geometry_rounded_normals_bend_outward_and_stay_orthonormal(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
+    RblView view = RblGetView(cam);
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 2.0f, 2.0f }; b.origin = (Vector2){ 1.0f, 1.0f };
+    for (int cyl = 0; cyl < 2; cyl++)
+    for (int k = 0; k <= 4; k++)
+    {
+        b.roundness = k/4.0f;
+        b.flags = cyl? RBL_ROUND_CYLINDER : 0;
+        RblVertex q[4];
+        RblBillboardVertices(view, 1, 1, &b, q);
+        checkFrame(q, "rounded");
+        D3 mean = d3(0, 0, 0);
+        for (int i = 0; i < 4; i++)
+        {
+            D3 n = vecOf(q[i].normal), p = vecOf(q[i].position);   // quad centred on the origin
+            double lean = dDot(n, d3(p.x, cyl? 0.0 : p.y, 0.0));
+            if (k == 0) RT_CHECK(fabs(lean) < 1e-6, "flat normal leans");
+            else RT_CHECK(lean > 0.0, "rounded normal %d does not lean outward", i);
+            mean = dAdd(mean, n);
+        }
+        RT_CHECK(dDot(dNorm(mean), d3(0, 0, 1)) > 1.0 - 1e-6, "mean of corner normals should stay the flat normal");
+        double expected = (k == 4)? (cyl? 45.0 : 54.7356) : -1.0;
+        double angle = acos(q[0].normal[2])*180.0/PI;
+        if (expected > 0.0) RT_CHECK(fabs(angle - expected) < 1e-3, "full roundness corner angle %.4f, want %.4f", angle, expected);
+    }
+}
+
+// ---- hard cases -----------------------------------------------------------------------------------
+static void test_hard_camera_looking_straight_up_or_down_gets_a_stable_frame(void)
+{
+    const float ys[2] = { 10.0f, -10.0f };
+    for (int k = 0; k < 2; k++)
+    {
+        Camera3D cam = makeCamera((Vector3){ 1.0f, ys[k], 2.0f }, (Vector3){ 1.0f, 0.0f, 2.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        RblView view = RblGetView(cam);
+        RT_CHECK(fabs(dLen(d3f(view.right)) - 1.0) < 1e-6 && fabs(dLen(d3f(view.up)) - 1.0) < 1e-6, "view frame not unit");
+        RT_CHECK(fabs(dDot(d3f(view.right), d3f(view.up))) < 1e-6, "view frame not orthogonal");
+        // Looking down, screen-up is -Z (north); looking up it is +Z
+        RT_CHECK(view.up.z == ((k == 0)? -1.0f : 1.0f), "fallback up is %f,%f,%f", view.up.x, view.up.y, view.up.z);
+        for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+        {
+            RblBillboard b;
+            memset(&b, 0, sizeof(b));
+            b.facing = facing; b.size = (Vector2){ 1, 1 }; b.position = (Vector3){ 1.0f, 0.0f, 2.0f };
+            RblVertex q[4];
+            RT_CHECK(RblBillboardVertices(view, 8, 8, &b, q), "skipped");
+            checkFrame(q, "looking along up");
+        }
+    }
+}
+
+static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 1, 2, 3 }, (Vector3){ 1, 2, 3 }, (Vector3){ 0, 1, 0 });
+    RblView view = RblGetView(cam);
+    RT_CHECK(view.back.z == 1.0f, "target == position: view should fall back to looking down -Z");
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.facing = facing; b.size = (Vector2){ 1, 1 };
+        b.position = cam.position;              // centre exactly at the eye
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(view, 8, 8, &b, q), "mode %d skipped", facing);
+        checkFrame(q, "at the eye");
+    }
+    // Axis mode with the eye on the axis (and looking along it): still a valid upright frame
+    Camera3D above = makeCamera((Vector3){ 0, 10, 0 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 0, -1 });
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.facing = RBL_FACING_AXIS; b.size = (Vector2){ 1, 2 };
+    RblVertex q[4];
+    RT_CHECK(RblBillboardVertices(RblGetView(above), 8, 8, &b, q), "axis mode, eye on axis: skipped");
+    checkFrame(q, "eye on axis");
+    RT_CHECK(fabs(q[3].position[1] - q[0].position[1] - 2.0f) < 1e-6, "axis-locked billboard must stay upright");
+}
+
+static void test_hard_zero_negative_and_huge_sizes(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
+    RblView view = RblGetView(cam);
+    const float sizes[][2] = { { 0, 0 }, { 0, 1 }, { -1, -1 }, { -1e-30f, 1e-30f }, { 1e30f, 1e30f }, { -1e30f, 3e30f } };
+    for (int i = 0; i < (int)(sizeof(sizes)/sizeof(sizes[0])); i++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.size = (Vector2){ sizes[i][0], sizes[i][1] };
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(view, 8, 8, &b, q), "size %g,%g skipped", sizes[i][0], sizes[i][1]);
+        checkFrame(q, "sizes");
+    }
+    // Sizes whose corners overflow float are skipped, not written as Inf
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 3e38f, 3e38f }; b.origin = (Vector2){ -3e38f, 0 };
+    RblVertex q[4];
+    memset(q, 0x5A, sizeof(q));
+    RT_CHECK(!RblBillboardVertices(view, 8, 8, &b, q), "overflowing corners must be skipped");
+    RT_CHECK(((unsigned char *)q)[0] == 0x5A && ((unsigned char *)q)[sizeof(q) - 1] == 0x5A, "skipped quad must leave the output untouched");
+}
+
+static void test_hard_far_from_origin_keeps_relative_precision(void)
+{
+    Vector3 far = { 1e5f, -1e5f, 1e5f };
+    Camera3D cam = makeCamera((Vector3){ far.x + 3.0f, far.y + 2.0f, far.z + 10.0f }, far, (Vector3){ 0, 1, 0 });
+    RblView view = RblGetView(cam);
+    unsigned int seed = 7u;
+    double worst = 0.0;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    for (int n = 0; n < 200; n++)
+    {
+        RblBillboard b = randomBillboard(&seed, facing);
+        b.position = (Vector3){ far.x + b.position.x, far.y + b.position.y, far.z + b.position.z };
+        RblVertex q[4];
+        RblBillboardVertices(view, 256, 256, &b, q);
+        checkFrame(q, "far");
+        D3 ref[4], N;
+        refQuad(cam, &b, ref, &N);
+        for (int i = 0; i < 4; i++)
+        {
+            double e = v3dist(q[i].position, ref[i])/dLen(ref[i]);
+            if (e > worst) worst = e;
+        }
+    }
+    // float carries ~6e-8 relative; a few roundings of the corner sum stay well under 4e-7
+    RT_CHECK(worst < 4e-7, "worst relative corner error at 1e5: %.3g", worst);
+}
+
+static void test_hard_degenerate_source_and_texture_size(void)
+{
+    RblView view = RblGetView(makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }));
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 1, 1 };
+    b.source = (Rectangle){ 10, 10, 0, 0 };     // zero area (not the all-zero "whole texture")
+    RblVertex q[4];
+    RT_CHECK(RblBillboardVertices(view, 32, 32, &b, q), "zero-area source should still draw (one texel)");
+    checkFrame(q, "zero-area source");
+    for (int i = 0; i < 4; i++) RT_CHECK(q[i].texcoord[0] == 10/32.0f && q[i].texcoord[1] == 10/32.0f, "uv should collapse to the texel");
+    memset(q, 0x5A, sizeof(q));
+    RT_CHECK(!RblBillboardVertices(view, 0, 32, &b, q), "zero texture width must be rejected");
+    RT_CHECK(!RblBillboardVertices(view, 32, -1, &b, q), "negative texture height must be rejected");
+    RT_CHECK(((unsigned char *)q)[0] == 0x5A, "rejected quad must leave the output untouched");
+}
+
+static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
+{
+    RblView view = RblGetView(makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }));
+    RblBillboard good;
+    memset(&good, 0, sizeof(good));
+    good.size = (Vector2){ 1, 1 };
+    const float bad[2] = { NAN, INFINITY };
+    int fields = (int)(sizeof(RblBillboard)/sizeof(float));
+    int rejected = 0, probed = 0;
+    for (int f = 0; f < fields; f++)
+    {
+        size_t off = (size_t)f*sizeof(float);
+        // skip the tint (bytes), facing and flags (ints): only float fields take NaN
+        if (off >= offsetof(RblBillboard, tint) && off < offsetof(RblBillboard, up)) continue;
+        if (off >= offsetof(RblBillboard, flags)) continue;
+        for (int k = 0; k < 2; k++)
+        {
+            RblBillboard b = good;
+            memcpy((char *)&b + off, &bad[k], sizeof(float));
+            RblVertex q[4];
+            memset(q, 0x5A, sizeof(q));
+            bool drawn = RblBillboardVertices(view, 8, 8, &b, q);
+            probed++;
+            if (!drawn) rejected++;
+            RT_CHECK(!drawn && ((unsigned char *)q)[0] == 0x5A, "float field %d = %f was not skipped", f, bad[k]);
+        }
+    }
+    RT_CHECK(probed >= 34 && rejected == probed, "probed %d float fields, rejected %d", probed, rejected);
+    // A bad camera also never produces NaN: the view falls back
+    Camera3D nanCam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ NAN, 1, 0 });
+    RblView v = RblGetView(nanCam);
+    RT_CHECK(rtFinite(v.right.x) && rtFinite(v.up.y) && rtFinite(v.back.z), "NaN camera up leaked into the view");
+    RT_CHECK(!RblBillboardVertices(view, 8, 8, NULL, NULL), "NULL input must be rejected");
+    good.facing = 99;
+    RblVertex q[4];
+    RT_CHECK(!RblBillboardVertices(view, 8, 8, &good, q), "unknown facing must be rejected");
+}

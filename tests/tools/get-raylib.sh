@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Finds raylib >= 6.0 and prints the make variables to use it, one per line:
+#   RAYLIB_CFLAGS=...   RAYLIB_LIBS=...
+# Order: (1) system raylib via pkg-config, (2) RAYLIB_SRC=<raylib source tree>,
+# (3) Debian's source package `raylib` (unstable) fetched with `apt-get source` through a
+# private apt configuration that reuses this machine's own Debian URI (system sources untouched).
+# (2) and (3) build libraylib.a once (PLATFORM_DESKTOP_RGFW) into $BUILD/raylib and reuse it.
+set -eu
+BUILD=${BUILD:-build}
+mkdir -p "$BUILD"
+BUILD=$(cd "$BUILD" && pwd)
+log() { echo "get-raylib: $*" >&2; }
+tried=""
+syslibs="-lGL -lX11 -lXrandr -lXi -lXcursor -lXext -lXinerama -lm -lpthread -ldl"
+
+# (1) a system raylib
+if [ -z "${RAYLIB_SRC:-}" ] && pkg-config --exists 'raylib >= 6.0' 2>/dev/null; then
+  echo "RAYLIB_CFLAGS=$(pkg-config --cflags raylib)"
+  echo "RAYLIB_LIBS=$(pkg-config --libs --static raylib)"
+  exit 0
+fi
+tried="$tried\n  - pkg-config 'raylib >= 6.0': $(pkg-config --modversion raylib 2>/dev/null || echo 'not found')"
+
+build_from() { # $1 = source tree root (holds src/raylib.h)
+  local src=$1 out=$BUILD/raylib
+  if [ -f "$out/libraylib.a" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$src" ]; then :; else
+    log "building libraylib.a from $src (PLATFORM_DESKTOP_RGFW)"
+    rm -rf "$out"; mkdir -p "$out/obj"
+    make -s -C "$src/src" PLATFORM=PLATFORM_DESKTOP_RGFW RAYLIB_RELEASE_PATH="$out" \
+         RAYLIB_BUILD_MODE=RELEASE -j"$(nproc)" >"$out/build.log" 2>&1 \
+      || { log "raylib build failed, see $out/build.log"; tail -20 "$out/build.log" >&2; return 1; }
+    make -s -C "$src/src" clean >/dev/null 2>&1 || true
+    cp "$src/src/raylib.h" "$src/src/rlgl.h" "$src/src/raymath.h" "$out/"
+    echo "$src" > "$out/stamp"
+  fi
+  echo "RAYLIB_CFLAGS=-I$out"
+  echo "RAYLIB_LIBS=$out/libraylib.a $syslibs"
+}
+
+version_ok() { # raylib.h declares RAYLIB_VERSION_MAJOR
+  local maj; maj=$(sed -n 's/^#define RAYLIB_VERSION_MAJOR *\([0-9]*\).*/\1/p' "$1/src/raylib.h" 2>/dev/null)
+  [ -n "$maj" ] && [ "$maj" -ge 6 ]
+}
+
+# (2) a source tree named by the caller
+if [ -n "${RAYLIB_SRC:-}" ]; then
+  src=$(cd "$RAYLIB_SRC" 2>/dev/null && pwd) || { log "RAYLIB_SRC=$RAYLIB_SRC does not exist"; exit 1; }
+  version_ok "$src" || { log "RAYLIB_SRC=$src has no src/raylib.h of version >= 6.0"; exit 1; }
+  build_from "$src"; exit $?
+fi
+tried="$tried\n  - RAYLIB_SRC: not set"
+
+# (3) Debian's source package, through a private apt configuration
+fetch=$BUILD/raylib-src
+existing=$(ls -d "$fetch"/raylib-*/ 2>/dev/null | head -1 || true)
+if [ -n "$existing" ] && version_ok "$existing"; then build_from "${existing%/}"; exit $?; fi
+
+# This machine's own Debian archive URI (deb822 .sources or one-line .list), never a typed-in host.
+uri=$( { cat /etc/apt/sources.list.d/*.sources 2>/dev/null | awk '
+           /^URIs:/ {u=$2} /^Suites:/ {s=$0} /^$/ {if (u!="" && s !~ /security/) {print u; exit} u=""; s=""}
+           END {if (u!="" && s !~ /security/) print u}';
+         cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2>/dev/null |
+           awk '$1=="deb" && $0 !~ /security/ { for (i=2;i<=NF;i++) if ($i ~ /^[a-z]+:\/\//) {print $i; exit} }'; } | head -1)
+keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+if [ -n "$uri" ] && [ -f "$keyring" ] && command -v apt-get >/dev/null; then
+  command -v dpkg-source >/dev/null || { log "dpkg-dev is needed for apt-get source (run tests/tools/deps.sh)"; }
+  apt=$BUILD/apt; mkdir -p "$apt/lists/partial" "$apt/archives/partial" "$fetch"
+  echo "deb-src [signed-by=$keyring] $uri sid main" > "$apt/sources.list"
+  opts="-o Dir::Etc::sourcelist=$apt/sources.list -o Dir::Etc::sourceparts=- -o Dir::State::Lists=$apt/lists -o Dir::Cache=$apt -o APT::Get::List-Cleanup=0"
+  log "fetching Debian source package raylib (sid) via this machine's apt URI"
+  if apt-get $opts update -qq >"$apt/update.log" 2>&1 &&
+     (cd "$fetch" && apt-get $opts source -qq raylib >"$apt/source.log" 2>&1); then
+    existing=$(ls -d "$fetch"/raylib-*/ 2>/dev/null | head -1 || true)
+    if [ -n "$existing" ] && version_ok "$existing"; then build_from "${existing%/}"; exit $?; fi
+    tried="$tried\n  - Debian source package raylib (sid): fetched, but not version >= 6.0"
+  else
+    tried="$tried\n  - Debian source package raylib (sid) via $uri: apt-get failed (see $apt/*.log)"
+  fi
+else
+  tried="$tried\n  - Debian source package: no Debian source URI / keyring / apt-get on this machine"
+fi
+
+printf "get-raylib: no raylib >= 6.0 found. Tried:%b\n" "$tried" >&2
+echo "get-raylib: point the build at one with  make RAYLIB_SRC=/path/to/raylib  (a source tree holding src/raylib.h)" >&2
+echo "get-raylib: or install raylib >= 6.0 with a raylib.pc on PKG_CONFIG_PATH." >&2
+exit 1
