@@ -18,7 +18,8 @@
 *         plus atlas frames stored rotated 90 degrees and flips by negative size or source extent
 *       - Per-vertex normal and tangent whose handedness stays right under every flip and rotation,
 *         optional rounded (spherical / cylindrical) normals
-*       - Immediate (one call per billboard) and batched (one upload, one draw per material run) paths
+*       - Immediate (one call per billboard), batched (one upload, one draw per material run) and
+*         GPU-instanced (56 bytes per billboard, quads expanded in the vertex shader) paths
 *       - Stable frames for degenerate cameras (looking straight up/down, target == position,
 *         billboard at the eye); NaN/Inf input is skipped with one warning, never written to a buffer
 *       - Forward lit shader: albedo with alpha cutoff, tangent-space normal map, point lights with
@@ -198,6 +199,37 @@ typedef struct RblBatch {
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
 } RblBatch;
 
+// One instance of the instanced path: per-instance data only (56 bytes), the quad is expanded
+// on the GPU with the same math as RblBillboardVertices()
+typedef struct RblInstance {
+    Vector3 position;               // World position of the pivot
+    float rotation;                 // Degrees, counter-clockwise as seen from the front
+    Vector2 size;                   // World size; a negative component mirrors the image
+    Vector2 origin;                 // Pivot, world units from the bottom-left corner
+    Rectangle source;               // Atlas frame in texels (zero = whole texture); negative extent mirrors
+    Color tint;                     // Vertex colour (all zero = WHITE)
+    unsigned int flags;             // RblBillboardFlags
+} RblInstance;
+
+// What one instanced draw shares across its instances; zero means default
+typedef struct RblInstancedDesc {
+    int facing;                     // RblFacing for every instance
+    Vector3 up;                     // As RblBillboard.up
+    Vector3 axis;                   // As RblBillboard.axis
+    float roundness;                // As RblBillboard.roundness
+} RblInstancedDesc;
+
+// GPU instance buffer plus a staging copy (validated) and the instanced uniforms of the last shader
+typedef struct RblInstanceBuffer {
+    RblInstance *staging;           // Validated copy of the caller's instances
+    int capacity;                   // Instances reserved
+    unsigned int vaoId;             // Vertex array (instance attributes only)
+    unsigned int vboId;             // Instance buffer
+    unsigned int shaderId;          // Shader the cached locations belong to
+    int locs[10];                   // Instanced uniform locations (looked up once per shader)
+    int skipped;                    // Instances skipped for bad input in the last draw
+} RblInstanceBuffer;
+
 // Point light (linear colour; range 0 = unbounded inverse square)
 typedef struct RblLight {
     Vector3 position;               // World position
@@ -211,6 +243,7 @@ typedef struct RblLitShaderDesc {
     int maxLights;                  // Light slots compiled in (0 = 1, at most RBL_MAX_LIGHTS)
     bool normalMap;                 // Sample a tangent-space normal map from MATERIAL_MAP_NORMAL
     float alphaCutoff;              // Discard fragments below this alpha (0 = 0.5; negative = never)
+    bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
 } RblLitShaderDesc;
 
 // Lit shader: a raylib Shader plus its uniform locations (looked up once)
@@ -218,6 +251,7 @@ typedef struct RblLitShader {
     Shader shader;                  // Use as Material.shader for billboards and Models
     int maxLights;                  // Light slots compiled in
     bool normalMap;                 // Variant samples a normal map
+    bool instanced;                 // Variant expands RblInstance data
     int locLightCount;              // Uniform locations
     int locLightPosition;
     int locLightColor;
@@ -246,6 +280,12 @@ RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
 RBLAPI void RblClose(void);                                                   // Release the immediate path's buffers (before CloseWindow)
+
+// Instanced path (GL): per-instance data only, quads expanded in the vertex shader
+RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
+RBLAPI bool RblIsInstanceBufferValid(RblInstanceBuffer buffer);               // Check the buffer owns its GPU objects
+RBLAPI void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer);               // Unload an instance buffer
+RBLAPI int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count); // Draw with one instanced call (material.shader: an instanced lit variant); returns instances drawn
 
 // Lights and the forward lit shader
 RBLAPI RblLitShader RblLoadLitShader(RblLitShaderDesc desc);                  // Compile a lit shader variant
@@ -291,112 +331,263 @@ RBLAPI bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
-static const char rbl__shader_lit_fs[] =
-    "// Forward lit fragment shader: albedo (texture0 x colDiffuse x vertex colour) with an alpha cutoff,\n"
-    "// optional tangent-space normal map (texture2, OpenGL convention: +X = +U, +Y = image up),\n"
-    "// Lambert diffuse from RBL_LIGHTS point lights plus a flat ambient term.\n"
-    "// Variant defines (prepended by the loader): RBL_LIGHTS (slots compiled in), RBL_NORMAL_MAP.\n"
-    "\n"
-    "in vec3 fragPosition;\n"
-    "in vec2 fragTexCoord;\n"
-    "in vec4 fragColor;\n"
-    "in vec3 fragNormal;\n"
-    "in vec4 fragTangent;\n"
-    "\n"
-    "uniform sampler2D texture0;     // albedo\n"
-    "#ifdef RBL_NORMAL_MAP\n"
-    "uniform sampler2D texture2;     // tangent-space normal map (raylib's MATERIAL_MAP_NORMAL slot)\n"
-    "#endif\n"
-    "uniform vec4 colDiffuse;\n"
-    "uniform float rblAlphaCutoff;\n"
-    "uniform vec3 rblAmbient;        // linear ambient radiance\n"
-    "#if RBL_LIGHTS > 0\n"
-    "uniform int rblLightCount;\n"
-    "uniform vec3 rblLightPosition[RBL_LIGHTS];\n"
-    "uniform vec3 rblLightColor[RBL_LIGHTS];     // linear colour x intensity\n"
-    "uniform float rblLightInvRange[RBL_LIGHTS]; // 1/range, 0 = no range window\n"
-    "#endif\n"
-    "\n"
-    "out vec4 finalColor;\n"
-    "\n"
-    "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n"
-    "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n"
-    "{\n"
-    "    float len2 = dot(v, v);\n"
-    "    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;\n"
-    "}\n"
-    "\n"
-    "void main()\n"
-    "{\n"
-    "    vec4 albedo = texture(texture0, fragTexCoord)*colDiffuse*fragColor;\n"
-    "    if (albedo.a < rblAlphaCutoff) discard;\n"
-    "\n"
-    "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n"
-    "#ifdef RBL_NORMAL_MAP\n"
-    "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n"
-    "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n"
-    "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n"
-    "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n"
-    "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n"
-    "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n"
-    "    vec3 m = texture(texture2, fragTexCoord).xyz*2.0 - 1.0;\n"
-    "    n = rblSafeNormalize(t*m.x - b*m.y + n*m.z, n);\n"
-    "#endif\n"
-    "\n"
-    "    vec3 irradiance = rblAmbient;\n"
-    "#if RBL_LIGHTS > 0\n"
-    "    for (int i = 0; i < RBL_LIGHTS; i++)\n"
-    "    {\n"
-    "        if (i >= rblLightCount) break;\n"
-    "        vec3 toLight = rblLightPosition[i] - fragPosition;\n"
-    "        float d2 = dot(toLight, toLight);\n"
-    "        vec3 l = rblSafeNormalize(toLight, n);      // a light on the surface lights it head-on\n"
-    "        // Windowed inverse square (UE4/Filament): I*saturate(1-(d/r)^4)^2/max(d^2, eps).\n"
-    "        float x2 = d2*rblLightInvRange[i]*rblLightInvRange[i];\n"
-    "        float window = clamp(1.0 - x2*x2, 0.0, 1.0);\n"
-    "        float falloff = window*window/max(d2, 1e-4);\n"
-    "        irradiance += rblLightColor[i]*(max(dot(n, l), 0.0)*falloff);\n"
-    "    }\n"
-    "#endif\n"
-    "    finalColor = vec4(albedo.rgb*irradiance, albedo.a);\n"
-    "}\n"
-    ;
-static const char rbl__shader_lit_vs[] =
-    "// Forward lit vertex shader: billboards (world-space vertices, matModel = identity) and raylib\n"
-    "// Models (matModel = the model transform) go through the same code.\n"
-    "// The loader prepends \"#version 330\" and the variant's #defines.\n"
-    "\n"
-    "in vec3 vertexPosition;\n"
-    "in vec2 vertexTexCoord;\n"
-    "in vec3 vertexNormal;\n"
-    "in vec4 vertexColor;\n"
-    "in vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n"
-    "\n"
-    "uniform mat4 mvp;\n"
-    "uniform mat4 matModel;\n"
-    "uniform mat4 matNormal;\n"
-    "\n"
-    "out vec3 fragPosition;\n"
-    "out vec2 fragTexCoord;\n"
-    "out vec4 fragColor;\n"
-    "out vec3 fragNormal;\n"
-    "out vec4 fragTangent;\n"
-    "\n"
-    "void main()\n"
-    "{\n"
-    "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n"
-    "    fragTexCoord = vertexTexCoord;\n"
-    "    fragColor = vertexColor;\n"
-    "    fragNormal = mat3(matNormal)*vertexNormal;\n"
-    "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n"
-    "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n"
-    "    gl_Position = mvp*vec4(vertexPosition, 1.0);\n"
-    "}\n"
-    ;
+static const char *const rbl__shader_lit_fs[] = {
+    "// Forward lit fragment shader: albedo (texture0 x colDiffuse x vertex colour) with an alpha cutoff,\n",
+    "// optional tangent-space normal map (texture2, OpenGL convention: +X = +U, +Y = image up),\n",
+    "// Lambert diffuse from RBL_LIGHTS point lights plus a flat ambient term.\n",
+    "// Variant defines (prepended by the loader): RBL_LIGHTS (slots compiled in), RBL_NORMAL_MAP.\n",
+    "\n",
+    "in vec3 fragPosition;\n",
+    "in vec2 fragTexCoord;\n",
+    "in vec4 fragColor;\n",
+    "in vec3 fragNormal;\n",
+    "in vec4 fragTangent;\n",
+    "\n",
+    "uniform sampler2D texture0;     // albedo\n",
+    "#ifdef RBL_NORMAL_MAP\n",
+    "uniform sampler2D texture2;     // tangent-space normal map (raylib's MATERIAL_MAP_NORMAL slot)\n",
+    "#endif\n",
+    "uniform vec4 colDiffuse;\n",
+    "uniform float rblAlphaCutoff;\n",
+    "uniform vec3 rblAmbient;        // linear ambient radiance\n",
+    "#if RBL_LIGHTS > 0\n",
+    "uniform int rblLightCount;\n",
+    "uniform vec3 rblLightPosition[RBL_LIGHTS];\n",
+    "uniform vec3 rblLightColor[RBL_LIGHTS];     // linear colour x intensity\n",
+    "uniform float rblLightInvRange[RBL_LIGHTS]; // 1/range, 0 = no range window\n",
+    "#endif\n",
+    "\n",
+    "out vec4 finalColor;\n",
+    "\n",
+    "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
+    "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
+    "{\n",
+    "    float len2 = dot(v, v);\n",
+    "    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;\n",
+    "}\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    vec4 albedo = texture(texture0, fragTexCoord)*colDiffuse*fragColor;\n",
+    "    if (albedo.a < rblAlphaCutoff) discard;\n",
+    "\n",
+    "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
+    "#ifdef RBL_NORMAL_MAP\n",
+    "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n",
+    "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n",
+    "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n",
+    "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n",
+    "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
+    "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
+    "    vec3 m = texture(texture2, fragTexCoord).xyz*2.0 - 1.0;\n",
+    "    n = rblSafeNormalize(t*m.x - b*m.y + n*m.z, n);\n",
+    "#endif\n",
+    "\n",
+    "    vec3 irradiance = rblAmbient;\n",
+    "#if RBL_LIGHTS > 0\n",
+    "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
+    "    {\n",
+    "        if (i >= rblLightCount) break;\n",
+    "        vec3 toLight = rblLightPosition[i] - fragPosition;\n",
+    "        float d2 = dot(toLight, toLight);\n",
+    "        vec3 l = rblSafeNormalize(toLight, n);      // a light on the surface lights it head-on\n",
+    "        // Windowed inverse square (UE4/Filament): I*saturate(1-(d/r)^4)^2/max(d^2, eps).\n",
+    "        float x2 = d2*rblLightInvRange[i]*rblLightInvRange[i];\n",
+    "        float window = clamp(1.0 - x2*x2, 0.0, 1.0);\n",
+    "        float falloff = window*window/max(d2, 1e-4);\n",
+    "        irradiance += rblLightColor[i]*(max(dot(n, l), 0.0)*falloff);\n",
+    "    }\n",
+    "#endif\n",
+    "    finalColor = vec4(albedo.rgb*irradiance, albedo.a);\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_lit_vs[] = {
+    "// Forward lit vertex shader: billboards (world-space vertices, matModel = identity) and raylib\n",
+    "// Models (matModel = the model transform) go through the same code.\n",
+    "// The loader prepends \"#version 330\" and the variant's #defines.\n",
+    "\n",
+    "in vec3 vertexPosition;\n",
+    "in vec2 vertexTexCoord;\n",
+    "in vec3 vertexNormal;\n",
+    "in vec4 vertexColor;\n",
+    "in vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
+    "\n",
+    "uniform mat4 mvp;\n",
+    "uniform mat4 matModel;\n",
+    "uniform mat4 matNormal;\n",
+    "\n",
+    "out vec3 fragPosition;\n",
+    "out vec2 fragTexCoord;\n",
+    "out vec4 fragColor;\n",
+    "out vec3 fragNormal;\n",
+    "out vec4 fragTangent;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n",
+    "    fragTexCoord = vertexTexCoord;\n",
+    "    fragColor = vertexColor;\n",
+    "    fragNormal = mat3(matNormal)*vertexNormal;\n",
+    "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
+    "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
+    "    gl_Position = mvp*vec4(vertexPosition, 1.0);\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_lit_instanced_vs[] = {
+    "// Instanced billboard vertex shader: expands one quad per instance (6 vertices, gl_VertexID 0..5)\n",
+    "// from per-instance data, with the same math and degenerate-frame fallbacks as the CPU path\n",
+    "// (RblBillboardVertices), so all three paths emit the same vertices. Pairs with lit.fs.glsl.\n",
+    "// The loader prepends \"#version 330\" and the variant's #defines.\n",
+    "\n",
+    "layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees\n",
+    "layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin\n",
+    "layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)\n",
+    "layout(location = 13) in vec4 rblInstanceTint;      // normalised bytes (all zero = white)\n",
+    "layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags\n",
+    "\n",
+    "uniform mat4 mvp;\n",
+    "uniform vec3 rblViewEye;\n",
+    "uniform vec3 rblViewRight;\n",
+    "uniform vec3 rblViewUp;\n",
+    "uniform vec3 rblViewBack;\n",
+    "uniform int rblFacing;          // RblFacing\n",
+    "uniform vec3 rblFacingUp;       // CAMERA_PLANE: caller up (zero = camera up); FIXED: up (zero = +Y)\n",
+    "uniform vec3 rblFacingAxis;     // AXIS: locked axis (zero = +Y); FIXED: normal (zero = +Z)\n",
+    "uniform float rblRoundness;\n",
+    "uniform vec2 rblTextureSize;\n",
+    "\n",
+    "out vec3 fragPosition;\n",
+    "out vec2 fragTexCoord;\n",
+    "out vec4 fragColor;\n",
+    "out vec3 fragNormal;\n",
+    "out vec4 fragTangent;\n",
+    "\n",
+    "bool rblNormalizeTo(vec3 v, out vec3 o)\n",
+    "{\n",
+    "    float l2 = dot(v, v);\n",
+    "    o = v;\n",
+    "    if (!(l2 > 1e-24)) return false;\n",
+    "    o = v*inversesqrt(l2);\n",
+    "    return true;\n",
+    "}\n",
+    "\n",
+    "// Unit component of v perpendicular to unit n (relative threshold, as on the CPU)\n",
+    "bool rblPerpendicular(vec3 v, vec3 n, out vec3 o)\n",
+    "{\n",
+    "    vec3 p = v - n*dot(v, n);\n",
+    "    o = p;\n",
+    "    if (!(dot(p, p) > 1e-10*dot(v, v))) return false;\n",
+    "    return rblNormalizeTo(p, o);\n",
+    "}\n",
+    "\n",
+    "vec3 rblFallbackUp(vec3 d)\n",
+    "{\n",
+    "    vec3 a = abs(d);\n",
+    "    if ((a.z <= a.x) && (a.z <= a.y)) return vec3(0.0, 0.0, (d.y > 0.0)? -1.0 : 1.0);\n",
+    "    if (a.y <= a.x) return vec3(0.0, 1.0, 0.0);\n",
+    "    return vec3(1.0, 0.0, 0.0);\n",
+    "}\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
+    "    int corner = cornerOf[gl_VertexID % 6];\n",
+    "    vec3 position = rblInstancePosition.xyz;\n",
+    "    int flags = int(rblInstanceFlags + 0.5);\n",
+    "\n",
+    "    // Facing basis (right r, up u, normal n)\n",
+    "    vec3 r = rblViewRight, u = rblViewUp, n = rblViewBack;\n",
+    "    if (rblFacing == 0)\n",
+    "    {\n",
+    "        vec3 nn;\n",
+    "        if ((dot(rblFacingUp, rblFacingUp) > 0.0) && rblNormalizeTo(cross(r, rblFacingUp), nn)) { u = rblFacingUp; n = nn; }\n",
+    "    }\n",
+    "    else if (rblFacing == 1)\n",
+    "    {\n",
+    "        vec3 toEye;\n",
+    "        if (rblNormalizeTo(rblViewEye - position, toEye))\n",
+    "        {\n",
+    "            n = toEye;\n",
+    "            vec3 rr;\n",
+    "            if (rblNormalizeTo(cross(rblViewUp, n), rr)) { r = rr; u = cross(n, r); }\n",
+    "            else { r = rblViewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }\n",
+    "        }\n",
+    "    }\n",
+    "    else if (rblFacing == 2)\n",
+    "    {\n",
+    "        vec3 a = vec3(0.0, 1.0, 0.0);\n",
+    "        if (dot(rblFacingAxis, rblFacingAxis) > 0.0) rblNormalizeTo(rblFacingAxis, a);\n",
+    "        vec3 nn;\n",
+    "        if (!rblPerpendicular(rblViewEye - position, a, nn) && !rblPerpendicular(rblViewBack, a, nn) &&\n",
+    "            !rblPerpendicular(rblViewUp, a, nn)) nn = rblViewBack;\n",
+    "        u = a; n = nn; r = cross(u, n);\n",
+    "    }\n",
+    "    else\n",
+    "    {\n",
+    "        vec3 nn = vec3(0.0, 0.0, 1.0);\n",
+    "        if (dot(rblFacingAxis, rblFacingAxis) > 0.0) rblNormalizeTo(rblFacingAxis, nn);\n",
+    "        vec3 uu = (dot(rblFacingUp, rblFacingUp) > 0.0)? rblFacingUp : vec3(0.0, 1.0, 0.0);\n",
+    "        if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);\n",
+    "        n = nn; u = uu; r = cross(u, n);\n",
+    "    }\n",
+    "\n",
+    "    float rotation = rblInstancePosition.w;\n",
+    "    if (rotation != 0.0)\n",
+    "    {\n",
+    "        float ang = rotation*(3.14159265358979323846/180.0), c = cos(ang), s = sin(ang);\n",
+    "        vec3 nr = cross(n, r), nu = cross(n, u);\n",
+    "        r = r*c + nr*s;\n",
+    "        u = u*c + nu*s;\n",
+    "    }\n",
+    "\n",
+    "    vec2 size = rblInstanceSize.xy, origin = rblInstanceSize.zw;\n",
+    "    float sx = abs(size.x), sy = abs(size.y);\n",
+    "    vec3 un = u;\n",
+    "    rblNormalizeTo(u, un);\n",
+    "    float ulen = length(u);\n",
+    "    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0;     // sprite-space s (right)\n",
+    "    float ct = (corner < 2)? 1.0 : 0.0;                      // sprite-space t (down)\n",
+    "    float x = (cs > 0.5)? sx - origin.x : -origin.x;\n",
+    "    float y = (ct < 0.5)? sy*ulen - origin.y : -origin.y;\n",
+    "    vec3 p = position + r*x + un*y;\n",
+    "\n",
+    "    vec4 src = rblInstanceSource;\n",
+    "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, rblTextureSize);\n",
+    "    bool flipU = (size.x < 0.0) != (src.z < 0.0);\n",
+    "    bool flipV = (size.y < 0.0) != (src.w < 0.0);\n",
+    "    bool rotated = (flags & 1) != 0;\n",
+    "    float s = flipU? 1.0 - cs : cs;\n",
+    "    float t = flipV? 1.0 - ct : ct;\n",
+    "    vec2 frame = rotated? vec2(1.0 - t, s) : vec2(s, t);\n",
+    "    fragTexCoord = (src.xy + frame*abs(src.zw))/rblTextureSize;\n",
+    "\n",
+    "    vec3 T, V;\n",
+    "    if (!rotated) { T = flipU? -r : r; V = flipV? un : -un; }\n",
+    "    else { T = flipV? -un : un; V = flipU? -r : r; }\n",
+    "    float w = (dot(cross(n, T), V) < 0.0)? -1.0 : 1.0;\n",
+    "\n",
+    "    vec3 nv = n, tv = T;\n",
+    "    float round = clamp(rblRoundness, 0.0, 1.0);\n",
+    "    if (round > 0.0)\n",
+    "    {\n",
+    "        float dx = (cs < 0.5)? -1.0 : 1.0;\n",
+    "        float dy = ((flags & 2) != 0)? 0.0 : ((ct > 0.5)? -1.0 : 1.0);\n",
+    "        rblNormalizeTo(n + (r*dx + un*dy)*round, nv);\n",
+    "        if (!rblPerpendicular(T, nv, tv)) tv = T;\n",
+    "    }\n",
+    "\n",
+    "    fragPosition = p;\n",
+    "    fragColor = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
+    "    fragNormal = nv;\n",
+    "    fragTangent = vec4(tv, w);\n",
+    "    gl_Position = mvp*vec4(p, 1.0);\n",
+    "}\n",
+    NULL };
 // Every embedded shader by file name (tests compare these with shaders/*.glsl)
-static const struct { const char *file; const char *source; } rbl__shaderFiles[] = {
+static const struct { const char *file; const char *const *source; } rbl__shaderFiles[] = {
     { "lit.fs.glsl", rbl__shader_lit_fs },
     { "lit.vs.glsl", rbl__shader_lit_vs },
+    { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
 };
 // RBL-SHADERS-END
 
@@ -901,24 +1092,179 @@ void RblClose(void)
 }
 
 //----------------------------------------------------------------------------------
+// Module Functions Definition: instanced path
+//----------------------------------------------------------------------------------
+// Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
+#define RBL__INSTANCE_LOCATION 10
+// Coordinates beyond this could overflow float once the GPU combines them: rejected like NaN
+#define RBL__INSTANCE_MAX_COORD 1e36f
+
+enum { RBL__LOC_EYE = 0, RBL__LOC_RIGHT, RBL__LOC_UP, RBL__LOC_BACK, RBL__LOC_FACING, RBL__LOC_FACING_UP,
+       RBL__LOC_FACING_AXIS, RBL__LOC_ROUNDNESS, RBL__LOC_TEXTURE_SIZE, RBL__LOC_COUNT };
+
+static void rbl__loadInstanceGpu(RblInstanceBuffer *buffer)
+{
+    const int stride = (int)sizeof(RblInstance);
+    buffer->vaoId = rlLoadVertexArray();
+    rlEnableVertexArray(buffer->vaoId);
+    buffer->vboId = rlLoadVertexBuffer(NULL, buffer->capacity*stride, true);
+    const unsigned int loc = RBL__INSTANCE_LOCATION;
+    rlSetVertexAttribute(loc + 0, 4, RL_FLOAT, false, stride, (int)offsetof(RblInstance, position));
+    rlSetVertexAttribute(loc + 1, 4, RL_FLOAT, false, stride, (int)offsetof(RblInstance, size));
+    rlSetVertexAttribute(loc + 2, 4, RL_FLOAT, false, stride, (int)offsetof(RblInstance, source));
+    rlSetVertexAttribute(loc + 3, 4, RL_UNSIGNED_BYTE, true, stride, (int)offsetof(RblInstance, tint));
+    rlSetVertexAttribute(loc + 4, 1, 0x1405 /* GL_UNSIGNED_INT, converted to float */, false, stride, (int)offsetof(RblInstance, flags));
+    for (unsigned int i = 0; i < 5; i++) { rlEnableVertexAttribute(loc + i); rlSetVertexAttributeDivisor(loc + i, 1); }
+    rlDisableVertexArray();
+}
+
+RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
+{
+    RblInstanceBuffer buffer;
+    memset(&buffer, 0, sizeof(buffer));
+    if (capacity < 0) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: negative capacity %i", capacity); return buffer; }
+    if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
+    buffer.staging = (RblInstance *)RBL_MALLOC((size_t)capacity*sizeof(RblInstance));
+    if (buffer.staging == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: out of memory for %i instances", capacity); return buffer; }
+    buffer.capacity = capacity;
+    rbl__loadInstanceGpu(&buffer);
+    if ((buffer.vaoId == 0) || (buffer.vboId == 0))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: GPU buffers could not be created (no GL context?)");
+        RblUnloadInstanceBuffer(&buffer);
+    }
+    return buffer;
+}
+
+bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
+{
+    return (buffer.staging != NULL) && (buffer.vaoId != 0) && (buffer.vboId != 0);
+}
+
+void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
+{
+    if (buffer == NULL) return;
+    if (buffer->vaoId != 0) rlUnloadVertexArray(buffer->vaoId);
+    if (buffer->vboId != 0) rlUnloadVertexBuffer(buffer->vboId);
+    RBL_FREE(buffer->staging);
+    memset(buffer, 0, sizeof(*buffer));
+}
+
+static bool rbl__instanceOk(const RblInstance *in)
+{
+    // One bound test per float rejects NaN, Inf and magnitudes that could overflow on the GPU
+    const float *f = &in->position.x;
+    for (int i = 0; i < 12; i++) if (!(fabsf(f[i]) <= RBL__INSTANCE_MAX_COORD)) return false;
+    return true;
+}
+
+int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
+{
+    if ((buffer == NULL) || !RblIsInstanceBufferValid(*buffer)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: invalid instance buffer"); return 0; }
+    if ((count < 0) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (%i)", count); return 0; }
+    if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i or NaN/Inf vectors)", desc.facing);
+        return 0;
+    }
+    if (count > buffer->capacity)
+    {
+        int newCapacity = buffer->capacity;
+        while (newCapacity < count) newCapacity *= 2;
+        RblInstance *staging = (RblInstance *)RBL_REALLOC(buffer->staging, (size_t)newCapacity*sizeof(RblInstance));
+        if (staging == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: out of memory for %i instances", newCapacity); return 0; }
+        TraceLog(LOG_INFO, "RBL: instance buffer grown from %i to %i (reserve more in RblLoadInstanceBuffer)", buffer->capacity, newCapacity);
+        buffer->staging = staging;
+        buffer->capacity = newCapacity;
+        rlUnloadVertexArray(buffer->vaoId);
+        rlUnloadVertexBuffer(buffer->vboId);
+        rbl__loadInstanceGpu(buffer);
+    }
+
+    // The small per-instance copy: validate while copying, so no NaN reaches the GPU buffer
+    int n = 0;
+    buffer->skipped = 0;
+    for (int i = 0; i < count; i++)
+    {
+        if (rbl__instanceOk(&instances[i])) buffer->staging[n++] = instances[i];
+        else buffer->skipped++;
+    }
+    if (buffer->skipped > 0) TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| > 1e36)", buffer->skipped);
+    if (n == 0) return 0;
+
+    Shader sh = material.shader;
+    if (sh.id != buffer->shaderId)
+    {
+        static const char *names[RBL__LOC_COUNT] = { "rblViewEye", "rblViewRight", "rblViewUp", "rblViewBack", "rblFacing",
+                                                     "rblFacingUp", "rblFacingAxis", "rblRoundness", "rblTextureSize" };
+        for (int i = 0; i < RBL__LOC_COUNT; i++) buffer->locs[i] = rlGetLocationUniform(sh.id, names[i]);
+        buffer->shaderId = sh.id;
+    }
+    if (buffer->locs[RBL__LOC_RIGHT] == -1)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: material shader %u is not an instanced lit variant (RblLitShaderDesc.instanced)", sh.id);
+        return 0;
+    }
+
+    int texW = 1, texH = 1;
+    if ((material.maps != NULL) && (material.maps[MATERIAL_MAP_ALBEDO].texture.id != 0))
+    {
+        texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
+        texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
+    }
+    if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
+
+    RblView view = RblGetView(camera);
+    rlDrawRenderBatchActive();
+    rbl__bindMaterial(&material);
+    float texSize[2] = { (float)texW, (float)texH };
+    rlSetUniform(buffer->locs[RBL__LOC_EYE], &view.eye, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_RIGHT], &view.right, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_UP], &view.up, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_BACK], &view.back, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_FACING], &desc.facing, SHADER_UNIFORM_INT, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_FACING_UP], &desc.up, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_FACING_AXIS], &desc.axis, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_ROUNDNESS], &desc.roundness, SHADER_UNIFORM_FLOAT, 1);
+    rlSetUniform(buffer->locs[RBL__LOC_TEXTURE_SIZE], texSize, SHADER_UNIFORM_VEC2, 1);
+
+    rlEnableVertexArray(buffer->vaoId);
+    rlUpdateVertexBuffer(buffer->vboId, buffer->staging, n*(int)sizeof(RblInstance), 0);
+    rlDrawVertexArrayInstanced(0, 6, n);
+    rlDisableVertexArray();
+    rbl__unbindMaterial();
+    return n;
+}
+
+//----------------------------------------------------------------------------------
 // Module Functions Definition: lights and the forward lit shader
 //----------------------------------------------------------------------------------
+// prefix + lines joined into one allocated string (the embedded sources are arrays of lines)
+static char *rbl__joinSource(const char *prefix, const char *const *lines)
+{
+    size_t len = strlen(prefix);
+    for (int i = 0; lines[i] != NULL; i++) len += strlen(lines[i]);
+    char *text = (char *)RBL_MALLOC(len + 1);
+    if (text == NULL) return NULL;
+    size_t at = strlen(prefix);
+    memcpy(text, prefix, at);
+    for (int i = 0; lines[i] != NULL; i++) { size_t l = strlen(lines[i]); memcpy(text + at, lines[i], l); at += l; }
+    text[at] = '\0';
+    return text;
+}
+
 // Compile a variant: "#version 330", the variant's defines, then the embedded source.
 // raylib substitutes its default shader when compilation fails; report that as a failure.
-static Shader rbl__loadShaderVariant(const char *vs, const char *fs, const char *defines)
+static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *fs, const char *defines)
 {
-    static const char header[] = "#version 330\n";
-    size_t hl = strlen(header), dl = strlen(defines), vl = strlen(vs), fl = strlen(fs);
-    char *vsFull = (char *)RBL_MALLOC(hl + dl + vl + 1);
-    char *fsFull = (char *)RBL_MALLOC(hl + dl + fl + 1);
+    char prefix[512];
+    snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
+    char *vsFull = rbl__joinSource(prefix, vs);
+    char *fsFull = rbl__joinSource(prefix, fs);
     Shader shader;
     memset(&shader, 0, sizeof(shader));
-    if ((vsFull != NULL) && (fsFull != NULL))
-    {
-        memcpy(vsFull, header, hl); memcpy(vsFull + hl, defines, dl); memcpy(vsFull + hl + dl, vs, vl + 1);
-        memcpy(fsFull, header, hl); memcpy(fsFull + hl, defines, dl); memcpy(fsFull + hl + dl, fs, fl + 1);
-        shader = LoadShaderFromMemory(vsFull, fsFull);
-    }
+    if ((vsFull != NULL) && (fsFull != NULL)) shader = LoadShaderFromMemory(vsFull, fsFull);
     RBL_FREE(vsFull); RBL_FREE(fsFull);
     if ((shader.id == 0) || (shader.id == rlGetShaderIdDefault()))
     {
@@ -946,11 +1292,12 @@ RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
     }
     char defines[128];
     snprintf(defines, sizeof(defines), "#define RBL_LIGHTS %i\n%s", maxLights, desc.normalMap? "#define RBL_NORMAL_MAP\n" : "");
-    lit.shader = rbl__loadShaderVariant(rbl__shader_lit_vs, rbl__shader_lit_fs, defines);
+    lit.shader = rbl__loadShaderVariant(desc.instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, rbl__shader_lit_fs, defines);
     if (lit.shader.id == 0) return lit;
 
     lit.maxLights = maxLights;
     lit.normalMap = desc.normalMap;
+    lit.instanced = desc.instanced;
     lit.shader.locs[SHADER_LOC_VECTOR_VIEW] = GetShaderLocation(lit.shader, "viewPos");
     lit.shader.locs[SHADER_LOC_MAP_NORMAL] = desc.normalMap? GetShaderLocation(lit.shader, "texture2") : -1;
     lit.locLightCount = GetShaderLocation(lit.shader, "rblLightCount");

@@ -219,3 +219,8 @@ void rtFinish(void)
     }
     if (finish != NULL) finish();
 }
+
+void *rtGlProc(const char *name)
+{
+    return (rtGetProc != NULL)? rtFnToPtr(rtGetProc(name)) : NULL;
+}

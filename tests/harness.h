@@ -43,4 +43,7 @@ void rtSaveImage(Image image, const char *tag);
 // Blocks until the GL has executed every command issued so far (glFinish through the context's loader).
 void rtFinish(void);
 
+// GL entry point of the current context (for tests that need GL beyond rlgl, e.g. transform feedback)
+void *rtGlProc(const char *name);
+
 #endif

@@ -13,6 +13,7 @@
 
 #include "reference.h"
 #include "test_render.c"
+#include "test_instanced.c"
 
 int main(int argc, char **argv)
 {
@@ -25,6 +26,9 @@ int main(int argc, char **argv)
         RT_TEST(test_lit_bad_lights_are_rejected_and_change_nothing),
         RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate),
         RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro),
+        RT_TEST(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),
+        RT_TEST(test_paths_instanced_hard_cases_stay_finite),
+        RT_TEST(test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }

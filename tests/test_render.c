@@ -111,17 +111,19 @@ static void test_shaders_every_lit_variant_compiles_and_links(void)
     const int lights[] = { 0, 1, 2, RBL_MAX_LIGHTS };
     for (int li = 0; li < 4; li++)
     for (int nm = 0; nm < 2; nm++)
+    for (int inst = 0; inst < 2; inst++)
     {
         RblLitShaderDesc desc;
         memset(&desc, 0, sizeof(desc));
         desc.maxLights = lights[li];
         desc.normalMap = nm;
+        desc.instanced = inst;
         RblLitShader s = RblLoadLitShader(desc);
-        RT_CHECK(RblIsLitShaderValid(s), "variant lights=%d normalMap=%d failed", lights[li], nm);
+        RT_CHECK(RblIsLitShaderValid(s), "variant lights=%d normalMap=%d instanced=%d failed", lights[li], nm, inst);
         RT_CHECK(s.shader.id != rlGetShaderIdDefault(), "variant fell back to raylib's default shader");
         RT_CHECK(s.locLightPosition != -1 && s.locAmbient != -1 && s.locAlphaCutoff != -1, "uniform locations missing");
         // The tangent is only an active attribute where a normal map uses it; then at raylib's location 4
-        if (nm) RT_CHECK(s.shader.locs[SHADER_LOC_VERTEX_TANGENT] == 4, "vertexTangent not at raylib's location 4 (%d)", s.shader.locs[SHADER_LOC_VERTEX_TANGENT]);
+        if (nm && !inst) RT_CHECK(s.shader.locs[SHADER_LOC_VERTEX_TANGENT] == 4, "vertexTangent not at raylib's location 4 (%d)", s.shader.locs[SHADER_LOC_VERTEX_TANGENT]);
         RT_CHECK((s.shader.locs[SHADER_LOC_MAP_NORMAL] != -1) == (nm != 0), "normal map slot should exist only in the normal-map variant");
         RblUnloadLitShader(s);
     }
@@ -130,7 +132,8 @@ static void test_shaders_every_lit_variant_compiles_and_links(void)
 static void test_shaders_compile_failure_is_reported_not_replaced_by_the_default(void)
 {
     warnings = 0;
-    Shader bad = rbl__loadShaderVariant(rbl__shader_lit_vs, "void main() { this is not glsl; }\n", "");
+    const char *const broken[] = { "void main() { this is not glsl; }\n", NULL };
+    Shader bad = rbl__loadShaderVariant(rbl__shader_lit_vs, broken, "");
     RT_CHECK(bad.id == 0, "a broken shader must come back invalid, not as raylib's default (id %u)", bad.id);
     RT_CHECK(warnings == 1, "one RBL warning expected, got %d", warnings);
     RblLitShaderDesc desc;

@@ -1,0 +1,315 @@
+// Instanced path specification: the vertex shader expands the same quads as the CPU path.
+// Vertices are captured from the GPU with transform feedback and compared with
+// RblBillboardVertices() (which the immediate and batched paths share). Included by test_gpu_main.c.
+
+typedef unsigned int GLu;
+typedef struct {
+    GLu (*CreateShader)(GLu);
+    void (*ShaderSource)(GLu, int, const char *const *, const int *);
+    void (*CompileShader)(GLu);
+    void (*GetShaderiv)(GLu, GLu, int *);
+    void (*GetShaderInfoLog)(GLu, int, int *, char *);
+    GLu (*CreateProgram)(void);
+    void (*AttachShader)(GLu, GLu);
+    void (*TransformFeedbackVaryings)(GLu, int, const char *const *, GLu);
+    void (*LinkProgram)(GLu);
+    void (*GetProgramiv)(GLu, GLu, int *);
+    void (*GenBuffers)(int, GLu *);
+    void (*BindBuffer)(GLu, GLu);
+    void (*BufferData)(GLu, ptrdiff_t, const void *, GLu);
+    void (*BindBufferBase)(GLu, GLu, GLu);
+    void (*Enable)(GLu);
+    void (*Disable)(GLu);
+    void (*BeginTransformFeedback)(GLu);
+    void (*EndTransformFeedback)(void);
+    void (*GetBufferSubData)(GLu, ptrdiff_t, ptrdiff_t, void *);
+    void (*DeleteBuffers)(int, const GLu *);
+    void (*DeleteProgram)(GLu);
+    void (*DeleteShader)(GLu);
+} TfGl;
+
+static bool tfLoad(TfGl *gl)
+{
+    static const char *names[] = { "glCreateShader", "glShaderSource", "glCompileShader", "glGetShaderiv", "glGetShaderInfoLog",
+        "glCreateProgram", "glAttachShader", "glTransformFeedbackVaryings", "glLinkProgram", "glGetProgramiv", "glGenBuffers",
+        "glBindBuffer", "glBufferData", "glBindBufferBase", "glEnable", "glDisable", "glBeginTransformFeedback",
+        "glEndTransformFeedback", "glGetBufferSubData", "glDeleteBuffers", "glDeleteProgram", "glDeleteShader" };
+    void **slots = (void **)gl;     // TfGl is a sequence of pointers in the order of names[]
+    for (size_t i = 0; i < sizeof(names)/sizeof(names[0]); i++)
+    {
+        void *p = rtGlProc(names[i]);
+        if (p == NULL) { printf("    missing %s\n", names[i]); return false; }
+        memcpy(&slots[i], &p, sizeof(p));
+    }
+    return true;
+}
+
+#define TF_FLOATS 12    // fragPosition (3), fragTexCoord (2), fragNormal (3), fragTangent (4)
+
+// Program of the instanced vertex stage alone, capturing its outputs
+static GLu tfProgram(TfGl *gl)
+{
+    char *vs = rbl__joinSource("#version 330\n#define RBL_LIGHTS 1\n", rbl__shader_lit_instanced_vs);
+    GLu sh = gl->CreateShader(0x8B31 /* GL_VERTEX_SHADER */);
+    const char *src = vs;
+    gl->ShaderSource(sh, 1, &src, NULL);
+    gl->CompileShader(sh);
+    int ok = 0;
+    gl->GetShaderiv(sh, 0x8B81 /* GL_COMPILE_STATUS */, &ok);
+    if (!ok) { char log[1024]; gl->GetShaderInfoLog(sh, sizeof(log), NULL, log); printf("    %s\n", log); }
+    RBL_FREE(vs);
+    GLu prog = gl->CreateProgram();
+    gl->AttachShader(prog, sh);
+    const char *varyings[] = { "fragPosition", "fragTexCoord", "fragNormal", "fragTangent" };
+    gl->TransformFeedbackVaryings(prog, 4, varyings, 0x8C8C /* GL_INTERLEAVED_ATTRIBS */);
+    gl->LinkProgram(prog);
+    gl->GetProgramiv(prog, 0x8B82 /* GL_LINK_STATUS */, &ok);
+    gl->DeleteShader(sh);
+    if (!ok) { gl->DeleteProgram(prog); return 0; }
+    return prog;
+}
+
+static RblBillboard billboardOf(const RblInstance *in, RblInstancedDesc d)
+{
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.position = in->position; b.rotation = in->rotation; b.size = in->size; b.origin = in->origin;
+    b.source = in->source; b.tint = in->tint; b.flags = in->flags;
+    b.facing = d.facing; b.up = d.up; b.axis = d.axis; b.roundness = d.roundness;
+    return b;
+}
+
+// Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
+static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
+{
+    RblView view = RblGetView(cam);
+    // A complete framebuffer must be bound even with rasterisation discarded (surfaceless has none)
+    RenderTexture2D scratch = LoadRenderTexture(4, 4);
+    BeginTextureMode(scratch);
+    rlEnableShader(prog);
+    float texSize[2] = { (float)texW, (float)texH };
+    rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
+    rlSetUniform(rlGetLocationUniform(prog, "rblViewEye"), &view.eye, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblViewRight"), &view.right, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblViewUp"), &view.up, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblViewBack"), &view.back, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblFacing"), &d.facing, SHADER_UNIFORM_INT, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblFacingUp"), &d.up, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblFacingAxis"), &d.axis, SHADER_UNIFORM_VEC3, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblRoundness"), &d.roundness, SHADER_UNIFORM_FLOAT, 1);
+    rlSetUniform(rlGetLocationUniform(prog, "rblTextureSize"), texSize, SHADER_UNIFORM_VEC2, 1);
+
+    size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
+    GLu tfb = 0;
+    gl->GenBuffers(1, &tfb);
+    gl->BindBuffer(0x8C8E /* GL_TRANSFORM_FEEDBACK_BUFFER */, tfb);
+    gl->BufferData(0x8C8E, (ptrdiff_t)bytes, NULL, 0x88E5 /* GL_STATIC_READ */);
+    gl->BindBufferBase(0x8C8E, 0, tfb);
+
+    rlEnableVertexArray(buf->vaoId);
+    rlUpdateVertexBuffer(buf->vboId, in, n*(int)sizeof(RblInstance), 0);
+    gl->Enable(0x8C89 /* GL_RASTERIZER_DISCARD */);
+    gl->BeginTransformFeedback(0x0004 /* GL_TRIANGLES */);
+    rlDrawVertexArrayInstanced(0, 6, n);
+    gl->EndTransformFeedback();
+    gl->Disable(0x8C89);
+    rlDisableVertexArray();
+    rlDisableShader();
+    EndTextureMode();
+    UnloadRenderTexture(scratch);
+
+    float *out = (float *)malloc(bytes);
+    gl->GetBufferSubData(0x8C8E, 0, (ptrdiff_t)bytes, out);
+    gl->DeleteBuffers(1, &tfb);
+    return out;
+}
+
+static RblInstance randomInstance(unsigned int *seed)
+{
+    RblInstance in;
+    memset(&in, 0, sizeof(in));
+    in.position = (Vector3){ rtRandomRange(seed, -20, 20), rtRandomRange(seed, -5, 5), rtRandomRange(seed, -20, 20) };
+    in.rotation = (rtRandom(seed) & 1)? rtRandomRange(seed, -360, 360) : 0.0f;
+    in.size = (Vector2){ rtRandomRange(seed, -4, 4), rtRandomRange(seed, -4, 4) };
+    in.origin = (Vector2){ rtRandomRange(seed, -1, 2), rtRandomRange(seed, -1, 2) };
+    in.source = (Rectangle){ rtRandomRange(seed, 0, 128), rtRandomRange(seed, 0, 128), rtRandomRange(seed, -128, 128), rtRandomRange(seed, -128, 128) };
+    in.tint = (Color){ (unsigned char)rtRandom(seed), (unsigned char)rtRandom(seed), (unsigned char)rtRandom(seed), 255 };
+    in.flags = rtRandom(seed) & 3;
+    return in;
+}
+
+static void test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode(void)
+{
+    TfGl gl;
+    RT_CHECK(tfLoad(&gl), "transform feedback entry points missing");
+    GLu prog = tfProgram(&gl);
+    RT_CHECK(prog != 0, "instanced vertex stage did not link with transform feedback");
+    if (prog == 0) return;
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(256);
+    Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
+    unsigned int seed = 777u;
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worstPos = 0.0, worstAttr = 0.0;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    for (int variant = 0; variant < 2; variant++)
+    {
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = facing;
+        d.roundness = variant? 0.7f : 0.0f;
+        if (variant && facing == RBL_FACING_CAMERA_PLANE) d.up = (Vector3){ 0.2f, 1.5f, 0.0f };
+        if (variant && facing == RBL_FACING_AXIS) d.axis = (Vector3){ 0.3f, 1.0f, -0.2f };
+        if (facing == RBL_FACING_FIXED) { d.axis = (Vector3){ 0.2f, 0.5f, 1.0f }; d.up = variant? (Vector3){ 1, 1, 0 } : (Vector3){ 0, 0, 0 }; }
+        RblInstance in[256];
+        for (int i = 0; i < 256; i++) in[i] = randomInstance(&seed);
+        float *gpu = tfCapture(&gl, prog, &buf, cam, d, 256, 128, in, 256);
+        RblView view = RblGetView(cam);
+        for (int i = 0; i < 256; i++)
+        {
+            RblBillboard b = billboardOf(&in[i], d);
+            RblVertex q[4];
+            RT_CHECK(RblBillboardVertices(view, 256, 128, &b, q), "cpu skipped instance %d", i);
+            double scale = 1.0 + dLen(d3f(b.position)) + fabs(b.size.x) + fabs(b.size.y) + fabs(b.origin.x) + fabs(b.origin.y);
+            for (int v = 0; v < 6; v++)
+            {
+                const float *g = gpu + ((size_t)i*6 + v)*TF_FLOATS;
+                const RblVertex *c = &q[cornerOf[v]];
+                for (int k = 0; k < 3; k++) worstPos = fmax(worstPos, fabs(g[k] - c->position[k])/scale);
+                for (int k = 0; k < 2; k++) worstAttr = fmax(worstAttr, fabs(g[3 + k] - c->texcoord[k]));
+                for (int k = 0; k < 3; k++) worstAttr = fmax(worstAttr, fabs(g[5 + k] - c->normal[k]));
+                for (int k = 0; k < 4; k++) worstAttr = fmax(worstAttr, fabs(g[8 + k] - c->tangent[k]));
+            }
+        }
+        free(gpu);
+    }
+    RT_CHECK(worstPos < 1e-5, "worst relative position difference instanced vs cpu %.3g", worstPos);
+    RT_CHECK(worstAttr < 1e-5, "worst uv/normal/tangent difference instanced vs cpu %.3g", worstAttr);
+    printf("    instanced vs cpu: worst relative position %.2e, worst attribute %.2e over 2048 billboards\n", worstPos, worstAttr);
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// Degenerate cameras and the eye on the billboard: the GPU frame stays finite and unit as well
+static void test_paths_instanced_hard_cases_stay_finite(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "no GL entry points"); return; }
+    GLu prog = tfProgram(&gl);
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(8);
+    Camera3D cams[3] = {
+        makeCamera((Vector3){ 0, 10, 0 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }),     // straight down, up parallel
+        makeCamera((Vector3){ 0, -10, 0 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }),    // straight up
+        makeCamera((Vector3){ 1, 2, 3 }, (Vector3){ 1, 2, 3 }, (Vector3){ 0, 1, 0 }),      // target == position
+    };
+    for (int c = 0; c < 3; c++)
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    {
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = facing;
+        RblInstance in[2];
+        memset(in, 0, sizeof(in));
+        in[0].size = (Vector2){ 1, 1 };
+        in[1].size = (Vector2){ 0, 0 };
+        in[1].position = cams[c].position;      // centre at the eye, zero size
+        float *gpu = tfCapture(&gl, prog, &buf, cams[c], d, 4, 4, in, 2);
+        for (int v = 0; v < 12; v++)
+        {
+            const float *g = gpu + v*TF_FLOATS;
+            bool finite = true;
+            for (int k = 0; k < TF_FLOATS; k++) finite = finite && rtFinite(g[k]);
+            double nl = sqrt(g[5]*g[5] + g[6]*g[6] + g[7]*g[7]), tl = sqrt(g[8]*g[8] + g[9]*g[9] + g[10]*g[10]);
+            double nt = g[5]*g[8] + g[6]*g[9] + g[7]*g[10];
+            RT_CHECK(finite && fabs(nl - 1.0) < 1e-5 && fabs(tl - 1.0) < 1e-5 && fabs(nt) < 1e-5,
+                     "camera %d mode %d vertex %d: finite %d |N| %.6f |T| %.6f N.T %.2g", c, facing, v, finite, nl, tl, nt);
+        }
+        free(gpu);
+    }
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// RblDrawInstanced itself: skips bad instances with one warning, and renders what the batch renders
+static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances(void)
+{
+    Camera3D cam = frontCamera();
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1;
+    desc.normalMap = true;
+    RblLitShader plain = RblLoadLitShader(desc);
+    desc.instanced = true;
+    RblLitShader inst = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(plain) && RblIsLitShaderValid(inst), "lit variants failed");
+    Texture2D albedo = solidTexture((Color){ 220, 200, 160, 255 }), nmap = solidTexture(normalTexel(0.5f, 0.3f, 0.81f));
+    Material m = LoadMaterialDefault();
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
+    RblLight l = pointLight((Vector3){ 1.5f, 1.0f, 2.0f }, 5.0f);
+    RblSetLights(&plain, &l, 1, (Color){ 25, 25, 25, 255 });
+    RblSetLights(&inst, &l, 1, (Color){ 25, 25, 25, 255 });
+
+    unsigned int seed = 31u;
+    RblInstance in[12];
+    for (int i = 0; i < 12; i++)
+    {
+        memset(&in[i], 0, sizeof(in[i]));
+        in[i].position = (Vector3){ rtRandomRange(&seed, -1.5f, 1.5f), rtRandomRange(&seed, -1.5f, 1.5f), -0.2f*i };
+        in[i].size = (Vector2){ (i & 1)? -0.7f : 0.7f, 0.7f };
+        in[i].origin = (Vector2){ 0.35f, 0.35f };
+        in[i].rotation = 20.0f*i;
+        in[i].flags = (i%3 == 0)? RBL_FRAME_ROTATED : 0;
+    }
+    in[3].position.x = NAN;
+    in[7].size.y = INFINITY;
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    d.facing = RBL_FACING_CAMERA_POSITION;
+    d.roundness = 0.5f;
+
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(4);     // grows to 16 with one info line
+    warnings = 0;
+    BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+    m.shader = inst.shader;
+    int drawn = RblDrawInstanced(&buf, cam, m, d, in, 12);
+    EndMode3D(); EndTextureMode();
+    RT_CHECK(drawn == 10 && buf.skipped == 2, "drawn %d skipped %d", drawn, buf.skipped);
+    RT_CHECK(warnings == 1, "one warning for the skipped instances, got %d", warnings);
+    Image a = rtReadTarget(rt);
+
+    RblBatch batch = RblLoadBatch(16);
+    BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+    m.shader = plain.shader;
+    RblBeginBatch(&batch, cam);
+    for (int i = 0; i < 12; i++) { RblBillboard b = billboardOf(&in[i], d); RblBatchAdd(&batch, m, &b); }
+    RblEndBatch(&batch);
+    EndMode3D(); EndTextureMode();
+    Image b = rtReadTarget(rt);
+    int lit = 0, off = 0;
+    for (int y = 0; y < TARGET; y++)
+    for (int x = 0; x < TARGET; x++)
+    {
+        Color ca = rtPixel(a, x, y), cb = rtPixel(b, x, y);
+        if (cb.r > 0) lit++;
+        if (abs(ca.r - cb.r) > 1 || abs(ca.g - cb.g) > 1 || abs(ca.b - cb.b) > 1) off++;
+    }
+    RT_CHECK(lit > 300, "batched reference nearly empty (%d)", lit);
+    RT_CHECK(off <= 4, "%d pixels differ by more than 1/255 between instanced and batched", off);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(a, "instanced"); rtSaveImage(b, "batched"); }
+
+    // A non-instanced shader is refused with a warning, nothing drawn
+    warnings = 0;
+    RT_CHECK(RblDrawInstanced(&buf, cam, m, d, in, 2) == 0 && warnings == 1, "plain shader accepted for instancing");
+    d.facing = 17;
+    m.shader = inst.shader;
+    RT_CHECK(RblDrawInstanced(&buf, cam, m, d, in, 2) == 0, "bad facing accepted");
+
+    UnloadImage(a); UnloadImage(b);
+    UnloadRenderTexture(rt);
+    RblUnloadBatch(&batch);
+    RblUnloadInstanceBuffer(&buf);
+    RblUnloadLitShader(plain); RblUnloadLitShader(inst);
+    UnloadTexture(albedo); UnloadTexture(nmap);
+    MemFree(m.maps);
+}
