@@ -64,7 +64,7 @@ $(BUILD)/tests/test_gpu: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/test_gpu_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_gpu
-	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" bash tests/run.sh
+	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
 $(BUILD)/showcase: examples/billboards_lit_showcase.c $(HEADER) $(BUILD)/raylib.mk
@@ -96,3 +96,13 @@ clean:
 
 clean-all:
 	rm -rf $(BUILD)
+
+# ---- README pictures (rendered headlessly, committed under examples/resources) -------------
+$(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+pictures: $(BUILD)/pictures run
+	@mkdir -p examples/resources
+	@$(BUILD)/pictures examples/resources
+	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true

@@ -28,6 +28,14 @@ for c in "gcc -std=c99 -x c" "clang -std=c99 -x c" "g++ -std=c++11 -x c++" "clan
   done
 done
 
+# The README's drop-in program must compile and link as printed
+awk '/^```c$/{f=1;next} /^```$/{f=0} f' README.md > "$BUILD/tests/readme_example.c"
+if out=$(cc -std=c99 -Wall -Wextra -Werror -I. $RAYLIB_CFLAGS "$BUILD/tests/readme_example.c" -o "$BUILD/tests/readme_example" $RAYLIB_LIBS 2>&1); then
+  echo "  ok    README program compiles and links"; pass=$((pass + 1))
+else
+  echo "  FAIL  README program compiles and links"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
+fi
+
 for suite in test_cpu test_cpu_san; do
   echo "== $suite"
   out=$("$BUILD/tests/$suite" 2>&1); printf '%s\n' "$out"; count "$out"
