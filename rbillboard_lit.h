@@ -31,6 +31,10 @@
 *       - Lighting is Lambert diffuse with point lights only (directional/spot, Blinn-Phong/GGX,
 *         packed material maps, the deferred helper and shadows are planned, not implemented)
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself
+*       - Instanced path: facing mode, up, axis and roundness are shared by all instances of a draw
+*         (RblInstancedDesc); billboards needing their own FIXED orientation go through the batch
+*       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) is not applied to billboards: their vertices
+*         are world space (matModel = identity) and face the camera in world space
 *
 *   DEVIATIONS FROM raylib's DrawBillboardPro (deliberate, tested):
 *       - Negative size mirrors the image inside the source rectangle and keeps the quad's footprint
@@ -72,11 +76,12 @@
 *           Custom allocator: define all four or none.
 *
 *       #define RBLAPI
-*           Decoration for public functions (e.g. __declspec(dllexport) for a shared build).
+*           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
+*           __declspec(dllexport/dllimport) on Windows, as in raylib.
 *
 *   VERSIONS HISTORY:
 *       0.1 (2026-11-22) First release: geometry (all facing modes, flips, rotated frames, rounded
-*                        normals), immediate and batched paths, forward Lambert point lights.
+*                        normals), immediate, batched and instanced paths, forward Lambert point lights.
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
@@ -112,8 +117,15 @@
 #define RBILLBOARD_LIT_VERSION_PATCH 0
 #define RBILLBOARD_LIT_VERSION "0.1.0"
 
+// Function specifiers for a shared library build on Windows (as raylib's BUILD_LIBTYPE_SHARED)
 #ifndef RBLAPI
-    #define RBLAPI      // Functions defined as 'extern' by default (implicit specifiers)
+    #if defined(_WIN32) && defined(BUILD_LIBTYPE_SHARED)
+        #define RBLAPI __declspec(dllexport)     // Building the library as a Win32 shared library (.dll)
+    #elif defined(_WIN32) && defined(USE_LIBTYPE_SHARED)
+        #define RBLAPI __declspec(dllimport)     // Using the library as a Win32 shared library (.dll)
+    #else
+        #define RBLAPI                           // Functions defined as 'extern' by default (implicit specifiers)
+    #endif
 #endif
 
 //----------------------------------------------------------------------------------

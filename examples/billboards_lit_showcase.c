@@ -41,8 +41,9 @@
 #define CARD_W                  256         // Card size in the atlas, pixels
 #define CARD_H                  360
 #define CARD_SUPERSAMPLE        2           // Cards are drawn at 2x and scaled down (anti-aliasing)
-#define CARD_EMBOSS_BLUR        4           // Height map blur (pixels): width of the emboss bevels
-#define CARD_EMBOSS_STRENGTH    7.0f        // Height map slope to normal map tilt
+#define CARD_EMBOSS_BEVEL       3           // Height map blurs (pixels): a narrow bevel on a wide,
+#define CARD_EMBOSS_PILLOW      10          // pillow-like dome, so the symbols read as embossed
+#define CARD_EMBOSS_STRENGTH    10.0f       // Height map slope to normal map tilt
 
 #define LIGHT_COUNT             4
 
@@ -79,10 +80,10 @@ static Texture2D floorNormal = { 0 };       // 1x1 flat normal (128,128,255)
 static RblLight showcaseLights[LIGHT_COUNT] = { 0 };
 
 static const LightPath lightPaths[LIGHT_COUNT] = {
-    { { 255, 164,  72, 255 }, 5.0f, 3.0f, 1.1f, 0.30f,  0.55f, 0.6f },    // Warm orange, outer orbit
-    { {  72, 140, 255, 255 }, 5.0f, 3.0f, 1.5f, 0.35f,  0.55f, 3.7f },    // Blue, outer orbit, opposite
-    { { 255,  64, 176, 255 }, 2.2f, 0.9f, 1.1f, 0.25f, -0.90f, 2.0f },    // Magenta, inside the ring of cards
-    { {  96, 255, 136, 255 }, 3.0f, 2.4f, 0.45f, 0.15f, -0.40f, 5.0f },   // Green, low, grazing the floor
+    { { 255, 164,  72, 255 }, 3.2f, 3.0f, 1.0f, 0.30f,  0.55f, 0.2f },    // Warm orange, outer orbit
+    { {  72, 140, 255, 255 }, 3.6f, 3.0f, 1.4f, 0.35f,  0.55f, 3.3f },    // Blue, outer orbit, opposite
+    { { 255,  64, 176, 255 }, 1.6f, 0.8f, 1.0f, 0.25f, -0.90f, 2.0f },    // Magenta, inside the ring of cards
+    { {  96, 255, 136, 255 }, 2.4f, 2.8f, 0.5f, 0.15f, -0.40f, 2.76f },   // Green, low, grazing the floor
 };
 
 // 5x7 bitmap glyphs for the card ranks (drawn without a font, so headless renders work too)
@@ -140,7 +141,7 @@ int main(void)
                 ShowcaseDraw();
             EndMode3D();
 
-            DrawText("Lit billboards: embossed cards under 4 moving point lights (mouse wheel: zoom)", 10, 40, 20, RAYWHITE);
+            DrawText("Lit billboards with embossed normal maps (wheel: zoom)", 10, 40, 20, RAYWHITE);
             DrawFPS(10, 10);
 
         EndDrawing();
@@ -273,14 +274,53 @@ static Rectangle CardSource(int rank)
     return source;
 }
 
-// Tangent-space normal map from a height map (red channel, 0..255 = 0..1) by central differences.
-// OpenGL convention: +Y is up in the image, and image row 0 is the top, so "up" is row - 1.
-static Image GenNormalMapFromHeight(Image height, float strength)
+// Blur a float image in place: repeated box blurs (running sums) approach a gaussian; float
+// precision keeps the slopes free of the 8-bit steps an Image blur would leave
+static void BlurHeights(float *data, int w, int h, int radius)
 {
-    Color *heights = LoadImageColors(height);
-    Image normal = GenImageColor(height.width, height.height, BLANK);
+    float *line = (float *)MemAlloc((unsigned int)((w > h)? w : h)*sizeof(float));
+    for (int pass = 0; pass < 4; pass++)
+    {
+        for (int axis = 0; axis < 2; axis++)
+        {
+            int count = (axis == 0)? h : w, length = (axis == 0)? w : h;
+            int step = (axis == 0)? 1 : w, stride = (axis == 0)? w : 1;
+            for (int l = 0; l < count; l++)
+            {
+                float *p = data + l*stride;
+                float sum = 0.0f;
+                for (int k = -radius; k <= radius; k++) sum += p[((k < 0)? 0 : ((k >= length)? length - 1 : k))*step];
+                for (int i = 0; i < length; i++)
+                {
+                    line[i] = sum/(float)(2*radius + 1);
+                    int add = i + radius + 1, sub = i - radius;
+                    sum += p[((add >= length)? length - 1 : add)*step] - p[((sub < 0)? 0 : sub)*step];
+                }
+                for (int i = 0; i < length; i++) p[i*step] = line[i];
+            }
+        }
+    }
+    MemFree(line);
+}
+
+// Tangent-space normal map from a height mask (red channel, 0..255 = 0..1): the mask is blurred
+// twice (bevel and pillow) and the mean height is differentiated by central differences.
+// OpenGL convention: +Y is up in the image, and image row 0 is the top, so "up" is row - 1.
+static Image GenNormalMapFromHeight(Image mask, float strength)
+{
+    Color *maskColors = LoadImageColors(mask);
+    const int w = mask.width, h = mask.height;
+    float *heights = (float *)MemAlloc((unsigned int)(w*h)*sizeof(float));
+    float *pillow = (float *)MemAlloc((unsigned int)(w*h)*sizeof(float));
+    for (int i = 0; i < w*h; i++) heights[i] = pillow[i] = maskColors[i].r/255.0f;
+    UnloadImageColors(maskColors);
+    BlurHeights(heights, w, h, CARD_EMBOSS_BEVEL);
+    BlurHeights(pillow, w, h, CARD_EMBOSS_PILLOW);
+    for (int i = 0; i < w*h; i++) heights[i] = 0.5f*(heights[i] + pillow[i]);
+    MemFree(pillow);
+
+    Image normal = GenImageColor(w, h, BLANK);
     Color *out = (Color *)normal.data;
-    const int w = height.width, h = height.height;
 
     for (int y = 0; y < h; y++)
     {
@@ -288,8 +328,8 @@ static Image GenNormalMapFromHeight(Image height, float strength)
         for (int x = 0; x < w; x++)
         {
             int left = (x > 0)? x - 1 : x, right = (x < w - 1)? x + 1 : x;
-            float dhdx = (heights[y*w + right].r - heights[y*w + left].r)/255.0f/(float)(right - left);
-            float dhdy = (heights[up*w + x].r - heights[down*w + x].r)/255.0f/(float)(down - up);  // along image up
+            float dhdx = (heights[y*w + right] - heights[y*w + left])/(float)(right - left);
+            float dhdy = (heights[up*w + x] - heights[down*w + x])/(float)(down - up);  // along image up
             float nx = -strength*dhdx, ny = -strength*dhdy, nz = 1.0f;
             float inv = 1.0f/sqrtf(nx*nx + ny*ny + nz*nz);
             out[y*w + x].r = (unsigned char)(127.5f + 127.5f*nx*inv);
@@ -299,7 +339,7 @@ static Image GenNormalMapFromHeight(Image height, float strength)
         }
     }
 
-    UnloadImageColors(heights);
+    MemFree(heights);
     return normal;
 }
 
@@ -309,8 +349,8 @@ static Image GenNormalMapFromHeight(Image height, float strength)
 static void ShowcaseInit(void)
 {
     // Camera: orbits the scene centre (CAMERA_ORBITAL in the window)
-    showcaseCamera.position = (Vector3){ 0.0f, 2.6f, 6.2f };
-    showcaseCamera.target = (Vector3){ 0.0f, 0.55f, 0.0f };
+    showcaseCamera.position = (Vector3){ 0.0f, 3.0f, 5.0f };
+    showcaseCamera.target = (Vector3){ 0.0f, 0.45f, 0.0f };
     showcaseCamera.up = (Vector3){ 0.0f, 1.0f, 0.0f };
     showcaseCamera.fovy = 45.0f;
     showcaseCamera.projection = CAMERA_PERSPECTIVE;
@@ -326,13 +366,12 @@ static void ShowcaseInit(void)
     for (int rank = 0; rank < CARD_COUNT; rank++)
     {
         Rectangle cell = CardSource(rank);
-        Color ink = ((rank%2) == 0)? (Color){ 24, 24, 32, 255 } : (Color){ 200, 22, 40, 255 };
+        Color ink = ((rank%2) == 0)? (Color){ 44, 44, 56, 255 } : (Color){ 206, 24, 44, 255 };
         DrawCard(&albedo, rank, (int)cell.x*s, (int)cell.y*s, s, paper, (Color){ 214, 178, 96, 255 }, ink);
         DrawCard(&height, rank, (int)cell.x*s, (int)cell.y*s, s, (Color){ 40, 40, 40, 255 }, (Color){ 110, 110, 110, 255 }, WHITE);
     }
     ImageResize(&albedo, atlasW, atlasH);
     ImageResize(&height, atlasW, atlasH);
-    ImageBlurGaussian(&height, CARD_EMBOSS_BLUR);       // Soft bevels: the symbols read as embossed
     Image normal = GenNormalMapFromHeight(height, CARD_EMBOSS_STRENGTH);
 
     cardAlbedo = LoadTextureFromImage(albedo);
@@ -395,7 +434,7 @@ static void ShowcaseUpdate(float time)
         showcaseLights[i].range = 8.0f;
     }
 
-    RblSetLights(&showcaseLit, showcaseLights, LIGHT_COUNT, (Color){ 34, 34, 44, 255 });
+    RblSetLights(&showcaseLit, showcaseLights, LIGHT_COUNT, (Color){ 44, 44, 56, 255 });
 }
 
 static void ShowcaseDraw(void)
