@@ -281,7 +281,7 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Geometry (CPU, no GL needed)
 RBLAPI RblView RblGetView(Camera3D camera);                                   // Camera frame with degenerate cases resolved
-RBLAPI bool RblBillboardVertices(RblView view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
+RBLAPI bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
 
 // Batched and immediate paths (GL)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
@@ -606,14 +606,14 @@ static const struct { const char *file; const char *const *source; } rbl__shader
 //----------------------------------------------------------------------------------
 // Module Internal Functions: small vector helpers (C and C++ without compound literals)
 //----------------------------------------------------------------------------------
-static Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
-static bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
-static bool rbl__finite3(Vector3 v) { return rbl__finite(v.x) && rbl__finite(v.y) && rbl__finite(v.z); }
-static float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
-static float rbl__dot(Vector3 a, Vector3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
-static Vector3 rbl__sub(Vector3 a, Vector3 b) { return rbl__v3(a.x - b.x, a.y - b.y, a.z - b.z); }
-static Vector3 rbl__neg(Vector3 a) { return rbl__v3(-a.x, -a.y, -a.z); }
-static Vector3 rbl__cross(Vector3 a, Vector3 b) { return rbl__v3(a.y*b.z - a.z*b.y, a.z*b.x - a.x*b.z, a.x*b.y - a.y*b.x); }
+static inline Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
+static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
+static inline bool rbl__finite3(Vector3 v) { return rbl__finite(v.x) && rbl__finite(v.y) && rbl__finite(v.z); }
+static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
+static inline float rbl__dot(Vector3 a, Vector3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
+static inline Vector3 rbl__sub(Vector3 a, Vector3 b) { return rbl__v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline Vector3 rbl__neg(Vector3 a) { return rbl__v3(-a.x, -a.y, -a.z); }
+static inline Vector3 rbl__cross(Vector3 a, Vector3 b) { return rbl__v3(a.y*b.z - a.z*b.y, a.z*b.x - a.x*b.z, a.x*b.y - a.y*b.x); }
 
 // a*b exactly as raymath's MatrixMultiply (raymath is not included: it does not compile
 // warning-free as C++ with -Wextra). Matrix fields are named m0..m15 but stored row by row.
@@ -646,7 +646,7 @@ static Matrix rbl__identity(void)
 }
 
 // Unit vector or false when v is too short to give a direction
-static bool rbl__normalizeTo(Vector3 v, Vector3 *out)
+static inline bool rbl__normalizeTo(Vector3 v, Vector3 *out)
 {
     float l2 = rbl__len2(v);
     if (!(l2 > 1e-24f) || !rbl__finite(l2)) return false;
@@ -667,7 +667,7 @@ static Vector3 rbl__fallbackUp(Vector3 d)
 }
 
 // Unit component of v perpendicular to unit n; false if v is (nearly) parallel to n
-static bool rbl__perpendicular(Vector3 v, Vector3 n, Vector3 *out)
+static inline bool rbl__perpendicular(Vector3 v, Vector3 n, Vector3 *out)
 {
     float d = rbl__dot(v, n);
     Vector3 p = rbl__v3(v.x - n.x*d, v.y - n.y*d, v.z - n.z*d);
@@ -687,7 +687,7 @@ RblView RblGetView(Camera3D camera)
     Vector3 back;
     if (!rbl__normalizeTo(rbl__sub(camera.position, camera.target), &back)) back = rbl__v3(0.0f, 0.0f, 1.0f);
     Vector3 up = camera.up;
-    Vector3 right;
+    Vector3 right = rbl__v3(1.0f, 0.0f, 0.0f);     // overwritten: the fallback up is never parallel to back
     if (!rbl__finite3(up) || !rbl__normalizeTo(rbl__cross(up, back), &right) ||
         (rbl__len2(rbl__cross(up, back)) < 1e-12f*rbl__len2(up)))
     {
@@ -701,9 +701,9 @@ RblView RblGetView(Camera3D camera)
 }
 
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal
-static void rbl__facingBasis(RblView view, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
+static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
 {
-    Vector3 r = view.right, u = view.up, n = view.back;
+    Vector3 r = view->right, u = view->up, n = view->back;
     switch (b->facing)
     {
         case RBL_FACING_CAMERA_PLANE:
@@ -718,12 +718,12 @@ static void rbl__facingBasis(RblView view, const RblBillboard *b, Vector3 *right
         case RBL_FACING_CAMERA_POSITION:
         {
             Vector3 toEye;
-            if (rbl__normalizeTo(rbl__sub(view.eye, b->position), &toEye))
+            if (rbl__normalizeTo(rbl__sub(view->eye, b->position), &toEye))
             {
                 n = toEye;
                 Vector3 rr;
-                if (rbl__normalizeTo(rbl__cross(view.up, n), &rr)) { r = rr; u = rbl__cross(n, r); }
-                else { r = view.right; u = rbl__cross(n, r); rbl__normalizeTo(u, &u); r = rbl__cross(u, n); }
+                if (rbl__normalizeTo(rbl__cross(view->up, n), &rr)) { r = rr; u = rbl__cross(n, r); }
+                else { r = view->right; u = rbl__cross(n, r); rbl__normalizeTo(u, &u); r = rbl__cross(u, n); }
             }
         } break;
         case RBL_FACING_AXIS:
@@ -731,9 +731,9 @@ static void rbl__facingBasis(RblView view, const RblBillboard *b, Vector3 *right
             Vector3 a = rbl__v3(0.0f, 1.0f, 0.0f);
             if (rbl__len2(b->axis) > 0.0f) rbl__normalizeTo(b->axis, &a);
             Vector3 nn;
-            if (!rbl__perpendicular(rbl__sub(view.eye, b->position), a, &nn) &&
-                !rbl__perpendicular(view.back, a, &nn) &&
-                !rbl__perpendicular(view.up, a, &nn)) nn = view.back;    // unreachable: up and back can't both be parallel to a
+            if (!rbl__perpendicular(rbl__sub(view->eye, b->position), a, &nn) &&
+                !rbl__perpendicular(view->back, a, &nn) &&
+                !rbl__perpendicular(view->up, a, &nn)) nn = view->back;    // unreachable: up and back can't both be parallel to a
             u = a; n = nn; r = rbl__cross(u, n);
         } break;
         case RBL_FACING_FIXED:
@@ -749,9 +749,9 @@ static void rbl__facingBasis(RblView view, const RblBillboard *b, Vector3 *right
     *right = r; *up = u; *normal = n;
 }
 
-bool RblBillboardVertices(RblView view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
-    if ((b == NULL) || (out == NULL)) return false;
+    if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
     if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
     if (!rbl__finite3(b->position) || !rbl__finite(b->size.x) || !rbl__finite(b->size.y) ||
         !rbl__finite(b->origin.x) || !rbl__finite(b->origin.y) || !rbl__finite(b->rotation) ||
@@ -772,17 +772,28 @@ bool RblBillboardVertices(RblView view, int textureWidth, int textureHeight, con
         U = rbl__v3(U.x*c + nu.x*s, U.y*c + nu.y*s, U.z*c + nu.z*s);
     }
 
-    // Footprint: |size| with the pivot measured from the bottom-left, whatever the flips
+    // Footprint: |size| with the pivot measured from the bottom-left, whatever the flips. R is unit;
+    // U too, except CAMERA_PLANE with a caller up, which raylib scales as given (not normalised).
+    float ulen = 1.0f;
+    if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
+    {
+        ulen = sqrtf(rbl__len2(U));
+        if (ulen > 0.0f) U = rbl__v3(U.x/ulen, U.y/ulen, U.z/ulen);
+    }
     float sx = fabsf(b->size.x), sy = fabsf(b->size.y);
-    Vector3 Rn = R, Un = U;
-    rbl__normalizeTo(U, &Un);         // R is unit already; U may be the caller's unnormalised up
-    float ulen = sqrtf(rbl__len2(U));
     float x0 = -b->origin.x, x1 = sx - b->origin.x;
     float y0 = -b->origin.y, y1 = sy*ulen - b->origin.y;
-    const float xs[4] = { x0, x1, x1, x0 };
-    const float ys[4] = { y0, y0, y1, y1 };
+    const Vector3 P = b->position;
+    Vector3 p[4];
+    p[0] = rbl__v3(P.x + R.x*x0 + U.x*y0, P.y + R.y*x0 + U.y*y0, P.z + R.z*x0 + U.z*y0);
+    p[1] = rbl__v3(P.x + R.x*x1 + U.x*y0, P.y + R.y*x1 + U.y*y0, P.z + R.z*x1 + U.z*y0);
+    p[2] = rbl__v3(P.x + R.x*x1 + U.x*y1, P.y + R.y*x1 + U.y*y1, P.z + R.z*x1 + U.z*y1);
+    p[3] = rbl__v3(P.x + R.x*x0 + U.x*y1, P.y + R.y*x0 + U.y*y1, P.z + R.z*x0 + U.z*y1);
+    // Huge sizes overflowing float: skip, never write Inf (the output stays untouched)
+    if (!rbl__finite3(p[0]) || !rbl__finite3(p[1]) || !rbl__finite3(p[2]) || !rbl__finite3(p[3])) return false;
 
-    // Source frame (zero = whole texture); flips mirror inside it
+    // Source frame (zero = whole texture); flips mirror inside it. As raylib's DrawTexturePro, a
+    // negative extent flips and the rectangle still starts at (x, y).
     Rectangle src = b->source;
     if ((src.x == 0.0f) && (src.y == 0.0f) && (src.width == 0.0f) && (src.height == 0.0f))
     {
@@ -790,23 +801,35 @@ bool RblBillboardVertices(RblView view, int textureWidth, int textureHeight, con
     }
     bool flipU = (b->size.x < 0.0f) != (src.width < 0.0f);
     bool flipV = (b->size.y < 0.0f) != (src.height < 0.0f);
-    // As raylib's DrawTexturePro: a negative extent flips; the rectangle still starts at (x, y)
-    float fx = src.x, fy = src.y, fw = fabsf(src.width), fh = fabsf(src.height);
     bool rotated = (b->flags & RBL_FRAME_ROTATED) != 0;
     float invW = 1.0f/(float)textureWidth, invH = 1.0f/(float)textureHeight;
+    float fu0 = src.x*invW, fu1 = (src.x + fabsf(src.width))*invW;     // frame edges in texture space
+    float fv0 = src.y*invH, fv1 = (src.y + fabsf(src.height))*invH;
+    // Corners in sprite space (s right, t down): BL (0,1), BR (1,1), TR (1,0), TL (0,0); a mirror
+    // swaps the ends of its sprite axis. A rotated frame holds the sprite turned 90 degrees
+    // clockwise, sprite (s,t) at frame (1-t, s): u then runs along sprite t and v along sprite s.
+    float uv[4][2];
+    if (!rotated)
+    {
+        float sl = flipU? fu1 : fu0, sr = flipU? fu0 : fu1;      // u at sprite left / right
+        float tt = flipV? fv1 : fv0, tb = flipV? fv0 : fv1;      // v at sprite top / bottom
+        uv[0][0] = sl; uv[0][1] = tb; uv[1][0] = sr; uv[1][1] = tb;
+        uv[2][0] = sr; uv[2][1] = tt; uv[3][0] = sl; uv[3][1] = tt;
+    }
+    else
+    {
+        float tt = flipV? fu0 : fu1, tb = flipV? fu1 : fu0;      // u at sprite top / bottom
+        float sl = flipU? fv1 : fv0, sr = flipU? fv0 : fv1;      // v at sprite left / right
+        uv[0][0] = tb; uv[0][1] = sl; uv[1][0] = tb; uv[1][1] = sr;
+        uv[2][0] = tt; uv[2][1] = sr; uv[3][0] = tt; uv[3][1] = sl;
+    }
 
-    // Sprite-space corner (s right, t down) -> frame-space (a_x, a_y); a rotated frame holds the
-    // sprite turned 90 degrees clockwise, so sprite (s,t) sits at frame (1-t, s).
-    const float cs[4] = { 0.0f, 1.0f, 1.0f, 0.0f };
-    const float ct[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
-
-    // Tangent (+U) and +V directions in world space follow from the same mapping
-    Vector3 T, V;
-    if (!rotated) { T = flipU? rbl__neg(Rn) : Rn; V = flipV? Un : rbl__neg(Un); }
-    else { T = flipV? rbl__neg(Un) : Un; V = flipU? rbl__neg(Rn) : Rn; }
-    float w = (rbl__dot(rbl__cross(N, T), V) < 0.0f)? -1.0f : 1.0f;
-    // T lies in the quad plane and N is perpendicular to it; re-orthogonalise for the non-orthogonal
-    // CAMERA_PLANE-with-caller-up case (T = R is still perpendicular to N there, so this is exact).
+    // Tangent (+U) and handedness. In the right-handed frame (R x U = N), +V = -U unflipped, so
+    // cross(N, T)*w = +V needs w = -1; each mirror flips w, a rotated frame keeps it.
+    Vector3 T;
+    if (!rotated) T = flipU? rbl__neg(R) : R;
+    else T = flipV? rbl__neg(U) : U;
+    float w = (flipU != flipV)? 1.0f : -1.0f;
 
     unsigned char col[4] = { b->tint.r, b->tint.g, b->tint.b, b->tint.a };
     if ((col[0] | col[1] | col[2] | col[3]) == 0) { col[0] = col[1] = col[2] = col[3] = 255; }
@@ -815,36 +838,26 @@ bool RblBillboardVertices(RblView view, int textureWidth, int textureHeight, con
     if (round < 0.0f) round = 0.0f;
     if (round > 1.0f) round = 1.0f;
     bool cylinder = (b->flags & RBL_ROUND_CYLINDER) != 0;
+    static const float dxs[4] = { -1.0f, 1.0f, 1.0f, -1.0f }, dys[4] = { -1.0f, -1.0f, 1.0f, 1.0f };
 
-    RblVertex v[4];
     for (int i = 0; i < 4; i++)
     {
-        Vector3 p = rbl__v3(b->position.x + Rn.x*xs[i] + Un.x*ys[i],
-                            b->position.y + Rn.y*xs[i] + Un.y*ys[i],
-                            b->position.z + Rn.z*xs[i] + Un.z*ys[i]);
-        if (!rbl__finite3(p)) return false;     // huge sizes overflowing float: skip, never write Inf
-        float s = flipU? 1.0f - cs[i] : cs[i];
-        float t = flipV? 1.0f - ct[i] : ct[i];
-        float ax = rotated? 1.0f - t : s, ay = rotated? s : t;
-        v[i].position[0] = p.x; v[i].position[1] = p.y; v[i].position[2] = p.z;
-        v[i].texcoord[0] = (fx + ax*fw)*invW;
-        v[i].texcoord[1] = (fy + ay*fh)*invH;
-
+        RblVertex *v = &out[i];
+        v->position[0] = p[i].x; v->position[1] = p[i].y; v->position[2] = p[i].z;
+        v->texcoord[0] = uv[i][0]; v->texcoord[1] = uv[i][1];
         Vector3 n = N, tg = T;
         if (round > 0.0f)
         {
             // Corner normals lean outward from the quad centre: 45 degrees for a cylinder, 54.7 for a
             // sphere at full roundness; their interpolated mean stays the flat normal, never zero.
-            float dx = (cs[i] < 0.5f)? -1.0f : 1.0f, dy = cylinder? 0.0f : ((ct[i] > 0.5f)? -1.0f : 1.0f);
-            Vector3 bent = rbl__v3(N.x + (Rn.x*dx + Un.x*dy)*round, N.y + (Rn.y*dx + Un.y*dy)*round, N.z + (Rn.z*dx + Un.z*dy)*round);
-            rbl__normalizeTo(bent, &n);
+            float dx = dxs[i]*round, dy = cylinder? 0.0f : dys[i]*round;
+            rbl__normalizeTo(rbl__v3(N.x + R.x*dx + U.x*dy, N.y + R.y*dx + U.y*dy, N.z + R.z*dx + U.z*dy), &n);
             if (!rbl__perpendicular(T, n, &tg)) tg = T;
         }
-        v[i].normal[0] = n.x; v[i].normal[1] = n.y; v[i].normal[2] = n.z;
-        v[i].tangent[0] = tg.x; v[i].tangent[1] = tg.y; v[i].tangent[2] = tg.z; v[i].tangent[3] = w;
-        memcpy(v[i].color, col, 4);
+        v->normal[0] = n.x; v->normal[1] = n.y; v->normal[2] = n.z;
+        v->tangent[0] = tg.x; v->tangent[1] = tg.y; v->tangent[2] = tg.z; v->tangent[3] = w;
+        memcpy(v->color, col, 4);
     }
-    memcpy(out, v, sizeof(v));
     return true;
 }
 
@@ -969,7 +982,7 @@ bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboa
         texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
         texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
     }
-    if (!RblBillboardVertices(batch->view, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    if (!RblBillboardVertices(&batch->view, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: batch: billboard skipped (NaN/Inf input, bad facing or texture size %ix%i); further skips this batch are not logged", texW, texH);
         return false;

@@ -51,7 +51,7 @@ static void test_geometry_corners_match_double_reference_in_every_mode(void)
         {
             RblBillboard b = randomBillboard(&seed, facing);
             RblVertex q[4];
-            RT_CHECK(RblBillboardVertices(view, 256, 256, &b, q), "mode %d: billboard %d skipped", facing, n);
+            RT_CHECK(RblBillboardVertices(&view, 256, 256, &b, q), "mode %d: billboard %d skipped", facing, n);
             D3 ref[4], N;
             refQuad(cam, &b, ref, &N);
             double scale = fabs(b.size.x) + fabs(b.size.y) + fabs(b.origin.x) + fabs(b.origin.y) + dLen(d3f(b.position));
@@ -79,7 +79,7 @@ static void test_geometry_camera_modes_face_the_eye(void)
             RblBillboard b = randomBillboard(&seed, facing);
             b.position.z = rtRandomRange(&seed, -30.0f, 5.0f);
             RblVertex q[4];
-            RblBillboardVertices(view, 64, 64, &b, q);
+            RblBillboardVertices(&view, 64, 64, &b, q);
             D3 toEye = dSub(d3f(cam.position), d3f(b.position));
             RT_CHECK(dDot(vecOf(q[0].normal), toEye) > 0.0, "mode %d: normal points away from the eye", facing);
             // front face is counter-clockwise seen from the eye: (p1-p0) x (p2-p0) agrees with N
@@ -92,9 +92,9 @@ static void test_geometry_camera_modes_face_the_eye(void)
     memset(&b, 0, sizeof(b));
     b.position = (Vector3){ 8.0f, 0.0f, 0.0f }; b.size = (Vector2){ 1.0f, 1.0f };
     RblVertex plane[4], toward[4];
-    RblBillboardVertices(view, 1, 1, &b, plane);
+    RblBillboardVertices(&view, 1, 1, &b, plane);
     b.facing = RBL_FACING_CAMERA_POSITION;
-    RblBillboardVertices(view, 1, 1, &b, toward);
+    RblBillboardVertices(&view, 1, 1, &b, toward);
     RT_CHECK(dDot(vecOf(plane[0].normal), vecOf(toward[0].normal)) < 0.95, "camera-position mode should turn toward the eye off-centre");
 }
 
@@ -118,7 +118,7 @@ static void test_geometry_tangent_follows_plus_u_under_every_flip_and_rotated_fr
         b.rotation = 30.0f;
         b.axis = (facing == RBL_FACING_FIXED)? (Vector3){ 0.3f, 0.2f, 1.0f } : (Vector3){ 0, 0, 0 };
         RblVertex q[4];
-        RT_CHECK(RblBillboardVertices(view, 128, 128, &b, q), "skipped");
+        RT_CHECK(RblBillboardVertices(&view, 128, 128, &b, q), "skipped");
         checkFrame(q, "flip");
         D3 e1 = dSub(vecOf(q[1].position), vecOf(q[0].position)), e2 = dSub(vecOf(q[3].position), vecOf(q[0].position));
         double s1 = q[1].texcoord[0] - q[0].texcoord[0], t1 = q[1].texcoord[1] - q[0].texcoord[1];
@@ -145,13 +145,13 @@ static void test_geometry_uvs_match_raylib_layout_and_mirror_inside_the_source(v
     b.origin = (Vector2){ 1.5f, 0.0f };
     b.source = (Rectangle){ 32, 64, 64, 32 };
     RblVertex q[4], m[4];
-    RblBillboardVertices(view, 256, 128, &b, q);
+    RblBillboardVertices(&view, 256, 128, &b, q);
     // raylib: 0 = (x, y+h), 1 = (x+w, y+h), 2 = (x+w, y), 3 = (x, y), divided by the texture size
     const float expect[4][2] = { { 32/256.0f, 96/128.0f }, { 96/256.0f, 96/128.0f }, { 96/256.0f, 64/128.0f }, { 32/256.0f, 64/128.0f } };
     for (int i = 0; i < 4; i++) RT_CHECK(rtNear(q[i].texcoord[0], expect[i][0], 1e-7) && rtNear(q[i].texcoord[1], expect[i][1], 1e-7), "uv %d", i);
     // Negative size: same footprint and pivot, u mirrored within [x, x+w] (raylib would shift by size.x)
     b.size.x = -3.0f;
-    RblBillboardVertices(view, 256, 128, &b, m);
+    RblBillboardVertices(&view, 256, 128, &b, m);
     for (int i = 0; i < 4; i++)
     {
         RT_CHECK(v3dist(m[i].position, vecOf(q[i].position)) < 1e-6, "flipped footprint moved at corner %d", i);
@@ -161,19 +161,19 @@ static void test_geometry_uvs_match_raylib_layout_and_mirror_inside_the_source(v
     }
     // A negative source width flips the same way; both together cancel
     b.size.x = 3.0f; b.source.width = -64.0f;
-    RblBillboardVertices(view, 256, 128, &b, m);
+    RblBillboardVertices(&view, 256, 128, &b, m);
     RT_CHECK(rtNear(m[0].texcoord[0], 96/256.0f, 1e-7), "negative source width should mirror");
     b.size.x = -3.0f;
-    RblBillboardVertices(view, 256, 128, &b, m);
+    RblBillboardVertices(&view, 256, 128, &b, m);
     RT_CHECK(rtNear(m[0].texcoord[0], 32/256.0f, 1e-7), "two mirrors should cancel");
     // Rotated frame: the sprite's top-left texel sits at the frame's top-right (packed clockwise)
     b.size.x = 3.0f; b.source.width = 64.0f; b.flags = RBL_FRAME_ROTATED;
-    RblBillboardVertices(view, 256, 128, &b, m);
+    RblBillboardVertices(&view, 256, 128, &b, m);
     RT_CHECK(rtNear(m[3].texcoord[0], 96/256.0f, 1e-7) && rtNear(m[3].texcoord[1], 64/128.0f, 1e-7), "rotated frame: top-left corner uv (%f,%f)", m[3].texcoord[0], m[3].texcoord[1]);
     RT_CHECK(rtNear(m[0].texcoord[0], 32/256.0f, 1e-7) && rtNear(m[0].texcoord[1], 64/128.0f, 1e-7), "rotated frame: bottom-left corner uv (%f,%f)", m[0].texcoord[0], m[0].texcoord[1]);
     // Zero source = whole texture
     memset(&b.source, 0, sizeof(b.source)); b.flags = 0;
-    RblBillboardVertices(view, 256, 128, &b, m);
+    RblBillboardVertices(&view, 256, 128, &b, m);
     RT_CHECK(m[0].texcoord[0] == 0.0f && m[0].texcoord[1] == 1.0f && m[2].texcoord[0] == 1.0f && m[2].texcoord[1] == 0.0f, "zero source should span the texture");
 }
 
@@ -190,7 +190,7 @@ static void test_geometry_rounded_normals_bend_outward_and_stay_orthonormal(void
         b.roundness = k/4.0f;
         b.flags = cyl? RBL_ROUND_CYLINDER : 0;
         RblVertex q[4];
-        RblBillboardVertices(view, 1, 1, &b, q);
+        RblBillboardVertices(&view, 1, 1, &b, q);
         checkFrame(q, "rounded");
         D3 mean = d3(0, 0, 0);
         for (int i = 0; i < 4; i++)
@@ -226,7 +226,7 @@ static void test_hard_camera_looking_straight_up_or_down_gets_a_stable_frame(voi
             memset(&b, 0, sizeof(b));
             b.facing = facing; b.size = (Vector2){ 1, 1 }; b.position = (Vector3){ 1.0f, 0.0f, 2.0f };
             RblVertex q[4];
-            RT_CHECK(RblBillboardVertices(view, 8, 8, &b, q), "skipped");
+            RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "skipped");
             checkFrame(q, "looking along up");
         }
     }
@@ -244,7 +244,7 @@ static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
         b.facing = facing; b.size = (Vector2){ 1, 1 };
         b.position = cam.position;              // centre exactly at the eye
         RblVertex q[4];
-        RT_CHECK(RblBillboardVertices(view, 8, 8, &b, q), "mode %d skipped", facing);
+        RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "mode %d skipped", facing);
         checkFrame(q, "at the eye");
     }
     // Axis mode with the eye on the axis (and looking along it): still a valid upright frame
@@ -253,7 +253,8 @@ static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
     memset(&b, 0, sizeof(b));
     b.facing = RBL_FACING_AXIS; b.size = (Vector2){ 1, 2 };
     RblVertex q[4];
-    RT_CHECK(RblBillboardVertices(RblGetView(above), 8, 8, &b, q), "axis mode, eye on axis: skipped");
+    RblView aboveView = RblGetView(above);
+    RT_CHECK(RblBillboardVertices(&aboveView, 8, 8, &b, q), "axis mode, eye on axis: skipped");
     checkFrame(q, "eye on axis");
     RT_CHECK(fabs(q[3].position[1] - q[0].position[1] - 2.0f) < 1e-6, "axis-locked billboard must stay upright");
 }
@@ -269,7 +270,7 @@ static void test_hard_zero_negative_and_huge_sizes(void)
         memset(&b, 0, sizeof(b));
         b.size = (Vector2){ sizes[i][0], sizes[i][1] };
         RblVertex q[4];
-        RT_CHECK(RblBillboardVertices(view, 8, 8, &b, q), "size %g,%g skipped", sizes[i][0], sizes[i][1]);
+        RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "size %g,%g skipped", sizes[i][0], sizes[i][1]);
         checkFrame(q, "sizes");
     }
     // Sizes whose corners overflow float are skipped, not written as Inf
@@ -278,7 +279,7 @@ static void test_hard_zero_negative_and_huge_sizes(void)
     b.size = (Vector2){ 3e38f, 3e38f }; b.origin = (Vector2){ -3e38f, 0 };
     RblVertex q[4];
     memset(q, 0x5A, sizeof(q));
-    RT_CHECK(!RblBillboardVertices(view, 8, 8, &b, q), "overflowing corners must be skipped");
+    RT_CHECK(!RblBillboardVertices(&view, 8, 8, &b, q), "overflowing corners must be skipped");
     RT_CHECK(((unsigned char *)q)[0] == 0x5A && ((unsigned char *)q)[sizeof(q) - 1] == 0x5A, "skipped quad must leave the output untouched");
 }
 
@@ -295,7 +296,7 @@ static void test_hard_far_from_origin_keeps_relative_precision(void)
         RblBillboard b = randomBillboard(&seed, facing);
         b.position = (Vector3){ far.x + b.position.x, far.y + b.position.y, far.z + b.position.z };
         RblVertex q[4];
-        RblBillboardVertices(view, 256, 256, &b, q);
+        RblBillboardVertices(&view, 256, 256, &b, q);
         checkFrame(q, "far");
         D3 ref[4], N;
         refQuad(cam, &b, ref, &N);
@@ -317,12 +318,12 @@ static void test_hard_degenerate_source_and_texture_size(void)
     b.size = (Vector2){ 1, 1 };
     b.source = (Rectangle){ 10, 10, 0, 0 };     // zero area (not the all-zero "whole texture")
     RblVertex q[4];
-    RT_CHECK(RblBillboardVertices(view, 32, 32, &b, q), "zero-area source should still draw (one texel)");
+    RT_CHECK(RblBillboardVertices(&view, 32, 32, &b, q), "zero-area source should still draw (one texel)");
     checkFrame(q, "zero-area source");
     for (int i = 0; i < 4; i++) RT_CHECK(q[i].texcoord[0] == 10/32.0f && q[i].texcoord[1] == 10/32.0f, "uv should collapse to the texel");
     memset(q, 0x5A, sizeof(q));
-    RT_CHECK(!RblBillboardVertices(view, 0, 32, &b, q), "zero texture width must be rejected");
-    RT_CHECK(!RblBillboardVertices(view, 32, -1, &b, q), "negative texture height must be rejected");
+    RT_CHECK(!RblBillboardVertices(&view, 0, 32, &b, q), "zero texture width must be rejected");
+    RT_CHECK(!RblBillboardVertices(&view, 32, -1, &b, q), "negative texture height must be rejected");
     RT_CHECK(((unsigned char *)q)[0] == 0x5A, "rejected quad must leave the output untouched");
 }
 
@@ -347,7 +348,7 @@ static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
             memcpy((char *)&b + off, &bad[k], sizeof(float));
             RblVertex q[4];
             memset(q, 0x5A, sizeof(q));
-            bool drawn = RblBillboardVertices(view, 8, 8, &b, q);
+            bool drawn = RblBillboardVertices(&view, 8, 8, &b, q);
             probed++;
             if (!drawn) rejected++;
             RT_CHECK(!drawn && ((unsigned char *)q)[0] == 0x5A, "float field %d = %f was not skipped", f, bad[k]);
@@ -358,8 +359,8 @@ static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
     Camera3D nanCam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ NAN, 1, 0 });
     RblView v = RblGetView(nanCam);
     RT_CHECK(rtFinite(v.right.x) && rtFinite(v.up.y) && rtFinite(v.back.z), "NaN camera up leaked into the view");
-    RT_CHECK(!RblBillboardVertices(view, 8, 8, NULL, NULL), "NULL input must be rejected");
+    RT_CHECK(!RblBillboardVertices(&view, 8, 8, NULL, NULL), "NULL input must be rejected");
     good.facing = 99;
     RblVertex q[4];
-    RT_CHECK(!RblBillboardVertices(view, 8, 8, &good, q), "unknown facing must be rejected");
+    RT_CHECK(!RblBillboardVertices(&view, 8, 8, &good, q), "unknown facing must be rejected");
 }

@@ -168,7 +168,7 @@ static void test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode(void)
         {
             RblBillboard b = billboardOf(&in[i], d);
             RblVertex q[4];
-            RT_CHECK(RblBillboardVertices(view, 256, 128, &b, q), "cpu skipped instance %d", i);
+            RT_CHECK(RblBillboardVertices(&view, 256, 128, &b, q), "cpu skipped instance %d", i);
             double scale = 1.0 + dLen(d3f(b.position)) + fabs(b.size.x) + fabs(b.size.y) + fabs(b.origin.x) + fabs(b.origin.y);
             for (int v = 0; v < 6; v++)
             {

@@ -254,7 +254,7 @@ static void test_lit_flips_and_rotated_frames_light_the_plus_u_side(void)
         if (mask & 4) b.source = (Rectangle){ 0, 0, -4, 4 };
         if (mask & 8) b.flags = RBL_FRAME_ROTATED;
         RblVertex q[4];
-        RblBillboardVertices(view, 4, 4, &b, q);
+        RblBillboardVertices(&view, 4, 4, &b, q);
         Vector3 T = { q[0].tangent[0], q[0].tangent[1], q[0].tangent[2] };
         int lum[2];
         for (int side = 0; side < 2; side++)
@@ -408,7 +408,7 @@ static void test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboa
         for (int i = 0; i < 64; i++)
         {
             RblVertex q[4];
-            RT_CHECK(RblBillboardVertices(view, tex.width, tex.height, &set[i], q), "skipped");
+            RT_CHECK(RblBillboardVertices(&view, tex.width, tex.height, &set[i], q), "skipped");
             double scale = 1.0 + dLen(d3f(set[i].position)) + set[i].size.x + set[i].size.y;
             for (int k = 0; k < 4; k++)
             {
