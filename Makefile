@@ -20,7 +20,7 @@ all: test
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
 NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps
 ifeq ($(filter $(NO_RAYLIB_GOALS),$(MAKECMDGOALS)),)
--include $(BUILD)/raylib.mk
+include $(BUILD)/raylib.mk
 ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
 .PHONY: $(BUILD)/raylib.mk
 endif
