@@ -242,6 +242,59 @@ typedef struct RblInstanceBuffer {
     int skipped;                    // Instances skipped for bad input in the last draw
 } RblInstanceBuffer;
 
+// Normal encodings (packed material texture, or a plain normal map)
+typedef enum {
+    RBL_NORMAL_NONE = 0,            // No normal map: the geometry normal, nothing sampled
+    RBL_NORMAL_HEMIOCT,             // Hemi-octahedral in two 8-bit channels, precise encoder (packing default)
+    RBL_NORMAL_XY,                  // X and Y in two 8-bit channels, Z rebuilt as sqrt(max(0, 1 - x*x - y*y))
+    RBL_NORMAL_RGB                  // Plain RGB tangent-space map (raylib's MATERIAL_MAP_NORMAL as authored)
+} RblNormalEncoding;
+
+// Emissive representations of a packed material
+typedef enum {
+    RBL_EMISSIVE_NONE = 0,          // No emission, nothing sampled
+    RBL_EMISSIVE_MASK,              // 8-bit grey mask (1 byte/texel): emission = mask x albedo colour
+    RBL_EMISSIVE_RGB                // Own colour (sRGB RGBA8, 4 bytes/texel)
+} RblEmissiveLayout;
+
+// What a packed material holds; it also selects the lit shader variant (absent maps are never sampled)
+typedef struct RblMaterialLayout {
+    int normalEncoding;             // RblNormalEncoding of the material texture's RG (RGB for RBL_NORMAL_RGB)
+    bool specular;                  // Material texture B: specular intensity (or roughness), linear
+    bool occlusion;                 // Material texture A: ambient occlusion, linear
+    int emissive;                   // RblEmissiveLayout of the emissive texture
+} RblMaterialLayout;
+
+// Packing input: raylib Images of one size (any format raylib converts); data == NULL = absent
+typedef struct RblMaterialSource {
+    Image albedo;                   // Required: colour (sRGB) with alpha
+    Image normal;                   // Tangent-space normal map (RGB, OpenGL convention unless normalDirectX)
+    Image specular;                 // Specular intensity or roughness (grey; red channel of a colour image)
+    Image occlusion;                // Ambient occlusion (grey)
+    Image emissive;                 // Emission: colour (sRGB), or grey = a mask
+    bool normalDirectX;             // Normal map is DirectX convention (+Y down): flipped on packing
+    int normalEncoding;             // RblNormalEncoding to pack into (0 = RBL_NORMAL_HEMIOCT)
+    const Rectangle *frames;        // Atlas frames whose edge texels are dilated into the gutters (NULL = none)
+    int frameCount;                 // Number of frames
+    bool mipmaps;                   // Build mip chains (normals renormalised, colour averaged in linear light)
+} RblMaterialSource;
+
+// Packing output (CPU Images; upload with LoadTextureFromImage or RblLoadPackedMaterial)
+typedef struct RblPackedMaterial {
+    Image albedo;                   // RGBA8 sRGB, gutters dilated
+    Image material;                 // RGBA8: RG normal, B specular, A occlusion (data == NULL if nothing to store)
+    Image emissive;                 // R8 mask or RGBA8 sRGB (data == NULL if none)
+    RblMaterialLayout layout;       // What is stored where
+} RblPackedMaterial;
+
+// Angular error of a normal encoding, in degrees
+typedef struct RblNormalErrorStats {
+    double mean;                    // Mean angular error
+    double p99;                     // 99th percentile
+    double max;                     // Maximum
+    int count;                      // Normals measured
+} RblNormalErrorStats;
+
 // Point light (linear colour; range 0 = unbounded inverse square)
 typedef struct RblLight {
     Vector3 position;               // World position
@@ -298,6 +351,16 @@ RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 //
 RBLAPI bool RblIsInstanceBufferValid(RblInstanceBuffer buffer);               // Check the buffer owns its GPU objects
 RBLAPI void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer);               // Unload an instance buffer
 RBLAPI int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count); // Draw with one instanced call (material.shader: an instanced lit variant); returns instances drawn
+
+// Material maps (CPU, no GL needed): packing, encodings, authoring help
+RBLAPI bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed); // Pack an atlas's maps; false = invalid input (logged), packed untouched
+RBLAPI void RblUnloadPackedMaterial(RblPackedMaterial *packed);               // Free packed Images
+RBLAPI void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3]); // Encode a unit tangent-space normal (RG used; RGB for RBL_NORMAL_RGB)
+RBLAPI Vector3 RblDecodeNormal(const unsigned char in[3], int encoding);     // Decode as the shaders do (unit length, never NaN)
+RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals
+RBLAPI Image RblGenNormalMapFromHeight(Image height, float strength, bool wrap); // Tangent-space normal map (OpenGL convention) from a height map (grey)
+RBLAPI Image RblGenHeightFromLuminance(Image albedo);                         // Height (grey) from albedo luminance, for RblGenNormalMapFromHeight
+RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength); // Cavity occlusion (grey) from a height map
 
 // Lights and the forward lit shader
 RBLAPI RblLitShader RblLoadLitShader(RblLitShaderDesc desc);                  // Compile a lit shader variant
