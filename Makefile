@@ -48,7 +48,7 @@ check-shaders:
 # ---- tests --------------------------------------------------------------------------------
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
-CPU_TESTS := tests/test_geometry.c tests/test_shaders_source.c tests/reference.h
+CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h
 GPU_TESTS := tests/test_render.c tests/test_instanced.c tests/reference.h
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
@@ -88,7 +88,11 @@ $(BUILD)/bench/bench_geometry: tests/bench/bench_geometry.c tests/bench/bench.h 
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_geometry.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry
+$(BUILD)/bench/bench_materials: tests/bench/bench_materials.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_materials.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

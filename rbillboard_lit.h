@@ -25,6 +25,10 @@
 *       - Forward lit shader: albedo with alpha cutoff, tangent-space normal map, point lights with
 *         windowed inverse-square falloff, ambient term; the GLSL sources live in shaders/ and are
 *         embedded below by `make shaders`
+*       - Material packing (CPU, RblPackMaterial): albedo + one RGBA8 material texture (hemi-octahedral
+*         normal, specular, occlusion) + an optional 1-byte emissive mask; atlas gutters dilated, mip
+*         chains averaged in linear light with renormalised normals; height -> normal / occlusion and
+*         luminance -> height generators for authoring (see MATERIAL LAYOUT)
 *
 *   LIMITATIONS:
 *       - OpenGL 3.3 core (GLSL 330) only for now; GLES2/WebGL variants are not written yet
@@ -61,6 +65,43 @@
 *       - Normal maps: OpenGL convention (+X right, +Y up in the image as you see it).
 *       - Texture slots follow raylib's Material: MATERIAL_MAP_ALBEDO -> texture0,
 *         MATERIAL_MAP_NORMAL -> texture2.
+*
+*   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
+*       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
+*       material  RGBA8, linear: RG normal, B specular, A occlusion                                 4 B
+*                 normal  RBL_NORMAL_HEMIOCT (default): hemi-octahedral, p = (x,y)/(|x|+|y|+z), stored
+*                         (p.x+p.y, p.x-p.y)*0.5+0.5, precise encoder (best of the 4 floor/ceil codes);
+*                         error mean 0.24, max 0.55 degrees. RBL_NORMAL_XY: x,y*0.5+0.5, z rebuilt
+*                         (mean 0.47, max 5.9 degrees at grazing angles). Decode: see RblDecodeNormal.
+*                 B       specular intensity/roughness (red channel of the source; absent: 0.5 = 128)
+*                 A       ambient occlusion (red channel; absent: 1.0 = 255)
+*                 RBL_NORMAL_RGB: RGB normal (mean 0.17, max 0.38 degrees), A occlusion; specular has no
+*                 channel left and is rejected. No normal, specular or occlusion map: no material texture.
+*                 RblMaterialLayout flags say which channels hold data: absent ones are never sampled.
+*       emissive  grey source (r == g == b in every texel): R8 mask, emission = mask x albedo colour  1 B
+*                 any coloured texel: RGBA8 sRGB colour                                             4 B
+*       Albedo + material + mask = 9 B/texel, against 16 B for four RGBA8 maps (albedo, normal,
+*       specular/occlusion, emissive). The mask is chosen from the data: sprite emission (lamps, eyes,
+*       runes, embers) is mostly the surface's own colour lit up, which one byte scaling the albedo
+*       reproduces; an emissive map with any coloured texel keeps its own colour at 4 B.
+*       Frames (RblMaterialSource.frames): texels touched by no frame take the value of the nearest frame
+*       texel (Chebyshev distance) in every map and every mip level, so filtering never pulls a
+*       neighbour's colour into a frame. Mips: raylib's size rule (halve, at least 1) and layout
+*       (Image.data holds level 0, 1, ...), area-weighted box filter from the level above; colour
+*       averaged in linear light (weighted by alpha), normals decoded, averaged, renormalised, re-encoded.
+*       Inputs: any uncompressed raylib format (converted, never rejected; compressed ones are). Normal
+*       maps: n = c*2 - 1 (float formats too), normalDirectX flips y, |n| < 1/64 (e.g. 128,128,128) is
+*       the flat normal, z < 0 clamps to 0. Specular and occlusion: red/grey channel.
+*       Generators: RblGenNormalMapFromHeight reads heights from the red/grey channel (8-bit: byte/255,
+*       float formats as stored) as the surface z = strength*height, in texel units: a height step of
+*       1.0 between neighbouring texels at strength 1 is a 45 degree slope. Central differences,
+*       n = normalize(-strength*dh/dx, -strength*dh/dup, 1), up = toward row 0 (a surface rising toward
+*       the top of the image faces -Y), edges wrap or clamp (the edge texel repeats); RGBA8 out.
+*       RblGenHeightFromLuminance: Rec.709 luminance 0.2126 R + 0.7152 G + 0.0722 B of the linearised
+*       colour (alpha ignored), GRAYSCALE. RblGenOcclusionFromHeight: cavity term
+*       ao = clamp(1 - strength*max(0, mean - h), 0, 1), mean = box average of the heights over the
+*       (2 radius + 1)^2 window clipped to the image: 1 on flat ground and tops, darker the deeper a
+*       texel lies below its surroundings (GRAYSCALE).
 *
 *   CONFIGURATION:
 *       #define RBILLBOARD_LIT_IMPLEMENTATION
@@ -1323,6 +1364,1075 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     rlDisableVertexArray();
     rbl__unbindMaterial();
     return n;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: material maps
+//----------------------------------------------------------------------------------
+// Normal decoding, exactly what the shaders compute (GLSL mirror; t = the sampled texel, each
+// channel in [0,1] = byte/255, then e = t*2 - 1):
+//   RBL_NORMAL_HEMIOCT  e = t.rg*2.0 - 1.0;  p = vec2(e.x + e.y, e.x - e.y)*0.5;
+//                       n = normalize(vec3(p, 1.0 - max(abs(e.x), abs(e.y))));
+//                       (1 - max(|e.x|,|e.y|) is 1 - |p.x| - |p.y| written so that float rounding cannot
+//                       make it negative; z >= 0 and |n| >= 1/sqrt(3) before normalising: never a zero
+//                       vector, even between filtered texels)
+//   RBL_NORMAL_XY       e = t.rg*2.0 - 1.0;  n = normalize(vec3(e, sqrt(max(0.0, 1.0 - dot(e, e)))));
+//                       (|vec3| >= 1 whenever dot(e,e) >= 1, else exactly 1: never zero)
+//   RBL_NORMAL_RGB      e = t.rgb*2.0 - 1.0; n = (dot(e, e) < 1.0/4096.0)? vec3(0.0, 0.0, 1.0) : normalize(e);
+//                       (a vector shorter than 1/64 is quantisation noise around zero, e.g. the
+//                       "no normal" grey 128,128,128 = (1,1,1)/255: it means the flat normal)
+//   RBL_NORMAL_NONE     n = vec3(0.0, 0.0, 1.0) (nothing sampled: the geometry normal)
+// The same guard (|e|^2 < 1/4096 -> flat) is applied to every decode here, so none can return NaN.
+#define RBL__NORMAL_MIN_LEN2    (1.0f/4096.0f)  // Shorter decoded vectors are the flat normal
+#define RBL__SPECULAR_DEFAULT   128             // Absent specular: 0.5 (128/255 = 0.502)
+#define RBL__OCCLUSION_DEFAULT  255             // Absent occlusion: 1.0 (fully open)
+
+static inline Vector3 rbl__flatNormal(void) { return rbl__v3(0.0f, 0.0f, 1.0f); }
+
+// Channel byte -> [-1,1] as the GPU sees it (t = c/255, then t*2 - 1)
+static inline float rbl__snorm(unsigned char c) { return (float)c/255.0f*2.0f - 1.0f; }
+
+// [0,1] -> byte, rounded to nearest and clamped (NaN -> 0)
+static inline unsigned char rbl__unorm8(double v)
+{
+    if (!(v > 0.0)) return 0;
+    if (v >= 1.0) return 255;
+    return (unsigned char)(v*255.0 + 0.5);
+}
+
+// Decoded vector -> unit normal; too short (or NaN) -> flat
+static inline Vector3 rbl__decodedUnit(float x, float y, float z)
+{
+    float l2 = x*x + y*y + z*z;
+    if (!(l2 >= RBL__NORMAL_MIN_LEN2) || !rbl__finite(l2)) return rbl__flatNormal();
+    float inv = 1.0f/sqrtf(l2);
+    return rbl__v3(x*inv, y*inv, z*inv);
+}
+
+static inline Vector3 rbl__decodeHemiOct(unsigned char r, unsigned char g)
+{
+    float ex = rbl__snorm(r), ey = rbl__snorm(g);
+    float ax = fabsf(ex), ay = fabsf(ey);
+    return rbl__decodedUnit((ex + ey)*0.5f, (ex - ey)*0.5f, 1.0f - ((ax > ay)? ax : ay));
+}
+
+static inline Vector3 rbl__decodeXY(unsigned char r, unsigned char g)
+{
+    float ex = rbl__snorm(r), ey = rbl__snorm(g);
+    float z2 = 1.0f - ex*ex - ey*ey;
+    return rbl__decodedUnit(ex, ey, (z2 > 0.0f)? sqrtf(z2) : 0.0f);
+}
+
+static inline Vector3 rbl__decodeRGB(unsigned char r, unsigned char g, unsigned char b)
+{
+    return rbl__decodedUnit(rbl__snorm(r), rbl__snorm(g), rbl__snorm(b));
+}
+
+static inline Vector3 rbl__decode(const unsigned char c[3], int encoding)
+{
+    switch (encoding)
+    {
+        case RBL_NORMAL_HEMIOCT: return rbl__decodeHemiOct(c[0], c[1]);
+        case RBL_NORMAL_XY: return rbl__decodeXY(c[0], c[1]);
+        case RBL_NORMAL_RGB: return rbl__decodeRGB(c[0], c[1], c[2]);
+        default: return rbl__flatNormal();
+    }
+}
+
+// Input normal -> unit double vector in the z >= 0 hemisphere: z < 0 clamps to 0, any length is
+// normalised, zero length / NaN / Inf -> flat (0,0,1)
+static void rbl__sanitizeNormal(Vector3 n, double a[3])
+{
+    double x = n.x, y = n.y, z = (n.z > 0.0f)? n.z : 0.0;
+    double l = sqrt(x*x + y*y + z*z);
+    if (!rbl__finite3(n) || !(l > 0.0) || (l - l != 0.0)) { a[0] = 0.0; a[1] = 0.0; a[2] = 1.0; return; }
+    double inv = 1.0/l;
+    a[0] = x*inv; a[1] = y*inv; a[2] = z*inv;
+}
+
+// Angular error of a decoded normal d against the unit reference a, as a fraction num/den that is
+// monotone in the angle: sin^2 = |a x d|^2/|d|^2 below 90 degrees (precise for small angles, unlike
+// 1 - cos), 2 - sin^2 beyond (never reached by hemisphere codes, kept for completeness)
+typedef struct rbl__AngleRank { double num, den; } rbl__AngleRank;
+
+static inline rbl__AngleRank rbl__angleRank(const double a[3], Vector3 d)
+{
+    double dx = d.x, dy = d.y, dz = d.z;
+    double cx = a[1]*dz - a[2]*dy, cy = a[2]*dx - a[0]*dz, cz = a[0]*dy - a[1]*dx;
+    rbl__AngleRank r;
+    r.num = cx*cx + cy*cy + cz*cz;
+    r.den = dx*dx + dy*dy + dz*dz;
+    if (a[0]*dx + a[1]*dy + a[2]*dz <= 0.0) r.num = 2.0*r.den - r.num;
+    return r;
+}
+
+static inline bool rbl__angleLess(rbl__AngleRank x, rbl__AngleRank y) { return x.num*y.den < y.num*x.den; }
+
+static inline unsigned char rbl__quantizeSnorm(double e)    // [-1,1] -> byte, rounded
+{
+    return rbl__unorm8(e*0.5 + 0.5);
+}
+
+// Hemi-octahedral, precise: of the floor/ceil neighbours of both coordinates (4 codes), the one whose
+// decoded normal is nearest to a. Ranked with the exact (double) decode d: with e the code's [-1,1]
+// pair, a.d = e.x*(a.x+a.y)/2 + e.y*(a.x-a.y)/2 + a.z*d.z and |d|^2 = (e.x^2+e.y^2)/2 + d.z^2, the
+// largest signed cos^2 = (a.d)|a.d|/|d|^2 wins (compared by cross-multiplying; double keeps ~1e-10
+// relative resolution of the squared angle). A winner other than the rounded code is then confirmed
+// against it with the float decode the shaders use, so the result is never worse than rounding as
+// RblDecodeNormal sees it.
+static void rbl__encodeHemiOct(const double a[3], unsigned char out[2])
+{
+    double s = fabs(a[0]) + fabs(a[1]) + a[2];      // >= 1 for a unit vector (L1 >= L2)
+    double px = a[0]/s, py = a[1]/s;
+    double fu = ((px + py)*0.5 + 0.5)*255.0, fv = ((px - py)*0.5 + 0.5)*255.0;
+    fu = (fu > 0.0)? ((fu < 255.0)? fu : 255.0) : 0.0;      // also maps NaN to 0
+    fv = (fv > 0.0)? ((fv < 255.0)? fv : 255.0) : 0.0;
+    const int u0 = (int)fu, v0 = (int)fv;                   // floor: non-negative
+    const int u1 = (u0 < 255)? u0 + 1 : 255, v1 = (v0 < 255)? v0 + 1 : 255;
+    const int ru = (int)(fu + 0.5), rv = (int)(fv + 0.5);   // rounded
+    const double p = (a[0] + a[1])*0.5, q = (a[0] - a[1])*0.5;
+    double num[4], den[4];
+    for (int k = 0; k < 4; k++)
+    {
+        double ex = ((k & 1)? u1 : u0)*(2.0/255.0) - 1.0, ey = ((k & 2)? v1 : v0)*(2.0/255.0) - 1.0;
+        double ax = (ex < 0.0)? -ex : ex, ay = (ey < 0.0)? -ey : ey;
+        double dz = 1.0 - ((ax > ay)? ax : ay);
+        double dot = ex*p + ey*q + a[2]*dz;
+        num[k] = dot*((dot < 0.0)? -dot : dot);
+        den[k] = 0.5*(ex*ex + ey*ey) + dz*dz;
+    }
+    const int rk = ((ru == u1)? 1 : 0) + ((rv == v1)? 2 : 0);
+    int best = rk;
+    for (int k = 0; k < 4; k++) if (num[k]*den[best] > num[best]*den[k]) best = k;
+    int bu = (best & 1)? u1 : u0, bv = (best & 2)? v1 : v0;
+    if (best != rk)
+    {
+        rbl__AngleRank eb = rbl__angleRank(a, rbl__decodeHemiOct((unsigned char)bu, (unsigned char)bv));
+        rbl__AngleRank er = rbl__angleRank(a, rbl__decodeHemiOct((unsigned char)ru, (unsigned char)rv));
+        if (!rbl__angleLess(eb, er)) { bu = ru; bv = rv; }
+    }
+    out[0] = (unsigned char)bu;
+    out[1] = (unsigned char)bv;
+}
+
+// Encode a sanitised unit normal; out[2] is 0 for the two-channel encodings
+static void rbl__encode(const double a[3], int encoding, unsigned char out[3])
+{
+    out[0] = out[1] = out[2] = 0;
+    switch (encoding)
+    {
+        case RBL_NORMAL_HEMIOCT: rbl__encodeHemiOct(a, out); break;
+        case RBL_NORMAL_XY: out[0] = rbl__quantizeSnorm(a[0]); out[1] = rbl__quantizeSnorm(a[1]); break;
+        case RBL_NORMAL_RGB:
+            out[0] = rbl__quantizeSnorm(a[0]); out[1] = rbl__quantizeSnorm(a[1]); out[2] = rbl__quantizeSnorm(a[2]);
+            break;
+        default: break;
+    }
+}
+
+void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3])
+{
+    double a[3];
+    rbl__sanitizeNormal(normal, a);
+    rbl__encode(a, encoding, out);
+}
+
+Vector3 RblDecodeNormal(const unsigned char in[3], int encoding)
+{
+    if (in == NULL) return rbl__flatNormal();
+    return rbl__decode(in, encoding);
+}
+
+// k-th smallest of v[0..n-1] (quickselect with Hoare partitioning; reorders v; expected O(n))
+static double rbl__selectKth(double *v, long long n, long long k)
+{
+    long long lo = 0, hi = n - 1;
+    while (hi > lo)
+    {
+        double pivot = v[lo + (hi - lo)/2];
+        long long i = lo, j = hi;
+        while (i <= j)
+        {
+            while (v[i] < pivot) i++;
+            while (v[j] > pivot) j--;
+            if (i <= j) { double t = v[i]; v[i] = v[j]; v[j] = t; i++; j--; }
+        }
+        if (k <= j) hi = j;             // v[lo..j] <= pivot <= v[i..hi], v[j+1..i-1] == pivot
+        else if (k >= i) lo = i;
+        else return v[k];
+    }
+    return v[k];
+}
+
+// Angle (degrees, double) between each input, normalised, and its encode + RblDecodeNormal result, as
+// atan2(|a x d|, a.d): exact near 0 where acos(a.d) loses precision, and never NaN. Inputs below the
+// hemisphere count with their clamping error; zero-length, NaN and Inf inputs are not counted.
+// p99 is the nearest rank: the smallest error at least 99% of the errors do not exceed.
+RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count)
+{
+    RblNormalErrorStats stats;
+    memset(&stats, 0, sizeof(stats));
+    if ((encoding != RBL_NORMAL_HEMIOCT) && (encoding != RBL_NORMAL_XY) && (encoding != RBL_NORMAL_RGB))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblMeasureNormalEncoding: encoding %i is not HEMIOCT, XY or RGB", encoding);
+        return stats;
+    }
+    if ((count <= 0) || (normals == NULL)) return stats;
+
+    double *errors = (double *)RBL_MALLOC((size_t)count*sizeof(double));
+    if (errors == NULL) TraceLog(LOG_WARNING, "RBL: RblMeasureNormalEncoding: out of memory for %i errors (p99 reported as max)", count);
+    double sum = 0.0;
+    int n = 0;
+    for (int i = 0; i < count; i++)
+    {
+        Vector3 in = normals[i];
+        double x = in.x, y = in.y, z = in.z, l = sqrt(x*x + y*y + z*z);
+        if (!rbl__finite3(in) || !(l > 0.0)) continue;          // no direction to compare with: not counted
+        unsigned char code[3];
+        RblEncodeNormal(in, encoding, code);
+        Vector3 d = rbl__decode(code, encoding);
+        double dx = d.x, dy = d.y, dz = d.z;
+        double cx = y*dz - z*dy, cy = z*dx - x*dz, cz = x*dy - y*dx;
+        double deg = atan2(sqrt(cx*cx + cy*cy + cz*cz), x*dx + y*dy + z*dz)*(180.0/3.14159265358979323846);
+        sum += deg;
+        if (deg > stats.max) stats.max = deg;
+        if (errors != NULL) errors[n] = deg;
+        n++;
+    }
+    stats.count = n;
+    if (n > 0)
+    {
+        stats.mean = sum/n;
+        long long rank = (long long)ceil(0.99*(double)n);
+        if (rank < 1) rank = 1;
+        stats.p99 = (errors != NULL)? rbl__selectKth(errors, n, rank - 1) : stats.max;
+    }
+    RBL_FREE(errors);
+    return stats;
+}
+
+//----------------------------------------------------------------------------------
+// Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat
+//----------------------------------------------------------------------------------
+typedef struct rbl__Texels {
+    const unsigned char *u8;        // 8-bit data in place (GRAYSCALE, GRAY_ALPHA, R8G8B8, R8G8B8A8)
+    const float *f32;               // Float data: in place (R32, R32G32B32, R32G32B32A32) or a converted RGBA copy
+    Image converted;                // The copy to unload (data NULL when reading in place)
+    int channels;                   // Channels per texel of u8 (1..4) or f32 (1, 3, 4)
+    bool greyFloat;                 // Single-channel float source (R32, R16): channel 0 is the grey value
+} rbl__Texels;
+
+static inline bool rbl__formatConvertible(int format)
+{
+    return (format >= PIXELFORMAT_UNCOMPRESSED_GRAYSCALE) && (format <= PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
+}
+
+// Reads level 0 of an image (mipmaps of the source are ignored); false = out of memory
+static bool rbl__openTexels(Image image, rbl__Texels *t)
+{
+    memset(t, 0, sizeof(*t));
+    switch (image.format)
+    {
+        case PIXELFORMAT_UNCOMPRESSED_GRAYSCALE: t->u8 = (const unsigned char *)image.data; t->channels = 1; return true;
+        case PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA: t->u8 = (const unsigned char *)image.data; t->channels = 2; return true;
+        case PIXELFORMAT_UNCOMPRESSED_R8G8B8: t->u8 = (const unsigned char *)image.data; t->channels = 3; return true;
+        case PIXELFORMAT_UNCOMPRESSED_R8G8B8A8: t->u8 = (const unsigned char *)image.data; t->channels = 4; return true;
+        case PIXELFORMAT_UNCOMPRESSED_R32: t->f32 = (const float *)image.data; t->channels = 1; t->greyFloat = true; return true;
+        case PIXELFORMAT_UNCOMPRESSED_R32G32B32: t->f32 = (const float *)image.data; t->channels = 3; return true;
+        case PIXELFORMAT_UNCOMPRESSED_R32G32B32A32: t->f32 = (const float *)image.data; t->channels = 4; return true;
+        default: break;
+    }
+    Image level0 = image;
+    level0.mipmaps = 1;
+    t->converted = ImageCopy(level0);
+    if (t->converted.data == NULL) return false;
+    ImageFormat(&t->converted, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);      // lossless for every uncompressed format
+    if ((t->converted.data == NULL) || (t->converted.format != PIXELFORMAT_UNCOMPRESSED_R32G32B32A32))
+    {
+        UnloadImage(t->converted);
+        memset(t, 0, sizeof(*t));
+        return false;
+    }
+    t->f32 = (const float *)t->converted.data;
+    t->channels = 4;
+    t->greyFloat = (image.format == PIXELFORMAT_UNCOMPRESSED_R16);     // R16 converts to (x, 0, 0, 1)
+    return true;
+}
+
+static void rbl__closeTexels(rbl__Texels *t)
+{
+    if (t->converted.data != NULL) UnloadImage(t->converted);
+    memset(t, 0, sizeof(*t));
+}
+
+// Texel i as RGBA: 8-bit channels /255, float channels as stored (not clamped); grey replicated, no alpha = 1
+static inline void rbl__texelRGBA(const rbl__Texels *t, size_t i, float c[4])
+{
+    if (t->f32 != NULL)
+    {
+        const float *p = t->f32 + i*(size_t)t->channels;
+        if (t->greyFloat) { c[0] = c[1] = c[2] = p[0]; c[3] = 1.0f; }
+        else { c[0] = p[0]; c[1] = p[1]; c[2] = p[2]; c[3] = (t->channels == 4)? p[3] : 1.0f; }
+        return;
+    }
+    const unsigned char *p = t->u8 + i*(size_t)t->channels;
+    switch (t->channels)
+    {
+        case 1: c[0] = c[1] = c[2] = p[0]/255.0f; c[3] = 1.0f; break;
+        case 2: c[0] = c[1] = c[2] = p[0]/255.0f; c[3] = p[1]/255.0f; break;
+        case 3: c[0] = p[0]/255.0f; c[1] = p[1]/255.0f; c[2] = p[2]/255.0f; c[3] = 1.0f; break;
+        default: c[0] = p[0]/255.0f; c[1] = p[1]/255.0f; c[2] = p[2]/255.0f; c[3] = p[3]/255.0f; break;
+    }
+}
+
+// Texel i as RGBA bytes (float channels clamped to [0,1] and rounded)
+static inline void rbl__texelBytes(const rbl__Texels *t, size_t i, unsigned char c[4])
+{
+    if (t->f32 != NULL)
+    {
+        float f[4];
+        rbl__texelRGBA(t, i, f);
+        for (int k = 0; k < 4; k++) c[k] = rbl__unorm8(f[k]);
+        return;
+    }
+    const unsigned char *p = t->u8 + i*(size_t)t->channels;
+    switch (t->channels)
+    {
+        case 1: c[0] = c[1] = c[2] = p[0]; c[3] = 255; break;
+        case 2: c[0] = c[1] = c[2] = p[0]; c[3] = p[1]; break;
+        case 3: c[0] = p[0]; c[1] = p[1]; c[2] = p[2]; c[3] = 255; break;
+        default: c[0] = p[0]; c[1] = p[1]; c[2] = p[2]; c[3] = p[3]; break;
+    }
+}
+
+// Red/grey channel of texel i: bytes (specular, occlusion) and heights (8-bit: /255, float: as stored)
+static inline unsigned char rbl__texelRedByte(const rbl__Texels *t, size_t i)
+{
+    if (t->f32 != NULL) return rbl__unorm8(t->f32[i*(size_t)t->channels]);
+    return t->u8[i*(size_t)t->channels];
+}
+
+static inline float rbl__texelRed(const rbl__Texels *t, size_t i)
+{
+    if (t->f32 != NULL) return t->f32[i*(size_t)t->channels];
+    return t->u8[i*(size_t)t->channels]/255.0f;
+}
+
+// Source normal map texel -> tangent-space direction: n = c*2 - 1 for every format (8-bit: exactly as
+// the RGB decode), DirectX maps flip y, |n|^2 < 1/4096 (e.g. 128,128,128) -> flat; left unnormalised
+// (the encoder normalises it once, in double; NaN there -> flat)
+static inline Vector3 rbl__sourceNormal(const rbl__Texels *t, size_t i, bool directX)
+{
+    float x, y, z;
+    if ((t->u8 != NULL) && (t->channels >= 3))
+    {
+        const unsigned char *p = t->u8 + i*(size_t)t->channels;
+        x = rbl__snorm(p[0]); y = rbl__snorm(p[1]); z = rbl__snorm(p[2]);
+    }
+    else
+    {
+        float c[4];
+        rbl__texelRGBA(t, i, c);
+        x = c[0]*2.0f - 1.0f; y = c[1]*2.0f - 1.0f; z = c[2]*2.0f - 1.0f;
+    }
+    if (directX) y = -y;
+    return (x*x + y*y + z*z >= RBL__NORMAL_MIN_LEN2)? rbl__v3(x, y, z) : rbl__flatNormal();
+}
+
+//----------------------------------------------------------------------------------
+// sRGB, mip chains and gutter dilation
+//----------------------------------------------------------------------------------
+static double rbl__srgbToLinear(double s)
+{
+    return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4);
+}
+
+// Exact 8-bit sRGB: decode table, and the linear values halfway between consecutive codes
+// (encoding = how many midpoints lie below the value: round-to-nearest in the sRGB domain)
+typedef struct rbl__Srgb {
+    float toLinear[256];
+    float midpoints[255];
+} rbl__Srgb;
+
+static void rbl__initSrgb(rbl__Srgb *s)
+{
+    for (int i = 0; i < 256; i++) s->toLinear[i] = (float)rbl__srgbToLinear(i/255.0);
+    for (int i = 0; i < 255; i++) s->midpoints[i] = (float)rbl__srgbToLinear((i + 0.5)/255.0);
+}
+
+static inline unsigned char rbl__linearToSrgb8(const rbl__Srgb *s, float linear)
+{
+    int lo = 0, hi = 255;
+    while (lo < hi)
+    {
+        int mid = (lo + hi)/2;
+        if (s->midpoints[mid] < linear) lo = mid + 1; else hi = mid;
+    }
+    return (unsigned char)lo;
+}
+
+// raylib's mip rule (ImageMipmaps): halve each side (integer division, at least 1) until 1x1
+static int rbl__mipCount(int width, int height)
+{
+    int count = 1;
+    while ((width != 1) || (height != 1))
+    {
+        width = (width > 1)? width/2 : 1;
+        height = (height > 1)? height/2 : 1;
+        count++;
+    }
+    return count;
+}
+
+// Area-weighted box filter taps: destination texel d covers source [d*s, (d+1)*s), s = src/dst
+// (exactly 2x2 for even sizes; an odd side spreads its extra texel over its neighbours)
+typedef struct rbl__Taps {
+    int first;                      // First source texel
+    int count;                      // Source texels (1..4)
+    float w[4];                     // Weights (sum 1)
+} rbl__Taps;
+
+static void rbl__mipTaps(int srcSize, int dstSize, rbl__Taps *taps)
+{
+    double scale = (double)srcSize/(double)dstSize;
+    for (int d = 0; d < dstSize; d++)
+    {
+        double a = d*scale, b = (d + 1)*scale;
+        int i0 = (int)floor(a), i1 = (int)ceil(b);
+        if (i1 > srcSize) i1 = srcSize;
+        taps[d].first = i0;
+        taps[d].count = 0;
+        for (int i = i0; (i < i1) && (taps[d].count < 4); i++)
+        {
+            double lo = (a > i)? a : (double)i, hi = (b < i + 1)? b : (double)(i + 1);
+            taps[d].w[taps[d].count++] = (float)((hi - lo)/scale);
+        }
+    }
+}
+
+// Colour mip level (RGBA8 sRGB): RGB averaged in linear light, weighted by alpha when alphaWeighted
+// (transparent texels' colour does not darken or tint the edges of cut-outs), alpha averaged linearly
+static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char *dst, int dw, int dh,
+                                 const rbl__Taps *tx, const rbl__Taps *ty, const rbl__Srgb *srgb, bool alphaWeighted)
+{
+    for (int y = 0; y < dh; y++)
+    {
+        for (int x = 0; x < dw; x++)
+        {
+            float sum[3] = { 0.0f, 0.0f, 0.0f }, sumA[3] = { 0.0f, 0.0f, 0.0f }, alpha = 0.0f;
+            for (int j = 0; j < ty[y].count; j++)
+            {
+                const unsigned char *row = src + (size_t)(ty[y].first + j)*(size_t)sw*4;
+                for (int i = 0; i < tx[x].count; i++)
+                {
+                    const unsigned char *p = row + (size_t)(tx[x].first + i)*4;
+                    float w = ty[y].w[j]*tx[x].w[i], a = p[3]/255.0f;
+                    for (int k = 0; k < 3; k++)
+                    {
+                        float l = srgb->toLinear[p[k]];
+                        sum[k] += w*l;
+                        sumA[k] += w*a*l;
+                    }
+                    alpha += w*a;
+                }
+            }
+            unsigned char *out = dst + ((size_t)y*(size_t)dw + (size_t)x)*4;
+            for (int k = 0; k < 3; k++)
+                out[k] = rbl__linearToSrgb8(srgb, (alphaWeighted && (alpha > 0.0f))? sumA[k]/alpha : sum[k]);
+            out[3] = rbl__unorm8(alpha);
+        }
+    }
+}
+
+// Linear mip level of a one-channel image (emissive mask)
+static void rbl__downsampleLinear1(const unsigned char *src, int sw, unsigned char *dst, int dw, int dh,
+                                   const rbl__Taps *tx, const rbl__Taps *ty)
+{
+    for (int y = 0; y < dh; y++)
+    {
+        for (int x = 0; x < dw; x++)
+        {
+            float sum = 0.0f;
+            for (int j = 0; j < ty[y].count; j++)
+                for (int i = 0; i < tx[x].count; i++)
+                    sum += ty[y].w[j]*tx[x].w[i]*src[(size_t)(ty[y].first + j)*(size_t)sw + (size_t)(tx[x].first + i)];
+            dst[(size_t)y*(size_t)dw + (size_t)x] = rbl__unorm8(sum/255.0f);
+        }
+    }
+}
+
+// Material mip level: normals decoded, averaged, renormalised (|average| < 1/64 -> flat), re-encoded with
+// the same encoder; the other channels averaged linearly. Without a normal map the (constant) normal
+// channels are copied.
+static void rbl__downsampleMaterial(const unsigned char *src, int sw, unsigned char *dst, int dw, int dh,
+                                    const rbl__Taps *tx, const rbl__Taps *ty, int encoding, bool hasNormal)
+{
+    const int normalChannels = (encoding == RBL_NORMAL_RGB)? 3 : 2;
+    for (int y = 0; y < dh; y++)
+    {
+        for (int x = 0; x < dw; x++)
+        {
+            double n[3] = { 0.0, 0.0, 0.0 };
+            float other[2] = { 0.0f, 0.0f };
+            for (int j = 0; j < ty[y].count; j++)
+            {
+                const unsigned char *row = src + (size_t)(ty[y].first + j)*(size_t)sw*4;
+                for (int i = 0; i < tx[x].count; i++)
+                {
+                    const unsigned char *p = row + (size_t)(tx[x].first + i)*4;
+                    float w = ty[y].w[j]*tx[x].w[i];
+                    if (hasNormal)
+                    {
+                        Vector3 d = rbl__decode(p, encoding);
+                        n[0] += w*d.x; n[1] += w*d.y; n[2] += w*d.z;
+                    }
+                    for (int k = normalChannels; k < 4; k++) other[k - 2] += w*p[k];
+                }
+            }
+            unsigned char *out = dst + ((size_t)y*(size_t)dw + (size_t)x)*4;
+            if (hasNormal)
+            {
+                // An average shorter than 1/64 is quantisation noise left by cancelling directions
+                // (e.g. two opposite codes): its direction means nothing, so it is the flat normal
+                double l2 = n[0]*n[0] + n[1]*n[1] + n[2]*n[2];
+                double a[3] = { 0.0, 0.0, 1.0 };
+                if (l2 >= RBL__NORMAL_MIN_LEN2) { double l = sqrt(l2); a[0] = n[0]/l; a[1] = n[1]/l; a[2] = n[2]/l; }
+                unsigned char code[3];
+                rbl__encode(a, encoding, code);
+                for (int k = 0; k < normalChannels; k++) out[k] = code[k];
+            }
+            else
+            {
+                for (int k = 0; k < normalChannels; k++) out[k] = src[k];
+            }
+            for (int k = normalChannels; k < 4; k++) out[k] = rbl__unorm8(other[k - 2]/255.0f);
+        }
+    }
+}
+
+// Nearest frame texel of every texel of a level (w x h of a w0 x h0 atlas): nearest[i] == i inside
+// a frame, else the index of the nearest inside texel in Chebyshev distance (ties: the first found).
+// Inside = touched by a frame scaled to the level (conservative: floor of the start, ceil of the end).
+// Two-pass chessboard distance transform (Rosenfeld-Pfaltz, exact for this metric) that carries the
+// source along: a texel inheriting its neighbour's source at distance d + 1 is at most that far from
+// it, and d + 1 is the exact distance, so the source is a nearest one. O(texels + frame area).
+static void rbl__nearestFrameTexels(const Rectangle *frames, int frameCount, int w0, int h0, int w, int h, int *nearest, int *dist)
+{
+    const size_t n = (size_t)w*(size_t)h;
+    for (size_t i = 0; i < n; i++) { nearest[i] = -1; dist[i] = 0x3FFFFFFF; }
+    const double sx = (double)w/w0, sy = (double)h/h0;
+    for (int f = 0; f < frameCount; f++)
+    {
+        int x0 = (int)floor(frames[f].x*sx), x1 = (int)ceil(((double)frames[f].x + frames[f].width)*sx);
+        int y0 = (int)floor(frames[f].y*sy), y1 = (int)ceil(((double)frames[f].y + frames[f].height)*sy);
+        if (x0 > w - 1) x0 = w - 1;
+        if (y0 > h - 1) y0 = h - 1;
+        if (x1 <= x0) x1 = x0 + 1;
+        if (y1 <= y0) y1 = y0 + 1;
+        if (x1 > w) x1 = w;
+        if (y1 > h) y1 = h;
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++) { nearest[(size_t)y*w + x] = y*w + x; dist[(size_t)y*w + x] = 0; }
+    }
+    // Forward pass: left, up-left, up, up-right; backward pass: right, down-right, down, down-left
+    for (int pass = 0; pass < 2; pass++)
+    {
+        const int step = (pass == 0)? 1 : -1, dy = -step;
+        for (int yy = 0; yy < h; yy++)
+        {
+            const int y = (pass == 0)? yy : h - 1 - yy;
+            const bool rowOk = (y + dy >= 0) && (y + dy < h);
+            for (int xx = 0; xx < w; xx++)
+            {
+                const int x = (pass == 0)? xx : w - 1 - xx;
+                const int i = y*w + x;
+                if (dist[i] == 0) continue;
+                int best = dist[i], src = nearest[i];
+                const int xb = x - step;                           // the side already swept
+                if ((xb >= 0) && (xb < w) && (dist[i - step] + 1 < best)) { best = dist[i - step] + 1; src = nearest[i - step]; }
+                if (rowOk)
+                {
+                    const int r = (y + dy)*w;
+                    for (int k = -1; k <= 1; k++)
+                    {
+                        const int xn = x + k;
+                        if ((xn < 0) || (xn >= w)) continue;
+                        if (dist[r + xn] + 1 < best) { best = dist[r + xn] + 1; src = nearest[r + xn]; }
+                    }
+                }
+                dist[i] = best;
+                nearest[i] = src;
+            }
+        }
+    }
+}
+
+static void rbl__applyDilation(unsigned char *level, int bytesPerTexel, const int *nearest, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (nearest[i] != (int)i) memcpy(level + i*(size_t)bytesPerTexel, level + (size_t)nearest[i]*(size_t)bytesPerTexel, (size_t)bytesPerTexel);
+}
+
+//----------------------------------------------------------------------------------
+// Packing
+//----------------------------------------------------------------------------------
+// A map's size and format; false (logged) when it cannot be packed
+static bool rbl__checkMap(Image image, const char *name, int width, int height)
+{
+    if (image.data == NULL) return true;      // absent
+    if ((image.width != width) || (image.height != height))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: %s is %ix%i, the albedo %ix%i (every map must have the albedo's size)",
+                 name, image.width, image.height, width, height);
+        return false;
+    }
+    if (image.format >= PIXELFORMAT_COMPRESSED_DXT1_RGB)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: %s has compressed format %i (decompress it first)", name, image.format);
+        return false;
+    }
+    if (!rbl__formatConvertible(image.format))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: %s has unknown pixel format %i", name, image.format);
+        return false;
+    }
+    return true;
+}
+
+static bool rbl__validateMaterialSource(const RblMaterialSource *s)
+{
+    const Image *albedo = &s->albedo;
+    if (albedo->data == NULL) { TraceLog(LOG_WARNING, "RBL: RblPackMaterial: albedo is required (data is NULL)"); return false; }
+    if ((albedo->width <= 0) || (albedo->height <= 0))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: albedo size %ix%i", albedo->width, albedo->height);
+        return false;
+    }
+    // Levels of 4-byte texels must stay addressable by int and by MemAlloc's unsigned int
+    if ((double)albedo->width*(double)albedo->height*4.0*4.0/3.0 + 64.0 > 2147483647.0)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: albedo %ix%i is too large to pack", albedo->width, albedo->height);
+        return false;
+    }
+    if (!rbl__checkMap(*albedo, "albedo", albedo->width, albedo->height) ||
+        !rbl__checkMap(s->normal, "normal", albedo->width, albedo->height) ||
+        !rbl__checkMap(s->specular, "specular", albedo->width, albedo->height) ||
+        !rbl__checkMap(s->occlusion, "occlusion", albedo->width, albedo->height) ||
+        !rbl__checkMap(s->emissive, "emissive", albedo->width, albedo->height)) return false;
+    int encoding = (s->normalEncoding == RBL_NORMAL_NONE)? RBL_NORMAL_HEMIOCT : s->normalEncoding;
+    if ((encoding != RBL_NORMAL_HEMIOCT) && (encoding != RBL_NORMAL_XY) && (encoding != RBL_NORMAL_RGB))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: normalEncoding %i is not 0, HEMIOCT, XY or RGB", s->normalEncoding);
+        return false;
+    }
+    if ((encoding == RBL_NORMAL_RGB) && (s->specular.data != NULL))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: RBL_NORMAL_RGB fills the material texture's RGB: specular has no channel left (use HEMIOCT or XY)");
+        return false;
+    }
+    if ((s->frameCount < 0) || ((s->frameCount > 0) && (s->frames == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: %i frames at %p", s->frameCount, (const void *)s->frames);
+        return false;
+    }
+    for (int i = 0; i < s->frameCount; i++)
+    {
+        Rectangle r = s->frames[i];
+        bool ok = rbl__finite(r.x) && rbl__finite(r.y) && rbl__finite(r.width) && rbl__finite(r.height) &&
+                  (r.width > 0.0f) && (r.height > 0.0f) && (r.x >= 0.0f) && (r.y >= 0.0f) &&
+                  ((double)r.x + r.width <= albedo->width) && ((double)r.y + r.height <= albedo->height);
+        if (!ok)
+        {
+            TraceLog(LOG_WARNING, "RBL: RblPackMaterial: frame %i (%g, %g, %g x %g) is empty or outside the %ix%i atlas",
+                     i, r.x, r.y, r.width, r.height, albedo->width, albedo->height);
+            return false;
+        }
+    }
+    return true;
+}
+
+// An output Image of the whole chain (freeable with UnloadImage: MemAlloc is raylib's allocator)
+static Image rbl__allocImage(int width, int height, int levels, int format)
+{
+    Image image;
+    memset(&image, 0, sizeof(image));
+    int bpp = (format == PIXELFORMAT_UNCOMPRESSED_GRAYSCALE)? 1 : 4;
+    size_t size = 0;
+    for (int l = 0, w = width, h = height; l < levels; l++)
+    {
+        size += (size_t)w*(size_t)h*(size_t)bpp;
+        w = (w > 1)? w/2 : 1;
+        h = (h > 1)? h/2 : 1;
+    }
+    image.data = MemAlloc((unsigned int)size);
+    if (image.data == NULL) return image;
+    image.width = width;
+    image.height = height;
+    image.mipmaps = levels;
+    image.format = format;
+    return image;
+}
+
+bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
+{
+    if ((source == NULL) || (packed == NULL)) { TraceLog(LOG_WARNING, "RBL: RblPackMaterial: NULL source or packed"); return false; }
+    if (!rbl__validateMaterialSource(source)) return false;
+
+    const int width = source->albedo.width, height = source->albedo.height;
+    const size_t texels = (size_t)width*(size_t)height;
+    const int encoding = (source->normalEncoding == RBL_NORMAL_NONE)? RBL_NORMAL_HEMIOCT : source->normalEncoding;
+    const bool hasNormal = (source->normal.data != NULL), hasSpecular = (source->specular.data != NULL);
+    const bool hasOcclusion = (source->occlusion.data != NULL), hasEmissive = (source->emissive.data != NULL);
+    const bool hasMaterial = hasNormal || hasSpecular || hasOcclusion;
+    const bool hasFrames = (source->frameCount > 0);
+    const int levels = source->mipmaps? rbl__mipCount(width, height) : 1;
+
+    RblPackedMaterial out;
+    memset(&out, 0, sizeof(out));
+    rbl__Texels albedoIn, normalIn, specularIn, occlusionIn, emissiveIn;
+    memset(&albedoIn, 0, sizeof(albedoIn)); memset(&normalIn, 0, sizeof(normalIn)); memset(&specularIn, 0, sizeof(specularIn));
+    memset(&occlusionIn, 0, sizeof(occlusionIn)); memset(&emissiveIn, 0, sizeof(emissiveIn));
+    int *nearest = NULL, *dist = NULL;
+    rbl__Taps *taps = NULL;
+    bool ok = rbl__openTexels(source->albedo, &albedoIn) &&
+              (!hasNormal || rbl__openTexels(source->normal, &normalIn)) &&
+              (!hasSpecular || rbl__openTexels(source->specular, &specularIn)) &&
+              (!hasOcclusion || rbl__openTexels(source->occlusion, &occlusionIn)) &&
+              (!hasEmissive || rbl__openTexels(source->emissive, &emissiveIn));
+
+    // Emissive: a mask when every texel is grey
+    bool emissiveMask = true;
+    if (ok && hasEmissive)
+    {
+        if ((emissiveIn.channels > 2) && !emissiveIn.greyFloat)
+        {
+            for (size_t i = 0; (i < texels) && emissiveMask; i++)
+            {
+                unsigned char c[4];
+                rbl__texelBytes(&emissiveIn, i, c);
+                emissiveMask = (c[0] == c[1]) && (c[1] == c[2]);
+            }
+        }
+    }
+
+    if (ok)
+    {
+        out.albedo = rbl__allocImage(width, height, levels, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+        ok = (out.albedo.data != NULL);
+    }
+    if (ok && hasMaterial)
+    {
+        out.material = rbl__allocImage(width, height, levels, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+        ok = (out.material.data != NULL);
+    }
+    if (ok && hasEmissive)
+    {
+        out.emissive = rbl__allocImage(width, height, levels, emissiveMask? PIXELFORMAT_UNCOMPRESSED_GRAYSCALE : PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+        ok = (out.emissive.data != NULL);
+    }
+    if (ok && hasFrames)
+    {
+        nearest = (int *)RBL_MALLOC(texels*sizeof(int));
+        dist = (int *)RBL_MALLOC(texels*sizeof(int));
+        ok = (nearest != NULL) && (dist != NULL);
+    }
+    if (ok && (levels > 1))
+    {
+        taps = (rbl__Taps *)RBL_MALLOC(((size_t)width + (size_t)height)*sizeof(rbl__Taps));
+        ok = (taps != NULL);
+    }
+
+    if (ok)
+    {
+        // Level 0
+        unsigned char *albedo = (unsigned char *)out.albedo.data;
+        if ((albedoIn.u8 != NULL) && (albedoIn.channels == 4)) memcpy(albedo, albedoIn.u8, texels*4);
+        else for (size_t i = 0; i < texels; i++) rbl__texelBytes(&albedoIn, i, albedo + i*4);
+
+        if (hasMaterial)
+        {
+            unsigned char *material = (unsigned char *)out.material.data;
+            const int normalChannels = (encoding == RBL_NORMAL_RGB)? 3 : 2;
+            unsigned char flat[3];
+            RblEncodeNormal(rbl__flatNormal(), encoding, flat);
+            for (size_t i = 0; i < texels; i++)
+            {
+                unsigned char *p = material + i*4;
+                if (hasNormal)
+                {
+                    double a[3];
+                    rbl__sanitizeNormal(rbl__sourceNormal(&normalIn, i, source->normalDirectX), a);
+                    unsigned char code[3];
+                    rbl__encode(a, encoding, code);
+                    for (int k = 0; k < normalChannels; k++) p[k] = code[k];
+                }
+                else for (int k = 0; k < normalChannels; k++) p[k] = flat[k];
+                if (encoding != RBL_NORMAL_RGB) p[2] = hasSpecular? rbl__texelRedByte(&specularIn, i) : RBL__SPECULAR_DEFAULT;
+                p[3] = hasOcclusion? rbl__texelRedByte(&occlusionIn, i) : RBL__OCCLUSION_DEFAULT;
+            }
+        }
+
+        if (hasEmissive)
+        {
+            unsigned char *emissive = (unsigned char *)out.emissive.data;
+            if (emissiveMask) for (size_t i = 0; i < texels; i++) emissive[i] = rbl__texelRedByte(&emissiveIn, i);
+            else for (size_t i = 0; i < texels; i++) rbl__texelBytes(&emissiveIn, i, emissive + i*4);
+        }
+
+        // Levels 1.. from the level above; gutters dilated on every level
+        rbl__Srgb srgb;
+        rbl__initSrgb(&srgb);
+        const int emissiveBpp = emissiveMask? 1 : 4;
+        size_t offset = 0, prevOffset = 0;      // texels before this level / the level above
+        int pw = width, ph = height;            // size of the level above
+        for (int l = 0, w = width, h = height; l < levels; l++)
+        {
+            unsigned char *albedoLevel = (unsigned char *)out.albedo.data + offset*4;
+            unsigned char *materialLevel = hasMaterial? (unsigned char *)out.material.data + offset*4 : NULL;
+            unsigned char *emissiveLevel = hasEmissive? (unsigned char *)out.emissive.data + offset*(size_t)emissiveBpp : NULL;
+            if (l > 0)
+            {
+                rbl__Taps *tx = taps, *ty = taps + w;
+                rbl__mipTaps(pw, w, tx);
+                rbl__mipTaps(ph, h, ty);
+                rbl__downsampleColor((unsigned char *)out.albedo.data + prevOffset*4, pw, albedoLevel, w, h, tx, ty, &srgb, true);
+                if (hasMaterial)
+                    rbl__downsampleMaterial((unsigned char *)out.material.data + prevOffset*4, pw, materialLevel, w, h, tx, ty, encoding, hasNormal);
+                if (hasEmissive && emissiveMask)
+                    rbl__downsampleLinear1((unsigned char *)out.emissive.data + prevOffset, pw, emissiveLevel, w, h, tx, ty);
+                else if (hasEmissive)
+                    rbl__downsampleColor((unsigned char *)out.emissive.data + prevOffset*4, pw, emissiveLevel, w, h, tx, ty, &srgb, false);
+            }
+            if (hasFrames)
+            {
+                size_t n = (size_t)w*(size_t)h;
+                rbl__nearestFrameTexels(source->frames, source->frameCount, width, height, w, h, nearest, dist);
+                rbl__applyDilation(albedoLevel, 4, nearest, n);
+                if (hasMaterial) rbl__applyDilation(materialLevel, 4, nearest, n);
+                if (hasEmissive) rbl__applyDilation(emissiveLevel, emissiveBpp, nearest, n);
+            }
+            prevOffset = offset;
+            offset += (size_t)w*(size_t)h;
+            pw = w;
+            ph = h;
+            w = (w > 1)? w/2 : 1;
+            h = (h > 1)? h/2 : 1;
+        }
+
+        out.layout.normalEncoding = hasNormal? encoding : RBL_NORMAL_NONE;
+        out.layout.specular = hasSpecular;
+        out.layout.occlusion = hasOcclusion;
+        out.layout.emissive = !hasEmissive? RBL_EMISSIVE_NONE : (emissiveMask? RBL_EMISSIVE_MASK : RBL_EMISSIVE_RGB);
+    }
+    else
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: out of memory packing a %ix%i material", width, height);
+        if (out.albedo.data != NULL) UnloadImage(out.albedo);
+        if (out.material.data != NULL) UnloadImage(out.material);
+        if (out.emissive.data != NULL) UnloadImage(out.emissive);
+    }
+
+    rbl__closeTexels(&albedoIn); rbl__closeTexels(&normalIn); rbl__closeTexels(&specularIn);
+    rbl__closeTexels(&occlusionIn); rbl__closeTexels(&emissiveIn);
+    RBL_FREE(nearest); RBL_FREE(dist); RBL_FREE(taps);
+    if (ok) *packed = out;
+    return ok;
+}
+
+void RblUnloadPackedMaterial(RblPackedMaterial *packed)
+{
+    if (packed == NULL) return;
+    if (packed->albedo.data != NULL) UnloadImage(packed->albedo);
+    if (packed->material.data != NULL) UnloadImage(packed->material);
+    if (packed->emissive.data != NULL) UnloadImage(packed->emissive);
+    memset(packed, 0, sizeof(*packed));
+}
+
+//----------------------------------------------------------------------------------
+// Authoring help: height -> normal, albedo -> height, height -> occlusion
+//----------------------------------------------------------------------------------
+// A map for the Gen functions: present, sized and convertible; false (logged) otherwise
+static bool rbl__checkGenInput(Image image, const char *function)
+{
+    if ((image.data == NULL) || (image.width <= 0) || (image.height <= 0))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: empty image (%ix%i, data %p)", function, image.width, image.height, image.data);
+        return false;
+    }
+    if (!rbl__formatConvertible(image.format))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: pixel format %i is compressed or unknown (decompress it first)", function, image.format);
+        return false;
+    }
+    if ((double)image.width*(double)image.height*16.0 > 2147483647.0)
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: %ix%i is too large", function, image.width, image.height);
+        return false;
+    }
+    return true;
+}
+
+// Heights of every texel: red/grey channel, 8-bit as byte/255, float as stored (NaN/Inf -> 0); NULL = failure (logged)
+static float *rbl__loadHeights(Image image, const char *function)
+{
+    rbl__Texels t;
+    if (!rbl__openTexels(image, &t)) { TraceLog(LOG_WARNING, "RBL: %s: out of memory", function); return NULL; }
+    size_t n = (size_t)image.width*(size_t)image.height;
+    float *h = (float *)RBL_MALLOC(n*sizeof(float));
+    if (h != NULL) for (size_t i = 0; i < n; i++) { float v = rbl__texelRed(&t, i); h[i] = rbl__finite(v)? v : 0.0f; }
+    else TraceLog(LOG_WARNING, "RBL: %s: out of memory", function);
+    rbl__closeTexels(&t);
+    return h;
+}
+
+// Unit normal of the height field z = strength*h (texel units) at texel (x, y), central differences:
+//   dh/dx  = (h[x+1] - h[x-1])/2,   dh/dup = (h[row-1] - h[row+1])/2   (row 0 is the top: up = row - 1)
+//   n = normalize(-strength*dh/dx, -strength*dh/dup, 1)   (OpenGL convention: +Y = image up)
+// Neighbours beyond the edge wrap (tiling maps) or clamp to the edge texel.
+static Vector3 rbl__heightNormal(const float *h, int w, int hgt, int x, int y, float strength, bool wrap)
+{
+    int xl = x - 1, xr = x + 1, yu = y - 1, yd = y + 1;
+    if (wrap)
+    {
+        xl = (xl + w)%w; xr = xr%w; yu = (yu + hgt)%hgt; yd = yd%hgt;
+    }
+    else
+    {
+        if (xl < 0) xl = 0;
+        if (xr > w - 1) xr = w - 1;
+        if (yu < 0) yu = 0;
+        if (yd > hgt - 1) yd = hgt - 1;
+    }
+    double dhdx = ((double)h[(size_t)y*w + xr] - (double)h[(size_t)y*w + xl])*0.5;
+    double dhdup = ((double)h[(size_t)yu*w + x] - (double)h[(size_t)yd*w + x])*0.5;
+    double nx = -(double)strength*dhdx, ny = -(double)strength*dhdup, nz = 1.0;
+    double inv = 1.0/sqrt(nx*nx + ny*ny + nz*nz);     // finite: float heights x strength cannot overflow double
+    return rbl__v3((float)(nx*inv), (float)(ny*inv), (float)(nz*inv));
+}
+
+Image RblGenNormalMapFromHeight(Image height, float strength, bool wrap)
+{
+    Image out;
+    memset(&out, 0, sizeof(out));
+    if (!rbl__checkGenInput(height, "RblGenNormalMapFromHeight")) return out;
+    if (!rbl__finite(strength)) { TraceLog(LOG_WARNING, "RBL: RblGenNormalMapFromHeight: strength is not finite"); return out; }
+    const int w = height.width, hgt = height.height;
+    float *h = rbl__loadHeights(height, "RblGenNormalMapFromHeight");
+    if (h == NULL) return out;
+    unsigned char *data = (unsigned char *)MemAlloc((unsigned int)((size_t)w*(size_t)hgt*4));
+    if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblGenNormalMapFromHeight: out of memory"); RBL_FREE(h); return out; }
+    for (int y = 0; y < hgt; y++)
+    {
+        for (int x = 0; x < w; x++)
+        {
+            Vector3 n = rbl__heightNormal(h, w, hgt, x, y, strength, wrap);
+            unsigned char *p = data + ((size_t)y*w + x)*4;
+            p[0] = rbl__quantizeSnorm(n.x);
+            p[1] = rbl__quantizeSnorm(n.y);
+            p[2] = rbl__quantizeSnorm(n.z);
+            p[3] = 255;
+        }
+    }
+    RBL_FREE(h);
+    out.data = data;
+    out.width = w;
+    out.height = hgt;
+    out.mipmaps = 1;
+    out.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
+    return out;
+}
+
+Image RblGenHeightFromLuminance(Image albedo)
+{
+    Image out;
+    memset(&out, 0, sizeof(out));
+    if (!rbl__checkGenInput(albedo, "RblGenHeightFromLuminance")) return out;
+    rbl__Texels t;
+    if (!rbl__openTexels(albedo, &t)) { TraceLog(LOG_WARNING, "RBL: RblGenHeightFromLuminance: out of memory"); return out; }
+    const size_t n = (size_t)albedo.width*(size_t)albedo.height;
+    unsigned char *data = (unsigned char *)MemAlloc((unsigned int)n);
+    if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblGenHeightFromLuminance: out of memory"); rbl__closeTexels(&t); return out; }
+    rbl__Srgb srgb;
+    rbl__initSrgb(&srgb);
+    for (size_t i = 0; i < n; i++)
+    {
+        double lin[3];
+        if (t.f32 != NULL)
+        {
+            float c[4];
+            rbl__texelRGBA(&t, i, c);
+            for (int k = 0; k < 3; k++) lin[k] = rbl__srgbToLinear((c[k] < 0.0f)? 0.0 : (c[k] > 1.0f)? 1.0 : (double)c[k]);
+        }
+        else
+        {
+            unsigned char c[4];
+            rbl__texelBytes(&t, i, c);
+            for (int k = 0; k < 3; k++) lin[k] = srgb.toLinear[c[k]];
+        }
+        data[i] = rbl__unorm8(0.2126*lin[0] + 0.7152*lin[1] + 0.0722*lin[2]);
+    }
+    rbl__closeTexels(&t);
+    out.data = data;
+    out.width = albedo.width;
+    out.height = albedo.height;
+    out.mipmaps = 1;
+    out.format = PIXELFORMAT_UNCOMPRESSED_GRAYSCALE;
+    return out;
+}
+
+Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
+{
+    Image out;
+    memset(&out, 0, sizeof(out));
+    if (!rbl__checkGenInput(height, "RblGenOcclusionFromHeight")) return out;
+    if ((radius < 0) || !rbl__finite(strength) || (strength < 0.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblGenOcclusionFromHeight: radius %i (>= 0) or strength %g (finite, >= 0) out of range", radius, strength);
+        return out;
+    }
+    const int w = height.width, hgt = height.height;
+    const size_t n = (size_t)w*(size_t)hgt;
+    float *h = rbl__loadHeights(height, "RblGenOcclusionFromHeight");
+    if (h == NULL) return out;
+    // Box means over the (2r+1)^2 window clipped to the image, separably with prefix sums: O(texels)
+    double *rows = (double *)RBL_MALLOC(n*sizeof(double));
+    double *prefix = (double *)RBL_MALLOC(((size_t)((w > hgt)? w : hgt) + 1)*sizeof(double));
+    unsigned char *data = (unsigned char *)MemAlloc((unsigned int)n);
+    if ((rows == NULL) || (prefix == NULL) || (data == NULL))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblGenOcclusionFromHeight: out of memory");
+        RBL_FREE(h); RBL_FREE(rows); RBL_FREE(prefix); MemFree(data);
+        return out;
+    }
+    for (int y = 0; y < hgt; y++)
+    {
+        prefix[0] = 0.0;
+        for (int x = 0; x < w; x++) prefix[x + 1] = prefix[x] + h[(size_t)y*w + x];
+        for (int x = 0; x < w; x++)
+        {
+            int x0 = (x - radius < 0)? 0 : x - radius, x1 = (x + radius > w - 1)? w - 1 : x + radius;
+            rows[(size_t)y*w + x] = (prefix[x1 + 1] - prefix[x0])/(double)(x1 - x0 + 1);
+        }
+    }
+    for (int x = 0; x < w; x++)
+    {
+        prefix[0] = 0.0;
+        for (int y = 0; y < hgt; y++) prefix[y + 1] = prefix[y] + rows[(size_t)y*w + x];
+        for (int y = 0; y < hgt; y++)
+        {
+            int y0 = (y - radius < 0)? 0 : y - radius, y1 = (y + radius > hgt - 1)? hgt - 1 : y + radius;
+            double mean = (prefix[y1 + 1] - prefix[y0])/(double)(y1 - y0 + 1);
+            double depth = mean - h[(size_t)y*w + x];
+            data[(size_t)y*w + x] = rbl__unorm8(1.0 - strength*((depth > 0.0)? depth : 0.0));
+        }
+    }
+    RBL_FREE(h); RBL_FREE(rows); RBL_FREE(prefix);
+    out.data = data;
+    out.width = w;
+    out.height = hgt;
+    out.mipmaps = 1;
+    out.format = PIXELFORMAT_UNCOMPRESSED_GRAYSCALE;
+    return out;
 }
 
 //----------------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-// CPU test suite (no GL): geometry and shader sources. Built plain and with ASan+UBSan.
+// CPU test suite (no GL): geometry, material maps and shader sources. Built plain and with ASan+UBSan.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "harness.h"
@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "test_geometry.c"
+#include "test_materials.c"
 #include "test_shaders_source.c"
 
 int main(int argc, char **argv)
@@ -26,6 +27,31 @@ int main(int argc, char **argv)
         RT_TEST(test_hard_far_from_origin_keeps_relative_precision),
         RT_TEST(test_hard_degenerate_source_and_texture_size),
         RT_TEST(test_hard_nan_or_inf_in_any_input_is_skipped),
+        RT_TEST(test_materials_encodings_round_trip_a_uniform_hemisphere_near_the_reference_errors),
+        RT_TEST(test_materials_default_hemioct_meets_max_0_6_and_mean_0_25_degrees),
+        RT_TEST(test_materials_xy_error_is_small_near_the_pole_and_over_3_degrees_at_grazing_angles),
+        RT_TEST(test_materials_precise_hemioct_is_never_worse_than_rounding_and_better_on_average),
+        RT_TEST(test_materials_every_code_decodes_to_a_finite_unit_normal),
+        RT_TEST(test_materials_encoder_maps_nan_zero_and_below_hemisphere_input_to_defined_codes),
+        RT_TEST(test_materials_measure_reports_mean_nearest_rank_p99_max_and_counts_only_valid_normals),
+        RT_TEST(test_materials_height_plane_tilted_by_a_known_angle_gives_that_normal),
+        RT_TEST(test_materials_strength_is_height_units_per_texel_so_one_per_texel_at_strength_1_is_45_degrees),
+        RT_TEST(test_materials_height_rising_toward_the_image_top_tilts_normals_to_minus_y),
+        RT_TEST(test_materials_hemisphere_bump_gives_the_analytic_sphere_normals),
+        RT_TEST(test_materials_wrap_edges_continue_across_the_border_and_clamp_edges_repeat_the_edge_texel),
+        RT_TEST(test_materials_height_from_luminance_is_rec709_of_the_linearised_colour),
+        RT_TEST(test_materials_occlusion_is_open_on_flat_ground_and_on_tops_and_darker_in_pits),
+        RT_TEST(test_materials_pack_layout_flags_follow_the_present_maps_and_absent_channels_take_defaults),
+        RT_TEST(test_materials_pack_directx_flag_flips_the_decoded_y),
+        RT_TEST(test_materials_pack_zero_vector_normal_texels_become_flat_never_nan),
+        RT_TEST(test_materials_pack_rejects_invalid_input_with_a_warning_and_leaves_packed_untouched),
+        RT_TEST(test_materials_pack_converts_grayscale_rgb565_and_float_inputs_instead_of_rejecting),
+        RT_TEST(test_materials_pack_grey_emissive_becomes_a_mask_and_coloured_emissive_stays_rgb),
+        RT_TEST(test_materials_dilation_fills_gutters_with_the_nearest_frame_edge_and_mips_never_mix_frames),
+        RT_TEST(test_materials_mip_normals_are_renormalised_and_opposite_tilts_average_to_flat),
+        RT_TEST(test_materials_albedo_mips_average_in_linear_light_weighted_by_alpha),
+        RT_TEST(test_materials_mip_chain_uses_raylib_sizes_and_layout_and_odd_sizes_keep_constants),
+        RT_TEST(test_materials_unload_frees_and_zeroes_the_packed_material),
         RT_TEST(test_shaders_embedded_copies_equal_the_glsl_files),
     };
     SetTraceLogLevel(LOG_WARNING);

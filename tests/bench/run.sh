@@ -12,6 +12,10 @@ echo "== bench_geometry"
 BENCH_CSV="$csv" "$BUILD/bench/bench_geometry"
 
 echo
+echo "== bench_materials"
+BENCH_CSV="$csv" "$BUILD/bench/bench_materials"
+
+echo
 echo "== $csv"
 if command -v column >/dev/null 2>&1; then
   column -t -s, "$csv"
