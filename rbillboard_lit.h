@@ -347,16 +347,19 @@ typedef struct RblLight {
 // Lit shader variant request; zero means default
 typedef struct RblLitShaderDesc {
     int maxLights;                  // Light slots compiled in (0 = 1, at most RBL_MAX_LIGHTS)
-    bool normalMap;                 // Sample a tangent-space normal map from MATERIAL_MAP_NORMAL
+    RblMaterialLayout material;     // Maps the material provides (zero = albedo only; see RblPackMaterial)
     float alphaCutoff;              // Discard fragments below this alpha (0 = 0.5; negative = never)
+    float emissiveIntensity;        // Scale of the emission (0 = 1)
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
+    bool linearOutput;              // Write linear light (float targets) instead of encoding to sRGB
+    int debugView;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
 // Lit shader: a raylib Shader plus its uniform locations (looked up once)
 typedef struct RblLitShader {
     Shader shader;                  // Use as Material.shader for billboards and Models
     int maxLights;                  // Light slots compiled in
-    bool normalMap;                 // Variant samples a normal map
+    RblMaterialLayout material;     // Maps the variant samples
     bool instanced;                 // Variant expands RblInstance data
     int locLightCount;              // Uniform locations
     int locLightPosition;
@@ -402,6 +405,7 @@ RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 
 RBLAPI Image RblGenNormalMapFromHeight(Image height, float strength, bool wrap); // Tangent-space normal map (OpenGL convention) from a height map (grey)
 RBLAPI Image RblGenHeightFromLuminance(Image albedo);                         // Height (grey) from albedo luminance, for RblGenNormalMapFromHeight
 RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength); // Cavity occlusion (grey) from a height map
+RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material); // Upload packed Images into material slots (GL): ALBEDO, NORMAL (material texture), EMISSION
 
 // Lights and the forward lit shader
 RBLAPI RblLitShader RblLoadLitShader(RblLitShaderDesc desc);                  // Compile a lit shader variant
@@ -448,22 +452,36 @@ RBLAPI bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_lit_fs[] = {
-    "// Forward lit fragment shader: albedo (texture0 x colDiffuse x vertex colour) with an alpha cutoff,\n",
-    "// optional tangent-space normal map (texture2, OpenGL convention: +X = +U, +Y = image up),\n",
-    "// Lambert diffuse from RBL_LIGHTS point lights plus a flat ambient term.\n",
-    "// Variant defines (prepended by the loader): RBL_LIGHTS (slots compiled in), RBL_NORMAL_MAP.\n",
+    "// Forward lit fragment shader for billboards and raylib Models.\n",
+    "// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps\n",
+    "// (normal, specular, occlusion) are linear. Lighting: Lambert diffuse from RBL_LIGHTS point lights\n",
+    "// plus an ambient term that the occlusion map attenuates (occlusion is about indirect light only).\n",
+    "// Variant defines, prepended by the loader (only what a material uses is compiled, so absent maps\n",
+    "// are never sampled):\n",
+    "//   RBL_LIGHTS n             light slots compiled in\n",
+    "//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map\n",
+    "//   RBL_SPECULAR             material texture B holds specular intensity (decoded for the BRDF)\n",
+    "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
+    "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
+    "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode to sRGB\n",
+    "//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
     "in vec3 fragPosition;\n",
     "in vec2 fragTexCoord;\n",
-    "in vec4 fragColor;\n",
+    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
     "in vec3 fragNormal;\n",
     "in vec4 fragTangent;\n",
     "\n",
-    "uniform sampler2D texture0;     // albedo\n",
-    "#ifdef RBL_NORMAL_MAP\n",
-    "uniform sampler2D texture2;     // tangent-space normal map (raylib's MATERIAL_MAP_NORMAL slot)\n",
+    "uniform sampler2D texture0;     // albedo (sRGB)\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
+    "#define RBL_MATERIAL_TEXTURE\n",
+    "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
     "#endif\n",
-    "uniform vec4 colDiffuse;\n",
+    "#if RBL_EMISSIVE > 0\n",
+    "uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)\n",
+    "uniform float rblEmissiveIntensity;\n",
+    "#endif\n",
+    "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
     "uniform float rblAlphaCutoff;\n",
     "uniform vec3 rblAmbient;        // linear ambient radiance\n",
     "#if RBL_LIGHTS > 0\n",
@@ -482,24 +500,72 @@ static const char *const rbl__shader_lit_fs[] = {
     "    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;\n",
     "}\n",
     "\n",
+    "// Exact sRGB transfer functions (IEC 61966-2-1)\n",
+    "vec3 rblSrgbToLinear(vec3 c)\n",
+    "{\n",
+    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
+    "}\n",
+    "\n",
+    "vec3 rblLinearToSrgb(vec3 c)\n",
+    "{\n",
+    "    c = clamp(c, 0.0, 1.0);\n",
+    "    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));\n",
+    "}\n",
+    "\n",
+    "// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU\n",
+    "// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)\n",
+    "vec3 rblDecodedUnit(vec3 e)\n",
+    "{\n",
+    "    return (dot(e, e) < 1.0/4096.0)? vec3(0.0, 0.0, 1.0) : normalize(e);\n",
+    "}\n",
+    "\n",
+    "vec3 rblDecodeNormal(vec4 m)\n",
+    "{\n",
+    "#if RBL_NORMAL_ENCODING == 1\n",
+    "    vec2 e = m.rg*2.0 - 1.0;                                // hemi-octahedral, stored rotated 45 degrees\n",
+    "    vec2 p = vec2(e.x + e.y, e.x - e.y)*0.5;\n",
+    "    return rblDecodedUnit(vec3(p, 1.0 - max(abs(e.x), abs(e.y))));     // = 1-|p.x|-|p.y|, never negative\n",
+    "#elif RBL_NORMAL_ENCODING == 2\n",
+    "    vec2 e = m.rg*2.0 - 1.0;                                // X and Y, Z rebuilt\n",
+    "    return rblDecodedUnit(vec3(e, sqrt(max(0.0, 1.0 - dot(e, e)))));\n",
+    "#elif RBL_NORMAL_ENCODING == 3\n",
+    "    return rblDecodedUnit(m.rgb*2.0 - 1.0);                 // plain RGB map\n",
+    "#else\n",
+    "    return vec3(0.0, 0.0, 1.0);\n",
+    "#endif\n",
+    "}\n",
+    "\n",
     "void main()\n",
     "{\n",
-    "    vec4 albedo = texture(texture0, fragTexCoord)*colDiffuse*fragColor;\n",
+    "    vec4 texel = texture(texture0, fragTexCoord);\n",
+    "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
     "    if (albedo.a < rblAlphaCutoff) discard;\n",
     "\n",
     "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
-    "#ifdef RBL_NORMAL_MAP\n",
+    "#ifdef RBL_MATERIAL_TEXTURE\n",
+    "    vec4 material = texture(texture2, fragTexCoord);\n",
+    "#endif\n",
+    "    vec3 tangentNormal = vec3(0.0, 0.0, 1.0);\n",
+    "#if RBL_NORMAL_ENCODING > 0\n",
     "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n",
     "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n",
     "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n",
     "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n",
     "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
     "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
-    "    vec3 m = texture(texture2, fragTexCoord).xyz*2.0 - 1.0;\n",
-    "    n = rblSafeNormalize(t*m.x - b*m.y + n*m.z, n);\n",
+    "    tangentNormal = rblDecodeNormal(material);\n",
+    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);\n",
+    "#endif\n",
+    "    float specular = 0.5;\n",
+    "#ifdef RBL_SPECULAR\n",
+    "    specular = material.b;\n",
+    "#endif\n",
+    "    float occlusion = 1.0;\n",
+    "#ifdef RBL_OCCLUSION\n",
+    "    occlusion = material.a;\n",
     "#endif\n",
     "\n",
-    "    vec3 irradiance = rblAmbient;\n",
+    "    vec3 irradiance = rblAmbient*occlusion;\n",
     "#if RBL_LIGHTS > 0\n",
     "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
     "    {\n",
@@ -514,7 +580,26 @@ static const char *const rbl__shader_lit_fs[] = {
     "        irradiance += rblLightColor[i]*(max(dot(n, l), 0.0)*falloff);\n",
     "    }\n",
     "#endif\n",
-    "    finalColor = vec4(albedo.rgb*irradiance, albedo.a);\n",
+    "    vec3 color = albedo.rgb*irradiance;\n",
+    "#if RBL_EMISSIVE == 1\n",
+    "    color += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;\n",
+    "#elif RBL_EMISSIVE == 2\n",
+    "    color += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;\n",
+    "#endif\n",
+    "\n",
+    "#if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)\n",
+    "    finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);\n",
+    "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)\n",
+    "    finalColor = vec4(n*0.5 + 0.5, 1.0);\n",
+    "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)\n",
+    "    finalColor = vec4(vec3(specular), 1.0);\n",
+    "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)\n",
+    "    finalColor = vec4(vec3(occlusion), 1.0);\n",
+    "#elif defined(RBL_LINEAR_OUTPUT)\n",
+    "    finalColor = vec4(color, albedo.a);\n",
+    "#else\n",
+    "    finalColor = vec4(rblLinearToSrgb(color), albedo.a);\n",
+    "#endif\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_lit_vs[] = {
@@ -538,11 +623,17 @@ static const char *const rbl__shader_lit_vs[] = {
     "out vec3 fragNormal;\n",
     "out vec4 fragTangent;\n",
     "\n",
+    "// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment\n",
+    "vec3 rblSrgbToLinear(vec3 c)\n",
+    "{\n",
+    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
+    "}\n",
+    "\n",
     "void main()\n",
     "{\n",
     "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
-    "    fragColor = vertexColor;\n",
+    "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);\n",
     "    fragNormal = mat3(matNormal)*vertexNormal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
     "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
@@ -577,6 +668,12 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "out vec4 fragColor;\n",
     "out vec3 fragNormal;\n",
     "out vec4 fragTangent;\n",
+    "\n",
+    "// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment\n",
+    "vec3 rblSrgbToLinear(vec3 c)\n",
+    "{\n",
+    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
+    "}\n",
     "\n",
     "bool rblNormalizeTo(vec3 v, out vec3 o)\n",
     "{\n",
@@ -693,7 +790,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    }\n",
     "\n",
     "    fragPosition = p;\n",
-    "    fragColor = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
+    "    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
+    "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);\n",
     "    fragNormal = nv;\n",
     "    fragTangent = vec4(tv, w);\n",
     "    gl_Position = mvp*vec4(p, 1.0);\n",
@@ -1135,8 +1233,8 @@ static void rbl__bindMaterial(const Material *material)
         float v[4] = { c.r/255.0f, c.g/255.0f, c.b/255.0f, c.a/255.0f };
         rlSetUniform(sh.locs[SHADER_LOC_COLOR_DIFFUSE], v, SHADER_UNIFORM_VEC4, 1);
     }
-    // Slots 0..2 (albedo, metalness/specular, normal): only maps the shader samples are bound
-    for (int i = MATERIAL_MAP_ALBEDO; i <= MATERIAL_MAP_NORMAL; i++)
+    // Slots 0..5 (albedo .. emission), as raylib's DrawMesh: only maps the shader samples are bound
+    for (int i = MATERIAL_MAP_ALBEDO; i <= MATERIAL_MAP_EMISSION; i++)
     {
         int loc = sh.locs[SHADER_LOC_MAP_DIFFUSE + i];
         unsigned int id = material->maps[i].texture.id;
@@ -1150,7 +1248,7 @@ static void rbl__bindMaterial(const Material *material)
 
 static void rbl__unbindMaterial(void)
 {
-    for (int i = MATERIAL_MAP_NORMAL; i >= MATERIAL_MAP_ALBEDO; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
+    for (int i = MATERIAL_MAP_EMISSION; i >= MATERIAL_MAP_ALBEDO; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
     rlDisableShader();
 }
 
@@ -2478,26 +2576,34 @@ RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
     RblLitShader lit;
     memset(&lit, 0, sizeof(lit));
     int maxLights = (desc.maxLights == 0)? 1 : desc.maxLights;
-    if ((maxLights < 0) || (maxLights > RBL_MAX_LIGHTS))
+    RblMaterialLayout m = desc.material;
+    const char *bad = NULL;
+    if ((maxLights < 0) || (maxLights > RBL_MAX_LIGHTS)) bad = "maxLights outside 0..RBL_MAX_LIGHTS";
+    else if (!rbl__finite(desc.alphaCutoff) || !rbl__finite(desc.emissiveIntensity)) bad = "alphaCutoff or emissiveIntensity not finite";
+    else if ((m.normalEncoding < RBL_NORMAL_NONE) || (m.normalEncoding > RBL_NORMAL_RGB)) bad = "unknown material.normalEncoding";
+    else if ((m.emissive < RBL_EMISSIVE_NONE) || (m.emissive > RBL_EMISSIVE_RGB)) bad = "unknown material.emissive";
+    else if ((m.normalEncoding == RBL_NORMAL_RGB) && m.specular) bad = "an RGB normal map leaves no channel for specular";
+    else if ((desc.debugView < 0) || (desc.debugView > 4)) bad = "debugView outside 0..4";
+    if (bad != NULL)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: maxLights %i outside 0..%i (raise RBL_MAX_LIGHTS)", desc.maxLights, RBL_MAX_LIGHTS);
+        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad);
         return lit;
     }
-    if (!rbl__finite(desc.alphaCutoff))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: alphaCutoff is not finite");
-        return lit;
-    }
-    char defines[128];
-    snprintf(defines, sizeof(defines), "#define RBL_LIGHTS %i\n%s", maxLights, desc.normalMap? "#define RBL_NORMAL_MAP\n" : "");
+    char defines[256];
+    snprintf(defines, sizeof(defines), "#define RBL_LIGHTS %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n%s%s%s",
+             maxLights, m.normalEncoding, m.emissive, m.specular? "#define RBL_SPECULAR\n" : "", m.occlusion? "#define RBL_OCCLUSION\n" : "",
+             desc.linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
+    if (desc.debugView > 0) snprintf(defines + strlen(defines), sizeof(defines) - strlen(defines), "#define RBL_DEBUG_VIEW %i\n", desc.debugView);
     lit.shader = rbl__loadShaderVariant(desc.instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, rbl__shader_lit_fs, defines);
     if (lit.shader.id == 0) return lit;
 
     lit.maxLights = maxLights;
-    lit.normalMap = desc.normalMap;
+    lit.material = m;
     lit.instanced = desc.instanced;
+    // Samplers exist only where the layout uses them (-1 otherwise), so nothing absent is bound
     lit.shader.locs[SHADER_LOC_VECTOR_VIEW] = GetShaderLocation(lit.shader, "viewPos");
-    lit.shader.locs[SHADER_LOC_MAP_NORMAL] = desc.normalMap? GetShaderLocation(lit.shader, "texture2") : -1;
+    lit.shader.locs[SHADER_LOC_MAP_NORMAL] = GetShaderLocation(lit.shader, "texture2");
+    lit.shader.locs[SHADER_LOC_MAP_EMISSION] = GetShaderLocation(lit.shader, "texture5");
     lit.locLightCount = GetShaderLocation(lit.shader, "rblLightCount");
     lit.locLightPosition = GetShaderLocation(lit.shader, "rblLightPosition");
     lit.locLightColor = GetShaderLocation(lit.shader, "rblLightColor");
@@ -2507,6 +2613,8 @@ RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
 
     float cutoff = (desc.alphaCutoff == 0.0f)? 0.5f : desc.alphaCutoff;
     SetShaderValue(lit.shader, lit.locAlphaCutoff, &cutoff, SHADER_UNIFORM_FLOAT);
+    float emissive = (desc.emissiveIntensity == 0.0f)? 1.0f : desc.emissiveIntensity;
+    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblEmissiveIntensity"), &emissive, SHADER_UNIFORM_FLOAT);
     int zero = 0;
     SetShaderValue(lit.shader, lit.locLightCount, &zero, SHADER_UNIFORM_INT);
     return lit;
@@ -2521,6 +2629,9 @@ void RblUnloadLitShader(RblLitShader shader)
 {
     if (RblIsLitShaderValid(shader)) UnloadShader(shader.shader);
 }
+
+// Colours are authored in sRGB like every raylib Color; lighting runs in linear light
+static float rbl__colorToLinear(unsigned char c) { return (float)rbl__srgbToLinear(c/255.0); }
 
 bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color ambient)
 {
@@ -2541,9 +2652,9 @@ bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color
             return false;
         }
         pos[i*3 + 0] = l->position.x; pos[i*3 + 1] = l->position.y; pos[i*3 + 2] = l->position.z;
-        col[i*3 + 0] = l->color.r/255.0f*l->intensity;
-        col[i*3 + 1] = l->color.g/255.0f*l->intensity;
-        col[i*3 + 2] = l->color.b/255.0f*l->intensity;
+        col[i*3 + 0] = rbl__colorToLinear(l->color.r)*l->intensity;
+        col[i*3 + 1] = rbl__colorToLinear(l->color.g)*l->intensity;
+        col[i*3 + 2] = rbl__colorToLinear(l->color.b)*l->intensity;
         invRange[i] = (l->range > 0.0f)? 1.0f/l->range : 0.0f;
         if (!rbl__finite(col[i*3]) || !rbl__finite(col[i*3 + 1]) || !rbl__finite(col[i*3 + 2]) || !rbl__finite(invRange[i]))
         {
@@ -2551,7 +2662,7 @@ bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color
             return false;
         }
     }
-    float amb[3] = { ambient.r/255.0f, ambient.g/255.0f, ambient.b/255.0f };
+    float amb[3] = { rbl__colorToLinear(ambient.r), rbl__colorToLinear(ambient.g), rbl__colorToLinear(ambient.b) };
     SetShaderValue(shader->shader, shader->locAmbient, amb, SHADER_UNIFORM_VEC3);
     SetShaderValue(shader->shader, shader->locLightCount, &count, SHADER_UNIFORM_INT);
     if (count > 0)
@@ -2560,6 +2671,35 @@ bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color
         SetShaderValueV(shader->shader, shader->locLightColor, col, SHADER_UNIFORM_VEC3, count);
         SetShaderValueV(shader->shader, shader->locLightInvRange, invRange, SHADER_UNIFORM_FLOAT, count);
     }
+    return true;
+}
+
+// Upload a packed material's Images into the slots the lit shader reads. Mip chains (if packed with
+// mipmaps) are uploaded as they are, so the renormalised normal levels are the ones sampled.
+bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
+{
+    if ((packed == NULL) || (material == NULL) || (material->maps == NULL) || (packed->albedo.data == NULL))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadPackedTextures: missing packed albedo or material maps");
+        return false;
+    }
+    const Image *images[3] = { &packed->albedo, &packed->material, &packed->emissive };
+    const int slots[3] = { MATERIAL_MAP_ALBEDO, MATERIAL_MAP_NORMAL, MATERIAL_MAP_EMISSION };
+    Texture2D textures[3];
+    memset(textures, 0, sizeof(textures));
+    for (int i = 0; i < 3; i++)
+    {
+        if (images[i]->data == NULL) continue;
+        textures[i] = LoadTextureFromImage(*images[i]);
+        if (textures[i].id == 0)
+        {
+            TraceLog(LOG_WARNING, "RBL: RblLoadPackedTextures: upload failed (no GL context?)");
+            for (int k = 0; k < i; k++) if (textures[k].id != 0) UnloadTexture(textures[k]);
+            return false;
+        }
+        SetTextureFilter(textures[i], (images[i]->mipmaps > 1)? TEXTURE_FILTER_TRILINEAR : TEXTURE_FILTER_BILINEAR);
+    }
+    for (int i = 0; i < 3; i++) if (textures[i].id != 0) material->maps[slots[i]].texture = textures[i];
     return true;
 }
 

@@ -387,7 +387,7 @@ static void ShowcaseInit(void)
     // One lit shader variant for cards and floor: LIGHT_COUNT lights, normal map
     RblLitShaderDesc desc = { 0 };
     desc.maxLights = LIGHT_COUNT;
-    desc.normalMap = true;
+    desc.material.normalEncoding = RBL_NORMAL_RGB;
     showcaseLit = RblLoadLitShader(desc);
     if (!RblIsLitShaderValid(showcaseLit)) TraceLog(LOG_WARNING, "SHOWCASE: lit shader failed to compile");
 

@@ -18,11 +18,17 @@ out vec4 fragColor;
 out vec3 fragNormal;
 out vec4 fragTangent;
 
+// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment
+vec3 rblSrgbToLinear(vec3 c)
+{
+    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+
 void main()
 {
     fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));
     fragTexCoord = vertexTexCoord;
-    fragColor = vertexColor;
+    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);
     fragNormal = mat3(matNormal)*vertexNormal;
     // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.
     fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);

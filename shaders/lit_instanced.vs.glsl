@@ -26,6 +26,12 @@ out vec4 fragColor;
 out vec3 fragNormal;
 out vec4 fragTangent;
 
+// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment
+vec3 rblSrgbToLinear(vec3 c)
+{
+    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+
 bool rblNormalizeTo(vec3 v, out vec3 o)
 {
     float l2 = dot(v, v);
@@ -141,7 +147,8 @@ void main()
     }
 
     fragPosition = p;
-    fragColor = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
+    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
+    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);
     fragNormal = nv;
     fragTangent = vec4(tv, w);
     gl_Position = mvp*vec4(p, 1.0);

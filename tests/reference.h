@@ -79,4 +79,8 @@ static inline Camera3D makeCamera(Vector3 pos, Vector3 target, Vector3 up)
 static inline double v3dist(const float *p, D3 r) { return dLen(dSub(d3(p[0], p[1], p[2]), r)); }
 static inline D3 vecOf(const float *p) { return d3(p[0], p[1], p[2]); }
 
+// Exact sRGB transfer functions (IEC 61966-2-1), for references of the lit output
+static inline double srgbDecode(double c) { return (c <= 0.04045)? c/12.92 : pow((c + 0.055)/1.055, 2.4); }
+static inline double srgbEncode(double l) { l = fmin(fmax(l, 0.0), 1.0); return (l <= 0.0031308)? l*12.92 : 1.055*pow(l, 1.0/2.4) - 0.055; }
+
 #endif

@@ -14,6 +14,7 @@
 #include "reference.h"
 #include "test_render.c"
 #include "test_instanced.c"
+#include "test_material_render.c"
 
 int main(int argc, char **argv)
 {
@@ -29,6 +30,12 @@ int main(int argc, char **argv)
         RT_TEST(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),
         RT_TEST(test_paths_instanced_hard_cases_stay_finite),
         RT_TEST(test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances),
+        RT_TEST(test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214),
+        RT_TEST(test_materials_shader_decodes_every_encoding_like_the_cpu),
+        RT_TEST(test_materials_absent_maps_are_not_declared_or_sampled),
+        RT_TEST(test_materials_occlusion_dims_ambient_only),
+        RT_TEST(test_materials_emission_adds_after_lighting),
+        RT_TEST(test_materials_packed_atlas_renders_like_its_separate_maps),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }

@@ -236,7 +236,7 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = 1;
-    desc.normalMap = true;
+    desc.material.normalEncoding = RBL_NORMAL_RGB;
     RblLitShader plain = RblLoadLitShader(desc);
     desc.instanced = true;
     RblLitShader inst = RblLoadLitShader(desc);

@@ -52,7 +52,7 @@ static Scene sceneLoad(Color albedo, Color normal, bool normalMap)
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = 2;
-    desc.normalMap = normalMap;
+    desc.material.normalEncoding = normalMap? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
     s.lit = RblLoadLitShader(desc);
     s.albedo = solidTexture(albedo);
     s.normal = solidTexture(normal);
@@ -116,7 +116,7 @@ static void test_shaders_every_lit_variant_compiles_and_links(void)
         RblLitShaderDesc desc;
         memset(&desc, 0, sizeof(desc));
         desc.maxLights = lights[li];
-        desc.normalMap = nm;
+        desc.material.normalEncoding = nm? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
         desc.instanced = inst;
         RblLitShader s = RblLoadLitShader(desc);
         RT_CHECK(RblIsLitShaderValid(s), "variant lights=%d normalMap=%d instanced=%d failed", lights[li], nm, inst);
@@ -196,8 +196,9 @@ static double refLambertChannel(int px, int py, Vector3 lightPos, double lightCo
     double ndotl = fmax(dDot(n, dNorm(l)), 0.0);
     double window = 1.0;
     if (range > 0.0) { double x2 = d2/(range*range); window = fmin(fmax(1.0 - x2*x2, 0.0), 1.0); window *= window; }
-    double e = lightColor*intensity*ndotl*window/fmax(d2, 1e-4);
-    return albedo*(ambient + e)*255.0;
+    // Colours are sRGB-authored: decoded to linear light, lit, encoded back for the RGBA8 target
+    double e = srgbDecode(lightColor)*intensity*ndotl*window/fmax(d2, 1e-4);
+    return srgbEncode(srgbDecode(albedo)*(srgbDecode(ambient) + e))*255.0;
 }
 
 static void test_lit_flat_normal_map_matches_analytic_lambert_within_2_of_255(void)

@@ -45,7 +45,7 @@ int main(int argc, char **argv)
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = 2;
-    desc.normalMap = true;
+    desc.material.normalEncoding = RBL_NORMAL_RGB;
     RblLitShader lit = RblLoadLitShader(desc);
     if (!RblIsLitShaderValid(lit)) return 1;
     Image si = signImage((Color){ 40, 110, 190, 255 }), ni = bulgeNormals(64, 96);
