@@ -32,8 +32,9 @@
 *
 *   LIMITATIONS:
 *       - OpenGL 3.3 core (GLSL 330) only for now; GLES2/WebGL variants are not written yet
-*       - Lighting is Lambert diffuse with point lights only (directional/spot, Blinn-Phong/GGX,
-*         packed material maps, the deferred helper and shadows are planned, not implemented)
+*       - Lighting is Lambert diffuse with point lights only: the specular channel of a packed material
+*         is stored and decoded (debug view) but no BRDF uses it yet; directional/spot lights,
+*         Blinn-Phong/GGX, fog, tonemapping, the deferred helper and shadows are planned, not implemented
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself
 *       - Instanced path: facing mode, up, axis and roundness are shared by all instances of a draw
 *         (RblInstancedDesc); billboards needing their own FIXED orientation go through the batch

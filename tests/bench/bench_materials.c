@@ -192,6 +192,81 @@ static double ImageBytes(Image img)
     return bytes;
 }
 
+// ---- GPU: decode cost of each normal encoding, full screen at 1280x720 -----------------------------
+#define DECODE_W 1280
+#define DECODE_H 720
+typedef struct { RenderTexture2D target; Camera3D camera; Material material; RblBillboard quad; } DecodeFrame;
+
+static void DecodeRun(void *ctx, double *out)
+{
+    DecodeFrame *f = (DecodeFrame *)ctx;
+    rtFinish();
+    double t0 = BenchNowNs();
+    BeginTextureMode(f->target);
+    ClearBackground(BLACK);
+    BeginMode3D(f->camera);
+    RblDrawBillboard(f->camera, f->material, f->quad);
+    EndMode3D();
+    EndTextureMode();
+    rtFinish();                     // the GPU work is what is measured here
+    out[0] = BenchNowNs() - t0;
+}
+
+// ms per frame for a quad covering every pixel, per layout; the decode cost is the difference to the
+// albedo-only variant (same frame, same light). Returns false (no rows) without a GL context.
+static bool DecodeCostRows(Image albedo, Image normalMap, double ms[4])
+{
+    if (rtInitContext(DECODE_W, DECODE_H) == NULL) return false;
+    const int encodings[4] = { RBL_NORMAL_NONE, RBL_NORMAL_RGB, RBL_NORMAL_XY, RBL_NORMAL_HEMIOCT };
+    const char *names[4] = { "decode_albedo_only", "decode_rgb8", "decode_xy8", "decode_hemioct8" };
+    DecodeFrame f;
+    memset(&f, 0, sizeof(f));
+    f.target = LoadRenderTexture(DECODE_W, DECODE_H);
+    f.camera.position = (Vector3){ 0.0f, 0.0f, 5.0f };
+    f.camera.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    f.camera.fovy = 45.0f;
+    f.camera.projection = CAMERA_PERSPECTIVE;
+    float h = (float)(2.0*5.0*tan(22.5*PI_D/180.0));
+    f.quad.size = (Vector2){ h*DECODE_W/DECODE_H*1.05f, h*1.05f };      // a little beyond every edge
+    f.quad.origin = (Vector2){ f.quad.size.x*0.5f, f.quad.size.y*0.5f };
+    RblLight light;
+    memset(&light, 0, sizeof(light));
+    light.position = (Vector3){ 1.0f, 1.0f, 2.0f }; light.color = WHITE; light.intensity = 4.0f;
+    for (int e = 0; e < 4; e++)
+    {
+        RblMaterialSource src;
+        memset(&src, 0, sizeof(src));
+        src.albedo = albedo;
+        if (encodings[e] != RBL_NORMAL_NONE) { src.normal = normalMap; src.normalEncoding = encodings[e]; }
+        src.mipmaps = true;
+        RblPackedMaterial packed;
+        if (!RblPackMaterial(&src, &packed)) return false;
+        f.material = LoadMaterialDefault();
+        RblLoadPackedTextures(&packed, &f.material);
+        RblLitShaderDesc desc;
+        memset(&desc, 0, sizeof(desc));
+        desc.material = packed.layout;
+        RblLitShader lit = RblLoadLitShader(desc);
+        RblSetLights(&lit, &light, 1, (Color){ 40, 40, 40, 255 });
+        f.material.shader = lit.shader;
+        BenchTiming timing = { 3, 15, 40, 3e9 };
+        double median = 0.0;
+        BenchMedianOfRuns(DecodeRun, &f, 1, timing, &median);
+        ms[e] = median*1e-6;
+        BenchCsvRow(SUITE, names[e], "ms_per_frame_1280x720", ms[e], "ms");
+        if (e > 0) BenchCsvRow(SUITE, names[e], "decode_ns_per_pixel", (ms[e] - ms[0])*1e6/(DECODE_W*DECODE_H), "ns");
+        RblUnloadLitShader(lit);
+        UnloadTexture(f.material.maps[MATERIAL_MAP_ALBEDO].texture);
+        if (f.material.maps[MATERIAL_MAP_NORMAL].texture.id != 0) UnloadTexture(f.material.maps[MATERIAL_MAP_NORMAL].texture);
+        MemFree(f.material.maps);
+        RblUnloadPackedMaterial(&packed);
+    }
+    UnloadRenderTexture(f.target);
+    RblClose();
+    rtCloseContext();
+    return true;
+}
+
 int main(void)
 {
     double benchStart = BenchNowNs();
@@ -337,6 +412,9 @@ int main(void)
         BenchCsvRow(SUITE, genName[g], "ms_per_mpixel", genMs[g], "ms/MP");
     }
 
+    double decodeMs[4] = { 0 };
+    bool decoded = DecodeCostRows(albedo, normalMap, decodeMs);
+
     // ---- summary -----------------------------------------------------------------------------------
     printf("materials: angular error of encode + decode, degrees (bumpy atlas tilts up to %.0f degrees)\n", maxTilt);
     printf("  %-13s %-17s %8s %8s %8s %9s\n", "set", "encoding", "mean", "p99", "max", "normals");
@@ -355,6 +433,16 @@ int main(void)
         printf("  %-9s %14.1f %14.1f %14.1f %14.1f\n", packEncName[e], packMs[e][0][0], packMs[e][0][1], packMs[e][1][0], packMs[e][1][1]);
     printf("  (rgb: no specular map, RBL_NORMAL_RGB cannot store it)\n");
     for (int g = 0; g < 3; g++) printf("  %-28s %8.1f ms per megapixel\n", genName[g], genMs[g]);
+    if (decoded)
+    {
+        printf("\nmaterials: shader decode cost, full-screen quad at %dx%d, lit by one point light (GPU time incl. glFinish)\n", DECODE_W, DECODE_H);
+        const char *dn[4] = { "albedo only", "+ rgb8 normal map", "+ xy8 packed", "+ hemioct8 packed" };
+        for (int e = 0; e < 4; e++)
+        {
+            if (e == 0) printf("  %-20s %8.2f ms/frame\n", dn[e], decodeMs[e]);
+            else printf("  %-20s %8.2f ms/frame  (%+.2f ns per pixel over albedo only)\n", dn[e], decodeMs[e], (decodeMs[e] - decodeMs[0])*1e6/(DECODE_W*DECODE_H));
+        }
+    }
     printf("bench_materials: done in %.1f s, rows in %s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath());
 
     for (int s = 0; s < 3; s++) free(sets[s].normals);
