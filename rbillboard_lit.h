@@ -279,8 +279,8 @@ typedef struct RblInstanceBuffer {
     int capacity;                   // Instances reserved
     unsigned int vaoId;             // Vertex array (instance attributes only)
     unsigned int vboId;             // Instance buffer
-    unsigned int shaderId;          // Shader the cached locations belong to
-    int locs[10];                   // Instanced uniform locations (looked up once per shader)
+    unsigned int shaderId;          // Shader the cached location belongs to
+    int loc;                        // rblInstancing uniform location (looked up once per shader)
     int skipped;                    // Instances skipped for bad input in the last draw
 } RblInstanceBuffer;
 
@@ -654,15 +654,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags\n",
     "\n",
     "uniform mat4 mvp;\n",
-    "uniform vec3 rblViewEye;\n",
-    "uniform vec3 rblViewRight;\n",
-    "uniform vec3 rblViewUp;\n",
-    "uniform vec3 rblViewBack;\n",
-    "uniform int rblFacing;          // RblFacing\n",
-    "uniform vec3 rblFacingUp;       // CAMERA_PLANE: caller up (zero = camera up); FIXED: up (zero = +Y)\n",
-    "uniform vec3 rblFacingAxis;     // AXIS: locked axis (zero = +Y); FIXED: normal (zero = +Z)\n",
-    "uniform float rblRoundness;\n",
-    "uniform vec2 rblTextureSize;\n",
+    "// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):\n",
+    "//   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
+    "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y)\n",
+    "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z)\n",
+    "uniform vec4 rblInstancing[6];\n",
     "\n",
     "out vec3 fragPosition;\n",
     "out vec2 fragTexCoord;\n",
@@ -704,6 +700,12 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "\n",
     "void main()\n",
     "{\n",
+    "    vec3 rblViewEye = rblInstancing[0].xyz, rblViewRight = rblInstancing[1].xyz;\n",
+    "    vec3 rblViewUp = rblInstancing[2].xyz, rblViewBack = rblInstancing[3].xyz;\n",
+    "    vec3 rblFacingUp = rblInstancing[4].xyz, rblFacingAxis = rblInstancing[5].xyz;\n",
+    "    int rblFacing = int(rblInstancing[0].w + 0.5);\n",
+    "    float rblRoundness = rblInstancing[1].w;\n",
+    "    vec2 rblTextureSize = vec2(rblInstancing[2].w, rblInstancing[3].w);\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    int corner = cornerOf[gl_VertexID % 6];\n",
     "    vec3 position = rblInstancePosition.xyz;\n",
@@ -1234,7 +1236,9 @@ static void rbl__bindMaterial(const Material *material)
         float v[4] = { c.r/255.0f, c.g/255.0f, c.b/255.0f, c.a/255.0f };
         rlSetUniform(sh.locs[SHADER_LOC_COLOR_DIFFUSE], v, SHADER_UNIFORM_VEC4, 1);
     }
-    // Slots 0..5 (albedo .. emission), as raylib's DrawMesh: only maps the shader samples are bound
+    // Slots 0..5 (albedo .. emission), as raylib's DrawMesh: only maps the shader samples are bound.
+    // Sampler uniforms are set on every draw: a cache keyed by shader id would go stale when GL
+    // reuses the id of an unloaded program.
     for (int i = MATERIAL_MAP_ALBEDO; i <= MATERIAL_MAP_EMISSION; i++)
     {
         int loc = sh.locs[SHADER_LOC_MAP_DIFFUSE + i];
@@ -1326,9 +1330,6 @@ void RblClose(void)
 #define RBL__INSTANCE_LOCATION 10
 // Coordinates beyond this could overflow float once the GPU combines them: rejected like NaN
 #define RBL__INSTANCE_MAX_COORD 1e36f
-
-enum { RBL__LOC_EYE = 0, RBL__LOC_RIGHT, RBL__LOC_UP, RBL__LOC_BACK, RBL__LOC_FACING, RBL__LOC_FACING_UP,
-       RBL__LOC_FACING_AXIS, RBL__LOC_ROUNDNESS, RBL__LOC_TEXTURE_SIZE, RBL__LOC_COUNT };
 
 static void rbl__loadInstanceGpu(RblInstanceBuffer *buffer)
 {
@@ -1424,12 +1425,10 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     Shader sh = material.shader;
     if (sh.id != buffer->shaderId)
     {
-        static const char *names[RBL__LOC_COUNT] = { "rblViewEye", "rblViewRight", "rblViewUp", "rblViewBack", "rblFacing",
-                                                     "rblFacingUp", "rblFacingAxis", "rblRoundness", "rblTextureSize" };
-        for (int i = 0; i < RBL__LOC_COUNT; i++) buffer->locs[i] = rlGetLocationUniform(sh.id, names[i]);
+        buffer->loc = rlGetLocationUniform(sh.id, "rblInstancing");
         buffer->shaderId = sh.id;
     }
-    if (buffer->locs[RBL__LOC_RIGHT] == -1)
+    if (buffer->loc == -1)
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: material shader %u is not an instanced lit variant (RblLitShaderDesc.instanced)", sh.id);
         return 0;
@@ -1443,19 +1442,18 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     }
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
 
+    // The per-draw frame in one vec4[6] upload (layout documented in lit_instanced.vs.glsl)
     RblView view = RblGetView(camera);
+    const float frame[24] = {
+        view.eye.x, view.eye.y, view.eye.z, (float)desc.facing,
+        view.right.x, view.right.y, view.right.z, desc.roundness,
+        view.up.x, view.up.y, view.up.z, (float)texW,
+        view.back.x, view.back.y, view.back.z, (float)texH,
+        desc.up.x, desc.up.y, desc.up.z, 0.0f,
+        desc.axis.x, desc.axis.y, desc.axis.z, 0.0f };
     rlDrawRenderBatchActive();
     rbl__bindMaterial(&material);
-    float texSize[2] = { (float)texW, (float)texH };
-    rlSetUniform(buffer->locs[RBL__LOC_EYE], &view.eye, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_RIGHT], &view.right, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_UP], &view.up, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_BACK], &view.back, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_FACING], &desc.facing, SHADER_UNIFORM_INT, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_FACING_UP], &desc.up, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_FACING_AXIS], &desc.axis, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_ROUNDNESS], &desc.roundness, SHADER_UNIFORM_FLOAT, 1);
-    rlSetUniform(buffer->locs[RBL__LOC_TEXTURE_SIZE], texSize, SHADER_UNIFORM_VEC2, 1);
+    rlSetUniform(buffer->loc, frame, SHADER_UNIFORM_VEC4, 6);
 
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, buffer->staging, n*(int)sizeof(RblInstance), 0);

@@ -10,15 +10,11 @@ layout(location = 13) in vec4 rblInstanceTint;      // normalised bytes (all zer
 layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags
 
 uniform mat4 mvp;
-uniform vec3 rblViewEye;
-uniform vec3 rblViewRight;
-uniform vec3 rblViewUp;
-uniform vec3 rblViewBack;
-uniform int rblFacing;          // RblFacing
-uniform vec3 rblFacingUp;       // CAMERA_PLANE: caller up (zero = camera up); FIXED: up (zero = +Y)
-uniform vec3 rblFacingAxis;     // AXIS: locked axis (zero = +Y); FIXED: normal (zero = +Z)
-uniform float rblRoundness;
-uniform vec2 rblTextureSize;
+// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):
+//   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height
+//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y)
+//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z)
+uniform vec4 rblInstancing[6];
 
 out vec3 fragPosition;
 out vec2 fragTexCoord;
@@ -60,6 +56,12 @@ vec3 rblFallbackUp(vec3 d)
 
 void main()
 {
+    vec3 rblViewEye = rblInstancing[0].xyz, rblViewRight = rblInstancing[1].xyz;
+    vec3 rblViewUp = rblInstancing[2].xyz, rblViewBack = rblInstancing[3].xyz;
+    vec3 rblFacingUp = rblInstancing[4].xyz, rblFacingAxis = rblInstancing[5].xyz;
+    int rblFacing = int(rblInstancing[0].w + 0.5);
+    float rblRoundness = rblInstancing[1].w;
+    vec2 rblTextureSize = vec2(rblInstancing[2].w, rblInstancing[3].w);
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     int corner = cornerOf[gl_VertexID % 6];
     vec3 position = rblInstancePosition.xyz;

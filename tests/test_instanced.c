@@ -87,17 +87,12 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
     RenderTexture2D scratch = LoadRenderTexture(4, 4);
     BeginTextureMode(scratch);
     rlEnableShader(prog);
-    float texSize[2] = { (float)texW, (float)texH };
     rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
-    rlSetUniform(rlGetLocationUniform(prog, "rblViewEye"), &view.eye, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblViewRight"), &view.right, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblViewUp"), &view.up, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblViewBack"), &view.back, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblFacing"), &d.facing, SHADER_UNIFORM_INT, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblFacingUp"), &d.up, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblFacingAxis"), &d.axis, SHADER_UNIFORM_VEC3, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblRoundness"), &d.roundness, SHADER_UNIFORM_FLOAT, 1);
-    rlSetUniform(rlGetLocationUniform(prog, "rblTextureSize"), texSize, SHADER_UNIFORM_VEC2, 1);
+    const float frame[24] = {
+        view.eye.x, view.eye.y, view.eye.z, (float)d.facing, view.right.x, view.right.y, view.right.z, d.roundness,
+        view.up.x, view.up.y, view.up.z, (float)texW, view.back.x, view.back.y, view.back.z, (float)texH,
+        d.up.x, d.up.y, d.up.z, 0.0f, d.axis.x, d.axis.y, d.axis.z, 0.0f };
+    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 6);
 
     size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
     GLu tfb = 0;
