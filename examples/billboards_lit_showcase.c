@@ -10,11 +10,16 @@
 *   tangents, so a normal map embosses their symbols under moving coloured point lights.
 *   Everything is generated in code (no asset files):
 *     - the card faces (white rounded cards, red hearts / black spades, corner indices) are
-*       drawn with raylib Image functions into one atlas,
-*     - a height map of the same card (raised symbols, slightly raised frame) is turned into a
-*       tangent-space normal map (OpenGL convention: +X right, +Y up in the image),
-*     - the floor is a GenMeshPlane() Model whose material uses the same lit shader, so cards
-*       and floor are lit by the same lights.
+*       drawn with raylib Image functions into one atlas, each card in its own frame with a
+*       gutter around it,
+*     - a height map of the same cards (raised symbols, slightly raised frame) gives the normal
+*       map (RblGenNormalMapFromHeight) and a subtle cavity occlusion (RblGenOcclusionFromHeight),
+*     - RblPackMaterial packs albedo + normal + occlusion into two textures (albedo and one
+*       RGBA8 material texture: hemi-octahedral normal, occlusion), dilates the gutters around
+*       the card frames and builds the mip chains; RblLoadPackedTextures uploads them and the
+*       card shader variant is compiled for exactly that layout (packed.layout),
+*     - the floor is a GenMeshPlane() Model with an albedo-only variant of the lit shader; both
+*       variants get the same lights, so cards and floor are lit alike.
 *   The cards go through the batched path (RblBeginBatch/RblBatchAdd/RblEndBatch): five cards
 *   stand upright turning around +Y toward the camera (RBL_FACING_AXIS) and one lies flat on
 *   the floor (RBL_FACING_FIXED); all six share one material, so the batch draws them at once.
@@ -40,10 +45,13 @@
 #define CARD_ATLAS_COLUMNS      3
 #define CARD_W                  256         // Card size in the atlas, pixels
 #define CARD_H                  360
+#define CARD_GUTTER             8           // Empty pixels around each card (filled by RblPackMaterial)
 #define CARD_SUPERSAMPLE        2           // Cards are drawn at 2x and scaled down (anti-aliasing)
 #define CARD_EMBOSS_BEVEL       3           // Height map blurs (pixels): a narrow bevel on a wide,
 #define CARD_EMBOSS_PILLOW      10          // pillow-like dome, so the symbols read as embossed
-#define CARD_EMBOSS_STRENGTH    10.0f       // Height map slope to normal map tilt
+#define CARD_EMBOSS_STRENGTH    10.0f       // Surface z = strength*height (texels): heights 0..1 rise 10 texels
+#define CARD_OCCLUSION_RADIUS   12          // Cavity window (texels): about the width of the emboss slopes
+#define CARD_OCCLUSION_STRENGTH 2.0f        // Ambient darkening per unit of depth below the surroundings (~25% at most)
 
 #define LIGHT_COUNT             4
 
@@ -69,14 +77,12 @@ typedef struct LightPath {
 static Camera3D showcaseCamera = { 0 };
 static const Color showcaseBackground = { 18, 20, 28, 255 };
 
-static RblLitShader showcaseLit = { 0 };    // One shader variant: 4 lights, normal map
+static RblLitShader cardLit = { 0 };        // Card variant: 4 lights, the packed layout (normal + occlusion)
+static RblLitShader floorLit = { 0 };       // Floor variant: 4 lights, albedo only
 static RblBatch showcaseBatch = { 0 };
-static Material cardMaterial = { 0 };       // Card atlas (albedo + normal map) and the lit shader
-static Texture2D cardAlbedo = { 0 };
-static Texture2D cardNormal = { 0 };
+static Material cardMaterial = { 0 };       // Packed card atlas (albedo + material texture) and cardLit
 static Model floorModel = { 0 };
 static Texture2D floorAlbedo = { 0 };
-static Texture2D floorNormal = { 0 };       // 1x1 flat normal (128,128,255)
 static RblLight showcaseLights[LIGHT_COUNT] = { 0 };
 
 static const LightPath lightPaths[LIGHT_COUNT] = {
@@ -117,7 +123,7 @@ int main(void)
 
     InitWindow(screenWidth, screenHeight, "raylib [models] example - lit billboards showcase");
 
-    ShowcaseInit();                 // Cards, normal maps, lit shader, floor, camera
+    ShowcaseInit();                 // Card atlas, packed maps, lit shaders, floor, camera
 
     SetTargetFPS(60);               // Set our game to run at 60 frames-per-second
     //--------------------------------------------------------------------------------------
@@ -141,7 +147,7 @@ int main(void)
                 ShowcaseDraw();
             EndMode3D();
 
-            DrawText("Lit billboards with embossed normal maps (wheel: zoom)", 10, 40, 20, RAYWHITE);
+            DrawText("Lit billboards with packed normal + occlusion maps (wheel: zoom)", 10, 40, 20, RAYWHITE);
             DrawFPS(10, 10);
 
         EndDrawing();
@@ -150,7 +156,7 @@ int main(void)
 
     // De-Initialization
     //--------------------------------------------------------------------------------------
-    ShowcaseUnload();               // Unload textures, shader, batch and floor
+    ShowcaseUnload();               // Unload textures, shaders, batch and floor
 
     CloseWindow();                  // Close window and OpenGL context
     //--------------------------------------------------------------------------------------
@@ -267,10 +273,11 @@ static void DrawCard(Image *image, int rank, int ox, int oy, int s, Color bodyCo
     }
 }
 
-// Atlas source rectangle of card `rank`
+// Atlas source rectangle (frame) of card `rank`: cells of CARD_W x CARD_H plus a gutter on every side
 static Rectangle CardSource(int rank)
 {
-    Rectangle source = { (float)((rank%CARD_ATLAS_COLUMNS)*CARD_W), (float)((rank/CARD_ATLAS_COLUMNS)*CARD_H), (float)CARD_W, (float)CARD_H };
+    Rectangle source = { (float)((rank%CARD_ATLAS_COLUMNS)*(CARD_W + 2*CARD_GUTTER) + CARD_GUTTER),
+                         (float)((rank/CARD_ATLAS_COLUMNS)*(CARD_H + 2*CARD_GUTTER) + CARD_GUTTER), (float)CARD_W, (float)CARD_H };
     return source;
 }
 
@@ -303,10 +310,11 @@ static void BlurHeights(float *data, int w, int h, int radius)
     MemFree(line);
 }
 
-// Tangent-space normal map from a height mask (red channel, 0..255 = 0..1): the mask is blurred
-// twice (bevel and pillow) and the mean height is differentiated by central differences.
-// OpenGL convention: +Y is up in the image, and image row 0 is the top, so "up" is row - 1.
-static Image GenNormalMapFromHeight(Image mask, float strength)
+// Emboss height map from a height mask (red channel, 0..255 = 0..1): the mask is blurred twice
+// (a narrow bevel and a wide pillow) and the two are averaged. The result stays in float
+// (PIXELFORMAT_UNCOMPRESSED_R32), which RblGenNormalMapFromHeight and RblGenOcclusionFromHeight
+// read as stored, so the gentle slopes keep no 8-bit steps.
+static Image GenEmbossHeights(Image mask)
 {
     Color *maskColors = LoadImageColors(mask);
     const int w = mask.width, h = mask.height;
@@ -319,28 +327,13 @@ static Image GenNormalMapFromHeight(Image mask, float strength)
     for (int i = 0; i < w*h; i++) heights[i] = 0.5f*(heights[i] + pillow[i]);
     MemFree(pillow);
 
-    Image normal = GenImageColor(w, h, BLANK);
-    Color *out = (Color *)normal.data;
-
-    for (int y = 0; y < h; y++)
-    {
-        int up = (y > 0)? y - 1 : y, down = (y < h - 1)? y + 1 : y;
-        for (int x = 0; x < w; x++)
-        {
-            int left = (x > 0)? x - 1 : x, right = (x < w - 1)? x + 1 : x;
-            float dhdx = (heights[y*w + right] - heights[y*w + left])/(float)(right - left);
-            float dhdy = (heights[up*w + x] - heights[down*w + x])/(float)(down - up);  // along image up
-            float nx = -strength*dhdx, ny = -strength*dhdy, nz = 1.0f;
-            float inv = 1.0f/sqrtf(nx*nx + ny*ny + nz*nz);
-            out[y*w + x].r = (unsigned char)(127.5f + 127.5f*nx*inv);
-            out[y*w + x].g = (unsigned char)(127.5f + 127.5f*ny*inv);
-            out[y*w + x].b = (unsigned char)(127.5f + 127.5f*nz*inv);
-            out[y*w + x].a = 255;
-        }
-    }
-
-    MemFree(heights);
-    return normal;
+    Image emboss = { 0 };
+    emboss.data = heights;                              // MemAlloc'ed: UnloadImage() frees it
+    emboss.width = w;
+    emboss.height = h;
+    emboss.mipmaps = 1;
+    emboss.format = PIXELFORMAT_UNCOMPRESSED_R32;
+    return emboss;
 }
 
 //----------------------------------------------------------------------------------
@@ -357,50 +350,70 @@ static void ShowcaseInit(void)
 
     // Card atlas (albedo and height), drawn at CARD_SUPERSAMPLE x and scaled down
     const int s = CARD_SUPERSAMPLE;
-    const int atlasW = CARD_ATLAS_COLUMNS*CARD_W, atlasH = ((CARD_COUNT + CARD_ATLAS_COLUMNS - 1)/CARD_ATLAS_COLUMNS)*CARD_H;
+    const int atlasW = CARD_ATLAS_COLUMNS*(CARD_W + 2*CARD_GUTTER);
+    const int atlasH = ((CARD_COUNT + CARD_ATLAS_COLUMNS - 1)/CARD_ATLAS_COLUMNS)*(CARD_H + 2*CARD_GUTTER);
     const Color paper = { 250, 248, 240, 255 };
     Color clear = paper;
     clear.a = 0;                                        // Transparent corners keep the paper colour (no dark fringes)
     Image albedo = GenImageColor(atlasW*s, atlasH*s, clear);
-    Image height = GenImageColor(atlasW*s, atlasH*s, BLACK);
+    Image mask = GenImageColor(atlasW*s, atlasH*s, BLACK);
+    Rectangle frames[CARD_COUNT] = { 0 };
     for (int rank = 0; rank < CARD_COUNT; rank++)
     {
-        Rectangle cell = CardSource(rank);
+        Rectangle frame = CardSource(rank);
+        frames[rank] = frame;
         Color ink = ((rank%2) == 0)? (Color){ 44, 44, 56, 255 } : (Color){ 206, 24, 44, 255 };
-        DrawCard(&albedo, rank, (int)cell.x*s, (int)cell.y*s, s, paper, (Color){ 214, 178, 96, 255 }, ink);
-        DrawCard(&height, rank, (int)cell.x*s, (int)cell.y*s, s, (Color){ 40, 40, 40, 255 }, (Color){ 110, 110, 110, 255 }, WHITE);
+        DrawCard(&albedo, rank, (int)frame.x*s, (int)frame.y*s, s, paper, (Color){ 214, 178, 96, 255 }, ink);
+        DrawCard(&mask, rank, (int)frame.x*s, (int)frame.y*s, s, (Color){ 40, 40, 40, 255 }, (Color){ 110, 110, 110, 255 }, WHITE);
     }
     ImageResize(&albedo, atlasW, atlasH);
-    ImageResize(&height, atlasW, atlasH);
-    Image normal = GenNormalMapFromHeight(height, CARD_EMBOSS_STRENGTH);
+    ImageResize(&mask, atlasW, atlasH);
 
-    cardAlbedo = LoadTextureFromImage(albedo);
-    cardNormal = LoadTextureFromImage(normal);
-    GenTextureMipmaps(&cardAlbedo);
-    GenTextureMipmaps(&cardNormal);
-    SetTextureFilter(cardAlbedo, TEXTURE_FILTER_TRILINEAR);
-    SetTextureFilter(cardNormal, TEXTURE_FILTER_TRILINEAR);
-    UnloadImage(albedo);
+    // Maps from the height: normal (OpenGL convention, clamped at the atlas edges) and cavity occlusion
+    Image height = GenEmbossHeights(mask);
+    Image normal = RblGenNormalMapFromHeight(height, CARD_EMBOSS_STRENGTH, false);
+    Image occlusion = RblGenOcclusionFromHeight(height, CARD_OCCLUSION_RADIUS, CARD_OCCLUSION_STRENGTH);
+    UnloadImage(mask);
     UnloadImage(height);
+
+    // Pack: albedo + one material texture (hemi-octahedral normal in RG, occlusion in A), the gutters
+    // around the card frames dilated and mip chains built (normals renormalised per level)
+    RblMaterialSource source = { 0 };
+    source.albedo = albedo;
+    source.normal = normal;
+    source.occlusion = occlusion;
+    source.frames = frames;
+    source.frameCount = CARD_COUNT;
+    source.mipmaps = true;
+    RblPackedMaterial packed = { 0 };
+    if (!RblPackMaterial(&source, &packed)) TraceLog(LOG_WARNING, "SHOWCASE: card maps could not be packed");
+    UnloadImage(albedo);
     UnloadImage(normal);
+    UnloadImage(occlusion);
 
-    // One lit shader variant for cards and floor: LIGHT_COUNT lights, normal map
-    RblLitShaderDesc desc = { 0 };
-    desc.maxLights = LIGHT_COUNT;
-    desc.material.normalEncoding = RBL_NORMAL_RGB;
-    showcaseLit = RblLoadLitShader(desc);
-    if (!RblIsLitShaderValid(showcaseLit)) TraceLog(LOG_WARNING, "SHOWCASE: lit shader failed to compile");
+    // Card shader variant: LIGHT_COUNT lights, sampling exactly the maps the packing produced
+    RblLitShaderDesc cardDesc = { 0 };
+    cardDesc.maxLights = LIGHT_COUNT;
+    cardDesc.material = packed.layout;
+    cardLit = RblLoadLitShader(cardDesc);
+    if (!RblIsLitShaderValid(cardLit)) TraceLog(LOG_WARNING, "SHOWCASE: card lit shader failed to compile");
 
+    // Upload the packed Images (mip chains included) into the card material, then free the CPU copies
     cardMaterial = LoadMaterialDefault();
-    cardMaterial.shader = showcaseLit.shader;
-    cardMaterial.maps[MATERIAL_MAP_ALBEDO].texture = cardAlbedo;
-    cardMaterial.maps[MATERIAL_MAP_NORMAL].texture = cardNormal;
+    cardMaterial.shader = cardLit.shader;
+    if ((packed.albedo.data != NULL) && !RblLoadPackedTextures(&packed, &cardMaterial)) TraceLog(LOG_WARNING, "SHOWCASE: card textures could not be uploaded");
+    RblUnloadPackedMaterial(&packed);
 
     showcaseBatch = RblLoadBatch(16);
 
-    // Floor: a plane with tangents, a grey checker albedo and a flat normal map
+    // Floor: a plane with a grey checker albedo, drawn with an albedo-only variant of the lit shader
+    // (no normal map, so no tangents and no flat normal texture are needed)
+    RblLitShaderDesc floorDesc = { 0 };
+    floorDesc.maxLights = LIGHT_COUNT;                  // material = { 0 }: albedo only
+    floorLit = RblLoadLitShader(floorDesc);
+    if (!RblIsLitShaderValid(floorLit)) TraceLog(LOG_WARNING, "SHOWCASE: floor lit shader failed to compile");
+
     Mesh plane = GenMeshPlane(16.0f, 16.0f, 1, 1);
-    GenMeshTangents(&plane);
     floorModel = LoadModelFromMesh(plane);
 
     Image checker = GenImageChecked(512, 512, 32, 32, (Color){ 150, 150, 156, 255 }, (Color){ 112, 112, 120, 255 });
@@ -409,13 +422,8 @@ static void ShowcaseInit(void)
     SetTextureFilter(floorAlbedo, TEXTURE_FILTER_TRILINEAR);
     UnloadImage(checker);
 
-    Image flat = GenImageColor(1, 1, (Color){ 128, 128, 255, 255 });
-    floorNormal = LoadTextureFromImage(flat);
-    UnloadImage(flat);
-
-    floorModel.materials[0].shader = showcaseLit.shader;
+    floorModel.materials[0].shader = floorLit.shader;
     floorModel.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorAlbedo;
-    floorModel.materials[0].maps[MATERIAL_MAP_NORMAL].texture = floorNormal;
 
     ShowcaseUpdate(0.0f);
 }
@@ -434,12 +442,15 @@ static void ShowcaseUpdate(float time)
         showcaseLights[i].range = 8.0f;
     }
 
-    RblSetLights(&showcaseLit, showcaseLights, LIGHT_COUNT, (Color){ 44, 44, 56, 255 });
+    // The same lights for both shader variants
+    const Color ambient = { 44, 44, 56, 255 };
+    RblSetLights(&cardLit, showcaseLights, LIGHT_COUNT, ambient);
+    RblSetLights(&floorLit, showcaseLights, LIGHT_COUNT, ambient);
 }
 
 static void ShowcaseDraw(void)
 {
-    // Floor (a raylib Model lit by the same shader)
+    // Floor (a raylib Model lit by the same lights)
     DrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
 
     // Cards: one batch, one material, two facing modes
@@ -481,10 +492,18 @@ static void ShowcaseUnload(void)
     RblClose();                                     // Immediate path buffers (unused here, harmless)
 
     UnloadModel(floorModel);                        // Mesh and material maps; not shaders or textures
-    MemFree(cardMaterial.maps);                     // UnloadMaterial() would unload the shared shader
     UnloadTexture(floorAlbedo);
-    UnloadTexture(floorNormal);
-    UnloadTexture(cardAlbedo);
-    UnloadTexture(cardNormal);
-    RblUnloadLitShader(showcaseLit);
+
+    // Card textures uploaded by RblLoadPackedTextures() (albedo, material texture), as UnloadMaterial()
+    // does but without its shader, which RblUnloadLitShader() unloads below
+    const int packedSlots[3] = { MATERIAL_MAP_ALBEDO, MATERIAL_MAP_NORMAL, MATERIAL_MAP_EMISSION };
+    for (int i = 0; i < 3; i++)
+    {
+        Texture2D texture = cardMaterial.maps[packedSlots[i]].texture;
+        if ((texture.id != 0) && (texture.id != rlGetTextureIdDefault())) UnloadTexture(texture);
+    }
+    MemFree(cardMaterial.maps);
+
+    RblUnloadLitShader(cardLit);
+    RblUnloadLitShader(floorLit);
 }
