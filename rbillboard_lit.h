@@ -108,8 +108,13 @@
 *       #define RBILLBOARD_LIT_IMPLEMENTATION
 *           Generates the implementation in the including file (exactly one translation unit).
 *
-*       #define RBL_MAX_LIGHTS 8
-*           Light slots compiled into a lit shader at most (the variant compiles only what it asks for).
+*       #define RBL_MAX_LIGHTS 64
+*           Light slots compiled into a lit shader at most (the variant compiles only what it asks for;
+*           a slot costs 2 vec4 uniforms, 3-4 with spot cones / classic falloff compiled in).
+*
+*       #define RBL_SHADER_CACHE_SIZE 32
+*           Distinct lit shader variants kept for reuse: loading an identical RblLitShaderDesc again
+*           returns the same program (reference counted) instead of compiling it twice.
 *
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch reserves when RblLoadBatch() is given 0.
@@ -174,7 +179,10 @@
 // Defines and Macros
 //----------------------------------------------------------------------------------
 #ifndef RBL_MAX_LIGHTS
-    #define RBL_MAX_LIGHTS 8                    // Light slots a lit shader may compile in
+    #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
+#endif
+#ifndef RBL_SHADER_CACHE_SIZE
+    #define RBL_SHADER_CACHE_SIZE 32            // Lit shader variants reused instead of recompiled
 #endif
 #ifndef RBL_BATCH_DEFAULT_CAPACITY
     #define RBL_BATCH_DEFAULT_CAPACITY 1024     // Billboards reserved by RblLoadBatch(0)
@@ -337,36 +345,118 @@ typedef struct RblNormalErrorStats {
     int count;                      // Normals measured
 } RblNormalErrorStats;
 
-// Point light (linear colour; range 0 = unbounded inverse square)
+// Light types (RblLight.type)
+typedef enum {
+    RBL_LIGHT_POINT = 0,            // Omnidirectional, from position
+    RBL_LIGHT_DIRECTIONAL,          // Parallel rays along direction (sun); no falloff
+    RBL_LIGHT_SPOT                  // Cone from position along direction, smooth inner/outer edge
+} RblLightType;
+
+// Distance falloff of point and spot lights (RblLight.falloff)
+typedef enum {
+    RBL_FALLOFF_WINDOWED = 0,       // I*saturate(1 - (d/range)^4)^2/max(d^2, 1e-4) (UE4, Filament)
+    RBL_FALLOFF_CLASSIC             // I/(constant + linear*d + quadratic*d^2), times the range window when range > 0
+} RblFalloff;
+
+// Light features a lit shader variant compiles in (RblLitShaderDesc.lightFeatures; bit flags)
+typedef enum {
+    RBL_LIGHTS_POINT = 1,           // Point lights (windowed falloff)
+    RBL_LIGHTS_DIRECTIONAL = 2,     // Directional lights
+    RBL_LIGHTS_SPOT = 4,            // Spot cones
+    RBL_LIGHTS_CLASSIC_FALLOFF = 8  // Constant/linear/quadratic attenuation
+} RblLightFeature;
+
+// Reflectance models (RblLitShaderDesc.brdf)
+typedef enum {
+    RBL_BRDF_LAMBERT = 0,           // Diffuse only
+    RBL_BRDF_BLINN_PHONG,           // Lambert + normalised Blinn-Phong: specular intensity (map or value) and shininess
+    RBL_BRDF_GGX                    // Cook-Torrance: GGX, Smith height-correlated visibility, Schlick Fresnel; roughness, metalness
+} RblBrdf;
+
+// Fog modes (RblFog.mode), by distance d to the eye
+typedef enum {
+    RBL_FOG_NONE = 0,
+    RBL_FOG_LINEAR,                 // Visible fraction 1 - (d - start)/(end - start), clamped
+    RBL_FOG_EXP,                    // exp(-density*d)
+    RBL_FOG_EXP2                    // exp(-(density*d)^2)
+} RblFogMode;
+
+// Tone mapping applied after exposure, before the display encoding (RblLitShaderDesc.tonemap)
+typedef enum {
+    RBL_TONEMAP_NONE = 0,           // Clamp
+    RBL_TONEMAP_REINHARD,           // c/(1 + c)
+    RBL_TONEMAP_ACES                // ACES filmic fit (Narkowicz 2015)
+} RblTonemap;
+
+// Light: a plain value; arrays of them are owned by the caller (no hidden global state)
 typedef struct RblLight {
-    Vector3 position;               // World position
-    Color color;                    // Colour (linear, /255)
+    Vector3 position;               // World position (point, spot)
+    Color color;                    // Colour (sRGB like every raylib Color; lit in linear light)
     float intensity;                // Scale of color; >= 0
     float range;                    // Distance where the light fades to zero (0 = no window)
+    int type;                       // RblLightType (0 = point)
+    Vector3 direction;              // Direction the light travels (directional, spot); any non-zero length
+    float innerAngle;               // Spot: half-angle of the full-intensity core, degrees (0..outer)
+    float outerAngle;               // Spot: half-angle where it reaches zero, degrees (0 = 30; at most 90)
+    int falloff;                    // RblFalloff (0 = windowed inverse square)
+    float constant;                 // RBL_FALLOFF_CLASSIC coefficients, >= 0 (all zero = 1, 0, 0: no falloff)
+    float linear;
+    float quadratic;
 } RblLight;
 
-// Lit shader variant request; zero means default
+// Fog; zero means none
+typedef struct RblFog {
+    int mode;                       // RblFogMode (0 = none)
+    Color color;                    // Fog colour (sRGB)
+    float start;                    // Linear: distance where fog begins
+    float end;                      // Linear: distance where it is opaque (> start)
+    float density;                  // Exp, exp2: density per world unit (>= 0)
+} RblFog;
+
+// Lit shader variant request; zero means default. Only what is asked for is compiled in.
 typedef struct RblLitShaderDesc {
     int maxLights;                  // Light slots compiled in (0 = 1, at most RBL_MAX_LIGHTS)
+    int lightFeatures;              // RblLightFeature flags (0 = point lights, windowed falloff); see RblLightFeatures()
     RblMaterialLayout material;     // Maps the material provides (zero = albedo only; see RblPackMaterial)
-    float alphaCutoff;              // Discard fragments below this alpha (0 = 0.5; negative = never)
+    int brdf;                       // RblBrdf (0 = Lambert)
+    float specular;                 // Blinn-Phong specular intensity (0 = 0.5; with a specular map, scales the map: 0 = 1)
+    float shininess;                // Blinn-Phong exponent (0 = 32; below 1 clamps to 1)
+    Color specularColor;            // Blinn-Phong specular colour (sRGB; zero = white)
+    float roughness;                // GGX perceptual roughness without a map, 0..1 (0 = 0.5; below 0.045 clamps, so 1e-6 is a mirror)
+    float metalness;                // GGX metalness 0..1 (0 = dielectric); a specular map holds roughness for GGX
+    Color emissiveColor;            // Constant emission (sRGB x emissiveIntensity; zero = none)
     float emissiveIntensity;        // Scale of the emission (0 = 1)
+    float alphaCutoff;              // Discard fragments below this alpha (0 = 0.5; negative = never)
+    bool hemisphereAmbient;         // Sky/ground ambient by normal (RblSetHemisphereAmbient) instead of a flat colour
+    RblFog fog;                     // Fog (mode 0 = none); change it later with RblSetFog()
+    int tonemap;                    // RblTonemap (0 = none: clamp)
+    float exposure;                 // Radiance scale before the tonemap (0 = 1); change it with RblSetExposure()
+    float gamma;                    // Display encoding pow(c, 1/gamma) (0 = the exact sRGB curve)
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
-    bool linearOutput;              // Write linear light (float targets) instead of encoding to sRGB
+    bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
     int debugView;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
-// Lit shader: a raylib Shader plus its uniform locations (looked up once)
+// Lit shader: a raylib Shader plus its uniform locations (looked up once, when the variant compiles)
 typedef struct RblLitShader {
     Shader shader;                  // Use as Material.shader for billboards and Models
     int maxLights;                  // Light slots compiled in
+    int lightFeatures;              // RblLightFeature flags compiled in
+    int brdf;                       // RblBrdf
+    int fogMode;                    // RblFogMode compiled in
     RblMaterialLayout material;     // Maps the variant samples
     bool instanced;                 // Variant expands RblInstance data
-    int locLightCount;              // Uniform locations
+    int locLightCount;              // Uniform locations (-1 where the variant has no such uniform)
     int locLightPosition;
     int locLightColor;
-    int locLightInvRange;
+    int locLightSpot;
+    int locLightAttenuation;
     int locAmbient;
+    int locAmbientGround;
+    int locAmbientUp;
+    int locFog;
+    int locFogStart;
+    int locExposure;
     int locAlphaCutoff;
 } RblLitShader;
 
@@ -412,7 +502,11 @@ RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *mat
 RBLAPI RblLitShader RblLoadLitShader(RblLitShaderDesc desc);                  // Compile a lit shader variant
 RBLAPI bool RblIsLitShaderValid(RblLitShader shader);                         // Check it compiled (not raylib's fallback)
 RBLAPI void RblUnloadLitShader(RblLitShader shader);                          // Unload a lit shader
-RBLAPI bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color ambient); // Upload lights; false = rejected, nothing changed
+RBLAPI bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color ambient); // Upload lights and flat ambient (sky and ground when hemispheric); false = rejected, nothing changed
+RBLAPI int RblLightFeatures(const RblLight *lights, int count);               // RblLightFeature flags a light set needs (for RblLitShaderDesc.lightFeatures)
+RBLAPI bool RblSetHemisphereAmbient(RblLitShader *shader, Color sky, Color ground, Vector3 up); // Sky/ground ambient (desc.hemisphereAmbient); false = rejected
+RBLAPI bool RblSetFog(RblLitShader *shader, RblFog fog);                     // Change fog parameters (same mode as compiled); false = rejected
+RBLAPI bool RblSetExposure(RblLitShader *shader, float exposure);            // Change exposure (variants with a tonemap or exposure); false = rejected
 
 #if defined(__cplusplus)
 }
@@ -452,47 +546,58 @@ RBLAPI bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
-static const char *const rbl__shader_lit_fs[] = {
-    "// Forward lit fragment shader for billboards and raylib Models.\n",
-    "// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps\n",
-    "// (normal, specular, occlusion) are linear. Lighting: Lambert diffuse from RBL_LIGHTS point lights\n",
-    "// plus an ambient term that the occlusion map attenuates (occlusion is about indirect light only).\n",
-    "// Variant defines, prepended by the loader (only what a material uses is compiled, so absent maps\n",
-    "// are never sampled):\n",
-    "//   RBL_LIGHTS n             light slots compiled in\n",
-    "//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map\n",
-    "//   RBL_SPECULAR             material texture B holds specular intensity (decoded for the BRDF)\n",
-    "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
-    "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
-    "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode to sRGB\n",
-    "//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
+static const char *const rbl__shader_lighting[] = {
+    "// Shared lighting code: lights, falloff, BRDFs, fog and output transform. The loader places it after\n",
+    "// the variant #defines and before the stage that shades (lit.fs.glsl), so every path evaluates the\n",
+    "// same equations. Units: a light of linear colour c and intensity I delivers irradiance\n",
+    "// E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the light, so a white\n",
+    "// Lambert surface lit head-on by E = 1 returns exactly 1 (the scale raylib's lighting examples use).\n",
+    "// Variant defines (only what a material and light set use is compiled):\n",
+    "//   RBL_LIGHTS n              light slots\n",
+    "//   RBL_LIGHT_DIRECTIONAL     directional lights present (rblLightPosition.w = 0)\n",
+    "//   RBL_LIGHT_SPOT            spot cones\n",
+    "//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation\n",
+    "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
+    "//   RBL_AMBIENT_HEMI          hemispheric ambient (sky/ground by normal) instead of a flat colour\n",
+    "//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by distance to the eye)\n",
+    "//   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)\n",
+    "//   RBL_EXPOSURE              multiply by rblExposure before the tonemap\n",
+    "//   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve\n",
     "\n",
-    "in vec3 fragPosition;\n",
-    "in vec2 fragTexCoord;\n",
-    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
-    "in vec3 fragNormal;\n",
-    "in vec4 fragTangent;\n",
+    "#define RBL_PI 3.14159265358979\n",
+    "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
+    "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
+    "#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite\n",
+    "#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf\n",
     "\n",
-    "uniform sampler2D texture0;     // albedo (sRGB)\n",
-    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
-    "#define RBL_MATERIAL_TEXTURE\n",
-    "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
-    "#endif\n",
-    "#if RBL_EMISSIVE > 0\n",
-    "uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)\n",
-    "uniform float rblEmissiveIntensity;\n",
-    "#endif\n",
-    "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
-    "uniform float rblAlphaCutoff;\n",
-    "uniform vec3 rblAmbient;        // linear ambient radiance\n",
     "#if RBL_LIGHTS > 0\n",
     "uniform int rblLightCount;\n",
-    "uniform vec3 rblLightPosition[RBL_LIGHTS];\n",
-    "uniform vec3 rblLightColor[RBL_LIGHTS];     // linear colour x intensity\n",
-    "uniform float rblLightInvRange[RBL_LIGHTS]; // 1/range, 0 = no range window\n",
+    "uniform vec4 rblLightPosition[RBL_LIGHTS];  // xyz position, w 1; directional: xyz unit vector toward the light, w 0\n",
+    "uniform vec4 rblLightColor[RBL_LIGHTS];     // rgb linear colour x intensity, a 1/range (0 = no window)\n",
+    "#ifdef RBL_LIGHT_SPOT\n",
+    "uniform vec4 rblLightSpot[RBL_LIGHTS];      // xyz cone axis * scale, w offset; (0,0,0,1) = no cone\n",
     "#endif\n",
-    "\n",
-    "out vec4 finalColor;\n",
+    "#ifdef RBL_LIGHT_CLASSIC\n",
+    "uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (windowed lights: 0, 0, 1)\n",
+    "#endif\n",
+    "#endif\n",
+    "uniform vec3 rblAmbient;                    // linear; the sky colour when hemispheric\n",
+    "#ifdef RBL_AMBIENT_HEMI\n",
+    "uniform vec3 rblAmbientGround;              // linear\n",
+    "uniform vec3 rblAmbientUp;                  // unit\n",
+    "#endif\n",
+    "#if RBL_BRDF == 1\n",
+    "uniform vec4 rblSpecularColor;              // rgb linear specular colour x intensity, a shininess\n",
+    "#elif RBL_BRDF == 2\n",
+    "uniform vec2 rblRoughMetal;                 // perceptual roughness (when no map), metalness\n",
+    "#endif\n",
+    "#if RBL_FOG > 0\n",
+    "uniform vec4 rblFog;                        // rgb linear colour, a: density (exp/exp2) or 1/(end - start) (linear)\n",
+    "uniform float rblFogStart;                  // linear fog: distance where it begins\n",
+    "#endif\n",
+    "#ifdef RBL_EXPOSURE\n",
+    "uniform float rblExposure;\n",
+    "#endif\n",
     "\n",
     "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
     "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
@@ -512,6 +617,177 @@ static const char *const rbl__shader_lit_fs[] = {
     "    c = clamp(c, 0.0, 1.0);\n",
     "    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));\n",
     "}\n",
+    "\n",
+    "// What a surface point needs for shading, in linear units\n",
+    "struct RblShadingPoint {\n",
+    "    vec3 position;      // world\n",
+    "    vec3 normal;        // unit, world\n",
+    "    vec3 albedo;        // linear base colour\n",
+    "    float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness\n",
+    "    float occlusion;    // ambient occlusion (indirect light only)\n",
+    "};\n",
+    "\n",
+    "// Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0\n",
+    "vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)\n",
+    "{\n",
+    "#if RBL_BRDF == 1\n",
+    "    // Normalised Blinn-Phong: (n + 8)/(8 pi) NdotH^n, pi folded\n",
+    "    vec3 h = rblSafeNormalize(l + v, s.normal);\n",
+    "    float NdotH = max(dot(s.normal, h), 0.0);\n",
+    "    float n = rblSpecularColor.a;\n",
+    "    return s.albedo + rblSpecularColor.rgb*(s.specular*(n + 8.0)/8.0*pow(NdotH, n));\n",
+    "#elif RBL_BRDF == 2\n",
+    "    // Cook-Torrance: GGX D, Smith height-correlated V, Schlick F; diffuse Lambert scaled by (1 - metalness)\n",
+    "    float perceptual = max(s.specular, RBL_MIN_ROUGHNESS);\n",
+    "    float a = perceptual*perceptual;\n",
+    "    float a2 = a*a;\n",
+    "    float metal = rblRoughMetal.y;\n",
+    "    vec3 f0 = mix(vec3(0.04), s.albedo, metal);\n",
+    "    vec3 h = rblSafeNormalize(l + v, s.normal);\n",
+    "    float NdotH = clamp(dot(s.normal, h), 0.0, 1.0);\n",
+    "    vec3 nxh = cross(s.normal, h);                              // 1 - NdotH^2 without cancellation\n",
+    "    float k = a/(dot(nxh, nxh) + NdotH*NdotH*a2);\n",
+    "    float D = k*k*(1.0/RBL_PI);\n",
+    "    float NdotV = max(dot(s.normal, v), RBL_MIN_NDOTV);\n",
+    "    float V = 0.5/(NdotL*sqrt(NdotV*NdotV*(1.0 - a2) + a2) + NdotV*sqrt(NdotL*NdotL*(1.0 - a2) + a2));\n",
+    "    float LdotH = clamp(dot(l, h), 0.0, 1.0);\n",
+    "    float fw = pow(1.0 - LdotH, 5.0);\n",
+    "    vec3 F = f0 + (1.0 - f0)*fw;\n",
+    "    return s.albedo*(1.0 - metal) + (RBL_PI*D*V)*F;\n",
+    "#else\n",
+    "    return s.albedo;\n",
+    "#endif\n",
+    "}\n",
+    "\n",
+    "// Ambient: uniform light from every direction, attenuated by occlusion. GGX adds F0 times it (the\n",
+    "// specular reflectance of a uniform environment, without a split-sum table).\n",
+    "vec3 rblAmbientLight(RblShadingPoint s)\n",
+    "{\n",
+    "#ifdef RBL_AMBIENT_HEMI\n",
+    "    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);\n",
+    "#else\n",
+    "    vec3 ambient = rblAmbient;\n",
+    "#endif\n",
+    "#if RBL_BRDF == 2\n",
+    "    vec3 reflectance = s.albedo*(1.0 - rblRoughMetal.y) + mix(vec3(0.04), s.albedo, rblRoughMetal.y);\n",
+    "#else\n",
+    "    vec3 reflectance = s.albedo;\n",
+    "#endif\n",
+    "    return ambient*s.occlusion*reflectance;\n",
+    "}\n",
+    "\n",
+    "// Sum of the direct lights at a surface point seen from eye\n",
+    "vec3 rblDirectLight(RblShadingPoint s, vec3 eye)\n",
+    "{\n",
+    "    vec3 sum = vec3(0.0);\n",
+    "#if RBL_LIGHTS > 0\n",
+    "    vec3 v = rblSafeNormalize(eye - s.position, s.normal);\n",
+    "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
+    "    {\n",
+    "        if (i >= rblLightCount) break;\n",
+    "        vec4 p = rblLightPosition[i];\n",
+    "#ifdef RBL_LIGHT_DIRECTIONAL\n",
+    "        vec3 toLight = p.xyz - s.position*p.w;\n",
+    "#else\n",
+    "        vec3 toLight = p.xyz - s.position;\n",
+    "#endif\n",
+    "        float d2 = dot(toLight, toLight);\n",
+    "        vec3 l = rblSafeNormalize(toLight, s.normal);  // a light on the surface lights it head-on\n",
+    "        float NdotL = dot(s.normal, l);\n",
+    "        if (NdotL <= 0.0) continue;\n",
+    "        // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)\n",
+    "        float x2 = d2*rblLightColor[i].a*rblLightColor[i].a;\n",
+    "        float window = clamp(1.0 - x2*x2, 0.0, 1.0);\n",
+    "#ifdef RBL_LIGHT_CLASSIC\n",
+    "        vec3 k = rblLightAttenuation[i];\n",
+    "        float attenuation = window*window/max(k.x + k.y*sqrt(d2) + k.z*d2, RBL_MIN_DIST2);\n",
+    "#else\n",
+    "        float attenuation = window*window/max(d2, RBL_MIN_DIST2);\n",
+    "#endif\n",
+    "#ifdef RBL_LIGHT_SPOT\n",
+    "        float t = clamp(dot(-l, rblLightSpot[i].xyz) + rblLightSpot[i].w, 0.0, 1.0);\n",
+    "        attenuation *= t*t*(3.0 - 2.0*t);           // smoothstep from the outer to the inner cone\n",
+    "#endif\n",
+    "        sum += rblLightColor[i].rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);\n",
+    "    }\n",
+    "#endif\n",
+    "    return sum;\n",
+    "}\n",
+    "\n",
+    "// Fog, exposure, tonemap and the display encoding, in that order. linearOut keeps linear light\n",
+    "// (clamped to half-float range) for float targets.\n",
+    "vec3 rblFinish(vec3 color, vec3 position, vec3 eye)\n",
+    "{\n",
+    "#if RBL_FOG > 0\n",
+    "    float d = length(position - eye);\n",
+    "#if RBL_FOG == 1\n",
+    "    float visible = clamp(1.0 - (d - rblFogStart)*rblFog.a, 0.0, 1.0);\n",
+    "#elif RBL_FOG == 2\n",
+    "    float visible = exp(-rblFog.a*d);\n",
+    "#else\n",
+    "    float visible = exp(-(rblFog.a*d)*(rblFog.a*d));\n",
+    "#endif\n",
+    "    color = mix(rblFog.rgb, color, visible);\n",
+    "#endif\n",
+    "    color = clamp(color, 0.0, RBL_HALF_MAX);\n",
+    "#ifdef RBL_EXPOSURE\n",
+    "    color *= rblExposure;\n",
+    "#endif\n",
+    "#if RBL_TONEMAP == 1\n",
+    "    color = color/(1.0 + color);\n",
+    "#elif RBL_TONEMAP == 2\n",
+    "    color = min(color, vec3(RBL_HALF_MAX));\n",
+    "    color = clamp(color*(2.51*color + 0.03)/(color*(2.43*color + 0.59) + 0.14), 0.0, 1.0);\n",
+    "#endif\n",
+    "#if defined(RBL_LINEAR_OUTPUT)\n",
+    "    return min(color, vec3(RBL_HALF_MAX));\n",
+    "#elif defined(RBL_GAMMA)\n",
+    "    return pow(clamp(color, 0.0, 1.0), vec3(1.0/RBL_GAMMA));\n",
+    "#else\n",
+    "    return rblLinearToSrgb(color);\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_lit_fs[] = {
+    "// Forward lit fragment shader for billboards and raylib Models. The loader prepends \"#version 330\",\n",
+    "// the variant #defines and lighting.glsl (lights, BRDFs, fog, tonemap: shared with other passes).\n",
+    "// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps\n",
+    "// (normal, specular/roughness, occlusion) are linear. Occlusion attenuates ambient light only.\n",
+    "// Material defines (absent maps are never declared, so never sampled):\n",
+    "//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map\n",
+    "//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness\n",
+    "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
+    "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
+    "//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)\n",
+    "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
+    "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
+    "//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
+    "\n",
+    "in vec3 fragPosition;\n",
+    "in vec2 fragTexCoord;\n",
+    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
+    "in vec3 fragNormal;\n",
+    "in vec4 fragTangent;\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "flat in vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
+    "#endif\n",
+    "\n",
+    "uniform sampler2D texture0;     // albedo (sRGB)\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
+    "#define RBL_MATERIAL_TEXTURE\n",
+    "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
+    "#endif\n",
+    "#if RBL_EMISSIVE > 0\n",
+    "uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)\n",
+    "uniform float rblEmissiveIntensity;\n",
+    "#endif\n",
+    "#ifdef RBL_EMISSIVE_COLOR\n",
+    "uniform vec3 rblEmissiveColor;\n",
+    "#endif\n",
+    "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
+    "uniform float rblAlphaCutoff;\n",
+    "\n",
+    "out vec4 finalColor;\n",
     "\n",
     "// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU\n",
     "// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)\n",
@@ -557,35 +833,34 @@ static const char *const rbl__shader_lit_fs[] = {
     "    tangentNormal = rblDecodeNormal(material);\n",
     "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);\n",
     "#endif\n",
-    "    float specular = 0.5;\n",
+    "    RblShadingPoint sp;\n",
+    "    sp.position = fragPosition;\n",
+    "    sp.normal = n;\n",
+    "    sp.albedo = albedo.rgb;\n",
+    "    sp.specular = 1.0;\n",
+    "#if RBL_BRDF == 2\n",
+    "    sp.specular = rblRoughMetal.x;\n",
+    "#endif\n",
     "#ifdef RBL_SPECULAR\n",
-    "    specular = material.b;\n",
+    "    sp.specular = material.b;\n",
     "#endif\n",
-    "    float occlusion = 1.0;\n",
+    "    sp.occlusion = 1.0;\n",
     "#ifdef RBL_OCCLUSION\n",
-    "    occlusion = material.a;\n",
+    "    sp.occlusion = material.a;\n",
     "#endif\n",
-    "\n",
-    "    vec3 irradiance = rblAmbient*occlusion;\n",
-    "#if RBL_LIGHTS > 0\n",
-    "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
-    "    {\n",
-    "        if (i >= rblLightCount) break;\n",
-    "        vec3 toLight = rblLightPosition[i] - fragPosition;\n",
-    "        float d2 = dot(toLight, toLight);\n",
-    "        vec3 l = rblSafeNormalize(toLight, n);      // a light on the surface lights it head-on\n",
-    "        // Windowed inverse square (UE4/Filament): I*saturate(1-(d/r)^4)^2/max(d^2, eps).\n",
-    "        float x2 = d2*rblLightInvRange[i]*rblLightInvRange[i];\n",
-    "        float window = clamp(1.0 - x2*x2, 0.0, 1.0);\n",
-    "        float falloff = window*window/max(d2, 1e-4);\n",
-    "        irradiance += rblLightColor[i]*(max(dot(n, l), 0.0)*falloff);\n",
-    "    }\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "    vec3 eye = fragEye;\n",
+    "#else\n",
+    "    vec3 eye = fragPosition + n;     // unused: no view-dependent term compiled\n",
     "#endif\n",
-    "    vec3 color = albedo.rgb*irradiance;\n",
+    "    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye);\n",
     "#if RBL_EMISSIVE == 1\n",
     "    color += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;\n",
     "#elif RBL_EMISSIVE == 2\n",
     "    color += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;\n",
+    "#endif\n",
+    "#ifdef RBL_EMISSIVE_COLOR\n",
+    "    color += rblEmissiveColor;\n",
     "#endif\n",
     "\n",
     "#if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)\n",
@@ -593,13 +868,11 @@ static const char *const rbl__shader_lit_fs[] = {
     "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)\n",
     "    finalColor = vec4(n*0.5 + 0.5, 1.0);\n",
     "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)\n",
-    "    finalColor = vec4(vec3(specular), 1.0);\n",
+    "    finalColor = vec4(vec3(sp.specular), 1.0);\n",
     "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)\n",
-    "    finalColor = vec4(vec3(occlusion), 1.0);\n",
-    "#elif defined(RBL_LINEAR_OUTPUT)\n",
-    "    finalColor = vec4(color, albedo.a);\n",
+    "    finalColor = vec4(vec3(sp.occlusion), 1.0);\n",
     "#else\n",
-    "    finalColor = vec4(rblLinearToSrgb(color), albedo.a);\n",
+    "    finalColor = vec4(rblFinish(color, fragPosition, eye), albedo.a);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -617,6 +890,10 @@ static const char *const rbl__shader_lit_vs[] = {
     "uniform mat4 mvp;\n",
     "uniform mat4 matModel;\n",
     "uniform mat4 matNormal;\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set it: no viewPos glue needed\n",
+    "flat out vec3 fragEye;\n",
+    "#endif\n",
     "\n",
     "out vec3 fragPosition;\n",
     "out vec2 fragTexCoord;\n",
@@ -638,6 +915,9 @@ static const char *const rbl__shader_lit_vs[] = {
     "    fragNormal = mat3(matNormal)*vertexNormal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
     "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "    fragEye = -(transpose(mat3(matView))*matView[3].xyz);     // view = [R|t]: eye = -R^T t\n",
+    "#endif\n",
     "    gl_Position = mvp*vec4(vertexPosition, 1.0);\n",
     "}\n",
     NULL };
@@ -665,6 +945,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "out vec4 fragColor;\n",
     "out vec3 fragNormal;\n",
     "out vec4 fragTangent;\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "flat out vec3 fragEye;\n",
+    "#endif\n",
     "\n",
     "// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment\n",
     "vec3 rblSrgbToLinear(vec3 c)\n",
@@ -797,11 +1080,15 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);\n",
     "    fragNormal = nv;\n",
     "    fragTangent = vec4(tv, w);\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "    fragEye = rblViewEye;\n",
+    "#endif\n",
     "    gl_Position = mvp*vec4(p, 1.0);\n",
     "}\n",
     NULL };
 // Every embedded shader by file name (tests compare these with shaders/*.glsl)
 static const struct { const char *file; const char *const *source; } rbl__shaderFiles[] = {
+    { "lighting.glsl", rbl__shader_lighting },
     { "lit.fs.glsl", rbl__shader_lit_fs },
     { "lit.vs.glsl", rbl__shader_lit_vs },
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
@@ -2549,18 +2836,20 @@ static char *rbl__joinSource(const char *prefix, const char *const *lines)
     return text;
 }
 
-// Compile a variant: "#version 330", the variant's defines, then the embedded source.
-// raylib substitutes its default shader when compilation fails; report that as a failure.
-static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *fs, const char *defines)
+// Compile a variant: "#version 330", the variant's defines, then the embedded sources (the fragment
+// stage may be several files: the shared lighting code, then the pass). raylib substitutes its
+// default shader when compilation fails; report that as a failure.
+static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *fsCommon, const char *const *fs, const char *defines)
 {
-    char prefix[512];
+    char prefix[1024];
     snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
     char *vsFull = rbl__joinSource(prefix, vs);
-    char *fsFull = rbl__joinSource(prefix, fs);
+    char *common = (fsCommon != NULL)? rbl__joinSource(prefix, fsCommon) : NULL;
+    char *fsFull = rbl__joinSource((common != NULL)? common : prefix, fs);
     Shader shader;
     memset(&shader, 0, sizeof(shader));
-    if ((vsFull != NULL) && (fsFull != NULL)) shader = LoadShaderFromMemory(vsFull, fsFull);
-    RBL_FREE(vsFull); RBL_FREE(fsFull);
+    if ((vsFull != NULL) && (fsFull != NULL) && ((fsCommon == NULL) || (common != NULL))) shader = LoadShaderFromMemory(vsFull, fsFull);
+    RBL_FREE(vsFull); RBL_FREE(common); RBL_FREE(fsFull);
     if ((shader.id == 0) || (shader.id == rlGetShaderIdDefault()))
     {
         TraceLog(LOG_WARNING, "RBL: shader variant failed to compile/link (defines: %s)", defines);
@@ -2570,35 +2859,118 @@ static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *f
     return shader;
 }
 
-RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
+// Variant cache: identical (normalised) descs share one program, compiled once, reference counted
+typedef struct rbl__LitCacheEntry {
+    RblLitShaderDesc key;
+    RblLitShader shader;
+    int refs;
+} rbl__LitCacheEntry;
+static rbl__LitCacheEntry rbl__litCache[RBL_SHADER_CACHE_SIZE];
+
+static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
+static float rbl__colorToLinear(unsigned char c);
+
+// Defaults applied field by field into a zeroed struct, so the cache key has no padding garbage
+static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *out)
+{
+    memset(out, 0, sizeof(*out));
+    RblMaterialLayout m = in.material;
+    if ((in.maxLights < 0) || (in.maxLights > RBL_MAX_LIGHTS)) return "maxLights outside 0..RBL_MAX_LIGHTS";
+    if ((in.lightFeatures & ~15) != 0) return "unknown lightFeatures bits";
+    if ((m.normalEncoding < RBL_NORMAL_NONE) || (m.normalEncoding > RBL_NORMAL_RGB)) return "unknown material.normalEncoding";
+    if ((m.emissive < RBL_EMISSIVE_NONE) || (m.emissive > RBL_EMISSIVE_RGB)) return "unknown material.emissive";
+    if ((m.normalEncoding == RBL_NORMAL_RGB) && m.specular) return "an RGB normal map leaves no channel for specular";
+    if ((in.brdf < RBL_BRDF_LAMBERT) || (in.brdf > RBL_BRDF_GGX)) return "unknown brdf";
+    if (!rbl__finiteNonNegative(in.specular) || !rbl__finiteNonNegative(in.shininess)) return "specular or shininess negative or not finite";
+    if (!rbl__finite(in.roughness) || (in.roughness < 0.0f) || (in.roughness > 1.0f)) return "roughness outside 0..1";
+    if (!rbl__finite(in.metalness) || (in.metalness < 0.0f) || (in.metalness > 1.0f)) return "metalness outside 0..1";
+    if (!rbl__finiteNonNegative(in.emissiveIntensity) || !rbl__finite(in.alphaCutoff)) return "emissiveIntensity negative, or alphaCutoff not finite";
+    if ((in.fog.mode < RBL_FOG_NONE) || (in.fog.mode > RBL_FOG_EXP2)) return "unknown fog.mode";
+    if (!rbl__finite(in.fog.start) || !rbl__finite(in.fog.end) || !rbl__finiteNonNegative(in.fog.density)) return "fog start/end not finite or density negative";
+    if ((in.fog.mode == RBL_FOG_LINEAR) && !(in.fog.end > in.fog.start)) return "linear fog needs end > start";
+    if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
+    if (!rbl__finiteNonNegative(in.exposure) || !rbl__finiteNonNegative(in.gamma)) return "exposure or gamma negative or not finite";
+    if ((in.debugView < 0) || (in.debugView > 4)) return "debugView outside 0..4";
+
+    out->maxLights = (in.maxLights == 0)? 1 : in.maxLights;
+    out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHTS_POINT : in.lightFeatures;
+    out->material.normalEncoding = m.normalEncoding;
+    out->material.emissive = m.emissive;
+    out->material.occlusion = m.occlusion;
+    // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
+    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugView == 3));
+    out->brdf = in.brdf;
+    if (in.brdf == RBL_BRDF_BLINN_PHONG)
+    {
+        out->specular = (in.specular != 0.0f)? in.specular : (out->material.specular? 1.0f : 0.5f);
+        out->shininess = (in.shininess == 0.0f)? 32.0f : ((in.shininess < 1.0f)? 1.0f : in.shininess);
+        bool zero = (in.specularColor.r == 0) && (in.specularColor.g == 0) && (in.specularColor.b == 0) && (in.specularColor.a == 0);
+        out->specularColor = zero? WHITE : in.specularColor;
+    }
+    if (in.brdf == RBL_BRDF_GGX)
+    {
+        out->roughness = (in.roughness == 0.0f)? 0.5f : in.roughness;
+        out->metalness = in.metalness;
+    }
+    out->emissiveColor = in.emissiveColor;
+    out->emissiveColor.a = 0;                       // only rgb matters
+    out->emissiveIntensity = (in.emissiveIntensity == 0.0f)? 1.0f : in.emissiveIntensity;
+    out->alphaCutoff = (in.alphaCutoff == 0.0f)? 0.5f : in.alphaCutoff;
+    out->hemisphereAmbient = in.hemisphereAmbient;
+    if (in.fog.mode != RBL_FOG_NONE) out->fog = in.fog;
+    out->tonemap = in.tonemap;
+    out->exposure = (in.exposure == 0.0f)? 1.0f : in.exposure;
+    out->gamma = in.gamma;
+    out->instanced = in.instanced;
+    out->linearOutput = in.linearOutput;
+    out->debugView = in.debugView;
+    return NULL;
+}
+
+// Variant defines: one line per compiled feature
+static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
+{
+    const RblMaterialLayout *m = &d->material;
+    bool emissiveColor = (d->emissiveColor.r | d->emissiveColor.g | d->emissiveColor.b) != 0;
+    bool exposure = (d->tonemap != RBL_TONEMAP_NONE) || (d->exposure != 1.0f);
+    bool view = (d->brdf != RBL_BRDF_LAMBERT) || (d->fog.mode != RBL_FOG_NONE);
+    int n = snprintf(out, size, "#define RBL_LIGHTS %i\n#define RBL_BRDF %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n"
+                     "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n%s%s%s%s%s%s%s%s%s%s",
+                     d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog.mode, d->tonemap,
+                     (d->lightFeatures & RBL_LIGHTS_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
+                     (d->lightFeatures & RBL_LIGHTS_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
+                     (d->lightFeatures & RBL_LIGHTS_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
+                     m->specular? "#define RBL_SPECULAR\n" : "", m->occlusion? "#define RBL_OCCLUSION\n" : "",
+                     emissiveColor? "#define RBL_EMISSIVE_COLOR\n" : "", d->hemisphereAmbient? "#define RBL_AMBIENT_HEMI\n" : "",
+                     exposure? "#define RBL_EXPOSURE\n" : "", view? "#define RBL_VIEW_VECTOR\n" : "",
+                     d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
+    if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
+    if ((n > 0) && ((size_t)n < size) && (d->debugView > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_VIEW %i\n", d->debugView);
+}
+
+static void rbl__setFogUniforms(const RblLitShader *lit, RblFog fog)
+{
+    float f[4] = { rbl__colorToLinear(fog.color.r), rbl__colorToLinear(fog.color.g), rbl__colorToLinear(fog.color.b),
+                   (fog.mode == RBL_FOG_LINEAR)? 1.0f/(fog.end - fog.start) : fog.density };
+    SetShaderValue(lit->shader, lit->locFog, f, SHADER_UNIFORM_VEC4);
+    SetShaderValue(lit->shader, lit->locFogStart, &fog.start, SHADER_UNIFORM_FLOAT);
+}
+
+static RblLitShader rbl__compileLit(const RblLitShaderDesc *d)
 {
     RblLitShader lit;
     memset(&lit, 0, sizeof(lit));
-    int maxLights = (desc.maxLights == 0)? 1 : desc.maxLights;
-    RblMaterialLayout m = desc.material;
-    const char *bad = NULL;
-    if ((maxLights < 0) || (maxLights > RBL_MAX_LIGHTS)) bad = "maxLights outside 0..RBL_MAX_LIGHTS";
-    else if (!rbl__finite(desc.alphaCutoff) || !rbl__finite(desc.emissiveIntensity)) bad = "alphaCutoff or emissiveIntensity not finite";
-    else if ((m.normalEncoding < RBL_NORMAL_NONE) || (m.normalEncoding > RBL_NORMAL_RGB)) bad = "unknown material.normalEncoding";
-    else if ((m.emissive < RBL_EMISSIVE_NONE) || (m.emissive > RBL_EMISSIVE_RGB)) bad = "unknown material.emissive";
-    else if ((m.normalEncoding == RBL_NORMAL_RGB) && m.specular) bad = "an RGB normal map leaves no channel for specular";
-    else if ((desc.debugView < 0) || (desc.debugView > 4)) bad = "debugView outside 0..4";
-    if (bad != NULL)
-    {
-        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad);
-        return lit;
-    }
-    char defines[256];
-    snprintf(defines, sizeof(defines), "#define RBL_LIGHTS %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n%s%s%s",
-             maxLights, m.normalEncoding, m.emissive, m.specular? "#define RBL_SPECULAR\n" : "", m.occlusion? "#define RBL_OCCLUSION\n" : "",
-             desc.linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
-    if (desc.debugView > 0) snprintf(defines + strlen(defines), sizeof(defines) - strlen(defines), "#define RBL_DEBUG_VIEW %i\n", desc.debugView);
-    lit.shader = rbl__loadShaderVariant(desc.instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, rbl__shader_lit_fs, defines);
+    char defines[768];
+    rbl__litDefines(d, defines, sizeof(defines));
+    lit.shader = rbl__loadShaderVariant(d->instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, rbl__shader_lighting, rbl__shader_lit_fs, defines);
     if (lit.shader.id == 0) return lit;
 
-    lit.maxLights = maxLights;
-    lit.material = m;
-    lit.instanced = desc.instanced;
+    lit.maxLights = d->maxLights;
+    lit.lightFeatures = d->lightFeatures;
+    lit.brdf = d->brdf;
+    lit.fogMode = d->fog.mode;
+    lit.material = d->material;
+    lit.instanced = d->instanced;
     // Samplers exist only where the layout uses them (-1 otherwise), so nothing absent is bound
     lit.shader.locs[SHADER_LOC_VECTOR_VIEW] = GetShaderLocation(lit.shader, "viewPos");
     lit.shader.locs[SHADER_LOC_MAP_NORMAL] = GetShaderLocation(lit.shader, "texture2");
@@ -2606,16 +2978,64 @@ RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
     lit.locLightCount = GetShaderLocation(lit.shader, "rblLightCount");
     lit.locLightPosition = GetShaderLocation(lit.shader, "rblLightPosition");
     lit.locLightColor = GetShaderLocation(lit.shader, "rblLightColor");
-    lit.locLightInvRange = GetShaderLocation(lit.shader, "rblLightInvRange");
+    lit.locLightSpot = GetShaderLocation(lit.shader, "rblLightSpot");
+    lit.locLightAttenuation = GetShaderLocation(lit.shader, "rblLightAttenuation");
     lit.locAmbient = GetShaderLocation(lit.shader, "rblAmbient");
+    lit.locAmbientGround = GetShaderLocation(lit.shader, "rblAmbientGround");
+    lit.locAmbientUp = GetShaderLocation(lit.shader, "rblAmbientUp");
+    lit.locFog = GetShaderLocation(lit.shader, "rblFog");
+    lit.locFogStart = GetShaderLocation(lit.shader, "rblFogStart");
+    lit.locExposure = GetShaderLocation(lit.shader, "rblExposure");
     lit.locAlphaCutoff = GetShaderLocation(lit.shader, "rblAlphaCutoff");
 
-    float cutoff = (desc.alphaCutoff == 0.0f)? 0.5f : desc.alphaCutoff;
-    SetShaderValue(lit.shader, lit.locAlphaCutoff, &cutoff, SHADER_UNIFORM_FLOAT);
-    float emissive = (desc.emissiveIntensity == 0.0f)? 1.0f : desc.emissiveIntensity;
-    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblEmissiveIntensity"), &emissive, SHADER_UNIFORM_FLOAT);
+    // Everything the desc fixes is uploaded once here; lights, ambient, fog and exposure can change later
+    SetShaderValue(lit.shader, lit.locAlphaCutoff, &d->alphaCutoff, SHADER_UNIFORM_FLOAT);
+    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblEmissiveIntensity"), &d->emissiveIntensity, SHADER_UNIFORM_FLOAT);
+    float emissive[3] = { rbl__colorToLinear(d->emissiveColor.r)*d->emissiveIntensity, rbl__colorToLinear(d->emissiveColor.g)*d->emissiveIntensity,
+                          rbl__colorToLinear(d->emissiveColor.b)*d->emissiveIntensity };
+    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblEmissiveColor"), emissive, SHADER_UNIFORM_VEC3);
+    float specular[4] = { rbl__colorToLinear(d->specularColor.r)*d->specular, rbl__colorToLinear(d->specularColor.g)*d->specular,
+                          rbl__colorToLinear(d->specularColor.b)*d->specular, d->shininess };
+    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblSpecularColor"), specular, SHADER_UNIFORM_VEC4);
+    float roughMetal[2] = { d->roughness, d->metalness };
+    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblRoughMetal"), roughMetal, SHADER_UNIFORM_VEC2);
+    if (lit.locFog != -1) rbl__setFogUniforms(&lit, d->fog);
+    SetShaderValue(lit.shader, lit.locExposure, &d->exposure, SHADER_UNIFORM_FLOAT);
+    float up[3] = { 0.0f, 1.0f, 0.0f };
+    SetShaderValue(lit.shader, lit.locAmbientUp, up, SHADER_UNIFORM_VEC3);
     int zero = 0;
     SetShaderValue(lit.shader, lit.locLightCount, &zero, SHADER_UNIFORM_INT);
+    return lit;
+}
+
+RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
+{
+    RblLitShader lit;
+    memset(&lit, 0, sizeof(lit));
+    RblLitShaderDesc key;
+    const char *bad = rbl__normaliseLitDesc(desc, &key);
+    if (bad != NULL)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad);
+        return lit;
+    }
+    int freeSlot = -1;
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    {
+        if (rbl__litCache[i].refs == 0) { if (freeSlot < 0) freeSlot = i; continue; }
+        if (memcmp(&rbl__litCache[i].key, &key, sizeof(key)) == 0)
+        {
+            rbl__litCache[i].refs++;
+            return rbl__litCache[i].shader;
+        }
+    }
+    lit = rbl__compileLit(&key);
+    if ((lit.shader.id != 0) && (freeSlot >= 0))
+    {
+        rbl__litCache[freeSlot].key = key;
+        rbl__litCache[freeSlot].shader = lit;
+        rbl__litCache[freeSlot].refs = 1;
+    }
     return lit;
 }
 
@@ -2626,11 +3046,79 @@ bool RblIsLitShaderValid(RblLitShader shader)
 
 void RblUnloadLitShader(RblLitShader shader)
 {
-    if (RblIsLitShaderValid(shader)) UnloadShader(shader.shader);
+    if (!RblIsLitShaderValid(shader)) return;
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    {
+        if ((rbl__litCache[i].refs > 0) && (rbl__litCache[i].shader.shader.id == shader.shader.id))
+        {
+            if (--rbl__litCache[i].refs > 0) return;        // still used by another holder of the same variant
+            memset(&rbl__litCache[i], 0, sizeof(rbl__litCache[i]));
+            break;
+        }
+    }
+    UnloadShader(shader.shader);
 }
 
 // Colours are authored in sRGB like every raylib Color; lighting runs in linear light
 static float rbl__colorToLinear(unsigned char c) { return (float)rbl__srgbToLinear(c/255.0); }
+
+static bool rbl__lightFeatureOf(const RblLight *l, int *features)
+{
+    if ((l->type < RBL_LIGHT_POINT) || (l->type > RBL_LIGHT_SPOT) || (l->falloff < RBL_FALLOFF_WINDOWED) || (l->falloff > RBL_FALLOFF_CLASSIC)) return false;
+    *features |= (l->type == RBL_LIGHT_POINT)? RBL_LIGHTS_POINT : ((l->type == RBL_LIGHT_SPOT)? RBL_LIGHTS_SPOT : RBL_LIGHTS_DIRECTIONAL);
+    if ((l->type != RBL_LIGHT_DIRECTIONAL) && (l->falloff == RBL_FALLOFF_CLASSIC)) *features |= RBL_LIGHTS_CLASSIC_FALLOFF;
+    return true;
+}
+
+int RblLightFeatures(const RblLight *lights, int count)
+{
+    int features = 0;
+    for (int i = 0; (lights != NULL) && (i < count); i++) rbl__lightFeatureOf(&lights[i], &features);
+    return features;
+}
+
+// One light's uniform values (see lighting.glsl); NULL when it is rejected, with the reason
+static const char *rbl__packLight(const RblLight *l, int variantFeatures, float p[4], float c[4], float spot[4], float k[3])
+{
+    int features = 0;
+    if (!rbl__lightFeatureOf(l, &features)) return "unknown type or falloff";
+    if ((features & ~variantFeatures & ~RBL_LIGHTS_POINT) != 0) return "type or falloff not compiled into this shader (RblLitShaderDesc.lightFeatures)";
+    if (!rbl__finite3(l->position) || !rbl__finite3(l->direction)) return "NaN/Inf position or direction";
+    if (!rbl__finiteNonNegative(l->intensity) || !rbl__finiteNonNegative(l->range)) return "negative or non-finite intensity or range";
+    bool directed = (l->type != RBL_LIGHT_POINT);
+    float dl = sqrtf(l->direction.x*l->direction.x + l->direction.y*l->direction.y + l->direction.z*l->direction.z);
+    if (directed && !(dl > 1e-12f)) return "zero direction";
+    float outer = (l->outerAngle == 0.0f)? 30.0f : l->outerAngle;
+    if ((l->type == RBL_LIGHT_SPOT) && (!rbl__finite(l->innerAngle) || !rbl__finite(outer) || (l->innerAngle < 0.0f) || (l->innerAngle > outer) || (outer > 90.0f)))
+        return "spot angles must satisfy 0 <= inner <= outer <= 90 degrees";
+    if (!rbl__finiteNonNegative(l->constant) || !rbl__finiteNonNegative(l->linear) || !rbl__finiteNonNegative(l->quadratic)) return "negative or non-finite attenuation coefficients";
+    Vector3 d = l->direction;
+    float invDl = directed? 1.0f/dl : 0.0f;
+    d.x *= invDl; d.y *= invDl; d.z *= invDl;
+    if (l->type == RBL_LIGHT_DIRECTIONAL) { p[0] = -d.x; p[1] = -d.y; p[2] = -d.z; p[3] = 0.0f; }
+    else { p[0] = l->position.x; p[1] = l->position.y; p[2] = l->position.z; p[3] = 1.0f; }
+    c[0] = rbl__colorToLinear(l->color.r)*l->intensity;
+    c[1] = rbl__colorToLinear(l->color.g)*l->intensity;
+    c[2] = rbl__colorToLinear(l->color.b)*l->intensity;
+    c[3] = ((l->type != RBL_LIGHT_DIRECTIONAL) && (l->range > 0.0f))? 1.0f/l->range : 0.0f;
+    if (!rbl__finite(c[0]) || !rbl__finite(c[1]) || !rbl__finite(c[2]) || !rbl__finite(c[3])) return "intensity or 1/range overflows float";
+    // Cone: t = saturate(cos(angle to axis)*scale + offset), 0 at the outer and 1 at the inner angle
+    spot[0] = 0.0f; spot[1] = 0.0f; spot[2] = 0.0f; spot[3] = 1.0f;
+    if (l->type == RBL_LIGHT_SPOT)
+    {
+        double cosInner = cos(l->innerAngle*PI/180.0), cosOuter = cos(outer*PI/180.0);
+        double scale = 1.0/fmax(cosInner - cosOuter, 1e-4);
+        spot[0] = (float)(d.x*scale); spot[1] = (float)(d.y*scale); spot[2] = (float)(d.z*scale); spot[3] = (float)(-cosOuter*scale);
+    }
+    k[0] = 0.0f; k[1] = 0.0f; k[2] = 1.0f;
+    if ((l->type != RBL_LIGHT_DIRECTIONAL) && (l->falloff == RBL_FALLOFF_CLASSIC))
+    {
+        bool none = (l->constant == 0.0f) && (l->linear == 0.0f) && (l->quadratic == 0.0f);
+        k[0] = none? 1.0f : l->constant; k[1] = none? 0.0f : l->linear; k[2] = none? 0.0f : l->quadratic;
+    }
+    else if (l->type == RBL_LIGHT_DIRECTIONAL) { k[0] = 1.0f; k[2] = 0.0f; }
+    return NULL;
+}
 
 bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color ambient)
 {
@@ -2640,36 +3128,72 @@ bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color
         TraceLog(LOG_WARNING, "RBL: RblSetLights: %i lights for a shader compiled with %i slots", count, shader->maxLights);
         return false;
     }
-    float pos[RBL_MAX_LIGHTS*3], col[RBL_MAX_LIGHTS*3], invRange[RBL_MAX_LIGHTS];
+    float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
     for (int i = 0; i < count; i++)
     {
-        const RblLight *l = &lights[i];
-        if (!rbl__finite3(l->position) || !rbl__finite(l->intensity) || !rbl__finite(l->range) ||
-            (l->intensity < 0.0f) || (l->range < 0.0f))
+        const char *bad = rbl__packLight(&lights[i], shader->lightFeatures, &pos[i*4], &col[i*4], &spot[i*4], &att[i*3]);
+        if (bad != NULL)
         {
-            TraceLog(LOG_WARNING, "RBL: RblSetLights: light %i rejected (NaN/Inf position, or negative/non-finite intensity or range)", i);
-            return false;
-        }
-        pos[i*3 + 0] = l->position.x; pos[i*3 + 1] = l->position.y; pos[i*3 + 2] = l->position.z;
-        col[i*3 + 0] = rbl__colorToLinear(l->color.r)*l->intensity;
-        col[i*3 + 1] = rbl__colorToLinear(l->color.g)*l->intensity;
-        col[i*3 + 2] = rbl__colorToLinear(l->color.b)*l->intensity;
-        invRange[i] = (l->range > 0.0f)? 1.0f/l->range : 0.0f;
-        if (!rbl__finite(col[i*3]) || !rbl__finite(col[i*3 + 1]) || !rbl__finite(col[i*3 + 2]) || !rbl__finite(invRange[i]))
-        {
-            TraceLog(LOG_WARNING, "RBL: RblSetLights: light %i overflows float (intensity %g, range %g)", i, l->intensity, l->range);
+            TraceLog(LOG_WARNING, "RBL: RblSetLights: light %i rejected: %s", i, bad);
             return false;
         }
     }
     float amb[3] = { rbl__colorToLinear(ambient.r), rbl__colorToLinear(ambient.g), rbl__colorToLinear(ambient.b) };
     SetShaderValue(shader->shader, shader->locAmbient, amb, SHADER_UNIFORM_VEC3);
+    SetShaderValue(shader->shader, shader->locAmbientGround, amb, SHADER_UNIFORM_VEC3);
     SetShaderValue(shader->shader, shader->locLightCount, &count, SHADER_UNIFORM_INT);
     if (count > 0)
     {
-        SetShaderValueV(shader->shader, shader->locLightPosition, pos, SHADER_UNIFORM_VEC3, count);
-        SetShaderValueV(shader->shader, shader->locLightColor, col, SHADER_UNIFORM_VEC3, count);
-        SetShaderValueV(shader->shader, shader->locLightInvRange, invRange, SHADER_UNIFORM_FLOAT, count);
+        SetShaderValueV(shader->shader, shader->locLightPosition, pos, SHADER_UNIFORM_VEC4, count);
+        SetShaderValueV(shader->shader, shader->locLightColor, col, SHADER_UNIFORM_VEC4, count);
+        if (shader->locLightSpot != -1) SetShaderValueV(shader->shader, shader->locLightSpot, spot, SHADER_UNIFORM_VEC4, count);
+        if (shader->locLightAttenuation != -1) SetShaderValueV(shader->shader, shader->locLightAttenuation, att, SHADER_UNIFORM_VEC3, count);
     }
+    return true;
+}
+
+bool RblSetHemisphereAmbient(RblLitShader *shader, Color sky, Color ground, Vector3 up)
+{
+    if ((shader == NULL) || !RblIsLitShaderValid(*shader) || (shader->locAmbientUp == -1))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetHemisphereAmbient: shader invalid or not compiled with hemisphereAmbient");
+        return false;
+    }
+    float l = sqrtf(up.x*up.x + up.y*up.y + up.z*up.z);
+    if (!rbl__finite3(up) || !(l > 1e-12f) || !rbl__finite(l)) { TraceLog(LOG_WARNING, "RBL: RblSetHemisphereAmbient: up must be finite and non-zero"); return false; }
+    float s[3] = { rbl__colorToLinear(sky.r), rbl__colorToLinear(sky.g), rbl__colorToLinear(sky.b) };
+    float g[3] = { rbl__colorToLinear(ground.r), rbl__colorToLinear(ground.g), rbl__colorToLinear(ground.b) };
+    float u[3] = { up.x/l, up.y/l, up.z/l };
+    SetShaderValue(shader->shader, shader->locAmbient, s, SHADER_UNIFORM_VEC3);
+    SetShaderValue(shader->shader, shader->locAmbientGround, g, SHADER_UNIFORM_VEC3);
+    SetShaderValue(shader->shader, shader->locAmbientUp, u, SHADER_UNIFORM_VEC3);
+    return true;
+}
+
+bool RblSetFog(RblLitShader *shader, RblFog fog)
+{
+    if ((shader == NULL) || !RblIsLitShaderValid(*shader) || (shader->fogMode == RBL_FOG_NONE) || (fog.mode != shader->fogMode))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetFog: shader invalid or compiled with another fog mode");
+        return false;
+    }
+    if (!rbl__finite(fog.start) || !rbl__finite(fog.end) || !rbl__finiteNonNegative(fog.density) || ((fog.mode == RBL_FOG_LINEAR) && !(fog.end > fog.start)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetFog: start/end not finite (linear needs end > start) or density negative");
+        return false;
+    }
+    rbl__setFogUniforms(shader, fog);
+    return true;
+}
+
+bool RblSetExposure(RblLitShader *shader, float exposure)
+{
+    if ((shader == NULL) || !RblIsLitShaderValid(*shader) || (shader->locExposure == -1) || !rbl__finiteNonNegative(exposure))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetExposure: shader invalid or without exposure (desc.tonemap/exposure), or exposure negative/not finite");
+        return false;
+    }
+    SetShaderValue(shader->shader, shader->locExposure, &exposure, SHADER_UNIFORM_FLOAT);
     return true;
 }
 

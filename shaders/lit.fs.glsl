@@ -1,15 +1,15 @@
-// Forward lit fragment shader for billboards and raylib Models.
+// Forward lit fragment shader for billboards and raylib Models. The loader prepends "#version 330",
+// the variant #defines and lighting.glsl (lights, BRDFs, fog, tonemap: shared with other passes).
 // Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps
-// (normal, specular, occlusion) are linear. Lighting: Lambert diffuse from RBL_LIGHTS point lights
-// plus an ambient term that the occlusion map attenuates (occlusion is about indirect light only).
-// Variant defines, prepended by the loader (only what a material uses is compiled, so absent maps
-// are never sampled):
-//   RBL_LIGHTS n             light slots compiled in
+// (normal, specular/roughness, occlusion) are linear. Occlusion attenuates ambient light only.
+// Material defines (absent maps are never declared, so never sampled):
 //   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map
-//   RBL_SPECULAR             material texture B holds specular intensity (decoded for the BRDF)
+//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness
 //   RBL_OCCLUSION            material texture A holds ambient occlusion
 //   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)
-//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode to sRGB
+//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)
+//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
+//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
 //   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 
 in vec3 fragPosition;
@@ -17,6 +17,9 @@ in vec2 fragTexCoord;
 in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)
 in vec3 fragNormal;
 in vec4 fragTangent;
+#ifdef RBL_VIEW_VECTOR
+flat in vec3 fragEye;           // camera position (from matView in the vertex stage)
+#endif
 
 uniform sampler2D texture0;     // albedo (sRGB)
 #if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)
@@ -27,36 +30,13 @@ uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): R
 uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)
 uniform float rblEmissiveIntensity;
 #endif
+#ifdef RBL_EMISSIVE_COLOR
+uniform vec3 rblEmissiveColor;
+#endif
 uniform vec4 colDiffuse;        // sRGB, as raylib sets it
 uniform float rblAlphaCutoff;
-uniform vec3 rblAmbient;        // linear ambient radiance
-#if RBL_LIGHTS > 0
-uniform int rblLightCount;
-uniform vec3 rblLightPosition[RBL_LIGHTS];
-uniform vec3 rblLightColor[RBL_LIGHTS];     // linear colour x intensity
-uniform float rblLightInvRange[RBL_LIGHTS]; // 1/range, 0 = no range window
-#endif
 
 out vec4 finalColor;
-
-// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.
-vec3 rblSafeNormalize(vec3 v, vec3 fallback)
-{
-    float len2 = dot(v, v);
-    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;
-}
-
-// Exact sRGB transfer functions (IEC 61966-2-1)
-vec3 rblSrgbToLinear(vec3 c)
-{
-    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
-}
-
-vec3 rblLinearToSrgb(vec3 c)
-{
-    c = clamp(c, 0.0, 1.0);
-    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));
-}
 
 // Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU
 // (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)
@@ -102,35 +82,34 @@ void main()
     tangentNormal = rblDecodeNormal(material);
     n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);
 #endif
-    float specular = 0.5;
+    RblShadingPoint sp;
+    sp.position = fragPosition;
+    sp.normal = n;
+    sp.albedo = albedo.rgb;
+    sp.specular = 1.0;
+#if RBL_BRDF == 2
+    sp.specular = rblRoughMetal.x;
+#endif
 #ifdef RBL_SPECULAR
-    specular = material.b;
+    sp.specular = material.b;
 #endif
-    float occlusion = 1.0;
+    sp.occlusion = 1.0;
 #ifdef RBL_OCCLUSION
-    occlusion = material.a;
+    sp.occlusion = material.a;
 #endif
-
-    vec3 irradiance = rblAmbient*occlusion;
-#if RBL_LIGHTS > 0
-    for (int i = 0; i < RBL_LIGHTS; i++)
-    {
-        if (i >= rblLightCount) break;
-        vec3 toLight = rblLightPosition[i] - fragPosition;
-        float d2 = dot(toLight, toLight);
-        vec3 l = rblSafeNormalize(toLight, n);      // a light on the surface lights it head-on
-        // Windowed inverse square (UE4/Filament): I*saturate(1-(d/r)^4)^2/max(d^2, eps).
-        float x2 = d2*rblLightInvRange[i]*rblLightInvRange[i];
-        float window = clamp(1.0 - x2*x2, 0.0, 1.0);
-        float falloff = window*window/max(d2, 1e-4);
-        irradiance += rblLightColor[i]*(max(dot(n, l), 0.0)*falloff);
-    }
+#ifdef RBL_VIEW_VECTOR
+    vec3 eye = fragEye;
+#else
+    vec3 eye = fragPosition + n;     // unused: no view-dependent term compiled
 #endif
-    vec3 color = albedo.rgb*irradiance;
+    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye);
 #if RBL_EMISSIVE == 1
     color += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;
 #elif RBL_EMISSIVE == 2
     color += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;
+#endif
+#ifdef RBL_EMISSIVE_COLOR
+    color += rblEmissiveColor;
 #endif
 
 #if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)
@@ -138,12 +117,10 @@ void main()
 #elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)
     finalColor = vec4(n*0.5 + 0.5, 1.0);
 #elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)
-    finalColor = vec4(vec3(specular), 1.0);
+    finalColor = vec4(vec3(sp.specular), 1.0);
 #elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)
-    finalColor = vec4(vec3(occlusion), 1.0);
-#elif defined(RBL_LINEAR_OUTPUT)
-    finalColor = vec4(color, albedo.a);
+    finalColor = vec4(vec3(sp.occlusion), 1.0);
 #else
-    finalColor = vec4(rblLinearToSrgb(color), albedo.a);
+    finalColor = vec4(rblFinish(color, fragPosition, eye), albedo.a);
 #endif
 }

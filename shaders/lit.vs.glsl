@@ -11,6 +11,10 @@ in vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T
 uniform mat4 mvp;
 uniform mat4 matModel;
 uniform mat4 matNormal;
+#ifdef RBL_VIEW_VECTOR
+uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set it: no viewPos glue needed
+flat out vec3 fragEye;
+#endif
 
 out vec3 fragPosition;
 out vec2 fragTexCoord;
@@ -32,5 +36,8 @@ void main()
     fragNormal = mat3(matNormal)*vertexNormal;
     // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.
     fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);
+#ifdef RBL_VIEW_VECTOR
+    fragEye = -(transpose(mat3(matView))*matView[3].xyz);     // view = [R|t]: eye = -R^T t
+#endif
     gl_Position = mvp*vec4(vertexPosition, 1.0);
 }

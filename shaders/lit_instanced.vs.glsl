@@ -21,6 +21,9 @@ out vec2 fragTexCoord;
 out vec4 fragColor;
 out vec3 fragNormal;
 out vec4 fragTangent;
+#ifdef RBL_VIEW_VECTOR
+flat out vec3 fragEye;
+#endif
 
 // Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment
 vec3 rblSrgbToLinear(vec3 c)
@@ -153,5 +156,8 @@ void main()
     fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);
     fragNormal = nv;
     fragTangent = vec4(tv, w);
+#ifdef RBL_VIEW_VECTOR
+    fragEye = rblViewEye;
+#endif
     gl_Position = mvp*vec4(p, 1.0);
 }

@@ -1,0 +1,200 @@
+// Shared lighting code: lights, falloff, BRDFs, fog and output transform. The loader places it after
+// the variant #defines and before the stage that shades (lit.fs.glsl), so every path evaluates the
+// same equations. Units: a light of linear colour c and intensity I delivers irradiance
+// E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the light, so a white
+// Lambert surface lit head-on by E = 1 returns exactly 1 (the scale raylib's lighting examples use).
+// Variant defines (only what a material and light set use is compiled):
+//   RBL_LIGHTS n              light slots
+//   RBL_LIGHT_DIRECTIONAL     directional lights present (rblLightPosition.w = 0)
+//   RBL_LIGHT_SPOT            spot cones
+//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation
+//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)
+//   RBL_AMBIENT_HEMI          hemispheric ambient (sky/ground by normal) instead of a flat colour
+//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by distance to the eye)
+//   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)
+//   RBL_EXPOSURE              multiply by rblExposure before the tonemap
+//   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve
+
+#define RBL_PI 3.14159265358979
+#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)
+#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
+#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite
+#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf
+
+#if RBL_LIGHTS > 0
+uniform int rblLightCount;
+uniform vec4 rblLightPosition[RBL_LIGHTS];  // xyz position, w 1; directional: xyz unit vector toward the light, w 0
+uniform vec4 rblLightColor[RBL_LIGHTS];     // rgb linear colour x intensity, a 1/range (0 = no window)
+#ifdef RBL_LIGHT_SPOT
+uniform vec4 rblLightSpot[RBL_LIGHTS];      // xyz cone axis * scale, w offset; (0,0,0,1) = no cone
+#endif
+#ifdef RBL_LIGHT_CLASSIC
+uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (windowed lights: 0, 0, 1)
+#endif
+#endif
+uniform vec3 rblAmbient;                    // linear; the sky colour when hemispheric
+#ifdef RBL_AMBIENT_HEMI
+uniform vec3 rblAmbientGround;              // linear
+uniform vec3 rblAmbientUp;                  // unit
+#endif
+#if RBL_BRDF == 1
+uniform vec4 rblSpecularColor;              // rgb linear specular colour x intensity, a shininess
+#elif RBL_BRDF == 2
+uniform vec2 rblRoughMetal;                 // perceptual roughness (when no map), metalness
+#endif
+#if RBL_FOG > 0
+uniform vec4 rblFog;                        // rgb linear colour, a: density (exp/exp2) or 1/(end - start) (linear)
+uniform float rblFogStart;                  // linear fog: distance where it begins
+#endif
+#ifdef RBL_EXPOSURE
+uniform float rblExposure;
+#endif
+
+// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.
+vec3 rblSafeNormalize(vec3 v, vec3 fallback)
+{
+    float len2 = dot(v, v);
+    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;
+}
+
+// Exact sRGB transfer functions (IEC 61966-2-1)
+vec3 rblSrgbToLinear(vec3 c)
+{
+    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+
+vec3 rblLinearToSrgb(vec3 c)
+{
+    c = clamp(c, 0.0, 1.0);
+    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+// What a surface point needs for shading, in linear units
+struct RblShadingPoint {
+    vec3 position;      // world
+    vec3 normal;        // unit, world
+    vec3 albedo;        // linear base colour
+    float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness
+    float occlusion;    // ambient occlusion (indirect light only)
+};
+
+// Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0
+vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)
+{
+#if RBL_BRDF == 1
+    // Normalised Blinn-Phong: (n + 8)/(8 pi) NdotH^n, pi folded
+    vec3 h = rblSafeNormalize(l + v, s.normal);
+    float NdotH = max(dot(s.normal, h), 0.0);
+    float n = rblSpecularColor.a;
+    return s.albedo + rblSpecularColor.rgb*(s.specular*(n + 8.0)/8.0*pow(NdotH, n));
+#elif RBL_BRDF == 2
+    // Cook-Torrance: GGX D, Smith height-correlated V, Schlick F; diffuse Lambert scaled by (1 - metalness)
+    float perceptual = max(s.specular, RBL_MIN_ROUGHNESS);
+    float a = perceptual*perceptual;
+    float a2 = a*a;
+    float metal = rblRoughMetal.y;
+    vec3 f0 = mix(vec3(0.04), s.albedo, metal);
+    vec3 h = rblSafeNormalize(l + v, s.normal);
+    float NdotH = clamp(dot(s.normal, h), 0.0, 1.0);
+    vec3 nxh = cross(s.normal, h);                              // 1 - NdotH^2 without cancellation
+    float k = a/(dot(nxh, nxh) + NdotH*NdotH*a2);
+    float D = k*k*(1.0/RBL_PI);
+    float NdotV = max(dot(s.normal, v), RBL_MIN_NDOTV);
+    float V = 0.5/(NdotL*sqrt(NdotV*NdotV*(1.0 - a2) + a2) + NdotV*sqrt(NdotL*NdotL*(1.0 - a2) + a2));
+    float LdotH = clamp(dot(l, h), 0.0, 1.0);
+    float fw = pow(1.0 - LdotH, 5.0);
+    vec3 F = f0 + (1.0 - f0)*fw;
+    return s.albedo*(1.0 - metal) + (RBL_PI*D*V)*F;
+#else
+    return s.albedo;
+#endif
+}
+
+// Ambient: uniform light from every direction, attenuated by occlusion. GGX adds F0 times it (the
+// specular reflectance of a uniform environment, without a split-sum table).
+vec3 rblAmbientLight(RblShadingPoint s)
+{
+#ifdef RBL_AMBIENT_HEMI
+    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);
+#else
+    vec3 ambient = rblAmbient;
+#endif
+#if RBL_BRDF == 2
+    vec3 reflectance = s.albedo*(1.0 - rblRoughMetal.y) + mix(vec3(0.04), s.albedo, rblRoughMetal.y);
+#else
+    vec3 reflectance = s.albedo;
+#endif
+    return ambient*s.occlusion*reflectance;
+}
+
+// Sum of the direct lights at a surface point seen from eye
+vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
+{
+    vec3 sum = vec3(0.0);
+#if RBL_LIGHTS > 0
+    vec3 v = rblSafeNormalize(eye - s.position, s.normal);
+    for (int i = 0; i < RBL_LIGHTS; i++)
+    {
+        if (i >= rblLightCount) break;
+        vec4 p = rblLightPosition[i];
+#ifdef RBL_LIGHT_DIRECTIONAL
+        vec3 toLight = p.xyz - s.position*p.w;
+#else
+        vec3 toLight = p.xyz - s.position;
+#endif
+        float d2 = dot(toLight, toLight);
+        vec3 l = rblSafeNormalize(toLight, s.normal);  // a light on the surface lights it head-on
+        float NdotL = dot(s.normal, l);
+        if (NdotL <= 0.0) continue;
+        // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)
+        float x2 = d2*rblLightColor[i].a*rblLightColor[i].a;
+        float window = clamp(1.0 - x2*x2, 0.0, 1.0);
+#ifdef RBL_LIGHT_CLASSIC
+        vec3 k = rblLightAttenuation[i];
+        float attenuation = window*window/max(k.x + k.y*sqrt(d2) + k.z*d2, RBL_MIN_DIST2);
+#else
+        float attenuation = window*window/max(d2, RBL_MIN_DIST2);
+#endif
+#ifdef RBL_LIGHT_SPOT
+        float t = clamp(dot(-l, rblLightSpot[i].xyz) + rblLightSpot[i].w, 0.0, 1.0);
+        attenuation *= t*t*(3.0 - 2.0*t);           // smoothstep from the outer to the inner cone
+#endif
+        sum += rblLightColor[i].rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
+    }
+#endif
+    return sum;
+}
+
+// Fog, exposure, tonemap and the display encoding, in that order. linearOut keeps linear light
+// (clamped to half-float range) for float targets.
+vec3 rblFinish(vec3 color, vec3 position, vec3 eye)
+{
+#if RBL_FOG > 0
+    float d = length(position - eye);
+#if RBL_FOG == 1
+    float visible = clamp(1.0 - (d - rblFogStart)*rblFog.a, 0.0, 1.0);
+#elif RBL_FOG == 2
+    float visible = exp(-rblFog.a*d);
+#else
+    float visible = exp(-(rblFog.a*d)*(rblFog.a*d));
+#endif
+    color = mix(rblFog.rgb, color, visible);
+#endif
+    color = clamp(color, 0.0, RBL_HALF_MAX);
+#ifdef RBL_EXPOSURE
+    color *= rblExposure;
+#endif
+#if RBL_TONEMAP == 1
+    color = color/(1.0 + color);
+#elif RBL_TONEMAP == 2
+    color = min(color, vec3(RBL_HALF_MAX));
+    color = clamp(color*(2.51*color + 0.03)/(color*(2.43*color + 0.59) + 0.14), 0.0, 1.0);
+#endif
+#if defined(RBL_LINEAR_OUTPUT)
+    return min(color, vec3(RBL_HALF_MAX));
+#elif defined(RBL_GAMMA)
+    return pow(clamp(color, 0.0, 1.0), vec3(1.0/RBL_GAMMA));
+#else
+    return rblLinearToSrgb(color);
+#endif
+}
