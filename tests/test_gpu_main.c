@@ -2,6 +2,7 @@
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "rlgl.h"
+#include "raymath.h"
 #include "harness.h"
 
 #include <math.h>
@@ -15,6 +16,7 @@
 #include "test_render.c"
 #include "test_instanced.c"
 #include "test_material_render.c"
+#include "test_lighting.c"
 
 int main(int argc, char **argv)
 {
@@ -36,6 +38,20 @@ int main(int argc, char **argv)
         RT_TEST(test_materials_occlusion_dims_ambient_only),
         RT_TEST(test_materials_emission_adds_after_lighting),
         RT_TEST(test_materials_packed_atlas_renders_like_its_separate_maps),
+        RT_TEST(test_lighting_every_variant_in_the_matrix_compiles_links_and_compiles_once),
+        RT_TEST(test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line),
+        RT_TEST(test_lighting_matrix_matches_the_double_reference_within_2_of_255),
+        RT_TEST(test_lighting_optional_stages_match_the_reference),
+        RT_TEST(test_lighting_hard_roughness_zero),
+        RT_TEST(test_lighting_hard_metal_with_black_albedo),
+        RT_TEST(test_lighting_hard_grazing_normal_ndotv_zero),
+        RT_TEST(test_lighting_hard_light_behind_the_surface),
+        RT_TEST(test_lighting_hard_light_on_the_shaded_point),
+        RT_TEST(test_lighting_hard_range_zero_and_intensity_zero_and_zero_lights),
+        RT_TEST(test_lighting_hard_maximum_light_count),
+        RT_TEST(test_lighting_hard_half_float_overflow_before_tonemap),
+        RT_TEST(test_lighting_hard_zero_length_map_normal_is_the_flat_normal),
+        RT_TEST(test_lighting_billboard_and_model_quad_render_identical_pixels),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }
