@@ -7,7 +7,8 @@
 *   Example originally created with raylib 6.0, last time updated with raylib 6.0
 *
 *   Example shows rbillboard_lit.h: playing cards drawn as billboards that carry normals and
-*   tangents, so a normal map embosses their symbols under moving coloured point lights.
+*   tangents, so a normal map embosses their symbols under moving coloured point lights, a
+*   sweeping spot light and a dim directional moonlight.
 *   Everything is generated in code (no asset files):
 *     - the card faces (white rounded cards, red hearts / black spades, corner indices) are
 *       drawn with raylib Image functions into one atlas, each card in its own frame with a
@@ -18,8 +19,10 @@
 *       RGBA8 material texture: hemi-octahedral normal, occlusion), dilates the gutters around
 *       the card frames and builds the mip chains; RblLoadPackedTextures uploads them and the
 *       card shader variant is compiled for exactly that layout (packed.layout),
-*     - the floor is a GenMeshPlane() Model with an albedo-only variant of the lit shader; both
-*       variants get the same lights, so cards and floor are lit alike.
+*     - the cards are glossy (Blinn-Phong), the floor is a GenMeshPlane() Model with a polished GGX
+*       variant of the lit shader (roughness 0.3); both variants get the same light array
+*       (RblLightFeatures() tells them which light types to compile), a sky/ground hemispheric
+*       ambient, exp2 fog toward the background colour and an ACES tonemap.
 *   The cards go through the batched path (RblBeginBatch/RblBatchAdd/RblEndBatch): five cards
 *   stand upright turning around +Y toward the camera (RBL_FACING_AXIS) and one lies flat on
 *   the floor (RBL_FACING_FIXED); all six share one material, so the batch draws them at once.
@@ -53,7 +56,8 @@
 #define CARD_OCCLUSION_RADIUS   12          // Cavity window (texels): about the width of the emboss slopes
 #define CARD_OCCLUSION_STRENGTH 2.0f        // Ambient darkening per unit of depth below the surroundings (~25% at most)
 
-#define LIGHT_COUNT             4
+#define LIGHT_COUNT             4           // Moving coloured point lights
+#define SCENE_LIGHTS            (LIGHT_COUNT + 2)   // + a spot light and a directional moonlight
 
 //----------------------------------------------------------------------------------
 // Types and Structures Definition
@@ -77,13 +81,13 @@ typedef struct LightPath {
 static Camera3D showcaseCamera = { 0 };
 static const Color showcaseBackground = { 18, 20, 28, 255 };
 
-static RblLitShader cardLit = { 0 };        // Card variant: 4 lights, the packed layout (normal + occlusion)
-static RblLitShader floorLit = { 0 };       // Floor variant: 4 lights, albedo only
+static RblLitShader cardLit = { 0 };        // Card variant: Blinn-Phong, the packed layout (normal + occlusion)
+static RblLitShader floorLit = { 0 };       // Floor variant: GGX, albedo only
 static RblBatch showcaseBatch = { 0 };
 static Material cardMaterial = { 0 };       // Packed card atlas (albedo + material texture) and cardLit
 static Model floorModel = { 0 };
 static Texture2D floorAlbedo = { 0 };
-static RblLight showcaseLights[LIGHT_COUNT] = { 0 };
+static RblLight showcaseLights[SCENE_LIGHTS] = { 0 };
 
 static const LightPath lightPaths[LIGHT_COUNT] = {
     { { 255, 164,  72, 255 }, 3.2f, 3.0f, 1.0f, 0.30f,  0.55f, 0.2f },    // Warm orange, outer orbit
@@ -391,9 +395,21 @@ static void ShowcaseInit(void)
     UnloadImage(normal);
     UnloadImage(occlusion);
 
-    // Card shader variant: LIGHT_COUNT lights, sampling exactly the maps the packing produced
-    RblLitShaderDesc cardDesc = { 0 };
-    cardDesc.maxLights = LIGHT_COUNT;
+    // Lights first: the shader variants compile exactly the light types the scene uses
+    ShowcaseUpdate(0.0f);
+    RblLitShaderDesc sceneDesc = { 0 };
+    sceneDesc.maxLights = SCENE_LIGHTS;
+    sceneDesc.lightFeatures = RblLightFeatures(showcaseLights, SCENE_LIGHTS);
+    sceneDesc.hemisphereAmbient = true;
+    sceneDesc.fog = (RblFog){ RBL_FOG_EXP2, showcaseBackground, 0.0f, 0.0f, 0.055f };
+    sceneDesc.tonemap = RBL_TONEMAP_ACES;
+    sceneDesc.exposure = 1.4f;
+
+    // Card shader variant: glossy card stock (Blinn-Phong), sampling exactly the maps the packing produced
+    RblLitShaderDesc cardDesc = sceneDesc;
+    cardDesc.brdf = RBL_BRDF_BLINN_PHONG;
+    cardDesc.specular = 0.35f;
+    cardDesc.shininess = 48.0f;
     cardDesc.material = packed.layout;
     cardLit = RblLoadLitShader(cardDesc);
     if (!RblIsLitShaderValid(cardLit)) TraceLog(LOG_WARNING, "SHOWCASE: card lit shader failed to compile");
@@ -406,10 +422,11 @@ static void ShowcaseInit(void)
 
     showcaseBatch = RblLoadBatch(16);
 
-    // Floor: a plane with a grey checker albedo, drawn with an albedo-only variant of the lit shader
-    // (no normal map, so no tangents and no flat normal texture are needed)
-    RblLitShaderDesc floorDesc = { 0 };
-    floorDesc.maxLights = LIGHT_COUNT;                  // material = { 0 }: albedo only
+    // Floor: a plane with a grey checker albedo, drawn with a polished GGX variant of the lit shader
+    // (albedo only: no normal map, so no tangents and no flat normal texture are needed)
+    RblLitShaderDesc floorDesc = sceneDesc;
+    floorDesc.brdf = RBL_BRDF_GGX;
+    floorDesc.roughness = 0.3f;
     floorLit = RblLoadLitShader(floorDesc);
     if (!RblIsLitShaderValid(floorLit)) TraceLog(LOG_WARNING, "SHOWCASE: floor lit shader failed to compile");
 
@@ -442,10 +459,32 @@ static void ShowcaseUpdate(float time)
         showcaseLights[i].range = 8.0f;
     }
 
-    // The same lights for both shader variants
-    const Color ambient = { 44, 44, 56, 255 };
-    RblSetLights(&cardLit, showcaseLights, LIGHT_COUNT, ambient);
-    RblSetLights(&floorLit, showcaseLights, LIGHT_COUNT, ambient);
+    // A warm spot light high above, sweeping slowly across the ring of cards
+    RblLight *spot = &showcaseLights[LIGHT_COUNT];
+    spot->type = RBL_LIGHT_SPOT;
+    spot->position = (Vector3){ 0.0f, 5.0f, 1.0f };
+    spot->direction = (Vector3){ 1.6f*cosf(0.35f*time), -5.0f, 1.6f*sinf(0.35f*time) - 1.0f };
+    spot->innerAngle = 12.0f;
+    spot->outerAngle = 22.0f;
+    spot->color = (Color){ 255, 236, 200, 255 };
+    spot->intensity = 14.0f;
+    spot->range = 12.0f;
+
+    // Dim bluish moonlight from the back left
+    RblLight *moon = &showcaseLights[LIGHT_COUNT + 1];
+    moon->type = RBL_LIGHT_DIRECTIONAL;
+    moon->direction = (Vector3){ 0.5f, -0.8f, 0.6f };
+    moon->color = (Color){ 150, 170, 255, 255 };
+    moon->intensity = 0.12f;
+
+    // The same lights and ambient for both shader variants (before ShowcaseInit compiled them: skipped)
+    if (!RblIsLitShaderValid(cardLit) || !RblIsLitShaderValid(floorLit)) return;
+    const Color sky = { 52, 58, 84, 255 }, ground = { 34, 28, 26, 255 };
+    const Vector3 up = { 0.0f, 1.0f, 0.0f };
+    RblSetLights(&cardLit, showcaseLights, SCENE_LIGHTS, sky);
+    RblSetLights(&floorLit, showcaseLights, SCENE_LIGHTS, sky);
+    RblSetHemisphereAmbient(&cardLit, sky, ground, up);
+    RblSetHemisphereAmbient(&floorLit, sky, ground, up);
 }
 
 static void ShowcaseDraw(void)
