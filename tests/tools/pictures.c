@@ -1,5 +1,6 @@
 // Renders the README's pictures headlessly: one small image per facing mode (same scene, same
-// camera, only the mode changes) into examples/resources/. Run by `make pictures`.
+// camera, only the mode changes) and one of the lighting models (raylib sphere Models next to
+// round-normal billboards, Blinn-Phong and GGX) into examples/resources/. Run by `make pictures`.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "harness.h"
@@ -35,6 +36,87 @@ static Image bulgeNormals(int w, int h)
         ImageDrawPixel(&img, x, y, (Color){ (unsigned char)((nx*0.5f + 0.5f)*255), (unsigned char)((ny*0.5f + 0.5f)*255), (unsigned char)((nz*0.5f + 0.5f)*255), 255 });
     }
     return img;
+}
+
+// Blinn-Phong (top row, shininess 8..512) and GGX (bottom row, roughness 0.1..0.9): in each cell a
+// raylib sphere Model and a billboard disc with spherical normals (roundness 1), same shader, same lights
+static bool lightingPicture(const char *dir)
+{
+    const int w = 640, h = 300;
+    Image disc = GenImageColor(64, 64, BLANK);
+    ImageDrawCircle(&disc, 32, 32, 31, WHITE);
+    Texture2D discTexture = LoadTextureFromImage(disc);
+    UnloadImage(disc);
+    SetTextureFilter(discTexture, TEXTURE_FILTER_BILINEAR);
+    Mesh sphereMesh = GenMeshSphere(0.5f, 32, 32);
+    Model sphere = LoadModelFromMesh(sphereMesh);
+    RblLight lights[3];
+    memset(lights, 0, sizeof(lights));
+    lights[0].position = (Vector3){ -2.0f, 3.0f, 4.0f }; lights[0].color = (Color){ 255, 236, 210, 255 }; lights[0].intensity = 30.0f; lights[0].range = 20.0f;
+    lights[1].type = RBL_LIGHT_DIRECTIONAL; lights[1].direction = (Vector3){ -1.0f, 0.2f, -0.3f }; lights[1].color = (Color){ 110, 150, 255, 255 }; lights[1].intensity = 0.5f;
+    lights[2].type = RBL_LIGHT_SPOT; lights[2].position = (Vector3){ 4.0f, 4.0f, 3.0f }; lights[2].direction = (Vector3){ -1.0f, -1.0f, -1.0f };
+    lights[2].innerAngle = 15.0f; lights[2].outerAngle = 40.0f; lights[2].color = (Color){ 255, 120, 80, 255 }; lights[2].intensity = 20.0f; lights[2].range = 20.0f;
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 0.0f, 9.0f };
+    cam.target = (Vector3){ 0.0f, 0.0f, 0.0f };
+    cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 32.0f;
+    cam.projection = CAMERA_PERSPECTIVE;
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 24, 26, 32, 255 });
+    BeginMode3D(cam);
+    const float shininess[4] = { 8.0f, 32.0f, 128.0f, 512.0f }, roughness[4] = { 0.1f, 0.3f, 0.6f, 0.9f };
+    RblLitShader shaders[8];
+    int loaded = 0;
+    for (int row = 0; row < 2; row++)
+        for (int col = 0; col < 4; col++)
+        {
+            RblLitShaderDesc d;
+            memset(&d, 0, sizeof(d));
+            d.maxLights = 3;
+            d.lightFeatures = RblLightFeatures(lights, 3);
+            d.brdf = row? RBL_BRDF_GGX : RBL_BRDF_BLINN_PHONG;
+            d.shininess = shininess[col]; d.specular = 0.6f;
+            d.roughness = roughness[col];
+            d.tonemap = RBL_TONEMAP_ACES;
+            RblLitShader lit = RblLoadLitShader(d);
+            if (!RblIsLitShaderValid(lit)) continue;
+            shaders[loaded++] = lit;
+            RblSetLights(&lit, lights, 3, (Color){ 30, 30, 36, 255 });
+            Material m = LoadMaterialDefault();
+            m.shader = lit.shader;
+            m.maps[MATERIAL_MAP_ALBEDO].color = row? (Color){ 200, 80, 60, 255 } : (Color){ 70, 130, 200, 255 };
+            float x = -4.2f + col*2.8f, y = row? -0.9f : 0.9f;
+            sphere.materials[0] = m;
+            DrawModel(sphere, (Vector3){ x - 0.55f, y, 0.0f }, 1.0f, WHITE);
+            m.maps[MATERIAL_MAP_ALBEDO].texture = discTexture;
+            RblBillboard b;
+            memset(&b, 0, sizeof(b));
+            b.position = (Vector3){ x + 0.55f, y, 0.0f };
+            b.size = (Vector2){ 1.0f, 1.0f };
+            b.origin = (Vector2){ 0.5f, 0.5f };
+            b.roundness = 1.0f;
+            RblDrawBillboard(cam, m, b);
+            MemFree(m.maps);
+        }
+    EndMode3D();
+    DrawText("Blinn-Phong  n = 8, 32, 128, 512   (sphere Model | billboard, same shader)", 8, 6, 10, RAYWHITE);
+    DrawText("GGX  roughness = 0.1, 0.3, 0.6, 0.9", 8, h - 16, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_lighting.png", dir);
+    bool ok = ExportImage(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    for (int i = 0; i < loaded; i++) RblUnloadLitShader(shaders[i]);
+    sphere.materials[0] = LoadMaterialDefault();        // the drawn materials were freed above
+    UnloadModel(sphere);
+    UnloadTexture(discTexture);
+    return ok;
 }
 
 int main(int argc, char **argv)
@@ -106,6 +188,7 @@ int main(int argc, char **argv)
     }
     RblUnloadBatch(&batch);
     UnloadRenderTexture(rt);
+    if (!lightingPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(lit);
