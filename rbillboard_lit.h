@@ -22,9 +22,14 @@
 *         GPU-instanced (56 bytes per billboard, quads expanded in the vertex shader) paths
 *       - Stable frames for degenerate cameras (looking straight up/down, target == position,
 *         billboard at the eye); NaN/Inf input is skipped with one warning, never written to a buffer
-*       - Forward lit shader: albedo with alpha cutoff, tangent-space normal map, point lights with
-*         windowed inverse-square falloff, ambient term; the GLSL sources live in shaders/ and are
-*         embedded below by `make shaders`
+*       - Forward lit shader for billboards and raylib Models alike (raylib's attribute/uniform names;
+*         the eye position comes from matView, so no viewPos glue): point, directional and spot lights
+*         (smooth inner/outer cone), windowed inverse-square or classic constant/linear/quadratic
+*         falloff, Lambert, normalised Blinn-Phong or GGX (Cook-Torrance) reflectance, flat or
+*         hemispheric ambient, emissive map/colour, fog (linear, exp, exp2), exposure, tonemap
+*         (Reinhard, ACES fit) and gamma; see LIGHTING. Only what a desc asks for is compiled, and
+*         each variant compiles once (cache). The GLSL sources live in shaders/ and are embedded
+*         below by `make shaders`
 *       - Material packing (CPU, RblPackMaterial): albedo + one RGBA8 material texture (hemi-octahedral
 *         normal, specular, occlusion) + an optional 1-byte emissive mask; atlas gutters dilated, mip
 *         chains averaged in linear light with renormalised normals; height -> normal / occlusion and
@@ -32,9 +37,11 @@
 *
 *   LIMITATIONS:
 *       - OpenGL 3.3 core (GLSL 330) only for now; GLES2/WebGL variants are not written yet
-*       - Lighting is Lambert diffuse with point lights only: the specular channel of a packed material
-*         is stored and decoded (debug view) but no BRDF uses it yet; directional/spot lights,
-*         Blinn-Phong/GGX, fog, tonemapping, the deferred helper and shadows are planned, not implemented
+*       - The deferred helper and shadows are planned, not implemented
+*       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance
+*         (no split-sum table), metalness is one value per material (the packed layout has no channel)
+*       - Surface values set in the desc (roughness, shininess, ...) are uniforms, but a desc that differs
+*         in them is another cached program; identical descs share one program and so its lights
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself
 *       - Instanced path: facing mode, up, axis and roundness are shared by all instances of a draw
 *         (RblInstancedDesc); billboards needing their own FIXED orientation go through the batch
@@ -67,6 +74,33 @@
 *       - Texture slots follow raylib's Material: MATERIAL_MAP_ALBEDO -> texture0,
 *         MATERIAL_MAP_NORMAL -> texture2.
 *
+*   LIGHTING (shaders/lighting.glsl; tests/lighting_reference.h is an independent double version):
+*       - Units: a light of sRGB colour c and intensity I delivers irradiance E = linear(c)*I*attenuation;
+*         outgoing radiance = pi*BRDF*E*NdotL with pi folded into the light, so a white Lambert surface
+*         lit head-on with E = 1 returns 1 (the scale raylib's lighting examples use).
+*       - Falloff: windowed E = I*saturate(1 - (d/range)^4)^2/max(d^2, 1e-4) (range 0 = no window);
+*         classic E = I/max(constant + linear*d + quadratic*d^2, 1e-4), times the same window when
+*         range > 0. Spot cone: t = saturate((cos a - cos outer)/max(cos inner - cos outer, 1e-4)),
+*         smoothstep(t) = t*t*(3 - 2t). Directional lights have no falloff.
+*       - Blinn-Phong: albedo + specularColor*intensity*(n + 8)/8*NdotH^n (normalised, pi folded);
+*         intensity = the specular map (material B) times desc.specular, or desc.specular alone.
+*       - GGX: diffuse albedo*(1 - metalness) + pi*D*V*F; D = GGX with alpha = roughness^2, V = Smith
+*         height-correlated, F = Schlick with F0 = mix(0.04, albedo, metalness); roughness = the map
+*         (material B) or desc.roughness. 1 - NdotH^2 is computed as |N x H|^2 (no cancellation).
+*       - Ambient (flat, or sky/ground mixed by dot(N, up)*0.5 + 0.5) x occlusion x (albedo, plus F0
+*         for GGX). Occlusion maps attenuate ambient light only: direct lights are occluded by shadows,
+*         and darkening them too would count the same blocker twice.
+*       - Clamps (no NaN/Inf from any input the API accepts): perceptual roughness >= 0.045, NdotV >=
+*         1e-4, falloff denominator >= 1e-4, zero vectors normalise to a fallback (a light on the
+*         surface lights it head-on), radiance clamped to [0, 65504] (half-float max) before exposure
+*         and tonemap and again on linear output. Bad lights (NaN/Inf, negative intensity/range,
+*         zero direction, cone outside 0 <= inner <= outer <= 90, a type the variant lacks) are
+*         rejected by RblSetLights with a log line and never reach the shader.
+*       - Order: ambient + direct + emission -> fog -> clamp -> exposure -> tonemap -> sRGB (or gamma).
+*       - Variants: RblLitShaderDesc -> #defines (light types, BRDF, maps, fog, tonemap, ...) before the
+*         shared sources; RblLightFeatures(lights, n) says what a light set needs. Identical descs
+*         return the same program (reference counted; RblUnloadLitShader releases one reference).
+*
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
 *       material  RGBA8, linear: RG normal, B specular, A occlusion                                 4 B
@@ -74,7 +108,8 @@
 *                         (p.x+p.y, p.x-p.y)*0.5+0.5, precise encoder (best of the 4 floor/ceil codes);
 *                         error mean 0.24, max 0.55 degrees. RBL_NORMAL_XY: x,y*0.5+0.5, z rebuilt
 *                         (mean 0.47, max 5.9 degrees at grazing angles). Decode: see RblDecodeNormal.
-*                 B       specular intensity/roughness (red channel of the source; absent: 0.5 = 128)
+*                 B       Blinn-Phong specular intensity / GGX perceptual roughness (red channel of the
+*                         source; absent: 0.5 = 128); sampled only by a BRDF that reads it
 *                 A       ambient occlusion (red channel; absent: 1.0 = 255)
 *                 RBL_NORMAL_RGB: RGB normal (mean 0.17, max 0.38 degrees), A occlusion; specular has no
 *                 channel left and is rejected. No normal, specular or occlusion map: no material texture.
@@ -128,7 +163,8 @@
 *
 *   VERSIONS HISTORY:
 *       0.1 (2026-11-22) First release: geometry (all facing modes, flips, rotated frames, rounded
-*                        normals), immediate, batched and instanced paths, forward Lambert point lights.
+*                        normals), immediate, batched and instanced paths, packed material maps,
+*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog, tonemap).
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend

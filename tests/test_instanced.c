@@ -232,6 +232,11 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = 1;
     desc.material.normalEncoding = RBL_NORMAL_RGB;
+    // View-dependent shading (GGX highlight, fog by eye distance): the instanced stage must hand the
+    // fragment stage the same eye as matView gives the batched one
+    desc.brdf = RBL_BRDF_GGX;
+    desc.roughness = 0.3f;
+    desc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 30, 40, 60, 255 }, 0.0f, 0.0f, 0.08f };
     RblLitShader plain = RblLoadLitShader(desc);
     desc.instanced = true;
     RblLitShader inst = RblLoadLitShader(desc);
