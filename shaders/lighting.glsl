@@ -37,11 +37,6 @@ uniform vec3 rblAmbient;                    // linear; the sky colour when hemis
 uniform vec3 rblAmbientGround;              // linear
 uniform vec3 rblAmbientUp;                  // unit
 #endif
-#if RBL_BRDF == 1
-uniform vec4 rblSpecularColor;              // rgb linear specular colour x intensity, a shininess
-#elif RBL_BRDF == 2
-uniform vec2 rblRoughMetal;                 // perceptual roughness (when no map), metalness
-#endif
 #if RBL_FOG > 0
 uniform vec4 rblFog;                        // rgb linear colour, a: density (exp/exp2) or 1/(end - start) (linear)
 uniform float rblFogStart;                  // linear fog: distance where it begins
@@ -69,13 +64,17 @@ vec3 rblLinearToSrgb(vec3 c)
     return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 
-// What a surface point needs for shading, in linear units
+// What a surface point needs for shading, in linear units (filled by the forward fragment stage from
+// maps and uniforms, or by the deferred passes from the G-buffer)
 struct RblShadingPoint {
     vec3 position;      // world
     vec3 normal;        // unit, world
     vec3 albedo;        // linear base colour
     float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness
     float occlusion;    // ambient occlusion (indirect light only)
+    vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)
+    float shininess;    // Blinn-Phong exponent
+    float metalness;    // GGX
 };
 
 // Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0
@@ -85,14 +84,14 @@ vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)
     // Normalised Blinn-Phong: (n + 8)/(8 pi) NdotH^n, pi folded
     vec3 h = rblSafeNormalize(l + v, s.normal);
     float NdotH = max(dot(s.normal, h), 0.0);
-    float n = rblSpecularColor.a;
-    return s.albedo + rblSpecularColor.rgb*(s.specular*(n + 8.0)/8.0*pow(NdotH, n));
+    float n = s.shininess;
+    return s.albedo + s.specularColor*(s.specular*(n + 8.0)/8.0*pow(NdotH, n));
 #elif RBL_BRDF == 2
     // Cook-Torrance: GGX D, Smith height-correlated V, Schlick F; diffuse Lambert scaled by (1 - metalness)
     float perceptual = max(s.specular, RBL_MIN_ROUGHNESS);
     float a = perceptual*perceptual;
     float a2 = a*a;
-    float metal = rblRoughMetal.y;
+    float metal = s.metalness;
     vec3 f0 = mix(vec3(0.04), s.albedo, metal);
     vec3 h = rblSafeNormalize(l + v, s.normal);
     float NdotH = clamp(dot(s.normal, h), 0.0, 1.0);
@@ -120,14 +119,42 @@ vec3 rblAmbientLight(RblShadingPoint s)
     vec3 ambient = rblAmbient;
 #endif
 #if RBL_BRDF == 2
-    vec3 reflectance = s.albedo*(1.0 - rblRoughMetal.y) + mix(vec3(0.04), s.albedo, rblRoughMetal.y);
+    vec3 reflectance = s.albedo*(1.0 - s.metalness) + mix(vec3(0.04), s.albedo, s.metalness);
 #else
     vec3 reflectance = s.albedo;
 #endif
     return ambient*s.occlusion*reflectance;
 }
 
-// Sum of the direct lights at a surface point seen from eye
+// One light at a surface point seen along v: p position (w 0: directional), c colour (a: 1/range),
+// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square)
+vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k)
+{
+#ifdef RBL_LIGHT_DIRECTIONAL
+    vec3 toLight = p.xyz - s.position*p.w;
+#else
+    vec3 toLight = p.xyz - s.position;
+#endif
+    float d2 = dot(toLight, toLight);
+    vec3 l = rblSafeNormalize(toLight, s.normal);      // a light on the surface lights it head-on
+    float NdotL = dot(s.normal, l);
+    if (NdotL <= 0.0) return vec3(0.0);
+    // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)
+    float x2 = d2*c.a*c.a;
+    float window = clamp(1.0 - x2*x2, 0.0, 1.0);
+#ifdef RBL_LIGHT_CLASSIC
+    float attenuation = window*window/max(k.x + k.y*sqrt(d2) + k.z*d2, RBL_MIN_DIST2);
+#else
+    float attenuation = window*window/max(d2, RBL_MIN_DIST2);
+#endif
+#ifdef RBL_LIGHT_SPOT
+    float t = clamp(dot(-l, spot.xyz) + spot.w, 0.0, 1.0);
+    attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone
+#endif
+    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
+}
+
+// Sum of the light slots at a surface point seen from eye
 vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
 {
     vec3 sum = vec3(0.0);
@@ -136,30 +163,17 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
     for (int i = 0; i < RBL_LIGHTS; i++)
     {
         if (i >= rblLightCount) break;
-        vec4 p = rblLightPosition[i];
-#ifdef RBL_LIGHT_DIRECTIONAL
-        vec3 toLight = p.xyz - s.position*p.w;
+#ifdef RBL_LIGHT_SPOT
+        vec4 spot = rblLightSpot[i];
 #else
-        vec3 toLight = p.xyz - s.position;
+        vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
-        float d2 = dot(toLight, toLight);
-        vec3 l = rblSafeNormalize(toLight, s.normal);  // a light on the surface lights it head-on
-        float NdotL = dot(s.normal, l);
-        if (NdotL <= 0.0) continue;
-        // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)
-        float x2 = d2*rblLightColor[i].a*rblLightColor[i].a;
-        float window = clamp(1.0 - x2*x2, 0.0, 1.0);
 #ifdef RBL_LIGHT_CLASSIC
         vec3 k = rblLightAttenuation[i];
-        float attenuation = window*window/max(k.x + k.y*sqrt(d2) + k.z*d2, RBL_MIN_DIST2);
 #else
-        float attenuation = window*window/max(d2, RBL_MIN_DIST2);
+        vec3 k = vec3(0.0, 0.0, 1.0);
 #endif
-#ifdef RBL_LIGHT_SPOT
-        float t = clamp(dot(-l, rblLightSpot[i].xyz) + rblLightSpot[i].w, 0.0, 1.0);
-        attenuation *= t*t*(3.0 - 2.0*t);           // smoothstep from the outer to the inner cone
-#endif
-        sum += rblLightColor[i].rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
+        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k);
     }
 #endif
     return sum;

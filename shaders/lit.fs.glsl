@@ -33,6 +33,11 @@ uniform float rblEmissiveIntensity;
 #ifdef RBL_EMISSIVE_COLOR
 uniform vec3 rblEmissiveColor;
 #endif
+#if RBL_BRDF == 1
+uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shininess
+#elif RBL_BRDF == 2
+uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness
+#endif
 uniform vec4 colDiffuse;        // sRGB, as raylib sets it
 uniform float rblAlphaCutoff;
 
@@ -87,8 +92,15 @@ void main()
     sp.normal = n;
     sp.albedo = albedo.rgb;
     sp.specular = 1.0;
-#if RBL_BRDF == 2
+    sp.specularColor = vec3(1.0);
+    sp.shininess = 1.0;
+    sp.metalness = 0.0;
+#if RBL_BRDF == 1
+    sp.specularColor = rblSpecularColor.rgb;
+    sp.shininess = rblSpecularColor.a;
+#elif RBL_BRDF == 2
     sp.specular = rblRoughMetal.x;
+    sp.metalness = rblRoughMetal.y;
 #endif
 #ifdef RBL_SPECULAR
     sp.specular = material.b;
