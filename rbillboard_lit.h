@@ -469,6 +469,7 @@ typedef struct RblLitShaderDesc {
     float exposure;                 // Radiance scale before the tonemap (0 = 1); change it with RblSetExposure()
     float gamma;                    // Display encoding pow(c, 1/gamma) (0 = the exact sRGB curve)
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
+    bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
     bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
     int debugView;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
@@ -495,6 +496,53 @@ typedef struct RblLitShader {
     int locExposure;
     int locAlphaCutoff;
 } RblLitShader;
+
+// Deferred debug views (RblSetGBufferView)
+typedef enum {
+    RBL_GBUFFER_VIEW_LIT = 0,       // The lit, resolved image
+    RBL_GBUFFER_VIEW_ALBEDO,        // Albedo (sRGB)
+    RBL_GBUFFER_VIEW_NORMAL,        // World normal *0.5 + 0.5
+    RBL_GBUFFER_VIEW_SPECULAR,      // Specular intensity / roughness
+    RBL_GBUFFER_VIEW_OCCLUSION,     // Ambient occlusion
+    RBL_GBUFFER_VIEW_DEPTH,         // Linear distance to the eye / scale
+    RBL_GBUFFER_VIEW_POSITION,      // fract(reconstructed world position / scale)
+    RBL_GBUFFER_VIEW_LIGHT_COUNT,   // Lights evaluated per pixel, heat map (scale = count shown white)
+    RBL_GBUFFER_VIEW_COUNT
+} RblGBufferView;
+
+// Deferred G-buffer (RblLoadGBuffer): 10 bytes per pixel + depth + RGBA16F light accumulation
+typedef struct RblGBuffer {
+    unsigned int id;                // Geometry framebuffer: 4 colour attachments + depth texture
+    unsigned int lightId;           // Light framebuffer: the accumulation target alone
+    int width;                      // Size in pixels
+    int height;
+    Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
+    Texture2D normal;               // RGBA8: octahedral 12+12 normal, specular/roughness
+    Texture2D params;               // RG8: Blinn-Phong shininess (16-bit log2) or GGX metalness
+    Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
+    Texture2D depth;                // Depth texture (24 bits, raylib's rlLoadTextureDepth)
+    RblLitShaderDesc shading;       // BRDF, light features, ambient, fog, tonemap of the lighting passes
+    Shader passes[5];               // Ambient + unbounded lights, volumes, resolve, and the two light-count variants
+    int locs[5][24];                // Uniform locations per pass (looked up once, at load)
+    unsigned int volumeVao;         // Sphere proxy (vertex + index buffers) with per-light instance data
+    unsigned int volumeVbo;
+    unsigned int volumeIbo;
+    unsigned int instanceVbo;
+    unsigned int emptyVao;          // Full-screen triangle (positions from gl_VertexID)
+    int volumeIndexCount;
+    int instanceCapacity;           // Lights the instance buffer holds (grows with a log line)
+    float *instanceData;            // CPU staging for the instance buffer (16 floats per light)
+    Matrix view;                    // Camera of the last geometry pass
+    Matrix projection;
+    Vector3 eye;
+    int debugView;                  // RblGBufferView
+    float debugScale;               // Range of the depth/position/light-count views
+    bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
+    Color ambientGround;            // Hemispheric ambient (shading.hemisphereAmbient): ground colour and up
+    Vector3 ambientUp;
+    int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
+    int lightsFullscreen;           // ... and in full-screen passes
+} RblGBuffer;
 
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
@@ -544,6 +592,19 @@ RBLAPI bool RblSetHemisphereAmbient(RblLitShader *shader, Color sky, Color groun
 RBLAPI bool RblSetFog(RblLitShader *shader, RblFog fog);                     // Change fog parameters (same mode as compiled); false = rejected
 RBLAPI bool RblSetExposure(RblLitShader *shader, float exposure);            // Change exposure (variants with a tonemap or exposure); false = rejected
 
+// Deferred helper (GL): G-buffer, geometry pass, light volumes, resolve
+RBLAPI RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading); // Load a G-buffer (0 = render size); invalid + log when MRT/float targets/shaders fail
+RBLAPI bool RblIsGBufferValid(RblGBuffer gbuffer);                           // Check every target and pass loaded (false: render forward instead)
+RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
+RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer
+RBLAPI int RblGBufferBytesPerPixel(RblGBuffer gbuffer);                      // Bytes per pixel of the colour targets, excluding depth and accumulation
+RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with desc.deferred materials); false = not valid
+RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
+RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int count, Color ambient); // Ambient + lights into the accumulation (bounded lights as volumes); false = rejected
+RBLAPI bool RblSetGBufferHemisphere(RblGBuffer *gbuffer, Color ground, Vector3 up); // Ground colour and up of the hemispheric ambient (sky = the ambient colour)
+RBLAPI void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferView) and its range
+RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
+
 #if defined(__cplusplus)
 }
 #endif
@@ -582,6 +643,201 @@ RBLAPI bool RblSetExposure(RblLitShader *shader, float exposure);            // 
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
+static const char *const rbl__shader_deferred_fs[] = {
+    "// Deferred lighting passes, fragment stage. The loader prepends \"#version 330\", the defines and\n",
+    "// lighting.glsl, so lights, falloff, BRDFs, clamps, fog and tonemap are the forward path's code.\n",
+    "//   RBL_PASS 1          ambient + up to RBL_LIGHTS unbounded lights (directional, range 0), full screen\n",
+    "//   RBL_PASS 2          one bounded light per instance (volume), additive\n",
+    "//   RBL_PASS 3          resolve: fog, exposure, tonemap, display encoding, depth; debug views\n",
+    "//   RBL_COUNT_LIGHTS    passes 1-2 add the number of lights evaluated instead of light (heat map)\n",
+    "\n",
+    "in vec2 fragUv;\n",
+    "#if RBL_PASS == 2\n",
+    "flat in vec4 volumePosition;\n",
+    "flat in vec4 volumeColor;\n",
+    "flat in vec4 volumeSpot;\n",
+    "flat in vec3 volumeFalloff;\n",
+    "#endif\n",
+    "\n",
+    "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion\n",
+    "uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specular/roughness\n",
+    "uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness\n",
+    "uniform sampler2D rblGDepth;            // depth texture of the geometry pass\n",
+    "uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)\n",
+    "uniform mat4 rblInvProjection;          // inverse projection of the geometry pass\n",
+    "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
+    "uniform vec3 rblEye;                    // camera position\n",
+    "#if RBL_PASS == 3\n",
+    "uniform int rblDebugView;               // RblGBufferView\n",
+    "uniform float rblDebugScale;            // linear depth / position / light count range of the debug views\n",
+    "#endif\n",
+    "\n",
+    "out vec4 finalColor;\n",
+    "\n",
+    "// Pixel coordinate in the G-buffer: the light passes draw at its size; the resolve covers the\n",
+    "// target with fragUv 0..1 (same size expected; nearest texel otherwise)\n",
+    "ivec2 rblTexel()\n",
+    "{\n",
+    "#if RBL_PASS == 3\n",
+    "    return ivec2(min(fragUv*vec2(textureSize(rblGDepth, 0)), vec2(textureSize(rblGDepth, 0) - 1)));\n",
+    "#else\n",
+    "    return ivec2(gl_FragCoord.xy);\n",
+    "#endif\n",
+    "}\n",
+    "\n",
+    "// World position from the depth buffer: NDC -> view space (inverse projection) -> world (inverse view)\n",
+    "vec3 rblPositionFromDepth(ivec2 texel, float depth)\n",
+    "{\n",
+    "    vec2 ndc = (vec2(texel) + 0.5)/vec2(textureSize(rblGDepth, 0))*2.0 - 1.0;\n",
+    "    vec4 view = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);\n",
+    "    return (rblInvView*vec4(view.xyz/view.w, 1.0)).xyz;\n",
+    "}\n",
+    "\n",
+    "RblShadingPoint rblGBufferSurface(ivec2 texel, float depth)\n",
+    "{\n",
+    "    vec4 a = texelFetch(rblGAlbedo, texel, 0);\n",
+    "    vec4 n = texelFetch(rblGNormal, texel, 0);\n",
+    "    vec4 p = texelFetch(rblGParams, texel, 0);\n",
+    "    RblShadingPoint s;\n",
+    "    s.position = rblPositionFromDepth(texel, depth);\n",
+    "    s.normal = rblUnpackNormal(n.rgb);\n",
+    "    s.albedo = rblSrgbToLinear(a.rgb);\n",
+    "    s.occlusion = a.a;\n",
+    "    s.specular = n.a;\n",
+    "    s.specularColor = vec3(1.0);\n",
+    "    s.shininess = 1.0;\n",
+    "    s.metalness = 0.0;\n",
+    "#if RBL_BRDF == 1\n",
+    "    // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
+    "    s.shininess = exp2((floor(p.r*255.0 + 0.5)*256.0 + floor(p.a*255.0 + 0.5))/65535.0*11.0);\n",
+    "#elif RBL_BRDF == 2\n",
+    "    s.metalness = p.r;\n",
+    "#endif\n",
+    "    return s;\n",
+    "}\n",
+    "\n",
+    "// Heat map for the light count view: black -> blue -> green -> yellow -> red -> white\n",
+    "vec3 rblHeat(float t)\n",
+    "{\n",
+    "    t = clamp(t, 0.0, 1.0)*5.0;\n",
+    "    vec3 c0 = vec3(0.0), c1 = vec3(0.0, 0.2, 1.0), c2 = vec3(0.0, 0.9, 0.3), c3 = vec3(1.0, 0.9, 0.0), c4 = vec3(1.0, 0.1, 0.0), c5 = vec3(1.0);\n",
+    "    if (t < 1.0) return mix(c0, c1, t);\n",
+    "    if (t < 2.0) return mix(c1, c2, t - 1.0);\n",
+    "    if (t < 3.0) return mix(c2, c3, t - 2.0);\n",
+    "    if (t < 4.0) return mix(c3, c4, t - 3.0);\n",
+    "    return mix(c4, c5, t - 4.0);\n",
+    "}\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    ivec2 texel = rblTexel();\n",
+    "    float depth = texelFetch(rblGDepth, texel, 0).r;\n",
+    "    if (depth >= 1.0) discard;                          // background: nothing was drawn here\n",
+    "#if RBL_PASS == 3\n",
+    "    vec3 position = rblPositionFromDepth(texel, depth);\n",
+    "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
+    "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
+    "    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, depth);\n",
+    "    vec3 v = vec3(0.0);\n",
+    "    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);\n",
+    "    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;\n",
+    "    else if (rblDebugView == 3) v = vec3(s.specular);\n",
+    "    else if (rblDebugView == 4) v = vec3(s.occlusion);\n",
+    "    else if (rblDebugView == 5) v = vec3(clamp(length(position - rblEye)/rblDebugScale, 0.0, 1.0));\n",
+    "    else if (rblDebugView == 6) v = fract(position/rblDebugScale);\n",
+    "    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);\n",
+    "    finalColor = vec4(v, 1.0);\n",
+    "#else\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, depth);\n",
+    "    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);\n",
+    "#if RBL_PASS == 1\n",
+    "#ifdef RBL_COUNT_LIGHTS\n",
+    "    finalColor = vec4(vec3(float(rblLightCount)), 1.0);\n",
+    "#else\n",
+    "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);\n",
+    "#endif\n",
+    "#else\n",
+    "    vec3 toLight = volumePosition.xyz - s.position;\n",
+    "    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;     // outside the range: no light\n",
+    "#ifdef RBL_COUNT_LIGHTS\n",
+    "    finalColor = vec4(1.0);\n",
+    "#else\n",
+    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff), 1.0);\n",
+    "#endif\n",
+    "#endif\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_deferred_vs[] = {
+    "// Deferred lighting passes, vertex stage. The loader prepends \"#version 330\" and the defines:\n",
+    "//   RBL_PASS 1  full-screen triangle from gl_VertexID (ambient + unbounded lights, resolve)\n",
+    "//   RBL_PASS 2  light volume: a sphere proxy per bounded point/spot light, one instanced draw\n",
+    "\n",
+    "out vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
+    "\n",
+    "#if RBL_PASS == 2\n",
+    "in vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
+    "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
+    "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
+    "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
+    "layout(location = 13) in vec3 rblVolumeFalloff;  // as rblLightAttenuation\n",
+    "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
+    "flat out vec4 volumePosition;\n",
+    "flat out vec4 volumeColor;\n",
+    "flat out vec4 volumeSpot;\n",
+    "flat out vec3 volumeFalloff;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    volumePosition = rblVolumePosition;\n",
+    "    volumeColor = rblVolumeColor;\n",
+    "    volumeSpot = rblVolumeSpot;\n",
+    "    volumeFalloff = rblVolumeFalloff;\n",
+    "    gl_Position = mvp*vec4(rblVolumePosition.xyz + vertexPosition/rblVolumeColor.a, 1.0);\n",
+    "    fragUv = (gl_Position.xy/gl_Position.w)*0.5 + 0.5;     // unused: the fragment stage uses gl_FragCoord\n",
+    "}\n",
+    "#else\n",
+    "void main()\n",
+    "{\n",
+    "    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));     // (0,0) (2,0) (0,2)\n",
+    "    fragUv = p;\n",
+    "    gl_Position = vec4(p*2.0 - 1.0, 0.0, 1.0);\n",
+    "}\n",
+    "#endif\n",
+    NULL };
+static const char *const rbl__shader_gbuffer_fs[] = {
+    "// Deferred geometry pass: the forward shader's material decoding (material.glsl), written to the\n",
+    "// G-buffer instead of being lit. The loader prepends \"#version 330\", the variant #defines,\n",
+    "// lighting.glsl and material.glsl. Layout (RblLoadGBuffer; 10 bytes per pixel + depth):\n",
+    "//   location 0  RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a occlusion\n",
+    "//   location 1  RGBA8    rgb world normal, octahedral 12+12 bits (rblPackNormal), a specular\n",
+    "//                        (Blinn-Phong intensity / GGX perceptual roughness)\n",
+    "//   location 2  RG8      Blinn-Phong: log2(shininess)/11 in 16 bits (r high, g low byte); GGX: r metalness\n",
+    "//   location 3  RGBA16F  light accumulation: the emission goes in here now, lights are added later\n",
+    "// Position is never stored: the lighting passes rebuild it from the depth texture.\n",
+    "\n",
+    "layout(location = 0) out vec4 rblOutAlbedo;\n",
+    "layout(location = 1) out vec4 rblOutNormal;\n",
+    "layout(location = 2) out vec4 rblOutParams;\n",
+    "layout(location = 3) out vec4 rblOutAccum;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    float alpha;\n",
+    "    vec3 emission, tangentNormal;\n",
+    "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
+    "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);\n",
+    "    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(sp.specular, 0.0, 1.0));\n",
+    "#if RBL_BRDF == 1\n",
+    "    float code = floor(clamp(log2(max(sp.shininess, 1.0))/11.0, 0.0, 1.0)*65535.0 + 0.5);\n",
+    "    rblOutParams = vec4(floor(code/256.0)/255.0, mod(code, 256.0)/255.0, 0.0, 1.0);\n",
+    "#else\n",
+    "    rblOutParams = vec4(sp.metalness, 0.0, 0.0, 1.0);\n",
+    "#endif\n",
+    "    rblOutAccum = vec4(emission, 1.0);\n",
+    "}\n",
+    NULL };
 static const char *const rbl__shader_lighting[] = {
     "// Shared lighting code: lights, falloff, BRDFs, fog and output transform. The loader places it after\n",
     "// the variant #defines and before the stage that shades (lit.fs.glsl), so every path evaluates the\n",
@@ -647,6 +903,27 @@ static const char *const rbl__shader_lighting[] = {
     "{\n",
     "    c = clamp(c, 0.0, 1.0);\n",
     "    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));\n",
+    "}\n",
+    "\n",
+    "// World normal <-> octahedral 12+12 bits in three 8-bit channels (the G-buffer's normal). Octahedral\n",
+    "// map (Cigolle et al. 2014), each coordinate rounded to 12 bits, packed high byte / two nibbles / low byte.\n",
+    "vec3 rblPackNormal(vec3 n)\n",
+    "{\n",
+    "    n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-20);\n",
+    "    vec2 e = n.xy;\n",
+    "    if (n.z < 0.0) e = (1.0 - abs(n.yx))*vec2((n.x >= 0.0)? 1.0 : -1.0, (n.y >= 0.0)? 1.0 : -1.0);\n",
+    "    uvec2 q = uvec2(floor(clamp(e*0.5 + 0.5, 0.0, 1.0)*4095.0 + 0.5));\n",
+    "    return vec3(float(q.x >> 4u), float(((q.x & 15u) << 4u) | (q.y >> 8u)), float(q.y & 255u))/255.0;\n",
+    "}\n",
+    "\n",
+    "vec3 rblUnpackNormal(vec3 c)\n",
+    "{\n",
+    "    uvec3 b = uvec3(floor(c*255.0 + 0.5));\n",
+    "    vec2 e = vec2(float((b.x << 4u) | (b.y >> 4u)), float(((b.y & 15u) << 8u) | b.z))/4095.0*2.0 - 1.0;\n",
+    "    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));\n",
+    "    float t = max(-n.z, 0.0);\n",
+    "    n.xy += vec2((n.x >= 0.0)? -t : t, (n.y >= 0.0)? -t : t);\n",
+    "    return normalize(n);        // |n| >= 1/sqrt(3): never zero\n",
     "}\n",
     "\n",
     "// What a surface point needs for shading, in linear units (filled by the forward fragment stage from\n",
@@ -800,141 +1077,35 @@ static const char *const rbl__shader_lighting[] = {
     NULL };
 static const char *const rbl__shader_lit_fs[] = {
     "// Forward lit fragment shader for billboards and raylib Models. The loader prepends \"#version 330\",\n",
-    "// the variant #defines and lighting.glsl (lights, BRDFs, fog, tonemap: shared with other passes).\n",
-    "// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps\n",
-    "// (normal, specular/roughness, occlusion) are linear. Occlusion attenuates ambient light only.\n",
-    "// Material defines (absent maps are never declared, so never sampled):\n",
-    "//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map\n",
-    "//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness\n",
-    "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
-    "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
-    "//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)\n",
-    "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
+    "// the variant #defines, lighting.glsl (lights, BRDFs, fog, tonemap) and material.glsl (surface\n",
+    "// decoding), so the deferred passes evaluate exactly the same code.\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
     "//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
-    "in vec3 fragPosition;\n",
-    "in vec2 fragTexCoord;\n",
-    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
-    "in vec3 fragNormal;\n",
-    "in vec4 fragTangent;\n",
-    "#ifdef RBL_VIEW_VECTOR\n",
-    "flat in vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
-    "#endif\n",
-    "\n",
-    "uniform sampler2D texture0;     // albedo (sRGB)\n",
-    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
-    "#define RBL_MATERIAL_TEXTURE\n",
-    "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
-    "#endif\n",
-    "#if RBL_EMISSIVE > 0\n",
-    "uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)\n",
-    "uniform float rblEmissiveIntensity;\n",
-    "#endif\n",
-    "#ifdef RBL_EMISSIVE_COLOR\n",
-    "uniform vec3 rblEmissiveColor;\n",
-    "#endif\n",
-    "#if RBL_BRDF == 1\n",
-    "uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shininess\n",
-    "#elif RBL_BRDF == 2\n",
-    "uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness\n",
-    "#endif\n",
-    "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
-    "uniform float rblAlphaCutoff;\n",
-    "\n",
     "out vec4 finalColor;\n",
-    "\n",
-    "// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU\n",
-    "// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)\n",
-    "vec3 rblDecodedUnit(vec3 e)\n",
-    "{\n",
-    "    return (dot(e, e) < 1.0/4096.0)? vec3(0.0, 0.0, 1.0) : normalize(e);\n",
-    "}\n",
-    "\n",
-    "vec3 rblDecodeNormal(vec4 m)\n",
-    "{\n",
-    "#if RBL_NORMAL_ENCODING == 1\n",
-    "    vec2 e = m.rg*2.0 - 1.0;                                // hemi-octahedral, stored rotated 45 degrees\n",
-    "    vec2 p = vec2(e.x + e.y, e.x - e.y)*0.5;\n",
-    "    return rblDecodedUnit(vec3(p, 1.0 - max(abs(e.x), abs(e.y))));     // = 1-|p.x|-|p.y|, never negative\n",
-    "#elif RBL_NORMAL_ENCODING == 2\n",
-    "    vec2 e = m.rg*2.0 - 1.0;                                // X and Y, Z rebuilt\n",
-    "    return rblDecodedUnit(vec3(e, sqrt(max(0.0, 1.0 - dot(e, e)))));\n",
-    "#elif RBL_NORMAL_ENCODING == 3\n",
-    "    return rblDecodedUnit(m.rgb*2.0 - 1.0);                 // plain RGB map\n",
-    "#else\n",
-    "    return vec3(0.0, 0.0, 1.0);\n",
-    "#endif\n",
-    "}\n",
     "\n",
     "void main()\n",
     "{\n",
-    "    vec4 texel = texture(texture0, fragTexCoord);\n",
-    "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
-    "    if (albedo.a < rblAlphaCutoff) discard;\n",
-    "\n",
-    "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
-    "#ifdef RBL_MATERIAL_TEXTURE\n",
-    "    vec4 material = texture(texture2, fragTexCoord);\n",
-    "#endif\n",
-    "    vec3 tangentNormal = vec3(0.0, 0.0, 1.0);\n",
-    "#if RBL_NORMAL_ENCODING > 0\n",
-    "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n",
-    "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n",
-    "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n",
-    "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n",
-    "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
-    "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
-    "    tangentNormal = rblDecodeNormal(material);\n",
-    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);\n",
-    "#endif\n",
-    "    RblShadingPoint sp;\n",
-    "    sp.position = fragPosition;\n",
-    "    sp.normal = n;\n",
-    "    sp.albedo = albedo.rgb;\n",
-    "    sp.specular = 1.0;\n",
-    "    sp.specularColor = vec3(1.0);\n",
-    "    sp.shininess = 1.0;\n",
-    "    sp.metalness = 0.0;\n",
-    "#if RBL_BRDF == 1\n",
-    "    sp.specularColor = rblSpecularColor.rgb;\n",
-    "    sp.shininess = rblSpecularColor.a;\n",
-    "#elif RBL_BRDF == 2\n",
-    "    sp.specular = rblRoughMetal.x;\n",
-    "    sp.metalness = rblRoughMetal.y;\n",
-    "#endif\n",
-    "#ifdef RBL_SPECULAR\n",
-    "    sp.specular = material.b;\n",
-    "#endif\n",
-    "    sp.occlusion = 1.0;\n",
-    "#ifdef RBL_OCCLUSION\n",
-    "    sp.occlusion = material.a;\n",
-    "#endif\n",
+    "    float alpha;\n",
+    "    vec3 emission, tangentNormal;\n",
+    "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "    vec3 eye = fragEye;\n",
     "#else\n",
-    "    vec3 eye = fragPosition + n;     // unused: no view-dependent term compiled\n",
+    "    vec3 eye = fragPosition + sp.normal;     // unused: no view-dependent term compiled\n",
     "#endif\n",
-    "    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye);\n",
-    "#if RBL_EMISSIVE == 1\n",
-    "    color += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;\n",
-    "#elif RBL_EMISSIVE == 2\n",
-    "    color += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;\n",
-    "#endif\n",
-    "#ifdef RBL_EMISSIVE_COLOR\n",
-    "    color += rblEmissiveColor;\n",
-    "#endif\n",
+    "    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye) + emission;\n",
     "\n",
     "#if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)\n",
     "    finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);\n",
     "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)\n",
-    "    finalColor = vec4(n*0.5 + 0.5, 1.0);\n",
+    "    finalColor = vec4(sp.normal*0.5 + 0.5, 1.0);\n",
     "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)\n",
     "    finalColor = vec4(vec3(sp.specular), 1.0);\n",
     "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)\n",
     "    finalColor = vec4(vec3(sp.occlusion), 1.0);\n",
     "#else\n",
-    "    finalColor = vec4(rblFinish(color, fragPosition, eye), albedo.a);\n",
+    "    finalColor = vec4(rblFinish(color, fragPosition, eye), alpha);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -1148,12 +1319,141 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    gl_Position = mvp*vec4(p, 1.0);\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_material[] = {
+    "// Surface decoding shared by every pass that shades a material (forward lit.fs.glsl, the deferred\n",
+    "// G-buffer gbuffer.fs.glsl): vertex inputs, material uniforms and maps, alpha test, normal-map\n",
+    "// decode and tangent frame, BRDF parameters. The loader places it after lighting.glsl.\n",
+    "// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps\n",
+    "// (normal, specular/roughness, occlusion) are linear.\n",
+    "// Material defines (absent maps are never declared, so never sampled):\n",
+    "//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map\n",
+    "//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness\n",
+    "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
+    "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
+    "//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)\n",
+    "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
+    "\n",
+    "in vec3 fragPosition;\n",
+    "in vec2 fragTexCoord;\n",
+    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
+    "in vec3 fragNormal;\n",
+    "in vec4 fragTangent;\n",
+    "#ifdef RBL_VIEW_VECTOR\n",
+    "flat in vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
+    "#endif\n",
+    "\n",
+    "uniform sampler2D texture0;     // albedo (sRGB)\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
+    "#define RBL_MATERIAL_TEXTURE\n",
+    "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
+    "#endif\n",
+    "#if RBL_EMISSIVE > 0\n",
+    "uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)\n",
+    "uniform float rblEmissiveIntensity;\n",
+    "#endif\n",
+    "#ifdef RBL_EMISSIVE_COLOR\n",
+    "uniform vec3 rblEmissiveColor;\n",
+    "#endif\n",
+    "#if RBL_BRDF == 1\n",
+    "uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shininess\n",
+    "#elif RBL_BRDF == 2\n",
+    "uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness\n",
+    "#endif\n",
+    "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
+    "uniform float rblAlphaCutoff;\n",
+    "\n",
+    "// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU\n",
+    "// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)\n",
+    "vec3 rblDecodedUnit(vec3 e)\n",
+    "{\n",
+    "    return (dot(e, e) < 1.0/4096.0)? vec3(0.0, 0.0, 1.0) : normalize(e);\n",
+    "}\n",
+    "\n",
+    "vec3 rblDecodeNormal(vec4 m)\n",
+    "{\n",
+    "#if RBL_NORMAL_ENCODING == 1\n",
+    "    vec2 e = m.rg*2.0 - 1.0;                                // hemi-octahedral, stored rotated 45 degrees\n",
+    "    vec2 p = vec2(e.x + e.y, e.x - e.y)*0.5;\n",
+    "    return rblDecodedUnit(vec3(p, 1.0 - max(abs(e.x), abs(e.y))));     // = 1-|p.x|-|p.y|, never negative\n",
+    "#elif RBL_NORMAL_ENCODING == 2\n",
+    "    vec2 e = m.rg*2.0 - 1.0;                                // X and Y, Z rebuilt\n",
+    "    return rblDecodedUnit(vec3(e, sqrt(max(0.0, 1.0 - dot(e, e)))));\n",
+    "#elif RBL_NORMAL_ENCODING == 3\n",
+    "    return rblDecodedUnit(m.rgb*2.0 - 1.0);                 // plain RGB map\n",
+    "#else\n",
+    "    return vec3(0.0, 0.0, 1.0);\n",
+    "#endif\n",
+    "}\n",
+    "\n",
+    "// The material at this fragment: discards below the alpha cutoff; alpha, emission and the\n",
+    "// tangent-space normal (debug views) come back through the out parameters\n",
+    "RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)\n",
+    "{\n",
+    "\n",
+    "    vec4 texel = texture(texture0, fragTexCoord);\n",
+    "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
+    "    if (albedo.a < rblAlphaCutoff) discard;\n",
+    "\n",
+    "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
+    "#ifdef RBL_MATERIAL_TEXTURE\n",
+    "    vec4 material = texture(texture2, fragTexCoord);\n",
+    "#endif\n",
+    "    tangentNormal = vec3(0.0, 0.0, 1.0);\n",
+    "#if RBL_NORMAL_ENCODING > 0\n",
+    "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n",
+    "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n",
+    "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n",
+    "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n",
+    "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
+    "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
+    "    tangentNormal = rblDecodeNormal(material);\n",
+    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);\n",
+    "#endif\n",
+    "    RblShadingPoint sp;\n",
+    "    sp.position = fragPosition;\n",
+    "    sp.normal = n;\n",
+    "    sp.albedo = albedo.rgb;\n",
+    "    sp.specular = 1.0;\n",
+    "    sp.specularColor = vec3(1.0);\n",
+    "    sp.shininess = 1.0;\n",
+    "    sp.metalness = 0.0;\n",
+    "#if RBL_BRDF == 1\n",
+    "    sp.specularColor = rblSpecularColor.rgb;\n",
+    "    sp.shininess = rblSpecularColor.a;\n",
+    "#elif RBL_BRDF == 2\n",
+    "    sp.specular = rblRoughMetal.x;\n",
+    "    sp.metalness = rblRoughMetal.y;\n",
+    "#endif\n",
+    "#ifdef RBL_SPECULAR\n",
+    "    sp.specular = material.b;\n",
+    "#endif\n",
+    "    sp.occlusion = 1.0;\n",
+    "#ifdef RBL_OCCLUSION\n",
+    "    sp.occlusion = material.a;\n",
+    "#endif\n",
+    "    alpha = albedo.a;\n",
+    "    emission = vec3(0.0);\n",
+    "#if RBL_EMISSIVE == 1\n",
+    "    emission += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;\n",
+    "#elif RBL_EMISSIVE == 2\n",
+    "    emission += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;\n",
+    "#endif\n",
+    "#ifdef RBL_EMISSIVE_COLOR\n",
+    "    emission += rblEmissiveColor;\n",
+    "#endif\n",
+    "    return sp;\n",
+    "}\n",
+    NULL };
 // Every embedded shader by file name (tests compare these with shaders/*.glsl)
 static const struct { const char *file; const char *const *source; } rbl__shaderFiles[] = {
+    { "deferred.fs.glsl", rbl__shader_deferred_fs },
+    { "deferred.vs.glsl", rbl__shader_deferred_vs },
+    { "gbuffer.fs.glsl", rbl__shader_gbuffer_fs },
     { "lighting.glsl", rbl__shader_lighting },
     { "lit.fs.glsl", rbl__shader_lit_fs },
     { "lit.vs.glsl", rbl__shader_lit_vs },
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
+    { "material.glsl", rbl__shader_material },
 };
 // RBL-SHADERS-END
 
@@ -2899,19 +3199,25 @@ static char *rbl__joinSource(const char *prefix, const char *const *lines)
 }
 
 // Compile a variant: "#version 330", the variant's defines, then the embedded sources (the fragment
-// stage may be several files: the shared lighting code, then the pass). raylib substitutes its
-// default shader when compilation fails; report that as a failure.
-static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *fsCommon, const char *const *fs, const char *defines)
+// stage is several files: the shared lighting and material code, then the pass; fsParts is
+// NULL-terminated). raylib substitutes its default shader when compilation fails; report that.
+static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *const *fsParts, const char *defines)
 {
     char prefix[1024];
     snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
     char *vsFull = rbl__joinSource(prefix, vs);
-    char *common = (fsCommon != NULL)? rbl__joinSource(prefix, fsCommon) : NULL;
-    char *fsFull = rbl__joinSource((common != NULL)? common : prefix, fs);
+    char *fsFull = NULL;
+    for (int i = 0; (fsParts[i] != NULL); i++)
+    {
+        char *next = rbl__joinSource((fsFull != NULL)? fsFull : prefix, fsParts[i]);
+        RBL_FREE(fsFull);
+        fsFull = next;
+        if (fsFull == NULL) break;
+    }
     Shader shader;
     memset(&shader, 0, sizeof(shader));
-    if ((vsFull != NULL) && (fsFull != NULL) && ((fsCommon == NULL) || (common != NULL))) shader = LoadShaderFromMemory(vsFull, fsFull);
-    RBL_FREE(vsFull); RBL_FREE(common); RBL_FREE(fsFull);
+    if ((vsFull != NULL) && (fsFull != NULL)) shader = LoadShaderFromMemory(vsFull, fsFull);
+    RBL_FREE(vsFull); RBL_FREE(fsFull);
     if ((shader.id == 0) || (shader.id == rlGetShaderIdDefault()))
     {
         TraceLog(LOG_WARNING, "RBL: shader variant failed to compile/link (defines: %s)", defines);
@@ -2984,6 +3290,14 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->exposure = (in.exposure == 0.0f)? 1.0f : in.exposure;
     out->gamma = in.gamma;
     out->instanced = in.instanced;
+    out->deferred = in.deferred;
+    if (in.deferred)
+    {
+        // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
+        out->maxLights = 1; out->lightFeatures = RBL_LIGHTS_POINT; out->hemisphereAmbient = false;
+        memset(&out->fog, 0, sizeof(out->fog)); out->tonemap = RBL_TONEMAP_NONE; out->exposure = 1.0f; out->gamma = 0.0f;
+        out->linearOutput = false; out->debugView = 0;
+    }
     out->linearOutput = in.linearOutput;
     out->debugView = in.debugView;
     return NULL;
@@ -3024,7 +3338,8 @@ static RblLitShader rbl__compileLit(const RblLitShaderDesc *d)
     memset(&lit, 0, sizeof(lit));
     char defines[768];
     rbl__litDefines(d, defines, sizeof(defines));
-    lit.shader = rbl__loadShaderVariant(d->instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, rbl__shader_lighting, rbl__shader_lit_fs, defines);
+    const char *const *const fsParts[4] = { rbl__shader_lighting, rbl__shader_material, d->deferred? rbl__shader_gbuffer_fs : rbl__shader_lit_fs, NULL };
+    lit.shader = rbl__loadShaderVariant(d->instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, fsParts, defines);
     if (lit.shader.id == 0) return lit;
 
     lit.maxLights = d->maxLights;
@@ -3286,6 +3601,547 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
     }
     for (int i = 0; i < 3; i++) if (textures[i].id != 0) material->maps[slots[i]].texture = textures[i];
     return true;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: deferred G-buffer
+//----------------------------------------------------------------------------------
+// Test hook: pretend MRT / float targets are unavailable (the fallback test sets it)
+static bool rbl__gbufferForceFailure = false;
+
+enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMBIENT_COUNT, RBL__PASS_VOLUME_COUNT };
+enum { RBL__GLOC_ALBEDO = 0, RBL__GLOC_NORMAL, RBL__GLOC_PARAMS, RBL__GLOC_DEPTH, RBL__GLOC_ACCUM, RBL__GLOC_INVPROJ, RBL__GLOC_INVVIEW,
+       RBL__GLOC_EYE, RBL__GLOC_MVP, RBL__GLOC_VIEW, RBL__GLOC_SCALE, RBL__GLOC_AMBIENT, RBL__GLOC_GROUND, RBL__GLOC_UP,
+       RBL__GLOC_LIGHT_COUNT, RBL__GLOC_LIGHT_POSITION, RBL__GLOC_LIGHT_COLOR, RBL__GLOC_LIGHT_SPOT, RBL__GLOC_LIGHT_ATTENUATION,
+       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_COUNT };
+#define RBL__INSTANCE_FLOATS 16         // position, colour, spot (vec4 each), falloff (vec3) + padding
+
+// Inverse of a 4x4 (cofactors in double: the matrices are projection and view, well conditioned)
+static Matrix rbl__matInvert(Matrix m)
+{
+    float a[16];
+    rbl__matToArray(m, a);
+    double b[16], inv[16];
+    for (int i = 0; i < 16; i++) b[i] = a[i];
+    inv[0] = b[5]*b[10]*b[15] - b[5]*b[11]*b[14] - b[9]*b[6]*b[15] + b[9]*b[7]*b[14] + b[13]*b[6]*b[11] - b[13]*b[7]*b[10];
+    inv[4] = -b[4]*b[10]*b[15] + b[4]*b[11]*b[14] + b[8]*b[6]*b[15] - b[8]*b[7]*b[14] - b[12]*b[6]*b[11] + b[12]*b[7]*b[10];
+    inv[8] = b[4]*b[9]*b[15] - b[4]*b[11]*b[13] - b[8]*b[5]*b[15] + b[8]*b[7]*b[13] + b[12]*b[5]*b[11] - b[12]*b[7]*b[9];
+    inv[12] = -b[4]*b[9]*b[14] + b[4]*b[10]*b[13] + b[8]*b[5]*b[14] - b[8]*b[6]*b[13] - b[12]*b[5]*b[10] + b[12]*b[6]*b[9];
+    inv[1] = -b[1]*b[10]*b[15] + b[1]*b[11]*b[14] + b[9]*b[2]*b[15] - b[9]*b[3]*b[14] - b[13]*b[2]*b[11] + b[13]*b[3]*b[10];
+    inv[5] = b[0]*b[10]*b[15] - b[0]*b[11]*b[14] - b[8]*b[2]*b[15] + b[8]*b[3]*b[14] + b[12]*b[2]*b[11] - b[12]*b[3]*b[10];
+    inv[9] = -b[0]*b[9]*b[15] + b[0]*b[11]*b[13] + b[8]*b[1]*b[15] - b[8]*b[3]*b[13] - b[12]*b[1]*b[11] + b[12]*b[3]*b[9];
+    inv[13] = b[0]*b[9]*b[14] - b[0]*b[10]*b[13] - b[8]*b[1]*b[14] + b[8]*b[2]*b[13] + b[12]*b[1]*b[10] - b[12]*b[2]*b[9];
+    inv[2] = b[1]*b[6]*b[15] - b[1]*b[7]*b[14] - b[5]*b[2]*b[15] + b[5]*b[3]*b[14] + b[13]*b[2]*b[7] - b[13]*b[3]*b[6];
+    inv[6] = -b[0]*b[6]*b[15] + b[0]*b[7]*b[14] + b[4]*b[2]*b[15] - b[4]*b[3]*b[14] - b[12]*b[2]*b[7] + b[12]*b[3]*b[6];
+    inv[10] = b[0]*b[5]*b[15] - b[0]*b[7]*b[13] - b[4]*b[1]*b[15] + b[4]*b[3]*b[13] + b[12]*b[1]*b[7] - b[12]*b[3]*b[5];
+    inv[14] = -b[0]*b[5]*b[14] + b[0]*b[6]*b[13] + b[4]*b[1]*b[14] - b[4]*b[2]*b[13] - b[12]*b[1]*b[6] + b[12]*b[2]*b[5];
+    inv[3] = -b[1]*b[6]*b[11] + b[1]*b[7]*b[10] + b[5]*b[2]*b[11] - b[5]*b[3]*b[10] - b[9]*b[2]*b[7] + b[9]*b[3]*b[6];
+    inv[7] = b[0]*b[6]*b[11] - b[0]*b[7]*b[10] - b[4]*b[2]*b[11] + b[4]*b[3]*b[10] + b[8]*b[2]*b[7] - b[8]*b[3]*b[6];
+    inv[11] = -b[0]*b[5]*b[11] + b[0]*b[7]*b[9] + b[4]*b[1]*b[11] - b[4]*b[3]*b[9] - b[8]*b[1]*b[7] + b[8]*b[3]*b[5];
+    inv[15] = b[0]*b[5]*b[10] - b[0]*b[6]*b[9] - b[4]*b[1]*b[10] + b[4]*b[2]*b[9] + b[8]*b[1]*b[6] - b[8]*b[2]*b[5];
+    double det = b[0]*inv[0] + b[1]*inv[4] + b[2]*inv[8] + b[3]*inv[12];
+    double id = (det != 0.0)? 1.0/det : 0.0;
+    Matrix r;
+    r.m0 = (float)(inv[0]*id); r.m1 = (float)(inv[1]*id); r.m2 = (float)(inv[2]*id); r.m3 = (float)(inv[3]*id);
+    r.m4 = (float)(inv[4]*id); r.m5 = (float)(inv[5]*id); r.m6 = (float)(inv[6]*id); r.m7 = (float)(inv[7]*id);
+    r.m8 = (float)(inv[8]*id); r.m9 = (float)(inv[9]*id); r.m10 = (float)(inv[10]*id); r.m11 = (float)(inv[11]*id);
+    r.m12 = (float)(inv[12]*id); r.m13 = (float)(inv[13]*id); r.m14 = (float)(inv[14]*id); r.m15 = (float)(inv[15]*id);
+    return r;
+}
+
+// Sphere proxy enclosing the unit sphere: a UV sphere scaled so every face plane lies outside it
+static void rbl__loadVolumeMesh(RblGBuffer *g)
+{
+    enum { RINGS = 8, SLICES = 12, VERTS = (RINGS + 1)*(SLICES + 1), INDICES = RINGS*SLICES*6 };
+    float v[VERTS*3];
+    unsigned short idx[INDICES];
+    for (int r = 0; r <= RINGS; r++)
+        for (int sl = 0; sl <= SLICES; sl++)
+        {
+            double th = PI*r/RINGS, ph = 2.0*PI*sl/SLICES;
+            float *p = &v[(r*(SLICES + 1) + sl)*3];
+            p[0] = (float)(sin(th)*cos(ph)); p[1] = (float)cos(th); p[2] = (float)(sin(th)*sin(ph));
+        }
+    int n = 0;
+    for (int r = 0; r < RINGS; r++)
+        for (int sl = 0; sl < SLICES; sl++)
+        {
+            unsigned short a = (unsigned short)(r*(SLICES + 1) + sl), b = (unsigned short)(a + SLICES + 1);
+            // Outward-facing counter-clockwise triangles (degenerate ones at the poles are harmless)
+            idx[n++] = a; idx[n++] = (unsigned short)(a + 1); idx[n++] = b;
+            idx[n++] = (unsigned short)(a + 1); idx[n++] = (unsigned short)(b + 1); idx[n++] = b;
+        }
+    // Smallest distance from the centre to a (non-degenerate) face plane: scale so it becomes 1
+    double minDist = 1.0;
+    for (int i = 0; i < INDICES; i += 3)
+    {
+        const float *p0 = &v[idx[i]*3], *p1 = &v[idx[i + 1]*3], *p2 = &v[idx[i + 2]*3];
+        double e1[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] }, e2[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+        double c[3] = { e1[1]*e2[2] - e1[2]*e2[1], e1[2]*e2[0] - e1[0]*e2[2], e1[0]*e2[1] - e1[1]*e2[0] };
+        double l = sqrt(c[0]*c[0] + c[1]*c[1] + c[2]*c[2]);
+        if (l < 1e-9) continue;
+        double d = fabs(c[0]*p0[0] + c[1]*p0[1] + c[2]*p0[2])/l;
+        if (d < minDist) minDist = d;
+    }
+    float scale = (float)(1.0/minDist)*1.001f;
+    for (int i = 0; i < VERTS*3; i++) v[i] *= scale;
+
+    g->volumeVao = rlLoadVertexArray();
+    rlEnableVertexArray(g->volumeVao);
+    g->volumeVbo = rlLoadVertexBuffer(v, (int)sizeof(v), false);
+    rlSetVertexAttribute(0, 3, RL_FLOAT, false, 0, 0);
+    rlEnableVertexAttribute(0);
+    g->volumeIbo = rlLoadVertexBufferElement(idx, (int)sizeof(idx), false);
+    g->volumeIndexCount = INDICES;
+    g->instanceVbo = rlLoadVertexBuffer(NULL, g->instanceCapacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
+    for (int a = 0; a < 4; a++)
+    {
+        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, (a == 3)? 3 : 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
+        rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
+        rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
+    }
+    rlDisableVertexArray();
+    g->emptyVao = rlLoadVertexArray();
+}
+
+static void rbl__unloadTargets(RblGBuffer *g)
+{
+    if (g->id != 0) rlUnloadFramebuffer(g->id);
+    if (g->lightId != 0) rlUnloadFramebuffer(g->lightId);
+    Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
+    for (int i = 0; i < 5; i++) { if (t[i]->id != 0) rlUnloadTexture(t[i]->id); memset(t[i], 0, sizeof(Texture2D)); }
+    g->id = 0; g->lightId = 0;
+}
+
+static Texture2D rbl__targetTexture(int width, int height, int format)
+{
+    Texture2D t;
+    memset(&t, 0, sizeof(t));
+    t.id = rlLoadTexture(NULL, width, height, format, 1);
+    t.width = width; t.height = height; t.mipmaps = 1; t.format = format;
+    if (t.id != 0)
+    {
+        rlTextureParameters(t.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlTextureParameters(t.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlTextureParameters(t.id, RL_TEXTURE_WRAP_S, RL_TEXTURE_WRAP_CLAMP);
+        rlTextureParameters(t.id, RL_TEXTURE_WRAP_T, RL_TEXTURE_WRAP_CLAMP);
+    }
+    return t;
+}
+
+// Targets and framebuffers at the G-buffer's size; false (and nothing left loaded) on any failure
+static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
+{
+    g->albedo = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+    g->normal = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+    g->params = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
+    g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
+    memset(&g->depth, 0, sizeof(g->depth));
+    g->depth.id = rlLoadTextureDepth(width, height, false);
+    g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__gbufferForceFailure;
+    if (ok)
+    {
+        rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlTextureParameters(g->depth.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        g->id = rlLoadFramebuffer();
+        rlEnableFramebuffer(g->id);
+        rlFramebufferAttach(g->id, g->albedo.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->id, g->normal.id, RL_ATTACHMENT_COLOR_CHANNEL1, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->id, g->params.id, RL_ATTACHMENT_COLOR_CHANNEL2, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->id, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL3, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->id, g->depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlActiveDrawBuffers(4);                     // framebuffer state: set once
+        ok = rlFramebufferComplete(g->id);
+        g->lightId = rlLoadFramebuffer();
+        rlEnableFramebuffer(g->lightId);
+        rlFramebufferAttach(g->lightId, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+        ok = ok && rlFramebufferComplete(g->lightId);
+        rlDisableFramebuffer();
+    }
+    if (!ok)
+    {
+        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (MRT / RGBA16F / depth texture unavailable?): render forward instead", width, height);
+        rbl__unloadTargets(g);
+        return false;
+    }
+    g->width = width; g->height = height;
+    return true;
+}
+
+static const char *const rbl__gbufferUniforms[RBL__GLOC_COUNT] = { "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum",
+    "rblInvProjection", "rblInvView", "rblEye", "mvp", "rblDebugView", "rblDebugScale", "rblAmbient", "rblAmbientGround", "rblAmbientUp",
+    "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation", "rblFog", "rblFogStart", "rblExposure" };
+
+RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
+{
+    RblGBuffer g;
+    memset(&g, 0, sizeof(g));
+    if (width == 0) width = rlGetFramebufferWidth();
+    if (height == 0) height = rlGetFramebufferHeight();
+    shading.deferred = false;
+    shading.instanced = false;
+    shading.debugView = 0;
+    shading.maxLights = RBL_MAX_LIGHTS;        // unbounded lights (and the naive loop) go through full-screen passes
+    const char *bad = rbl__normaliseLitDesc(shading, &g.shading);
+    if ((bad == NULL) && ((width <= 0) || (height <= 0))) bad = "size must be positive";
+    if (bad != NULL)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad);
+        memset(&g, 0, sizeof(g));
+        return g;
+    }
+    if (!rbl__loadTargets(&g, width, height)) { memset(&g, 0, sizeof(g)); return g; }
+
+    // Pass programs: the lighting.glsl of the forward path plus deferred.fs.glsl
+    char base[768];
+    rbl__litDefines(&g.shading, base, sizeof(base));
+    const char *passDefines[5] = { "#define RBL_PASS 1\n", "#define RBL_PASS 2\n", "#define RBL_PASS 3\n",
+                                   "#define RBL_PASS 1\n#define RBL_COUNT_LIGHTS\n", "#define RBL_PASS 2\n#define RBL_COUNT_LIGHTS\n" };
+    bool ok = true;
+    for (int p = 0; (p < 5) && ok; p++)
+    {
+        char defines[1024];
+        snprintf(defines, sizeof(defines), "%s%s", base, passDefines[p]);
+        const char *const *const fsParts[3] = { rbl__shader_lighting, rbl__shader_deferred_fs, NULL };
+        g.passes[p] = rbl__loadShaderVariant(rbl__shader_deferred_vs, fsParts, defines);
+        ok = (g.passes[p].id != 0);
+        for (int k = 0; ok && (k < RBL__GLOC_COUNT); k++) g.locs[p][k] = GetShaderLocation(g.passes[p], rbl__gbufferUniforms[k]);
+    }
+    if (!ok)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: a lighting pass failed to compile: render forward instead");
+        for (int p = 0; p < 5; p++) if (g.passes[p].id != 0) UnloadShader(g.passes[p]);
+        rbl__unloadTargets(&g);
+        memset(&g, 0, sizeof(g));
+        return g;
+    }
+    g.instanceCapacity = 256;
+    g.instanceData = (float *)RBL_MALLOC((size_t)g.instanceCapacity*RBL__INSTANCE_FLOATS*sizeof(float));
+    rbl__loadVolumeMesh(&g);
+    g.debugScale = 1.0f;
+    g.ambientUp = rbl__v3(0.0f, 1.0f, 0.0f);
+    g.view = rbl__identity(); g.projection = rbl__identity();
+    TraceLog(LOG_INFO, "RBL: G-buffer %ix%i loaded (%i bytes/pixel + depth + RGBA16F accumulation)", width, height, RblGBufferBytesPerPixel(g));
+    return g;
+}
+
+bool RblIsGBufferValid(RblGBuffer gbuffer)
+{
+    return (gbuffer.id != 0) && (gbuffer.lightId != 0) && (gbuffer.passes[RBL__PASS_RESOLVE].id != 0) && (gbuffer.instanceData != NULL);
+}
+
+bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
+{
+    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer) || (width <= 0) || (height <= 0))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer or size %ix%i", width, height);
+        return false;
+    }
+    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
+    RblGBuffer fresh = *gbuffer;
+    if (!rbl__loadTargets(&fresh, width, height)) return false;    // the old targets stay
+    rbl__unloadTargets(gbuffer);
+    gbuffer->id = fresh.id; gbuffer->lightId = fresh.lightId;
+    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
+    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
+    gbuffer->width = width; gbuffer->height = height;
+    return true;
+}
+
+void RblUnloadGBuffer(RblGBuffer *gbuffer)
+{
+    if (gbuffer == NULL) return;
+    rbl__unloadTargets(gbuffer);
+    for (int p = 0; p < 5; p++) if (gbuffer->passes[p].id != 0) UnloadShader(gbuffer->passes[p]);
+    if (gbuffer->volumeVao != 0) rlUnloadVertexArray(gbuffer->volumeVao);
+    if (gbuffer->emptyVao != 0) rlUnloadVertexArray(gbuffer->emptyVao);
+    if (gbuffer->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->volumeVbo);
+    if (gbuffer->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->volumeIbo);
+    if (gbuffer->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->instanceVbo);
+    RBL_FREE(gbuffer->instanceData);
+    memset(gbuffer, 0, sizeof(*gbuffer));
+}
+
+int RblGBufferBytesPerPixel(RblGBuffer gbuffer)
+{
+    if (gbuffer.id == 0) return 0;
+    return GetPixelDataSize(1, 1, gbuffer.albedo.format) + GetPixelDataSize(1, 1, gbuffer.normal.format) + GetPixelDataSize(1, 1, gbuffer.params.format);
+}
+
+// View matrix in raylib's layout (as MatrixLookAt), from the header's degenerate-safe camera frame
+static Matrix rbl__viewMatrix(const RblView *v)
+{
+    Matrix m;
+    m.m0 = v->right.x; m.m1 = v->up.x; m.m2 = v->back.x; m.m3 = 0.0f;
+    m.m4 = v->right.y; m.m5 = v->up.y; m.m6 = v->back.y; m.m7 = 0.0f;
+    m.m8 = v->right.z; m.m9 = v->up.z; m.m10 = v->back.z; m.m11 = 0.0f;
+    m.m12 = -rbl__dot(v->right, v->eye); m.m13 = -rbl__dot(v->up, v->eye); m.m14 = -rbl__dot(v->back, v->eye); m.m15 = 1.0f;
+    return m;
+}
+
+bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
+{
+    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) return false;
+    rlDrawRenderBatchActive();
+    rlEnableFramebuffer(gbuffer->id);
+    rlViewport(0, 0, gbuffer->width, gbuffer->height);
+    rlDisableColorBlend();                          // G-buffer values are data: never blended
+    rlEnableDepthTest();
+    rlEnableDepthMask();
+    rlClearColor(0, 0, 0, 0);
+    rlClearScreenBuffers();
+    // The projection BeginMode3D() would build for a target of this size
+    rlMatrixMode(RL_PROJECTION);
+    rlPushMatrix();
+    rlLoadIdentity();
+    double aspect = (double)gbuffer->width/(double)gbuffer->height;
+    double nearPlane = rlGetCullDistanceNear(), farPlane = rlGetCullDistanceFar();
+    if (camera.projection == CAMERA_ORTHOGRAPHIC)
+    {
+        double top = camera.fovy/2.0, right = top*aspect;
+        rlOrtho(-right, right, -top, top, nearPlane, farPlane);
+    }
+    else
+    {
+        double top = nearPlane*tan(camera.fovy*0.5*DEG2RAD), right = top*aspect;
+        rlFrustum(-right, right, -top, top, nearPlane, farPlane);
+    }
+    rlMatrixMode(RL_MODELVIEW);
+    rlLoadIdentity();
+    RblView v = RblGetView(camera);
+    float view[16];
+    rbl__matToArray(rbl__viewMatrix(&v), view);
+    rlMultMatrixf(view);
+    gbuffer->view = rlGetMatrixModelview();
+    gbuffer->projection = rlGetMatrixProjection();
+    gbuffer->eye = camera.position;
+    return true;
+}
+
+void RblEndGBuffer(RblGBuffer *gbuffer)
+{
+    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) return;
+    rlDrawRenderBatchActive();
+    rlMatrixMode(RL_PROJECTION);
+    rlPopMatrix();
+    rlMatrixMode(RL_MODELVIEW);
+    rlLoadIdentity();
+    rlEnableColorBlend();
+    rlDisableDepthTest();
+    rlDisableFramebuffer();
+    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());
+}
+
+// Binds the G-buffer textures and camera uniforms of one pass
+static void rbl__bindGBufferPass(const RblGBuffer *g, int pass)
+{
+    const int *loc = g->locs[pass];
+    rlEnableShader(g->passes[pass].id);
+    unsigned int tex[5] = { g->albedo.id, g->normal.id, g->params.id, g->depth.id, g->accum.id };
+    for (int i = 0; i < 5; i++)
+    {
+        if (loc[RBL__GLOC_ALBEDO + i] == -1) continue;
+        rlActiveTextureSlot(i);
+        rlEnableTexture(tex[i]);
+        rlSetUniform(loc[RBL__GLOC_ALBEDO + i], &i, SHADER_UNIFORM_INT, 1);
+    }
+    if (loc[RBL__GLOC_INVPROJ] != -1) rlSetUniformMatrix(loc[RBL__GLOC_INVPROJ], rbl__matInvert(g->projection));
+    if (loc[RBL__GLOC_INVVIEW] != -1) rlSetUniformMatrix(loc[RBL__GLOC_INVVIEW], rbl__matInvert(g->view));
+    if (loc[RBL__GLOC_MVP] != -1) rlSetUniformMatrix(loc[RBL__GLOC_MVP], rbl__matMul(g->view, g->projection));
+    float eye[3] = { g->eye.x, g->eye.y, g->eye.z };
+    if (loc[RBL__GLOC_EYE] != -1) rlSetUniform(loc[RBL__GLOC_EYE], eye, SHADER_UNIFORM_VEC3, 1);
+}
+
+static void rbl__unbindGBufferPass(void)
+{
+    for (int i = 4; i >= 0; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
+    rlDisableShader();
+}
+
+// Full-screen pass over unbounded lights (as the forward shader's uniform arrays) plus the ambient
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const float ambient[3])
+{
+    const int *loc = g->locs[pass];
+    rbl__bindGBufferPass(g, pass);
+    float ground[3] = { rbl__colorToLinear(g->ambientGround.r), rbl__colorToLinear(g->ambientGround.g), rbl__colorToLinear(g->ambientGround.b) };
+    float up[3] = { g->ambientUp.x, g->ambientUp.y, g->ambientUp.z };
+    if (loc[RBL__GLOC_AMBIENT] != -1) rlSetUniform(loc[RBL__GLOC_AMBIENT], ambient, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__GLOC_GROUND] != -1) rlSetUniform(loc[RBL__GLOC_GROUND], (ambient[0] + ambient[1] + ambient[2] > 0.0f)? ground : ambient, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__GLOC_UP] != -1) rlSetUniform(loc[RBL__GLOC_UP], up, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__GLOC_LIGHT_COUNT] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_COUNT], &count, SHADER_UNIFORM_INT, 1);
+    if (count > 0)
+    {
+        if (loc[RBL__GLOC_LIGHT_POSITION] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_POSITION], pos, SHADER_UNIFORM_VEC4, count);
+        if (loc[RBL__GLOC_LIGHT_COLOR] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_COLOR], col, SHADER_UNIFORM_VEC4, count);
+        if (loc[RBL__GLOC_LIGHT_SPOT] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_SPOT], spot, SHADER_UNIFORM_VEC4, count);
+        if (loc[RBL__GLOC_LIGHT_ATTENUATION] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_ATTENUATION], att, SHADER_UNIFORM_VEC3, count);
+    }
+    rlDisableBackfaceCulling();
+    rlEnableVertexArray(g->emptyVao);
+    rlDrawVertexArray(0, 3);
+    rlDisableVertexArray();
+    rbl__unbindGBufferPass();
+}
+
+bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int count, Color ambient)
+{
+    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: invalid G-buffer"); return false; }
+    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i lights", count); return false; }
+    RblGBuffer *g = gbuffer;
+    // Validate and pack everything first: a rejected light changes nothing
+    int bounded = 0, unbounded = 0;
+    for (int i = 0; i < count; i++)
+    {
+        float p[4], c[4], sp[4], k[3];
+        const char *bad = rbl__packLight(&lights[i], g->shading.lightFeatures, p, c, sp, k);
+        if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: light %i rejected: %s", i, bad); return false; }
+        if ((c[3] > 0.0f) && !g->naiveFullscreen) bounded++; else unbounded++;
+    }
+    if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
+        return false;
+    }
+    if (bounded > g->instanceCapacity)
+    {
+        int capacity = g->instanceCapacity;
+        while (capacity < bounded) capacity *= 2;
+        float *data = (float *)RBL_REALLOC(g->instanceData, (size_t)capacity*RBL__INSTANCE_FLOATS*sizeof(float));
+        if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: out of memory for %i light volumes", bounded); return false; }
+        g->instanceData = data;
+        rlUnloadVertexBuffer(g->instanceVbo);
+        rlEnableVertexArray(g->volumeVao);
+        g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
+        for (int a = 0; a < 4; a++)
+        {
+            rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, (a == 3)? 3 : 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
+            rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
+            rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
+        }
+        rlDisableVertexArray();
+        TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->instanceCapacity, capacity);
+        g->instanceCapacity = capacity;
+    }
+    float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
+    float amb[3] = { rbl__colorToLinear(ambient.r), rbl__colorToLinear(ambient.g), rbl__colorToLinear(ambient.b) };
+    const float none[3] = { 0.0f, 0.0f, 0.0f };
+    bool counting = (g->debugView == RBL_GBUFFER_VIEW_LIGHT_COUNT);
+
+    rlDrawRenderBatchActive();
+    rlEnableFramebuffer(g->lightId);
+    rlViewport(0, 0, g->width, g->height);
+    rlDisableDepthTest();
+    rlSetBlendFactors(RL_ONE, RL_ONE, RL_FUNC_ADD);     // light adds up in the accumulation target
+    rlSetBlendMode(BLEND_CUSTOM);
+    rlEnableColorBlend();
+    if (counting) { rlClearColor(0, 0, 0, 0); rlClearScreenBuffers(); }   // the count replaces the emission
+
+    // Full-screen: the ambient and every unbounded light, in chunks of RBL_MAX_LIGHTS
+    int passAmbient = counting? RBL__PASS_AMBIENT_COUNT : RBL__PASS_AMBIENT;
+    int n = 0, chunks = 0;
+    g->lightsFullscreen = 0; g->lightsInVolumes = 0;
+    for (int i = 0; i <= count; i++)
+    {
+        if (i < count)
+        {
+            float p[4], c[4], sp[4], k[3];
+            rbl__packLight(&lights[i], g->shading.lightFeatures, p, c, sp, k);
+            if ((c[3] > 0.0f) && !g->naiveFullscreen) continue;
+            memcpy(&pos[n*4], p, sizeof(p)); memcpy(&col[n*4], c, sizeof(c)); memcpy(&spot[n*4], sp, sizeof(sp)); memcpy(&att[n*3], k, sizeof(k));
+            n++;
+        }
+        if ((n == RBL_MAX_LIGHTS) || ((i == count) && ((n > 0) || (chunks == 0))))
+        {
+            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, (chunks == 0)? amb : none);
+            g->lightsFullscreen += n;
+            n = 0;
+            chunks++;
+        }
+    }
+    // Volumes: one instanced draw of sphere proxies, back faces only (correct with the eye inside one)
+    int v = 0;
+    for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
+    {
+        float *d = &g->instanceData[v*RBL__INSTANCE_FLOATS];
+        float k[3];
+        rbl__packLight(&lights[i], g->shading.lightFeatures, &d[0], &d[4], &d[8], k);
+        if (!(d[7] > 0.0f)) continue;
+        d[12] = k[0]; d[13] = k[1]; d[14] = k[2]; d[15] = 0.0f;
+        v++;
+    }
+    if (v > 0)
+    {
+        int pass = counting? RBL__PASS_VOLUME_COUNT : RBL__PASS_VOLUME;
+        rbl__bindGBufferPass(g, pass);
+        rlEnableBackfaceCulling();
+        rlSetCullFace(RL_CULL_FACE_FRONT);
+        rlEnableVertexArray(g->volumeVao);
+        rlUpdateVertexBuffer(g->instanceVbo, g->instanceData, v*RBL__INSTANCE_FLOATS*(int)sizeof(float), 0);
+        rlDrawVertexArrayElementsInstanced(0, g->volumeIndexCount, 0, v);
+        rlDisableVertexArray();
+        rlSetCullFace(RL_CULL_FACE_BACK);
+        rbl__unbindGBufferPass();
+        g->lightsInVolumes = v;
+    }
+    rlEnableBackfaceCulling();
+    rlSetBlendMode(BLEND_ALPHA);
+    rlDisableFramebuffer();
+    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());
+    return true;
+}
+
+bool RblSetGBufferHemisphere(RblGBuffer *gbuffer, Color ground, Vector3 up)
+{
+    Vector3 u;
+    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer) || !gbuffer->shading.hemisphereAmbient || !rbl__finite3(up) || !rbl__normalizeTo(up, &u))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetGBufferHemisphere: G-buffer invalid or without hemisphereAmbient, or up not a direction");
+        return false;
+    }
+    gbuffer->ambientGround = ground;
+    gbuffer->ambientUp = u;
+    return true;
+}
+
+void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale)
+{
+    if ((gbuffer == NULL) || (view < 0) || (view >= RBL_GBUFFER_VIEW_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetGBufferView: unknown view %i or bad scale", view);
+        return;
+    }
+    gbuffer->debugView = view;
+    gbuffer->debugScale = (scale > 0.0f)? scale : 1.0f;
+}
+
+void RblResolveGBuffer(RblGBuffer *gbuffer)
+{
+    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer"); return; }
+    RblGBuffer *g = gbuffer;
+    rlDrawRenderBatchActive();
+    rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
+    const int *loc = g->locs[RBL__PASS_RESOLVE];
+    if (loc[RBL__GLOC_VIEW] != -1) rlSetUniform(loc[RBL__GLOC_VIEW], &g->debugView, SHADER_UNIFORM_INT, 1);
+    if (loc[RBL__GLOC_SCALE] != -1) rlSetUniform(loc[RBL__GLOC_SCALE], &g->debugScale, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__GLOC_FOG] != -1)
+    {
+        RblLitShader as;                            // the resolve pass seen as a lit shader: same fog uniforms
+        memset(&as, 0, sizeof(as));
+        as.shader = g->passes[RBL__PASS_RESOLVE]; as.locFog = loc[RBL__GLOC_FOG]; as.locFogStart = loc[RBL__GLOC_FOG_START];
+        rbl__setFogUniforms(&as, g->shading.fog);
+        rlEnableShader(as.shader.id);
+    }
+    if (loc[RBL__GLOC_EXPOSURE] != -1) rlSetUniform(loc[RBL__GLOC_EXPOSURE], &g->shading.exposure, SHADER_UNIFORM_FLOAT, 1);
+    rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
+    rlEnableDepthMask();
+    rlDisableBackfaceCulling();
+    rlEnableVertexArray(g->emptyVao);
+    rlDrawVertexArray(0, 3);
+    rlDisableVertexArray();
+    rlEnableBackfaceCulling();
+    rlDisableDepthTest();
+    rbl__unbindGBufferPass();
 }
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

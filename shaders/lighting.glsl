@@ -64,6 +64,27 @@ vec3 rblLinearToSrgb(vec3 c)
     return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));
 }
 
+// World normal <-> octahedral 12+12 bits in three 8-bit channels (the G-buffer's normal). Octahedral
+// map (Cigolle et al. 2014), each coordinate rounded to 12 bits, packed high byte / two nibbles / low byte.
+vec3 rblPackNormal(vec3 n)
+{
+    n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-20);
+    vec2 e = n.xy;
+    if (n.z < 0.0) e = (1.0 - abs(n.yx))*vec2((n.x >= 0.0)? 1.0 : -1.0, (n.y >= 0.0)? 1.0 : -1.0);
+    uvec2 q = uvec2(floor(clamp(e*0.5 + 0.5, 0.0, 1.0)*4095.0 + 0.5));
+    return vec3(float(q.x >> 4u), float(((q.x & 15u) << 4u) | (q.y >> 8u)), float(q.y & 255u))/255.0;
+}
+
+vec3 rblUnpackNormal(vec3 c)
+{
+    uvec3 b = uvec3(floor(c*255.0 + 0.5));
+    vec2 e = vec2(float((b.x << 4u) | (b.y >> 4u)), float(((b.y & 15u) << 8u) | b.z))/4095.0*2.0 - 1.0;
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    float t = max(-n.z, 0.0);
+    n.xy += vec2((n.x >= 0.0)? -t : t, (n.y >= 0.0)? -t : t);
+    return normalize(n);        // |n| >= 1/sqrt(3): never zero
+}
+
 // What a surface point needs for shading, in linear units (filled by the forward fragment stage from
 // maps and uniforms, or by the deferred passes from the G-buffer)
 struct RblShadingPoint {

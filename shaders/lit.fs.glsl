@@ -1,138 +1,32 @@
 // Forward lit fragment shader for billboards and raylib Models. The loader prepends "#version 330",
-// the variant #defines and lighting.glsl (lights, BRDFs, fog, tonemap: shared with other passes).
-// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps
-// (normal, specular/roughness, occlusion) are linear. Occlusion attenuates ambient light only.
-// Material defines (absent maps are never declared, so never sampled):
-//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map
-//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness
-//   RBL_OCCLUSION            material texture A holds ambient occlusion
-//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)
-//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)
-//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
+// the variant #defines, lighting.glsl (lights, BRDFs, fog, tonemap) and material.glsl (surface
+// decoding), so the deferred passes evaluate exactly the same code.
 //   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
 //   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 
-in vec3 fragPosition;
-in vec2 fragTexCoord;
-in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)
-in vec3 fragNormal;
-in vec4 fragTangent;
-#ifdef RBL_VIEW_VECTOR
-flat in vec3 fragEye;           // camera position (from matView in the vertex stage)
-#endif
-
-uniform sampler2D texture0;     // albedo (sRGB)
-#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)
-#define RBL_MATERIAL_TEXTURE
-uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion
-#endif
-#if RBL_EMISSIVE > 0
-uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)
-uniform float rblEmissiveIntensity;
-#endif
-#ifdef RBL_EMISSIVE_COLOR
-uniform vec3 rblEmissiveColor;
-#endif
-#if RBL_BRDF == 1
-uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shininess
-#elif RBL_BRDF == 2
-uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness
-#endif
-uniform vec4 colDiffuse;        // sRGB, as raylib sets it
-uniform float rblAlphaCutoff;
-
 out vec4 finalColor;
-
-// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU
-// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)
-vec3 rblDecodedUnit(vec3 e)
-{
-    return (dot(e, e) < 1.0/4096.0)? vec3(0.0, 0.0, 1.0) : normalize(e);
-}
-
-vec3 rblDecodeNormal(vec4 m)
-{
-#if RBL_NORMAL_ENCODING == 1
-    vec2 e = m.rg*2.0 - 1.0;                                // hemi-octahedral, stored rotated 45 degrees
-    vec2 p = vec2(e.x + e.y, e.x - e.y)*0.5;
-    return rblDecodedUnit(vec3(p, 1.0 - max(abs(e.x), abs(e.y))));     // = 1-|p.x|-|p.y|, never negative
-#elif RBL_NORMAL_ENCODING == 2
-    vec2 e = m.rg*2.0 - 1.0;                                // X and Y, Z rebuilt
-    return rblDecodedUnit(vec3(e, sqrt(max(0.0, 1.0 - dot(e, e)))));
-#elif RBL_NORMAL_ENCODING == 3
-    return rblDecodedUnit(m.rgb*2.0 - 1.0);                 // plain RGB map
-#else
-    return vec3(0.0, 0.0, 1.0);
-#endif
-}
 
 void main()
 {
-    vec4 texel = texture(texture0, fragTexCoord);
-    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);
-    if (albedo.a < rblAlphaCutoff) discard;
-
-    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));
-#ifdef RBL_MATERIAL_TEXTURE
-    vec4 material = texture(texture2, fragTexCoord);
-#endif
-    vec3 tangentNormal = vec3(0.0, 0.0, 1.0);
-#if RBL_NORMAL_ENCODING > 0
-    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's
-    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.
-    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);
-    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);
-    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));
-    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);
-    tangentNormal = rblDecodeNormal(material);
-    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);
-#endif
-    RblShadingPoint sp;
-    sp.position = fragPosition;
-    sp.normal = n;
-    sp.albedo = albedo.rgb;
-    sp.specular = 1.0;
-    sp.specularColor = vec3(1.0);
-    sp.shininess = 1.0;
-    sp.metalness = 0.0;
-#if RBL_BRDF == 1
-    sp.specularColor = rblSpecularColor.rgb;
-    sp.shininess = rblSpecularColor.a;
-#elif RBL_BRDF == 2
-    sp.specular = rblRoughMetal.x;
-    sp.metalness = rblRoughMetal.y;
-#endif
-#ifdef RBL_SPECULAR
-    sp.specular = material.b;
-#endif
-    sp.occlusion = 1.0;
-#ifdef RBL_OCCLUSION
-    sp.occlusion = material.a;
-#endif
+    float alpha;
+    vec3 emission, tangentNormal;
+    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);
 #ifdef RBL_VIEW_VECTOR
     vec3 eye = fragEye;
 #else
-    vec3 eye = fragPosition + n;     // unused: no view-dependent term compiled
+    vec3 eye = fragPosition + sp.normal;     // unused: no view-dependent term compiled
 #endif
-    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye);
-#if RBL_EMISSIVE == 1
-    color += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;
-#elif RBL_EMISSIVE == 2
-    color += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;
-#endif
-#ifdef RBL_EMISSIVE_COLOR
-    color += rblEmissiveColor;
-#endif
+    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye) + emission;
 
 #if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)
     finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);
 #elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)
-    finalColor = vec4(n*0.5 + 0.5, 1.0);
+    finalColor = vec4(sp.normal*0.5 + 0.5, 1.0);
 #elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)
     finalColor = vec4(vec3(sp.specular), 1.0);
 #elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)
     finalColor = vec4(vec3(sp.occlusion), 1.0);
 #else
-    finalColor = vec4(rblFinish(color, fragPosition, eye), albedo.a);
+    finalColor = vec4(rblFinish(color, fragPosition, eye), alpha);
 #endif
 }

@@ -509,7 +509,10 @@ int main(int argc, char **argv)
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     lit = RblLoadLitShader(desc);
-    RblLight light = { { 0.0f, 6.0f, 8.0f }, WHITE, 60.0f, 0.0f };
+    RblLight light = { 0 };
+    light.position = (Vector3){ 0.0f, 6.0f, 8.0f };
+    light.color = WHITE;
+    light.intensity = 60.0f;
     if (!RblIsLitShaderValid(lit) || !RblSetLights(&lit, &light, 1, (Color){ 40, 40, 40, 255 }))
     {
         printf("bench_geometry: lit shader failed\n");
