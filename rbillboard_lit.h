@@ -664,7 +664,9 @@ static const char *const rbl__shader_deferred_fs[] = {
     "uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness\n",
     "uniform sampler2D rblGDepth;            // depth texture of the geometry pass\n",
     "uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)\n",
-    "uniform mat4 rblInvProjection;          // inverse projection of the geometry pass\n",
+    "uniform mat4 rblInvProjection;          // inverse projection of the geometry pass (orthographic cameras)\n",
+    "uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1/P00; w < 0: orthographic\n",
+    "uniform float rblInvP11;                // 1/P11 (perspective)\n",
     "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
     "uniform vec3 rblEye;                    // camera position\n",
     "#if RBL_PASS == 3\n",
@@ -685,12 +687,25 @@ static const char *const rbl__shader_deferred_fs[] = {
     "#endif\n",
     "}\n",
     "\n",
-    "// World position from the depth buffer: NDC -> view space (inverse projection) -> world (inverse view)\n",
+    "// World position from the depth buffer. Perspective: view distance z = n f/(f - d (f - n)) straight\n",
+    "// from the window depth d (one rounding where an inverse matrix would cancel two large terms; the\n",
+    "// error stays within ~1 step of the 24-bit depth), then x, y along the pixel's ray. Orthographic:\n",
+    "// the inverse projection (linear, nothing cancels). Then the inverse view.\n",
     "vec3 rblPositionFromDepth(ivec2 texel, float depth)\n",
     "{\n",
     "    vec2 ndc = (vec2(texel) + 0.5)/vec2(textureSize(rblGDepth, 0))*2.0 - 1.0;\n",
-    "    vec4 view = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);\n",
-    "    return (rblInvView*vec4(view.xyz/view.w, 1.0)).xyz;\n",
+    "    vec3 view;\n",
+    "    if (rblDepthLinear.w > 0.0)\n",
+    "    {\n",
+    "        float z = rblDepthLinear.x/(rblDepthLinear.z - depth*rblDepthLinear.y);\n",
+    "        view = vec3(ndc*vec2(rblDepthLinear.w, rblInvP11)*z, -z);\n",
+    "    }\n",
+    "    else\n",
+    "    {\n",
+    "        vec4 v = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);\n",
+    "        view = v.xyz/v.w;\n",
+    "    }\n",
+    "    return (rblInvView*vec4(view, 1.0)).xyz;\n",
     "}\n",
     "\n",
     "RblShadingPoint rblGBufferSurface(ivec2 texel, float depth)\n",
@@ -828,7 +843,13 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    vec3 emission, tangentNormal;\n",
     "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
     "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);\n",
-    "    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(sp.specular, 0.0, 1.0));\n",
+    "#if RBL_BRDF == 1\n",
+    "    // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)\n",
+    "    float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));\n",
+    "#else\n",
+    "    float specular = sp.specular;\n",
+    "#endif\n",
+    "    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));\n",
     "#if RBL_BRDF == 1\n",
     "    float code = floor(clamp(log2(max(sp.shininess, 1.0))/11.0, 0.0, 1.0)*65535.0 + 0.5);\n",
     "    rblOutParams = vec4(floor(code/256.0)/255.0, mod(code, 256.0)/255.0, 0.0, 1.0);\n",
@@ -3613,7 +3634,7 @@ enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMB
 enum { RBL__GLOC_ALBEDO = 0, RBL__GLOC_NORMAL, RBL__GLOC_PARAMS, RBL__GLOC_DEPTH, RBL__GLOC_ACCUM, RBL__GLOC_INVPROJ, RBL__GLOC_INVVIEW,
        RBL__GLOC_EYE, RBL__GLOC_MVP, RBL__GLOC_VIEW, RBL__GLOC_SCALE, RBL__GLOC_AMBIENT, RBL__GLOC_GROUND, RBL__GLOC_UP,
        RBL__GLOC_LIGHT_COUNT, RBL__GLOC_LIGHT_POSITION, RBL__GLOC_LIGHT_COLOR, RBL__GLOC_LIGHT_SPOT, RBL__GLOC_LIGHT_ATTENUATION,
-       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_COUNT };
+       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_DEPTH_LINEAR, RBL__GLOC_INV_P11, RBL__GLOC_COUNT };
 #define RBL__INSTANCE_FLOATS 16         // position, colour, spot (vec4 each), falloff (vec3) + padding
 
 // Inverse of a 4x4 (cofactors in double: the matrices are projection and view, well conditioned)
@@ -3751,6 +3772,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
         rlFramebufferAttach(g->id, g->params.id, RL_ATTACHMENT_COLOR_CHANNEL2, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->id, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL3, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->id, g->depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlEnableFramebuffer(g->id);                 // rlFramebufferAttach() unbinds it again
         rlActiveDrawBuffers(4);                     // framebuffer state: set once
         ok = rlFramebufferComplete(g->id);
         g->lightId = rlLoadFramebuffer();
@@ -3771,7 +3793,8 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 
 static const char *const rbl__gbufferUniforms[RBL__GLOC_COUNT] = { "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum",
     "rblInvProjection", "rblInvView", "rblEye", "mvp", "rblDebugView", "rblDebugScale", "rblAmbient", "rblAmbientGround", "rblAmbientUp",
-    "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation", "rblFog", "rblFogStart", "rblExposure" };
+    "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation", "rblFog", "rblFogStart", "rblExposure",
+    "rblDepthLinear", "rblInvP11" };
 
 RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
 {
@@ -3951,6 +3974,13 @@ static void rbl__bindGBufferPass(const RblGBuffer *g, int pass)
     if (loc[RBL__GLOC_MVP] != -1) rlSetUniformMatrix(loc[RBL__GLOC_MVP], rbl__matMul(g->view, g->projection));
     float eye[3] = { g->eye.x, g->eye.y, g->eye.z };
     if (loc[RBL__GLOC_EYE] != -1) rlSetUniform(loc[RBL__GLOC_EYE], eye, SHADER_UNIFORM_VEC3, 1);
+    // Perspective depth linearisation constants (w = -1 marks an orthographic projection)
+    double n = rlGetCullDistanceNear(), f = rlGetCullDistanceFar();
+    bool perspective = (g->projection.m15 == 0.0f);
+    float depthLinear[4] = { (float)(n*f), (float)(f - n), (float)f, perspective? 1.0f/g->projection.m0 : -1.0f };
+    float invP11 = 1.0f/g->projection.m5;
+    if (loc[RBL__GLOC_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__GLOC_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
+    if (loc[RBL__GLOC_INV_P11] != -1) rlSetUniform(loc[RBL__GLOC_INV_P11], &invP11, SHADER_UNIFORM_FLOAT, 1);
 }
 
 static void rbl__unbindGBufferPass(void)

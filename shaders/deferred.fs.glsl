@@ -18,7 +18,9 @@ uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specu
 uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness
 uniform sampler2D rblGDepth;            // depth texture of the geometry pass
 uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)
-uniform mat4 rblInvProjection;          // inverse projection of the geometry pass
+uniform mat4 rblInvProjection;          // inverse projection of the geometry pass (orthographic cameras)
+uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1/P00; w < 0: orthographic
+uniform float rblInvP11;                // 1/P11 (perspective)
 uniform mat4 rblInvView;                // inverse view (camera to world)
 uniform vec3 rblEye;                    // camera position
 #if RBL_PASS == 3
@@ -39,12 +41,25 @@ ivec2 rblTexel()
 #endif
 }
 
-// World position from the depth buffer: NDC -> view space (inverse projection) -> world (inverse view)
+// World position from the depth buffer. Perspective: view distance z = n f/(f - d (f - n)) straight
+// from the window depth d (one rounding where an inverse matrix would cancel two large terms; the
+// error stays within ~1 step of the 24-bit depth), then x, y along the pixel's ray. Orthographic:
+// the inverse projection (linear, nothing cancels). Then the inverse view.
 vec3 rblPositionFromDepth(ivec2 texel, float depth)
 {
     vec2 ndc = (vec2(texel) + 0.5)/vec2(textureSize(rblGDepth, 0))*2.0 - 1.0;
-    vec4 view = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);
-    return (rblInvView*vec4(view.xyz/view.w, 1.0)).xyz;
+    vec3 view;
+    if (rblDepthLinear.w > 0.0)
+    {
+        float z = rblDepthLinear.x/(rblDepthLinear.z - depth*rblDepthLinear.y);
+        view = vec3(ndc*vec2(rblDepthLinear.w, rblInvP11)*z, -z);
+    }
+    else
+    {
+        vec4 v = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);
+        view = v.xyz/v.w;
+    }
+    return (rblInvView*vec4(view, 1.0)).xyz;
 }
 
 RblShadingPoint rblGBufferSurface(ivec2 texel, float depth)

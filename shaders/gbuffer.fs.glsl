@@ -19,7 +19,13 @@ void main()
     vec3 emission, tangentNormal;
     RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);
     rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);
-    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(sp.specular, 0.0, 1.0));
+#if RBL_BRDF == 1
+    // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)
+    float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));
+#else
+    float specular = sp.specular;
+#endif
+    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));
 #if RBL_BRDF == 1
     float code = floor(clamp(log2(max(sp.shininess, 1.0))/11.0, 0.0, 1.0)*65535.0 + 0.5);
     rblOutParams = vec4(floor(code/256.0)/255.0, mod(code, 256.0)/255.0, 0.0, 1.0);

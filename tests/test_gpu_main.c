@@ -17,6 +17,7 @@
 #include "test_instanced.c"
 #include "test_material_render.c"
 #include "test_lighting.c"
+#include "test_deferred.c"
 
 int main(int argc, char **argv)
 {
@@ -52,6 +53,15 @@ int main(int argc, char **argv)
         RT_TEST(test_lighting_hard_half_float_overflow_before_tonemap),
         RT_TEST(test_lighting_hard_zero_length_map_normal_is_the_flat_normal),
         RT_TEST(test_lighting_billboard_and_model_quad_render_identical_pixels),
+        RT_TEST(test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing),
+        RT_TEST(test_deferred_matches_forward_within_2_of_255_for_billboards_and_models),
+        RT_TEST(test_deferred_eye_inside_a_light_volume_is_lit_like_forward),
+        RT_TEST(test_deferred_1024_lights_match_the_double_reference),
+        RT_TEST(test_deferred_normal_encoding_error_table_against_published_figures),
+        RT_TEST(test_deferred_position_from_depth_error_at_near_middle_far),
+        RT_TEST(test_deferred_forced_failure_logs_and_the_forward_fallback_renders),
+        RT_TEST(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth),
+        RT_TEST(test_deferred_debug_views_show_what_they_name),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }

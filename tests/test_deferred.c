@@ -1,0 +1,641 @@
+// Deferred helper specification (GPU, headless): the G-buffer's layout, size and lifetime; deferred
+// against forward for the same scene (billboards on every path and a raylib Model, every light
+// type); the eye inside a light volume; 1024 lights against the double reference; the normal
+// encoding against published figures; position from depth against a double reconstruction;
+// the forced fallback; forward-drawn transparent billboards sorting against deferred depth;
+// the debug views. Included by test_gpu_main.c after test_lighting.c.
+
+#define DEF_W 128
+#define DEF_H 96
+
+static bool glIsTextureFn(unsigned int id)
+{
+    unsigned char (*isTexture)(unsigned int) = NULL;
+    void *p = rtGlProc("glIsTexture");
+    if (p == NULL) return false;
+    memcpy(&isTexture, &p, sizeof(p));
+    return isTexture(id) != 0;
+}
+
+// ---- a mixed scene: fixed plane, raylib sphere Model, immediate / batched / instanced billboards -----
+typedef struct DefScene {
+    Camera3D camera;
+    RblLight lights[8];
+    int count;
+    Color ambient;
+    RblLitShaderDesc desc;          // material + shading (brdf, fog, tonemap, ...)
+    Texture2D albedo, disc, normal;
+    Model sphere;
+    RblBatch batch;
+    RblInstanceBuffer instances;
+} DefScene;
+
+static DefScene defSceneLoad(int brdf)
+{
+    DefScene s;
+    memset(&s, 0, sizeof(s));
+    s.camera = litCamera((Vector3){ 0.6f, -3.6f, 3.0f }, (Vector3){ 0.0f, 0.2f, 0.3f });
+    s.lights[0] = litPoint((Vector3){ 1.2f, 0.5f, 1.0f }, 3.0f, 3.0f);                                 // bounded: volume
+    s.lights[1] = litSpot((Vector3){ -1.0f, -0.5f, 2.5f }, (Vector3){ 0.3f, 0.2f, -1.0f }, 12.0f, 28.0f, 8.0f);
+    s.lights[2] = litDirectional((Vector3){ 0.4f, 0.6f, -1.0f }, 0.35f);                               // full screen
+    s.lights[3] = litPoint((Vector3){ -1.5f, 1.5f, 1.2f }, 2.0f, 0.0f);                                // range 0: full screen
+    s.lights[4] = litPoint((Vector3){ 0.2f, -0.6f, 0.4f }, 0.8f, 1.5f);
+    s.lights[4].falloff = RBL_FALLOFF_CLASSIC; s.lights[4].constant = 0.5f; s.lights[4].linear = 0.3f; s.lights[4].quadratic = 1.0f;
+    s.count = 5;
+    s.ambient = (Color){ 30, 32, 40, 255 };
+    memset(&s.desc, 0, sizeof(s.desc));
+    s.desc.brdf = brdf;
+    s.desc.roughness = 0.45f; s.desc.metalness = 0.3f; s.desc.shininess = 40.0f;
+    s.desc.maxLights = 8;
+    s.desc.lightFeatures = RblLightFeatures(s.lights, s.count);
+    s.desc.material.normalEncoding = RBL_NORMAL_RGB;
+    s.desc.tonemap = RBL_TONEMAP_REINHARD;
+    s.desc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 40, 40, 60, 255 }, 0.0f, 0.0f, 0.04f };
+    s.desc.emissiveColor = (Color){ 12, 4, 0, 255 };
+    Image a = GenImageGradientLinear(16, 16, 30, (Color){ 230, 190, 140, 255 }, (Color){ 110, 170, 220, 255 });
+    s.albedo = LoadTextureFromImage(a);
+    UnloadImage(a);
+    Image d = GenImageColor(32, 32, BLANK);
+    ImageDrawCircle(&d, 16, 16, 15, (Color){ 240, 220, 120, 255 });
+    s.disc = LoadTextureFromImage(d);
+    UnloadImage(d);
+    s.normal = solidTexture(normalTexel(0.25f, -0.2f, 0.947f));
+    Mesh m = GenMeshSphere(0.6f, 24, 24);
+    GenMeshTangents(&m);
+    s.sphere = LoadModelFromMesh(m);
+    s.batch = RblLoadBatch(8);
+    s.instances = RblLoadInstanceBuffer(8);
+    return s;
+}
+
+static void defSceneUnload(DefScene *s)
+{
+    UnloadTexture(s->albedo); UnloadTexture(s->disc); UnloadTexture(s->normal);
+    s->sphere.materials[0].shader = (Shader){ 0 };
+    UnloadModel(s->sphere);
+    RblUnloadBatch(&s->batch);
+    RblUnloadInstanceBuffer(&s->instances);
+}
+
+// Draws the scene's geometry with materials built on `lit` (forward) or `geo`/`geoInstanced` (deferred)
+static void defSceneDraw(DefScene *s, Shader plain, Shader instanced)
+{
+    Material m = LoadMaterialDefault();
+    m.shader = plain;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = s->albedo;
+    m.maps[MATERIAL_MAP_NORMAL].texture = s->normal;
+    // Floor: fixed billboard, immediate path
+    RblBillboard floor = litPlane();
+    floor.size = (Vector2){ 8.0f, 8.0f }; floor.origin = (Vector2){ 4.0f, 4.0f };
+    RblDrawBillboard(s->camera, m, floor);
+    // Sphere: a raylib Model through DrawModel
+    Material keep = s->sphere.materials[0];
+    s->sphere.materials[0] = m;
+    DrawModel(s->sphere, (Vector3){ 0.9f, 0.4f, 0.6f }, 1.0f, WHITE);
+    s->sphere.materials[0] = keep;
+    // Standing cut-out discs: batched (axis mode) and instanced (camera-position mode, rounded)
+    Material disc = m;
+    disc.maps[MATERIAL_MAP_ALBEDO].texture = s->disc;
+    RblBeginBatch(&s->batch, s->camera);
+    for (int i = 0; i < 3; i++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.position = (Vector3){ -1.6f + 0.7f*i, -0.8f + 0.3f*i, 0.0f };
+        b.size = (Vector2){ 0.6f, 0.6f }; b.origin = (Vector2){ 0.3f, 0.0f };
+        b.facing = RBL_FACING_AXIS; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f };
+        RblBatchAdd(&s->batch, disc, &b);
+    }
+    RblEndBatch(&s->batch);
+    RblInstance in[2];
+    memset(in, 0, sizeof(in));
+    for (int i = 0; i < 2; i++)
+    {
+        in[i].position = (Vector3){ -0.3f + 0.9f*i, 1.2f, 0.5f };
+        in[i].size = (Vector2){ 0.7f, 0.7f }; in[i].origin = (Vector2){ 0.35f, 0.35f };
+    }
+    RblInstancedDesc idesc;
+    memset(&idesc, 0, sizeof(idesc));
+    idesc.facing = RBL_FACING_CAMERA_POSITION;
+    idesc.roundness = 0.8f;
+    disc.shader = instanced;
+    RblDrawInstanced(&s->instances, s->camera, disc, idesc, in, 2);
+    MemFree(m.maps);
+}
+
+static Image defRenderForward(DefScene *s)
+{
+    RblLitShaderDesc d = s->desc;
+    RblLitShader lit = RblLoadLitShader(d);
+    d.instanced = true;
+    RblLitShader inst = RblLoadLitShader(d);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsLitShaderValid(inst), "forward variants failed");
+    RblSetLights(&lit, s->lights, s->count, s->ambient);
+    RblSetLights(&inst, s->lights, s->count, s->ambient);
+    RenderTexture2D rt = LoadRenderTexture(DEF_W, DEF_H);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(s->camera);
+    defSceneDraw(s, lit.shader, inst.shader);
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    UnloadRenderTexture(rt);
+    RblUnloadLitShader(lit); RblUnloadLitShader(inst);
+    return img;
+}
+
+// Geometry pass, lights, resolve into a fresh target; what a raylib program does each frame
+static Image defRenderDeferred(DefScene *s, RblGBuffer *g, bool *ok)
+{
+    RblLitShaderDesc d = s->desc;
+    d.deferred = true;
+    RblLitShader geo = RblLoadLitShader(d);
+    d.instanced = true;
+    RblLitShader geoInst = RblLoadLitShader(d);
+    RT_CHECK(RblIsLitShaderValid(geo) && RblIsLitShaderValid(geoInst), "geometry variants failed");
+    *ok = RblBeginGBuffer(g, s->camera);
+    if (*ok)
+    {
+        defSceneDraw(s, geo.shader, geoInst.shader);
+        RblEndGBuffer(g);
+        *ok = RblDrawDeferredLights(g, s->lights, s->count, s->ambient);
+    }
+    RenderTexture2D rt = LoadRenderTexture(DEF_W, DEF_H);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    if (*ok) RblResolveGBuffer(g);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    UnloadRenderTexture(rt);
+    RblUnloadLitShader(geo); RblUnloadLitShader(geoInst);
+    return img;
+}
+
+typedef struct DefDiff { int covered, worst, over2, coverage; double mean; } DefDiff;
+
+static DefDiff defCompare(Image a, Image b)
+{
+    DefDiff d;
+    memset(&d, 0, sizeof(d));
+    double sum = 0.0;
+    for (int y = 0; y < a.height; y++)
+        for (int x = 0; x < a.width; x++)
+        {
+            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
+            if ((p.a == 0) != (q.a == 0)) { d.coverage++; continue; }
+            if (p.a == 0) continue;
+            d.covered++;
+            int e = abs(p.r - q.r); if (abs(p.g - q.g) > e) e = abs(p.g - q.g); if (abs(p.b - q.b) > e) e = abs(p.b - q.b);
+            if (e > d.worst) d.worst = e;
+            if (e > 2) d.over2++;
+            sum += abs(p.r - q.r) + abs(p.g - q.g) + abs(p.b - q.b);
+        }
+    d.mean = (d.covered > 0)? sum/(3.0*d.covered) : 0.0;
+    return d;
+}
+
+// ---- layout and lifetime ------------------------------------------------------------------------
+static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing(void)
+{
+    RblLitShaderDesc shading;
+    memset(&shading, 0, sizeof(shading));
+    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, shading);
+    RT_CHECK(RblIsGBufferValid(g), "G-buffer failed to load");
+    int bpp = RblGBufferBytesPerPixel(g);
+    RT_CHECK(bpp == 10 && bpp <= 12, "G-buffer %d bytes per pixel (formats %d %d %d)", bpp, g.albedo.format, g.normal.format, g.params.format);
+    printf("    G-buffer: %d bytes/pixel measured from the allocated formats (seed pipeline 28, raylib's deferred example 16), + depth + RGBA16F accumulation\n", bpp);
+    unsigned int old[5] = { g.albedo.id, g.normal.id, g.params.id, g.accum.id, g.depth.id };
+    RT_CHECK(RblResizeGBuffer(&g, DEF_W/2, DEF_H/2) && g.width == DEF_W/2 && g.albedo.width == DEF_W/2, "resize failed");
+    for (int i = 0; i < 5; i++) RT_CHECK(!glIsTextureFn(old[i]) || (old[i] == g.albedo.id) || (old[i] == g.normal.id) || (old[i] == g.params.id) ||
+                                         (old[i] == g.accum.id) || (old[i] == g.depth.id), "texture %u leaked by resize", old[i]);
+    warnings = 0;
+    RT_CHECK(!RblResizeGBuffer(&g, 0, 5) && warnings == 1 && g.width == DEF_W/2, "bad resize accepted or changed the G-buffer");
+    unsigned int now[5] = { g.albedo.id, g.normal.id, g.params.id, g.accum.id, g.depth.id };
+    RblUnloadGBuffer(&g);
+    for (int i = 0; i < 5; i++) RT_CHECK(!glIsTextureFn(now[i]), "texture %u leaked by unload", now[i]);
+    RT_CHECK(!RblIsGBufferValid(g), "unloaded G-buffer still valid");
+    // Bad descs are refused
+    warnings = 0;
+    shading.brdf = 9;
+    g = RblLoadGBuffer(DEF_W, DEF_H, shading);
+    RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "bad shading desc accepted");
+}
+
+// ---- deferred against forward ---------------------------------------------------------------------
+static void test_deferred_matches_forward_within_2_of_255_for_billboards_and_models(void)
+{
+    for (int brdf = RBL_BRDF_LAMBERT; brdf <= RBL_BRDF_GGX; brdf++)
+    {
+        DefScene s = defSceneLoad(brdf);
+        RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+        RT_CHECK(RblIsGBufferValid(g), "G-buffer failed");
+        Image fwd = defRenderForward(&s);
+        bool ok = false;
+        Image def = defRenderDeferred(&s, &g, &ok);
+        RT_CHECK(ok, "deferred frame refused");
+        DefDiff d = defCompare(fwd, def);
+        printf("    brdf %d: %d pixels, worst %d/255, mean %.3f/255, %d over 2/255, coverage differs in %d; %d volumes + %d full-screen lights\n",
+               brdf, d.covered, d.worst, d.mean, d.over2, d.coverage, g.lightsInVolumes, g.lightsFullscreen);
+        RT_CHECK(d.covered > DEF_W*DEF_H/2, "scene covers only %d pixels", d.covered);
+        RT_CHECK(d.worst <= 2, "deferred differs from forward by %d/255 (%d pixels over 2)", d.worst, d.over2);
+        RT_CHECK(d.coverage == 0, "coverage differs in %d pixels", d.coverage);
+        RT_CHECK(g.lightsInVolumes == 3 && g.lightsFullscreen == 2, "volumes %d, full screen %d", g.lightsInVolumes, g.lightsFullscreen);
+        if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
+        UnloadImage(fwd); UnloadImage(def);
+        RblUnloadGBuffer(&g);
+        defSceneUnload(&s);
+    }
+}
+
+static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
+{
+    DefScene s = defSceneLoad(RBL_BRDF_GGX);
+    s.lights[0] = litPoint((Vector3){ 0.4f, -3.0f, 2.6f }, 4.0f, 5.0f);       // the eye is 0.6 from it, range 5
+    s.count = 1;
+    s.desc.lightFeatures = RBL_LIGHTS_POINT;
+    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    Image fwd = defRenderForward(&s);
+    bool ok = false;
+    Image def = defRenderDeferred(&s, &g, &ok);
+    DefDiff d = defCompare(fwd, def);
+    printf("    eye inside the volume: worst %d/255 over %d pixels\n", d.worst, d.covered);
+    RT_CHECK(ok && g.lightsInVolumes == 1, "light not drawn as a volume");
+    RT_CHECK(d.worst <= 2 && d.covered > DEF_W*DEF_H/2, "eye inside a volume: worst %d/255", d.worst);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
+    UnloadImage(fwd); UnloadImage(def);
+    RblUnloadGBuffer(&g);
+    defSceneUnload(&s);
+}
+
+// 1024 small point lights over the lit test plane, against the double-precision reference
+static void test_deferred_1024_lights_match_the_double_reference(void)
+{
+    LitScene sc = litScene(RBL_BRDF_GGX);
+    sc.desc.roughness = 0.5f;
+    sc.camera = headOnCamera();
+    static RblLight many[1024];
+    unsigned int seed = 99u;
+    for (int i = 0; i < 1024; i++)
+    {
+        many[i] = litPoint((Vector3){ rtRandomRange(&seed, -2.2f, 2.2f), rtRandomRange(&seed, -2.2f, 2.2f), rtRandomRange(&seed, 0.05f, 0.4f) },
+                           rtRandomRange(&seed, 0.002f, 0.01f), rtRandomRange(&seed, 0.2f, 0.6f));
+        many[i].color = (Color){ (unsigned char)(rtRandom(&seed)%256), (unsigned char)(rtRandom(&seed)%256), (unsigned char)(rtRandom(&seed)%256), 255 };
+    }
+    RblLitShaderDesc shading = sc.desc;
+    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, shading);
+    RblLitShaderDesc d = sc.desc;
+    d.deferred = true;
+    RblLitShader geo = RblLoadLitShader(d);
+    Texture2D albedo = solidTexture(sc.albedo);
+    Material m = LoadMaterialDefault();
+    m.shader = geo.shader;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    Image img[2];
+    for (int naive = 0; naive < 2; naive++)
+    {
+        g.naiveFullscreen = naive;
+        RT_CHECK(RblBeginGBuffer(&g, sc.camera), "geometry pass refused");
+        RblDrawBillboard(sc.camera, m, litPlane());
+        RblEndGBuffer(&g);
+        RT_CHECK(RblDrawDeferredLights(&g, many, 1024, sc.env.ambient), "1024 lights refused");
+        RT_CHECK(naive? (g.lightsFullscreen == 1024) : (g.lightsInVolumes == 1024), "volumes %d full screen %d", g.lightsInVolumes, g.lightsFullscreen);
+        RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+        img[naive] = rtReadTarget(rt);
+        UnloadRenderTexture(rt);
+    }
+    // Against the reference: the plane's interior, every light summed in double
+    sc.count = 0;
+    LitError e;
+    memset(&e, 0, sizeof(e));
+    double sum = 0.0;
+    int lit = 0;
+    for (int py = 1; py < LIT_TARGET - 1; py++)
+        for (int px = 1; px < LIT_TARGET - 1; px++)
+        {
+            D3 p;
+            if (!refPixelOnPlane(sc.camera, LIT_TARGET, LIT_TARGET, px, py, d3(0, 0, 0), d3(0, 0, 1), &p)) continue;
+            RefSurface surf = litSurface(&sc, p);
+            RefRgb ref = refFinish(&sc.desc, refShade(&sc.desc, many, 1024, &sc.env, &surf, d3f(sc.camera.position)), p, d3f(sc.camera.position));
+            Color c = rtPixel(img[0], px, py);
+            double got[3] = { c.r, c.g, c.b }, want[3] = { ref.r*255.0, ref.g*255.0, ref.b*255.0 };
+            for (int ch = 0; ch < 3; ch++) { double q = fabs(got[ch] - floor(want[ch] + 0.5)); if (q > e.max) e.max = q; sum += q; }
+            if (want[0] + want[1] + want[2] > 3.0*30.0) lit++;
+            e.pixels++;
+        }
+    e.mean = sum/(3.0*e.pixels);
+    DefDiff vn = defCompare(img[0], img[1]);
+    printf("    1024 lights: volumes vs reference max %.0f mean %.4f /255 over %d pixels (%d visibly lit); volumes vs naive full-screen worst %d/255\n",
+           e.max, e.mean, e.pixels, lit, vn.worst);
+    RT_CHECK(e.max <= 2.0 && e.mean <= 0.25, "1024 lights: max %.0f mean %.3f", e.max, e.mean);
+    RT_CHECK(lit > e.pixels/10, "only %d pixels visibly lit: the test would not see missing lights", lit);
+    RT_CHECK(vn.worst <= 1, "volumes and the naive loop differ by %d/255", vn.worst);
+    if (rtFailuresInCurrentTest() > 0) rtSaveImage(img[0], "volumes");
+    UnloadImage(img[0]); UnloadImage(img[1]);
+    MemFree(m.maps);
+    UnloadTexture(albedo);
+    RblUnloadLitShader(geo);
+    RblUnloadGBuffer(&g);
+}
+
+// ---- encodings ------------------------------------------------------------------------------------
+// CPU octahedral encode/decode with b bits per coordinate, written from Cigolle et al. 2014 (round to nearest)
+static D3 octRoundTrip(D3 n, int bits)
+{
+    double s = fabs(n.x) + fabs(n.y) + fabs(n.z);
+    double ex = n.x/s, ey = n.y/s;
+    if (n.z < 0.0) { double tx = (1.0 - fabs(ey))*((ex >= 0.0)? 1.0 : -1.0), ty = (1.0 - fabs(ex))*((ey >= 0.0)? 1.0 : -1.0); ex = tx; ey = ty; }
+    double m = (double)((1 << bits) - 1);
+    double qx = floor((ex*0.5 + 0.5)*m + 0.5)/m*2.0 - 1.0, qy = floor((ey*0.5 + 0.5)*m + 0.5)/m*2.0 - 1.0;
+    D3 r = d3(qx, qy, 1.0 - fabs(qx) - fabs(qy));
+    double t = fmax(-r.z, 0.0);
+    r.x += (r.x >= 0.0)? -t : t;
+    r.y += (r.y >= 0.0)? -t : t;
+    return dNorm(r);
+}
+
+static void test_deferred_normal_encoding_error_table_against_published_figures(void)
+{
+    // Uniform sphere sample (the G-buffer stores world normals: the whole sphere)
+    unsigned int seed = 2024u;
+    const int count = 400000;
+    const int bits[3] = { 8, 12, 16 };
+    double mean[3] = { 0 }, worst[3] = { 0 };
+    for (int i = 0; i < count; i++)
+    {
+        double z = rtRandomRange(&seed, -1.0f, 1.0f), phi = rtRandomRange(&seed, 0.0f, (float)(2.0*PI));
+        double r = sqrt(fmax(0.0, 1.0 - z*z));
+        D3 n = dNorm(d3(r*cos(phi), r*sin(phi), z));
+        for (int k = 0; k < 3; k++)
+        {
+            D3 q = octRoundTrip(n, bits[k]);
+            double e = acos(fmin(1.0, fmax(-1.0, dDot(n, q))))*180.0/PI;
+            mean[k] += e/count;
+            if (e > worst[k]) worst[k] = e;
+        }
+    }
+    printf("    octahedral normal error over %d uniform sphere normals (degrees):\n", count);
+    printf("      %-28s %10s %10s   %s\n", "encoding", "mean", "max", "published (Cigolle et al. 2014)");
+    printf("      %-28s %10.4f %10.4f   mean ~0.35, max ~0.95\n", "2 x 8 bit", mean[0], worst[0]);
+    printf("      %-28s %10.5f %10.5f   (this G-buffer: RGB8 of RGBA8, 3 bytes)\n", "2 x 12 bit (G-buffer)", mean[1], worst[1]);
+    printf("      %-28s %10.5f %10.5f   mean 0.00131, max 0.0037\n", "2 x 16 bit", mean[2], worst[2]);
+    // The measurement reproduces the published figures (within 25%), so the 12-bit row can be trusted
+    RT_CHECK(fabs(mean[0] - 0.35)/0.35 < 0.25 && fabs(worst[0] - 0.95)/0.95 < 0.25, "8-bit: %.3f / %.3f far from the published 0.35 / 0.95", mean[0], worst[0]);
+    RT_CHECK(fabs(mean[2] - 0.00131)/0.00131 < 0.25 && fabs(worst[2] - 0.0037)/0.0037 < 0.25, "16-bit: %.5f / %.5f far from 0.00131 / 0.0037", mean[2], worst[2]);
+    RT_CHECK(mean[1] < 0.03 && worst[1] < 0.07, "12-bit: mean %.4f max %.4f", mean[1], worst[1]);
+
+    // The shader packs exactly these codes: render known normals (via a normal map) and read the G-buffer bytes
+    RblLitShaderDesc shading;
+    memset(&shading, 0, sizeof(shading));
+    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, shading);
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.deferred = true;
+    d.material.normalEncoding = RBL_NORMAL_RGB;
+    RblLitShader geo = RblLoadLitShader(d);
+    int mismatched = 0, checked = 0;
+    for (int t = 0; t < 6; t++)
+    {
+        Color texel = normalTexel(0.7f*cosf(t*1.1f), 0.7f*sinf(t*1.1f), 0.714f);
+        Texture2D albedo = solidTexture(WHITE), nmap = solidTexture(texel);
+        Material m = LoadMaterialDefault();
+        m.shader = geo.shader;
+        m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+        m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
+        RblBeginGBuffer(&g, headOnCamera());
+        RblDrawBillboard(headOnCamera(), m, litPlane());
+        RblEndGBuffer(&g);
+        unsigned char *bytes = (unsigned char *)rlReadTexturePixels(g.normal.id, g.width, g.height, g.normal.format);
+        D3 e = d3(texel.r/255.0*2.0 - 1.0, texel.g/255.0*2.0 - 1.0, texel.b/255.0*2.0 - 1.0);
+        D3 n = dNorm(e);          // plane frame: T = +X, image up = +Y, N = +Z
+        double s = fabs(n.x) + fabs(n.y) + fabs(n.z);
+        int qx = (int)floor((n.x/s*0.5 + 0.5)*4095.0 + 0.5), qy = (int)floor((n.y/s*0.5 + 0.5)*4095.0 + 0.5);
+        const unsigned char *px = &bytes[((LIT_TARGET/2)*LIT_TARGET + LIT_TARGET/2)*4];
+        int gx = (px[0] << 4) | (px[1] >> 4), gy = ((px[1] & 15) << 8) | px[2];
+        if ((abs(gx - qx) > 1) || (abs(gy - qy) > 1)) mismatched++;
+        checked++;
+        RL_FREE(bytes);
+        MemFree(m.maps);
+        UnloadTexture(albedo); UnloadTexture(nmap);
+    }
+    RT_CHECK(mismatched == 0, "%d of %d G-buffer normals differ from the CPU octahedral code by more than 1", mismatched, checked);
+    RblUnloadLitShader(geo);
+    RblUnloadGBuffer(&g);
+}
+
+// Position rebuilt from the 24-bit depth texture vs the true point and vs a double reconstruction
+static void test_deferred_position_from_depth_error_at_near_middle_far(void)
+{
+    RblLitShaderDesc shading;
+    memset(&shading, 0, sizeof(shading));
+    shading.linearOutput = true;
+    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, shading);
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.deferred = true;
+    RblLitShader geo = RblLoadLitShader(d);
+    Texture2D albedo = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = geo.shader;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    const float distances[3] = { 0.5f, 20.0f, 400.0f };
+    const char *names[3] = { "near", "middle", "far" };
+    void (*readPixels)(int, int, int, int, unsigned int, unsigned int, void *) = NULL;
+    void *proc = rtGlProc("glReadPixels");
+    memcpy(&readPixels, &proc, sizeof(proc));
+    printf("    depth: 24-bit texture, raylib perspective (fovy 45, near %.2f, far %.0f)\n", rlGetCullDistanceNear(), rlGetCullDistanceFar());
+    for (int k = 0; k < 3; k++)
+    {
+        float z = distances[k];
+        Camera3D cam = litCamera((Vector3){ 0.0f, 0.0f, z }, (Vector3){ 0.3f*z, 0.2f*z, 0.0f });   // oblique view of the plane z = 0
+        RblBeginGBuffer(&g, cam);
+        RblBillboard plane = litPlane();
+        plane.size = (Vector2){ 40.0f*z, 40.0f*z }; plane.origin = (Vector2){ 20.0f*z, 20.0f*z };
+        RblDrawBillboard(cam, m, plane);
+        RblEndGBuffer(&g);
+        // Shader reconstruction: the distance-to-eye debug view written unencoded into a float target
+        RblSetGBufferView(&g, RBL_GBUFFER_VIEW_DEPTH, 1e4f);
+        RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+        float *pos = (float *)rlReadTexturePixels(rt.texture.id, LIT_TARGET, LIT_TARGET, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+        litTargetUnload(rt);
+        RblSetGBufferView(&g, RBL_GBUFFER_VIEW_LIT, 1.0f);
+        // Depth values of the geometry pass
+        float *depth = (float *)malloc(sizeof(float)*LIT_TARGET*LIT_TARGET);
+        rlEnableFramebuffer(g.id);
+        readPixels(0, 0, LIT_TARGET, LIT_TARGET, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, depth);
+        rlDisableFramebuffer();
+        // Double reconstruction from the same depth, and the true plane point behind the pixel centre
+        Matrix P = g.projection, V = g.view;
+        double worstShader = 0.0, worstTrue = 0.0, worstRatio = 0.0;
+        int n = 0;
+        for (int y = 8; y < LIT_TARGET - 8; y += 4)
+            for (int x = 8; x < LIT_TARGET - 8; x += 4)
+            {
+                int i = y*LIT_TARGET + x;                           // GL rows: y from the bottom
+                if (depth[i] >= 1.0f) continue;
+                double ndc[3] = { (x + 0.5)/LIT_TARGET*2.0 - 1.0, (y + 0.5)/LIT_TARGET*2.0 - 1.0, depth[i]*2.0 - 1.0 };
+                // Perspective inverse in closed form: view z from depth, then x, y
+                double a = P.m10, b = P.m14;                        // clip z = a*zv + b, clip w = -zv
+                double zv = -b/(ndc[2] + a);
+                double xv = -ndc[0]*zv/P.m0, yv = -ndc[1]*zv/P.m5;
+                // world = R^T (view - t)
+                double tx = xv - V.m12, ty = yv - V.m13, tz = zv - V.m14;
+                D3 world = d3(V.m0*tx + V.m1*ty + V.m2*tz, V.m4*tx + V.m5*ty + V.m6*tz, V.m8*tx + V.m9*ty + V.m10*tz);
+                double shaderDistance = pos[i*4]*1e4;       // rlReadTexturePixels: GL rows too
+                D3 truth;
+                refPixelOnPlane(cam, LIT_TARGET, LIT_TARGET, x, LIT_TARGET - 1 - y, d3(0, 0, 0), d3(0, 0, 1), &truth);
+                double shaderError = fabs(shaderDistance - dLen(dSub(world, d3f(cam.position))));
+                worstTrue = fmax(worstTrue, dLen(dSub(world, truth)));
+                // One step of a 24-bit depth buffer at view depth zv moves the point by about zv^2/(near 2^24) (x slope)
+                double step = zv*zv/(rlGetCullDistanceNear()*16777216.0)*dLen(dSub(truth, d3f(cam.position)))/(-zv);
+                worstRatio = fmax(worstRatio, dLen(dSub(world, truth))/step);
+                worstShader = fmax(worstShader, shaderError/step);
+                n++;
+            }
+        printf("    %-6s (eye %5.1f above the plane): shader vs double reconstruction %.2f depth steps; double reconstruction vs true point %.2e world units = %.2f depth steps (%d pixels)\n",
+               names[k], z, worstShader, worstTrue, worstRatio, n);
+        RT_CHECK(n > 100, "%s: only %d pixels", names[k], n);
+        RT_CHECK(worstShader < 4.0, "%s: the shader's float reconstruction is off by %.2f depth steps", names[k], worstShader);
+        // llvmpipe interpolates window z in float: a few steps of the 24-bit buffer, never more than 16
+        RT_CHECK(worstRatio < 16.0, "%s: position error %.2f depth steps: more than 24-bit quantisation explains", names[k], worstRatio);
+        free(depth);
+        RL_FREE(pos);
+    }
+    MemFree(m.maps);
+    UnloadTexture(albedo);
+    RblUnloadLitShader(geo);
+    RblUnloadGBuffer(&g);
+}
+
+// ---- fallback, transparency, debug views ----------------------------------------------------------
+static void test_deferred_forced_failure_logs_and_the_forward_fallback_renders(void)
+{
+    DefScene s = defSceneLoad(RBL_BRDF_GGX);
+    rbl__gbufferForceFailure = true;
+    warnings = 0;
+    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    rbl__gbufferForceFailure = false;
+    RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "forced failure: valid=%d warnings=%d", RblIsGBufferValid(g), warnings);
+    RT_CHECK(strstr(lastWarning, "forward") != NULL, "the log line should say to render forward: %s", lastWarning);
+    // What a program does: the G-buffer refuses the frame, the forward path draws it
+    Image fwd = defRenderForward(&s);
+    bool ok = true;
+    Image def = defRenderDeferred(&s, &g, &ok);
+    RT_CHECK(!ok, "an invalid G-buffer accepted a frame");
+    Image fallback = ok? def : defRenderForward(&s);
+    DefDiff d = defCompare(fwd, fallback);
+    RT_CHECK(d.worst == 0 && d.covered > DEF_W*DEF_H/2, "fallback frame differs from forward (%d)", d.worst);
+    if (!ok) UnloadImage(fallback);
+    UnloadImage(fwd); UnloadImage(def);
+    RblUnloadGBuffer(&g);
+    defSceneUnload(&s);
+}
+
+static void test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth(void)
+{
+    DefScene s = defSceneLoad(RBL_BRDF_LAMBERT);
+    s.desc.material.normalEncoding = RBL_NORMAL_NONE;
+    s.desc.fog.mode = RBL_FOG_NONE;
+    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    RblLitShaderDesc d = s.desc;
+    d.deferred = true;
+    RblLitShader geo = RblLoadLitShader(d);
+    d.deferred = false;
+    d.alphaCutoff = -1.0f;                   // blended, never discarded
+    RblLitShader glass = RblLoadLitShader(d);
+    RblSetLights(&glass, s.lights, s.count, s.ambient);
+    Texture2D white = solidTexture(WHITE), red = solidTexture((Color){ 255, 0, 0, 128 });
+    Material wall = LoadMaterialDefault(), pane = LoadMaterialDefault();
+    wall.shader = geo.shader; wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    pane.shader = glass.shader; pane.maps[MATERIAL_MAP_ALBEDO].texture = red;
+    Camera3D cam = headOnCamera();
+    // Deferred: an opaque square at z = 0.5 covering the left half of the view
+    RblBillboard square = litPlane();
+    square.position = (Vector3){ -1.0f, 0.0f, 0.5f }; square.size = (Vector2){ 2.0f, 4.0f }; square.origin = (Vector2){ 1.0f, 2.0f };
+    RblBeginGBuffer(&g, cam);
+    RblDrawBillboard(cam, wall, square);
+    RblEndGBuffer(&g);
+    RblDrawDeferredLights(&g, s.lights, s.count, s.ambient);
+    Image img[2];
+    for (int withPane = 0; withPane < 2; withPane++)
+    {
+        RenderTexture2D rt = LoadRenderTexture(DEF_W, DEF_H);
+        BeginTextureMode(rt);
+        ClearBackground(BLACK);
+        RblResolveGBuffer(&g);
+        // Forward, alpha-blended: a red pane behind the square (z = 0) spanning the whole width
+        BeginMode3D(cam);
+        RblBillboard glassPane = litPlane();
+        glassPane.size = (Vector2){ 6.0f, 1.0f }; glassPane.origin = (Vector2){ 3.0f, 0.5f };
+        if (withPane) RblDrawBillboard(cam, pane, glassPane);
+        EndMode3D();
+        EndTextureMode();
+        img[withPane] = rtReadTarget(rt);
+        UnloadRenderTexture(rt);
+    }
+    Color hidden = rtPixel(img[1], DEF_W/4, DEF_H/2), plain = rtPixel(img[0], DEF_W/4, DEF_H/2), shown = rtPixel(img[1], 3*DEF_W/4, DEF_H/2);
+    printf("    behind the deferred square %d,%d,%d (without the pane %d,%d,%d); beside it %d,%d,%d\n", hidden.r, hidden.g, hidden.b, plain.r, plain.g, plain.b, shown.r, shown.g, shown.b);
+    RT_CHECK(hidden.r == plain.r && hidden.g == plain.g && hidden.b == plain.b, "the pane behind the deferred square shows through");
+    RT_CHECK(shown.r > 40 && shown.g < shown.r/2, "the pane beside the square is missing (%d,%d,%d)", shown.r, shown.g, shown.b);
+    if (rtFailuresInCurrentTest() > 0) rtSaveImage(img[1], "sorted");
+    UnloadImage(img[0]); UnloadImage(img[1]);
+    MemFree(wall.maps); MemFree(pane.maps);
+    UnloadTexture(white); UnloadTexture(red);
+    RblUnloadLitShader(geo); RblUnloadLitShader(glass);
+    RblUnloadGBuffer(&g);
+    defSceneUnload(&s);
+}
+
+static void test_deferred_debug_views_show_what_they_name(void)
+{
+    LitScene sc = litScene(RBL_BRDF_GGX);
+    sc.desc.roughness = 0.6f;
+    sc.normalMap = true;
+    sc.normal = normalTexel(0.6f, 0.0f, 0.8f);
+    sc.camera = headOnCamera();
+    RblLight three[3] = { litPoint((Vector3){ -0.3f, 0.0f, 0.2f }, 1.0f, 1.0f), litPoint((Vector3){ 0.3f, 0.0f, 0.2f }, 1.0f, 1.0f),
+                          litPoint((Vector3){ 0.0f, 0.2f, 0.2f }, 1.0f, 1.0f) };
+    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, sc.desc);
+    RblLitShaderDesc d = sc.desc;
+    d.deferred = true;
+    d.material.normalEncoding = RBL_NORMAL_RGB;
+    RblLitShader geo = RblLoadLitShader(d);
+    Texture2D albedo = solidTexture(sc.albedo), nmap = solidTexture(sc.normal);
+    Material m = LoadMaterialDefault();
+    m.shader = geo.shader;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
+    Color got[RBL_GBUFFER_VIEW_COUNT];
+    for (int v = 0; v < RBL_GBUFFER_VIEW_COUNT; v++)
+    {
+        RblSetGBufferView(&g, v, (v == RBL_GBUFFER_VIEW_LIGHT_COUNT)? 5.0f : 10.0f);
+        RblBeginGBuffer(&g, sc.camera);
+        RblDrawBillboard(sc.camera, m, litPlane());
+        RblEndGBuffer(&g);
+        RblDrawDeferredLights(&g, three, 3, sc.env.ambient);
+        RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+        Image img = rtReadTarget(rt);
+        got[v] = rtPixel(img, LIT_TARGET/2, LIT_TARGET/2);
+        UnloadRenderTexture(rt);
+        UnloadImage(img);
+    }
+    D3 n = dNorm(d3(sc.normal.r/255.0*2.0 - 1.0, sc.normal.g/255.0*2.0 - 1.0, sc.normal.b/255.0*2.0 - 1.0));
+    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_ALBEDO].r - sc.albedo.r) <= 1 && abs(got[RBL_GBUFFER_VIEW_ALBEDO].b - sc.albedo.b) <= 1, "albedo view %d", got[RBL_GBUFFER_VIEW_ALBEDO].r);
+    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_NORMAL].r - (int)lround((n.x*0.5 + 0.5)*255)) <= 1 && abs(got[RBL_GBUFFER_VIEW_NORMAL].b - (int)lround((n.z*0.5 + 0.5)*255)) <= 1,
+             "normal view %d,%d,%d", got[RBL_GBUFFER_VIEW_NORMAL].r, got[RBL_GBUFFER_VIEW_NORMAL].g, got[RBL_GBUFFER_VIEW_NORMAL].b);
+    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_SPECULAR].r - 153) <= 1, "roughness view %d (0.6 = 153)", got[RBL_GBUFFER_VIEW_SPECULAR].r);
+    RT_CHECK(got[RBL_GBUFFER_VIEW_OCCLUSION].r == 255, "occlusion view %d", got[RBL_GBUFFER_VIEW_OCCLUSION].r);
+    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_DEPTH].r - 102) <= 1, "depth view %d (4/10 = 102)", got[RBL_GBUFFER_VIEW_DEPTH].r);
+    // Three volumes cover the centre (no unbounded lights): 3 of 5 on the heat ramp is yellow
+    Color heat = got[RBL_GBUFFER_VIEW_LIGHT_COUNT];
+    RT_CHECK(heat.r == 255 && heat.g > 200 && heat.b < 40, "light count view %d,%d,%d, expected yellow (3 of 5)", heat.r, heat.g, heat.b);
+    printf("    centre pixel: albedo %d,%d,%d normal %d,%d,%d roughness %d occlusion %d depth %d position %d,%d,%d count %d,%d,%d\n",
+           got[1].r, got[1].g, got[1].b, got[2].r, got[2].g, got[2].b, got[3].r, got[4].r, got[5].r, got[6].r, got[6].g, got[6].b, heat.r, heat.g, heat.b);
+    MemFree(m.maps);
+    UnloadTexture(albedo); UnloadTexture(nmap);
+    RblUnloadLitShader(geo);
+    RblUnloadGBuffer(&g);
+}
