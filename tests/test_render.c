@@ -133,7 +133,8 @@ static void test_shaders_compile_failure_is_reported_not_replaced_by_the_default
 {
     warnings = 0;
     const char *const broken[] = { "void main() { this is not glsl; }\n", NULL };
-    Shader bad = rbl__loadShaderVariant(rbl__shader_lit_vs, NULL, broken, "");
+    const char *const *const parts[2] = { broken, NULL };
+    Shader bad = rbl__loadShaderVariant(rbl__shader_lit_vs, parts, "");
     RT_CHECK(bad.id == 0, "a broken shader must come back invalid, not as raylib's default (id %u)", bad.id);
     RT_CHECK(warnings == 1, "one RBL warning expected, got %d", warnings);
     RblLitShaderDesc desc;

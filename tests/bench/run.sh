@@ -16,6 +16,10 @@ echo "== bench_materials"
 BENCH_CSV="$csv" "$BUILD/bench/bench_materials"
 
 echo
+echo "== bench_lighting"
+BENCH_CSV="$csv" "$BUILD/bench/bench_lighting"
+
+echo
 echo "== $csv"
 if command -v column >/dev/null 2>&1; then
   column -t -s, "$csv"
