@@ -63,7 +63,7 @@ $(BUILD)/tests/test_gpu: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/test_gpu_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_gpu
+test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
@@ -74,6 +74,14 @@ $(BUILD)/showcase: examples/billboards_lit_showcase.c $(HEADER) $(BUILD)/raylib.
 $(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/billboards_lit_showcase.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/showcase_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/deferred: examples/billboards_lit_deferred.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/billboards_lit_deferred.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/deferred_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
@@ -100,7 +108,8 @@ bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/ben
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
-	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
+	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
 
 clean-all:
 	rm -rf $(BUILD)
@@ -110,7 +119,8 @@ $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.m
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-pictures: $(BUILD)/pictures run
+pictures: $(BUILD)/pictures $(BUILD)/deferred_headless run
 	@mkdir -p examples/resources
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
+	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png

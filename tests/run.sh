@@ -38,6 +38,13 @@ else
   echo "  FAIL  README program compiles and links"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
 fi
 
+# The deferred example renders headlessly end to end (G-buffer, 401 lights, resolve, forward glows)
+if out=$("$BUILD/deferred_headless" "$BUILD/deferred.png" "$BUILD/deferred_views.png" 2>&1) && [ -s "$BUILD/deferred.png" ]; then
+  echo "  ok    deferred example renders headlessly"; printf '%s\n' "$out" | sed 's/^/    /'; pass=$((pass + 1))
+else
+  echo "  FAIL  deferred example renders headlessly"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
+fi
+
 for suite in test_cpu test_cpu_san; do
   echo "== $suite"
   out=$("$BUILD/tests/$suite" 2>&1); printf '%s\n' "$out"; count "$out"

@@ -1,0 +1,312 @@
+/*******************************************************************************************
+*
+*   raylib [models] example - lit billboards, deferred with hundreds of lights
+*
+*   Example complexity rating: [★★★☆] 3/4
+*
+*   Example originally created with raylib 6.0, last time updated with raylib 6.0
+*
+*   Example shows the deferred helper of rbillboard_lit.h: a raylib Model floor, a few sphere
+*   Models and a field of billboard "lanterns" (instanced, rounded normals) go through one
+*   G-buffer (10 bytes per pixel + depth), and 400 small moving coloured point lights are drawn
+*   as light volumes, so each light costs only the pixels it touches. A dim directional
+*   moonlight is a full-screen pass. Glow sprites are drawn forward afterwards, alpha-blended,
+*   and sort against the deferred depth.
+*     - D cycles the debug views (lit, albedo, normal, roughness, occlusion, depth, position,
+*       lights per pixel), N toggles the naive full-screen light loop for comparison,
+*       SPACE pauses the lights.
+*   If the G-buffer cannot be created (no MRT / float targets), the same scene is drawn with
+*   the forward lit shader and the 64 nearest lights.
+*
+*   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
+*   BSD-like license that allows static linking with closed source software
+*
+*   Copyright (c) 2026 rbillboard_lit contributors
+*
+********************************************************************************************/
+
+#include "raylib.h"
+#include "rlgl.h"           // rlDisableDepthMask: glow sprites test depth but do not write it
+
+#define RBILLBOARD_LIT_IMPLEMENTATION
+#include "rbillboard_lit.h"
+
+#include <math.h>           // sinf, cosf
+
+//----------------------------------------------------------------------------------
+// Defines and Macros
+//----------------------------------------------------------------------------------
+#define DEFERRED_LIGHTS     400         // Moving point lights (light volumes)
+#define LANTERN_ROWS        6           // Billboard lanterns on a grid
+#define LANTERN_COLUMNS     8
+#define SPHERE_COUNT        5
+
+//----------------------------------------------------------------------------------
+// Global Variables Definition
+//----------------------------------------------------------------------------------
+static Camera3D deferredCamera = { 0 };
+static const Color deferredBackground = { 10, 12, 20, 255 };
+static const Color deferredAmbient = { 14, 16, 26, 255 };
+
+static RblGBuffer gbuffer = { 0 };
+static bool deferredValid = false;
+static RblLitShader floorGeometry = { 0 };     // G-buffer variants (desc.deferred)
+static RblLitShader lanternGeometry = { 0 };
+static RblLitShader floorForward = { 0 };      // Forward fallback variants
+static RblLitShader lanternForward = { 0 };
+static Model floorModel = { 0 };
+static Model sphereModel = { 0 };
+static Texture2D floorTexture = { 0 };
+static Texture2D lanternTexture = { 0 };
+static Texture2D glowTexture = { 0 };
+static Material lanternMaterial = { 0 };
+static RblInstanceBuffer lanternBuffer = { 0 };
+static RblInstance lanterns[LANTERN_ROWS*LANTERN_COLUMNS] = { 0 };
+static RblLight deferredLights[DEFERRED_LIGHTS + 1] = { 0 };   // + moonlight
+static float lightPhase[DEFERRED_LIGHTS] = { 0 };
+
+//----------------------------------------------------------------------------------
+// Module Functions Declaration
+//----------------------------------------------------------------------------------
+static void DeferredInit(int width, int height);   // Textures, Models, shaders, G-buffer, lights
+static void DeferredUpdate(float time);            // Move the lights (a function of time only)
+static void DeferredPasses(void);                  // G-buffer and lights (outside BeginTextureMode)
+static void DeferredCompose(void);                 // Resolve (or the forward fallback) and glows into the current target
+static void DeferredUnload(void);
+
+//------------------------------------------------------------------------------------
+// Program main entry point
+//------------------------------------------------------------------------------------
+#if !defined(RBL_DEFERRED_NO_MAIN)
+int main(void)
+{
+    // Initialization
+    //--------------------------------------------------------------------------------------
+    const int screenWidth = 800;
+    const int screenHeight = 450;
+
+    InitWindow(screenWidth, screenHeight, "raylib [models] example - lit billboards, deferred");
+
+    DeferredInit(GetRenderWidth(), GetRenderHeight());
+
+    const char *viewNames[RBL_GBUFFER_VIEW_COUNT] = { "lit", "albedo", "normal", "roughness", "occlusion", "depth", "position", "lights per pixel" };
+    bool paused = false;
+    float time = 0.0f;
+
+    SetTargetFPS(60);               // Set our game to run at 60 frames-per-second
+    //--------------------------------------------------------------------------------------
+
+    // Main game loop
+    while (!WindowShouldClose())    // Detect window close button or ESC key
+    {
+        // Update
+        //----------------------------------------------------------------------------------
+        UpdateCamera(&deferredCamera, CAMERA_ORBITAL);
+        if (IsKeyPressed(KEY_SPACE)) paused = !paused;
+        if (IsKeyPressed(KEY_N)) gbuffer.naiveFullscreen = !gbuffer.naiveFullscreen;
+        if (IsKeyPressed(KEY_D))
+        {
+            int view = (gbuffer.debugView + 1)%RBL_GBUFFER_VIEW_COUNT;
+            RblSetGBufferView(&gbuffer, view, (view == RBL_GBUFFER_VIEW_LIGHT_COUNT)? 32.0f : 20.0f);
+        }
+        if (!paused) time += GetFrameTime();
+        DeferredUpdate(time);
+        //----------------------------------------------------------------------------------
+
+        // Draw
+        //----------------------------------------------------------------------------------
+        DeferredPasses();               // Off-screen: geometry pass and lights
+
+        BeginDrawing();
+            DeferredCompose();          // Resolve into the screen, then forward glows
+
+            DrawText(TextFormat("%s: %i lights, view: %s (D), %s (N)", deferredValid? "deferred" : "forward fallback", DEFERRED_LIGHTS + 1,
+                                viewNames[gbuffer.debugView], gbuffer.naiveFullscreen? "naive full-screen loop" : "light volumes"), 10, 40, 20, RAYWHITE);
+            DrawFPS(10, 10);
+        EndDrawing();
+        //----------------------------------------------------------------------------------
+    }
+
+    // De-Initialization
+    //--------------------------------------------------------------------------------------
+    DeferredUnload();
+    CloseWindow();                  // Close window and OpenGL context
+    //--------------------------------------------------------------------------------------
+
+    return 0;
+}
+#endif
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition
+//----------------------------------------------------------------------------------
+static void DeferredInit(int width, int height)
+{
+    deferredCamera.position = (Vector3){ 9.0f, 6.0f, 9.0f };
+    deferredCamera.target = (Vector3){ 0.0f, 0.5f, 0.0f };
+    deferredCamera.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    deferredCamera.fovy = 45.0f;
+    deferredCamera.projection = CAMERA_PERSPECTIVE;
+
+    // Lights first: the shading desc compiles the light types they use
+    for (int i = 0; i < DEFERRED_LIGHTS; i++)
+    {
+        float hue = 360.0f*(float)i/DEFERRED_LIGHTS;
+        deferredLights[i].color = ColorFromHSV(hue, 0.75f, 1.0f);
+        deferredLights[i].intensity = 0.35f + 0.25f*(float)(i%3);
+        deferredLights[i].range = 1.2f + 0.4f*(float)(i%4);
+        lightPhase[i] = 0.731f*(float)i;
+    }
+    RblLight *moon = &deferredLights[DEFERRED_LIGHTS];
+    moon->type = RBL_LIGHT_DIRECTIONAL;
+    moon->direction = (Vector3){ -0.4f, -1.0f, -0.3f };
+    moon->color = (Color){ 120, 140, 255, 255 };
+    moon->intensity = 0.15f;
+    DeferredUpdate(0.0f);
+
+    // One shading description for the lighting passes: GGX, ACES, a little fog
+    RblLitShaderDesc shading = { 0 };
+    shading.brdf = RBL_BRDF_GGX;
+    shading.lightFeatures = RblLightFeatures(deferredLights, DEFERRED_LIGHTS + 1);
+    shading.tonemap = RBL_TONEMAP_ACES;
+    shading.fog = (RblFog){ RBL_FOG_EXP2, deferredBackground, 0.0f, 0.0f, 0.03f };
+    gbuffer = RblLoadGBuffer(width, height, shading);
+    deferredValid = RblIsGBufferValid(gbuffer);
+
+    // Materials: geometry-pass variants (same material model as forward) and forward fallbacks
+    RblLitShaderDesc floorDesc = shading;
+    floorDesc.roughness = 0.35f;
+    floorDesc.deferred = true;
+    floorGeometry = RblLoadLitShader(floorDesc);
+    RblLitShaderDesc lanternDesc = floorDesc;
+    lanternDesc.roughness = 0.6f;
+    lanternDesc.instanced = true;
+    lanternDesc.emissiveColor = (Color){ 40, 24, 8, 255 };         // a faint glow of their own
+    lanternGeometry = RblLoadLitShader(lanternDesc);
+    floorDesc.deferred = false; floorDesc.maxLights = RBL_MAX_LIGHTS;
+    lanternDesc.deferred = false; lanternDesc.maxLights = RBL_MAX_LIGHTS;
+    floorForward = RblLoadLitShader(floorDesc);
+    lanternForward = RblLoadLitShader(lanternDesc);
+
+    Image checker = GenImageChecked(256, 256, 32, 32, (Color){ 120, 120, 126, 255 }, (Color){ 90, 90, 98, 255 });
+    floorTexture = LoadTextureFromImage(checker);
+    UnloadImage(checker);
+    GenTextureMipmaps(&floorTexture);
+    SetTextureFilter(floorTexture, TEXTURE_FILTER_TRILINEAR);
+    floorModel = LoadModelFromMesh(GenMeshPlane(24.0f, 24.0f, 1, 1));
+    floorModel.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    sphereModel = LoadModelFromMesh(GenMeshSphere(0.6f, 24, 24));
+
+    // Lantern sprite: a rounded cut-out (alpha-tested in the G-buffer), lit as a ball by rounded normals
+    Image lantern = GenImageColor(64, 64, BLANK);
+    ImageDrawCircle(&lantern, 32, 32, 30, (Color){ 230, 210, 170, 255 });
+    ImageDrawCircle(&lantern, 32, 32, 18, (Color){ 250, 240, 220, 255 });
+    lanternTexture = LoadTextureFromImage(lantern);
+    UnloadImage(lantern);
+    lanternMaterial = LoadMaterialDefault();
+    lanternMaterial.maps[MATERIAL_MAP_ALBEDO].texture = lanternTexture;
+    for (int i = 0; i < LANTERN_ROWS*LANTERN_COLUMNS; i++)
+    {
+        lanterns[i].position = (Vector3){ -7.0f + 2.0f*(float)(i%LANTERN_COLUMNS), 0.0f, -5.0f + 2.0f*(float)(i/LANTERN_COLUMNS) };
+        lanterns[i].size = (Vector2){ 0.8f, 0.8f };
+        lanterns[i].origin = (Vector2){ 0.4f, 0.0f };               // Stands on the floor
+    }
+    lanternBuffer = RblLoadInstanceBuffer(LANTERN_ROWS*LANTERN_COLUMNS);
+
+    // Glow sprites, drawn forward and alpha-blended after the resolve (they sort against its depth)
+    Image glow = GenImageGradientRadial(32, 32, 0.0f, (Color){ 255, 255, 255, 160 }, BLANK);
+    glowTexture = LoadTextureFromImage(glow);
+    UnloadImage(glow);
+}
+
+static void DeferredUpdate(float time)
+{
+    // Lights wander over the floor on Lissajous paths, low enough to graze it
+    for (int i = 0; i < DEFERRED_LIGHTS; i++)
+    {
+        float p = lightPhase[i], speed = 0.15f + 0.05f*(float)(i%5);
+        deferredLights[i].position = (Vector3){ 10.0f*sinf(speed*time*1.3f + p), 0.25f + 0.2f*(float)(i%3), 10.0f*cosf(speed*time + 1.7f*p) };
+    }
+}
+
+static void DrawScene(Material floorMaterial, Material sphereMaterial, Material lanternMat)
+{
+    floorModel.materials[0].shader = floorMaterial.shader;
+    DrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    Material keep = sphereModel.materials[0];
+    sphereModel.materials[0] = sphereMaterial;
+    for (int i = 0; i < SPHERE_COUNT; i++) DrawModel(sphereModel, (Vector3){ -6.0f + 3.0f*(float)i, 0.6f, 3.0f }, 1.0f, WHITE);
+    sphereModel.materials[0] = keep;
+    RblInstancedDesc desc = { 0 };
+    desc.facing = RBL_FACING_AXIS;                      // Upright, turning toward the camera
+    desc.roundness = 1.0f;                              // Lit like a ball
+    RblDrawInstanced(&lanternBuffer, deferredCamera, lanternMat, desc, lanterns, LANTERN_ROWS*LANTERN_COLUMNS);
+}
+
+static void DeferredPasses(void)
+{
+    if (!deferredValid) return;
+    Material floorMaterial = floorModel.materials[0], sphereMaterial = floorModel.materials[0], lanternMat = lanternMaterial;
+    floorMaterial.shader = floorGeometry.shader;
+    sphereMaterial.shader = floorGeometry.shader;
+    lanternMat.shader = lanternGeometry.shader;
+    // 1. Geometry pass: billboards and Models write the G-buffer
+    RblBeginGBuffer(&gbuffer, deferredCamera);
+        DrawScene(floorMaterial, sphereMaterial, lanternMat);
+    RblEndGBuffer(&gbuffer);
+    // 2. Lights: the moon full screen, every point light as a volume
+    RblDrawDeferredLights(&gbuffer, deferredLights, DEFERRED_LIGHTS + 1, deferredAmbient);
+}
+
+static void DeferredCompose(void)
+{
+    ClearBackground(deferredBackground);
+    if (deferredValid)
+    {
+        // 3. Resolve (fog, tonemap, depth) into the current target
+        RblResolveGBuffer(&gbuffer);
+    }
+    else
+    {
+        // Forward fallback: the first 63 point lights and the moon
+        RblLight some[RBL_MAX_LIGHTS];
+        for (int i = 0; i < RBL_MAX_LIGHTS - 1; i++) some[i] = deferredLights[i];
+        some[RBL_MAX_LIGHTS - 1] = deferredLights[DEFERRED_LIGHTS];
+        RblSetLights(&floorForward, some, RBL_MAX_LIGHTS, deferredAmbient);
+        RblSetLights(&lanternForward, some, RBL_MAX_LIGHTS, deferredAmbient);
+        Material floorMaterial = floorModel.materials[0], sphereMaterial = floorModel.materials[0], lanternMat = lanternMaterial;
+        floorMaterial.shader = floorForward.shader;
+        sphereMaterial.shader = floorForward.shader;
+        lanternMat.shader = lanternForward.shader;
+        BeginMode3D(deferredCamera);
+            DrawScene(floorMaterial, sphereMaterial, lanternMat);
+        EndMode3D();
+    }
+
+    // 4. Forward after the resolve: additive glow sprites at the lights, hidden behind deferred geometry
+    BeginMode3D(deferredCamera);
+        rlDisableDepthMask();
+        BeginBlendMode(BLEND_ADDITIVE);
+        for (int i = 0; i < DEFERRED_LIGHTS; i += 2)
+            DrawBillboard(deferredCamera, glowTexture, deferredLights[i].position, 0.35f, deferredLights[i].color);
+        EndBlendMode();
+        rlEnableDepthMask();
+    EndMode3D();
+}
+
+static void DeferredUnload(void)
+{
+    RblUnloadGBuffer(&gbuffer);
+    RblUnloadLitShader(floorGeometry);
+    RblUnloadLitShader(lanternGeometry);
+    RblUnloadLitShader(floorForward);
+    RblUnloadLitShader(lanternForward);
+    RblUnloadInstanceBuffer(&lanternBuffer);
+    RblClose();
+    UnloadModel(floorModel);                        // Meshes and material maps; shaders and textures are unloaded here
+    UnloadModel(sphereModel);
+    UnloadTexture(floorTexture);
+    UnloadTexture(lanternTexture);
+    UnloadTexture(glowTexture);
+    MemFree(lanternMaterial.maps);
+}
