@@ -30,6 +30,10 @@
 *         (Reinhard, ACES fit) and gamma; see LIGHTING. Only what a desc asks for is compiled, and
 *         each variant compiles once (cache). The GLSL sources live in shaders/ and are embedded
 *         below by `make shaders`
+*       - Deferred helper (RblGBuffer): 10-byte G-buffer + depth, position rebuilt from depth,
+*         bounded lights drawn as instanced light volumes (cost follows the pixels they touch,
+*         1024+ lights), the forward path's lighting code and material decoding, debug views,
+*         forward-drawn transparent billboards sort against its depth; see DEFERRED
 *       - Material packing (CPU, RblPackMaterial): albedo + one RGBA8 material texture (hemi-octahedral
 *         normal, specular, occlusion) + an optional 1-byte emissive mask; atlas gutters dilated, mip
 *         chains averaged in linear light with renormalised normals; height -> normal / occlusion and
@@ -37,7 +41,11 @@
 *
 *   LIMITATIONS:
 *       - OpenGL 3.3 core (GLSL 330) only for now; GLES2/WebGL variants are not written yet
-*       - The deferred helper and shadows are planned, not implemented
+*       - Shadows are planned, not implemented
+*       - Deferred: one BRDF (and light feature set) per G-buffer; a Blinn-Phong specular colour is
+*         folded into its intensity (luminance, at most 1); the geometry and light passes leave the
+*         default framebuffer bound (run them outside BeginTextureMode, resolve inside it); the
+*         resolve target should have the G-buffer's size (depth is copied texel for texel)
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance
 *         (no split-sum table), metalness is one value per material (the packed layout has no channel)
 *       - Surface values set in the desc (roughness, shininess, ...) are uniforms, but a desc that differs
@@ -100,6 +108,35 @@
 *       - Variants: RblLitShaderDesc -> #defines (light types, BRDF, maps, fog, tonemap, ...) before the
 *         shared sources; RblLightFeatures(lights, n) says what a light set needs. Identical descs
 *         return the same program (reference counted; RblUnloadLitShader releases one reference).
+*
+*   DEFERRED (RblLoadGBuffer; shaders/gbuffer.fs.glsl, deferred.vs.glsl, deferred.fs.glsl):
+*       Per frame: RblBeginGBuffer(&g, camera) -> draw Models and billboards whose material shader is a
+*       desc.deferred variant -> RblEndGBuffer(&g) -> RblDrawDeferredLights(&g, lights, n, ambient) ->
+*       (inside BeginDrawing/BeginTextureMode) RblResolveGBuffer(&g) -> forward draws (transparent
+*       billboards) sort against the depth the resolve wrote. RblLoadGBuffer failing (no MRT, no float
+*       target, incomplete framebuffer, a pass that does not compile) logs and returns an invalid
+*       G-buffer: RblBeginGBuffer returns false and the program renders forward.
+*       Layout, 10 bytes per pixel (colour targets; depth and accumulation excluded):
+*         RT0 RGBA8    r,g,b albedo sRGB-encoded (8-bit steps spent where the eye sees them), a occlusion
+*         RT1 RGBA8    r,g,b world normal, octahedral (Cigolle et al. 2014), 12 bits per coordinate:
+*                      r = x[11:4], g = x[3:0] << 4 | y[11:8], b = y[7:0]; a specular intensity
+*                      (Blinn-Phong, colour luminance folded in) or perceptual roughness (GGX)
+*                      error over the sphere: mean 0.021, max 0.059 degrees (8+8: 0.34/0.95, 16+16: 0.0013/0.0037)
+*         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high byte, g low byte; GGX: r metalness
+*         RGBA16F      light accumulation: emission (geometry pass), then ambient and lights (additive)
+*         depth        24-bit depth texture (rlLoadTextureDepth), raylib's perspective (near 0.05, far 4000)
+*       Not stored: position (rebuilt from depth: view z = n f/(f - d (f - n)) straight from the
+*       window depth, which avoids the cancellation of an inverse projection matrix; the shader stays
+*       within 3 steps of the 24-bit depth of a double reconstruction, and the depth itself places a
+*       point within a few steps: 3e-6 units at 0.5, 1e-3 at 20, 1.1 at 400 from the eye), view
+*       vector, anything derivable. Why 24-bit depth and raylib's projection: it is what BeginMode3D
+*       uses, so Models and billboards drawn forward afterwards test against the same depth, and
+*       lighting tolerates the far-field error (1/255 against forward at every test distance).
+*       Lights: directional and range-0 lights in full-screen passes (uniform arrays, <= RBL_MAX_LIGHTS),
+*       bounded point/spot lights as one instanced draw of a sphere proxy that encloses the range
+*       (back faces only: correct with the eye inside a volume; fragments outside the range discard).
+*       The windowed falloff is exactly zero at the range, so volumes change no pixel: volumes and the
+*       naive full-screen loop (g.naiveFullscreen, kept for comparison) agree within 1/255.
 *
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
@@ -164,7 +201,8 @@
 *   VERSIONS HISTORY:
 *       0.1 (2026-11-22) First release: geometry (all facing modes, flips, rotated frames, rounded
 *                        normals), immediate, batched and instanced paths, packed material maps,
-*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog, tonemap).
+*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog, tonemap),
+*                        deferred helper (10-byte G-buffer, light volumes, debug views).
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend

@@ -29,8 +29,8 @@ for c in "gcc -std=c99 -x c" "clang -std=c99 -x c" "g++ -std=c++11 -x c++" "clan
 done
 
 # The README's code must compile and link as printed: the first ```c block is the drop-in program;
-# every later block is a snippet, compiled as the body of a function that has a `Model model`
-awk '/^```c$/{n++; f=1; if (n > 1) print "void readme_snippet_" n "(Model model);\nvoid readme_snippet_" n "(Model model)\n{"; next}
+# every later block is a snippet, compiled as the body of a function given a `Model model` and a `Camera3D camera`
+awk '/^```c$/{n++; f=1; if (n > 1) print "void readme_snippet_" n "(Model model, Camera3D camera);\nvoid readme_snippet_" n "(Model model, Camera3D camera)\n{\n(void)model; (void)camera;"; next}
      /^```$/{ if (f && n > 1) print "}"; f=0; next } f' README.md > "$BUILD/tests/readme_example.c"
 if out=$(cc -std=c99 -Wall -Wextra -Werror -I. $RAYLIB_CFLAGS "$BUILD/tests/readme_example.c" -o "$BUILD/tests/readme_example" $RAYLIB_LIBS 2>&1); then
   echo "  ok    README program compiles and links"; pass=$((pass + 1))
