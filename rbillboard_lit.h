@@ -3708,6 +3708,20 @@ static Matrix rbl__matInvert(Matrix m)
     return r;
 }
 
+// Per-light instance buffer of the volume VAO (created, or re-created when it grows)
+static void rbl__loadVolumeInstances(RblGBuffer *g, int capacity)
+{
+    rlEnableVertexArray(g->volumeVao);
+    g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
+    for (int a = 0; a < 4; a++)
+    {
+        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, (a == 3)? 3 : 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
+        rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
+        rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
+    }
+    rlDisableVertexArray();
+}
+
 // Sphere proxy enclosing the unit sphere: a UV sphere scaled so every face plane lies outside it
 static void rbl__loadVolumeMesh(RblGBuffer *g)
 {
@@ -3752,14 +3766,8 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
     rlEnableVertexAttribute(0);
     g->volumeIbo = rlLoadVertexBufferElement(idx, (int)sizeof(idx), false);
     g->volumeIndexCount = INDICES;
-    g->instanceVbo = rlLoadVertexBuffer(NULL, g->instanceCapacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
-    for (int a = 0; a < 4; a++)
-    {
-        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, (a == 3)? 3 : 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
-        rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
-        rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
-    }
     rlDisableVertexArray();
+    rbl__loadVolumeInstances(g, g->instanceCapacity);
     g->emptyVao = rlLoadVertexArray();
 }
 
@@ -4079,15 +4087,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
         if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: out of memory for %i light volumes", bounded); return false; }
         g->instanceData = data;
         rlUnloadVertexBuffer(g->instanceVbo);
-        rlEnableVertexArray(g->volumeVao);
-        g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
-        for (int a = 0; a < 4; a++)
-        {
-            rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, (a == 3)? 3 : 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
-            rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
-            rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
-        }
-        rlDisableVertexArray();
+        rbl__loadVolumeInstances(g, capacity);
         TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->instanceCapacity, capacity);
         g->instanceCapacity = capacity;
     }
