@@ -124,12 +124,14 @@
 *                      error over the sphere: mean 0.021, max 0.059 degrees (8+8: 0.34/0.95, 16+16: 0.0013/0.0037)
 *         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high byte, g low byte; GGX: r metalness
 *         RGBA16F      light accumulation: emission (geometry pass), then ambient and lights (additive)
-*         depth        24-bit depth texture (rlLoadTextureDepth), raylib's perspective (near 0.05, far 4000)
+*         depth        depth texture (rlLoadTextureDepth: at least 24 bits; llvmpipe gives 32), raylib's
+*                      perspective (near 0.05, far 4000)
+*       Allocated in all: 10 + 8 (accumulation) + 4 (depth) = 22 bytes per pixel.
 *       Not stored: position (rebuilt from depth: view z = n f/(f - d (f - n)) straight from the
 *       window depth, which avoids the cancellation of an inverse projection matrix; the shader stays
-*       within 3 steps of the 24-bit depth of a double reconstruction, and the depth itself places a
+*       within 3 steps of a 24-bit depth of a double reconstruction, and the depth itself places a
 *       point within a few steps: 3e-6 units at 0.5, 1e-3 at 20, 1.1 at 400 from the eye), view
-*       vector, anything derivable. Why 24-bit depth and raylib's projection: it is what BeginMode3D
+*       vector, anything derivable. Why raylib's depth texture and projection: it is what BeginMode3D
 *       uses, so Models and billboards drawn forward afterwards test against the same depth, and
 *       lighting tolerates the far-field error (1/255 against forward at every test distance).
 *       Lights: directional and range-0 lights in full-screen passes (uniform arrays, <= RBL_MAX_LIGHTS),
@@ -558,7 +560,7 @@ typedef struct RblGBuffer {
     Texture2D normal;               // RGBA8: octahedral 12+12 normal, specular/roughness
     Texture2D params;               // RG8: Blinn-Phong shininess (16-bit log2) or GGX metalness
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
-    Texture2D depth;                // Depth texture (24 bits, raylib's rlLoadTextureDepth)
+    Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblLitShaderDesc shading;       // BRDF, light features, ambient, fog, tonemap of the lighting passes
     Shader passes[5];               // Ambient + unbounded lights, volumes, resolve, and the two light-count variants
     int locs[5][24];                // Uniform locations per pass (looked up once, at load)
@@ -746,13 +748,13 @@ static const char *const rbl__shader_deferred_fs[] = {
     "    return (rblInvView*vec4(view, 1.0)).xyz;\n",
     "}\n",
     "\n",
-    "RblShadingPoint rblGBufferSurface(ivec2 texel, float depth)\n",
+    "RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)\n",
     "{\n",
     "    vec4 a = texelFetch(rblGAlbedo, texel, 0);\n",
     "    vec4 n = texelFetch(rblGNormal, texel, 0);\n",
     "    vec4 p = texelFetch(rblGParams, texel, 0);\n",
     "    RblShadingPoint s;\n",
-    "    s.position = rblPositionFromDepth(texel, depth);\n",
+    "    s.position = position;\n",
     "    s.normal = rblUnpackNormal(n.rgb);\n",
     "    s.albedo = rblSrgbToLinear(a.rgb);\n",
     "    s.occlusion = a.a;\n",
@@ -791,7 +793,7 @@ static const char *const rbl__shader_deferred_fs[] = {
     "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
     "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
     "    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
-    "    RblShadingPoint s = rblGBufferSurface(texel, depth);\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = vec3(0.0);\n",
     "    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);\n",
     "    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;\n",
@@ -802,7 +804,13 @@ static const char *const rbl__shader_deferred_fs[] = {
     "    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);\n",
     "    finalColor = vec4(v, 1.0);\n",
     "#else\n",
-    "    RblShadingPoint s = rblGBufferSurface(texel, depth);\n",
+    "    vec3 position = rblPositionFromDepth(texel, depth);\n",
+    "#if RBL_PASS == 2\n",
+    "    // Most of a proxy's pixels lie outside the light's range: reject them from depth alone\n",
+    "    vec3 toLight = volumePosition.xyz - position;\n",
+    "    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;\n",
+    "#endif\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);\n",
     "#if RBL_PASS == 1\n",
     "#ifdef RBL_COUNT_LIGHTS\n",
@@ -811,8 +819,6 @@ static const char *const rbl__shader_deferred_fs[] = {
     "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);\n",
     "#endif\n",
     "#else\n",
-    "    vec3 toLight = volumePosition.xyz - s.position;\n",
-    "    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;     // outside the range: no light\n",
     "#ifdef RBL_COUNT_LIGHTS\n",
     "    finalColor = vec4(1.0);\n",
     "#else\n",

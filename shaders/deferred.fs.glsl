@@ -62,13 +62,13 @@ vec3 rblPositionFromDepth(ivec2 texel, float depth)
     return (rblInvView*vec4(view, 1.0)).xyz;
 }
 
-RblShadingPoint rblGBufferSurface(ivec2 texel, float depth)
+RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
 {
     vec4 a = texelFetch(rblGAlbedo, texel, 0);
     vec4 n = texelFetch(rblGNormal, texel, 0);
     vec4 p = texelFetch(rblGParams, texel, 0);
     RblShadingPoint s;
-    s.position = rblPositionFromDepth(texel, depth);
+    s.position = position;
     s.normal = rblUnpackNormal(n.rgb);
     s.albedo = rblSrgbToLinear(a.rgb);
     s.occlusion = a.a;
@@ -107,7 +107,7 @@ void main()
     gl_FragDepth = depth;                               // later forward draws sort against this
     vec3 color = texelFetch(rblGAccum, texel, 0).rgb;
     if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }
-    RblShadingPoint s = rblGBufferSurface(texel, depth);
+    RblShadingPoint s = rblGBufferSurface(texel, position);
     vec3 v = vec3(0.0);
     if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);
     else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;
@@ -118,7 +118,13 @@ void main()
     else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);
     finalColor = vec4(v, 1.0);
 #else
-    RblShadingPoint s = rblGBufferSurface(texel, depth);
+    vec3 position = rblPositionFromDepth(texel, depth);
+#if RBL_PASS == 2
+    // Most of a proxy's pixels lie outside the light's range: reject them from depth alone
+    vec3 toLight = volumePosition.xyz - position;
+    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;
+#endif
+    RblShadingPoint s = rblGBufferSurface(texel, position);
     vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);
 #if RBL_PASS == 1
 #ifdef RBL_COUNT_LIGHTS
@@ -127,8 +133,6 @@ void main()
     finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);
 #endif
 #else
-    vec3 toLight = volumePosition.xyz - s.position;
-    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;     // outside the range: no light
 #ifdef RBL_COUNT_LIGHTS
     finalColor = vec4(1.0);
 #else

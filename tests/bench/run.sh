@@ -20,6 +20,10 @@ echo "== bench_lighting"
 BENCH_CSV="$csv" "$BUILD/bench/bench_lighting"
 
 echo
+echo "== bench_deferred"
+BENCH_CSV="$csv" "$BUILD/bench/bench_deferred"
+
+echo
 echo "== $csv"
 if command -v column >/dev/null 2>&1; then
   column -t -s, "$csv"
