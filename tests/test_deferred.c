@@ -8,14 +8,7 @@
 #define DEF_W 128
 #define DEF_H 96
 
-static bool glIsTextureFn(unsigned int id)
-{
-    unsigned char (*isTexture)(unsigned int) = NULL;
-    void *p = rtGlProc("glIsTexture");
-    if (p == NULL) return false;
-    memcpy(&isTexture, &p, sizeof(p));
-    return isTexture(id) != 0;
-}
+static bool glIsTextureFn(unsigned int id) { return glIsObject("glIsTexture", id); }
 
 // ---- a mixed scene: fixed plane, raylib sphere Model, immediate / batched / instanced billboards -----
 typedef struct DefScene {

@@ -6,15 +6,17 @@
 
 #include "lighting_reference.h"
 
-// glIsProgram through the context's loader (memcpy: ISO C has no object-to-function pointer cast)
-static bool glIsProgramFn(unsigned int id)
+// glIsProgram / glIsTexture / ... through the context's loader (memcpy: ISO C has no
+// object-to-function pointer cast)
+static bool glIsObject(const char *query, unsigned int id)
 {
-    unsigned char (*isProgram)(unsigned int) = NULL;
-    void *p = rtGlProc("glIsProgram");
+    unsigned char (*is)(unsigned int) = NULL;
+    void *p = rtGlProc(query);
     if (p == NULL) return false;
-    memcpy(&isProgram, &p, sizeof(p));
-    return isProgram(id) != 0;
+    memcpy(&is, &p, sizeof(p));
+    return is(id) != 0;
 }
+static bool glIsProgramFn(unsigned int id) { return glIsObject("glIsProgram", id); }
 
 #define LIT_TARGET 96
 #define LIT_PLANE 40.0f         // plane z = 0 centred at the origin, facing +Z (fixed billboard)
