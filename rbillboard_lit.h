@@ -704,9 +704,8 @@ static const char *const rbl__shader_deferred_fs[] = {
     "uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness\n",
     "uniform sampler2D rblGDepth;            // depth texture of the geometry pass\n",
     "uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)\n",
-    "uniform mat4 rblInvProjection;          // inverse projection of the geometry pass (orthographic cameras)\n",
-    "uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1/P00; w < 0: orthographic\n",
-    "uniform float rblInvP11;                // 1/P11 (perspective)\n",
+    "uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0\n",
+    "uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's projection\n",
     "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
     "uniform vec3 rblEye;                    // camera position\n",
     "#if RBL_PASS == 3\n",
@@ -727,10 +726,9 @@ static const char *const rbl__shader_deferred_fs[] = {
     "#endif\n",
     "}\n",
     "\n",
-    "// World position from the depth buffer. Perspective: view distance z = n f/(f - d (f - n)) straight\n",
-    "// from the window depth d (one rounding where an inverse matrix would cancel two large terms; the\n",
-    "// error stays within ~1 step of the 24-bit depth), then x, y along the pixel's ray. Orthographic:\n",
-    "// the inverse projection (linear, nothing cancels). Then the inverse view.\n",
+    "// World position from the depth buffer, in closed form (an inverse projection matrix would cancel two\n",
+    "// large terms). Perspective: view distance z = n f/(f - d (f - n)) from the window depth d, then x, y\n",
+    "// along the pixel's ray. Orthographic: z = n + d (f - n), x, y straight from NDC. Then the inverse view.\n",
     "vec3 rblPositionFromDepth(ivec2 texel, float depth)\n",
     "{\n",
     "    vec2 ndc = (vec2(texel) + 0.5)/vec2(textureSize(rblGDepth, 0))*2.0 - 1.0;\n",
@@ -738,13 +736,9 @@ static const char *const rbl__shader_deferred_fs[] = {
     "    if (rblDepthLinear.w > 0.0)\n",
     "    {\n",
     "        float z = rblDepthLinear.x/(rblDepthLinear.z - depth*rblDepthLinear.y);\n",
-    "        view = vec3(ndc*vec2(rblDepthLinear.w, rblInvP11)*z, -z);\n",
+    "        view = vec3(ndc*rblInvP*z, -z);\n",
     "    }\n",
-    "    else\n",
-    "    {\n",
-    "        vec4 v = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);\n",
-    "        view = v.xyz/v.w;\n",
-    "    }\n",
+    "    else view = vec3(ndc*rblInvP, -(rblDepthLinear.x + depth*rblDepthLinear.y));\n",
     "    return (rblInvView*vec4(view, 1.0)).xyz;\n",
     "}\n",
     "\n",
@@ -1542,6 +1536,14 @@ static void rbl__matToArray(Matrix m, float a[16])
     a[8] = m.m8; a[9] = m.m9; a[10] = m.m10; a[11] = m.m11; a[12] = m.m12; a[13] = m.m13; a[14] = m.m14; a[15] = m.m15;
 }
 
+static Matrix rbl__matFromArray(const float a[16])
+{
+    Matrix m;
+    m.m0 = a[0]; m.m1 = a[1]; m.m2 = a[2]; m.m3 = a[3]; m.m4 = a[4]; m.m5 = a[5]; m.m6 = a[6]; m.m7 = a[7];
+    m.m8 = a[8]; m.m9 = a[9]; m.m10 = a[10]; m.m11 = a[11]; m.m12 = a[12]; m.m13 = a[13]; m.m14 = a[14]; m.m15 = a[15];
+    return m;
+}
+
 static Matrix rbl__matMul(Matrix left, Matrix right)
 {
     float a[16], b[16], r[16];
@@ -1550,10 +1552,7 @@ static Matrix rbl__matMul(Matrix left, Matrix right)
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++)
             r[i*4 + j] = a[i*4 + 0]*b[0*4 + j] + a[i*4 + 1]*b[1*4 + j] + a[i*4 + 2]*b[2*4 + j] + a[i*4 + 3]*b[3*4 + j];
-    Matrix m;
-    m.m0 = r[0]; m.m1 = r[1]; m.m2 = r[2]; m.m3 = r[3]; m.m4 = r[4]; m.m5 = r[5]; m.m6 = r[6]; m.m7 = r[7];
-    m.m8 = r[8]; m.m9 = r[9]; m.m10 = r[10]; m.m11 = r[11]; m.m12 = r[12]; m.m13 = r[13]; m.m14 = r[14]; m.m15 = r[15];
-    return m;
+    return rbl__matFromArray(r);
 }
 
 static Matrix rbl__identity(void)
@@ -3374,7 +3373,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     const RblMaterialLayout *m = &d->material;
     bool emissiveColor = (d->emissiveColor.r | d->emissiveColor.g | d->emissiveColor.b) != 0;
     bool exposure = (d->tonemap != RBL_TONEMAP_NONE) || (d->exposure != 1.0f);
-    bool view = (d->brdf != RBL_BRDF_LAMBERT) || (d->fog.mode != RBL_FOG_NONE);
+    bool view = !d->deferred && ((d->brdf != RBL_BRDF_LAMBERT) || (d->fog.mode != RBL_FOG_NONE));   // the G-buffer stores no view
     int n = snprintf(out, size, "#define RBL_LIGHTS %i\n#define RBL_BRDF %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n"
                      "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n%s%s%s%s%s%s%s%s%s%s",
                      d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog.mode, d->tonemap,
@@ -3675,43 +3674,25 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
 static bool rbl__gbufferForceFailure = false;
 
 enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMBIENT_COUNT, RBL__PASS_VOLUME_COUNT };
-enum { RBL__GLOC_ALBEDO = 0, RBL__GLOC_NORMAL, RBL__GLOC_PARAMS, RBL__GLOC_DEPTH, RBL__GLOC_ACCUM, RBL__GLOC_INVPROJ, RBL__GLOC_INVVIEW,
+enum { RBL__GLOC_ALBEDO = 0, RBL__GLOC_NORMAL, RBL__GLOC_PARAMS, RBL__GLOC_DEPTH, RBL__GLOC_ACCUM, RBL__GLOC_INVVIEW,
        RBL__GLOC_EYE, RBL__GLOC_MVP, RBL__GLOC_VIEW, RBL__GLOC_SCALE, RBL__GLOC_AMBIENT, RBL__GLOC_GROUND, RBL__GLOC_UP,
        RBL__GLOC_LIGHT_COUNT, RBL__GLOC_LIGHT_POSITION, RBL__GLOC_LIGHT_COLOR, RBL__GLOC_LIGHT_SPOT, RBL__GLOC_LIGHT_ATTENUATION,
-       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_DEPTH_LINEAR, RBL__GLOC_INV_P11, RBL__GLOC_COUNT };
+       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_DEPTH_LINEAR, RBL__GLOC_INV_P, RBL__GLOC_COUNT };
 #define RBL__INSTANCE_FLOATS 16         // position, colour, spot (vec4 each), falloff (vec3) + padding
 
-// Inverse of a 4x4 (cofactors in double: the matrices are projection and view, well conditioned)
-static Matrix rbl__matInvert(Matrix m)
+// Inverse of a view matrix (rotation + translation): transposed rotation, translation -R^T t
+static Matrix rbl__rigidInverse(Matrix view)
 {
-    float a[16];
-    rbl__matToArray(m, a);
-    double b[16], inv[16];
-    for (int i = 0; i < 16; i++) b[i] = a[i];
-    inv[0] = b[5]*b[10]*b[15] - b[5]*b[11]*b[14] - b[9]*b[6]*b[15] + b[9]*b[7]*b[14] + b[13]*b[6]*b[11] - b[13]*b[7]*b[10];
-    inv[4] = -b[4]*b[10]*b[15] + b[4]*b[11]*b[14] + b[8]*b[6]*b[15] - b[8]*b[7]*b[14] - b[12]*b[6]*b[11] + b[12]*b[7]*b[10];
-    inv[8] = b[4]*b[9]*b[15] - b[4]*b[11]*b[13] - b[8]*b[5]*b[15] + b[8]*b[7]*b[13] + b[12]*b[5]*b[11] - b[12]*b[7]*b[9];
-    inv[12] = -b[4]*b[9]*b[14] + b[4]*b[10]*b[13] + b[8]*b[5]*b[14] - b[8]*b[6]*b[13] - b[12]*b[5]*b[10] + b[12]*b[6]*b[9];
-    inv[1] = -b[1]*b[10]*b[15] + b[1]*b[11]*b[14] + b[9]*b[2]*b[15] - b[9]*b[3]*b[14] - b[13]*b[2]*b[11] + b[13]*b[3]*b[10];
-    inv[5] = b[0]*b[10]*b[15] - b[0]*b[11]*b[14] - b[8]*b[2]*b[15] + b[8]*b[3]*b[14] + b[12]*b[2]*b[11] - b[12]*b[3]*b[10];
-    inv[9] = -b[0]*b[9]*b[15] + b[0]*b[11]*b[13] + b[8]*b[1]*b[15] - b[8]*b[3]*b[13] - b[12]*b[1]*b[11] + b[12]*b[3]*b[9];
-    inv[13] = b[0]*b[9]*b[14] - b[0]*b[10]*b[13] - b[8]*b[1]*b[14] + b[8]*b[2]*b[13] + b[12]*b[1]*b[10] - b[12]*b[2]*b[9];
-    inv[2] = b[1]*b[6]*b[15] - b[1]*b[7]*b[14] - b[5]*b[2]*b[15] + b[5]*b[3]*b[14] + b[13]*b[2]*b[7] - b[13]*b[3]*b[6];
-    inv[6] = -b[0]*b[6]*b[15] + b[0]*b[7]*b[14] + b[4]*b[2]*b[15] - b[4]*b[3]*b[14] - b[12]*b[2]*b[7] + b[12]*b[3]*b[6];
-    inv[10] = b[0]*b[5]*b[15] - b[0]*b[7]*b[13] - b[4]*b[1]*b[15] + b[4]*b[3]*b[13] + b[12]*b[1]*b[7] - b[12]*b[3]*b[5];
-    inv[14] = -b[0]*b[5]*b[14] + b[0]*b[6]*b[13] + b[4]*b[1]*b[14] - b[4]*b[2]*b[13] - b[12]*b[1]*b[6] + b[12]*b[2]*b[5];
-    inv[3] = -b[1]*b[6]*b[11] + b[1]*b[7]*b[10] + b[5]*b[2]*b[11] - b[5]*b[3]*b[10] - b[9]*b[2]*b[7] + b[9]*b[3]*b[6];
-    inv[7] = b[0]*b[6]*b[11] - b[0]*b[7]*b[10] - b[4]*b[2]*b[11] + b[4]*b[3]*b[10] + b[8]*b[2]*b[7] - b[8]*b[3]*b[6];
-    inv[11] = -b[0]*b[5]*b[11] + b[0]*b[7]*b[9] + b[4]*b[1]*b[11] - b[4]*b[3]*b[9] - b[8]*b[1]*b[7] + b[8]*b[3]*b[5];
-    inv[15] = b[0]*b[5]*b[10] - b[0]*b[6]*b[9] - b[4]*b[1]*b[10] + b[4]*b[2]*b[9] + b[8]*b[1]*b[6] - b[8]*b[2]*b[5];
-    double det = b[0]*inv[0] + b[1]*inv[4] + b[2]*inv[8] + b[3]*inv[12];
-    double id = (det != 0.0)? 1.0/det : 0.0;
-    Matrix r;
-    r.m0 = (float)(inv[0]*id); r.m1 = (float)(inv[1]*id); r.m2 = (float)(inv[2]*id); r.m3 = (float)(inv[3]*id);
-    r.m4 = (float)(inv[4]*id); r.m5 = (float)(inv[5]*id); r.m6 = (float)(inv[6]*id); r.m7 = (float)(inv[7]*id);
-    r.m8 = (float)(inv[8]*id); r.m9 = (float)(inv[9]*id); r.m10 = (float)(inv[10]*id); r.m11 = (float)(inv[11]*id);
-    r.m12 = (float)(inv[12]*id); r.m13 = (float)(inv[13]*id); r.m14 = (float)(inv[14]*id); r.m15 = (float)(inv[15]*id);
-    return r;
+    float a[16], r[16];
+    rbl__matToArray(view, a);
+    for (int i = 0; i < 3; i++)
+    {
+        for (int j = 0; j < 3; j++) r[4*j + i] = a[4*i + j];
+        r[12 + i] = -(a[4*i]*a[12] + a[4*i + 1]*a[13] + a[4*i + 2]*a[14]);
+        r[4*i + 3] = 0.0f;
+    }
+    r[15] = 1.0f;
+    return rbl__matFromArray(r);
 }
 
 // Per-light instance buffer of the volume VAO (created, or re-created when it grows)
@@ -3844,9 +3825,9 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 }
 
 static const char *const rbl__gbufferUniforms[RBL__GLOC_COUNT] = { "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum",
-    "rblInvProjection", "rblInvView", "rblEye", "mvp", "rblDebugView", "rblDebugScale", "rblAmbient", "rblAmbientGround", "rblAmbientUp",
+    "rblInvView", "rblEye", "mvp", "rblDebugView", "rblDebugScale", "rblAmbient", "rblAmbientGround", "rblAmbientUp",
     "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation", "rblFog", "rblFogStart", "rblExposure",
-    "rblDepthLinear", "rblInvP11" };
+    "rblDepthLinear", "rblInvP" };
 
 RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
 {
@@ -3891,6 +3872,14 @@ RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
         memset(&g, 0, sizeof(g));
         return g;
     }
+    // The resolve's fog and exposure are fixed by the shading desc: uploaded once
+    RblLitShader resolve;
+    memset(&resolve, 0, sizeof(resolve));
+    resolve.shader = g.passes[RBL__PASS_RESOLVE];
+    resolve.locFog = g.locs[RBL__PASS_RESOLVE][RBL__GLOC_FOG];
+    resolve.locFogStart = g.locs[RBL__PASS_RESOLVE][RBL__GLOC_FOG_START];
+    if (resolve.locFog != -1) rbl__setFogUniforms(&resolve, g.shading.fog);
+    SetShaderValue(resolve.shader, g.locs[RBL__PASS_RESOLVE][RBL__GLOC_EXPOSURE], &g.shading.exposure, SHADER_UNIFORM_FLOAT);
     g.instanceCapacity = 256;
     g.instanceData = (float *)RBL_MALLOC((size_t)g.instanceCapacity*RBL__INSTANCE_FLOATS*sizeof(float));
     rbl__loadVolumeMesh(&g);
@@ -4021,18 +4010,17 @@ static void rbl__bindGBufferPass(const RblGBuffer *g, int pass)
         rlEnableTexture(tex[i]);
         rlSetUniform(loc[RBL__GLOC_ALBEDO + i], &i, SHADER_UNIFORM_INT, 1);
     }
-    if (loc[RBL__GLOC_INVPROJ] != -1) rlSetUniformMatrix(loc[RBL__GLOC_INVPROJ], rbl__matInvert(g->projection));
-    if (loc[RBL__GLOC_INVVIEW] != -1) rlSetUniformMatrix(loc[RBL__GLOC_INVVIEW], rbl__matInvert(g->view));
+    if (loc[RBL__GLOC_INVVIEW] != -1) rlSetUniformMatrix(loc[RBL__GLOC_INVVIEW], rbl__rigidInverse(g->view));
     if (loc[RBL__GLOC_MVP] != -1) rlSetUniformMatrix(loc[RBL__GLOC_MVP], rbl__matMul(g->view, g->projection));
     float eye[3] = { g->eye.x, g->eye.y, g->eye.z };
     if (loc[RBL__GLOC_EYE] != -1) rlSetUniform(loc[RBL__GLOC_EYE], eye, SHADER_UNIFORM_VEC3, 1);
-    // Perspective depth linearisation constants (w = -1 marks an orthographic projection)
+    // View position from window depth, in closed form (deferred.fs.glsl): perspective (w = 1) or orthographic
     double n = rlGetCullDistanceNear(), f = rlGetCullDistanceFar();
     bool perspective = (g->projection.m15 == 0.0f);
-    float depthLinear[4] = { (float)(n*f), (float)(f - n), (float)f, perspective? 1.0f/g->projection.m0 : -1.0f };
-    float invP11 = 1.0f/g->projection.m5;
+    float depthLinear[4] = { perspective? (float)(n*f) : (float)n, (float)(f - n), (float)f, perspective? 1.0f : 0.0f };
+    float invP[2] = { 1.0f/g->projection.m0, 1.0f/g->projection.m5 };
     if (loc[RBL__GLOC_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__GLOC_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
-    if (loc[RBL__GLOC_INV_P11] != -1) rlSetUniform(loc[RBL__GLOC_INV_P11], &invP11, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__GLOC_INV_P] != -1) rlSetUniform(loc[RBL__GLOC_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
 }
 
 static void rbl__unbindGBufferPass(void)
@@ -4041,15 +4029,21 @@ static void rbl__unbindGBufferPass(void)
     rlDisableShader();
 }
 
-// Full-screen pass over unbounded lights (as the forward shader's uniform arrays) plus the ambient
-static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const float ambient[3])
+// Full-screen pass over unbounded lights (the forward shader's uniform arrays); the first pass of a
+// frame also adds the ambient (sky, and ground when hemispheric), later ones none
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, Color ambient, bool withAmbient)
 {
     const int *loc = g->locs[pass];
     rbl__bindGBufferPass(g, pass);
-    float ground[3] = { rbl__colorToLinear(g->ambientGround.r), rbl__colorToLinear(g->ambientGround.g), rbl__colorToLinear(g->ambientGround.b) };
+    float sky[3] = { 0.0f, 0.0f, 0.0f }, ground[3] = { 0.0f, 0.0f, 0.0f };
+    if (withAmbient)
+    {
+        sky[0] = rbl__colorToLinear(ambient.r); sky[1] = rbl__colorToLinear(ambient.g); sky[2] = rbl__colorToLinear(ambient.b);
+        ground[0] = rbl__colorToLinear(g->ambientGround.r); ground[1] = rbl__colorToLinear(g->ambientGround.g); ground[2] = rbl__colorToLinear(g->ambientGround.b);
+    }
     float up[3] = { g->ambientUp.x, g->ambientUp.y, g->ambientUp.z };
-    if (loc[RBL__GLOC_AMBIENT] != -1) rlSetUniform(loc[RBL__GLOC_AMBIENT], ambient, SHADER_UNIFORM_VEC3, 1);
-    if (loc[RBL__GLOC_GROUND] != -1) rlSetUniform(loc[RBL__GLOC_GROUND], (ambient[0] + ambient[1] + ambient[2] > 0.0f)? ground : ambient, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__GLOC_AMBIENT] != -1) rlSetUniform(loc[RBL__GLOC_AMBIENT], sky, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__GLOC_GROUND] != -1) rlSetUniform(loc[RBL__GLOC_GROUND], ground, SHADER_UNIFORM_VEC3, 1);
     if (loc[RBL__GLOC_UP] != -1) rlSetUniform(loc[RBL__GLOC_UP], up, SHADER_UNIFORM_VEC3, 1);
     if (loc[RBL__GLOC_LIGHT_COUNT] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_COUNT], &count, SHADER_UNIFORM_INT, 1);
     if (count > 0)
@@ -4066,40 +4060,47 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
     rbl__unbindGBufferPass();
 }
 
+// Instance staging slot i: position, colour, spot (vec4 each), falloff (vec3 + padding), as lighting.glsl reads them
+static float *rbl__lightSlot(RblGBuffer *g, int i) { return &g->instanceData[i*RBL__INSTANCE_FLOATS]; }
+
+// A packed light goes through a full-screen pass when it has no range (directional, range 0) or the
+// naive loop is asked for
+static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || g->naiveFullscreen; }
+
 bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int count, Color ambient)
 {
     if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: invalid G-buffer"); return false; }
     if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i lights", count); return false; }
     RblGBuffer *g = gbuffer;
-    // Validate and pack everything first: a rejected light changes nothing
-    int bounded = 0, unbounded = 0;
-    for (int i = 0; i < count; i++)
-    {
-        float p[4], c[4], sp[4], k[3];
-        const char *bad = rbl__packLight(&lights[i], g->shading.lightFeatures, p, c, sp, k);
-        if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: light %i rejected: %s", i, bad); return false; }
-        if ((c[3] > 0.0f) && !g->naiveFullscreen) bounded++; else unbounded++;
-    }
-    if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
-        return false;
-    }
-    if (bounded > g->instanceCapacity)
+    // Staging for every light (grown with a log line; no allocation once large enough)
+    if (count > g->instanceCapacity)
     {
         int capacity = g->instanceCapacity;
-        while (capacity < bounded) capacity *= 2;
+        while (capacity < count) capacity *= 2;
         float *data = (float *)RBL_REALLOC(g->instanceData, (size_t)capacity*RBL__INSTANCE_FLOATS*sizeof(float));
-        if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: out of memory for %i light volumes", bounded); return false; }
+        if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: out of memory for %i lights", count); return false; }
         g->instanceData = data;
         rlUnloadVertexBuffer(g->instanceVbo);
         rbl__loadVolumeInstances(g, capacity);
         TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->instanceCapacity, capacity);
         g->instanceCapacity = capacity;
     }
+    // Validate and pack every light once: a rejected light changes nothing on the GPU
+    int unbounded = 0;
+    for (int i = 0; i < count; i++)
+    {
+        float *d = rbl__lightSlot(g, i);
+        const char *bad = rbl__packLight(&lights[i], g->shading.lightFeatures, &d[0], &d[4], &d[8], &d[12]);
+        if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: light %i rejected: %s", i, bad); return false; }
+        d[15] = 0.0f;
+        if (rbl__fullscreenLight(g, d)) unbounded++;
+    }
+    if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
+        return false;
+    }
     float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
-    float amb[3] = { rbl__colorToLinear(ambient.r), rbl__colorToLinear(ambient.g), rbl__colorToLinear(ambient.b) };
-    const float none[3] = { 0.0f, 0.0f, 0.0f };
     bool counting = (g->debugView == RBL_GBUFFER_VIEW_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
@@ -4114,40 +4115,36 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
     // Full-screen: the ambient and every unbounded light, in chunks of RBL_MAX_LIGHTS
     int passAmbient = counting? RBL__PASS_AMBIENT_COUNT : RBL__PASS_AMBIENT;
     int n = 0, chunks = 0;
-    g->lightsFullscreen = 0; g->lightsInVolumes = 0;
     for (int i = 0; i <= count; i++)
     {
-        if (i < count)
+        if ((i < count) && rbl__fullscreenLight(g, rbl__lightSlot(g, i)))
         {
-            float p[4], c[4], sp[4], k[3];
-            rbl__packLight(&lights[i], g->shading.lightFeatures, p, c, sp, k);
-            if ((c[3] > 0.0f) && !g->naiveFullscreen) continue;
-            memcpy(&pos[n*4], p, sizeof(p)); memcpy(&col[n*4], c, sizeof(c)); memcpy(&spot[n*4], sp, sizeof(sp)); memcpy(&att[n*3], k, sizeof(k));
+            const float *d = rbl__lightSlot(g, i);
+            memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
+            memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
             n++;
         }
         if ((n == RBL_MAX_LIGHTS) || ((i == count) && ((n > 0) || (chunks == 0))))
         {
-            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, (chunks == 0)? amb : none);
-            g->lightsFullscreen += n;
+            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, ambient, chunks == 0);
             n = 0;
             chunks++;
         }
     }
-    // Volumes: one instanced draw of sphere proxies, back faces only (correct with the eye inside one)
+    g->lightsFullscreen = unbounded;
+    // Volumes: bounded lights moved to the front of the staging (in order), then one instanced draw of
+    // sphere proxies, back faces only (correct with the eye inside one)
     int v = 0;
     for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
     {
-        float *d = &g->instanceData[v*RBL__INSTANCE_FLOATS];
-        float k[3];
-        rbl__packLight(&lights[i], g->shading.lightFeatures, &d[0], &d[4], &d[8], k);
-        if (!(d[7] > 0.0f)) continue;
-        d[12] = k[0]; d[13] = k[1]; d[14] = k[2]; d[15] = 0.0f;
+        if (rbl__fullscreenLight(g, rbl__lightSlot(g, i))) continue;
+        if (v != i) memcpy(rbl__lightSlot(g, v), rbl__lightSlot(g, i), RBL__INSTANCE_FLOATS*sizeof(float));
         v++;
     }
+    g->lightsInVolumes = v;
     if (v > 0)
     {
-        int pass = counting? RBL__PASS_VOLUME_COUNT : RBL__PASS_VOLUME;
-        rbl__bindGBufferPass(g, pass);
+        rbl__bindGBufferPass(g, counting? RBL__PASS_VOLUME_COUNT : RBL__PASS_VOLUME);
         rlEnableBackfaceCulling();
         rlSetCullFace(RL_CULL_FACE_FRONT);
         rlEnableVertexArray(g->volumeVao);
@@ -4156,7 +4153,6 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
         rlDisableVertexArray();
         rlSetCullFace(RL_CULL_FACE_BACK);
         rbl__unbindGBufferPass();
-        g->lightsInVolumes = v;
     }
     rlEnableBackfaceCulling();
     rlSetBlendMode(BLEND_ALPHA);
@@ -4198,15 +4194,6 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     const int *loc = g->locs[RBL__PASS_RESOLVE];
     if (loc[RBL__GLOC_VIEW] != -1) rlSetUniform(loc[RBL__GLOC_VIEW], &g->debugView, SHADER_UNIFORM_INT, 1);
     if (loc[RBL__GLOC_SCALE] != -1) rlSetUniform(loc[RBL__GLOC_SCALE], &g->debugScale, SHADER_UNIFORM_FLOAT, 1);
-    if (loc[RBL__GLOC_FOG] != -1)
-    {
-        RblLitShader as;                            // the resolve pass seen as a lit shader: same fog uniforms
-        memset(&as, 0, sizeof(as));
-        as.shader = g->passes[RBL__PASS_RESOLVE]; as.locFog = loc[RBL__GLOC_FOG]; as.locFogStart = loc[RBL__GLOC_FOG_START];
-        rbl__setFogUniforms(&as, g->shading.fog);
-        rlEnableShader(as.shader.id);
-    }
-    if (loc[RBL__GLOC_EXPOSURE] != -1) rlSetUniform(loc[RBL__GLOC_EXPOSURE], &g->shading.exposure, SHADER_UNIFORM_FLOAT, 1);
     rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
     rlEnableDepthMask();
     rlDisableBackfaceCulling();

@@ -18,9 +18,8 @@ uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specu
 uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness
 uniform sampler2D rblGDepth;            // depth texture of the geometry pass
 uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)
-uniform mat4 rblInvProjection;          // inverse projection of the geometry pass (orthographic cameras)
-uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1/P00; w < 0: orthographic
-uniform float rblInvP11;                // 1/P11 (perspective)
+uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0
+uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's projection
 uniform mat4 rblInvView;                // inverse view (camera to world)
 uniform vec3 rblEye;                    // camera position
 #if RBL_PASS == 3
@@ -41,10 +40,9 @@ ivec2 rblTexel()
 #endif
 }
 
-// World position from the depth buffer. Perspective: view distance z = n f/(f - d (f - n)) straight
-// from the window depth d (one rounding where an inverse matrix would cancel two large terms; the
-// error stays within ~1 step of the 24-bit depth), then x, y along the pixel's ray. Orthographic:
-// the inverse projection (linear, nothing cancels). Then the inverse view.
+// World position from the depth buffer, in closed form (an inverse projection matrix would cancel two
+// large terms). Perspective: view distance z = n f/(f - d (f - n)) from the window depth d, then x, y
+// along the pixel's ray. Orthographic: z = n + d (f - n), x, y straight from NDC. Then the inverse view.
 vec3 rblPositionFromDepth(ivec2 texel, float depth)
 {
     vec2 ndc = (vec2(texel) + 0.5)/vec2(textureSize(rblGDepth, 0))*2.0 - 1.0;
@@ -52,13 +50,9 @@ vec3 rblPositionFromDepth(ivec2 texel, float depth)
     if (rblDepthLinear.w > 0.0)
     {
         float z = rblDepthLinear.x/(rblDepthLinear.z - depth*rblDepthLinear.y);
-        view = vec3(ndc*vec2(rblDepthLinear.w, rblInvP11)*z, -z);
+        view = vec3(ndc*rblInvP*z, -z);
     }
-    else
-    {
-        vec4 v = rblInvProjection*vec4(ndc, depth*2.0 - 1.0, 1.0);
-        view = v.xyz/v.w;
-    }
+    else view = vec3(ndc*rblInvP, -(rblDepthLinear.x + depth*rblDepthLinear.y));
     return (rblInvView*vec4(view, 1.0)).xyz;
 }
 

@@ -241,6 +241,26 @@ static void test_deferred_matches_forward_within_2_of_255_for_billboards_and_mod
     }
 }
 
+// An orthographic camera rebuilds view depth linearly (its own branch of the position reconstruction)
+static void test_deferred_matches_forward_with_an_orthographic_camera(void)
+{
+    DefScene s = defSceneLoad(RBL_BRDF_GGX);
+    s.camera.projection = CAMERA_ORTHOGRAPHIC;
+    s.camera.fovy = 5.0f;                          // view height in world units
+    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    Image fwd = defRenderForward(&s);
+    bool ok = false;
+    Image def = defRenderDeferred(&s, &g, &ok);
+    DefDiff d = defCompare(fwd, def);
+    printf("    orthographic: %d pixels, worst %d/255, mean %.3f/255, coverage differs in %d\n", d.covered, d.worst, d.mean, d.coverage);
+    RT_CHECK(ok && d.covered > DEF_W*DEF_H/2, "orthographic frame: ok %d, %d pixels", ok, d.covered);
+    RT_CHECK(d.worst <= 2 && d.coverage == 0, "orthographic: deferred differs from forward by %d/255", d.worst);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
+    UnloadImage(fwd); UnloadImage(def);
+    RblUnloadGBuffer(&g);
+    defSceneUnload(&s);
+}
+
 static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
 {
     DefScene s = defSceneLoad(RBL_BRDF_GGX);
@@ -437,7 +457,7 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
     void (*readPixels)(int, int, int, int, unsigned int, unsigned int, void *) = NULL;
     void *proc = rtGlProc("glReadPixels");
     memcpy(&readPixels, &proc, sizeof(proc));
-    printf("    depth: 24-bit texture, raylib perspective (fovy 45, near %.2f, far %.0f)\n", rlGetCullDistanceNear(), rlGetCullDistanceFar());
+    printf("    depth: raylib depth texture (steps counted at 24 bits, the least a driver gives), perspective fovy 45, near %.2f, far %.0f\n", rlGetCullDistanceNear(), rlGetCullDistanceFar());
     for (int k = 0; k < 3; k++)
     {
         float z = distances[k];

@@ -55,6 +55,7 @@ int main(int argc, char **argv)
         RT_TEST(test_lighting_billboard_and_model_quad_render_identical_pixels),
         RT_TEST(test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing),
         RT_TEST(test_deferred_matches_forward_within_2_of_255_for_billboards_and_models),
+        RT_TEST(test_deferred_matches_forward_with_an_orthographic_camera),
         RT_TEST(test_deferred_eye_inside_a_light_volume_is_lit_like_forward),
         RT_TEST(test_deferred_1024_lights_match_the_double_reference),
         RT_TEST(test_deferred_normal_encoding_error_table_against_published_figures),
