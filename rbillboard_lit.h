@@ -263,6 +263,15 @@
 #ifndef RBL_BATCH_DEFAULT_CAPACITY
     #define RBL_BATCH_DEFAULT_CAPACITY 1024     // Billboards reserved by RblLoadBatch(0)
 #endif
+#ifndef RBL_MAX_SHADOWS
+    #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
+#endif
+#ifndef RBL_SHADOW_TEXTURE_UNIT
+    #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's materials use 0..11)
+#endif
+#ifndef RBL_SHADOW_MAX_FILTER
+    #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
+#endif
 
 //----------------------------------------------------------------------------------
 // Types and Structures Definition
@@ -311,6 +320,8 @@ typedef struct RblView {
     Vector3 right;                  // View matrix row 0 (unit)
     Vector3 up;                     // View matrix row 1 (unit)
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
+    Vector4 light;                  // Shadow pass: xyz toward the light (w 0) or its position (w 1); zero otherwise
+    float minCastSin;               // Shadow pass: AXIS billboards tilt until the light sees them at >= asin(this)
 } RblView;
 
 // A run of billboards sharing one material inside a batch
@@ -512,6 +523,9 @@ typedef struct RblLitShaderDesc {
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
     bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
     int debugView;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    int shadowMaps;                 // Shadow maps received (0 = none, at most RBL_MAX_SHADOWS); see RblSetShadows()
+    int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
+    bool shadowCaster;              // Depth-only caster variant, alpha-tested (RblLoadShadowMap loads these)
 } RblLitShaderDesc;
 
 // Lit shader: a raylib Shader plus its uniform locations (looked up once, when the variant compiles)
@@ -535,6 +549,12 @@ typedef struct RblLitShader {
     int locFogStart;
     int locExposure;
     int locAlphaCutoff;
+    int shadowMaps;                 // Shadow maps received
+    int locShadowLight;
+    int locShadowMatrix;
+    int locShadowParams;
+    int locShadowBias;
+    int locShadowAxes;
 } RblLitShader;
 
 // Deferred debug views (RblSetGBufferView)
@@ -563,7 +583,7 @@ typedef struct RblGBuffer {
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblLitShaderDesc shading;       // BRDF, light features, ambient, fog, tonemap of the lighting passes
     Shader passes[5];               // Ambient + unbounded lights, volumes, resolve, and the two light-count variants
-    int locs[5][24];                // Uniform locations per pass (looked up once, at load)
+    int locs[5][32];                // Uniform locations per pass (looked up once, at load)
     unsigned int volumeVao;         // Sphere proxy (vertex + index buffers) with per-light instance data
     unsigned int volumeVbo;
     unsigned int volumeIbo;
@@ -582,7 +602,43 @@ typedef struct RblGBuffer {
     Vector3 ambientUp;
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
+    int shadowCount;                // Shadow maps given to RblSetGBufferShadows (<= shading.shadowMaps)
+    int shadowLight[RBL_MAX_SHADOWS];       // Light index each one shadows
+    unsigned int shadowTexture[RBL_MAX_SHADOWS];    // Their depth textures
+    float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix, params, bias, axes as lighting.glsl reads them
 } RblGBuffer;
+
+// Shadow map settings; zero means default (the biases are in shadow-map texels, see SHADOWS)
+typedef struct RblShadowDesc {
+    int size;                       // Texels per side, square (0 = 1024; 16..8192)
+    float constantBias;             // Depth bias (0 = 0.3; negative = none)
+    float slopeBias;                // Depth bias per unit tan(incidence) (0 = 0.1; negative = none)
+    float normalBias;               // Lookup offset along the receiver normal x sin(incidence) (0 = 0.5; negative = none)
+    float minCastAngle;             // AXIS billboards tilt until the light sees them at >= this, degrees (0 = 30; negative = never)
+    bool faceLight;                 // Billboards face the light in the shadow pass (default: the camera of the billboard call)
+} RblShadowDesc;
+
+// Shadow map of one directional or spot light: a depth texture, its light camera, and caster shaders
+typedef struct RblShadowMap {
+    unsigned int id;                // Framebuffer (depth attachment only)
+    Texture2D depth;                // Depth texture (receivers compare in the shader: rlgl exposes no compare mode)
+    int size;                       // Texels per side
+    RblShadowDesc desc;             // Settings, defaults applied
+    RblLitShader caster;            // Depth-only caster variants (vertex buffers and instanced), from the lit cache
+    RblLitShader casterInstanced;
+    int light;                      // Light index of the last RblBeginShadowMap (-1 before the first)
+    int lightType;                  // RBL_LIGHT_DIRECTIONAL or RBL_LIGHT_SPOT
+    RblView lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
+    Matrix view;                    // Light camera matrices of the last pass
+    Matrix projection;
+    Matrix matrix;                  // World -> (u, v, window depth) before the divide: view x projection x bias
+    float texelWorld;               // World size of a texel (perspective: per unit distance along the axis)
+    float nearPlane;                // Depth range along the light's axis
+    float farPlane;
+    Matrix savedView;               // rlgl matrices restored by RblEndShadowMap
+    Matrix savedProjection;
+    bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
+} RblShadowMap;
 
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
@@ -644,6 +700,17 @@ RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, i
 RBLAPI bool RblSetGBufferHemisphere(RblGBuffer *gbuffer, Color ground, Vector3 up); // Ground colour and up of the hemispheric ambient (sky = the ambient colour)
 RBLAPI void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferView) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
+RBLAPI bool RblSetGBufferShadows(RblGBuffer *gbuffer, const RblShadowMap *maps, int count); // Shadow maps the next RblDrawDeferredLights receives (shading.shadowMaps); false = rejected
+
+// Shadows (GL): depth maps of directional and spot lights, cast by billboards and Models, received forward and deferred
+RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target and caster shaders; invalid + log on failure
+RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target and caster shaders loaded
+RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and release the caster shaders
+RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex, Vector3 focusCenter, float focusRadius); // Start the shadow pass of lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone; false = rejected
+RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices, culling)
+RBLAPI void RblDrawModelShadow(Model model, Vector3 position, float scale, Color tint); // Draw a Model as a caster inside a shadow pass (as DrawModel; alpha-tested like its colour pass)
+RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
+RBLAPI bool RblSetShadows(RblLitShader *shader, const RblShadowMap *maps, int count); // Receivers: upload the maps' matrices, bind their depth textures; false = rejected
 
 #if defined(__cplusplus)
 }
@@ -696,7 +763,7 @@ static const char *const rbl__shader_deferred_fs[] = {
     "flat in vec4 volumePosition;\n",
     "flat in vec4 volumeColor;\n",
     "flat in vec4 volumeSpot;\n",
-    "flat in vec3 volumeFalloff;\n",
+    "flat in vec4 volumeFalloff;           // xyz attenuation, w shadow map index + 1 (0 = none)\n",
     "#endif\n",
     "\n",
     "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion\n",
@@ -816,7 +883,7 @@ static const char *const rbl__shader_deferred_fs[] = {
     "#ifdef RBL_COUNT_LIGHTS\n",
     "    finalColor = vec4(1.0);\n",
     "#else\n",
-    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff), 1.0);\n",
+    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, int(volumeFalloff.w + 0.5) - 1), 1.0);\n",
     "#endif\n",
     "#endif\n",
     "#endif\n",
@@ -834,12 +901,12 @@ static const char *const rbl__shader_deferred_vs[] = {
     "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
     "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
     "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
-    "layout(location = 13) in vec3 rblVolumeFalloff;  // as rblLightAttenuation\n",
+    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
     "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
     "flat out vec4 volumePosition;\n",
     "flat out vec4 volumeColor;\n",
     "flat out vec4 volumeSpot;\n",
-    "flat out vec3 volumeFalloff;\n",
+    "flat out vec4 volumeFalloff;\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -914,6 +981,8 @@ static const char *const rbl__shader_lighting[] = {
     "//   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)\n",
     "//   RBL_EXPOSURE              multiply by rblExposure before the tonemap\n",
     "//   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve\n",
+    "//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light\n",
+    "//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup\n",
     "\n",
     "#define RBL_PI 3.14159265358979\n",
     "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
@@ -943,6 +1012,23 @@ static const char *const rbl__shader_lighting[] = {
     "#endif\n",
     "#ifdef RBL_EXPOSURE\n",
     "uniform float rblExposure;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 0\n",
+    "uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)\n",
+    "uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w\n",
+    "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far\n",
+    "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
+    "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
+    "uniform sampler2D rblShadowMap0;            // depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
+    "#if RBL_SHADOWS > 1\n",
+    "uniform sampler2D rblShadowMap1;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "uniform sampler2D rblShadowMap2;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "uniform sampler2D rblShadowMap3;\n",
+    "#endif\n",
     "#endif\n",
     "\n",
     "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
@@ -1047,9 +1133,85 @@ static const char *const rbl__shader_lighting[] = {
     "    return ambient*s.occlusion*reflectance;\n",
     "}\n",
     "\n",
+    "#if RBL_SHADOWS > 0\n",
+    "// Distance along the light's axis from a window depth of map k (prm: texel, perspective, near, far)\n",
+    "float rblShadowDistance(float d, vec4 prm)\n",
+    "{\n",
+    "    return (prm.y > 0.5)? prm.z*prm.w/(prm.w - d*(prm.w - prm.z)) : prm.z + d*(prm.w - prm.z);\n",
+    "}\n",
+    "\n",
+    "// Fraction of light k's map lets through to a surface point with unit normal n, lit at cos(incidence)\n",
+    "// NdotL (> 0). Depths are compared as distances along the light's axis, in world units:\n",
+    "//   normal offset   the lookup moves along n by normal*texel*sin(incidence) (lateral shift <= that)\n",
+    "//   receiver plane  each PCF fetch is compared with the receiver's own plane extended to that texel's\n",
+    "//                   centre (depth gradient from n in the light's frame, clamped at 10 texels per\n",
+    "//                   texel), so a flat receiver never shadows itself at any incidence below 84 degrees\n",
+    "//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10\n",
+    "// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2\n",
+    "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
+    "// Outside the map, behind a spot light or beyond the far plane the point is lit.\n",
+    "float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)\n",
+    "{\n",
+    "    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];\n",
+    "    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);\n",
+    "    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);\n",
+    "    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here\n",
+    "    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));\n",
+    "    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);\n",
+    "    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);\n",
+    "    if (!(c.w > 0.0)) return 1.0;\n",
+    "    vec3 q = c.xyz/c.w;\n",
+    "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;\n",
+    "    float z = rblShadowDistance(max(q.z, 0.0), prm) - texel*(bias.x + bias.y*tanI);\n",
+    "    // Receiver plane: distance change per texel step along the map's x and y\n",
+    "    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);\n",
+    "    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;\n",
+    "    float size = bias.w;\n",
+    "    vec2 st = q.xy*size - 0.5*float(RBL_SHADOW_FILTER);         // first bilinear tap's position - 0.5, in texels\n",
+    "    vec2 base = floor(st), f = st - base;\n",
+    "    ivec2 b0 = ivec2(base), top = ivec2(int(size) - 1);\n",
+    "    vec2 origin = base + 0.5 - q.xy*size;                       // first fetched centre relative to the point\n",
+    "    float lit = 0.0;\n",
+    "    for (int j = 0; j <= RBL_SHADOW_FILTER; j++)\n",
+    "    {\n",
+    "        float wy = (j == 0)? 1.0 - f.y : ((j == RBL_SHADOW_FILTER)? f.y : 1.0);\n",
+    "        for (int i = 0; i <= RBL_SHADOW_FILTER; i++)\n",
+    "        {\n",
+    "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
+    "            float occluder = rblShadowDistance(texelFetch(map, clamp(b0 + ivec2(i, j), ivec2(0), top), 0).r, prm);\n",
+    "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
+    "            lit += (receiver <= occluder)? wx*wy : 0.0;\n",
+    "        }\n",
+    "    }\n",
+    "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
+    "}\n",
+    "\n",
+    "float rblShadow(int k, vec3 position, vec3 n, float NdotL)\n",
+    "{\n",
+    "    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);\n",
+    "#endif\n",
+    "    return 1.0;\n",
+    "}\n",
+    "\n",
+    "// Shadow map of light slot i (-1 = unshadowed)\n",
+    "int rblShadowOf(int i)\n",
+    "{\n",
+    "    return (i == rblShadowLight.x)? 0 : ((i == rblShadowLight.y)? 1 : ((i == rblShadowLight.z)? 2 : ((i == rblShadowLight.w)? 3 : -1)));\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "// One light at a surface point seen along v: p position (w 0: directional), c colour (a: 1/range),\n",
-    "// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square)\n",
-    "vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k)\n",
+    "// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square),\n",
+    "// shadow map index (-1 = none)\n",
+    "vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, int shadow)\n",
     "{\n",
     "#ifdef RBL_LIGHT_DIRECTIONAL\n",
     "    vec3 toLight = p.xyz - s.position*p.w;\n",
@@ -1071,6 +1233,9 @@ static const char *const rbl__shader_lighting[] = {
     "#ifdef RBL_LIGHT_SPOT\n",
     "    float t = clamp(dot(-l, spot.xyz) + spot.w, 0.0, 1.0);\n",
     "    attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 0\n",
+    "    if ((shadow >= 0) && (attenuation > 0.0)) attenuation *= rblShadow(shadow, s.position, s.normal, NdotL);\n",
     "#endif\n",
     "    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);\n",
     "}\n",
@@ -1094,7 +1259,12 @@ static const char *const rbl__shader_lighting[] = {
     "#else\n",
     "        vec3 k = vec3(0.0, 0.0, 1.0);\n",
     "#endif\n",
-    "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k);\n",
+    "#if RBL_SHADOWS > 0\n",
+    "        int shadow = rblShadowOf(i);\n",
+    "#else\n",
+    "        int shadow = -1;\n",
+    "#endif\n",
+    "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);\n",
     "    }\n",
     "#endif\n",
     "    return sum;\n",
@@ -1228,9 +1398,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "uniform mat4 mvp;\n",
     "// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):\n",
     "//   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
-    "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y)\n",
+    "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass\n",
+    "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
     "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z)\n",
-    "uniform vec4 rblInstancing[6];\n",
+    "//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes\n",
+    "uniform vec4 rblInstancing[7];\n",
     "\n",
     "out vec3 fragPosition;\n",
     "out vec2 fragTexCoord;\n",
@@ -1312,6 +1484,23 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        if (!rblPerpendicular(rblViewEye - position, a, nn) && !rblPerpendicular(rblViewBack, a, nn) &&\n",
     "            !rblPerpendicular(rblViewUp, a, nn)) nn = rblViewBack;\n",
     "        u = a; n = nn; r = cross(u, n);\n",
+    "        // Shadow pass: tilt about the pivot line (r) until the light sees the quad at >= the minimum\n",
+    "        // angle, so an upright sprite still casts under a light along its axis (RblShadowTilt on the CPU)\n",
+    "        float minSin = rblInstancing[4].w;\n",
+    "        vec4 light = rblInstancing[6];\n",
+    "        vec3 l;\n",
+    "        if ((minSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
+    "        {\n",
+    "            float ln = dot(l, n), la = dot(l, a);\n",
+    "            if (abs(ln) < minSin)\n",
+    "            {\n",
+    "                float tilt = asin(minSin) - asin(abs(ln));\n",
+    "                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;\n",
+    "                float c = cos(tilt), sn = sin(tilt)*sg;\n",
+    "                n = n*c + a*sn;\n",
+    "                u = a*c - nn*sn;\n",
+    "            }\n",
+    "        }\n",
     "    }\n",
     "    else\n",
     "    {\n",
@@ -1503,6 +1692,19 @@ static const char *const rbl__shader_material[] = {
     "    return sp;\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_shadow_caster_fs[] = {
+    "// Shadow caster fragment stage: depth only. The loader prepends \"#version 330\", the variant #defines,\n",
+    "// lighting.glsl and material.glsl, so the alpha test is the colour pass's own (albedo x colDiffuse x\n",
+    "// vertex colour against rblAlphaCutoff): a sprite's silhouette casts the shadow, not its quad.\n",
+    "// Nothing else is sampled; the target has no colour attachment.\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    float alpha;\n",
+    "    vec3 emission, tangentNormal;\n",
+    "    rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff\n",
+    "}\n",
+    NULL };
 // Every embedded shader by file name (tests compare these with shaders/*.glsl)
 static const struct { const char *file; const char *const *source; } rbl__shaderFiles[] = {
     { "deferred.fs.glsl", rbl__shader_deferred_fs },
@@ -1513,6 +1715,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "lit.vs.glsl", rbl__shader_lit_vs },
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
+    { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
 };
 // RBL-SHADERS-END
 
@@ -1615,6 +1818,8 @@ RblView RblGetView(Camera3D camera)
     view.right = right;
     view.up = rbl__cross(back, right);
     view.back = back;
+    view.light.x = view.light.y = view.light.z = view.light.w = 0.0f;
+    view.minCastSin = 0.0f;
     return view;
 }
 
@@ -1653,6 +1858,24 @@ static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3
                 !rbl__perpendicular(view->back, a, &nn) &&
                 !rbl__perpendicular(view->up, a, &nn)) nn = view->back;    // unreachable: up and back can't both be parallel to a
             u = a; n = nn; r = rbl__cross(u, n);
+            // Shadow pass: tilt about the pivot line (r) until the light sees the quad at >= the minimum
+            // angle (angle added = asin(minCastSin) - asin|n.l|), leaning away from the light, so an
+            // upright sprite still casts under a light along its axis. r stays; n and u turn together.
+            Vector3 l;
+            if ((view->minCastSin > 0.0f) &&
+                rbl__normalizeTo(rbl__v3(view->light.x - b->position.x*view->light.w, view->light.y - b->position.y*view->light.w,
+                                         view->light.z - b->position.z*view->light.w), &l))
+            {
+                float ln = rbl__dot(l, n), la = rbl__dot(l, a);
+                if (fabsf(ln) < view->minCastSin)
+                {
+                    float tilt = asinf(view->minCastSin) - asinf(fabsf(ln));
+                    float sg = ((ln >= 0.0f) == (la >= 0.0f))? 1.0f : -1.0f;
+                    float c = cosf(tilt), sn = sinf(tilt)*sg;
+                    n = rbl__v3(nn.x*c + a.x*sn, nn.y*c + a.y*sn, nn.z*c + a.z*sn);
+                    u = rbl__v3(a.x*c - nn.x*sn, a.y*c - nn.y*sn, a.z*c - nn.z*sn);
+                }
+            }
         } break;
         case RBL_FACING_FIXED:
         {
@@ -1782,6 +2005,15 @@ bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeig
 //----------------------------------------------------------------------------------
 // Module Functions Definition: batched and immediate paths
 //----------------------------------------------------------------------------------
+// Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
+// default and not visible here), so the array is generously larger than any build's
+#define RBL__CASTER_MAPS 32
+// The shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): every billboard path draws
+// casters then, with the same calls and materials as the colour pass (defined with the shadows)
+static RblShadowMap *rbl__shadowPass = NULL;
+static void rbl__shadowPassView(RblView *view);
+static Material rbl__casterMaterial(Material material, MaterialMap maps[RBL__CASTER_MAPS], bool instanced);
+
 static void rbl__loadBatchGpu(RblBatch *batch)
 {
     int quads = batch->capacity;
@@ -1860,6 +2092,7 @@ void RblBeginBatch(RblBatch *batch, Camera3D camera)
 {
     if (batch == NULL) return;
     batch->view = RblGetView(camera);
+    if (rbl__shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
@@ -2004,7 +2237,9 @@ void RblEndBatch(RblBatch *batch)
     for (int r = 0; r < batch->runCount; r++)
     {
         const RblBatchRun *run = &batch->runs[r];
-        rbl__bindMaterial(&run->material);
+        MaterialMap casterMaps[RBL__CASTER_MAPS];
+        Material material = (rbl__shadowPass != NULL)? rbl__casterMaterial(run->material, casterMaps, false) : run->material;
+        rbl__bindMaterial(&material);
         for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
         {
             int n = run->count - q;
@@ -2135,6 +2370,8 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     if (buffer->skipped > 0) TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| > 1e36)", buffer->skipped);
     if (n == 0) return 0;
 
+    MaterialMap casterMaps[RBL__CASTER_MAPS];
+    if (rbl__shadowPass != NULL) material = rbl__casterMaterial(material, casterMaps, true);
     Shader sh = material.shader;
     if (sh.id != buffer->shaderId)
     {
@@ -2155,18 +2392,20 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     }
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
 
-    // The per-draw frame in one vec4[6] upload (layout documented in lit_instanced.vs.glsl)
+    // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
     RblView view = RblGetView(camera);
-    const float frame[24] = {
+    if (rbl__shadowPass != NULL) rbl__shadowPassView(&view);
+    const float frame[28] = {
         view.eye.x, view.eye.y, view.eye.z, (float)desc.facing,
         view.right.x, view.right.y, view.right.z, desc.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
-        desc.up.x, desc.up.y, desc.up.z, 0.0f,
-        desc.axis.x, desc.axis.y, desc.axis.z, 0.0f };
+        desc.up.x, desc.up.y, desc.up.z, view.minCastSin,
+        desc.axis.x, desc.axis.y, desc.axis.z, 0.0f,
+        view.light.x, view.light.y, view.light.z, view.light.w };
     rlDrawRenderBatchActive();
     rbl__bindMaterial(&material);
-    rlSetUniform(buffer->loc, frame, SHADER_UNIFORM_VEC4, 6);
+    rlSetUniform(buffer->loc, frame, SHADER_UNIFORM_VEC4, 7);
 
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, buffer->staging, n*(int)sizeof(RblInstance), 0);
@@ -3291,6 +3530,24 @@ static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *c
     return shader;
 }
 
+// Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed until
+// a map is given (an unbound sampler would read depth 0 and darken everything)
+static void rbl__initShadowUniforms(unsigned int program, int maps, int locLight)
+{
+    if (maps == 0) return;
+    rlEnableShader(program);
+    for (int k = 0; k < maps; k++)
+    {
+        char name[32];
+        snprintf(name, sizeof(name), "rblShadowMap%i", k);
+        int unit = RBL_SHADOW_TEXTURE_UNIT + k;
+        rlSetUniform(rlGetLocationUniform(program, name), &unit, SHADER_UNIFORM_INT, 1);
+    }
+    int none[4] = { -1, -1, -1, -1 };
+    rlSetUniform(locLight, none, SHADER_UNIFORM_IVEC4, 1);
+    rlDisableShader();
+}
+
 // Variant cache: identical (normalised) descs share one program, compiled once, reference counted
 typedef struct rbl__LitCacheEntry {
     RblLitShaderDesc key;
@@ -3323,6 +3580,16 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
     if (!rbl__finiteNonNegative(in.exposure) || !rbl__finiteNonNegative(in.gamma)) return "exposure or gamma negative or not finite";
     if ((in.debugView < 0) || (in.debugView > 4)) return "debugView outside 0..4";
+    if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
+    if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
+    if (in.shadowCaster)
+    {
+        // A caster writes depth and tests alpha, nothing else: one program per vertex stage (the cutoff
+        // is a uniform, set per draw to the colour pass's value)
+        out->maxLights = 1; out->lightFeatures = RBL_LIGHTS_POINT; out->emissiveIntensity = 1.0f;
+        out->alphaCutoff = 0.5f; out->exposure = 1.0f; out->instanced = in.instanced; out->shadowCaster = true;
+        return NULL;
+    }
 
     out->maxLights = (in.maxLights == 0)? 1 : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHTS_POINT : in.lightFeatures;
@@ -3364,6 +3631,8 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     }
     out->linearOutput = in.linearOutput;
     out->debugView = in.debugView;
+    out->shadowMaps = in.deferred? 0 : in.shadowMaps;       // the geometry pass receives nothing
+    out->shadowFilter = (out->shadowMaps == 0)? 0 : ((in.shadowFilter == 0)? 2 : in.shadowFilter);
     return NULL;
 }
 
@@ -3375,8 +3644,8 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     bool exposure = (d->tonemap != RBL_TONEMAP_NONE) || (d->exposure != 1.0f);
     bool view = !d->deferred && ((d->brdf != RBL_BRDF_LAMBERT) || (d->fog.mode != RBL_FOG_NONE));   // the G-buffer stores no view
     int n = snprintf(out, size, "#define RBL_LIGHTS %i\n#define RBL_BRDF %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n"
-                     "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n%s%s%s%s%s%s%s%s%s%s",
-                     d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog.mode, d->tonemap,
+                     "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n#define RBL_SHADOWS %i\n#define RBL_SHADOW_FILTER %i\n%s%s%s%s%s%s%s%s%s%s",
+                     d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog.mode, d->tonemap, d->shadowMaps, d->shadowFilter,
                      (d->lightFeatures & RBL_LIGHTS_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
                      (d->lightFeatures & RBL_LIGHTS_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
                      (d->lightFeatures & RBL_LIGHTS_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
@@ -3402,7 +3671,8 @@ static RblLitShader rbl__compileLit(const RblLitShaderDesc *d)
     memset(&lit, 0, sizeof(lit));
     char defines[768];
     rbl__litDefines(d, defines, sizeof(defines));
-    const char *const *const fsParts[4] = { rbl__shader_lighting, rbl__shader_material, d->deferred? rbl__shader_gbuffer_fs : rbl__shader_lit_fs, NULL };
+    const char *const *pass = d->shadowCaster? rbl__shader_shadow_caster_fs : (d->deferred? rbl__shader_gbuffer_fs : rbl__shader_lit_fs);
+    const char *const *const fsParts[4] = { rbl__shader_lighting, rbl__shader_material, pass, NULL };
     lit.shader = rbl__loadShaderVariant(d->instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, fsParts, defines);
     if (lit.shader.id == 0) return lit;
 
@@ -3428,6 +3698,13 @@ static RblLitShader rbl__compileLit(const RblLitShaderDesc *d)
     lit.locFogStart = GetShaderLocation(lit.shader, "rblFogStart");
     lit.locExposure = GetShaderLocation(lit.shader, "rblExposure");
     lit.locAlphaCutoff = GetShaderLocation(lit.shader, "rblAlphaCutoff");
+    lit.shadowMaps = d->shadowMaps;
+    lit.locShadowLight = GetShaderLocation(lit.shader, "rblShadowLight");
+    lit.locShadowMatrix = GetShaderLocation(lit.shader, "rblShadowMatrix");
+    lit.locShadowParams = GetShaderLocation(lit.shader, "rblShadowParams");
+    lit.locShadowBias = GetShaderLocation(lit.shader, "rblShadowBias");
+    lit.locShadowAxes = GetShaderLocation(lit.shader, "rblShadowAxes");
+    rbl__initShadowUniforms(lit.shader.id, lit.shadowMaps, lit.locShadowLight);
 
     // Everything the desc fixes is uploaded once here; lights, ambient, fog and exposure can change later
     SetShaderValue(lit.shader, lit.locAlphaCutoff, &d->alphaCutoff, SHADER_UNIFORM_FLOAT);
@@ -3677,8 +3954,9 @@ enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMB
 enum { RBL__GLOC_ALBEDO = 0, RBL__GLOC_NORMAL, RBL__GLOC_PARAMS, RBL__GLOC_DEPTH, RBL__GLOC_ACCUM, RBL__GLOC_INVVIEW,
        RBL__GLOC_EYE, RBL__GLOC_MVP, RBL__GLOC_VIEW, RBL__GLOC_SCALE, RBL__GLOC_AMBIENT, RBL__GLOC_GROUND, RBL__GLOC_UP,
        RBL__GLOC_LIGHT_COUNT, RBL__GLOC_LIGHT_POSITION, RBL__GLOC_LIGHT_COLOR, RBL__GLOC_LIGHT_SPOT, RBL__GLOC_LIGHT_ATTENUATION,
-       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_DEPTH_LINEAR, RBL__GLOC_INV_P, RBL__GLOC_COUNT };
-#define RBL__INSTANCE_FLOATS 16         // position, colour, spot (vec4 each), falloff (vec3) + padding
+       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_DEPTH_LINEAR, RBL__GLOC_INV_P,
+       RBL__GLOC_SHADOW_LIGHT, RBL__GLOC_SHADOW_MATRIX, RBL__GLOC_SHADOW_PARAMS, RBL__GLOC_SHADOW_BIAS, RBL__GLOC_SHADOW_AXES, RBL__GLOC_COUNT };
+#define RBL__INSTANCE_FLOATS 16         // position, colour, spot (vec4 each), falloff (vec3) + shadow map index + 1
 
 // Inverse of a view matrix (rotation + translation): transposed rotation, translation -R^T t
 static Matrix rbl__rigidInverse(Matrix view)
@@ -3702,7 +3980,7 @@ static void rbl__loadVolumeInstances(RblGBuffer *g, int capacity)
     g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
     for (int a = 0; a < 4; a++)
     {
-        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, (a == 3)? 3 : 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
+        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
         rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
         rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
     }
@@ -3827,7 +4105,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 static const char *const rbl__gbufferUniforms[RBL__GLOC_COUNT] = { "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum",
     "rblInvView", "rblEye", "mvp", "rblDebugView", "rblDebugScale", "rblAmbient", "rblAmbientGround", "rblAmbientUp",
     "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation", "rblFog", "rblFogStart", "rblExposure",
-    "rblDepthLinear", "rblInvP" };
+    "rblDepthLinear", "rblInvP", "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes" };
 
 RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
 {
@@ -3863,6 +4141,7 @@ RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
         g.passes[p] = rbl__loadShaderVariant(rbl__shader_deferred_vs, fsParts, defines);
         ok = (g.passes[p].id != 0);
         for (int k = 0; ok && (k < RBL__GLOC_COUNT); k++) g.locs[p][k] = GetShaderLocation(g.passes[p], rbl__gbufferUniforms[k]);
+        if (ok) rbl__initShadowUniforms(g.passes[p].id, g.shading.shadowMaps, g.locs[p][RBL__GLOC_SHADOW_LIGHT]);
     }
     if (!ok)
     {
@@ -4021,6 +4300,25 @@ static void rbl__bindGBufferPass(const RblGBuffer *g, int pass)
     float invP[2] = { 1.0f/g->projection.m0, 1.0f/g->projection.m5 };
     if (loc[RBL__GLOC_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__GLOC_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
     if (loc[RBL__GLOC_INV_P] != -1) rlSetUniform(loc[RBL__GLOC_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
+    if ((g->shadowCount > 0) && (loc[RBL__GLOC_SHADOW_MATRIX] != -1))
+    {
+        Matrix m[RBL_MAX_SHADOWS];
+        float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
+        for (int k = 0; k < g->shadowCount; k++)
+        {
+            m[k] = rbl__matFromArray(g->shadowUniforms[k]);
+            memcpy(&params[k*4], &g->shadowUniforms[k][16], 4*sizeof(float));
+            memcpy(&bias[k*4], &g->shadowUniforms[k][20], 4*sizeof(float));
+            memcpy(&axes[k*8], &g->shadowUniforms[k][24], 8*sizeof(float));
+            rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k);
+            rlEnableTexture(g->shadowTexture[k]);
+        }
+        rlActiveTextureSlot(0);
+        rlSetUniformMatrices(loc[RBL__GLOC_SHADOW_MATRIX], m, g->shadowCount);
+        rlSetUniform(loc[RBL__GLOC_SHADOW_PARAMS], params, SHADER_UNIFORM_VEC4, g->shadowCount);
+        rlSetUniform(loc[RBL__GLOC_SHADOW_BIAS], bias, SHADER_UNIFORM_VEC4, g->shadowCount);
+        rlSetUniform(loc[RBL__GLOC_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*g->shadowCount);
+    }
 }
 
 static void rbl__unbindGBufferPass(void)
@@ -4031,10 +4329,11 @@ static void rbl__unbindGBufferPass(void)
 
 // Full-screen pass over unbounded lights (the forward shader's uniform arrays); the first pass of a
 // frame also adds the ambient (sky, and ground when hemispheric), later ones none
-static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, Color ambient, bool withAmbient)
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, Color ambient, bool withAmbient, const int shadowSlot[4])
 {
     const int *loc = g->locs[pass];
     rbl__bindGBufferPass(g, pass);
+    if (loc[RBL__GLOC_SHADOW_LIGHT] != -1) rlSetUniform(loc[RBL__GLOC_SHADOW_LIGHT], shadowSlot, SHADER_UNIFORM_IVEC4, 1);
     float sky[3] = { 0.0f, 0.0f, 0.0f }, ground[3] = { 0.0f, 0.0f, 0.0f };
     if (withAmbient)
     {
@@ -4092,7 +4391,8 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
         float *d = rbl__lightSlot(g, i);
         const char *bad = rbl__packLight(&lights[i], g->shading.lightFeatures, &d[0], &d[4], &d[8], &d[12]);
         if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: light %i rejected: %s", i, bad); return false; }
-        d[15] = 0.0f;
+        d[15] = 0.0f;                                       // shadow map index + 1 (0 = unshadowed)
+        for (int k = 0; k < g->shadowCount; k++) if (g->shadowLight[k] == i) d[15] = (float)(k + 1);
         if (rbl__fullscreenLight(g, d)) unbounded++;
     }
     if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
@@ -4115,6 +4415,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
     // Full-screen: the ambient and every unbounded light, in chunks of RBL_MAX_LIGHTS
     int passAmbient = counting? RBL__PASS_AMBIENT_COUNT : RBL__PASS_AMBIENT;
     int n = 0, chunks = 0;
+    int shadowSlot[4] = { -1, -1, -1, -1 };                 // slot of each shadowed light in this chunk
     for (int i = 0; i <= count; i++)
     {
         if ((i < count) && rbl__fullscreenLight(g, rbl__lightSlot(g, i)))
@@ -4122,11 +4423,13 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
             const float *d = rbl__lightSlot(g, i);
             memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
             memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
+            if (d[15] > 0.0f) shadowSlot[(int)d[15] - 1] = n;
             n++;
         }
         if ((n == RBL_MAX_LIGHTS) || ((i == count) && ((n > 0) || (chunks == 0))))
         {
-            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, ambient, chunks == 0);
+            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, ambient, chunks == 0, shadowSlot);
+            for (int k = 0; k < 4; k++) shadowSlot[k] = -1;
             n = 0;
             chunks++;
         }
@@ -4203,6 +4506,337 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     rlEnableBackfaceCulling();
     rlDisableDepthTest();
     rbl__unbindGBufferPass();
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: shadows
+//----------------------------------------------------------------------------------
+// Alpha cutoff of the colour pass's lit variant (the cache knows it by program); other shaders: 0.5
+static float rbl__cutoffOf(unsigned int shaderId)
+{
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+        if ((rbl__litCache[i].refs > 0) && (rbl__litCache[i].shader.shader.id == shaderId)) return rbl__litCache[i].key.alphaCutoff;
+    return 0.5f;
+}
+
+// Inside a shadow pass: the material with the caster shader in place of its own, only its albedo map
+// kept (never another slot: one could hold the very depth texture being written) and the colour
+// pass's alpha cutoff, so the sprite's silhouette casts
+static Material rbl__casterMaterial(Material material, MaterialMap maps[RBL__CASTER_MAPS], bool instanced)
+{
+    const RblLitShader *caster = instanced? &rbl__shadowPass->casterInstanced : &rbl__shadowPass->caster;
+    float cutoff = rbl__cutoffOf(material.shader.id);
+    memset(maps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
+    if (material.maps != NULL) maps[MATERIAL_MAP_ALBEDO] = material.maps[MATERIAL_MAP_ALBEDO];
+    else maps[MATERIAL_MAP_ALBEDO].color = WHITE;
+    SetShaderValue(caster->shader, caster->locAlphaCutoff, &cutoff, SHADER_UNIFORM_FLOAT);
+    material.maps = maps;
+    material.shader = caster->shader;
+    return material;
+}
+
+// The billboard frame of a shadow pass: the caller's camera (the shadow matches what is seen), or the
+// light's own frame (desc.faceLight); AXIS billboards get the light and minimum angle to tilt by
+static void rbl__shadowPassView(RblView *view)
+{
+    const RblShadowMap *map = rbl__shadowPass;
+    if (map->desc.faceLight) *view = map->lightView;
+    Vector3 toLight = rbl__neg(rbl__cross(map->lightView.up, map->lightView.right));    // = back
+    if (map->lightType == RBL_LIGHT_SPOT) { view->light.x = map->lightView.eye.x; view->light.y = map->lightView.eye.y; view->light.z = map->lightView.eye.z; view->light.w = 1.0f; }
+    else { view->light.x = toLight.x; view->light.y = toLight.y; view->light.z = toLight.z; view->light.w = 0.0f; }
+    view->minCastSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
+}
+
+// Defaults applied; NULL or the reason it is rejected
+static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out)
+{
+    memset(out, 0, sizeof(*out));
+    if ((in.size != 0) && ((in.size < 16) || (in.size > 8192))) return "size outside 16..8192";
+    if (!rbl__finite(in.constantBias) || !rbl__finite(in.slopeBias) || !rbl__finite(in.normalBias) || !rbl__finite(in.minCastAngle)) return "NaN/Inf bias or angle";
+    if (in.minCastAngle > 80.0f) return "minCastAngle above 80 degrees";
+    out->size = (in.size == 0)? 1024 : in.size;
+    out->constantBias = (in.constantBias == 0.0f)? 0.3f : ((in.constantBias < 0.0f)? 0.0f : in.constantBias);
+    out->slopeBias = (in.slopeBias == 0.0f)? 0.1f : ((in.slopeBias < 0.0f)? 0.0f : in.slopeBias);
+    out->normalBias = (in.normalBias == 0.0f)? 0.5f : ((in.normalBias < 0.0f)? 0.0f : in.normalBias);
+    out->minCastAngle = (in.minCastAngle == 0.0f)? 30.0f : ((in.minCastAngle < 0.0f)? 0.0f : in.minCastAngle);
+    out->faceLight = in.faceLight;
+    return NULL;
+}
+
+RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
+{
+    RblShadowMap map;
+    memset(&map, 0, sizeof(map));
+    const char *bad = rbl__normaliseShadowDesc(desc, &map.desc);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %s", bad); memset(&map, 0, sizeof(map)); return map; }
+    map.size = map.desc.size;
+    map.light = -1;
+    map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
+    map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
+    bool ok = (map.depth.id != 0);
+    if (ok)
+    {
+        map.id = rlLoadFramebuffer();
+        rlFramebufferAttach(map.id, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        ok = (map.id != 0) && rlFramebufferComplete(map.id);
+        rlDisableFramebuffer();
+    }
+    RblLitShaderDesc caster;
+    memset(&caster, 0, sizeof(caster));
+    caster.shadowCaster = true;
+    if (ok) map.caster = RblLoadLitShader(caster);
+    caster.instanced = true;
+    if (ok) map.casterInstanced = RblLoadLitShader(caster);
+    ok = ok && RblIsLitShaderValid(map.caster) && RblIsLitShaderValid(map.casterInstanced);
+    if (!ok)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %ix%i depth target or caster shaders unavailable", map.size, map.size);
+        RblUnloadShadowMap(&map);
+        return map;
+    }
+    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded", map.size, map.size);
+    return map;
+}
+
+bool RblIsShadowMapValid(RblShadowMap map)
+{
+    return (map.id != 0) && (map.depth.id != 0) && RblIsLitShaderValid(map.caster) && RblIsLitShaderValid(map.casterInstanced);
+}
+
+void RblUnloadShadowMap(RblShadowMap *map)
+{
+    if (map == NULL) return;
+    if (map->begun) RblEndShadowMap(map);
+    if (map->id != 0) rlUnloadFramebuffer(map->id);         // deletes its depth texture too
+    else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
+    RblUnloadLitShader(map->caster);
+    RblUnloadLitShader(map->casterInstanced);
+    memset(map, 0, sizeof(*map));
+}
+
+// raymath's MatrixOrtho / MatrixFrustum, in raylib's layout
+static Matrix rbl__ortho(double l, double r, double b, double t, double n, double f)
+{
+    Matrix m;
+    memset(&m, 0, sizeof(m));
+    m.m0 = (float)(2.0/(r - l)); m.m5 = (float)(2.0/(t - b)); m.m10 = (float)(-2.0/(f - n));
+    m.m12 = (float)(-(l + r)/(r - l)); m.m13 = (float)(-(t + b)/(t - b)); m.m14 = (float)(-(f + n)/(f - n)); m.m15 = 1.0f;
+    return m;
+}
+
+static Matrix rbl__frustum(double l, double r, double b, double t, double n, double f)
+{
+    Matrix m;
+    memset(&m, 0, sizeof(m));
+    m.m0 = (float)(2.0*n/(r - l)); m.m5 = (float)(2.0*n/(t - b)); m.m8 = (float)((r + l)/(r - l)); m.m9 = (float)((t + b)/(t - b));
+    m.m10 = (float)(-(f + n)/(f - n)); m.m11 = -1.0f; m.m14 = (float)(-2.0*f*n/(f - n));
+    return m;
+}
+
+bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex, Vector3 focusCenter, float focusRadius)
+{
+    const char *bad = NULL;
+    float p[4], c[4], spot[4], k[3];
+    if ((map == NULL) || !RblIsShadowMapValid(*map)) bad = "invalid shadow map";
+    else if (map->begun || (rbl__shadowPass != NULL)) bad = "a shadow pass is already in progress";
+    else if ((lights == NULL) || (lightIndex < 0)) bad = "no light";
+    else if ((lights[lightIndex].type != RBL_LIGHT_DIRECTIONAL) && (lights[lightIndex].type != RBL_LIGHT_SPOT)) bad = "only directional and spot lights cast shadows";
+    else if ((bad = rbl__packLight(&lights[lightIndex], RBL_LIGHTS_POINT | RBL_LIGHTS_DIRECTIONAL | RBL_LIGHTS_SPOT | RBL_LIGHTS_CLASSIC_FALLOFF, p, c, spot, k)) != NULL) {}
+    else if (!rbl__finite3(focusCenter) || !rbl__finite(focusRadius) || (focusRadius < 0.0f)) bad = "focus centre/radius not finite or radius negative";
+    else if ((lights[lightIndex].type == RBL_LIGHT_DIRECTIONAL) && !(focusRadius > 0.0f)) bad = "a directional shadow needs a focus radius > 0";
+    else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && (lights[lightIndex].outerAngle > 80.0f)) bad = "spot shadows need outerAngle <= 80 degrees";
+    else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && !(lights[lightIndex].range > 0.0f) && !(focusRadius > 0.0f)) bad = "a spot shadow without a range needs a focus radius > 0";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginShadowMap: %s", bad); return false; }
+
+    const RblLight *light = &lights[lightIndex];
+    Vector3 dir = rbl__v3(-p[0], -p[1], -p[2]);            // directional: p holds the unit vector toward the light
+    if (light->type == RBL_LIGHT_SPOT) rbl__normalizeTo(light->direction, &dir);
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.up = rbl__v3(0.0f, 1.0f, 0.0f);                     // RblGetView falls back when the light is vertical
+    double size = (double)map->size;
+    Matrix projection;
+    if (light->type == RBL_LIGHT_DIRECTIONAL)
+    {
+        // Orthographic over the focus sphere, eye 2r before its centre: casters up to 2r toward the light
+        // from the centre and receivers up to r beyond it. The window moves in whole texels of a grid
+        // fixed in the world, so shadow edges do not crawl while the focus follows the camera.
+        double r = focusRadius, texel = 2.0*r/(size - 1.0);
+        cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
+        cam.target = focusCenter;
+        map->lightView = RblGetView(cam);
+        double ex = rbl__dot(map->lightView.right, cam.position), ey = rbl__dot(map->lightView.up, cam.position);
+        double cx = rbl__dot(map->lightView.right, focusCenter), cy = rbl__dot(map->lightView.up, focusCenter);
+        double left = floor((cx - r)/texel)*texel - ex, bottom = floor((cy - r)/texel)*texel - ey;
+        map->nearPlane = 0.0f; map->farPlane = (float)(3.0*r);
+        map->texelWorld = (float)texel;
+        projection = rbl__ortho(left, left + texel*size, bottom, bottom + texel*size, 0.0, 3.0*r);
+    }
+    else
+    {
+        // Perspective over the outer cone; depth range = the light's range (or out to the focus sphere)
+        double outer = ((light->outerAngle == 0.0f)? 30.0 : light->outerAngle)*PI/180.0;
+        double farPlane = (light->range > 0.0f)? light->range : sqrt(rbl__len2(rbl__sub(focusCenter, light->position))) + focusRadius;
+        double nearPlane = farPlane*1e-3, t = tan(outer);
+        cam.position = light->position;
+        cam.target = rbl__v3(light->position.x + dir.x, light->position.y + dir.y, light->position.z + dir.z);
+        map->lightView = RblGetView(cam);
+        map->nearPlane = (float)nearPlane; map->farPlane = (float)farPlane;
+        map->texelWorld = (float)(2.0*t/size);
+        projection = rbl__frustum(-t*nearPlane, t*nearPlane, -t*nearPlane, t*nearPlane, nearPlane, farPlane);
+    }
+    Matrix bias = rbl__identity();
+    bias.m0 = bias.m5 = bias.m10 = 0.5f; bias.m12 = bias.m13 = bias.m14 = 0.5f;
+    map->view = rbl__viewMatrix(&map->lightView);
+    map->projection = projection;
+    map->matrix = rbl__matMul(rbl__matMul(map->view, projection), bias);
+    map->light = lightIndex;
+    map->lightType = light->type;
+
+    rlDrawRenderBatchActive();
+    for (int u = 0; u < RBL_MAX_SHADOWS; u++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + u); rlDisableTexture(); }   // nothing may sample the target
+    rlActiveTextureSlot(0);
+    map->savedView = rlGetMatrixModelview();
+    map->savedProjection = rlGetMatrixProjection();
+    rlEnableFramebuffer(map->id);
+    rlViewport(0, 0, map->size, map->size);
+    rlEnableDepthTest();
+    rlEnableDepthMask();
+    rlClearScreenBuffers();
+    rlDisableBackfaceCulling();             // a billboard facing the viewer may show the light its back
+    rlSetMatrixProjection(projection);
+    rlSetMatrixModelview(map->view);
+    map->begun = true;
+    rbl__shadowPass = map;
+    return true;
+}
+
+void RblEndShadowMap(RblShadowMap *map)
+{
+    if ((map == NULL) || !map->begun) return;
+    rlDrawRenderBatchActive();
+    rlDisableFramebuffer();
+    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());
+    rlSetMatrixProjection(map->savedProjection);
+    rlSetMatrixModelview(map->savedView);
+    rlEnableBackfaceCulling();
+    rlDisableDepthTest();
+    map->begun = false;
+    rbl__shadowPass = NULL;
+}
+
+void RblDrawModelShadow(Model model, Vector3 position, float scale, Color tint)
+{
+    if (rbl__shadowPass == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawModelShadow: outside RblBeginShadowMap/RblEndShadowMap"); return; }
+    if ((model.meshes == NULL) || (model.materials == NULL) || (model.meshMaterial == NULL) || !rbl__finite3(position) || !rbl__finite(scale)) return;
+    // As DrawModel: transform = model.transform x scale x translation; albedo colour tinted
+    Matrix t = rbl__identity();
+    t.m0 = t.m5 = t.m10 = scale;
+    t.m12 = position.x; t.m13 = position.y; t.m14 = position.z;
+    Matrix transform = rbl__matMul(model.transform, t);
+    for (int i = 0; i < model.meshCount; i++)
+    {
+        MaterialMap maps[RBL__CASTER_MAPS];
+        Material m = rbl__casterMaterial(model.materials[model.meshMaterial[i]], maps, false);
+        Color c = maps[MATERIAL_MAP_ALBEDO].color;
+        maps[MATERIAL_MAP_ALBEDO].color.r = (unsigned char)((c.r*tint.r)/255); maps[MATERIAL_MAP_ALBEDO].color.g = (unsigned char)((c.g*tint.g)/255);
+        maps[MATERIAL_MAP_ALBEDO].color.b = (unsigned char)((c.b*tint.b)/255); maps[MATERIAL_MAP_ALBEDO].color.a = (unsigned char)((c.a*tint.a)/255);
+        DrawMesh(model.meshes[i], m, transform);
+    }
+}
+
+bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius)
+{
+    if ((center == NULL) || (radius == NULL) || !rbl__finite3(camera.position) || !rbl__finite3(camera.target) || !rbl__finite(camera.fovy) ||
+        !rbl__finite(aspect) || !(aspect > 0.0f) || !rbl__finite(nearDistance) || !rbl__finite(farDistance) || !(nearDistance >= 0.0f) ||
+        !(farDistance > nearDistance) || !(camera.fovy > 0.0f) || ((camera.projection != CAMERA_ORTHOGRAPHIC) && !(camera.fovy < 180.0f)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblShadowFocusFromCamera: needs 0 <= near < far, aspect > 0, 0 < fovy (< 180 perspective), finite values");
+        return false;
+    }
+    RblView v = RblGetView(camera);
+    // Half-diagonal of the slice's cross-section at distance d: perspective grows with d, orthographic not
+    double n = nearDistance, f = farDistance, k = sqrt(1.0 + (double)aspect*aspect);
+    double rn, rf;
+    if (camera.projection == CAMERA_ORTHOGRAPHIC) rn = rf = 0.5*camera.fovy*k;
+    else { double t = tan(camera.fovy*0.5*PI/180.0); rn = n*t*k; rf = f*t*k; }
+    // Smallest sphere centred on the axis through both end caps: equal distance to both rims, kept in [n, f]
+    double c = (f*f + rf*rf - n*n - rn*rn)/(2.0*(f - n));
+    if (c < n) c = n;
+    if (c > f) c = f;
+    double r = fmax(sqrt((c - n)*(c - n) + rn*rn), sqrt((f - c)*(f - c) + rf*rf));
+    *center = rbl__v3(camera.position.x - v.back.x*(float)c, camera.position.y - v.back.y*(float)c, camera.position.z - v.back.z*(float)c);
+    *radius = (float)r;
+    return rbl__finite3(*center) && rbl__finite(*radius);
+}
+
+// What lighting.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)
+static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
+{
+    rbl__matToArray(map->matrix, out);
+    out[16] = map->texelWorld; out[17] = (map->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f; out[18] = map->nearPlane; out[19] = map->farPlane;
+    out[20] = map->desc.constantBias; out[21] = map->desc.slopeBias; out[22] = map->desc.normalBias; out[23] = (float)map->size;
+    out[24] = map->lightView.right.x; out[25] = map->lightView.right.y; out[26] = map->lightView.right.z; out[27] = 0.0f;
+    out[28] = map->lightView.up.x; out[29] = map->lightView.up.y; out[30] = map->lightView.up.z; out[31] = 0.0f;
+}
+
+// Maps usable by receivers: valid, rendered at least once, not being rendered
+static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int slots)
+{
+    if ((count < 0) || (count > slots)) return "more maps than the receiver compiled (shadowMaps)";
+    if ((count > 0) && (maps == NULL)) return "no maps";
+    for (int k = 0; k < count; k++)
+    {
+        if (!RblIsShadowMapValid(maps[k]) || (maps[k].light < 0)) return "a map is invalid or was never rendered (RblBeginShadowMap)";
+        if (maps[k].begun) return "a map is still being rendered (RblEndShadowMap first)";
+        for (int j = 0; j < k; j++) if (maps[j].light == maps[k].light) return "two maps shadow the same light";
+    }
+    return NULL;
+}
+
+bool RblSetShadows(RblLitShader *shader, const RblShadowMap *maps, int count)
+{
+    const char *bad = ((shader == NULL) || !RblIsLitShaderValid(*shader))? "invalid shader" : rbl__checkShadowMaps(maps, count, shader->shadowMaps);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSetShadows: %s", bad); return false; }
+    int lightOf[4] = { -1, -1, -1, -1 };
+    Matrix m[RBL_MAX_SHADOWS];
+    float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
+    for (int k = 0; k < count; k++)
+    {
+        float u[32];
+        rbl__shadowUniformData(&maps[k], u);
+        m[k] = maps[k].matrix;
+        memcpy(&params[k*4], &u[16], 4*sizeof(float)); memcpy(&bias[k*4], &u[20], 4*sizeof(float)); memcpy(&axes[k*8], &u[24], 8*sizeof(float));
+        lightOf[k] = maps[k].light;
+        rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k);
+        rlEnableTexture(maps[k].depth.id);
+    }
+    rlActiveTextureSlot(0);
+    rlEnableShader(shader->shader.id);
+    rlSetUniform(shader->locShadowLight, lightOf, SHADER_UNIFORM_IVEC4, 1);
+    if (count > 0)
+    {
+        rlSetUniformMatrices(shader->locShadowMatrix, m, count);
+        rlSetUniform(shader->locShadowParams, params, SHADER_UNIFORM_VEC4, count);
+        rlSetUniform(shader->locShadowBias, bias, SHADER_UNIFORM_VEC4, count);
+        rlSetUniform(shader->locShadowAxes, axes, SHADER_UNIFORM_VEC4, 2*count);
+    }
+    rlDisableShader();
+    return true;
+}
+
+bool RblSetGBufferShadows(RblGBuffer *gbuffer, const RblShadowMap *maps, int count)
+{
+    const char *bad = ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer))? "invalid G-buffer" : rbl__checkShadowMaps(maps, count, gbuffer->shading.shadowMaps);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSetGBufferShadows: %s", bad); return false; }
+    for (int k = 0; k < count; k++)
+    {
+        rbl__shadowUniformData(&maps[k], gbuffer->shadowUniforms[k]);
+        gbuffer->shadowLight[k] = maps[k].light;
+        gbuffer->shadowTexture[k] = maps[k].depth.id;
+    }
+    gbuffer->shadowCount = count;
+    return true;
 }
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

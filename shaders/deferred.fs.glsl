@@ -10,7 +10,7 @@ in vec2 fragUv;
 flat in vec4 volumePosition;
 flat in vec4 volumeColor;
 flat in vec4 volumeSpot;
-flat in vec3 volumeFalloff;
+flat in vec4 volumeFalloff;           // xyz attenuation, w shadow map index + 1 (0 = none)
 #endif
 
 uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion
@@ -130,7 +130,7 @@ void main()
 #ifdef RBL_COUNT_LIGHTS
     finalColor = vec4(1.0);
 #else
-    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff), 1.0);
+    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, int(volumeFalloff.w + 0.5) - 1), 1.0);
 #endif
 #endif
 #endif

@@ -9,12 +9,12 @@ in vec3 vertexPosition;                         // proxy that encloses the unit 
 layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)
 layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)
 layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot
-layout(location = 13) in vec3 rblVolumeFalloff;  // as rblLightAttenuation
+layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)
 uniform mat4 mvp;                               // projection x view of the geometry pass
 flat out vec4 volumePosition;
 flat out vec4 volumeColor;
 flat out vec4 volumeSpot;
-flat out vec3 volumeFalloff;
+flat out vec4 volumeFalloff;
 
 void main()
 {

@@ -14,6 +14,8 @@
 //   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)
 //   RBL_EXPOSURE              multiply by rblExposure before the tonemap
 //   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve
+//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light
+//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup
 
 #define RBL_PI 3.14159265358979
 #define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)
@@ -43,6 +45,23 @@ uniform float rblFogStart;                  // linear fog: distance where it beg
 #endif
 #ifdef RBL_EXPOSURE
 uniform float rblExposure;
+#endif
+#if RBL_SHADOWS > 0
+uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)
+uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w
+uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far
+uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels
+uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))
+uniform sampler2D rblShadowMap0;            // depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)
+#if RBL_SHADOWS > 1
+uniform sampler2D rblShadowMap1;
+#endif
+#if RBL_SHADOWS > 2
+uniform sampler2D rblShadowMap2;
+#endif
+#if RBL_SHADOWS > 3
+uniform sampler2D rblShadowMap3;
+#endif
 #endif
 
 // normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.
@@ -147,9 +166,85 @@ vec3 rblAmbientLight(RblShadingPoint s)
     return ambient*s.occlusion*reflectance;
 }
 
+#if RBL_SHADOWS > 0
+// Distance along the light's axis from a window depth of map k (prm: texel, perspective, near, far)
+float rblShadowDistance(float d, vec4 prm)
+{
+    return (prm.y > 0.5)? prm.z*prm.w/(prm.w - d*(prm.w - prm.z)) : prm.z + d*(prm.w - prm.z);
+}
+
+// Fraction of light k's map lets through to a surface point with unit normal n, lit at cos(incidence)
+// NdotL (> 0). Depths are compared as distances along the light's axis, in world units:
+//   normal offset   the lookup moves along n by normal*texel*sin(incidence) (lateral shift <= that)
+//   receiver plane  each PCF fetch is compared with the receiver's own plane extended to that texel's
+//                   centre (depth gradient from n in the light's frame, clamped at 10 texels per
+//                   texel), so a flat receiver never shadows itself at any incidence below 84 degrees
+//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10
+// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2
+// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).
+// Outside the map, behind a spot light or beyond the far plane the point is lit.
+float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
+{
+    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];
+    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);
+    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);
+    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here
+    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));
+    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);
+    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);
+    if (!(c.w > 0.0)) return 1.0;
+    vec3 q = c.xyz/c.w;
+    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;
+    float z = rblShadowDistance(max(q.z, 0.0), prm) - texel*(bias.x + bias.y*tanI);
+    // Receiver plane: distance change per texel step along the map's x and y
+    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);
+    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;
+    float size = bias.w;
+    vec2 st = q.xy*size - 0.5*float(RBL_SHADOW_FILTER);         // first bilinear tap's position - 0.5, in texels
+    vec2 base = floor(st), f = st - base;
+    ivec2 b0 = ivec2(base), top = ivec2(int(size) - 1);
+    vec2 origin = base + 0.5 - q.xy*size;                       // first fetched centre relative to the point
+    float lit = 0.0;
+    for (int j = 0; j <= RBL_SHADOW_FILTER; j++)
+    {
+        float wy = (j == 0)? 1.0 - f.y : ((j == RBL_SHADOW_FILTER)? f.y : 1.0);
+        for (int i = 0; i <= RBL_SHADOW_FILTER; i++)
+        {
+            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);
+            float occluder = rblShadowDistance(texelFetch(map, clamp(b0 + ivec2(i, j), ivec2(0), top), 0).r, prm);
+            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));
+            lit += (receiver <= occluder)? wx*wy : 0.0;
+        }
+    }
+    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);
+}
+
+float rblShadow(int k, vec3 position, vec3 n, float NdotL)
+{
+    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);
+#if RBL_SHADOWS > 1
+    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);
+#endif
+#if RBL_SHADOWS > 2
+    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);
+#endif
+#if RBL_SHADOWS > 3
+    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);
+#endif
+    return 1.0;
+}
+
+// Shadow map of light slot i (-1 = unshadowed)
+int rblShadowOf(int i)
+{
+    return (i == rblShadowLight.x)? 0 : ((i == rblShadowLight.y)? 1 : ((i == rblShadowLight.z)? 2 : ((i == rblShadowLight.w)? 3 : -1)));
+}
+#endif
+
 // One light at a surface point seen along v: p position (w 0: directional), c colour (a: 1/range),
-// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square)
-vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k)
+// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square),
+// shadow map index (-1 = none)
+vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, int shadow)
 {
 #ifdef RBL_LIGHT_DIRECTIONAL
     vec3 toLight = p.xyz - s.position*p.w;
@@ -171,6 +266,9 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k)
 #ifdef RBL_LIGHT_SPOT
     float t = clamp(dot(-l, spot.xyz) + spot.w, 0.0, 1.0);
     attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone
+#endif
+#if RBL_SHADOWS > 0
+    if ((shadow >= 0) && (attenuation > 0.0)) attenuation *= rblShadow(shadow, s.position, s.normal, NdotL);
 #endif
     return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
 }
@@ -194,7 +292,12 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
 #else
         vec3 k = vec3(0.0, 0.0, 1.0);
 #endif
-        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k);
+#if RBL_SHADOWS > 0
+        int shadow = rblShadowOf(i);
+#else
+        int shadow = -1;
+#endif
+        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);
     }
 #endif
     return sum;

@@ -12,9 +12,11 @@ layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags
 uniform mat4 mvp;
 // Per-draw frame, one upload (uniform calls cost more than the data in most drivers):
 //   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height
-//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y)
+//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass
+//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
 //   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z)
-uniform vec4 rblInstancing[6];
+//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes
+uniform vec4 rblInstancing[7];
 
 out vec3 fragPosition;
 out vec2 fragTexCoord;
@@ -96,6 +98,23 @@ void main()
         if (!rblPerpendicular(rblViewEye - position, a, nn) && !rblPerpendicular(rblViewBack, a, nn) &&
             !rblPerpendicular(rblViewUp, a, nn)) nn = rblViewBack;
         u = a; n = nn; r = cross(u, n);
+        // Shadow pass: tilt about the pivot line (r) until the light sees the quad at >= the minimum
+        // angle, so an upright sprite still casts under a light along its axis (RblShadowTilt on the CPU)
+        float minSin = rblInstancing[4].w;
+        vec4 light = rblInstancing[6];
+        vec3 l;
+        if ((minSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
+        {
+            float ln = dot(l, n), la = dot(l, a);
+            if (abs(ln) < minSin)
+            {
+                float tilt = asin(minSin) - asin(abs(ln));
+                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;
+                float c = cos(tilt), sn = sin(tilt)*sg;
+                n = n*c + a*sn;
+                u = a*c - nn*sn;
+            }
+        }
     }
     else
     {
