@@ -611,9 +611,9 @@ typedef struct RblGBuffer {
 // Shadow map settings; zero means default (the biases are in shadow-map texels, see SHADOWS)
 typedef struct RblShadowDesc {
     int size;                       // Texels per side, square (0 = 1024; 16..8192)
-    float constantBias;             // Depth bias (0 = 0.3; negative = none)
+    float constantBias;             // Depth bias (0 = 0.2; negative = none)
     float slopeBias;                // Depth bias per unit tan(incidence) (0 = 0.1; negative = none)
-    float normalBias;               // Lookup offset along the receiver normal x sin(incidence) (0 = 0.5; negative = none)
+    float normalBias;               // Lookup offset along the receiver normal x sin(incidence) (0 = 0.25; negative = none)
     float minCastAngle;             // AXIS billboards tilt until the light sees them at >= this, degrees (0 = 30; negative = never)
     bool faceLight;                 // Billboards face the light in the shadow pass (default: the camera of the billboard call)
 } RblShadowDesc;
@@ -1149,7 +1149,8 @@ static const char *const rbl__shader_lighting[] = {
     "//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10\n",
     "// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2\n",
     "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
-    "// Outside the map, behind a spot light or beyond the far plane the point is lit.\n",
+    "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
+    "// outside the map or of a texel nothing was drawn into.\n",
     "float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)\n",
     "{\n",
     "    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];\n",
@@ -1178,9 +1179,11 @@ static const char *const rbl__shader_lighting[] = {
     "        for (int i = 0; i <= RBL_SHADOW_FILTER; i++)\n",
     "        {\n",
     "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
-    "            float occluder = rblShadowDistance(texelFetch(map, clamp(b0 + ivec2(i, j), ivec2(0), top), 0).r, prm);\n",
+    "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
+    "            ivec2 at = b0 + ivec2(i, j);\n",
+    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;\n",
     "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
-    "            lit += (receiver <= occluder)? wx*wy : 0.0;\n",
+    "            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
     "        }\n",
     "    }\n",
     "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
@@ -1492,12 +1495,13 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        if ((minSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
     "        {\n",
     "            float ln = dot(l, n), la = dot(l, a);\n",
-    "            if (abs(ln) < minSin)\n",
+    "            float x = abs(ln), y = abs(la), rho = sqrt(x*x + y*y);\n",
+    "            if ((x < minSin) && (rho > 0.0))\n",
     "            {\n",
-    "                float tilt = asin(minSin) - asin(abs(ln));\n",
+    "                float k = min(minSin/rho, 1.0), m = sqrt(1.0 - k*k);\n",
     "                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;\n",
-    "                float c = cos(tilt), sn = sin(tilt)*sg;\n",
-    "                n = n*c + a*sn;\n",
+    "                float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;\n",
+    "                n = nn*c + a*sn;\n",
     "                u = a*c - nn*sn;\n",
     "            }\n",
     "        }\n",
@@ -1858,20 +1862,23 @@ static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3
                 !rbl__perpendicular(view->back, a, &nn) &&
                 !rbl__perpendicular(view->up, a, &nn)) nn = view->back;    // unreachable: up and back can't both be parallel to a
             u = a; n = nn; r = rbl__cross(u, n);
-            // Shadow pass: tilt about the pivot line (r) until the light sees the quad at >= the minimum
-            // angle (angle added = asin(minCastSin) - asin|n.l|), leaning away from the light, so an
-            // upright sprite still casts under a light along its axis. r stays; n and u turn together.
+            // Shadow pass: tilt about the pivot line (r), leaning away from the light, by the smallest
+            // angle t at which the light sees the quad at the minimum angle s: in the (n, a) plane with
+            // l's components x = |n.l|, y = |a.l|, rho = |(x, y)|, (cos t, sin t) = k (x, y)/rho +
+            // sqrt(1 - k^2) (y, -x)/rho, k = min(s/rho, 1) (no inverse trig: CPU and GPU agree). An
+            // upright sprite thus still casts under a light along its axis. r stays; n and u turn together.
             Vector3 l;
             if ((view->minCastSin > 0.0f) &&
                 rbl__normalizeTo(rbl__v3(view->light.x - b->position.x*view->light.w, view->light.y - b->position.y*view->light.w,
                                          view->light.z - b->position.z*view->light.w), &l))
             {
                 float ln = rbl__dot(l, n), la = rbl__dot(l, a);
-                if (fabsf(ln) < view->minCastSin)
+                float x = fabsf(ln), y = fabsf(la), rho = sqrtf(x*x + y*y);
+                if ((x < view->minCastSin) && (rho > 0.0f))
                 {
-                    float tilt = asinf(view->minCastSin) - asinf(fabsf(ln));
+                    float k = fminf(view->minCastSin/rho, 1.0f), m = sqrtf(1.0f - k*k);
                     float sg = ((ln >= 0.0f) == (la >= 0.0f))? 1.0f : -1.0f;
-                    float c = cosf(tilt), sn = sinf(tilt)*sg;
+                    float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
                     n = rbl__v3(nn.x*c + a.x*sn, nn.y*c + a.y*sn, nn.z*c + a.z*sn);
                     u = rbl__v3(a.x*c - nn.x*sn, a.y*c - nn.y*sn, a.z*c - nn.z*sn);
                 }
@@ -4555,9 +4562,9 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     if (!rbl__finite(in.constantBias) || !rbl__finite(in.slopeBias) || !rbl__finite(in.normalBias) || !rbl__finite(in.minCastAngle)) return "NaN/Inf bias or angle";
     if (in.minCastAngle > 80.0f) return "minCastAngle above 80 degrees";
     out->size = (in.size == 0)? 1024 : in.size;
-    out->constantBias = (in.constantBias == 0.0f)? 0.3f : ((in.constantBias < 0.0f)? 0.0f : in.constantBias);
+    out->constantBias = (in.constantBias == 0.0f)? 0.2f : ((in.constantBias < 0.0f)? 0.0f : in.constantBias);
     out->slopeBias = (in.slopeBias == 0.0f)? 0.1f : ((in.slopeBias < 0.0f)? 0.0f : in.slopeBias);
-    out->normalBias = (in.normalBias == 0.0f)? 0.5f : ((in.normalBias < 0.0f)? 0.0f : in.normalBias);
+    out->normalBias = (in.normalBias == 0.0f)? 0.25f : ((in.normalBias < 0.0f)? 0.0f : in.normalBias);
     out->minCastAngle = (in.minCastAngle == 0.0f)? 30.0f : ((in.minCastAngle < 0.0f)? 0.0f : in.minCastAngle);
     out->faceLight = in.faceLight;
     return NULL;

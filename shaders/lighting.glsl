@@ -182,7 +182,8 @@ float rblShadowDistance(float d, vec4 prm)
 //   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10
 // PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2
 // fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).
-// Outside the map, behind a spot light or beyond the far plane the point is lit.
+// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch
+// outside the map or of a texel nothing was drawn into.
 float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
 {
     vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];
@@ -211,9 +212,11 @@ float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
         for (int i = 0; i <= RBL_SHADOW_FILTER; i++)
         {
             float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);
-            float occluder = rblShadowDistance(texelFetch(map, clamp(b0 + ivec2(i, j), ivec2(0), top), 0).r, prm);
+            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder
+            ivec2 at = b0 + ivec2(i, j);
+            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;
             float receiver = z + dot(slope, origin + vec2(float(i), float(j)));
-            lit += (receiver <= occluder)? wx*wy : 0.0;
+            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;
         }
     }
     return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);

@@ -106,12 +106,13 @@ void main()
         if ((minSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
         {
             float ln = dot(l, n), la = dot(l, a);
-            if (abs(ln) < minSin)
+            float x = abs(ln), y = abs(la), rho = sqrt(x*x + y*y);
+            if ((x < minSin) && (rho > 0.0))
             {
-                float tilt = asin(minSin) - asin(abs(ln));
+                float k = min(minSin/rho, 1.0), m = sqrt(1.0 - k*k);
                 float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;
-                float c = cos(tilt), sn = sin(tilt)*sg;
-                n = n*c + a*sn;
+                float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
+                n = nn*c + a*sn;
                 u = a*c - nn*sn;
             }
         }

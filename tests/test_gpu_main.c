@@ -18,6 +18,7 @@
 #include "test_material_render.c"
 #include "test_lighting.c"
 #include "test_deferred.c"
+#include "test_shadows.c"
 
 int main(int argc, char **argv)
 {
@@ -63,6 +64,16 @@ int main(int argc, char **argv)
         RT_TEST(test_deferred_forced_failure_logs_and_the_forward_fallback_renders),
         RT_TEST(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth),
         RT_TEST(test_deferred_debug_views_show_what_they_name),
+        RT_TEST(test_shadows_opaque_card_darkens_its_analytic_footprint_within_a_texel),
+        RT_TEST(test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_every_path),
+        RT_TEST(test_shadows_raylib_model_casts_its_footprint),
+        RT_TEST(test_shadows_no_acne_on_a_floor_lit_at_up_to_80_degrees),
+        RT_TEST(test_shadows_standing_card_casts_from_its_base_without_peter_panning),
+        RT_TEST(test_shadows_axis_locked_billboard_casts_under_a_light_straight_above),
+        RT_TEST(test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu),
+        RT_TEST(test_shadows_forward_and_deferred_agree_within_2_of_255),
+        RT_TEST(test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing),
+        RT_TEST(test_shadows_hard_cases_stay_finite),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }

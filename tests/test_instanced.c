@@ -79,6 +79,10 @@ static RblBillboard billboardOf(const RblInstance *in, RblInstancedDesc d)
     return b;
 }
 
+// Shadow-pass fields of the captured frame (zero: a colour pass); the shadow tests set them
+static Vector4 tfLight;
+static float tfMinCastSin;
+
 // Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
 static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
 {
@@ -88,11 +92,11 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
     BeginTextureMode(scratch);
     rlEnableShader(prog);
     rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
-    const float frame[24] = {
+    const float frame[28] = {
         view.eye.x, view.eye.y, view.eye.z, (float)d.facing, view.right.x, view.right.y, view.right.z, d.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW, view.back.x, view.back.y, view.back.z, (float)texH,
-        d.up.x, d.up.y, d.up.z, 0.0f, d.axis.x, d.axis.y, d.axis.z, 0.0f };
-    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 6);
+        d.up.x, d.up.y, d.up.z, tfMinCastSin, d.axis.x, d.axis.y, d.axis.z, 0.0f, tfLight.x, tfLight.y, tfLight.z, tfLight.w };
+    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 7);
 
     size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
     GLu tfb = 0;
