@@ -1,6 +1,6 @@
 /**********************************************************************************************
 *
-*   rbillboard_lit v0.1 - Lit billboards for raylib: normals, tangents, materials and lights
+*   rbillboard_lit v0.2 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
 *
 *   DESCRIPTION:
 *       A raylib billboard (DrawBillboardPro) is two triangles with a colour and texture
@@ -34,6 +34,10 @@
 *         bounded lights drawn as instanced light volumes (cost follows the pixels they touch,
 *         1024+ lights), the forward path's lighting code and material decoding, debug views,
 *         forward-drawn transparent billboards sort against its depth; see DEFERRED
+*       - Shadows (RblShadowMap) of directional and spot lights, cast by billboards (alpha-tested:
+*         the sprite's silhouette, not its quad) and Models through the same draw calls, received by
+*         the forward shader and the deferred passes: receiver-plane + slope + normal-offset bias,
+*         bilinear-weighted PCF of any footprint; see SHADOWS
 *       - Material packing (CPU, RblPackMaterial): albedo + one RGBA8 material texture (hemi-octahedral
 *         normal, specular, occlusion) + an optional 1-byte emissive mask; atlas gutters dilated, mip
 *         chains averaged in linear light with renormalised normals; height -> normal / occlusion and
@@ -41,7 +45,11 @@
 *
 *   LIMITATIONS:
 *       - OpenGL 3.3 core (GLSL 330) only for now; GLES2/WebGL variants are not written yet
-*       - Shadows are planned, not implemented
+*       - Shadows: directional and spot lights only (point lights would need cube maps); no cascades
+*         (one orthographic map over a focus sphere); comparison in the shader (rlgl exposes no
+*         GL_TEXTURE_COMPARE_MODE, so no hardware PCF); maps are bound to texture units
+*         RBL_SHADOW_TEXTURE_UNIT + k, shared by every receiver for the frame; the shadow pass binds
+*         its own framebuffer (run it outside BeginMode3D/BeginTextureMode)
 *       - Deferred: one BRDF (and light feature set) per G-buffer; a Blinn-Phong specular colour is
 *         folded into its intensity (luminance, at most 1); the geometry and light passes leave the
 *         default framebuffer bound (run them outside BeginTextureMode, resolve inside it); the
@@ -140,6 +148,45 @@
 *       The windowed falloff is exactly zero at the range, so volumes change no pixel: volumes and the
 *       naive full-screen loop (g.naiveFullscreen, kept for comparison) agree within 1/255.
 *
+*   SHADOWS (RblShadowMap; shaders/lighting.glsl rblShadowLookup, shaders/shadow_caster.fs.glsl):
+*       Per frame: RblBeginShadowMap(&map, lights, i, focusCentre, focusRadius) -> the same billboard
+*       calls (immediate, batched, instanced) with the same materials as the colour pass, and Models
+*       through RblDrawModelShadow() -> RblEndShadowMap(&map) -> RblSetShadows(&lit, &map, 1) (or
+*       RblSetGBufferShadows) -> the colour pass. Receivers are variants with desc.shadowMaps > 0.
+*       Light cameras: directional = orthographic over the focus sphere (eye 2r before the centre, depth
+*       0..3r: casters up to 2r toward the light), its window moved in whole texels of a grid fixed in
+*       the world (edges do not crawl as the focus follows the camera; RblShadowFocusFromCamera gives the
+*       bounding sphere of a frustum slice); spot = perspective over the outer cone (<= 80 degrees), depth
+*       range/1000..range (or out to the focus sphere when range is 0).
+*       Casters: inside a pass every billboard path swaps in a depth-only caster program (from the lit
+*       cache) that keeps the material's albedo map, colDiffuse, vertex tint and the colour pass's alpha
+*       cutoff (looked up from the lit variant the material carries), so a sprite's cut-out casts a
+*       cut-out shadow. Culling is off: a billboard facing the viewer may show the light its back.
+*       Billboard orientation in the shadow pass: the camera given to the billboard call, i.e. the
+*       viewer's (default), so the shadow is the silhouette the viewer sees and a billboard never
+*       shadows itself where it is visibly lit; desc.faceLight turns them to the light camera instead
+*       (fuller shadows under side light, but they no longer match the sprite seen). AXIS billboards
+*       are tilted about their pivot line, leaning away from the light, just enough that the light sees
+*       them at desc.minCastAngle (30 degrees): an upright tree under a light along its axis would be
+*       edge-on and cast nothing. The tilt is exact and trig-free on the CPU and GPU (tested equal).
+*       Receivers (per light sample, in world units, t = texel size at the point):
+*         normal offset    lookup moved along N by normalBias*t*sin(incidence) (shifts edges <= that)
+*         receiver plane   each PCF fetch compares with the receiver's own plane extended to that texel
+*                          (gradient from N in the light's frame, clamped at 10 texels per texel), so
+*                          flat ground needs no slope-sized bias at any incidence below 84 degrees
+*         depth bias       t*(constantBias + slopeBias*tan(incidence)), tan clamped at 10
+*         PCF              k x k texel box over bilinear-weighted comparisons, (k + 1)^2 fetches
+*                          (desc.shadowFilter, default 2); k = 1 is hardware 2x2 comparison's footprint
+*       Outside the map, beyond its far plane, behind a spot light, and for fetches of texels nothing was
+*       drawn into (cleared), the point is lit. Defaults (constant 0.2, slope 0.1, normal 0.25 texels),
+*       measured in tests/test_shadows.c at 512 texels over 8 units: no acne on a floor lit at 0..80
+*       degrees (worst 0/255, forward and deferred, k = 1 and 3); a card standing on the floor casts from
+*       within one texel of its base at 30..75 degrees; analytic card footprints (directional and spot)
+*       with no pixel wrong farther than a texel from the edge; forward vs deferred worst 2/255.
+*       Deferred: the same lookup in the full-screen and volume passes (each light carries its map
+*       index); at 4+ texels per pixel the G-buffer's depth (raylib's 0.05..4000 range) can move a hard
+*       edge by ~1e-4 units (3-4/255 on edge pixels).
+*
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
 *       material  RGBA8, linear: RG normal, B specular, A occlusion                                 4 B
@@ -193,6 +240,16 @@
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch reserves when RblLoadBatch() is given 0.
 *
+*       #define RBL_MAX_SHADOWS 4
+*           Shadow maps one receiver variant may sample (desc.shadowMaps); at most 4.
+*
+*       #define RBL_SHADOW_TEXTURE_UNIT 12
+*           Shadow map k is bound to texture unit 12 + k by RblSetShadows (raylib's materials use 0..11;
+*           GL 3.3 guarantees 16 units per stage).
+*
+*       #define RBL_SHADOW_MAX_FILTER 6
+*           Largest PCF footprint (desc.shadowFilter), in texels per side.
+*
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
 *
@@ -205,6 +262,9 @@
 *                        normals), immediate, batched and instanced paths, packed material maps,
 *                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog, tonemap),
 *                        deferred helper (10-byte G-buffer, light volumes, debug views).
+*       0.2 (2026-11-23) Shadows: directional and spot shadow maps cast by billboards (alpha-tested,
+*                        every path) and Models, received forward and deferred; RblView gained the
+*                        shadow pass's light and minimum cast angle (zero outside shadow passes).
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
