@@ -108,7 +108,11 @@ $(BUILD)/bench/bench_deferred: tests/bench/bench_deferred.c tests/bench/bench.h 
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_deferred.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred
+$(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h tests/lighting_reference.h tests/reference.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_shadows.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

@@ -48,8 +48,9 @@
 *       - Shadows: directional and spot lights only (point lights would need cube maps); no cascades
 *         (one orthographic map over a focus sphere); comparison in the shader (rlgl exposes no
 *         GL_TEXTURE_COMPARE_MODE, so no hardware PCF); maps are bound to texture units
-*         RBL_SHADOW_TEXTURE_UNIT + k, shared by every receiver for the frame; the shadow pass binds
-*         its own framebuffer (run it outside BeginMode3D/BeginTextureMode)
+*         RBL_SHADOW_TEXTURE_UNIT + k, shared by every receiver for the frame; RblEndShadowMap restores
+*         the framebuffer, viewport and matrices it found but leaves the depth test off and culling on
+*         (as EndMode3D does): run shadow passes before BeginMode3D (inside BeginTextureMode is fine)
 *       - Deferred: one BRDF (and light feature set) per G-buffer; a Blinn-Phong specular colour is
 *         folded into its intensity (luminance, at most 1); the geometry and light passes leave the
 *         default framebuffer bound (run them outside BeginTextureMode, resolve inside it); the
@@ -695,8 +696,9 @@ typedef struct RblShadowMap {
     float texelWorld;               // World size of a texel (perspective: per unit distance along the axis)
     float nearPlane;                // Depth range along the light's axis
     float farPlane;
-    Matrix savedView;               // rlgl matrices restored by RblEndShadowMap
+    Matrix savedView;               // rlgl state restored by RblEndShadowMap: matrices and framebuffer
     Matrix savedProjection;
+    unsigned int savedFramebuffer;
     bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
 } RblShadowMap;
 
@@ -767,7 +769,7 @@ RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     //
 RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target and caster shaders loaded
 RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and release the caster shaders
 RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex, Vector3 focusCenter, float focusRadius); // Start the shadow pass of lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone; false = rejected
-RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices, culling)
+RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
 RBLAPI void RblDrawModelShadow(Model model, Vector3 position, float scale, Color tint); // Draw a Model as a caster inside a shadow pass (as DrawModel; alpha-tested like its colour pass)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 RBLAPI bool RblSetShadows(RblLitShader *shader, const RblShadowMap *maps, int count); // Receivers: upload the maps' matrices, bind their depth textures; false = rejected
@@ -4765,6 +4767,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex
     rlActiveTextureSlot(0);
     map->savedView = rlGetMatrixModelview();
     map->savedProjection = rlGetMatrixProjection();
+    map->savedFramebuffer = rlGetActiveFramebuffer();
     rlEnableFramebuffer(map->id);
     rlViewport(0, 0, map->size, map->size);
     rlEnableDepthTest();
@@ -4782,8 +4785,9 @@ void RblEndShadowMap(RblShadowMap *map)
 {
     if ((map == NULL) || !map->begun) return;
     rlDrawRenderBatchActive();
-    rlDisableFramebuffer();
-    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());
+    if (map->savedFramebuffer != 0) rlEnableFramebuffer(map->savedFramebuffer);     // e.g. inside BeginTextureMode
+    else rlDisableFramebuffer();
+    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());           // BeginTextureMode sets these to its size
     rlSetMatrixProjection(map->savedProjection);
     rlSetMatrixModelview(map->savedView);
     rlEnableBackfaceCulling();

@@ -74,6 +74,7 @@ int main(int argc, char **argv)
         RT_TEST(test_shadows_forward_and_deferred_agree_within_2_of_255),
         RT_TEST(test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing),
         RT_TEST(test_shadows_hard_cases_stay_finite),
+        RT_TEST(test_shadows_pass_restores_the_callers_target_and_matrices),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }

@@ -712,3 +712,29 @@ static void test_shadows_raylib_model_casts_its_footprint(void)
     UnloadModel(cube);
     UnloadTexture(white);
 }
+
+// A shadow pass inside BeginTextureMode hands the render texture, its viewport and the matrices back
+static void test_shadows_pass_restores_the_callers_target_and_matrices(void)
+{
+    RblShadowDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.size = 64;
+    RblShadowMap map = RblLoadShadowMap(desc);
+    RblLight sun = litDirectional((Vector3){ 0.2f, -1.0f, 0.1f }, 1.0f);
+    RenderTexture2D rt = LoadRenderTexture(32, 16);
+    BeginTextureMode(rt);
+    ClearBackground(BLACK);
+    Matrix view = rlGetMatrixModelview(), proj = rlGetMatrixProjection();
+    RT_CHECK(RblBeginShadowMap(&map, &sun, 0, (Vector3){ 0, 0, 0 }, 2.0f), "pass refused");
+    RblEndShadowMap(&map);
+    RT_CHECK(rlGetActiveFramebuffer() == rt.id, "framebuffer %u after the pass, expected the render texture's %u", rlGetActiveFramebuffer(), rt.id);
+    Matrix v2 = rlGetMatrixModelview(), p2 = rlGetMatrixProjection();
+    RT_CHECK(memcmp(&v2, &view, sizeof(Matrix)) == 0 && memcmp(&p2, &proj, sizeof(Matrix)) == 0, "matrices not restored");
+    DrawRectangle(0, 0, 32, 16, RED);                   // must land in the render texture, all of it
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    RT_CHECK(rtPixel(img, 0, 0).r == 230 && rtPixel(img, 31, 15).r == 230, "a draw after the pass missed the render texture (%d, %d)", rtPixel(img, 0, 0).r, rtPixel(img, 31, 15).r);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    RblUnloadShadowMap(&map);
+}

@@ -24,6 +24,10 @@ echo "== bench_deferred"
 BENCH_CSV="$csv" "$BUILD/bench/bench_deferred"
 
 echo
+echo "== bench_shadows"
+BENCH_CSV="$csv" "$BUILD/bench/bench_shadows"
+
+echo
 echo "== $csv"
 if command -v column >/dev/null 2>&1; then
   column -t -s, "$csv"
