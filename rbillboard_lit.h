@@ -945,7 +945,15 @@ static const char *const rbl__shader_deferred_fs[] = {
     "#ifdef RBL_COUNT_LIGHTS\n",
     "    finalColor = vec4(1.0);\n",
     "#else\n",
-    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, int(volumeFalloff.w + 0.5) - 1), 1.0);\n",
+    "#if RBL_SHADOWS > 0\n",
+    "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
+    "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
+    "    float NdotL = dot(s.normal, l);\n",
+    "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;\n",
+    "#else\n",
+    "    float shadow = 1.0;\n",
+    "#endif\n",
+    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);\n",
     "#endif\n",
     "#endif\n",
     "#endif\n",
@@ -1266,17 +1274,22 @@ static const char *const rbl__shader_lighting[] = {
     "    return 1.0;\n",
     "}\n",
     "\n",
-    "// Shadow map of light slot i (-1 = unshadowed)\n",
-    "int rblShadowOf(int i)\n",
+    "// Light that map k shadows, at this point: the map's lookup, or 1 (unlit side, or no such light). Done\n",
+    "// once per map before the light loop, not per light slot (CPU rasterisers run every branch of a loop)\n",
+    "float rblShadowOfMap(int k, RblShadingPoint s, int light)\n",
     "{\n",
-    "    return (i == rblShadowLight.x)? 0 : ((i == rblShadowLight.y)? 1 : ((i == rblShadowLight.z)? 2 : ((i == rblShadowLight.w)? 3 : -1)));\n",
+    "    if ((light < 0) || (light >= rblLightCount)) return 1.0;\n",
+    "    vec4 p = rblLightPosition[light];\n",
+    "    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);\n",
+    "    float NdotL = dot(s.normal, l);\n",
+    "    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;\n",
     "}\n",
     "#endif\n",
     "\n",
     "// One light at a surface point seen along v: p position (w 0: directional), c colour (a: 1/range),\n",
     "// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square),\n",
-    "// shadow map index (-1 = none)\n",
-    "vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, int shadow)\n",
+    "// shadow the fraction its shadow map lets through (1 = unshadowed)\n",
+    "vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, float shadow)\n",
     "{\n",
     "#ifdef RBL_LIGHT_DIRECTIONAL\n",
     "    vec3 toLight = p.xyz - s.position*p.w;\n",
@@ -1299,9 +1312,7 @@ static const char *const rbl__shader_lighting[] = {
     "    float t = clamp(dot(-l, spot.xyz) + spot.w, 0.0, 1.0);\n",
     "    attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone\n",
     "#endif\n",
-    "#if RBL_SHADOWS > 0\n",
-    "    if ((shadow >= 0) && (attenuation > 0.0)) attenuation *= rblShadow(shadow, s.position, s.normal, NdotL);\n",
-    "#endif\n",
+    "    attenuation *= shadow;\n",
     "    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);\n",
     "}\n",
     "\n",
@@ -1311,6 +1322,19 @@ static const char *const rbl__shader_lighting[] = {
     "    vec3 sum = vec3(0.0);\n",
     "#if RBL_LIGHTS > 0\n",
     "    vec3 v = rblSafeNormalize(eye - s.position, s.normal);\n",
+    "#if RBL_SHADOWS > 0\n",
+    "    vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows\n",
+    "    shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    shadowed.y = rblShadowOfMap(1, s, rblShadowLight.y);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    shadowed.z = rblShadowOfMap(2, s, rblShadowLight.z);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);\n",
+    "#endif\n",
+    "#endif\n",
     "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
     "    {\n",
     "        if (i >= rblLightCount) break;\n",
@@ -1325,9 +1349,10 @@ static const char *const rbl__shader_lighting[] = {
     "        vec3 k = vec3(0.0, 0.0, 1.0);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 0\n",
-    "        int shadow = rblShadowOf(i);\n",
+    "        float shadow = (i == rblShadowLight.x)? shadowed.x : ((i == rblShadowLight.y)? shadowed.y :\n",
+    "                       ((i == rblShadowLight.z)? shadowed.z : ((i == rblShadowLight.w)? shadowed.w : 1.0)));\n",
     "#else\n",
-    "        int shadow = -1;\n",
+    "        float shadow = 1.0;\n",
     "#endif\n",
     "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);\n",
     "    }\n",
@@ -1830,6 +1855,21 @@ static Matrix rbl__identity(void)
     memset(&m, 0, sizeof(m));
     m.m0 = m.m5 = m.m10 = m.m15 = 1.0f;
     return m;
+}
+
+// Back to framebuffer fbo with a viewport covering it. rlgl's framebuffer size is the last render
+// texture's after EndTextureMode (raylib does not reset it), so the screen's size comes from the
+// window when there is one (headless rlglInit contexts have none: rlgl's size is the screen's there)
+static void rbl__restoreTarget(unsigned int fbo)
+{
+    int w = rlGetFramebufferWidth(), h = rlGetFramebufferHeight();
+    if (fbo != 0) rlEnableFramebuffer(fbo);     // inside BeginTextureMode: rlgl's size is that texture's
+    else
+    {
+        rlDisableFramebuffer();
+        if ((GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { w = GetRenderWidth(); h = GetRenderHeight(); }
+    }
+    rlViewport(0, 0, w, h);
 }
 
 // Unit vector or false when v is too short to give a direction
@@ -4341,8 +4381,7 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
     rlLoadIdentity();
     rlEnableColorBlend();
     rlDisableDepthTest();
-    rlDisableFramebuffer();
-    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());
+    rbl__restoreTarget(0);
 }
 
 // Binds the G-buffer textures and camera uniforms of one pass
@@ -4528,8 +4567,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
     }
     rlEnableBackfaceCulling();
     rlSetBlendMode(BLEND_ALPHA);
-    rlDisableFramebuffer();
-    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());
+    rbl__restoreTarget(0);
     return true;
 }
 
@@ -4785,9 +4823,7 @@ void RblEndShadowMap(RblShadowMap *map)
 {
     if ((map == NULL) || !map->begun) return;
     rlDrawRenderBatchActive();
-    if (map->savedFramebuffer != 0) rlEnableFramebuffer(map->savedFramebuffer);     // e.g. inside BeginTextureMode
-    else rlDisableFramebuffer();
-    rlViewport(0, 0, rlGetFramebufferWidth(), rlGetFramebufferHeight());           // BeginTextureMode sets these to its size
+    rbl__restoreTarget(map->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->savedProjection);
     rlSetMatrixModelview(map->savedView);
     rlEnableBackfaceCulling();

@@ -8,7 +8,7 @@
 *
 *   Example shows rbillboard_lit.h: playing cards drawn as billboards that carry normals and
 *   tangents, so a normal map embosses their symbols under moving coloured point lights, a
-*   sweeping spot light and a dim directional moonlight.
+*   sweeping spot light and a bluish directional moonlight that casts the cards' shadows.
 *   Everything is generated in code (no asset files):
 *     - the card faces (white rounded cards, red hearts / black spades, corner indices) are
 *       drawn with raylib Image functions into one atlas, each card in its own frame with a
@@ -26,6 +26,12 @@
 *   The cards go through the batched path (RblBeginBatch/RblBatchAdd/RblEndBatch): five cards
 *   stand upright turning around +Y toward the camera (RBL_FACING_AXIS) and one lies flat on
 *   the floor (RBL_FACING_FIXED); all six share one material, so the batch draws them at once.
+*   The moonlight casts the cards' shadows (it comes from behind the ring, so the shadows stretch
+*   toward the viewer instead of hiding behind the cards): each frame, before BeginDrawing(), the
+*   same card batch is drawn into a shadow map (between RblBeginShadowMap and RblEndShadowMap the
+*   library swaps in a depth-only caster shader that keeps the cards' alpha test, so the
+*   transparent rounded corners stay cut out of the shadows), then RblSetShadows() hands the map
+*   to the floor and card shader variants, compiled to receive one (desc.shadowMaps = 1).
 *
 *   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
 *   BSD-like license that allows static linking with closed source software
@@ -58,6 +64,13 @@
 
 #define LIGHT_COUNT             4           // Moving coloured point lights
 #define SCENE_LIGHTS            (LIGHT_COUNT + 2)   // + a spot light and a directional moonlight
+#define SPOT_LIGHT              LIGHT_COUNT         // Index of the spot light in showcaseLights
+#define MOON_LIGHT              (LIGHT_COUNT + 1)   // Index of the moonlight (the shadow caster)
+
+#define SHADOW_MAP_SIZE         1024        // Moon shadow map texels per side: 6.4/1023 = 0.006 units a texel,
+                                            // finer than a floor pixel at the camera's distance
+#define SHADOW_FOCUS_RADIUS     3.2f        // Sphere the moon's shadow map covers: the ring of cards and the
+                                            // floor their shadows fall on (cards 1.8 out, shadows ~1.4 long)
 
 //----------------------------------------------------------------------------------
 // Types and Structures Definition
@@ -88,6 +101,7 @@ static Material cardMaterial = { 0 };       // Packed card atlas (albedo + mater
 static Model floorModel = { 0 };
 static Texture2D floorAlbedo = { 0 };
 static RblLight showcaseLights[SCENE_LIGHTS] = { 0 };
+static RblShadowMap moonShadow = { 0 };     // Depth map of the moonlight (cast by the cards)
 
 static const LightPath lightPaths[LIGHT_COUNT] = {
     { { 255, 164,  72, 255 }, 3.2f, 3.0f, 1.0f, 0.30f,  0.55f, 0.2f },    // Warm orange, outer orbit
@@ -111,7 +125,9 @@ static const char *rankGlyphs[CARD_COUNT][7] = {
 //----------------------------------------------------------------------------------
 static void ShowcaseInit(void);             // Generate textures, load shader, batch and floor
 static void ShowcaseUpdate(float time);     // Move the lights (a function of time only)
+static void ShowcaseDrawShadows(void);      // Render the shadow map (outside BeginDrawing/BeginTextureMode)
 static void ShowcaseDraw(void);             // Draw the 3D scene (inside BeginMode3D)
+static void DrawCards(void);                // The card batch (colour pass and shadow pass alike)
 static void ShowcaseUnload(void);           // Unload everything ShowcaseInit() loaded
 
 //------------------------------------------------------------------------------------
@@ -143,6 +159,10 @@ int main(void)
 
         // Draw
         //----------------------------------------------------------------------------------
+        // Shadow map first: a shadow pass binds its own framebuffer and restores the default
+        // one, so it runs before BeginDrawing() (never inside BeginMode3D/BeginTextureMode)
+        ShowcaseDrawShadows();
+
         BeginDrawing();
 
             ClearBackground(showcaseBackground);
@@ -151,7 +171,7 @@ int main(void)
                 ShowcaseDraw();
             EndMode3D();
 
-            DrawText("Lit billboards with packed normal + occlusion maps (wheel: zoom)", 10, 40, 20, RAYWHITE);
+            DrawText("Lit billboards: packed normal maps, sprite shadows (wheel: zoom)", 10, 40, 20, RAYWHITE);
             DrawFPS(10, 10);
 
         EndDrawing();
@@ -160,7 +180,7 @@ int main(void)
 
     // De-Initialization
     //--------------------------------------------------------------------------------------
-    ShowcaseUnload();               // Unload textures, shaders, batch and floor
+    ShowcaseUnload();               // Unload textures, shaders, shadow map, batch and floor
 
     CloseWindow();                  // Close window and OpenGL context
     //--------------------------------------------------------------------------------------
@@ -404,6 +424,7 @@ static void ShowcaseInit(void)
     sceneDesc.fog = (RblFog){ RBL_FOG_EXP2, showcaseBackground, 0.0f, 0.0f, 0.055f };
     sceneDesc.tonemap = RBL_TONEMAP_ACES;
     sceneDesc.exposure = 1.4f;
+    sceneDesc.shadowMaps = 1;                   // Floor and cards receive the moon's shadow (default 2x2-texel PCF)
 
     // Card shader variant: glossy card stock (Blinn-Phong), sampling exactly the maps the packing produced
     RblLitShaderDesc cardDesc = sceneDesc;
@@ -442,6 +463,13 @@ static void ShowcaseInit(void)
     floorModel.materials[0].shader = floorLit.shader;
     floorModel.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorAlbedo;
 
+    // Shadow map of the moonlight: a depth target and the caster shaders. The default biases are in
+    // texels, so they stay right at any map size; if it fails to load the scene renders unshadowed
+    RblShadowDesc shadowDesc = { 0 };
+    shadowDesc.size = SHADOW_MAP_SIZE;
+    moonShadow = RblLoadShadowMap(shadowDesc);
+    if (!RblIsShadowMapValid(moonShadow)) TraceLog(LOG_WARNING, "SHOWCASE: shadow map failed to load (no shadows)");
+
     ShowcaseUpdate(0.0f);
 }
 
@@ -460,7 +488,7 @@ static void ShowcaseUpdate(float time)
     }
 
     // A warm spot light high above, sweeping slowly across the ring of cards
-    RblLight *spot = &showcaseLights[LIGHT_COUNT];
+    RblLight *spot = &showcaseLights[SPOT_LIGHT];
     spot->type = RBL_LIGHT_SPOT;
     spot->position = (Vector3){ 0.0f, 5.0f, 1.0f };
     spot->direction = (Vector3){ 1.6f*cosf(0.35f*time), -5.0f, 1.6f*sinf(0.35f*time) - 1.0f };
@@ -470,12 +498,12 @@ static void ShowcaseUpdate(float time)
     spot->intensity = 14.0f;
     spot->range = 12.0f;
 
-    // Dim bluish moonlight from the back left
-    RblLight *moon = &showcaseLights[LIGHT_COUNT + 1];
+    // Bluish moonlight from the back left: bright enough that the cards' shadows read on the floor
+    RblLight *moon = &showcaseLights[MOON_LIGHT];
     moon->type = RBL_LIGHT_DIRECTIONAL;
     moon->direction = (Vector3){ 0.5f, -0.8f, 0.6f };
     moon->color = (Color){ 150, 170, 255, 255 };
-    moon->intensity = 0.12f;
+    moon->intensity = 0.8f;
 
     // The same lights and ambient for both shader variants (before ShowcaseInit compiled them: skipped)
     if (!RblIsLitShaderValid(cardLit) || !RblIsLitShaderValid(floorLit)) return;
@@ -487,12 +515,43 @@ static void ShowcaseUpdate(float time)
     RblSetHemisphereAmbient(&floorLit, sky, ground, up);
 }
 
+static void ShowcaseDrawShadows(void)
+{
+    if (!RblIsShadowMapValid(moonShadow)) return;
+
+    // The moon's map is orthographic over a sphere fixed around the scene, not one that follows the
+    // camera (RblShadowFocusFromCamera): the scene is small and the camera orbits it, so every texel
+    // stays on the cards and their shadows, and the shadows never shift as the camera moves
+    const Vector3 focus = { 0.0f, 0.5f, 0.0f };
+    if (RblBeginShadowMap(&moonShadow, showcaseLights, MOON_LIGHT, focus, SHADOW_FOCUS_RADIUS))
+    {
+        // The same batch and material as the colour pass: the library draws them with its caster
+        // shader. The floor is left out (nothing lies below it) and so are the unlit light spheres
+        DrawCards();
+        RblEndShadowMap(&moonShadow);
+
+        // Receivers: the map's matrix and depth texture, once per frame for each lit shader; the cards
+        // receive too, so the flat card shows the shadows of the cards standing behind it
+        RblSetShadows(&floorLit, &moonShadow, 1);
+        RblSetShadows(&cardLit, &moonShadow, 1);
+    }
+}
+
 static void ShowcaseDraw(void)
 {
     // Floor (a raylib Model lit by the same lights)
     DrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
 
-    // Cards: one batch, one material, two facing modes
+    DrawCards();
+
+    // Lights, unlit
+    for (int i = 0; i < LIGHT_COUNT; i++) DrawSphereEx(showcaseLights[i].position, 0.07f, 8, 12, showcaseLights[i].color);
+}
+
+static void DrawCards(void)
+{
+    // Cards: one batch, one material, two facing modes. The AXIS cards turn toward the camera in the
+    // shadow pass too (the camera given to RblBeginBatch), so each shadow has the card's seen shape
     RblBeginBatch(&showcaseBatch, showcaseCamera);
 
     for (int i = 0; i < 5; i++)
@@ -520,9 +579,6 @@ static void ShowcaseDraw(void)
     RblBatchAdd(&showcaseBatch, cardMaterial, &flatCard);
 
     RblEndBatch(&showcaseBatch);
-
-    // Lights, unlit
-    for (int i = 0; i < LIGHT_COUNT; i++) DrawSphereEx(showcaseLights[i].position, 0.07f, 8, 12, showcaseLights[i].color);
 }
 
 static void ShowcaseUnload(void)
@@ -542,6 +598,8 @@ static void ShowcaseUnload(void)
         if ((texture.id != 0) && (texture.id != rlGetTextureIdDefault())) UnloadTexture(texture);
     }
     MemFree(cardMaterial.maps);
+
+    RblUnloadShadowMap(&moonShadow);                // Depth target; releases the caster shaders
 
     RblUnloadLitShader(cardLit);
     RblUnloadLitShader(floorLit);

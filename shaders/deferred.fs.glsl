@@ -130,7 +130,15 @@ void main()
 #ifdef RBL_COUNT_LIGHTS
     finalColor = vec4(1.0);
 #else
-    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, int(volumeFalloff.w + 0.5) - 1), 1.0);
+#if RBL_SHADOWS > 0
+    int map = int(volumeFalloff.w + 0.5) - 1;
+    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);
+    float NdotL = dot(s.normal, l);
+    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;
+#else
+    float shadow = 1.0;
+#endif
+    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);
 #endif
 #endif
 #endif

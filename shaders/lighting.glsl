@@ -237,17 +237,22 @@ float rblShadow(int k, vec3 position, vec3 n, float NdotL)
     return 1.0;
 }
 
-// Shadow map of light slot i (-1 = unshadowed)
-int rblShadowOf(int i)
+// Light that map k shadows, at this point: the map's lookup, or 1 (unlit side, or no such light). Done
+// once per map before the light loop, not per light slot (CPU rasterisers run every branch of a loop)
+float rblShadowOfMap(int k, RblShadingPoint s, int light)
 {
-    return (i == rblShadowLight.x)? 0 : ((i == rblShadowLight.y)? 1 : ((i == rblShadowLight.z)? 2 : ((i == rblShadowLight.w)? 3 : -1)));
+    if ((light < 0) || (light >= rblLightCount)) return 1.0;
+    vec4 p = rblLightPosition[light];
+    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);
+    float NdotL = dot(s.normal, l);
+    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;
 }
 #endif
 
 // One light at a surface point seen along v: p position (w 0: directional), c colour (a: 1/range),
 // spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square),
-// shadow map index (-1 = none)
-vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, int shadow)
+// shadow the fraction its shadow map lets through (1 = unshadowed)
+vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, float shadow)
 {
 #ifdef RBL_LIGHT_DIRECTIONAL
     vec3 toLight = p.xyz - s.position*p.w;
@@ -270,9 +275,7 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, 
     float t = clamp(dot(-l, spot.xyz) + spot.w, 0.0, 1.0);
     attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone
 #endif
-#if RBL_SHADOWS > 0
-    if ((shadow >= 0) && (attenuation > 0.0)) attenuation *= rblShadow(shadow, s.position, s.normal, NdotL);
-#endif
+    attenuation *= shadow;
     return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
 }
 
@@ -282,6 +285,19 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
     vec3 sum = vec3(0.0);
 #if RBL_LIGHTS > 0
     vec3 v = rblSafeNormalize(eye - s.position, s.normal);
+#if RBL_SHADOWS > 0
+    vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows
+    shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);
+#if RBL_SHADOWS > 1
+    shadowed.y = rblShadowOfMap(1, s, rblShadowLight.y);
+#endif
+#if RBL_SHADOWS > 2
+    shadowed.z = rblShadowOfMap(2, s, rblShadowLight.z);
+#endif
+#if RBL_SHADOWS > 3
+    shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);
+#endif
+#endif
     for (int i = 0; i < RBL_LIGHTS; i++)
     {
         if (i >= rblLightCount) break;
@@ -296,9 +312,10 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
         vec3 k = vec3(0.0, 0.0, 1.0);
 #endif
 #if RBL_SHADOWS > 0
-        int shadow = rblShadowOf(i);
+        float shadow = (i == rblShadowLight.x)? shadowed.x : ((i == rblShadowLight.y)? shadowed.y :
+                       ((i == rblShadowLight.z)? shadowed.z : ((i == rblShadowLight.w)? shadowed.w : 1.0)));
 #else
-        int shadow = -1;
+        float shadow = 1.0;
 #endif
         sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);
     }

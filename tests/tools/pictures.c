@@ -1,6 +1,7 @@
 // Renders the README's pictures headlessly: one small image per facing mode (same scene, same
-// camera, only the mode changes) and one of the lighting models (raylib sphere Models next to
-// round-normal billboards, Blinn-Phong and GGX) into examples/resources/. Run by `make pictures`.
+// camera, only the mode changes), one of the lighting models (raylib sphere Models next to
+// round-normal billboards, Blinn-Phong and GGX) and one of shadows (cut-out sprites and a Model
+// under a directional and a spot light) into examples/resources/. Run by `make pictures`.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "harness.h"
@@ -119,6 +120,140 @@ static bool lightingPicture(const char *dir)
     return ok;
 }
 
+// A leafy tree sprite: a trunk and overlapping leaf clusters, with gaps and a few holes punched
+// through the canopy (transparent: the shadow must show them)
+static Image treeImage(void)
+{
+    const int w = 128, h = 192;
+    Image img = GenImageColor(w, h, BLANK);
+    ImageDrawRectangle(&img, 57, 110, 14, 82, (Color){ 112, 78, 50, 255 });          // trunk
+    ImageDrawTriangle(&img, (Vector2){ 64, 150 }, (Vector2){ 64, 132 }, (Vector2){ 34, 118 }, (Color){ 112, 78, 50, 255 });   // branch
+    const int leaves[][3] = { { 64, 40, 30 }, { 34, 62, 24 }, { 94, 62, 24 }, { 46, 96, 22 }, { 84, 98, 24 }, { 64, 72, 26 },
+                              { 24, 100, 14 }, { 106, 92, 14 }, { 40, 30, 16 }, { 90, 28, 16 } };
+    const Color greens[3] = { { 58, 128, 52, 255 }, { 76, 150, 60, 255 }, { 46, 110, 48, 255 } };
+    for (int i = 0; i < (int)(sizeof(leaves)/sizeof(leaves[0])); i++) ImageDrawCircle(&img, leaves[i][0], leaves[i][1], leaves[i][2], greens[i%3]);
+    const int holes[][3] = { { 56, 58, 7 }, { 80, 80, 8 }, { 40, 84, 6 }, { 70, 30, 5 }, { 96, 60, 5 } };
+    for (int i = 0; i < (int)(sizeof(holes)/sizeof(holes[0])); i++) ImageDrawCircle(&img, holes[i][0], holes[i][1], holes[i][2], BLANK);
+    return img;
+}
+
+// A hoop on a post: an opaque ring around a transparent hole
+static Image hoopImage(void)
+{
+    Image img = GenImageColor(128, 256, BLANK);
+    ImageDrawRectangle(&img, 58, 100, 12, 156, (Color){ 150, 150, 160, 255 });       // post
+    ImageDrawCircle(&img, 64, 60, 56, (Color){ 220, 90, 50, 255 });
+    ImageDrawCircle(&img, 64, 60, 44, (Color){ 245, 200, 80, 255 });
+    ImageDrawCircle(&img, 64, 60, 34, BLANK);                                          // the hole
+    return img;
+}
+
+// Shadows: a sun (directional, orthographic map over a fixed focus sphere) and a spot light (its own
+// perspective map) cast a hoop sprite with a hole (FIXED facing), a leafy tree (AXIS facing, cut-out
+// leaves) and a raylib cube Model onto a lit floor Model; the casters are drawn into each map with
+// the same calls and materials as the colour pass
+static bool shadowsPicture(const char *dir)
+{
+    const int w = 640, h = 360;
+    Image ti = treeImage(), hi = hoopImage();
+    Image fi = GenImageChecked(256, 256, 32, 32, (Color){ 196, 190, 178, 255 }, (Color){ 172, 166, 154, 255 });
+    Texture2D tree = LoadTextureFromImage(ti), hoop = LoadTextureFromImage(hi), floorTexture = LoadTextureFromImage(fi);
+    UnloadImage(ti); UnloadImage(hi); UnloadImage(fi);
+    SetTextureFilter(tree, TEXTURE_FILTER_BILINEAR);
+    SetTextureFilter(hoop, TEXTURE_FILTER_BILINEAR);
+    GenTextureMipmaps(&floorTexture);
+    SetTextureFilter(floorTexture, TEXTURE_FILTER_TRILINEAR);
+
+    RblLight lights[2];
+    memset(lights, 0, sizeof(lights));
+    lights[0].type = RBL_LIGHT_DIRECTIONAL; lights[0].direction = (Vector3){ 0.75f, -0.72f, -0.5f };
+    lights[0].color = (Color){ 255, 226, 180, 255 }; lights[0].intensity = 0.75f;
+    lights[1].type = RBL_LIGHT_SPOT; lights[1].position = (Vector3){ 3.0f, 4.2f, 2.6f }; lights[1].direction = (Vector3){ -3.0f, -4.2f, -3.2f };
+    lights[1].innerAngle = 26.0f; lights[1].outerAngle = 38.0f; lights[1].color = (Color){ 110, 160, 255, 255 }; lights[1].intensity = 60.0f; lights[1].range = 16.0f;
+
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 2;
+    d.lightFeatures = RblLightFeatures(lights, 2);
+    d.brdf = RBL_BRDF_BLINN_PHONG;
+    d.specular = 0.2f;
+    d.tonemap = RBL_TONEMAP_ACES;
+    d.shadowMaps = 2;                                   // every receiver samples both maps
+    RblLitShader lit = RblLoadLitShader(d);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 2048;
+    RblShadowMap maps[2] = { RblLoadShadowMap(sd), RblLoadShadowMap(sd) };
+    if (!RblIsLitShaderValid(lit) || !RblIsShadowMapValid(maps[0]) || !RblIsShadowMapValid(maps[1])) { printf("pictures: shadows unavailable\n"); return false; }
+    RblSetLights(&lit, lights, 2, (Color){ 44, 48, 60, 255 });
+
+    Material treeMat = LoadMaterialDefault(), hoopMat = LoadMaterialDefault();
+    treeMat.shader = hoopMat.shader = lit.shader;
+    treeMat.maps[MATERIAL_MAP_ALBEDO].texture = tree;
+    hoopMat.maps[MATERIAL_MAP_ALBEDO].texture = hoop;
+    Model ground = LoadModelFromMesh(GenMeshPlane(14.0f, 14.0f, 1, 1));
+    ground.materials[0].shader = lit.shader;
+    ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    Model cube = LoadModelFromMesh(GenMeshCube(0.9f, 0.9f, 0.9f));
+    cube.materials[0].shader = lit.shader;
+    cube.materials[0].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 70, 130, 200, 255 };
+    const float turn = 35.0f*DEG2RAD;                   // turned about +Y (raymath's MatrixRotateY)
+    cube.transform.m0 = cosf(turn); cube.transform.m2 = -sinf(turn); cube.transform.m8 = sinf(turn); cube.transform.m10 = cosf(turn);
+    const Vector3 cubeAt = { 2.3f, 0.45f, 0.5f };
+
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.3f, 3.5f, 5.8f };
+    cam.target = (Vector3){ 0.0f, 0.6f, -1.1f };
+    cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 44.0f;
+    cam.projection = CAMERA_PERSPECTIVE;
+
+    RblBillboard sprites[2];
+    memset(sprites, 0, sizeof(sprites));
+    sprites[0].position = (Vector3){ -2.6f, 0.0f, -0.9f }; sprites[0].size = (Vector2){ 1.7f, 2.55f }; sprites[0].origin = (Vector2){ 0.85f, 0.0f };
+    sprites[0].facing = RBL_FACING_AXIS;                // turns about +Y toward the camera
+    sprites[1].position = (Vector3){ 0.0f, 0.0f, 0.2f }; sprites[1].size = (Vector2){ 1.0f, 2.0f }; sprites[1].origin = (Vector2){ 0.5f, 0.0f };
+    sprites[1].facing = RBL_FACING_FIXED; sprites[1].axis = (Vector3){ -0.25f, 0.0f, 0.97f };  // toward the viewer, so both lights see it at an angle
+    const Material *spriteMat[2] = { &treeMat, &hoopMat };
+
+    // Shadow passes (outside BeginTextureMode: they bind their own framebuffer): the sun over a fixed
+    // sphere around the scene, the spot over its cone out to its range
+    for (int k = 0; k < 2; k++)
+    {
+        if (!RblBeginShadowMap(&maps[k], lights, k, (Vector3){ 0.0f, 0.8f, 0.0f }, 4.5f)) continue;
+        for (int i = 0; i < 2; i++) RblDrawBillboard(cam, *spriteMat[i], sprites[i]);
+        RblDrawModelShadow(cube, cubeAt, 1.0f, WHITE);
+        RblEndShadowMap(&maps[k]);
+    }
+    bool ok = RblSetShadows(&lit, maps, 2);
+
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 24, 26, 32, 255 });
+    BeginMode3D(cam);
+    DrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    DrawModel(cube, cubeAt, 1.0f, WHITE);
+    for (int i = 0; i < 2; i++) RblDrawBillboard(cam, *spriteMat[i], sprites[i]);
+    EndMode3D();
+    DrawText("Shadows: warm sun (directional) + blue spot, one map each: the sun's shadows look blue, the spot's warm", 8, 6, 10, RAYWHITE);
+    DrawText("leafy tree (AXIS, cut-out) | hoop with a hole (FIXED) | cube Model", 8, h - 16, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_shadows.png", dir);
+    ok = ok && ExportImage(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    for (int k = 0; k < 2; k++) RblUnloadShadowMap(&maps[k]);
+    MemFree(treeMat.maps); MemFree(hoopMat.maps);
+    UnloadModel(ground); UnloadModel(cube);             // meshes and material maps, not the shader or textures
+    RblUnloadLitShader(lit);
+    UnloadTexture(tree); UnloadTexture(hoop); UnloadTexture(floorTexture);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = (argc > 1)? argv[1] : "examples/resources";
@@ -189,6 +324,7 @@ int main(int argc, char **argv)
     RblUnloadBatch(&batch);
     UnloadRenderTexture(rt);
     if (!lightingPicture(dir)) return 1;
+    if (!shadowsPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(lit);

@@ -25,6 +25,7 @@ static double NowMs(void)
 static void RenderFrame(RenderTexture2D target, int frame)
 {
     ShowcaseUpdate((float)frame/60.0f);
+    ShowcaseDrawShadows();                      // Shadow passes bind their own framebuffer: outside BeginTextureMode
     BeginTextureMode(target);
         ClearBackground(showcaseBackground);
         BeginMode3D(showcaseCamera);
