@@ -392,6 +392,16 @@ typedef struct RblBatchRun {
     int count;                      // Billboards in the run
 } RblBatchRun;
 
+// A billboard's facing frame before its rotation, kept by a batch for the next billboard with the
+// same facing and up (CAMERA_PLANE: the frame depends on nothing else). Internal state.
+typedef struct RblFrameCache {
+    Vector3 key;                    // RblBillboard.up the frame was made for
+    Vector3 right, up, normal;      // Unit frame
+    Vector3 normalXRight, normalXUp; // Rotation helpers: normal x right, normal x up
+    float upLength;                 // |caller up| (CAMERA_PLANE scales the height by it, as raylib)
+    int facing;                     // Facing it was made for; -1 = empty
+} RblFrameCache;
+
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 typedef struct RblBatch {
     RblVertex *vertices;            // 4 per billboard
@@ -405,6 +415,7 @@ typedef struct RblBatch {
     unsigned int vboId;             // Vertex buffer
     unsigned int eboId;             // Index buffer (quads share 16-bit indices in chunks)
     RblView view;                   // Frame of the current camera
+    RblFrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
 } RblBatch;
@@ -431,7 +442,7 @@ typedef struct RblInstancedDesc {
 
 // GPU instance buffer plus a staging copy (validated) and the instanced uniforms of the last shader
 typedef struct RblInstanceBuffer {
-    RblInstance *staging;           // Validated copy of the caller's instances
+    RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
     int capacity;                   // Instances reserved
     unsigned int vaoId;             // Vertex array (instance attributes only)
     unsigned int vboId;             // Instance buffer
@@ -807,6 +818,10 @@ RBLAPI bool RblSetShadows(RblLitShader *shader, const RblShadowMap *maps, int co
 
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
+
+// The billboard validation reads position .. source and up .. roundness as runs of floats
+typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(Rectangle) - offsetof(RblBillboard, position) == 12*sizeof(float)) &&
+                                      (offsetof(RblBillboard, roundness) + sizeof(float) - offsetof(RblBillboard, up) == 7*sizeof(float)))? 1 : -1];
 
 //----------------------------------------------------------------------------------
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
@@ -1816,6 +1831,19 @@ static const struct { const char *file; const char *const *source; } rbl__shader
 static inline Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
 static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
 static inline bool rbl__finite3(Vector3 v) { return rbl__finite(v.x) && rbl__finite(v.y) && rbl__finite(v.z); }
+// None of n floats stored from f on is NaN or Inf: one OR over the exponent fields, where an all-ones
+// exponent carries into the sign bit. Branch-free (the per-billboard checks were a chain of branches).
+static inline bool rbl__allFinite(const void *f, int n)
+{
+    unsigned int carry = 0;
+    for (int i = 0; i < n; i++)
+    {
+        unsigned int u;
+        memcpy(&u, (const unsigned char *)f + (size_t)i*sizeof(u), sizeof(u));
+        carry |= (u & 0x7f800000u) + 0x00800000u;
+    }
+    return (carry & 0x80000000u) == 0;
+}
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
 static inline float rbl__dot(Vector3 a, Vector3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
 static inline Vector3 rbl__sub(Vector3 a, Vector3 b) { return rbl__v3(a.x - b.x, a.y - b.y, a.z - b.z); }
@@ -1929,6 +1957,28 @@ RblView RblGetView(Camera3D camera)
     return view;
 }
 
+// sin and cos of an angle in degrees. The reduction to [-45, 45] is exact in degrees (multiples of 90
+// come out exact: cos 90 = 0, where cosf(90*DEG2RAD) = -4.4e-8), then Taylor polynomials to x^9 / x^10
+// (truncation < 2e-9 at pi/4): within 2 ulp of sinf/cosf and about 4x cheaper than sincosf here.
+static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
+{
+    if (fabsf(degrees) > 360.0f*1024.0f) degrees = fmodf(degrees, 360.0f);     // fmodf is exact
+    int q = (int)(degrees*(1.0f/90.0f) + copysignf(0.5f, degrees));           // nearest quadrant
+    float x = (degrees - (float)q*90.0f)*(PI/180.0f);  // exact subtraction for |degrees| <= 368640
+    float x2 = x*x;
+    float sn = x + x*x2*(-1.6666654611e-1f + x2*(8.3321608736e-3f + x2*(-1.9515295891e-4f)));
+    float cs = 1.0f - 0.5f*x2 + x2*x2*(4.166664568298827e-2f + x2*(-1.388731625493765e-3f + x2*2.443315711809948e-5f));
+    // Quadrant q: (sin, cos) = (sn, cs), (cs, -sn), (-sn, -cs), (-cs, sn), chosen without branches
+    // (random rotations mispredict a switch)
+    unsigned int us, uc, swap = 0u - (unsigned int)(q & 1);
+    memcpy(&us, &sn, sizeof(us));
+    memcpy(&uc, &cs, sizeof(uc));
+    unsigned int rs = ((us & ~swap) | (uc & swap)) ^ ((unsigned int)(q & 2) << 30);
+    unsigned int rc = ((uc & ~swap) | (us & swap)) ^ ((unsigned int)((q + 1) & 2) << 30);
+    memcpy(sinOut, &rs, sizeof(rs));
+    memcpy(cosOut, &rc, sizeof(rc));
+}
+
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal
 static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
 {
@@ -1999,37 +2049,52 @@ static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3
     *right = r; *up = u; *normal = n;
 }
 
-bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+// The facing frame of b, from the cache when it holds b's (CAMERA_PLANE: same up), else made and kept.
+// Made exactly as rbl__facingBasis(); a caller up is normalised here and its length kept (raylib
+// scales the quad's height by it).
+static void rbl__facingFrame(const RblView *view, const RblBillboard *b, RblFrameCache *cache)
 {
-    if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
-    if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
-    if (!rbl__finite3(b->position) || !rbl__finite(b->size.x) || !rbl__finite(b->size.y) ||
-        !rbl__finite(b->origin.x) || !rbl__finite(b->origin.y) || !rbl__finite(b->rotation) ||
-        !rbl__finite(b->source.x) || !rbl__finite(b->source.y) || !rbl__finite(b->source.width) ||
-        !rbl__finite(b->source.height) || !rbl__finite3(b->up) || !rbl__finite3(b->axis) ||
-        !rbl__finite(b->roundness)) return false;
-    if ((b->facing < RBL_FACING_CAMERA_PLANE) || (b->facing > RBL_FACING_FIXED)) return false;
-
+    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) &&
+        (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
     Vector3 R, U, N;
     rbl__facingBasis(view, b, &R, &U, &N);
-
-    // Rotate the basis around the normal (raylib rotates the corners; same result, fewer ops)
-    if (b->rotation != 0.0f)
-    {
-        float a = b->rotation*(PI/180.0f), c = cosf(a), s = sinf(a);
-        Vector3 nr = rbl__cross(N, R), nu = rbl__cross(N, U);
-        R = rbl__v3(R.x*c + nr.x*s, R.y*c + nr.y*s, R.z*c + nr.z*s);
-        U = rbl__v3(U.x*c + nu.x*s, U.y*c + nu.y*s, U.z*c + nu.z*s);
-    }
-
-    // Footprint: |size| with the pivot measured from the bottom-left, whatever the flips. R is unit;
-    // U too, except CAMERA_PLANE with a caller up, which raylib scales as given (not normalised).
     float ulen = 1.0f;
     if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
     {
         ulen = sqrtf(rbl__len2(U));
         if (ulen > 0.0f) U = rbl__v3(U.x/ulen, U.y/ulen, U.z/ulen);
     }
+    cache->key = b->up;
+    cache->right = R; cache->up = U; cache->normal = N;
+    cache->normalXRight = rbl__cross(N, R);
+    cache->normalXUp = rbl__cross(N, U);
+    cache->upLength = ulen;
+    cache->facing = b->facing;
+}
+
+static bool rbl__billboardVertices(const RblView *view, RblFrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+{
+    if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
+    // position .. source and up .. roundness are runs of floats (checked at compile time)
+    if (!rbl__allFinite(&b->position, 12) || !rbl__allFinite(&b->up, 7)) return false;
+    if ((b->facing < RBL_FACING_CAMERA_PLANE) || (b->facing > RBL_FACING_FIXED)) return false;
+
+    rbl__facingFrame(view, b, cache);
+    Vector3 R = cache->right, U = cache->up, N = cache->normal;
+
+    // Rotate the frame around the normal (raylib rotates the corners; same result, fewer ops)
+    if (b->rotation != 0.0f)
+    {
+        float s, c;
+        rbl__sinCosDeg(b->rotation, &s, &c);
+        Vector3 nr = cache->normalXRight, nu = cache->normalXUp;
+        R = rbl__v3(R.x*c + nr.x*s, R.y*c + nr.y*s, R.z*c + nr.z*s);
+        U = rbl__v3(U.x*c + nu.x*s, U.y*c + nu.y*s, U.z*c + nu.z*s);
+    }
+
+    // Footprint: |size| with the pivot measured from the bottom-left, whatever the flips. R and U are
+    // unit; CAMERA_PLANE with a caller up scales the height by |up|, as raylib does.
+    float ulen = cache->upLength;
     float sx = fabsf(b->size.x), sy = fabsf(b->size.y);
     float x0 = -b->origin.x, x1 = sx - b->origin.x;
     float y0 = -b->origin.y, y1 = sy*ulen - b->origin.y;
@@ -2040,7 +2105,7 @@ bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeig
     p[2] = rbl__v3(P.x + R.x*x1 + U.x*y1, P.y + R.y*x1 + U.y*y1, P.z + R.z*x1 + U.z*y1);
     p[3] = rbl__v3(P.x + R.x*x0 + U.x*y1, P.y + R.y*x0 + U.y*y1, P.z + R.z*x0 + U.z*y1);
     // Huge sizes overflowing float: skip, never write Inf (the output stays untouched)
-    if (!rbl__finite3(p[0]) || !rbl__finite3(p[1]) || !rbl__finite3(p[2]) || !rbl__finite3(p[3])) return false;
+    if (!rbl__allFinite(p, 12)) return false;
 
     // Source frame (zero = whole texture); flips mirror inside it. As raylib's DrawTexturePro, a
     // negative extent flips and the rectangle still starts at (x, y).
@@ -2109,6 +2174,14 @@ bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeig
         memcpy(v->color, col, 4);
     }
     return true;
+}
+
+bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+{
+    if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
+    RblFrameCache cache;
+    cache.facing = -1;
+    return rbl__billboardVertices(view, &cache, textureWidth, textureHeight, b, out);
 }
 
 //----------------------------------------------------------------------------------
@@ -2202,6 +2275,7 @@ void RblBeginBatch(RblBatch *batch, Camera3D camera)
     if (batch == NULL) return;
     batch->view = RblGetView(camera);
     if (rbl__shadowPass != NULL) rbl__shadowPassView(&batch->view);
+    batch->frame.facing = -1;      // the frame depends on the view
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
@@ -2242,7 +2316,7 @@ bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboa
         texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
         texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
     }
-    if (!RblBillboardVertices(&batch->view, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    if ((billboard == NULL) || !rbl__billboardVertices(&batch->view, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: batch: billboard skipped (NaN/Inf input, bad facing or texture size %ix%i); further skips this batch are not logged", texW, texH);
         return false;
@@ -2268,8 +2342,9 @@ bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboa
     return true;
 }
 
-// Bind the material the way raylib's DrawMesh does (same uniform names and texture slots)
-static void rbl__bindMaterial(const Material *material)
+// Bind the material the way raylib's DrawMesh does (same uniform names and texture slots); returns
+// the texture slots bound (bit i = slot i) for rbl__unbindMaterial
+static unsigned int rbl__bindMaterial(const Material *material)
 {
     Shader sh = material->shader;
     rlEnableShader(sh.id);
@@ -2283,7 +2358,7 @@ static void rbl__bindMaterial(const Material *material)
     if (material->maps == NULL)
     {
         rlActiveTextureSlot(0); rlEnableTexture(rlGetTextureIdDefault());
-        return;
+        return 1u;
     }
     if (sh.locs[SHADER_LOC_COLOR_DIFFUSE] != -1)
     {
@@ -2294,6 +2369,7 @@ static void rbl__bindMaterial(const Material *material)
     // Slots 0..5 (albedo .. emission), as raylib's DrawMesh: only maps the shader samples are bound.
     // Sampler uniforms are set on every draw: a cache keyed by shader id would go stale when GL
     // reuses the id of an unloaded program.
+    unsigned int bound = 0;
     for (int i = MATERIAL_MAP_ALBEDO; i <= MATERIAL_MAP_EMISSION; i++)
     {
         int loc = sh.locs[SHADER_LOC_MAP_DIFFUSE + i];
@@ -2303,12 +2379,19 @@ static void rbl__bindMaterial(const Material *material)
         rlActiveTextureSlot(i);
         rlEnableTexture(id);
         rlSetUniform(loc, &i, SHADER_UNIFORM_INT, 1);
+        bound |= 1u << i;
     }
+    return bound;
 }
 
-static void rbl__unbindMaterial(void)
+// Unbind the slots rbl__bindMaterial bound (each GL call costs ~0.1 us; a small batch feels 12 of
+// them), leaving slot 0 active as raylib expects
+static void rbl__unbindMaterial(unsigned int bound)
 {
-    for (int i = MATERIAL_MAP_EMISSION; i >= MATERIAL_MAP_ALBEDO; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
+    for (int i = MATERIAL_MAP_EMISSION; i > MATERIAL_MAP_ALBEDO; i--)
+        if (bound & (1u << i)) { rlActiveTextureSlot(i); rlDisableTexture(); }
+    rlActiveTextureSlot(0);
+    if (bound & 1u) rlDisableTexture();
     rlDisableShader();
 }
 
@@ -2343,12 +2426,13 @@ void RblEndBatch(RblBatch *batch)
     rlEnableVertexArray(batch->vaoId);
     rlUpdateVertexBuffer(batch->vboId, batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
+    unsigned int bound = 0;
     for (int r = 0; r < batch->runCount; r++)
     {
         const RblBatchRun *run = &batch->runs[r];
         MaterialMap casterMaps[RBL__CASTER_MAPS];
         Material material = (rbl__shadowPass != NULL)? rbl__casterMaterial(run->material, casterMaps, false) : run->material;
-        rbl__bindMaterial(&material);
+        bound |= rbl__bindMaterial(&material);
         for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
         {
             int n = run->count - q;
@@ -2357,7 +2441,7 @@ void RblEndBatch(RblBatch *batch)
             rlDrawVertexArrayElements(0, n*6, 0);
         }
     }
-    rbl__unbindMaterial();
+    rbl__unbindMaterial(bound);
     rlDisableVertexArray();
 }
 
@@ -2385,8 +2469,9 @@ void RblClose(void)
 //----------------------------------------------------------------------------------
 // Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
 #define RBL__INSTANCE_LOCATION 10
-// Coordinates beyond this could overflow float once the GPU combines them: rejected like NaN
-#define RBL__INSTANCE_MAX_COORD 1e36f
+// Values of 2^120 (1.3e36) or more could overflow float once the GPU combines them: rejected like
+// NaN. Adding this to a float's exponent field carries into the sign bit exactly for those.
+#define RBL__INSTANCE_LIMIT_CARRY ((255u - 247u + 1u) << 23)
 
 static void rbl__loadInstanceGpu(RblInstanceBuffer *buffer)
 {
@@ -2436,12 +2521,17 @@ void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
     memset(buffer, 0, sizeof(*buffer));
 }
 
-static bool rbl__instanceOk(const RblInstance *in)
+// The 12 floats (position .. source) hold no NaN, Inf or |value| >= 2^120: one OR of exponent carries
+static inline bool rbl__instanceOk(const RblInstance *in)
 {
-    // One bound test per float rejects NaN, Inf and magnitudes that could overflow on the GPU
-    const float *f = &in->position.x;
-    for (int i = 0; i < 12; i++) if (!(fabsf(f[i]) <= RBL__INSTANCE_MAX_COORD)) return false;
-    return true;
+    unsigned int carry = 0;
+    for (int i = 0; i < 12; i++)
+    {
+        unsigned int u;
+        memcpy(&u, (const unsigned char *)in + offsetof(RblInstance, position) + (size_t)i*sizeof(u), sizeof(u));
+        carry |= (u & 0x7f800000u) + RBL__INSTANCE_LIMIT_CARRY;
+    }
+    return (carry & 0x80000000u) == 0;
 }
 
 int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
@@ -2468,15 +2558,24 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
         rbl__loadInstanceGpu(buffer);
     }
 
-    // The small per-instance copy: validate while copying, so no NaN reaches the GPU buffer
+    // Validate in place, so no NaN reaches the GPU buffer: a clean set is uploaded straight from the
+    // caller's array (the per-instance CPU cost is this read), one with bad instances is compacted
+    // into the staging copy first
     int n = 0;
+    while ((n < count) && rbl__instanceOk(&instances[n])) n++;
+    const RblInstance *upload = instances;
     buffer->skipped = 0;
-    for (int i = 0; i < count; i++)
+    if (n < count)
     {
-        if (rbl__instanceOk(&instances[i])) buffer->staging[n++] = instances[i];
-        else buffer->skipped++;
+        memcpy(buffer->staging, instances, (size_t)n*sizeof(RblInstance));
+        for (int i = n; i < count; i++)
+        {
+            if (rbl__instanceOk(&instances[i])) buffer->staging[n++] = instances[i];
+            else buffer->skipped++;
+        }
+        upload = buffer->staging;
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36)", buffer->skipped);
     }
-    if (buffer->skipped > 0) TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| > 1e36)", buffer->skipped);
     if (n == 0) return 0;
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
@@ -2513,14 +2612,14 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
         desc.axis.x, desc.axis.y, desc.axis.z, 0.0f,
         view.light.x, view.light.y, view.light.z, view.light.w };
     rlDrawRenderBatchActive();
-    rbl__bindMaterial(&material);
+    unsigned int bound = rbl__bindMaterial(&material);
     rlSetUniform(buffer->loc, frame, SHADER_UNIFORM_VEC4, 7);
 
     rlEnableVertexArray(buffer->vaoId);
-    rlUpdateVertexBuffer(buffer->vboId, buffer->staging, n*(int)sizeof(RblInstance), 0);
+    rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
     rlDrawVertexArrayInstanced(0, 6, n);
     rlDisableVertexArray();
-    rbl__unbindMaterial();
+    rbl__unbindMaterial(bound);
     return n;
 }
 

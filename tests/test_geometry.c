@@ -364,3 +364,95 @@ static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
     RblVertex q[4];
     RT_CHECK(!RblBillboardVertices(&view, 8, 8, &good, q), "unknown facing must be rejected");
 }
+
+// ---- speed paths keep the exact results ---------------------------------------------------------
+// A batch reuses a billboard's facing frame for the next one with the same facing and up; the
+// result must be bit-identical to computing each billboard alone, whatever the order.
+static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboards(void)
+{
+    Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
+    RblView view = RblGetView(cam);
+    enum { COUNT = 600 };
+    // A batch without GPU buffers (no GL here): RblBatchAdd only needs the CPU side
+    RblBatch batch;
+    memset(&batch, 0, sizeof(batch));
+    batch.vertices = (RblVertex *)malloc(COUNT*4*sizeof(RblVertex));
+    batch.capacity = COUNT;
+    batch.runs = (RblBatchRun *)malloc(16*sizeof(RblBatchRun));
+    batch.runCapacity = 16;
+    RT_CHECK((batch.vertices != NULL) && (batch.runs != NULL), "out of memory");
+    if ((batch.vertices == NULL) || (batch.runs == NULL)) { free(batch.vertices); free(batch.runs); return; }
+    Material material;
+    memset(&material, 0, sizeof(material));
+
+    // Runs of repeated ups, a -0 up (a different key, the same frame), zero up, other modes between
+    const Vector3 ups[5] = { { 0, 1, 0 }, { 0.3f, 2.0f, -0.1f }, { -0.0f, 1, 0 }, { 0, 0, 0 }, { 1e-3f, 1, 0 } };
+    RblBillboard bbs[COUNT];
+    unsigned int seed = 777u;
+    for (int i = 0; i < COUNT; i++)
+    {
+        int facing = ((i/7)%5 == 4)? (int)(rtRandom(&seed)%4) : RBL_FACING_CAMERA_PLANE;
+        bbs[i] = randomBillboard(&seed, facing);
+        if (facing == RBL_FACING_CAMERA_PLANE) bbs[i].up = ups[(i/3)%5];
+    }
+    RblBeginBatch(&batch, cam);
+    int mismatched = 0, skipped = 0;
+    for (int i = 0; i < COUNT; i++) if (!RblBatchAdd(&batch, material, &bbs[i])) skipped++;
+    for (int i = 0; i < COUNT; i++)
+    {
+        RblVertex alone[4];
+        RblBillboardVertices(&view, 1, 1, &bbs[i], alone);
+        if (memcmp(alone, &batch.vertices[i*4], sizeof(alone)) != 0) mismatched++;
+    }
+    RT_CHECK(skipped == 0, "%d billboards skipped", skipped);
+    RT_CHECK(mismatched == 0, "%d of %d batched billboards differ from RblBillboardVertices", mismatched, COUNT);
+    // A new view invalidates the kept frame
+    Camera3D turned = makeCamera((Vector3){ -20.0f, 2.0f, 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+    RblView turnedView = RblGetView(turned);
+    const RblBillboard *last = &bbs[COUNT - 1];   // CAMERA_PLANE: its frame is the one kept
+    RblBeginBatch(&batch, turned);
+    RblBatchAdd(&batch, material, last);
+    RblVertex alone[4];
+    RblBillboardVertices(&turnedView, 1, 1, last, alone);
+    RT_CHECK(last->facing == RBL_FACING_CAMERA_PLANE, "the last billboard should be CAMERA_PLANE");
+    RT_CHECK(memcmp(alone, batch.vertices, sizeof(alone)) == 0, "the frame kept from the previous camera was reused");
+    RblEndBatch(&batch);     // no GPU buffer: draws nothing, must not crash
+    free(batch.vertices);
+    free(batch.runs);
+}
+
+// Rotation uses a sin/cos in degrees with an exact reduction: quadrant angles are exact and every
+// angle is within 1.5e-7 of the double-precision value (sinf(deg*DEG2RAD) is off by up to 3.6e-5
+// at 37000 degrees, from rounding the product)
+static void test_geometry_rotation_sin_cos_is_exact_at_quadrants_and_within_1_5e_7(void)
+{
+    for (int k = -8; k <= 8; k++)
+    {
+        float s, c;
+        rbl__sinCosDeg(90.0f*(float)k, &s, &c);
+        int q = ((k%4) + 4)%4;
+        float es = (q == 1)? 1.0f : ((q == 3)? -1.0f : 0.0f), ec = (q == 0)? 1.0f : ((q == 2)? -1.0f : 0.0f);
+        RT_CHECK((s == es) && (c == ec), "%d degrees: sin %.9g cos %.9g", 90*k, s, c);
+    }
+    double worst = 0.0;
+    for (int i = -400000; i <= 400000; i++)
+    {
+        float d = (float)i*0.0937f;
+        float s, c;
+        rbl__sinCosDeg(d, &s, &c);
+        double r = (double)d*(3.14159265358979323846/180.0);
+        double e = fmax(fabs(s - sin(r)), fabs(c - cos(r)));
+        if (e > worst) worst = e;
+    }
+    RT_CHECK(worst <= 1.5e-7, "worst |error| %.3g over +-37480 degrees", worst);
+    printf("    sin/cos in degrees: worst |error| %.3g over +-37480 degrees\n", worst);
+    const float huge[4] = { 1e30f, -3.4e38f, 368641.0f, -1e7f };
+    for (int i = 0; i < 4; i++)
+    {
+        float s, c;
+        rbl__sinCosDeg(huge[i], &s, &c);
+        double r = fmod((double)huge[i], 360.0)*(3.14159265358979323846/180.0);
+        RT_CHECK(rtFinite(s) && rtFinite(c) && (fabs(s - sin(r)) < 1e-6) && (fabs(c - cos(r)) < 1e-6),
+                 "%g degrees: sin %.9g cos %.9g", huge[i], s, c);
+    }
+}

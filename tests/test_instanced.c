@@ -317,3 +317,32 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
     UnloadTexture(albedo); UnloadTexture(nmap);
     MemFree(m.maps);
 }
+
+// The instance check rejects exactly NaN, Inf and |value| >= 2^120 in each of the 12 float fields
+// (values the GPU could overflow when it combines them), and nothing in the tint or flags
+static void test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float_field(void)
+{
+    const float below = nextafterf(ldexpf(1.0f, 120), 0.0f), limit = ldexpf(1.0f, 120);
+    const float rejected[4] = { limit, -limit, NAN, -INFINITY };
+    const float accepted[4] = { below, -below, 1e-45f /* denormal */, -0.0f };
+    int wrong = 0;
+    for (int f = 0; f < 12; f++)
+    {
+        for (int k = 0; k < 4; k++)
+        {
+            RblInstance in;
+            memset(&in, 0, sizeof(in));
+            memcpy((unsigned char *)&in + offsetof(RblInstance, position) + (size_t)f*sizeof(float), &rejected[k], sizeof(float));
+            if (rbl__instanceOk(&in)) wrong++;
+            memset(&in, 0, sizeof(in));
+            memcpy((unsigned char *)&in + offsetof(RblInstance, position) + (size_t)f*sizeof(float), &accepted[k], sizeof(float));
+            if (!rbl__instanceOk(&in)) wrong++;
+        }
+    }
+    RblInstance in;
+    memset(&in, 0xFF, sizeof(in));     // NaN everywhere ...
+    memset(&in, 0, offsetof(RblInstance, tint));     // ... except the floats: tint and flags are not checked
+    RT_CHECK(rbl__instanceOk(&in), "tint/flags bits were read as floats");
+    RT_CHECK(offsetof(RblInstance, tint) == 12*sizeof(float), "RblInstance floats are not the first 12 fields");
+    RT_CHECK(wrong == 0, "%d of 96 field/value probes classified wrongly", wrong);
+}
