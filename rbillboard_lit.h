@@ -266,6 +266,10 @@
 *       0.2 (2026-11-23) Shadows: directional and spot shadow maps cast by billboards (alpha-tested,
 *                        every path) and Models, received forward and deferred; RblView gained the
 *                        shadow pass's light and minimum cast angle (zero outside shadow passes).
+*       0.3 (2026-11-23) Faster CPU geometry: batches reuse a facing frame while facing and up repeat
+*                        (RblBatch gained RblFrameCache), rotation uses an exact-in-degrees sin/cos
+*                        (quadrant angles exact), instanced draws upload the caller's array directly
+*                        when every instance is valid; the instance bound is now |value| < 2^120.
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
@@ -297,9 +301,9 @@
 #include "raylib.h"
 
 #define RBILLBOARD_LIT_VERSION_MAJOR 0
-#define RBILLBOARD_LIT_VERSION_MINOR 1
+#define RBILLBOARD_LIT_VERSION_MINOR 3
 #define RBILLBOARD_LIT_VERSION_PATCH 0
-#define RBILLBOARD_LIT_VERSION "0.1.0"
+#define RBILLBOARD_LIT_VERSION "0.3.0"
 
 // Function specifiers for a shared library build on Windows (as raylib's BUILD_LIBTYPE_SHARED)
 #ifndef RBLAPI

@@ -724,9 +724,14 @@ int main(int argc, char **argv)
     for (int p = PATH_BATCHED; p < PATH_COUNT; p++)
     {
         if (worst[p] <= 0.0) continue;
-        printf("  target %-9s <= %.2fx raylib: worst %.3fx -> %s", pathNames[p], targets[p], worst[p], (worst[p] <= targets[p])? "met" : "NOT met");
-        if (worstExcl[p] > 0.0) printf("; excluding driver draw calls: worst %.3fx -> %s", worstExcl[p], (worstExcl[p] <= targets[p])? "met" : "NOT met");
-        printf("\n");
+        // The target is CPU cost. Without the driver timing, totals are all there is to judge it by.
+        if (worstExcl[p] > 0.0)
+            printf("  target %-9s <= %.2fx raylib CPU (excluding driver draw calls): worst %.3fx -> %s; totals including the\n"
+                   "    driver's draw calls (a software GL runs the GPU's vertex stage there): worst %.3fx\n",
+                   pathNames[p], targets[p], worstExcl[p], (worstExcl[p] <= targets[p])? "met" : "NOT met", worst[p]);
+        else
+            printf("  target %-9s <= %.2fx raylib CPU: worst total %.3fx -> %s (no driver timing: draw calls included)\n",
+                   pathNames[p], targets[p], worst[p], (worst[p] <= targets[p])? "met" : "NOT met");
     }
     printf("bench_geometry: done in %.1f s, rows in %s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath());
 
