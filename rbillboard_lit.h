@@ -451,6 +451,7 @@ typedef struct RblInstanceBuffer {
     unsigned int vaoId;             // Vertex array (instance attributes only)
     unsigned int vboId;             // Instance buffer
     unsigned int shaderId;          // Shader the cached location belongs to
+    unsigned int shaderGeneration;  // Programs loaded/unloaded by this header when it was cached (ids get reused)
     int loc;                        // rblInstancing uniform location (looked up once per shader)
     int skipped;                    // Instances skipped for bad input in the last draw
 } RblInstanceBuffer;
@@ -2450,6 +2451,9 @@ void RblEndBatch(RblBatch *batch)
 }
 
 static RblBatch rbl__immediate;     // zero-initialised; the immediate path's one-quad batch
+// Counts programs this header loads and unloads: GL reuses the ids of deleted programs, so a location
+// cached by program id is looked up again whenever this changed
+static unsigned int rbl__programGeneration = 0;
 
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
 {
@@ -2585,10 +2589,11 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     if (rbl__shadowPass != NULL) material = rbl__casterMaterial(material, casterMaps, true);
     Shader sh = material.shader;
-    if (sh.id != buffer->shaderId)
+    if ((sh.id != buffer->shaderId) || (buffer->shaderGeneration != rbl__programGeneration))
     {
         buffer->loc = rlGetLocationUniform(sh.id, "rblInstancing");
         buffer->shaderId = sh.id;
+        buffer->shaderGeneration = rbl__programGeneration;
     }
     if (buffer->loc == -1)
     {
@@ -3718,6 +3723,7 @@ static char *rbl__joinSource(const char *prefix, const char *const *lines)
 // NULL-terminated). raylib substitutes its default shader when compilation fails; report that.
 static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *const *fsParts, const char *defines)
 {
+    rbl__programGeneration++;
     char prefix[1024];
     snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
     char *vsFull = rbl__joinSource(prefix, vs);
@@ -3987,6 +3993,7 @@ void RblUnloadLitShader(RblLitShader shader)
         }
     }
     UnloadShader(shader.shader);
+    rbl__programGeneration++;       // its id may now be given to another program
 }
 
 // Colours are authored in sRGB like every raylib Color; lighting runs in linear light

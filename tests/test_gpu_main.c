@@ -35,6 +35,7 @@ int main(int argc, char **argv)
         RT_TEST(test_paths_instanced_hard_cases_stay_finite),
         RT_TEST(test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances),
         RT_TEST(test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float_field),
+        RT_TEST(test_paths_instanced_location_cache_survives_program_id_reuse),
         RT_TEST(test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214),
         RT_TEST(test_materials_shader_decodes_every_encoding_like_the_cpu),
         RT_TEST(test_materials_absent_maps_are_not_declared_or_sampled),

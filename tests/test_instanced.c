@@ -346,3 +346,52 @@ static void test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float
     RT_CHECK(offsetof(RblInstance, tint) == 12*sizeof(float), "RblInstance floats are not the first 12 fields");
     RT_CHECK(wrong == 0, "%d of 96 field/value probes classified wrongly", wrong);
 }
+
+// GL hands a deleted program's id to the next program: the location RblDrawInstanced keeps for a
+// program id must be looked up again once this header has loaded or unloaded a program
+static void test_paths_instanced_location_cache_survives_program_id_reuse(void)
+{
+    Camera3D cam = frontCamera();
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.instanced = true;
+    desc.maxLights = 1;
+    RblLitShader a = RblLoadLitShader(desc);
+    Material m = LoadMaterialDefault();
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+    RblInstance in;
+    memset(&in, 0, sizeof(in));
+    in.size = (Vector2){ 1.0f, 1.0f };
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    RenderTexture2D rt = LoadRenderTexture(8, 8);
+    BeginTextureMode(rt); BeginMode3D(cam);
+    m.shader = a.shader;
+    int drawnA = RblDrawInstanced(&buf, cam, m, d, &in, 1);
+    EndMode3D(); EndTextureMode();
+    unsigned int idA = a.shader.id;
+    RblUnloadLitShader(a);
+    // A different variant (more uniforms ahead of rblInstancing), likely given idA again
+    desc.maxLights = 8;
+    desc.brdf = RBL_BRDF_GGX;
+    desc.fog.mode = RBL_FOG_EXP;
+    desc.fog.density = 0.1f;
+    RblLitShader b = RblLoadLitShader(desc);
+    // Mesa does not hand idA out again at once; make the buffer look as if it had: the entry cached
+    // for A (a stale location) now names B's id
+    if (b.shader.id != idA) { buf.shaderId = b.shader.id; buf.loc = -7; }
+    BeginTextureMode(rt); BeginMode3D(cam);
+    m.shader = b.shader;
+    int drawnB = RblDrawInstanced(&buf, cam, m, d, &in, 1);
+    EndMode3D(); EndTextureMode();
+    int fresh = rlGetLocationUniform(b.shader.id, "rblInstancing");
+    printf("    program id %s reused by GL (%u -> %u); cached location %d, fresh lookup %d\n",
+           (b.shader.id == idA)? "was" : "was not (simulated)", idA, b.shader.id, buf.loc, fresh);
+    RT_CHECK((drawnA == 1) && (drawnB == 1), "drawn %d then %d", drawnA, drawnB);
+    RT_CHECK((fresh != -1) && (buf.loc == fresh), "cached rblInstancing location %d, the program's is %d", buf.loc, fresh);
+    UnloadRenderTexture(rt);
+    RblUnloadInstanceBuffer(&buf);
+    RblUnloadLitShader(b);
+    m.shader = (Shader){ 0 };
+    MemFree(m.maps);
+}
