@@ -2,72 +2,7 @@
 // Vertices are captured from the GPU with transform feedback and compared with
 // RblBillboardVertices() (which the immediate and batched paths share). Included by test_gpu_main.c.
 
-typedef unsigned int GLu;
-typedef struct {
-    GLu (*CreateShader)(GLu);
-    void (*ShaderSource)(GLu, int, const char *const *, const int *);
-    void (*CompileShader)(GLu);
-    void (*GetShaderiv)(GLu, GLu, int *);
-    void (*GetShaderInfoLog)(GLu, int, int *, char *);
-    GLu (*CreateProgram)(void);
-    void (*AttachShader)(GLu, GLu);
-    void (*TransformFeedbackVaryings)(GLu, int, const char *const *, GLu);
-    void (*LinkProgram)(GLu);
-    void (*GetProgramiv)(GLu, GLu, int *);
-    void (*GenBuffers)(int, GLu *);
-    void (*BindBuffer)(GLu, GLu);
-    void (*BufferData)(GLu, ptrdiff_t, const void *, GLu);
-    void (*BindBufferBase)(GLu, GLu, GLu);
-    void (*Enable)(GLu);
-    void (*Disable)(GLu);
-    void (*BeginTransformFeedback)(GLu);
-    void (*EndTransformFeedback)(void);
-    void (*GetBufferSubData)(GLu, ptrdiff_t, ptrdiff_t, void *);
-    void (*DeleteBuffers)(int, const GLu *);
-    void (*DeleteProgram)(GLu);
-    void (*DeleteShader)(GLu);
-} TfGl;
-
-static bool tfLoad(TfGl *gl)
-{
-    static const char *names[] = { "glCreateShader", "glShaderSource", "glCompileShader", "glGetShaderiv", "glGetShaderInfoLog",
-        "glCreateProgram", "glAttachShader", "glTransformFeedbackVaryings", "glLinkProgram", "glGetProgramiv", "glGenBuffers",
-        "glBindBuffer", "glBufferData", "glBindBufferBase", "glEnable", "glDisable", "glBeginTransformFeedback",
-        "glEndTransformFeedback", "glGetBufferSubData", "glDeleteBuffers", "glDeleteProgram", "glDeleteShader" };
-    void **slots = (void **)gl;     // TfGl is a sequence of pointers in the order of names[]
-    for (size_t i = 0; i < sizeof(names)/sizeof(names[0]); i++)
-    {
-        void *p = rtGlProc(names[i]);
-        if (p == NULL) { printf("    missing %s\n", names[i]); return false; }
-        memcpy(&slots[i], &p, sizeof(p));
-    }
-    return true;
-}
-
-#define TF_FLOATS 12    // fragPosition (3), fragTexCoord (2), fragNormal (3), fragTangent (4)
-
-// Program of the instanced vertex stage alone, capturing its outputs
-static GLu tfProgram(TfGl *gl)
-{
-    char *vs = rbl__joinSource("#version 330\n#define RBL_LIGHTS 1\n", rbl__shader_lit_instanced_vs);
-    GLu sh = gl->CreateShader(0x8B31 /* GL_VERTEX_SHADER */);
-    const char *src = vs;
-    gl->ShaderSource(sh, 1, &src, NULL);
-    gl->CompileShader(sh);
-    int ok = 0;
-    gl->GetShaderiv(sh, 0x8B81 /* GL_COMPILE_STATUS */, &ok);
-    if (!ok) { char log[1024]; gl->GetShaderInfoLog(sh, sizeof(log), NULL, log); printf("    %s\n", log); }
-    RBL_FREE(vs);
-    GLu prog = gl->CreateProgram();
-    gl->AttachShader(prog, sh);
-    const char *varyings[] = { "fragPosition", "fragTexCoord", "fragNormal", "fragTangent" };
-    gl->TransformFeedbackVaryings(prog, 4, varyings, 0x8C8C /* GL_INTERLEAVED_ATTRIBS */);
-    gl->LinkProgram(prog);
-    gl->GetProgramiv(prog, 0x8B82 /* GL_LINK_STATUS */, &ok);
-    gl->DeleteShader(sh);
-    if (!ok) { gl->DeleteProgram(prog); return 0; }
-    return prog;
-}
+#include "tf_capture.h"
 
 static RblBillboard billboardOf(const RblInstance *in, RblInstancedDesc d)
 {
@@ -77,50 +12,6 @@ static RblBillboard billboardOf(const RblInstance *in, RblInstancedDesc d)
     b.source = in->source; b.tint = in->tint; b.flags = in->flags;
     b.facing = d.facing; b.up = d.up; b.axis = d.axis; b.roundness = d.roundness;
     return b;
-}
-
-// Shadow-pass fields of the captured frame (zero: a colour pass); the shadow tests set them
-static Vector4 tfLight;
-static float tfMinCastSin;
-
-// Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
-static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
-{
-    RblView view = RblGetView(cam);
-    // A complete framebuffer must be bound even with rasterisation discarded (surfaceless has none)
-    RenderTexture2D scratch = LoadRenderTexture(4, 4);
-    BeginTextureMode(scratch);
-    rlEnableShader(prog);
-    rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
-    const float frame[28] = {
-        view.eye.x, view.eye.y, view.eye.z, (float)d.facing, view.right.x, view.right.y, view.right.z, d.roundness,
-        view.up.x, view.up.y, view.up.z, (float)texW, view.back.x, view.back.y, view.back.z, (float)texH,
-        d.up.x, d.up.y, d.up.z, tfMinCastSin, d.axis.x, d.axis.y, d.axis.z, 0.0f, tfLight.x, tfLight.y, tfLight.z, tfLight.w };
-    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 7);
-
-    size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
-    GLu tfb = 0;
-    gl->GenBuffers(1, &tfb);
-    gl->BindBuffer(0x8C8E /* GL_TRANSFORM_FEEDBACK_BUFFER */, tfb);
-    gl->BufferData(0x8C8E, (ptrdiff_t)bytes, NULL, 0x88E5 /* GL_STATIC_READ */);
-    gl->BindBufferBase(0x8C8E, 0, tfb);
-
-    rlEnableVertexArray(buf->vaoId);
-    rlUpdateVertexBuffer(buf->vboId, in, n*(int)sizeof(RblInstance), 0);
-    gl->Enable(0x8C89 /* GL_RASTERIZER_DISCARD */);
-    gl->BeginTransformFeedback(0x0004 /* GL_TRIANGLES */);
-    rlDrawVertexArrayInstanced(0, 6, n);
-    gl->EndTransformFeedback();
-    gl->Disable(0x8C89);
-    rlDisableVertexArray();
-    rlDisableShader();
-    EndTextureMode();
-    UnloadRenderTexture(scratch);
-
-    float *out = (float *)malloc(bytes);
-    gl->GetBufferSubData(0x8C8E, 0, (ptrdiff_t)bytes, out);
-    gl->DeleteBuffers(1, &tfb);
-    return out;
 }
 
 static RblInstance randomInstance(unsigned int *seed)

@@ -4,8 +4,8 @@
 //   batched    RblBeginBatch(), RblBatchAdd() per billboard, RblEndBatch() (batch loaded once)
 //   instanced  RblDrawInstanced() once for the frame's RblInstance array (buffer loaded once)
 // at 1k / 10k / 100k billboards, without and with rotation, plus bytes uploaded per billboard,
-// a memcpy bandwidth floor and the batched corners' deviation from a double-precision reference
-// (the instanced path expands its corners on the GPU; tests/test_instanced.c checks those).
+// a memcpy bandwidth floor and each path's corner deviation from a double-precision reference
+// (instanced: its vertex stage's output, captured with transform feedback).
 //
 // The paths are measured in interleaved rounds (one frame of each path per round, the order
 // rotating), so a slow spell of this shared machine hits them alike; ratio_to_raylib is the median
@@ -28,7 +28,7 @@
 //   excl_draw_ns_per_billboard (submission minus draw calls), excl_draw_ratio_to_raylib
 //   <path>: bytes_per_billboard (uploaded), floor_ns_per_billboard (bytes / memcpy GB/s);
 //   <path>_<N>_<rot>: ratio_to_floor; memcpy_64MiB: bandwidth (GB/s, median of 7 copies)
-//   batched_<N> and raylib_<N>: max_corner_error (world units) against a double-precision
+//   batched_<N>, immediate_<N>, instanced_<N> and raylib_<N>: max_corner_error (world units) against a double-precision
 //   DrawBillboardPro, over the unrotated and rotated sets; max_corner_rel_error = that error over
 //   the largest reference corner distance from the world origin (compare with FLT_EPSILON 1.19e-7)
 // Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
@@ -39,6 +39,7 @@
 #include "rlgl.h"
 #include "harness.h"
 #include "bench.h"
+#include "tf_capture.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -453,6 +454,38 @@ static void RaylibCornerError(int n, int rotated, double *maxError, double *scal
     rlUnloadRenderBatch(own);
 }
 
+// The immediate path's own corners: each RblDrawBillboard() leaves its quad in the one-quad batch
+static void ImmediateCorners(int n, int rotated, float *out)
+{
+    BeginTextureMode(target);
+    BeginMode3D(camera);
+    for (int i = 0; i < n; i++)
+    {
+        RblDrawBillboard(camera, material, rblSet[rotated][i]);
+        for (int k = 0; k < 4; k++) memcpy(&out[(size_t)(i*4 + k)*3], rbl__immediate.vertices[k].position, 3*sizeof(float));
+    }
+    EndMode3D();
+    EndTextureMode();
+}
+
+// The instanced path's corners as its vertex stage emits them (transform feedback); false if the
+// capture is not available. Triangles (0,1,2)(0,2,3): corner 3 is the 6th vertex.
+static bool InstancedCorners(int n, int rotated, float *out)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) return false;
+    GLu prog = tfProgram(&gl);
+    if (prog == 0) return false;
+    float *gpu = tfCapture(&gl, prog, &instanceBuffer, camera, instancedDesc, atlas.width, atlas.height, instanceSet[rotated], n);
+    gl.DeleteProgram(prog);
+    if (gpu == NULL) return false;
+    const int vertexOf[4] = { 0, 1, 2, 5 };
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 4; k++) memcpy(&out[(size_t)(i*4 + k)*3], &gpu[((size_t)i*6 + vertexOf[k])*TF_FLOATS], 3*sizeof(float));
+    free(gpu);
+    return true;
+}
+
 //----------------------------------------------------------------------------------
 // memcpy bandwidth
 //----------------------------------------------------------------------------------
@@ -644,27 +677,53 @@ int main(int argc, char **argv)
         }
     }
 
-    // Corner accuracy: batched (the immediate path runs the same code) and raylib itself, both
-    // against the double-precision DrawBillboardPro reference, over the rotated and unrotated sets
+    // Corner accuracy of every path and of raylib itself against the double-precision
+    // DrawBillboardPro reference, over the rotated and unrotated sets: batched from the last timed
+    // frame, immediate and instanced captured here (untimed) for the largest set, smaller sets
+    // being its prefixes
+    float *captured[2][2] = { { NULL, NULL }, { NULL, NULL } };     // [immediate, instanced][rotated]
+    bool instancedCaptured = true;
+    for (int rotated = 0; rotated < 2; rotated++)
+    {
+        captured[0][rotated] = (float *)malloc((size_t)MAX_BILLBOARDS*4*3*sizeof(float));
+        captured[1][rotated] = (float *)malloc((size_t)MAX_BILLBOARDS*4*3*sizeof(float));
+        if ((captured[0][rotated] == NULL) || (captured[1][rotated] == NULL)) { printf("bench_geometry: out of memory\n"); return 1; }
+        ImmediateCorners(MAX_BILLBOARDS, rotated, captured[0][rotated]);
+        instancedCaptured = instancedCaptured && InstancedCorners(MAX_BILLBOARDS, rotated, captured[1][rotated]);
+    }
+    if (!instancedCaptured) printf("  instanced corners: transform feedback unavailable, no accuracy row\n");
     for (int c = 0; c < COUNT_CASES; c++)
     {
         double raylibError = 0.0, raylibScale = 0.0;
-        for (int rotated = 0; rotated < 2; rotated++) RaylibCornerError(counts[c], rotated, &raylibError, &raylibScale);
-        if (batchedScale[c] > 0.0)      // batched cases of this size were run
+        double pathError[2] = { 0.0, 0.0 }, pathScale[2] = { 0.0, 0.0 };
+        for (int rotated = 0; rotated < 2; rotated++)
         {
-            snprintf(name, sizeof(name), "batched_%d", counts[c]);
-            BenchCsvRow(SUITE, name, "max_corner_error", batchedError[c], "world_units");
-            BenchCsvRow(SUITE, name, "max_corner_rel_error", batchedError[c]/batchedScale[c], "rel");
+            RaylibCornerError(counts[c], rotated, &raylibError, &raylibScale);
+            CornerError(captured[0][rotated], 3, raylibSet[rotated], counts[c], &pathError[0], &pathScale[0]);
+            if (instancedCaptured) CornerError(captured[1][rotated], 3, raylibSet[rotated], counts[c], &pathError[1], &pathScale[1]);
+        }
+        const char *rowPath[3] = { "batched", "immediate", "instanced" };
+        const double rowError[3] = { batchedError[c], pathError[0], pathError[1] }, rowScale[3] = { batchedScale[c], pathScale[0], pathScale[1] };
+        for (int k = 0; k < 3; k++)
+        {
+            if (rowScale[k] <= 0.0) continue;     // not run (filter) or not captured
+            snprintf(name, sizeof(name), "%s_%d", rowPath[k], counts[c]);
+            BenchCsvRow(SUITE, name, "max_corner_error", rowError[k], "world_units");
+            BenchCsvRow(SUITE, name, "max_corner_rel_error", rowError[k]/rowScale[k], "rel");
         }
         snprintf(name, sizeof(name), "raylib_%d", counts[c]);
         BenchCsvRow(SUITE, name, "max_corner_error", raylibError, "world_units");
         BenchCsvRow(SUITE, name, "max_corner_rel_error", raylibError/raylibScale, "rel");
-        if ((c == COUNT_CASES - 1) && (batchedScale[c] > 0.0))
+        if (c == COUNT_CASES - 1)
         {
-            printf("  corner error vs double reference (%d billboards, rot+norot): batched %.3g world units (%.3g rel), raylib %.3g (%.3g rel); FLT_EPSILON 1.19e-07\n",
-                   counts[c], batchedError[c], batchedError[c]/batchedScale[c], raylibError, raylibError/raylibScale);
+            printf("  max corner error vs double reference (%d billboards, rot+norot; world units, relative to the largest corner distance):\n"
+                   "    raylib %.3g (%.3g rel)", counts[c], raylibError, raylibError/raylibScale);
+            for (int k = 0; k < 3; k++)
+                if (rowScale[k] > 0.0) printf(", %s %.3g (%.3g rel)", rowPath[k], rowError[k], rowError[k]/rowScale[k]);
+            printf("; FLT_EPSILON 1.19e-07\n");
         }
     }
+    for (int k = 0; k < 2; k++) for (int rotated = 0; rotated < 2; rotated++) free(captured[k][rotated]);
 
     // Upload volume and the memory-bandwidth floor. rlgl's batch uploads, per vertex, positions
     // (3 floats), texcoords (2 floats), normals (3 floats) and colours (4 bytes) in four
