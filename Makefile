@@ -49,7 +49,7 @@ check-shaders:
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h
-GPU_TESTS := tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_shadows.c tests/reference.h tests/lighting_reference.h
+GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_shadows.c tests/reference.h tests/lighting_reference.h
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -63,7 +63,11 @@ $(BUILD)/tests/test_gpu: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER)
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/test_gpu_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
+$(BUILD)/tests/test_api_san: tests/test_api_main.c tests/test_api.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_api_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
@@ -112,7 +116,20 @@ $(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h te
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_shadows.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows
+# bench_api: one binary from three compilations of bench_api.c (main, the showcase and the deferred example,
+# each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
+# pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
+BENCH_API_GLAD := $(abspath $(firstword $(wildcard $(RAYLIB_SRC)/src/external/glad.h $(BUILD)/raylib-src/*/src/external/glad.h)))
+BENCH_API_EXAMPLES := examples/billboards_lit_showcase.c examples/billboards_lit_deferred.c
+$(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_API_EXAMPLES) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -DBENCH_API_GEN tests/bench/bench_api.c -o $(@D)/bench_api_gen
+	$(@D)/bench_api_gen "$(BENCH_API_GLAD)" "$(if $(BENCH_API_GLAD),$(dir $(BENCH_API_GLAD))../rlgl.h)" > $(@D)/bench_api_gl.h
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -DBENCH_API_PART=1 -c tests/bench/bench_api.c -o $(@D)/bench_api_showcase.o
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -DBENCH_API_PART=2 -c tests/bench/bench_api.c -o $(@D)/bench_api_deferred.o
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -I$(@D) -DBENCH_API_GL tests/bench/bench_api.c $(@D)/bench_api_showcase.o $(@D)/bench_api_deferred.o tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

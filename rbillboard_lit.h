@@ -1,259 +1,281 @@
 /**********************************************************************************************
 *
-*   rbillboard_lit v0.2 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
+*   rbillboard_lit v0.4 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
 *
 *   DESCRIPTION:
-*       A raylib billboard (DrawBillboardPro) is two triangles with a colour and texture
-*       coordinates: no normal, no tangent, no material, so it cannot take part in lighting.
-*       This single header emits billboard quads that carry a per-vertex normal and tangent
-*       (xyz + handedness), in every common facing mode, through its own vertex buffer (rlgl's
-*       batch has no tangent attribute), and ships a forward shader that lights billboards and
-*       ordinary raylib Models with the same lights, using raylib's default attribute and uniform
-*       names so a Model's Material can use it unchanged.
+*       A raylib billboard (DrawBillboardPro) is two triangles with a colour and texture coordinates:
+*       no normal, no tangent, no material, so no shader can light it. This header emits billboard
+*       quads carrying a normal and a tangent (xyz + handedness) in every facing mode, through its own
+*       vertex buffers (rlgl's batch has no tangent attribute), and compiles lit programs with raylib's
+*       attribute and uniform names, so one program in a Material lights billboards and Models alike.
+*       On top: packed material maps, forward and deferred lighting, and shadow maps in which a
+*       sprite's cut-out casts its own shape.
 *
-*   FEATURES:
-*       - Facing modes: camera plane (as raylib), camera position, locked axis (any unit axis),
-*         fixed world orientation
-*       - DrawBillboardPro parameters: atlas source rectangle, size, origin (pivot), rotation, tint;
-*         plus atlas frames stored rotated 90 degrees and flips by negative size or source extent
-*       - Per-vertex normal and tangent whose handedness stays right under every flip and rotation,
-*         optional rounded (spherical / cylindrical) normals
-*       - Immediate (one call per billboard), batched (one upload, one draw per material run) and
-*         GPU-instanced (56 bytes per billboard, quads expanded in the vertex shader) paths
-*       - Stable frames for degenerate cameras (looking straight up/down, target == position,
-*         billboard at the eye); NaN/Inf input is skipped with one warning, never written to a buffer
-*       - Forward lit shader for billboards and raylib Models alike (raylib's attribute/uniform names;
-*         the eye position comes from matView, so no viewPos glue): point, directional and spot lights
-*         (smooth inner/outer cone), windowed inverse-square or classic constant/linear/quadratic
-*         falloff, Lambert, normalised Blinn-Phong or GGX (Cook-Torrance) reflectance, flat or
-*         hemispheric ambient, emissive map/colour, fog (linear, exp, exp2), exposure, tonemap
-*         (Reinhard, ACES fit) and gamma; see LIGHTING. Only what a desc asks for is compiled, and
-*         each variant compiles once (cache). The GLSL sources live in shaders/ and are embedded
-*         below by `make shaders`
-*       - Deferred helper (RblGBuffer): 10-byte G-buffer + depth, position rebuilt from depth,
-*         bounded lights drawn as instanced light volumes (cost follows the pixels they touch,
-*         1024+ lights), the forward path's lighting code and material decoding, debug views,
-*         forward-drawn transparent billboards sort against its depth; see DEFERRED
-*       - Shadows (RblShadowMap) of directional and spot lights, cast by billboards (alpha-tested:
-*         the sprite's silhouette, not its quad) and Models through the same draw calls, received by
-*         the forward shader and the deferred passes: receiver-plane + slope + normal-offset bias,
-*         bilinear-weighted PCF of any footprint; see SHADOWS
-*       - Material packing (CPU, RblPackMaterial): albedo + one RGBA8 material texture (hemi-octahedral
-*         normal, specular, occlusion) + an optional 1-byte emissive mask; atlas gutters dilated, mip
-*         chains averaged in linear light with renormalised normals; height -> normal / occlusion and
-*         luminance -> height generators for authoring (see MATERIAL LAYOUT)
+*   CONTENTS:
+*       This block: INTEGRATION (seven stages, each building on the last), then reference: MATERIAL
+*       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
+*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
+*       (with the 0.3 -> 0.4 migration), DEPENDENCIES, LICENSE.
+*       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
+*         Types and Structures Definition (private)   registry entry, packed scene, header state
+*         material maps                     packing, normal encodings, mips, generators (CPU, load time)
+*         (Embedded shaders, RBL-SHADERS-BEGIN/END)   shaders/ *.glsl files, includes resolved (make shaders)
+*         lights and the forward lit shader variant #defines before the embedded sources, compilation
+*         the program registry              one entry per compiled program, shared by equal keys
+*         lit programs and per-draw material values   Shader handles; Material -> uniforms per draw
+*         the scene                         RblSetScene: validate, pack, upload to every live program
+*         small vector helpers, geometry    camera frame, facing frames, quad corners (CPU)
+*         batched and immediate paths       vertex buffers, material runs, draws
+*         instanced path                    per-instance data, quads expanded in the vertex shader
+*         shadows                           light cameras, caster passes (before the colour pass)
+*         deferred G-buffer                 geometry pass, light passes, resolve
 *
-*   LIMITATIONS:
-*       - OpenGL 3.3 core (GLSL 330) only for now; GLES2/WebGL variants are not written yet
-*       - Shadows: directional and spot lights only (point lights would need cube maps); no cascades
-*         (one orthographic map over a focus sphere); comparison in the shader (rlgl exposes no
-*         GL_TEXTURE_COMPARE_MODE, so no hardware PCF); maps are bound to texture units
-*         RBL_SHADOW_TEXTURE_UNIT + k, shared by every receiver for the frame; RblEndShadowMap restores
-*         the framebuffer, viewport and matrices it found but leaves the depth test off and culling on
-*         (as EndMode3D does): run shadow passes before BeginMode3D (inside BeginTextureMode is fine)
-*       - Deferred: one BRDF (and light feature set) per G-buffer; a Blinn-Phong specular colour is
-*         folded into its intensity (luminance, at most 1); the geometry and light passes leave the
-*         default framebuffer bound (run them outside BeginTextureMode, resolve inside it); the
-*         resolve target should have the G-buffer's size (depth is copied texel for texel)
-*       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance
-*         (no split-sum table), metalness is one value per material (the packed layout has no channel)
-*       - Surface values set in the desc (roughness, shininess, ...) are uniforms, but a desc that differs
-*         in them is another cached program; identical descs share one program and so its lights
-*       - Billboards are not sorted: draw alpha-blended ones back to front yourself
-*       - Instanced path: facing mode, up, axis and roundness are shared by all instances of a draw
-*         (RblInstancedDesc); billboards needing their own FIXED orientation go through the batch
-*       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) is not applied to billboards: their vertices
-*         are world space (matModel = identity) and face the camera in world space
+*   INTEGRATION:
+*       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
+*          one .c file. The lit program is a Shader for a Material, whose maps also carry the values
+*          (MATERIAL VALUES); lights, ambient, fog and exposure are one RblScene set each frame.
+*            Material mat = LoadMaterialDefault();
+*            mat.shader = RblLoadLitShader((RblLitShaderDesc){ 0 });   // 4 point lights, Lambert
+*            mat.maps[MATERIAL_MAP_ALBEDO].texture = LoadTexture("sprite.png");
+*            RblLight light = { .position = { 2, 3, 2 }, .color = WHITE, .intensity = 20, .range = 15 };
+*            RblScene scene = { .lights = &light, .lightCount = 1, .ambient = DARKGRAY };
+*            RblSetScene(&scene);                  // each frame; false: rejected, previous kept
+*            // in BeginMode3D:
+*            RblDrawBillboard(camera, mat, (RblBillboard){ .position = p, .size = { 1, 2 } });
+*          At exit: UnloadMaterial(mat), RblClose(), CloseWindow() (see OWNERSHIP).
+*       2. Many billboards: consecutive billboards with the same Material form one run; RblEndBatch
+*          uploads once and draws once per run (and reads the materials' values then).
+*            RblBatch batch = RblLoadBatch(0);     // RBL_BATCH_DEFAULT_CAPACITY; grows (log line)
+*            RblBeginBatch(&batch, camera);        // inside BeginMode3D
+*            for (int i = 0; i < n; i++) RblBatchAdd(&batch, mat, &billboards[i]);   // false: skipped
+*            RblEndBatch(&batch);
+*       3. Packed maps: albedo + one RGBA8 material texture (+ emissive); the reported layout selects
+*          the program variant, so absent maps are never sampled (MATERIAL LAYOUT).
+*            RblMaterialSource src = { .albedo = albedoImage, .normal = normalImage, .mipmaps = true };
+*            RblPackedMaterial packed = { 0 };
+*            if (RblPackMaterial(&src, &packed) && RblLoadPackedTextures(&packed, &mat))
+*                desc.material = packed.layout;    // then mat.shader = RblLoadLitShader(desc)
+*            RblUnloadPackedMaterial(&packed);     // the CPU Images; the textures stay in mat
+*       4. Instanced: 56 bytes per billboard, quads expanded in the vertex shader by its own variant;
+*          facing, up, axis and roundness are shared by one draw.
+*            desc.instanced = true; instMat.shader = RblLoadLitShader(desc);
+*            RblInstanceBuffer ib = RblLoadInstanceBuffer(0);
+*            RblInstancedDesc idesc = { .facing = RBL_FACING_AXIS };
+*            RblDrawInstanced(&ib, camera, instMat, idesc, instances, count);   // inside BeginMode3D
+*       5. raylib Models: a lit program in model.materials[i].shader (GenMeshTangents for normal maps).
+*          RblSetScene uploads the scene to every live lit program (later ones get it at load), so even
+*          raylib's DrawModel is lit; the Material's values need these (they then call DrawMesh):
+*            RblDrawModel(model, position, scale, tint);     // DrawModel's arguments
+*            RblDrawMesh(mesh, material, transform);
+*       6. Shadows (directional and spot lights): before BeginMode3D, draw the casters with the same
+*          calls and materials as the colour pass, then list the maps in the scene.
+*            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shadowMaps = 1
+*            RblShadowFocusFromCamera(camera, aspect, 0.1f, 30.0f, &focus, &radius);
+*            scene.shadowMapCount = 0;                         // no map unless its pass ran
+*            if (RblBeginShadowMap(&sun, &scene, 0, focus, radius)) {      // scene.lights[0] casts
+*                ... batches, RblDrawInstanced, RblDrawBillboard, RblDrawModel ...
+*                RblEndShadowMap(&sun);
+*                scene.shadowMaps = &sun; scene.shadowMapCount = 1;
+*            }
+*            RblSetScene(&scene);                  // after the passes: it reads their matrices
+*       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
+*          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
+*            RblGBuffer g = RblLoadGBuffer((RblGBufferDesc){ .brdf = RBL_BRDF_GGX });  // size 0: screen
+*            RblSetScene(&scene);                  // each frame, before BeginDrawing():
+*            if (RblBeginGBuffer(&g, camera)) {    // false: draw this frame forward
+*                ... billboard paths and RblDrawModel with deferred materials ...
+*                RblEndGBuffer(&g);
+*                RblDrawDeferredLights(&g);        // the scene's ambient and lights
+*            }
+*            // inside BeginDrawing/BeginTextureMode: RblResolveGBuffer(&g), then BeginMode3D and
+*            // forward draws (transparent billboards), depth-tested against the G-buffer's depth
+*          Forward fallback: without MRT, float targets or a depth texture, or if a pass fails to
+*          compile, the G-buffer is invalid (logged) and RblBeginGBuffer returns false: draw as in 1-6.
 *
-*   DEVIATIONS FROM raylib's DrawBillboardPro (deliberate, tested):
-*       - Negative size mirrors the image inside the source rectangle and keeps the quad's footprint
-*         and pivot. raylib shifts the source rectangle by the world-space size (source.x -= size.x),
-*         which samples the right texels only when |size| equals the source width in pixels, and
-*         negates the pivot, which moves the quad.
-*       - When camera.up is parallel to the view direction raylib's right vector is zero (a collapsed
-*         quad); here a fallback frame is used (see DEGENERATE FRAMES).
+*   MATERIAL VALUES (read from the raylib Material at each header draw; zero means default):
+*       maps[MATERIAL_MAP_ALBEDO].color      base colour x texture (raylib's colDiffuse; zero = black)
+*       maps[MATERIAL_MAP_SPECULAR].color    Blinn-Phong specular colour (sRGB; zero = white)
+*       params[RBL_PARAM_SPECULAR]           Blinn-Phong specular intensity (0 = 0.5; with a specular
+*                                            map: its scale, 0 = 1)
+*       maps[MATERIAL_MAP_NORMAL].value      Blinn-Phong shininess (0 = 32; raylib's OBJ loader: MTL Ns)
+*       maps[MATERIAL_MAP_ROUGHNESS].value   GGX perceptual roughness without a map, 0..1 (0 = 0.5)
+*       maps[MATERIAL_MAP_METALNESS].value   GGX metalness 0..1 (raylib's glTF loader fills both)
+*       maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
+*       maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
+*       params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha, casters too (0 = 0.5; <0 = never)
+*       raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS (one slot): its value is the metalness,
+*       so the Blinn-Phong intensity has a params slot of its own. NaN/Inf take the default;
+*       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
+*
+*   OWNERSHIP:
+*       - RblLoadLitShader returns a raylib Shader whose locs array is that holder's; copies of it
+*         (material.shader) are the same holder: release it once. Equal descs share one program;
+*         each call is its own holder, and the program goes with its last holder.
+*       - Release with RblUnloadLitShader(&shader) (zeroes it) or raylib's UnloadMaterial/UnloadShader:
+*         the header notices the deleted program at the next load, scene or validity check, forgets
+*         it and compiles anew on the next load (draws skip the check: a GL query each).
+*       - Shadow maps and G-buffers hold their programs until RblUnloadShadowMap / RblUnloadGBuffer.
+*       - RblClose frees the immediate path, the scene and every program still held: call it after
+*         your own Unload calls (a Shader unloaded afterwards would be freed twice), before CloseWindow.
+*
+*   FACING MODES (RblBillboard.facing, or RblInstancedDesc.facing for an instanced draw):
+*       CAMERA_PLANE: parallel to the view plane, as DrawBillboard (optional up, as DrawBillboardPro);
+*       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
+*       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
+*       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
 *
 *   DEGENERATE FRAMES (documented fallbacks, all deterministic):
 *       - camera.target == camera.position: the view direction falls back to -Z (raylib's default).
-*       - camera.up parallel to the view direction: up falls back to the world axis least aligned
-*         with the view direction (-Z when looking straight down, +Z straight up), so a top-down
-*         camera keeps -Z as screen-up.
-*       - Camera-position mode with the billboard centre at the eye: faces the camera plane.
-*       - Axis mode with the eye on the axis: faces the camera plane projected off the axis; if the
-*         view looks along the axis too, the camera's up projected off the axis.
-*       - Fixed mode with up parallel to the normal: up falls back as for the camera.
+*       - camera.up parallel to the view: up falls back to the world axis least aligned with the view
+*         (-Z looking straight down, +Z straight up), so a top-down camera keeps -Z as screen-up.
+*       - CAMERA_POSITION with the billboard centre at the eye: faces the camera plane.
+*       - AXIS with the eye on the axis: the camera plane projected off the axis; if the view looks
+*         along the axis too, the camera's up projected off the axis.
+*       - FIXED with up parallel to the normal: up falls back as for the camera.
+*       - NaN/Inf input is skipped with one warning per batch or draw, never written to a buffer;
+*         instance values must stay below 2^120 in magnitude (the GPU could overflow).
 *
 *   CONVENTIONS:
-*       - Tangent = world direction of +U; cross(normal, tangent.xyz)*tangent.w = world direction
-*         of +V, the same handedness raylib's GenMeshTangents() produces, so Models and billboards
-*         share one shader.
+*       - Tangent = world direction of +U; cross(normal, tangent.xyz)*tangent.w = world +V, raylib's
+*         GenMeshTangents handedness (so Models and billboards share one program), right under every
+*         flip (negative size or source extent) and for frames stored rotated (RBL_FRAME_ROTATED).
 *       - Normal maps: OpenGL convention (+X right, +Y up in the image as you see it).
-*       - Texture slots follow raylib's Material: MATERIAL_MAP_ALBEDO -> texture0,
-*         MATERIAL_MAP_NORMAL -> texture2.
+*       - Texture slots are raylib's: MATERIAL_MAP_ALBEDO -> texture0, MATERIAL_MAP_NORMAL (packed
+*         material texture, or RGB normal map) -> texture2, MATERIAL_MAP_EMISSION -> texture5.
+*       - Every Color is sRGB; lighting runs in linear light. Rotation: degrees, exact at quadrants.
 *
-*   LIGHTING (shaders/lighting.glsl; tests/lighting_reference.h is an independent double version):
-*       - Units: a light of sRGB colour c and intensity I delivers irradiance E = linear(c)*I*attenuation;
-*         outgoing radiance = pi*BRDF*E*NdotL with pi folded into the light, so a white Lambert surface
-*         lit head-on with E = 1 returns 1 (the scale raylib's lighting examples use).
+*   DEVIATIONS FROM raylib's DrawBillboardPro (deliberate, tested):
+*       - Negative size mirrors the image inside the source rectangle and keeps the quad's footprint
+*         and pivot. raylib shifts the source rectangle by the world size (source.x -= size.x), right
+*         only when |size| equals the source width in pixels, and negates the pivot (the quad moves).
+*       - camera.up parallel to the view: raylib's quad collapses (zero right vector); here: fallback.
+*
+*   LIGHTING (shaders/lights.glsl, output.glsl; tests/lighting_reference.h: independent, in double):
+*       - Units: a light of sRGB colour c and intensity I delivers irradiance E = linear(c)*I*falloff;
+*         radiance = pi*BRDF*E*NdotL with pi folded into the light, so a white Lambert surface lit
+*         head-on with E = 1 returns 1 (the scale raylib's lighting examples use).
 *       - Falloff: windowed E = I*saturate(1 - (d/range)^4)^2/max(d^2, 1e-4) (range 0 = no window);
-*         classic E = I/max(constant + linear*d + quadratic*d^2, 1e-4), times the same window when
-*         range > 0. Spot cone: t = saturate((cos a - cos outer)/max(cos inner - cos outer, 1e-4)),
-*         smoothstep(t) = t*t*(3 - 2t). Directional lights have no falloff.
+*         classic E = I/max(constant + linear*d + quadratic*d^2, 1e-4), times the window if range > 0.
+*         Spot: t = saturate((cos a - cos outer)/max(cos inner - cos outer, 1e-4)), weight t*t*(3 - 2t).
 *       - Blinn-Phong: albedo + specularColor*intensity*(n + 8)/8*NdotH^n (normalised, pi folded);
-*         intensity = the specular map (material B) times desc.specular, or desc.specular alone.
-*       - GGX: diffuse albedo*(1 - metalness) + pi*D*V*F; D = GGX with alpha = roughness^2, V = Smith
+*         intensity = the specular map (material B) x the value, or the value alone.
+*       - GGX: albedo*(1 - metalness) + pi*D*V*F; D = GGX with alpha = roughness^2, V = Smith
 *         height-correlated, F = Schlick with F0 = mix(0.04, albedo, metalness); roughness = the map
-*         (material B) or desc.roughness. 1 - NdotH^2 is computed as |N x H|^2 (no cancellation).
-*       - Ambient (flat, or sky/ground mixed by dot(N, up)*0.5 + 0.5) x occlusion x (albedo, plus F0
-*         for GGX). Occlusion maps attenuate ambient light only: direct lights are occluded by shadows,
-*         and darkening them too would count the same blocker twice.
-*       - Clamps (no NaN/Inf from any input the API accepts): perceptual roughness >= 0.045, NdotV >=
-*         1e-4, falloff denominator >= 1e-4, zero vectors normalise to a fallback (a light on the
-*         surface lights it head-on), radiance clamped to [0, 65504] (half-float max) before exposure
-*         and tonemap and again on linear output. Bad lights (NaN/Inf, negative intensity/range,
-*         zero direction, cone outside 0 <= inner <= outer <= 90, a type the variant lacks) are
-*         rejected by RblSetLights with a log line and never reach the shader.
+*         (material B) or the value. 1 - NdotH^2 is computed as |N x H|^2 (no cancellation).
+*       - Ambient (flat, or ground..sky by dot(N, up)*0.5 + 0.5) x occlusion x albedo (GGX: albedo*
+*         (1 - metalness) + F0). Occlusion dims ambient light only: direct light is occluded by
+*         shadows, and darkening it too would count the same blocker twice.
 *       - Order: ambient + direct + emission -> fog -> clamp -> exposure -> tonemap -> sRGB (or gamma).
-*       - Variants: RblLitShaderDesc -> #defines (light types, BRDF, maps, fog, tonemap, ...) before the
-*         shared sources; RblLightFeatures(lights, n) says what a light set needs. Identical descs
-*         return the same program (reference counted; RblUnloadLitShader releases one reference).
+*       - Clamps (no NaN/Inf from any input the API accepts): perceptual roughness >= 0.045, NdotV >=
+*         1e-4, falloff denominator >= 1e-4, zero vectors normalise to a fallback, radiance to [0,
+*         65504] (half-float max) before exposure and tonemap and again on linear output.
+*       - RblSetScene rejects the whole scene (false, one log line, previous kept) for NaN/Inf, negative
+*         intensity, range or coefficients, a zero direction, spot angles outside 0 <= inner <= outer
+*         <= 90, an unknown type or falloff. A forward program lights the scene's first maxLights
+*         lights of the types it compiled (RblLightFeatures: what a set needs); others are left out.
 *
-*   DEFERRED (RblLoadGBuffer; shaders/gbuffer.fs.glsl, deferred.vs.glsl, deferred.fs.glsl):
-*       Per frame: RblBeginGBuffer(&g, camera) -> draw Models and billboards whose material shader is a
-*       desc.deferred variant -> RblEndGBuffer(&g) -> RblDrawDeferredLights(&g, lights, n, ambient) ->
-*       (inside BeginDrawing/BeginTextureMode) RblResolveGBuffer(&g) -> forward draws (transparent
-*       billboards) sort against the depth the resolve wrote. RblLoadGBuffer failing (no MRT, no float
-*       target, incomplete framebuffer, a pass that does not compile) logs and returns an invalid
-*       G-buffer: RblBeginGBuffer returns false and the program renders forward.
-*       Layout, 10 bytes per pixel (colour targets; depth and accumulation excluded):
-*         RT0 RGBA8    r,g,b albedo sRGB-encoded (8-bit steps spent where the eye sees them), a occlusion
-*         RT1 RGBA8    r,g,b world normal, octahedral (Cigolle et al. 2014), 12 bits per coordinate:
+*   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
+*       RblBeginGBuffer -> opaque draws -> RblEndGBuffer -> RblDrawDeferredLights (ambient and lights
+*       into the accumulation) -> RblResolveGBuffer (fog, exposure, tonemap, encoding; writes depth).
+*       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
+*         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a occlusion
+*         RT1 RGBA8    rgb world normal, octahedral (Cigolle et al. 2014), 12 bits per coordinate:
 *                      r = x[11:4], g = x[3:0] << 4 | y[11:8], b = y[7:0]; a specular intensity
-*                      (Blinn-Phong, colour luminance folded in) or perceptual roughness (GGX)
-*                      error over the sphere: mean 0.021, max 0.059 degrees (8+8: 0.34/0.95, 16+16: 0.0013/0.0037)
-*         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high byte, g low byte; GGX: r metalness
-*         RGBA16F      light accumulation: emission (geometry pass), then ambient and lights (additive)
-*         depth        depth texture (rlLoadTextureDepth: at least 24 bits; llvmpipe gives 32), raylib's
-*                      perspective (near 0.05, far 4000)
-*       Allocated in all: 10 + 8 (accumulation) + 4 (depth) = 22 bytes per pixel.
-*       Not stored: position (rebuilt from depth: view z = n f/(f - d (f - n)) straight from the
-*       window depth, which avoids the cancellation of an inverse projection matrix; the shader stays
-*       within 3 steps of a 24-bit depth of a double reconstruction, and the depth itself places a
-*       point within a few steps: 3e-6 units at 0.5, 1e-3 at 20, 1.1 at 400 from the eye), view
-*       vector, anything derivable. Why raylib's depth texture and projection: it is what BeginMode3D
-*       uses, so Models and billboards drawn forward afterwards test against the same depth, and
-*       lighting tolerates the far-field error (1/255 against forward at every test distance).
-*       Lights: directional and range-0 lights in full-screen passes (uniform arrays, <= RBL_MAX_LIGHTS),
-*       bounded point/spot lights as one instanced draw of a sphere proxy that encloses the range
-*       (back faces only: correct with the eye inside a volume; fragments outside the range discard).
-*       The windowed falloff is exactly zero at the range, so volumes change no pixel: volumes and the
-*       naive full-screen loop (g.naiveFullscreen, kept for comparison) agree within 1/255.
+*                      (Blinn-Phong, colour folded to its luminance) or perceptual roughness (GGX)
+*         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high, g low byte;
+*                      GGX: r metalness
+*       plus RT3 RGBA16F accumulation (emission from the geometry pass, then light) and a depth texture
+*       (rlLoadTextureDepth, at least 24 bits) under raylib's perspective (rlgl's cull distances).
+*       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
+*       inverse projection's cancellation), the view vector, anything derivable. The depth is raylib's
+*       own, so later forward draws test against it; lighting tolerates its far-field error.
+*       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
+*       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
+*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, kept for
+*       comparison). Debug views: RblSetGBufferView.
 *
-*   SHADOWS (RblShadowMap; shaders/lighting.glsl rblShadowLookup, shaders/shadow_caster.fs.glsl):
-*       Per frame: RblBeginShadowMap(&map, lights, i, focusCentre, focusRadius) -> the same billboard
-*       calls (immediate, batched, instanced) with the same materials as the colour pass, and Models
-*       through RblDrawModelShadow() -> RblEndShadowMap(&map) -> RblSetShadows(&lit, &map, 1) (or
-*       RblSetGBufferShadows) -> the colour pass. Receivers are variants with desc.shadowMaps > 0.
+*   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
+*       Receivers are variants with desc.shadowMaps > 0 (G-buffer: its desc.shadowMaps) and sample the
+*       first that many maps of the scene; a forward program shadows a light only if it has a slot.
 *       Light cameras: directional = orthographic over the focus sphere (eye 2r before the centre, depth
-*       0..3r: casters up to 2r toward the light), its window moved in whole texels of a grid fixed in
-*       the world (edges do not crawl as the focus follows the camera; RblShadowFocusFromCamera gives the
-*       bounding sphere of a frustum slice); spot = perspective over the outer cone (<= 80 degrees), depth
-*       range/1000..range (or out to the focus sphere when range is 0).
-*       Casters: inside a pass every billboard path swaps in a depth-only caster program (from the lit
-*       cache) that keeps the material's albedo map, colDiffuse, vertex tint and the colour pass's alpha
-*       cutoff (looked up from the lit variant the material carries), so a sprite's cut-out casts a
-*       cut-out shadow. Culling is off: a billboard facing the viewer may show the light its back.
-*       Billboard orientation in the shadow pass: the camera given to the billboard call, i.e. the
-*       viewer's (default), so the shadow is the silhouette the viewer sees and a billboard never
-*       shadows itself where it is visibly lit; desc.faceLight turns them to the light camera instead
-*       (fuller shadows under side light, but they no longer match the sprite seen). AXIS billboards
-*       are tilted about their pivot line, leaning away from the light, just enough that the light sees
-*       them at desc.minCastAngle (30 degrees): an upright tree under a light along its axis would be
-*       edge-on and cast nothing. The tilt is exact and trig-free on the CPU and GPU (tested equal).
-*       Receivers (per light sample, in world units, t = texel size at the point):
+*       0..3r: casters up to 2r toward the light), moved in whole texels of a world-fixed grid so edges
+*       do not crawl as the focus follows the camera; spot = perspective over the outer cone (<= 80
+*       degrees), depth range/1000..range (range 0: out to the focus sphere).
+*       Casters: inside a pass every header draw swaps in a depth-only caster keeping the material's
+*       albedo map, colDiffuse, tint and alpha cutoff (a cut-out casts a cut-out); culling is off.
+*       Billboards face the billboard call's camera (the viewer's): the shadow is the silhouette seen,
+*       never falling on the visibly lit side (RblShadowDesc.faceLight: face the light instead). AXIS
+*       billboards lean away from the light about their pivot line until it sees them at minCastAngle
+*       (30 degrees): an upright tree under a light along its axis would be edge-on and cast nothing.
+*       Receiver bias (per light sample, world units, t = texel size at the point):
 *         normal offset    lookup moved along N by normalBias*t*sin(incidence) (shifts edges <= that)
-*         receiver plane   each PCF fetch compares with the receiver's own plane extended to that texel
-*                          (gradient from N in the light's frame, clamped at 10 texels per texel), so
-*                          flat ground needs no slope-sized bias at any incidence below 84 degrees
+*         receiver plane   each PCF fetch compares with the receiver's plane extended to that texel
+*                          (gradient <= 10 texels per texel): flat ground needs no slope-sized bias
 *         depth bias       t*(constantBias + slopeBias*tan(incidence)), tan clamped at 10
 *         PCF              k x k texel box over bilinear-weighted comparisons, (k + 1)^2 fetches
-*                          (desc.shadowFilter, default 2); k = 1 is hardware 2x2 comparison's footprint
-*       Outside the map, beyond its far plane, behind a spot light, and for fetches of texels nothing was
-*       drawn into (cleared), the point is lit. Defaults (constant 0.2, slope 0.1, normal 0.25 texels),
-*       measured in tests/test_shadows.c at 512 texels over 8 units: no acne on a floor lit at 0..80
-*       degrees (worst 0/255, forward and deferred, k = 1 and 3); a card standing on the floor casts from
-*       within one texel of its base at 30..75 degrees; analytic card footprints (directional and spot)
-*       with no pixel wrong farther than a texel from the edge; forward vs deferred worst 2/255.
-*       Deferred: the same lookup in the full-screen and volume passes (each light carries its map
-*       index); at 4+ texels per pixel the G-buffer's depth (raylib's 0.05..4000 range) can move a hard
-*       edge by ~1e-4 units (3-4/255 on edge pixels).
+*                          (shadowFilter, default 2); k = 1 is hardware 2x2 comparison's footprint
+*       Defaults in texels: constant 0.2, slope 0.1, normal 0.25. Outside the map, beyond its far plane,
+*       behind a spot light and where nothing was drawn, a point is lit. Deferred: the same lookup.
 *
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
 *       material  RGBA8, linear: RG normal, B specular, A occlusion                                 4 B
-*                 normal  RBL_NORMAL_HEMIOCT (default): hemi-octahedral, p = (x,y)/(|x|+|y|+z), stored
-*                         (p.x+p.y, p.x-p.y)*0.5+0.5, precise encoder (best of the 4 floor/ceil codes);
-*                         error mean 0.24, max 0.55 degrees. RBL_NORMAL_XY: x,y*0.5+0.5, z rebuilt
-*                         (mean 0.47, max 5.9 degrees at grazing angles). Decode: see RblDecodeNormal.
-*                 B       Blinn-Phong specular intensity / GGX perceptual roughness (red channel of the
-*                         source; absent: 0.5 = 128); sampled only by a BRDF that reads it
-*                 A       ambient occlusion (red channel; absent: 1.0 = 255)
-*                 RBL_NORMAL_RGB: RGB normal (mean 0.17, max 0.38 degrees), A occlusion; specular has no
-*                 channel left and is rejected. No normal, specular or occlusion map: no material texture.
-*                 RblMaterialLayout flags say which channels hold data: absent ones are never sampled.
-*       emissive  grey source (r == g == b in every texel): R8 mask, emission = mask x albedo colour  1 B
+*                 normal  RBL_NORMAL_HEMIOCT (default): p = (x,y)/(|x|+|y|+z) stored as (p.x+p.y,
+*                         p.x-p.y)*0.5+0.5, best of the 4 floor/ceil codes; RBL_NORMAL_XY: x,y*0.5+0.5,
+*                         z rebuilt (weakest at grazing angles). Decode: RblDecodeNormal
+*                 B       specular intensity (Blinn-Phong) / perceptual roughness (GGX); absent: 128
+*                 A       ambient occlusion; absent: 255
+*                 RBL_NORMAL_RGB: RGB normal, A occlusion, no specular channel. None of the three: no
+*                 material texture. RblMaterialLayout says which channels hold data (others unsampled).
+*       emissive  grey source (r == g == b everywhere): R8 mask, emission = mask x albedo colour    1 B
 *                 any coloured texel: RGBA8 sRGB colour                                             4 B
-*       Albedo + material + mask = 9 B/texel, against 16 B for four RGBA8 maps (albedo, normal,
-*       specular/occlusion, emissive). The mask is chosen from the data: sprite emission (lamps, eyes,
-*       runes, embers) is mostly the surface's own colour lit up, which one byte scaling the albedo
-*       reproduces; an emissive map with any coloured texel keeps its own colour at 4 B.
-*       Frames (RblMaterialSource.frames): texels touched by no frame take the value of the nearest frame
-*       texel (Chebyshev distance) in every map and every mip level, so filtering never pulls a
-*       neighbour's colour into a frame. Mips: raylib's size rule (halve, at least 1) and layout
-*       (Image.data holds level 0, 1, ...), area-weighted box filter from the level above; colour
-*       averaged in linear light (weighted by alpha), normals decoded, averaged, renormalised, re-encoded.
-*       Inputs: any uncompressed raylib format (converted, never rejected; compressed ones are). Normal
-*       maps: n = c*2 - 1 (float formats too), normalDirectX flips y, |n| < 1/64 (e.g. 128,128,128) is
-*       the flat normal, z < 0 clamps to 0. Specular and occlusion: red/grey channel.
-*       Generators: RblGenNormalMapFromHeight reads heights from the red/grey channel (8-bit: byte/255,
-*       float formats as stored) as the surface z = strength*height, in texel units: a height step of
-*       1.0 between neighbouring texels at strength 1 is a 45 degree slope. Central differences,
-*       n = normalize(-strength*dh/dx, -strength*dh/dup, 1), up = toward row 0 (a surface rising toward
-*       the top of the image faces -Y), edges wrap or clamp (the edge texel repeats); RGBA8 out.
-*       RblGenHeightFromLuminance: Rec.709 luminance 0.2126 R + 0.7152 G + 0.0722 B of the linearised
-*       colour (alpha ignored), GRAYSCALE. RblGenOcclusionFromHeight: cavity term
-*       ao = clamp(1 - strength*max(0, mean - h), 0, 1), mean = box average of the heights over the
-*       (2 radius + 1)^2 window clipped to the image: 1 on flat ground and tops, darker the deeper a
-*       texel lies below its surroundings (GRAYSCALE).
+*       9 B/texel with a mask against 16 B for four RGBA8 maps: sprite emission (lamps, eyes, embers)
+*       is mostly the surface's own colour lit up, which one byte reproduces.
+*       Frames (RblMaterialSource.frames): texels outside every frame take the nearest frame texel in
+*       every map and mip level, so filtering never pulls in a neighbour. Mips: raylib's size rule and
+*       layout; colour averaged in linear light (alpha-weighted), normals renormalised.
+*       Inputs: any uncompressed raylib format; grey/red channel for specular, occlusion and heights;
+*       normals n = c*2 - 1 (normalDirectX flips y; |n| < 1/64 is flat; z < 0 clamps to 0).
+*       Authoring: RblGenNormalMapFromHeight (heights x strength in texel units: a step of 1.0 between
+*       neighbours at strength 1 is 45 degrees; up = toward row 0), RblGenHeightFromLuminance (Rec.709,
+*       linear light), RblGenOcclusionFromHeight (darker the deeper a texel lies below its window mean).
+*
+*   LIMITATIONS:
+*       - OpenGL 3.3 core (GLSL 330) only; GLES2/WebGL variants are not written yet.
+*       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
+*       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
+*         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
+*         the target, viewport and matrices it found but leaves the depth test off and culling on (as
+*         EndMode3D): run shadow passes before BeginMode3D (inside BeginTextureMode is fine).
+*       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
+*         refused at draw); Blinn-Phong specular colour folded to its luminance; at most RBL_MAX_LIGHTS
+*         unbounded lights (directional, range 0); the geometry pass ends on the default framebuffer
+*         (run it outside BeginTextureMode, resolve inside); resolve into a target of its size.
+*       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
+*         metalness is one value per material (the packed layout has no channel for it).
+*       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
+*       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
+*       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:
 *       #define RBILLBOARD_LIT_IMPLEMENTATION
 *           Generates the implementation in the including file (exactly one translation unit).
-*
 *       #define RBL_MAX_LIGHTS 64
-*           Light slots compiled into a lit shader at most (the variant compiles only what it asks for;
-*           a slot costs 2 vec4 uniforms, 3-4 with spot cones / classic falloff compiled in).
-*
+*           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
+*           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
 *       #define RBL_SHADER_CACHE_SIZE 32
-*           Distinct lit shader variants kept for reuse: loading an identical RblLitShaderDesc again
-*           returns the same program (reference counted) instead of compiling it twice.
-*
+*           Programs the registry holds: lit variants (equal descs share one), 2 casters while a shadow
+*           map is loaded, 5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
-*           Billboards a batch reserves when RblLoadBatch() is given 0.
-*
+*           Billboards a batch, or instances an instance buffer, reserves when loaded with 0.
 *       #define RBL_MAX_SHADOWS 4
-*           Shadow maps one receiver variant may sample (desc.shadowMaps); at most 4.
-*
+*           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
-*           Shadow map k is bound to texture unit 12 + k by RblSetShadows (raylib's materials use 0..11;
-*           GL 3.3 guarantees 16 units per stage).
-*
+*           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
 *       #define RBL_SHADOW_MAX_FILTER 6
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
-*
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
-*
 *       #define RBLAPI
 *           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
 *           __declspec(dllexport/dllimport) on Windows, as in raylib.
@@ -261,8 +283,8 @@
 *   VERSIONS HISTORY:
 *       0.1 (2026-11-22) First release: geometry (all facing modes, flips, rotated frames, rounded
 *                        normals), immediate, batched and instanced paths, packed material maps,
-*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog, tonemap),
-*                        deferred helper (10-byte G-buffer, light volumes, debug views).
+*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog,
+*                        tonemap), deferred helper (10-byte G-buffer, light volumes, debug views).
 *       0.2 (2026-11-23) Shadows: directional and spot shadow maps cast by billboards (alpha-tested,
 *                        every path) and Models, received forward and deferred; RblView gained the
 *                        shadow pass's light and minimum cast angle (zero outside shadow passes).
@@ -270,6 +292,45 @@
 *                        (RblBatch gained RblFrameCache), rotation uses an exact-in-degrees sin/cos
 *                        (quadrant angles exact), instanced draws upload the caller's array directly
 *                        when every instance is valid; the instance bound is now |value| < 2^120.
+*       0.4 (2026-11-23) The 1.0 API shape: a lit program is a raylib Shader of compiled features only;
+*                        values travel with the Material; one RblScene a frame (lights, ambient, fog,
+*                        exposure, shadow maps) for every program and G-buffer; RblDrawModel/Mesh;
+*                        one program registry; raylib's UnloadShader on a lit program is survivable.
+*         0.3 -> 0.4 (old -> new):
+*           RblLitShader lit = RblLoadLitShader(d)     Shader lit = RblLoadLitShader(d)
+*           material.shader = lit.shader               material.shader = lit
+*           RblIsLitShaderValid(lit)                   RblIsLitShaderValid(shader) (a Shader)
+*           RblUnloadLitShader(lit)                    RblUnloadLitShader(&shader) (zeroes it)
+*           RblSetLights(&lit, lights, n, ambient)     scene.lights, .lightCount, .ambient; RblSetScene
+*           RblSetHemisphereAmbient(&lit, sky, gr, up) scene.ambient = sky, .ambientGround, .ambientUp
+*           RblSetFog(&lit, fog)                       scene.fog
+*           RblSetExposure(&lit, e)                    scene.exposure
+*           RblSetShadows(&lit, maps, n)               scene.shadowMaps, .shadowMapCount (after passes)
+*           RblSetGBufferShadows(&g, maps, n)          scene.shadowMaps, .shadowMapCount
+*           RblSetGBufferHemisphere(&g, ground, up)    scene.ambientGround, .ambientUp
+*           RblLoadGBuffer(w, h, shadingDesc)          RblLoadGBuffer(gdesc), an RblGBufferDesc
+*           RblIsGBufferValid(g)                       RblIsGBufferValid(&g)
+*           RblGBufferBytesPerPixel(g)                 RblGBufferBytesPerPixel(&g)
+*           RblDrawDeferredLights(&g, l, n, ambient)   RblSetScene(&scene); RblDrawDeferredLights(&g)
+*           RblBeginShadowMap(&map, lights, i, c, r)   RblBeginShadowMap(&map, &scene, i, c, r)
+*           RblDrawModelShadow(model, p, s, tint)      RblDrawModel(model, p, s, tint) inside the pass
+*           desc.specular                              params[RBL_PARAM_SPECULAR]
+*           desc.specularColor                         maps[MATERIAL_MAP_SPECULAR].color
+*           desc.shininess                             maps[MATERIAL_MAP_NORMAL].value
+*           desc.roughness                             maps[MATERIAL_MAP_ROUGHNESS].value
+*           desc.metalness                             maps[MATERIAL_MAP_METALNESS].value
+*           desc.emissiveColor                         maps[MATERIAL_MAP_EMISSION].color
+*           desc.emissiveIntensity                     maps[MATERIAL_MAP_EMISSION].value
+*           desc.alphaCutoff                           params[RBL_PARAM_ALPHA_CUTOFF] (casters too)
+*           desc.hemisphereAmbient                     removed: always on; scene.ambientGround 0 = flat
+*           desc.fog (RblFog)                          desc.fog (RblFogMode compiled in) + scene.fog
+*           desc.exposure                              scene.exposure
+*           desc.maxLights 0 = 1                       desc.maxLights 0 = 4
+*           desc.shadowCaster                          removed (casters are the header's)
+*           gbuffer.shading (RblLitShaderDesc)         gbuffer.desc (RblGBufferDesc)
+*           gbuffer.passes[] (Shader)                  gbuffer.passes[] (program ids, the registry's)
+*           map.caster, map.casterInstanced            removed (casters are the header's)
+*           instanceBuffer.shaderId, .shaderGeneration, .loc   removed (the registry keeps locations)
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
@@ -301,9 +362,9 @@
 #include "raylib.h"
 
 #define RBILLBOARD_LIT_VERSION_MAJOR 0
-#define RBILLBOARD_LIT_VERSION_MINOR 3
+#define RBILLBOARD_LIT_VERSION_MINOR 4
 #define RBILLBOARD_LIT_VERSION_PATCH 0
-#define RBILLBOARD_LIT_VERSION "0.3.0"
+#define RBILLBOARD_LIT_VERSION "0.4.0"
 
 // Function specifiers for a shared library build on Windows (as raylib's BUILD_LIBTYPE_SHARED)
 #ifndef RBLAPI
@@ -444,15 +505,12 @@ typedef struct RblInstancedDesc {
     float roundness;                // As RblBillboard.roundness
 } RblInstancedDesc;
 
-// GPU instance buffer plus a staging copy (validated) and the instanced uniforms of the last shader
+// GPU instance buffer plus a staging copy (validated)
 typedef struct RblInstanceBuffer {
     RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
     int capacity;                   // Instances reserved
     unsigned int vaoId;             // Vertex array (instance attributes only)
     unsigned int vboId;             // Instance buffer
-    unsigned int shaderId;          // Shader the cached location belongs to
-    unsigned int shaderGeneration;  // Programs loaded/unloaded by this header when it was cached (ids get reused)
-    int loc;                        // rblInstancing uniform location (looked up once per shader)
     int skipped;                    // Instances skipped for bad input in the last draw
 } RblInstanceBuffer;
 
@@ -493,7 +551,7 @@ typedef struct RblMaterialSource {
     bool mipmaps;                   // Build mip chains (normals renormalised, colour averaged in linear light)
 } RblMaterialSource;
 
-// Packing output (CPU Images; upload with LoadTextureFromImage or RblLoadPackedMaterial)
+// Packing output (CPU Images; upload with LoadTextureFromImage or RblLoadPackedTextures)
 typedef struct RblPackedMaterial {
     Image albedo;                   // RGBA8 sRGB, gutters dilated
     Image material;                 // RGBA8: RG normal, B specular, A occlusion (data == NULL if nothing to store)
@@ -577,62 +635,41 @@ typedef struct RblFog {
     float density;                  // Exp, exp2: density per world unit (>= 0)
 } RblFog;
 
-// Lit shader variant request; zero means default. Only what is asked for is compiled in.
+// Lit program request; zero means default. Only what changes the compiled code is here: per-material
+// values (colours, specular, roughness, emission, alpha cutoff) travel with each draw's Material, and
+// lights, ambient, fog, exposure and shadow maps with the frame's RblScene.
 typedef struct RblLitShaderDesc {
-    int maxLights;                  // Light slots compiled in (0 = 1, at most RBL_MAX_LIGHTS)
+    int maxLights;                  // Light slots compiled in (0 = 4, at most RBL_MAX_LIGHTS); the scene's first lights fill them
     int lightFeatures;              // RblLightFeature flags (0 = point lights, windowed falloff); see RblLightFeatures()
     RblMaterialLayout material;     // Maps the material provides (zero = albedo only; see RblPackMaterial)
     int brdf;                       // RblBrdf (0 = Lambert)
-    float specular;                 // Blinn-Phong specular intensity (0 = 0.5; with a specular map, scales the map: 0 = 1)
-    float shininess;                // Blinn-Phong exponent (0 = 32; below 1 clamps to 1)
-    Color specularColor;            // Blinn-Phong specular colour (sRGB; zero = white)
-    float roughness;                // GGX perceptual roughness without a map, 0..1 (0 = 0.5; below 0.045 clamps, so 1e-6 is a mirror)
-    float metalness;                // GGX metalness 0..1 (0 = dielectric); a specular map holds roughness for GGX
-    Color emissiveColor;            // Constant emission (sRGB x emissiveIntensity; zero = none)
-    float emissiveIntensity;        // Scale of the emission (0 = 1)
-    float alphaCutoff;              // Discard fragments below this alpha (0 = 0.5; negative = never)
-    bool hemisphereAmbient;         // Sky/ground ambient by normal (RblSetHemisphereAmbient) instead of a flat colour
-    RblFog fog;                     // Fog (mode 0 = none); change it later with RblSetFog()
+    int fog;                        // RblFogMode compiled in (0 = none); the scene's fog of that mode applies
     int tonemap;                    // RblTonemap (0 = none: clamp)
-    float exposure;                 // Radiance scale before the tonemap (0 = 1); change it with RblSetExposure()
     float gamma;                    // Display encoding pow(c, 1/gamma) (0 = the exact sRGB curve)
+    bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
+    int shadowMaps;                 // Scene shadow maps received (0 = none, at most RBL_MAX_SHADOWS)
+    int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
-    bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
     int debugView;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
-    int shadowMaps;                 // Shadow maps received (0 = none, at most RBL_MAX_SHADOWS); see RblSetShadows()
-    int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
-    bool shadowCaster;              // Depth-only caster variant, alpha-tested (RblLoadShadowMap loads these)
 } RblLitShaderDesc;
 
-// Lit shader: a raylib Shader plus its uniform locations (looked up once, when the variant compiles)
-typedef struct RblLitShader {
-    Shader shader;                  // Use as Material.shader for billboards and Models
-    int maxLights;                  // Light slots compiled in
-    int lightFeatures;              // RblLightFeature flags compiled in
-    int brdf;                       // RblBrdf
-    int fogMode;                    // RblFogMode compiled in
-    RblMaterialLayout material;     // Maps the variant samples
-    bool instanced;                 // Variant expands RblInstance data
-    int locLightCount;              // Uniform locations (-1 where the variant has no such uniform)
-    int locLightPosition;
-    int locLightColor;
-    int locLightSpot;
-    int locLightAttenuation;
-    int locAmbient;
-    int locAmbientGround;
-    int locAmbientUp;
-    int locFog;
-    int locFogStart;
-    int locExposure;
-    int locAlphaCutoff;
-    int shadowMaps;                 // Shadow maps received
-    int locShadowLight;
-    int locShadowMatrix;
-    int locShadowParams;
-    int locShadowBias;
-    int locShadowAxes;
-} RblLitShader;
+// Per-material values a lit program reads from raylib's Material at each draw (zero means default):
+//   maps[MATERIAL_MAP_ALBEDO].color      base colour x texture (raylib's colDiffuse)
+//   maps[MATERIAL_MAP_SPECULAR].color    Blinn-Phong specular colour (sRGB; zero = white; raylib uploads it as colSpecular)
+//   params[RBL_PARAM_SPECULAR]           Blinn-Phong specular intensity (0 = 0.5; with a specular map, its scale: 0 = 1)
+//   maps[MATERIAL_MAP_NORMAL].value      Blinn-Phong shininess (0 = 32; raylib's OBJ loader stores MTL Ns here)
+//   maps[MATERIAL_MAP_ROUGHNESS].value   GGX perceptual roughness without a map, 0..1 (0 = 0.5; below 0.045 clamps)
+//   maps[MATERIAL_MAP_METALNESS].value   GGX metalness 0..1 (raylib's glTF loader fills both)
+//   maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
+//   maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
+//   params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha (0 = 0.5; negative = never)
+// (raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS: its value holds the metalness, so the
+// Blinn-Phong intensity has a params slot of its own)
+typedef enum {
+    RBL_PARAM_ALPHA_CUTOFF = 0,     // Material.params index of the alpha cutoff
+    RBL_PARAM_SPECULAR = 1          // Material.params index of the Blinn-Phong specular intensity
+} RblMaterialParam;
 
 // Deferred debug views (RblSetGBufferView)
 typedef enum {
@@ -647,6 +684,20 @@ typedef enum {
     RBL_GBUFFER_VIEW_COUNT
 } RblGBufferView;
 
+// G-buffer request; zero means default. Geometry variants (RblLitShaderDesc.deferred) must use its brdf.
+typedef struct RblGBufferDesc {
+    int width;                      // Size in pixels (0 = the render size)
+    int height;
+    int brdf;                       // RblBrdf of the lighting passes (0 = Lambert)
+    int lightFeatures;              // RblLightFeature flags of the lighting passes (0 = point lights)
+    int fog;                        // RblFogMode of the resolve (0 = none)
+    int tonemap;                    // RblTonemap of the resolve
+    float gamma;                    // Display encoding of the resolve (0 = sRGB)
+    bool linearOutput;              // Resolve writes linear light
+    int shadowMaps;                 // Scene shadow maps received (0 = none, at most RBL_MAX_SHADOWS)
+    int shadowFilter;               // PCF footprint (0 = 2)
+} RblGBufferDesc;
+
 // Deferred G-buffer (RblLoadGBuffer): 10 bytes per pixel + depth + RGBA16F light accumulation
 typedef struct RblGBuffer {
     unsigned int id;                // Geometry framebuffer: 4 colour attachments + depth texture
@@ -658,9 +709,8 @@ typedef struct RblGBuffer {
     Texture2D params;               // RG8: Blinn-Phong shininess (16-bit log2) or GGX metalness
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
-    RblLitShaderDesc shading;       // BRDF, light features, ambient, fog, tonemap of the lighting passes
-    Shader passes[5];               // Ambient + unbounded lights, volumes, resolve, and the two light-count variants
-    int locs[5][32];                // Uniform locations per pass (looked up once, at load)
+    RblGBufferDesc desc;            // Settings, defaults applied
+    unsigned int passes[5];         // Lighting pass programs (owned by the header's program registry)
     unsigned int volumeVao;         // Sphere proxy (vertex + index buffers) with per-light instance data
     unsigned int volumeVbo;
     unsigned int volumeIbo;
@@ -668,21 +718,15 @@ typedef struct RblGBuffer {
     unsigned int emptyVao;          // Full-screen triangle (positions from gl_VertexID)
     int volumeIndexCount;
     int instanceCapacity;           // Lights the instance buffer holds (grows with a log line)
-    float *instanceData;            // CPU staging for the instance buffer (16 floats per light)
     Matrix view;                    // Camera of the last geometry pass
     Matrix projection;
     Vector3 eye;
     int debugView;                  // RblGBufferView
     float debugScale;               // Range of the depth/position/light-count views
     bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
-    Color ambientGround;            // Hemispheric ambient (shading.hemisphereAmbient): ground colour and up
-    Vector3 ambientUp;
+    bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
-    int shadowCount;                // Shadow maps given to RblSetGBufferShadows (<= shading.shadowMaps)
-    int shadowLight[RBL_MAX_SHADOWS];       // Light index each one shadows
-    unsigned int shadowTexture[RBL_MAX_SHADOWS];    // Their depth textures
-    float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix, params, bias, axes as lighting.glsl reads them
 } RblGBuffer;
 
 // Shadow map settings; zero means default (the biases are in shadow-map texels, see SHADOWS)
@@ -695,15 +739,13 @@ typedef struct RblShadowDesc {
     bool faceLight;                 // Billboards face the light in the shadow pass (default: the camera of the billboard call)
 } RblShadowDesc;
 
-// Shadow map of one directional or spot light: a depth texture, its light camera, and caster shaders
+// Shadow map of one directional or spot light: a depth texture and its light camera (caster programs are the header's)
 typedef struct RblShadowMap {
     unsigned int id;                // Framebuffer (depth attachment only)
     Texture2D depth;                // Depth texture (receivers compare in the shader: rlgl exposes no compare mode)
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
-    RblLitShader caster;            // Depth-only caster variants (vertex buffers and instanced), from the lit cache
-    RblLitShader casterInstanced;
-    int light;                      // Light index of the last RblBeginShadowMap (-1 before the first)
+    int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
     int lightType;                  // RBL_LIGHT_DIRECTIONAL or RBL_LIGHT_SPOT
     RblView lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
     Matrix view;                    // Light camera matrices of the last pass
@@ -717,6 +759,19 @@ typedef struct RblShadowMap {
     unsigned int savedFramebuffer;
     bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
 } RblShadowMap;
+
+// What lights the frame, set once per frame with RblSetScene(); zero means default
+typedef struct RblScene {
+    const RblLight *lights;         // Lights (read and packed by RblSetScene; the array may change afterwards)
+    int lightCount;                 // Forward programs light the first maxLights of them, the G-buffer every one
+    Color ambient;                  // Ambient colour (sRGB); the sky colour when ambientGround is given
+    Color ambientGround;            // Hemispheric ground colour (all zero = ambient: flat)
+    Vector3 ambientUp;              // Hemisphere up (zero = +Y)
+    RblFog fog;                     // Fog parameters (mode 0 = none); programs compiled with RblLitShaderDesc.fog apply it
+    float exposure;                 // Radiance scale before the tonemap (0 = 1)
+    const RblShadowMap *shadowMaps;  // Maps rendered this frame for lights of this scene (RblBeginShadowMap)
+    int shadowMapCount;             // At most RBL_MAX_SHADOWS
+} RblScene;
 
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
@@ -757,38 +812,34 @@ RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
 RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material); // Upload packed Images into material slots (GL): ALBEDO, NORMAL (material texture), EMISSION
 
 // Lights and the forward lit shader
-RBLAPI RblLitShader RblLoadLitShader(RblLitShaderDesc desc);                  // Compile a lit shader variant
-RBLAPI bool RblIsLitShaderValid(RblLitShader shader);                         // Check it compiled (not raylib's fallback)
-RBLAPI void RblUnloadLitShader(RblLitShader shader);                          // Unload a lit shader
-RBLAPI bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color ambient); // Upload lights and flat ambient (sky and ground when hemispheric); false = rejected, nothing changed
+// Lit programs (compiled features only) and the frame's scene
+RBLAPI Shader RblLoadLitShader(RblLitShaderDesc desc);                         // Lit program for Material.shader (equal descs share one program); id 0 + log on failure
+RBLAPI bool RblIsLitShaderValid(Shader shader);                                // Check it is a live lit program of this header (not raylib's fallback, not unloaded)
+RBLAPI void RblUnloadLitShader(Shader *shader);                                // Release this holder's reference and zero it (the program goes with its last holder)
 RBLAPI int RblLightFeatures(const RblLight *lights, int count);               // RblLightFeature flags a light set needs (for RblLitShaderDesc.lightFeatures)
-RBLAPI bool RblSetHemisphereAmbient(RblLitShader *shader, Color sky, Color ground, Vector3 up); // Sky/ground ambient (desc.hemisphereAmbient); false = rejected
-RBLAPI bool RblSetFog(RblLitShader *shader, RblFog fog);                     // Change fog parameters (same mode as compiled); false = rejected
-RBLAPI bool RblSetExposure(RblLitShader *shader, float exposure);            // Change exposure (variants with a tonemap or exposure); false = rejected
+RBLAPI bool RblSetScene(const RblScene *scene);                                // Lights, ambient, fog, exposure and shadow maps for every lit program and G-buffer; false = rejected, previous scene kept
+RBLAPI void RblDrawModel(Model model, Vector3 position, float scale, Color tint); // DrawModel with each material's lit values (colour, G-buffer or shadow pass)
+RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      // DrawMesh with the material's lit values (colour, G-buffer or shadow pass)
 
-// Deferred helper (GL): G-buffer, geometry pass, light volumes, resolve
-RBLAPI RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading); // Load a G-buffer (0 = render size); invalid + log when MRT/float targets/shaders fail
-RBLAPI bool RblIsGBufferValid(RblGBuffer gbuffer);                           // Check every target and pass loaded (false: render forward instead)
+// Deferred G-buffer
+RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
+RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
-RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer
-RBLAPI int RblGBufferBytesPerPixel(RblGBuffer gbuffer);                      // Bytes per pixel of the colour targets, excluding depth and accumulation
-RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with desc.deferred materials); false = not valid
+RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
+RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
+RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with deferred variants of the G-buffer's brdf); false = rejected
 RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
-RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int count, Color ambient); // Ambient + lights into the accumulation (bounded lights as volumes); false = rejected
-RBLAPI bool RblSetGBufferHemisphere(RblGBuffer *gbuffer, Color ground, Vector3 up); // Ground colour and up of the hemispheric ambient (sky = the ambient colour)
+RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's ambient and lights into the accumulation (bounded lights as volumes); false = rejected
 RBLAPI void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferView) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
-RBLAPI bool RblSetGBufferShadows(RblGBuffer *gbuffer, const RblShadowMap *maps, int count); // Shadow maps the next RblDrawDeferredLights receives (shading.shadowMaps); false = rejected
 
-// Shadows (GL): depth maps of directional and spot lights, cast by billboards and Models, received forward and deferred
-RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target and caster shaders; invalid + log on failure
-RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target and caster shaders loaded
-RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and release the caster shaders
-RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex, Vector3 focusCenter, float focusRadius); // Start the shadow pass of lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone; false = rejected
+// Shadows
+RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
+RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target loaded
+RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and zero it
+RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex, Vector3 focusCenter, float focusRadius); // Shadow pass of scene->lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone; false = rejected
 RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
-RBLAPI void RblDrawModelShadow(Model model, Vector3 position, float scale, Color tint); // Draw a Model as a caster inside a shadow pass (as DrawModel; alpha-tested like its colour pass)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
-RBLAPI bool RblSetShadows(RblLitShader *shader, const RblShadowMap *maps, int count); // Receivers: upload the maps' matrices, bind their depth textures; false = rejected
 
 #if defined(__cplusplus)
 }
@@ -831,24 +882,318 @@ typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(R
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
 
 //----------------------------------------------------------------------------------
+// Module Types and Structures Definition (private)
+//----------------------------------------------------------------------------------
+// Uniforms of every program the header compiles, looked up once per program into rbl__Program.loc
+// (-1 where a variant has none): one location mechanism for forward, deferred and shadow passes
+typedef enum {
+    RBL__U_LIGHT_COUNT = 0, RBL__U_LIGHT_POSITION, RBL__U_LIGHT_COLOR, RBL__U_LIGHT_SPOT, RBL__U_LIGHT_ATTENUATION,
+    RBL__U_AMBIENT, RBL__U_AMBIENT_GROUND, RBL__U_AMBIENT_UP, RBL__U_FOG, RBL__U_FOG_START, RBL__U_EXPOSURE,
+    RBL__U_SHADOW_LIGHT, RBL__U_SHADOW_MATRIX, RBL__U_SHADOW_PARAMS, RBL__U_SHADOW_BIAS, RBL__U_SHADOW_AXES,
+    RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
+    RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
+    RBL__U_DEBUG_VIEW, RBL__U_DEBUG_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P,
+    RBL__U_COUNT
+} rbl__Uniform;
+
+typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS } rbl__ProgramKind;
+enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMBIENT_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
+
+// What a program is compiled from: equal keys share one program
+typedef struct rbl__ProgramKey {
+    RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
+    int kind;                       // rbl__ProgramKind
+    int pass;                       // G-buffer pass of a RBL__KIND_PASS program
+} rbl__ProgramKey;
+
+// Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
+typedef struct rbl__MaterialValues {
+    Color specularColor, emissiveColor;
+    float specular, shininess, roughness, metalness, emissive, alphaCutoff;
+} rbl__MaterialValues;
+
+// One entry of the program registry
+typedef struct rbl__Program {
+    rbl__ProgramKey key;
+    Shader shader;                  // Program and the registry's own raylib locs (handles get copies)
+    int loc[RBL__U_COUNT];          // Uniform locations
+    int refs;                       // Holders: RblLoadLitShader handles, shadow maps, G-buffers
+    rbl__MaterialValues values;     // Last per-draw values uploaded
+    bool valuesValid;
+} rbl__Program;
+
+// A Shader handed out by RblLoadLitShader: its locs array is that holder's (raylib's UnloadShader frees it)
+typedef struct rbl__Handle {
+    int *locs;
+    unsigned int id;
+} rbl__Handle;
+
+// The frame's scene, validated and packed once by RblSetScene
+typedef struct rbl__Scene {
+    float *lights;                  // RBL__LIGHT_FLOATS per light: position, colour, spot (vec4 each), falloff (vec3), shadow map + 1
+    int *lightFeatures;             // RblLightFeature bits each light needs
+    float *staging;                 // Deferred volumes: bounded lights moved to the front
+    int lightCount;
+    int lightCapacity;
+    float ambient[3], ground[3], up[3];
+    float fog[4];                   // rgb linear colour, density or 1/(end - start)
+    float fogStart;
+    int fogMode;
+    float exposure;
+    int shadowCount;
+    int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
+    unsigned int shadowTexture[RBL_MAX_SHADOWS];
+    float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix, params, bias, axes as shadows.glsl reads them
+} rbl__Scene;
+
+// Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
+typedef struct rbl__State {
+    rbl__Program programs[RBL_SHADER_CACHE_SIZE];   // The one program registry (refs == 0: free slot)
+    rbl__Handle *handles;           // Live RblLoadLitShader handles
+    int handleCount;
+    int handleCapacity;
+    rbl__Scene scene;
+    RblBatch immediate;             // The immediate path's one-quad batch
+    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
+    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
+    int shadowMapsLoaded;           // Live shadow maps: they share the two caster programs
+    unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
+    bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
+} rbl__State;
+
+static rbl__State rbl__state;
+
+//----------------------------------------------------------------------------------
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
-static const char *const rbl__shader_deferred_fs[] = {
-    "// Deferred lighting passes, fragment stage. The loader prepends \"#version 330\", the defines and\n",
-    "// lighting.glsl, so lights, falloff, BRDFs, clamps, fog and tonemap are the forward path's code.\n",
-    "//   RBL_PASS 1          ambient + up to RBL_LIGHTS unbounded lights (directional, range 0), full screen\n",
-    "//   RBL_PASS 2          one bounded light per instance (volume), additive\n",
-    "//   RBL_PASS 3          resolve: fog, exposure, tonemap, display encoding, depth; debug views\n",
-    "//   RBL_COUNT_LIGHTS    passes 1-2 add the number of lights evaluated instead of light (heat map)\n",
+static const char *const rbl__shader_common[] = {
+    "// Common: constants and helpers every stage shares (the one sRGB transfer pair, safe normalise).\n",
+    "// Included first by every stage; includes nothing.\n",
+    "\n",
+    "#define RBL_PI 3.14159265358979\n",
+    "#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf\n",
+    "\n",
+    "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
+    "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
+    "{\n",
+    "    float len2 = dot(v, v);\n",
+    "    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;\n",
+    "}\n",
+    "\n",
+    "// Exact sRGB transfer functions (IEC 61966-2-1). Every raylib Color, albedo and emissive texel is\n",
+    "// sRGB; lighting runs in linear light.\n",
+    "vec3 rblSrgbToLinear(vec3 c)\n",
+    "{\n",
+    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
+    "}\n",
+    "\n",
+    "vec3 rblLinearToSrgb(vec3 c)\n",
+    "{\n",
+    "    c = clamp(c, 0.0, 1.0);\n",
+    "    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_deferred_ambient_fs[] = {
+    "// Deferred ambient pass, fragment stage, full screen: the scene's ambient (first chunk) and up to\n",
+    "// RBL_LIGHTS unbounded lights (directional, range 0), added into the accumulation target.\n",
+    "//   RBL_COUNT_LIGHTS    add the number of lights evaluated instead of light (heat-map view)\n",
+    "#include \"gbuffer_read.glsl\"\n",
+    "#include \"lights.glsl\"\n",
     "\n",
     "in vec2 fragUv;\n",
-    "#if RBL_PASS == 2\n",
+    "out vec4 finalColor;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    ivec2 texel = ivec2(gl_FragCoord.xy);\n",
+    "    float depth = texelFetch(rblGDepth, texel, 0).r;\n",
+    "    if (depth >= 1.0) discard;                          // background: nothing was drawn here\n",
+    "#ifdef RBL_COUNT_LIGHTS\n",
+    "    finalColor = vec4(vec3(float(rblLightCount)), 1.0);\n",
+    "#else\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, rblPositionFromDepth(texel, depth));\n",
+    "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_deferred_resolve_fs[] = {
+    "// Deferred resolve, fragment stage: the accumulated light through fog, exposure, tonemap and the\n",
+    "// display encoding (output.glsl), writing the G-buffer's depth for later forward draws; debug views.\n",
+    "#include \"gbuffer_read.glsl\"\n",
+    "#include \"output.glsl\"\n",
+    "\n",
+    "in vec2 fragUv;\n",
+    "uniform int rblDebugView;               // RblGBufferView\n",
+    "uniform float rblDebugScale;            // linear depth / position / light count range of the debug views\n",
+    "out vec4 finalColor;\n",
+    "\n",
+    "// Heat map for the light count view: black -> blue -> green -> yellow -> red -> white\n",
+    "vec3 rblHeat(float t)\n",
+    "{\n",
+    "    t = clamp(t, 0.0, 1.0)*5.0;\n",
+    "    vec3 c0 = vec3(0.0), c1 = vec3(0.0, 0.2, 1.0), c2 = vec3(0.0, 0.9, 0.3), c3 = vec3(1.0, 0.9, 0.0), c4 = vec3(1.0, 0.1, 0.0), c5 = vec3(1.0);\n",
+    "    if (t < 1.0) return mix(c0, c1, t);\n",
+    "    if (t < 2.0) return mix(c1, c2, t - 1.0);\n",
+    "    if (t < 3.0) return mix(c2, c3, t - 2.0);\n",
+    "    if (t < 4.0) return mix(c3, c4, t - 3.0);\n",
+    "    return mix(c4, c5, t - 4.0);\n",
+    "}\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    // The resolve covers the target with fragUv 0..1 (same size as the G-buffer expected; nearest texel otherwise)\n",
+    "    ivec2 texel = ivec2(min(fragUv*vec2(textureSize(rblGDepth, 0)), vec2(textureSize(rblGDepth, 0) - 1)));\n",
+    "    float depth = texelFetch(rblGDepth, texel, 0).r;\n",
+    "    if (depth >= 1.0) discard;                          // background: nothing was drawn here\n",
+    "    vec3 position = rblPositionFromDepth(texel, depth);\n",
+    "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
+    "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
+    "    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
+    "    vec3 v = vec3(0.0);\n",
+    "    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);\n",
+    "    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;\n",
+    "    else if (rblDebugView == 3) v = vec3(s.specular);\n",
+    "    else if (rblDebugView == 4) v = vec3(s.occlusion);\n",
+    "    else if (rblDebugView == 5) v = vec3(clamp(length(position - rblEye)/rblDebugScale, 0.0, 1.0));\n",
+    "    else if (rblDebugView == 6) v = fract(position/rblDebugScale);\n",
+    "    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);\n",
+    "    finalColor = vec4(v, 1.0);\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_deferred_volume_fs[] = {
+    "// Deferred light volume pass, fragment stage: one bounded light per instance, added into the\n",
+    "// accumulation target; pixels outside the light's range are rejected from depth alone.\n",
+    "//   RBL_COUNT_LIGHTS    add 1 per light evaluated instead of light (heat-map view)\n",
+    "#include \"gbuffer_read.glsl\"\n",
+    "#include \"lights.glsl\"\n",
+    "\n",
     "flat in vec4 volumePosition;\n",
     "flat in vec4 volumeColor;\n",
     "flat in vec4 volumeSpot;\n",
-    "flat in vec4 volumeFalloff;           // xyz attenuation, w shadow map index + 1 (0 = none)\n",
+    "flat in vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
+    "out vec4 finalColor;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    ivec2 texel = ivec2(gl_FragCoord.xy);\n",
+    "    float depth = texelFetch(rblGDepth, texel, 0).r;\n",
+    "    if (depth >= 1.0) discard;                          // background: nothing was drawn here\n",
+    "    vec3 position = rblPositionFromDepth(texel, depth);\n",
+    "    // Most of a proxy's pixels lie outside the light's range\n",
+    "    vec3 toLight = volumePosition.xyz - position;\n",
+    "    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;\n",
+    "#ifdef RBL_COUNT_LIGHTS\n",
+    "    finalColor = vec4(1.0);\n",
+    "#else\n",
+    "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
+    "    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);\n",
+    "#if RBL_SHADOWS > 0\n",
+    "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
+    "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
+    "    float NdotL = dot(s.normal, l);\n",
+    "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;\n",
+    "#else\n",
+    "    float shadow = 1.0;\n",
     "#endif\n",
+    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_fullscreen_vs[] = {
+    "// Full-screen triangle from gl_VertexID (deferred ambient/unbounded-light pass and resolve); no\n",
+    "// vertex buffer.\n",
+    "\n",
+    "out vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));     // (0,0) (2,0) (0,2)\n",
+    "    fragUv = p;\n",
+    "    gl_Position = vec4(p*2.0 - 1.0, 0.0, 1.0);\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_gbuffer_fs[] = {
+    "// Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the\n",
+    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit.\n",
+    "#include \"material.glsl\"\n",
+    "#include \"gbuffer_codec.glsl\"\n",
+    "\n",
+    "layout(location = 0) out vec4 rblOutAlbedo;\n",
+    "layout(location = 1) out vec4 rblOutNormal;\n",
+    "layout(location = 2) out vec4 rblOutParams;\n",
+    "layout(location = 3) out vec4 rblOutAccum;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    float alpha;\n",
+    "    vec3 emission, tangentNormal;\n",
+    "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
+    "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);\n",
+    "#if RBL_BRDF == 1\n",
+    "    // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)\n",
+    "    float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));\n",
+    "#else\n",
+    "    float specular = sp.specular;\n",
+    "#endif\n",
+    "    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));\n",
+    "#if RBL_BRDF == 1\n",
+    "    rblOutParams = vec4(rblPackShininess(sp.shininess), 0.0, 1.0);\n",
+    "#else\n",
+    "    rblOutParams = vec4(sp.metalness, 0.0, 0.0, 1.0);\n",
+    "#endif\n",
+    "    rblOutAccum = vec4(emission, 1.0);\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_gbuffer_codec[] = {
+    "// G-buffer codec: how the geometry pass packs a surface into 10 bytes per pixel and the lighting\n",
+    "// passes unpack it (RblLoadGBuffer; position is never stored, it comes back from depth):\n",
+    "//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a occlusion\n",
+    "//   RT1 RGBA8    rgb world normal, octahedral 12+12 bits, a specular (Blinn-Phong intensity, specular\n",
+    "//                colour luminance folded in / GGX perceptual roughness)\n",
+    "//   RT2 RG8      Blinn-Phong: log2(shininess)/11 in 16 bits (r high, g low byte); GGX: r metalness\n",
+    "//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then ambient and lights\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "// World normal <-> octahedral 12+12 bits in three 8-bit channels (the G-buffer's normal). Octahedral\n",
+    "// map (Cigolle et al. 2014), each coordinate rounded to 12 bits, packed high byte / two nibbles / low byte.\n",
+    "vec3 rblPackNormal(vec3 n)\n",
+    "{\n",
+    "    n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-20);\n",
+    "    vec2 e = n.xy;\n",
+    "    if (n.z < 0.0) e = (1.0 - abs(n.yx))*vec2((n.x >= 0.0)? 1.0 : -1.0, (n.y >= 0.0)? 1.0 : -1.0);\n",
+    "    uvec2 q = uvec2(floor(clamp(e*0.5 + 0.5, 0.0, 1.0)*4095.0 + 0.5));\n",
+    "    return vec3(float(q.x >> 4u), float(((q.x & 15u) << 4u) | (q.y >> 8u)), float(q.y & 255u))/255.0;\n",
+    "}\n",
+    "\n",
+    "vec3 rblUnpackNormal(vec3 c)\n",
+    "{\n",
+    "    uvec3 b = uvec3(floor(c*255.0 + 0.5));\n",
+    "    vec2 e = vec2(float((b.x << 4u) | (b.y >> 4u)), float(((b.y & 15u) << 8u) | b.z))/4095.0*2.0 - 1.0;\n",
+    "    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));\n",
+    "    float t = max(-n.z, 0.0);\n",
+    "    n.xy += vec2((n.x >= 0.0)? -t : t, (n.y >= 0.0)? -t : t);\n",
+    "    return normalize(n);        // |n| >= 1/sqrt(3): never zero\n",
+    "}\n",
+    "\n",
+    "// Blinn-Phong shininess <-> 16-bit code in two 8-bit channels\n",
+    "vec2 rblPackShininess(float shininess)\n",
+    "{\n",
+    "    float code = floor(clamp(log2(max(shininess, 1.0))/11.0, 0.0, 1.0)*65535.0 + 0.5);\n",
+    "    return vec2(floor(code/256.0)/255.0, mod(code, 256.0)/255.0);\n",
+    "}\n",
+    "\n",
+    "float rblUnpackShininess(float high, float low)\n",
+    "{\n",
+    "    return exp2((floor(high*255.0 + 0.5)*256.0 + floor(low*255.0 + 0.5))/65535.0*11.0);\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_gbuffer_read[] = {
+    "// G-buffer read: the targets of the geometry pass as a lighting pass sees them, the world position\n",
+    "// rebuilt from depth, and the surface unpacked (gbuffer_codec.glsl).\n",
+    "#include \"surface.glsl\"\n",
+    "#include \"gbuffer_codec.glsl\"\n",
     "\n",
     "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion\n",
     "uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specular/roughness\n",
@@ -859,23 +1204,6 @@ static const char *const rbl__shader_deferred_fs[] = {
     "uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's projection\n",
     "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
     "uniform vec3 rblEye;                    // camera position\n",
-    "#if RBL_PASS == 3\n",
-    "uniform int rblDebugView;               // RblGBufferView\n",
-    "uniform float rblDebugScale;            // linear depth / position / light count range of the debug views\n",
-    "#endif\n",
-    "\n",
-    "out vec4 finalColor;\n",
-    "\n",
-    "// Pixel coordinate in the G-buffer: the light passes draw at its size; the resolve covers the\n",
-    "// target with fragUv 0..1 (same size expected; nearest texel otherwise)\n",
-    "ivec2 rblTexel()\n",
-    "{\n",
-    "#if RBL_PASS == 3\n",
-    "    return ivec2(min(fragUv*vec2(textureSize(rblGDepth, 0)), vec2(textureSize(rblGDepth, 0) - 1)));\n",
-    "#else\n",
-    "    return ivec2(gl_FragCoord.xy);\n",
-    "#endif\n",
-    "}\n",
     "\n",
     "// World position from the depth buffer, in closed form (an inverse projection matrix would cancel two\n",
     "// large terms). Perspective: view distance z = n f/(f - d (f - n)) from the window depth d, then x, y\n",
@@ -909,178 +1237,29 @@ static const char *const rbl__shader_deferred_fs[] = {
     "    s.metalness = 0.0;\n",
     "#if RBL_BRDF == 1\n",
     "    // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
-    "    s.shininess = exp2((floor(p.r*255.0 + 0.5)*256.0 + floor(p.a*255.0 + 0.5))/65535.0*11.0);\n",
+    "    s.shininess = rblUnpackShininess(p.r, p.a);\n",
     "#elif RBL_BRDF == 2\n",
     "    s.metalness = p.r;\n",
     "#endif\n",
     "    return s;\n",
     "}\n",
-    "\n",
-    "// Heat map for the light count view: black -> blue -> green -> yellow -> red -> white\n",
-    "vec3 rblHeat(float t)\n",
-    "{\n",
-    "    t = clamp(t, 0.0, 1.0)*5.0;\n",
-    "    vec3 c0 = vec3(0.0), c1 = vec3(0.0, 0.2, 1.0), c2 = vec3(0.0, 0.9, 0.3), c3 = vec3(1.0, 0.9, 0.0), c4 = vec3(1.0, 0.1, 0.0), c5 = vec3(1.0);\n",
-    "    if (t < 1.0) return mix(c0, c1, t);\n",
-    "    if (t < 2.0) return mix(c1, c2, t - 1.0);\n",
-    "    if (t < 3.0) return mix(c2, c3, t - 2.0);\n",
-    "    if (t < 4.0) return mix(c3, c4, t - 3.0);\n",
-    "    return mix(c4, c5, t - 4.0);\n",
-    "}\n",
-    "\n",
-    "void main()\n",
-    "{\n",
-    "    ivec2 texel = rblTexel();\n",
-    "    float depth = texelFetch(rblGDepth, texel, 0).r;\n",
-    "    if (depth >= 1.0) discard;                          // background: nothing was drawn here\n",
-    "#if RBL_PASS == 3\n",
-    "    vec3 position = rblPositionFromDepth(texel, depth);\n",
-    "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
-    "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
-    "    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
-    "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
-    "    vec3 v = vec3(0.0);\n",
-    "    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);\n",
-    "    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;\n",
-    "    else if (rblDebugView == 3) v = vec3(s.specular);\n",
-    "    else if (rblDebugView == 4) v = vec3(s.occlusion);\n",
-    "    else if (rblDebugView == 5) v = vec3(clamp(length(position - rblEye)/rblDebugScale, 0.0, 1.0));\n",
-    "    else if (rblDebugView == 6) v = fract(position/rblDebugScale);\n",
-    "    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);\n",
-    "    finalColor = vec4(v, 1.0);\n",
-    "#else\n",
-    "    vec3 position = rblPositionFromDepth(texel, depth);\n",
-    "#if RBL_PASS == 2\n",
-    "    // Most of a proxy's pixels lie outside the light's range: reject them from depth alone\n",
-    "    vec3 toLight = volumePosition.xyz - position;\n",
-    "    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;\n",
-    "#endif\n",
-    "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
-    "    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);\n",
-    "#if RBL_PASS == 1\n",
-    "#ifdef RBL_COUNT_LIGHTS\n",
-    "    finalColor = vec4(vec3(float(rblLightCount)), 1.0);\n",
-    "#else\n",
-    "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);\n",
-    "#endif\n",
-    "#else\n",
-    "#ifdef RBL_COUNT_LIGHTS\n",
-    "    finalColor = vec4(1.0);\n",
-    "#else\n",
-    "#if RBL_SHADOWS > 0\n",
-    "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
-    "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
-    "    float NdotL = dot(s.normal, l);\n",
-    "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;\n",
-    "#else\n",
-    "    float shadow = 1.0;\n",
-    "#endif\n",
-    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);\n",
-    "#endif\n",
-    "#endif\n",
-    "#endif\n",
-    "}\n",
     NULL };
-static const char *const rbl__shader_deferred_vs[] = {
-    "// Deferred lighting passes, vertex stage. The loader prepends \"#version 330\" and the defines:\n",
-    "//   RBL_PASS 1  full-screen triangle from gl_VertexID (ambient + unbounded lights, resolve)\n",
-    "//   RBL_PASS 2  light volume: a sphere proxy per bounded point/spot light, one instanced draw\n",
-    "\n",
-    "out vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
-    "\n",
-    "#if RBL_PASS == 2\n",
-    "in vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
-    "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
-    "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
-    "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
-    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
-    "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
-    "flat out vec4 volumePosition;\n",
-    "flat out vec4 volumeColor;\n",
-    "flat out vec4 volumeSpot;\n",
-    "flat out vec4 volumeFalloff;\n",
-    "\n",
-    "void main()\n",
-    "{\n",
-    "    volumePosition = rblVolumePosition;\n",
-    "    volumeColor = rblVolumeColor;\n",
-    "    volumeSpot = rblVolumeSpot;\n",
-    "    volumeFalloff = rblVolumeFalloff;\n",
-    "    gl_Position = mvp*vec4(rblVolumePosition.xyz + vertexPosition/rblVolumeColor.a, 1.0);\n",
-    "    fragUv = (gl_Position.xy/gl_Position.w)*0.5 + 0.5;     // unused: the fragment stage uses gl_FragCoord\n",
-    "}\n",
-    "#else\n",
-    "void main()\n",
-    "{\n",
-    "    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));     // (0,0) (2,0) (0,2)\n",
-    "    fragUv = p;\n",
-    "    gl_Position = vec4(p*2.0 - 1.0, 0.0, 1.0);\n",
-    "}\n",
-    "#endif\n",
-    NULL };
-static const char *const rbl__shader_gbuffer_fs[] = {
-    "// Deferred geometry pass: the forward shader's material decoding (material.glsl), written to the\n",
-    "// G-buffer instead of being lit. The loader prepends \"#version 330\", the variant #defines,\n",
-    "// lighting.glsl and material.glsl. Layout (RblLoadGBuffer; 10 bytes per pixel + depth):\n",
-    "//   location 0  RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a occlusion\n",
-    "//   location 1  RGBA8    rgb world normal, octahedral 12+12 bits (rblPackNormal), a specular\n",
-    "//                        (Blinn-Phong intensity / GGX perceptual roughness)\n",
-    "//   location 2  RG8      Blinn-Phong: log2(shininess)/11 in 16 bits (r high, g low byte); GGX: r metalness\n",
-    "//   location 3  RGBA16F  light accumulation: the emission goes in here now, lights are added later\n",
-    "// Position is never stored: the lighting passes rebuild it from the depth texture.\n",
-    "\n",
-    "layout(location = 0) out vec4 rblOutAlbedo;\n",
-    "layout(location = 1) out vec4 rblOutNormal;\n",
-    "layout(location = 2) out vec4 rblOutParams;\n",
-    "layout(location = 3) out vec4 rblOutAccum;\n",
-    "\n",
-    "void main()\n",
-    "{\n",
-    "    float alpha;\n",
-    "    vec3 emission, tangentNormal;\n",
-    "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
-    "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);\n",
-    "#if RBL_BRDF == 1\n",
-    "    // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)\n",
-    "    float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));\n",
-    "#else\n",
-    "    float specular = sp.specular;\n",
-    "#endif\n",
-    "    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));\n",
-    "#if RBL_BRDF == 1\n",
-    "    float code = floor(clamp(log2(max(sp.shininess, 1.0))/11.0, 0.0, 1.0)*65535.0 + 0.5);\n",
-    "    rblOutParams = vec4(floor(code/256.0)/255.0, mod(code, 256.0)/255.0, 0.0, 1.0);\n",
-    "#else\n",
-    "    rblOutParams = vec4(sp.metalness, 0.0, 0.0, 1.0);\n",
-    "#endif\n",
-    "    rblOutAccum = vec4(emission, 1.0);\n",
-    "}\n",
-    NULL };
-static const char *const rbl__shader_lighting[] = {
-    "// Shared lighting code: lights, falloff, BRDFs, fog and output transform. The loader places it after\n",
-    "// the variant #defines and before the stage that shades (lit.fs.glsl), so every path evaluates the\n",
-    "// same equations. Units: a light of linear colour c and intensity I delivers irradiance\n",
-    "// E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the light, so a white\n",
-    "// Lambert surface lit head-on by E = 1 returns exactly 1 (the scale raylib's lighting examples use).\n",
-    "// Variant defines (only what a material and light set use is compiled):\n",
+static const char *const rbl__shader_lights[] = {
+    "// Lights: light and ambient uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,\n",
+    "// GGX), and the sum over the light slots. Units: a light of linear colour c and intensity I delivers\n",
+    "// irradiance E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the\n",
+    "// light, so a white Lambert surface lit head-on by E = 1 returns exactly 1.\n",
     "//   RBL_LIGHTS n              light slots\n",
     "//   RBL_LIGHT_DIRECTIONAL     directional lights present (rblLightPosition.w = 0)\n",
     "//   RBL_LIGHT_SPOT            spot cones\n",
     "//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation\n",
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
-    "//   RBL_AMBIENT_HEMI          hemispheric ambient (sky/ground by normal) instead of a flat colour\n",
-    "//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by distance to the eye)\n",
-    "//   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)\n",
-    "//   RBL_EXPOSURE              multiply by rblExposure before the tonemap\n",
-    "//   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve\n",
-    "//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light\n",
-    "//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup\n",
+    "#include \"surface.glsl\"\n",
+    "#include \"shadows.glsl\"\n",
     "\n",
-    "#define RBL_PI 3.14159265358979\n",
     "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
     "#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite\n",
-    "#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf\n",
     "\n",
     "#if RBL_LIGHTS > 0\n",
     "uniform int rblLightCount;\n",
@@ -1093,88 +1272,12 @@ static const char *const rbl__shader_lighting[] = {
     "uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (windowed lights: 0, 0, 1)\n",
     "#endif\n",
     "#endif\n",
-    "uniform vec3 rblAmbient;                    // linear; the sky colour when hemispheric\n",
-    "#ifdef RBL_AMBIENT_HEMI\n",
-    "uniform vec3 rblAmbientGround;              // linear\n",
+    "uniform vec3 rblAmbient;                    // linear sky colour (the scene's ambient)\n",
+    "uniform vec3 rblAmbientGround;              // linear ground colour (= rblAmbient for a flat ambient)\n",
     "uniform vec3 rblAmbientUp;                  // unit\n",
-    "#endif\n",
-    "#if RBL_FOG > 0\n",
-    "uniform vec4 rblFog;                        // rgb linear colour, a: density (exp/exp2) or 1/(end - start) (linear)\n",
-    "uniform float rblFogStart;                  // linear fog: distance where it begins\n",
-    "#endif\n",
-    "#ifdef RBL_EXPOSURE\n",
-    "uniform float rblExposure;\n",
-    "#endif\n",
     "#if RBL_SHADOWS > 0\n",
     "uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)\n",
-    "uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w\n",
-    "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far\n",
-    "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
-    "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
-    "uniform sampler2D rblShadowMap0;            // depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
-    "#if RBL_SHADOWS > 1\n",
-    "uniform sampler2D rblShadowMap1;\n",
     "#endif\n",
-    "#if RBL_SHADOWS > 2\n",
-    "uniform sampler2D rblShadowMap2;\n",
-    "#endif\n",
-    "#if RBL_SHADOWS > 3\n",
-    "uniform sampler2D rblShadowMap3;\n",
-    "#endif\n",
-    "#endif\n",
-    "\n",
-    "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
-    "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
-    "{\n",
-    "    float len2 = dot(v, v);\n",
-    "    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;\n",
-    "}\n",
-    "\n",
-    "// Exact sRGB transfer functions (IEC 61966-2-1)\n",
-    "vec3 rblSrgbToLinear(vec3 c)\n",
-    "{\n",
-    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
-    "}\n",
-    "\n",
-    "vec3 rblLinearToSrgb(vec3 c)\n",
-    "{\n",
-    "    c = clamp(c, 0.0, 1.0);\n",
-    "    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));\n",
-    "}\n",
-    "\n",
-    "// World normal <-> octahedral 12+12 bits in three 8-bit channels (the G-buffer's normal). Octahedral\n",
-    "// map (Cigolle et al. 2014), each coordinate rounded to 12 bits, packed high byte / two nibbles / low byte.\n",
-    "vec3 rblPackNormal(vec3 n)\n",
-    "{\n",
-    "    n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-20);\n",
-    "    vec2 e = n.xy;\n",
-    "    if (n.z < 0.0) e = (1.0 - abs(n.yx))*vec2((n.x >= 0.0)? 1.0 : -1.0, (n.y >= 0.0)? 1.0 : -1.0);\n",
-    "    uvec2 q = uvec2(floor(clamp(e*0.5 + 0.5, 0.0, 1.0)*4095.0 + 0.5));\n",
-    "    return vec3(float(q.x >> 4u), float(((q.x & 15u) << 4u) | (q.y >> 8u)), float(q.y & 255u))/255.0;\n",
-    "}\n",
-    "\n",
-    "vec3 rblUnpackNormal(vec3 c)\n",
-    "{\n",
-    "    uvec3 b = uvec3(floor(c*255.0 + 0.5));\n",
-    "    vec2 e = vec2(float((b.x << 4u) | (b.y >> 4u)), float(((b.y & 15u) << 8u) | b.z))/4095.0*2.0 - 1.0;\n",
-    "    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));\n",
-    "    float t = max(-n.z, 0.0);\n",
-    "    n.xy += vec2((n.x >= 0.0)? -t : t, (n.y >= 0.0)? -t : t);\n",
-    "    return normalize(n);        // |n| >= 1/sqrt(3): never zero\n",
-    "}\n",
-    "\n",
-    "// What a surface point needs for shading, in linear units (filled by the forward fragment stage from\n",
-    "// maps and uniforms, or by the deferred passes from the G-buffer)\n",
-    "struct RblShadingPoint {\n",
-    "    vec3 position;      // world\n",
-    "    vec3 normal;        // unit, world\n",
-    "    vec3 albedo;        // linear base colour\n",
-    "    float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness\n",
-    "    float occlusion;    // ambient occlusion (indirect light only)\n",
-    "    vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)\n",
-    "    float shininess;    // Blinn-Phong exponent\n",
-    "    float metalness;    // GGX\n",
-    "};\n",
     "\n",
     "// Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0\n",
     "vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)\n",
@@ -1212,11 +1315,7 @@ static const char *const rbl__shader_lighting[] = {
     "// specular reflectance of a uniform environment, without a split-sum table).\n",
     "vec3 rblAmbientLight(RblShadingPoint s)\n",
     "{\n",
-    "#ifdef RBL_AMBIENT_HEMI\n",
     "    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);\n",
-    "#else\n",
-    "    vec3 ambient = rblAmbient;\n",
-    "#endif\n",
     "#if RBL_BRDF == 2\n",
     "    vec3 reflectance = s.albedo*(1.0 - s.metalness) + mix(vec3(0.04), s.albedo, s.metalness);\n",
     "#else\n",
@@ -1226,76 +1325,6 @@ static const char *const rbl__shader_lighting[] = {
     "}\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
-    "// Distance along the light's axis from a window depth of map k (prm: texel, perspective, near, far)\n",
-    "float rblShadowDistance(float d, vec4 prm)\n",
-    "{\n",
-    "    return (prm.y > 0.5)? prm.z*prm.w/(prm.w - d*(prm.w - prm.z)) : prm.z + d*(prm.w - prm.z);\n",
-    "}\n",
-    "\n",
-    "// Fraction of light k's map lets through to a surface point with unit normal n, lit at cos(incidence)\n",
-    "// NdotL (> 0). Depths are compared as distances along the light's axis, in world units:\n",
-    "//   normal offset   the lookup moves along n by normal*texel*sin(incidence) (lateral shift <= that)\n",
-    "//   receiver plane  each PCF fetch is compared with the receiver's own plane extended to that texel's\n",
-    "//                   centre (depth gradient from n in the light's frame, clamped at 10 texels per\n",
-    "//                   texel), so a flat receiver never shadows itself at any incidence below 84 degrees\n",
-    "//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10\n",
-    "// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2\n",
-    "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
-    "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
-    "// outside the map or of a texel nothing was drawn into.\n",
-    "float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)\n",
-    "{\n",
-    "    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];\n",
-    "    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);\n",
-    "    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);\n",
-    "    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here\n",
-    "    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));\n",
-    "    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);\n",
-    "    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);\n",
-    "    if (!(c.w > 0.0)) return 1.0;\n",
-    "    vec3 q = c.xyz/c.w;\n",
-    "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;\n",
-    "    float z = rblShadowDistance(max(q.z, 0.0), prm) - texel*(bias.x + bias.y*tanI);\n",
-    "    // Receiver plane: distance change per texel step along the map's x and y\n",
-    "    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);\n",
-    "    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;\n",
-    "    float size = bias.w;\n",
-    "    vec2 st = q.xy*size - 0.5*float(RBL_SHADOW_FILTER);         // first bilinear tap's position - 0.5, in texels\n",
-    "    vec2 base = floor(st), f = st - base;\n",
-    "    ivec2 b0 = ivec2(base), top = ivec2(int(size) - 1);\n",
-    "    vec2 origin = base + 0.5 - q.xy*size;                       // first fetched centre relative to the point\n",
-    "    float lit = 0.0;\n",
-    "    for (int j = 0; j <= RBL_SHADOW_FILTER; j++)\n",
-    "    {\n",
-    "        float wy = (j == 0)? 1.0 - f.y : ((j == RBL_SHADOW_FILTER)? f.y : 1.0);\n",
-    "        for (int i = 0; i <= RBL_SHADOW_FILTER; i++)\n",
-    "        {\n",
-    "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
-    "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
-    "            ivec2 at = b0 + ivec2(i, j);\n",
-    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;\n",
-    "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
-    "            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
-    "        }\n",
-    "    }\n",
-    "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
-    "}\n",
-    "\n",
-    "float rblShadow(int k, vec3 position, vec3 n, float NdotL)\n",
-    "{\n",
-    "    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);\n",
-    "#if RBL_SHADOWS > 1\n",
-    "    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);\n",
-    "#endif\n",
-    "#if RBL_SHADOWS > 2\n",
-    "    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);\n",
-    "#endif\n",
-    "#if RBL_SHADOWS > 3\n",
-    "    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);\n",
-    "#endif\n",
-    "    return 1.0;\n",
-    "}\n",
-    "\n",
     "// Light that map k shadows, at this point: the map's lookup, or 1 (unlit side, or no such light). Done\n",
     "// once per map before the light loop, not per light slot (CPU rasterisers run every branch of a loop)\n",
     "float rblShadowOfMap(int k, RblShadingPoint s, int light)\n",
@@ -1381,45 +1410,13 @@ static const char *const rbl__shader_lighting[] = {
     "#endif\n",
     "    return sum;\n",
     "}\n",
-    "\n",
-    "// Fog, exposure, tonemap and the display encoding, in that order. linearOut keeps linear light\n",
-    "// (clamped to half-float range) for float targets.\n",
-    "vec3 rblFinish(vec3 color, vec3 position, vec3 eye)\n",
-    "{\n",
-    "#if RBL_FOG > 0\n",
-    "    float d = length(position - eye);\n",
-    "#if RBL_FOG == 1\n",
-    "    float visible = clamp(1.0 - (d - rblFogStart)*rblFog.a, 0.0, 1.0);\n",
-    "#elif RBL_FOG == 2\n",
-    "    float visible = exp(-rblFog.a*d);\n",
-    "#else\n",
-    "    float visible = exp(-(rblFog.a*d)*(rblFog.a*d));\n",
-    "#endif\n",
-    "    color = mix(rblFog.rgb, color, visible);\n",
-    "#endif\n",
-    "    color = clamp(color, 0.0, RBL_HALF_MAX);\n",
-    "#ifdef RBL_EXPOSURE\n",
-    "    color *= rblExposure;\n",
-    "#endif\n",
-    "#if RBL_TONEMAP == 1\n",
-    "    color = color/(1.0 + color);\n",
-    "#elif RBL_TONEMAP == 2\n",
-    "    color = min(color, vec3(RBL_HALF_MAX));\n",
-    "    color = clamp(color*(2.51*color + 0.03)/(color*(2.43*color + 0.59) + 0.14), 0.0, 1.0);\n",
-    "#endif\n",
-    "#if defined(RBL_LINEAR_OUTPUT)\n",
-    "    return min(color, vec3(RBL_HALF_MAX));\n",
-    "#elif defined(RBL_GAMMA)\n",
-    "    return pow(clamp(color, 0.0, 1.0), vec3(1.0/RBL_GAMMA));\n",
-    "#else\n",
-    "    return rblLinearToSrgb(color);\n",
-    "#endif\n",
-    "}\n",
     NULL };
 static const char *const rbl__shader_lit_fs[] = {
-    "// Forward lit fragment shader for billboards and raylib Models. The loader prepends \"#version 330\",\n",
-    "// the variant #defines, lighting.glsl (lights, BRDFs, fog, tonemap) and material.glsl (surface\n",
-    "// decoding), so the deferred passes evaluate exactly the same code.\n",
+    "// Forward pass, fragment stage, for billboards and raylib Models: material -> lights -> output, the\n",
+    "// same code the deferred passes evaluate.\n",
+    "#include \"material.glsl\"\n",
+    "#include \"lights.glsl\"\n",
+    "#include \"output.glsl\"\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
     "//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
@@ -1451,9 +1448,10 @@ static const char *const rbl__shader_lit_fs[] = {
     "}\n",
     NULL };
 static const char *const rbl__shader_lit_vs[] = {
-    "// Forward lit vertex shader: billboards (world-space vertices, matModel = identity) and raylib\n",
-    "// Models (matModel = the model transform) go through the same code.\n",
-    "// The loader prepends \"#version 330\" and the variant's #defines.\n",
+    "// Lit vertex stage of vertex-buffer geometry: billboards (world-space vertices, matModel = identity)\n",
+    "// and raylib Models (matModel = the model transform) go through the same code. Pairs with lit.fs.glsl,\n",
+    "// gbuffer.fs.glsl and shadow_caster.fs.glsl.\n",
+    "#include \"common.glsl\"\n",
     "\n",
     "in vec3 vertexPosition;\n",
     "in vec2 vertexTexCoord;\n",
@@ -1475,17 +1473,11 @@ static const char *const rbl__shader_lit_vs[] = {
     "out vec3 fragNormal;\n",
     "out vec4 fragTangent;\n",
     "\n",
-    "// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment\n",
-    "vec3 rblSrgbToLinear(vec3 c)\n",
-    "{\n",
-    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
-    "}\n",
-    "\n",
     "void main()\n",
     "{\n",
     "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
-    "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);\n",
+    "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex\n",
     "    fragNormal = mat3(matNormal)*vertexNormal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
     "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
@@ -1496,10 +1488,13 @@ static const char *const rbl__shader_lit_vs[] = {
     "}\n",
     NULL };
 static const char *const rbl__shader_lit_instanced_vs[] = {
-    "// Instanced billboard vertex shader: expands one quad per instance (6 vertices, gl_VertexID 0..5)\n",
-    "// from per-instance data, with the same math and degenerate-frame fallbacks as the CPU path\n",
-    "// (RblBillboardVertices), so all three paths emit the same vertices. Pairs with lit.fs.glsl.\n",
-    "// The loader prepends \"#version 330\" and the variant's #defines.\n",
+    "// Instanced billboard vertex stage: expands one quad per instance (6 vertices, gl_VertexID 0..5)\n",
+    "// from per-instance data. Each function mirrors the CPU function of the same name in the header's\n",
+    "// geometry section (rblSinCosDeg = rbl__sinCosDeg, rblFacingBasis = rbl__facingBasis,\n",
+    "// rblBillboardVertex = one corner of rbl__billboardVertices), with the same degenerate-frame\n",
+    "// fallbacks, so all three paths emit the same vertices. Pairs with lit.fs.glsl, gbuffer.fs.glsl and\n",
+    "// shadow_caster.fs.glsl.\n",
+    "#include \"common.glsl\"\n",
     "\n",
     "layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees\n",
     "layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin\n",
@@ -1524,12 +1519,6 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#ifdef RBL_VIEW_VECTOR\n",
     "flat out vec3 fragEye;\n",
     "#endif\n",
-    "\n",
-    "// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment\n",
-    "vec3 rblSrgbToLinear(vec3 c)\n",
-    "{\n",
-    "    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));\n",
-    "}\n",
     "\n",
     "bool rblNormalizeTo(vec3 v, out vec3 o)\n",
     "{\n",
@@ -1557,57 +1546,75 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    return vec3(1.0, 0.0, 0.0);\n",
     "}\n",
     "\n",
-    "void main()\n",
+    "// fmod(degrees, 360) exactly (as the CPU's fmodf), for |degrees| > 368640: there degrees = m 2^e\n",
+    "// with e >= -5, so 32 degrees is the integer m 2^(e + 5), reduced mod 32*360 by doubling\n",
+    "float rblReduceDegrees(float degrees)\n",
     "{\n",
-    "    vec3 rblViewEye = rblInstancing[0].xyz, rblViewRight = rblInstancing[1].xyz;\n",
-    "    vec3 rblViewUp = rblInstancing[2].xyz, rblViewBack = rblInstancing[3].xyz;\n",
-    "    vec3 rblFacingUp = rblInstancing[4].xyz, rblFacingAxis = rblInstancing[5].xyz;\n",
-    "    int rblFacing = int(rblInstancing[0].w + 0.5);\n",
-    "    float rblRoundness = rblInstancing[1].w;\n",
-    "    vec2 rblTextureSize = vec2(rblInstancing[2].w, rblInstancing[3].w);\n",
-    "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
-    "    int corner = cornerOf[gl_VertexID % 6];\n",
-    "    vec3 position = rblInstancePosition.xyz;\n",
-    "    int flags = int(rblInstanceFlags + 0.5);\n",
+    "    uint bits = floatBitsToUint(degrees);\n",
+    "    int e = int((bits >> 23) & 255u) - 150;\n",
+    "    uint r = ((bits & 0x7fffffu) | 0x800000u) % 11520u;\n",
+    "    for (int i = 0; i < e + 5; i++) r = (r*2u) % 11520u;\n",
+    "    float f = float(r)/32.0;\n",
+    "    return (degrees < 0.0)? -f : f;\n",
+    "}\n",
     "\n",
-    "    // Facing basis (right r, up u, normal n)\n",
-    "    vec3 r = rblViewRight, u = rblViewUp, n = rblViewBack;\n",
-    "    if (rblFacing == 0)\n",
+    "// sin and cos of an angle in degrees: reduction to [-45, 45] exact in degrees (multiples of 90 come\n",
+    "// out exact), then the same minimax polynomials as the CPU\n",
+    "vec2 rblSinCosDeg(float degrees)\n",
+    "{\n",
+    "    if (abs(degrees) > 368640.0) degrees = rblReduceDegrees(degrees);\n",
+    "    int q = int(degrees*(1.0/90.0) + ((degrees < 0.0)? -0.5 : 0.5));      // nearest quadrant (truncation, as C)\n",
+    "    float x = (degrees - float(q)*90.0)*(3.14159265358979323846/180.0);\n",
+    "    float x2 = x*x;\n",
+    "    float sn = x + x*x2*(-1.6666654611e-1 + x2*(8.3321608736e-3 + x2*(-1.9515295891e-4)));\n",
+    "    float cs = 1.0 - 0.5*x2 + x2*x2*(4.166664568298827e-2 + x2*(-1.388731625493765e-3 + x2*2.443315711809948e-5));\n",
+    "    // Quadrant q: (sin, cos) = (sn, cs), (cs, -sn), (-sn, -cs), (-cs, sn)\n",
+    "    bool swap = (q & 1) != 0;\n",
+    "    vec2 r = swap? vec2(cs, sn) : vec2(sn, cs);\n",
+    "    if ((q & 2) != 0) r.x = -r.x;\n",
+    "    if (((q + 1) & 2) != 0) r.y = -r.y;\n",
+    "    return r;\n",
+    "}\n",
+    "\n",
+    "// Right r, up u (unit, except CAMERA_PLANE's caller up) and unit normal n of a billboard at position\n",
+    "// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS\n",
+    "// billboards until the light sees them at the minimum angle\n",
+    "void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
+    "                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)\n",
+    "{\n",
+    "    r = viewRight; u = viewUp; n = viewBack;\n",
+    "    if (facing == 0)\n",
     "    {\n",
     "        vec3 nn;\n",
-    "        if ((dot(rblFacingUp, rblFacingUp) > 0.0) && rblNormalizeTo(cross(r, rblFacingUp), nn)) { u = rblFacingUp; n = nn; }\n",
+    "        if ((dot(facingUp, facingUp) > 0.0) && rblNormalizeTo(cross(r, facingUp), nn)) { u = facingUp; n = nn; }\n",
     "    }\n",
-    "    else if (rblFacing == 1)\n",
+    "    else if (facing == 1)\n",
     "    {\n",
     "        vec3 toEye;\n",
-    "        if (rblNormalizeTo(rblViewEye - position, toEye))\n",
+    "        if (rblNormalizeTo(eye - position, toEye))\n",
     "        {\n",
     "            n = toEye;\n",
     "            vec3 rr;\n",
-    "            if (rblNormalizeTo(cross(rblViewUp, n), rr)) { r = rr; u = cross(n, r); }\n",
-    "            else { r = rblViewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }\n",
+    "            if (rblNormalizeTo(cross(viewUp, n), rr)) { r = rr; u = cross(n, r); }\n",
+    "            else { r = viewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }\n",
     "        }\n",
     "    }\n",
-    "    else if (rblFacing == 2)\n",
+    "    else if (facing == 2)\n",
     "    {\n",
     "        vec3 a = vec3(0.0, 1.0, 0.0);\n",
-    "        if (dot(rblFacingAxis, rblFacingAxis) > 0.0) rblNormalizeTo(rblFacingAxis, a);\n",
+    "        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, a);\n",
     "        vec3 nn;\n",
-    "        if (!rblPerpendicular(rblViewEye - position, a, nn) && !rblPerpendicular(rblViewBack, a, nn) &&\n",
-    "            !rblPerpendicular(rblViewUp, a, nn)) nn = rblViewBack;\n",
+    "        if (!rblPerpendicular(eye - position, a, nn) && !rblPerpendicular(viewBack, a, nn) &&\n",
+    "            !rblPerpendicular(viewUp, a, nn)) nn = viewBack;\n",
     "        u = a; n = nn; r = cross(u, n);\n",
-    "        // Shadow pass: tilt about the pivot line (r) until the light sees the quad at >= the minimum\n",
-    "        // angle, so an upright sprite still casts under a light along its axis (RblShadowTilt on the CPU)\n",
-    "        float minSin = rblInstancing[4].w;\n",
-    "        vec4 light = rblInstancing[6];\n",
     "        vec3 l;\n",
-    "        if ((minSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
+    "        if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
     "        {\n",
     "            float ln = dot(l, n), la = dot(l, a);\n",
     "            float x = abs(ln), y = abs(la), rho = sqrt(x*x + y*y);\n",
-    "            if ((x < minSin) && (rho > 0.0))\n",
+    "            if ((x < minCastSin) && (rho > 0.0))\n",
     "            {\n",
-    "                float k = min(minSin/rho, 1.0), m = sqrt(1.0 - k*k);\n",
+    "                float k = min(minCastSin/rho, 1.0), m = sqrt(1.0 - k*k);\n",
     "                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;\n",
     "                float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;\n",
     "                n = nn*c + a*sn;\n",
@@ -1618,21 +1625,19 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    else\n",
     "    {\n",
     "        vec3 nn = vec3(0.0, 0.0, 1.0);\n",
-    "        if (dot(rblFacingAxis, rblFacingAxis) > 0.0) rblNormalizeTo(rblFacingAxis, nn);\n",
-    "        vec3 uu = (dot(rblFacingUp, rblFacingUp) > 0.0)? rblFacingUp : vec3(0.0, 1.0, 0.0);\n",
+    "        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, nn);\n",
+    "        vec3 uu = (dot(facingUp, facingUp) > 0.0)? facingUp : vec3(0.0, 1.0, 0.0);\n",
     "        if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);\n",
     "        n = nn; u = uu; r = cross(u, n);\n",
     "    }\n",
+    "}\n",
     "\n",
-    "    float rotation = rblInstancePosition.w;\n",
-    "    if (rotation != 0.0)\n",
-    "    {\n",
-    "        float ang = rotation*(3.14159265358979323846/180.0), c = cos(ang), s = sin(ang);\n",
-    "        vec3 nr = cross(n, r), nu = cross(n, u);\n",
-    "        r = r*c + nr*s;\n",
-    "        u = u*c + nu*s;\n",
-    "    }\n",
-    "\n",
+    "// One corner (0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left) of the instance's quad, given\n",
+    "// its rotated frame: world position, texture coordinate, rounded normal and tangent\n",
+    "void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,\n",
+    "                        out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)\n",
+    "{\n",
+    "    int flags = int(rblInstanceFlags + 0.5);\n",
     "    vec2 size = rblInstanceSize.xy, origin = rblInstanceSize.zw;\n",
     "    float sx = abs(size.x), sy = abs(size.y);\n",
     "    vec3 un = u;\n",
@@ -1642,17 +1647,17 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    float ct = (corner < 2)? 1.0 : 0.0;                      // sprite-space t (down)\n",
     "    float x = (cs > 0.5)? sx - origin.x : -origin.x;\n",
     "    float y = (ct < 0.5)? sy*ulen - origin.y : -origin.y;\n",
-    "    vec3 p = position + r*x + un*y;\n",
+    "    position = rblInstancePosition.xyz + r*x + un*y;\n",
     "\n",
     "    vec4 src = rblInstanceSource;\n",
-    "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, rblTextureSize);\n",
+    "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);\n",
     "    bool flipU = (size.x < 0.0) != (src.z < 0.0);\n",
     "    bool flipV = (size.y < 0.0) != (src.w < 0.0);\n",
     "    bool rotated = (flags & 1) != 0;\n",
     "    float s = flipU? 1.0 - cs : cs;\n",
     "    float t = flipV? 1.0 - ct : ct;\n",
     "    vec2 frame = rotated? vec2(1.0 - t, s) : vec2(s, t);\n",
-    "    fragTexCoord = (src.xy + frame*abs(src.zw))/rblTextureSize;\n",
+    "    texCoord = (src.xy + frame*abs(src.zw))/textureSize;\n",
     "\n",
     "    vec3 T, V;\n",
     "    if (!rotated) { T = flipU? -r : r; V = flipV? un : -un; }\n",
@@ -1660,7 +1665,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    float w = (dot(cross(n, T), V) < 0.0)? -1.0 : 1.0;\n",
     "\n",
     "    vec3 nv = n, tv = T;\n",
-    "    float round = clamp(rblRoundness, 0.0, 1.0);\n",
+    "    float round = clamp(roundness, 0.0, 1.0);\n",
     "    if (round > 0.0)\n",
     "    {\n",
     "        float dx = (cs < 0.5)? -1.0 : 1.0;\n",
@@ -1668,31 +1673,49 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        rblNormalizeTo(n + (r*dx + un*dy)*round, nv);\n",
     "        if (!rblPerpendicular(T, nv, tv)) tv = T;\n",
     "    }\n",
+    "    normal = nv;\n",
+    "    tangent = vec4(tv, w);\n",
+    "}\n",
     "\n",
+    "void main()\n",
+    "{\n",
+    "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
+    "    vec3 eye = rblInstancing[0].xyz;\n",
+    "    vec3 r, u, n;\n",
+    "    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
+    "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
+    "    // Rotate the frame around the normal (raylib rotates the corners; same result)\n",
+    "    if (rblInstancePosition.w != 0.0)\n",
+    "    {\n",
+    "        vec2 sc = rblSinCosDeg(rblInstancePosition.w);\n",
+    "        vec3 nr = cross(n, r), nu = cross(n, u);\n",
+    "        r = r*sc.y + nr*sc.x;\n",
+    "        u = u*sc.y + nu*sc.x;\n",
+    "    }\n",
+    "    vec3 p;\n",
+    "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
+    "                       p, fragTexCoord, fragNormal, fragTangent);\n",
     "    fragPosition = p;\n",
     "    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
-    "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);\n",
-    "    fragNormal = nv;\n",
-    "    fragTangent = vec4(tv, w);\n",
+    "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "    fragEye = rblViewEye;\n",
+    "    fragEye = eye;\n",
     "#endif\n",
     "    gl_Position = mvp*vec4(p, 1.0);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_material[] = {
-    "// Surface decoding shared by every pass that shades a material (forward lit.fs.glsl, the deferred\n",
-    "// G-buffer gbuffer.fs.glsl): vertex inputs, material uniforms and maps, alpha test, normal-map\n",
-    "// decode and tangent frame, BRDF parameters. The loader places it after lighting.glsl.\n",
-    "// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps\n",
-    "// (normal, specular/roughness, occlusion) are linear.\n",
+    "// Material: fragment inputs, the material's maps and per-draw values, alpha test, normal-map decode\n",
+    "// and tangent frame -> RblShadingPoint. Shared by every pass that shades a material (lit.fs.glsl,\n",
+    "// gbuffer.fs.glsl, shadow_caster.fs.glsl). Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB\n",
+    "// and decoded to linear light; data maps (normal, specular/roughness, occlusion) are linear.\n",
     "// Material defines (absent maps are never declared, so never sampled):\n",
     "//   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map\n",
     "//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness\n",
     "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
     "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
-    "//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)\n",
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
+    "#include \"surface.glsl\"\n",
     "\n",
     "in vec3 fragPosition;\n",
     "in vec2 fragTexCoord;\n",
@@ -1712,9 +1735,7 @@ static const char *const rbl__shader_material[] = {
     "uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)\n",
     "uniform float rblEmissiveIntensity;\n",
     "#endif\n",
-    "#ifdef RBL_EMISSIVE_COLOR\n",
-    "uniform vec3 rblEmissiveColor;\n",
-    "#endif\n",
+    "uniform vec3 rblEmissiveColor;  // constant emission (linear, intensity applied; the material's EMISSION colour)\n",
     "#if RBL_BRDF == 1\n",
     "uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shininess\n",
     "#elif RBL_BRDF == 2\n",
@@ -1750,7 +1771,6 @@ static const char *const rbl__shader_material[] = {
     "// tangent-space normal (debug views) come back through the out parameters\n",
     "RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)\n",
     "{\n",
-    "\n",
     "    vec4 texel = texture(texture0, fragTexCoord);\n",
     "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
     "    if (albedo.a < rblAlphaCutoff) discard;\n",
@@ -1799,17 +1819,62 @@ static const char *const rbl__shader_material[] = {
     "#elif RBL_EMISSIVE == 2\n",
     "    emission += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;\n",
     "#endif\n",
-    "#ifdef RBL_EMISSIVE_COLOR\n",
     "    emission += rblEmissiveColor;\n",
-    "#endif\n",
     "    return sp;\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_output[] = {
+    "// Output: fog, half-float clamp, exposure, tonemap and the display encoding, in that order (the\n",
+    "// scene's fog and exposure; the program's compiled tonemap and encoding).\n",
+    "//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by distance to the eye)\n",
+    "//   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)\n",
+    "//   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve\n",
+    "//   RBL_LINEAR_OUTPUT         keep linear light (float targets)\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "#if RBL_FOG > 0\n",
+    "uniform vec4 rblFog;                        // rgb linear colour, a: density (exp/exp2) or 1/(end - start) (linear)\n",
+    "uniform float rblFogStart;                  // linear fog: distance where it begins\n",
+    "#endif\n",
+    "uniform float rblExposure;                  // the scene's exposure\n",
+    "\n",
+    "// Fog, exposure, tonemap and the display encoding, in that order. linearOut keeps linear light\n",
+    "// (clamped to half-float range) for float targets.\n",
+    "vec3 rblFinish(vec3 color, vec3 position, vec3 eye)\n",
+    "{\n",
+    "#if RBL_FOG > 0\n",
+    "    float d = length(position - eye);\n",
+    "#if RBL_FOG == 1\n",
+    "    float visible = clamp(1.0 - (d - rblFogStart)*rblFog.a, 0.0, 1.0);\n",
+    "#elif RBL_FOG == 2\n",
+    "    float visible = exp(-rblFog.a*d);\n",
+    "#else\n",
+    "    float visible = exp(-(rblFog.a*d)*(rblFog.a*d));\n",
+    "#endif\n",
+    "    color = mix(rblFog.rgb, color, visible);\n",
+    "#endif\n",
+    "    color = clamp(color, 0.0, RBL_HALF_MAX);\n",
+    "    color *= rblExposure;\n",
+    "#if RBL_TONEMAP == 1\n",
+    "    color = color/(1.0 + color);\n",
+    "#elif RBL_TONEMAP == 2\n",
+    "    color = min(color, vec3(RBL_HALF_MAX));\n",
+    "    color = clamp(color*(2.51*color + 0.03)/(color*(2.43*color + 0.59) + 0.14), 0.0, 1.0);\n",
+    "#endif\n",
+    "#if defined(RBL_LINEAR_OUTPUT)\n",
+    "    return min(color, vec3(RBL_HALF_MAX));\n",
+    "#elif defined(RBL_GAMMA)\n",
+    "    return pow(clamp(color, 0.0, 1.0), vec3(1.0/RBL_GAMMA));\n",
+    "#else\n",
+    "    return rblLinearToSrgb(color);\n",
+    "#endif\n",
+    "}\n",
+    NULL };
 static const char *const rbl__shader_shadow_caster_fs[] = {
-    "// Shadow caster fragment stage: depth only. The loader prepends \"#version 330\", the variant #defines,\n",
-    "// lighting.glsl and material.glsl, so the alpha test is the colour pass's own (albedo x colDiffuse x\n",
-    "// vertex colour against rblAlphaCutoff): a sprite's silhouette casts the shadow, not its quad.\n",
-    "// Nothing else is sampled; the target has no colour attachment.\n",
+    "// Shadow pass, fragment stage: depth only. The alpha test is the colour pass's own (albedo x\n",
+    "// colDiffuse x vertex colour against the material's cutoff): a sprite's silhouette casts the shadow,\n",
+    "// not its quad. Nothing else is sampled; the target has no colour attachment.\n",
+    "#include \"material.glsl\"\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -1818,17 +1883,186 @@ static const char *const rbl__shader_shadow_caster_fs[] = {
     "    rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_shadows[] = {
+    "// Shadows: the shadow maps a receiver samples and the lookup (bias, receiver plane, PCF). Which\n",
+    "// light a map shadows is the lights' business (lights.glsl, deferred_volume.fs.glsl).\n",
+    "//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light\n",
+    "//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "#if RBL_SHADOWS > 0\n",
+    "uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w\n",
+    "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far\n",
+    "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
+    "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
+    "uniform sampler2D rblShadowMap0;            // depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
+    "#if RBL_SHADOWS > 1\n",
+    "uniform sampler2D rblShadowMap1;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "uniform sampler2D rblShadowMap2;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "uniform sampler2D rblShadowMap3;\n",
+    "#endif\n",
+    "#endif\n",
+    "\n",
+    "#if RBL_SHADOWS > 0\n",
+    "// Distance along the light's axis from a window depth of map k (prm: texel, perspective, near, far)\n",
+    "float rblShadowDistance(float d, vec4 prm)\n",
+    "{\n",
+    "    return (prm.y > 0.5)? prm.z*prm.w/(prm.w - d*(prm.w - prm.z)) : prm.z + d*(prm.w - prm.z);\n",
+    "}\n",
+    "\n",
+    "// Fraction of light k's map lets through to a surface point with unit normal n, lit at cos(incidence)\n",
+    "// NdotL (> 0). Depths are compared as distances along the light's axis, in world units:\n",
+    "//   normal offset   the lookup moves along n by normal*texel*sin(incidence) (lateral shift <= that)\n",
+    "//   receiver plane  each PCF fetch is compared with the receiver's own plane extended to that texel's\n",
+    "//                   centre (depth gradient from n in the light's frame, clamped at 10 texels per\n",
+    "//                   texel), so a flat receiver never shadows itself at any incidence below 84 degrees\n",
+    "//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10\n",
+    "// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2\n",
+    "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
+    "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
+    "// outside the map or of a texel nothing was drawn into.\n",
+    "float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)\n",
+    "{\n",
+    "    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];\n",
+    "    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);\n",
+    "    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);\n",
+    "    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here\n",
+    "    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));\n",
+    "    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);\n",
+    "    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);\n",
+    "    if (!(c.w > 0.0)) return 1.0;\n",
+    "    vec3 q = c.xyz/c.w;\n",
+    "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;\n",
+    "    float z = rblShadowDistance(max(q.z, 0.0), prm) - texel*(bias.x + bias.y*tanI);\n",
+    "    // Receiver plane: distance change per texel step along the map's x and y\n",
+    "    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);\n",
+    "    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;\n",
+    "    float size = bias.w;\n",
+    "    vec2 st = q.xy*size - 0.5*float(RBL_SHADOW_FILTER);         // first bilinear tap's position - 0.5, in texels\n",
+    "    vec2 base = floor(st), f = st - base;\n",
+    "    ivec2 b0 = ivec2(base), top = ivec2(int(size) - 1);\n",
+    "    vec2 origin = base + 0.5 - q.xy*size;                       // first fetched centre relative to the point\n",
+    "    float lit = 0.0;\n",
+    "    for (int j = 0; j <= RBL_SHADOW_FILTER; j++)\n",
+    "    {\n",
+    "        float wy = (j == 0)? 1.0 - f.y : ((j == RBL_SHADOW_FILTER)? f.y : 1.0);\n",
+    "        for (int i = 0; i <= RBL_SHADOW_FILTER; i++)\n",
+    "        {\n",
+    "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
+    "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
+    "            ivec2 at = b0 + ivec2(i, j);\n",
+    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;\n",
+    "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
+    "            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
+    "        }\n",
+    "    }\n",
+    "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
+    "}\n",
+    "\n",
+    "float rblShadow(int k, vec3 position, vec3 n, float NdotL)\n",
+    "{\n",
+    "    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);\n",
+    "#endif\n",
+    "    return 1.0;\n",
+    "}\n",
+    "#endif\n",
+    NULL };
+static const char *const rbl__shader_surface[] = {
+    "// Surface: what a shaded point is, in linear units. Filled by the material decode (material.glsl)\n",
+    "// in forward and geometry passes, or from the G-buffer (gbuffer_read.glsl) in the deferred passes;\n",
+    "// read by the lights (lights.glsl).\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "struct RblShadingPoint {\n",
+    "    vec3 position;      // world\n",
+    "    vec3 normal;        // unit, world\n",
+    "    vec3 albedo;        // linear base colour\n",
+    "    float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness\n",
+    "    float occlusion;    // ambient occlusion (indirect light only)\n",
+    "    vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)\n",
+    "    float shininess;    // Blinn-Phong exponent\n",
+    "    float metalness;    // GGX\n",
+    "};\n",
+    NULL };
+static const char *const rbl__shader_volume_vs[] = {
+    "// Deferred light volume, vertex stage: a sphere proxy per bounded point/spot light, one instanced\n",
+    "// draw; the light's packed values ride along as instance attributes (as the forward uniforms).\n",
+    "\n",
+    "in vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
+    "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
+    "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
+    "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
+    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
+    "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
+    "flat out vec4 volumePosition;\n",
+    "flat out vec4 volumeColor;\n",
+    "flat out vec4 volumeSpot;\n",
+    "flat out vec4 volumeFalloff;\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    volumePosition = rblVolumePosition;\n",
+    "    volumeColor = rblVolumeColor;\n",
+    "    volumeSpot = rblVolumeSpot;\n",
+    "    volumeFalloff = rblVolumeFalloff;\n",
+    "    gl_Position = mvp*vec4(rblVolumePosition.xyz + vertexPosition/rblVolumeColor.a, 1.0);\n",
+    "}\n",
+    NULL };
 // Every embedded shader by file name (tests compare these with shaders/*.glsl)
 static const struct { const char *file; const char *const *source; } rbl__shaderFiles[] = {
-    { "deferred.fs.glsl", rbl__shader_deferred_fs },
-    { "deferred.vs.glsl", rbl__shader_deferred_vs },
+    { "common.glsl", rbl__shader_common },
+    { "deferred_ambient.fs.glsl", rbl__shader_deferred_ambient_fs },
+    { "deferred_resolve.fs.glsl", rbl__shader_deferred_resolve_fs },
+    { "deferred_volume.fs.glsl", rbl__shader_deferred_volume_fs },
+    { "fullscreen.vs.glsl", rbl__shader_fullscreen_vs },
     { "gbuffer.fs.glsl", rbl__shader_gbuffer_fs },
-    { "lighting.glsl", rbl__shader_lighting },
+    { "gbuffer_codec.glsl", rbl__shader_gbuffer_codec },
+    { "gbuffer_read.glsl", rbl__shader_gbuffer_read },
+    { "lights.glsl", rbl__shader_lights },
     { "lit.fs.glsl", rbl__shader_lit_fs },
     { "lit.vs.glsl", rbl__shader_lit_vs },
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
+    { "output.glsl", rbl__shader_output },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
+    { "shadows.glsl", rbl__shader_shadows },
+    { "surface.glsl", rbl__shader_surface },
+    { "volume.vs.glsl", rbl__shader_volume_vs },
+};
+// Each stage with its includes resolved, dependencies first (the loader joins these)
+static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_fullscreen_vs, NULL };
+static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_common, rbl__shader_lit_vs, NULL };
+static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
+static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_volume_vs, NULL };
+static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
+static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
+static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
+    { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
+    { "lit.vs.glsl", rbl__pass_lit_vs },
+    { "lit_instanced.vs.glsl", rbl__pass_lit_instanced_vs },
+    { "volume.vs.glsl", rbl__pass_volume_vs },
+    { "deferred_ambient.fs.glsl", rbl__pass_deferred_ambient_fs },
+    { "deferred_resolve.fs.glsl", rbl__pass_deferred_resolve_fs },
+    { "deferred_volume.fs.glsl", rbl__pass_deferred_volume_fs },
+    { "gbuffer.fs.glsl", rbl__pass_gbuffer_fs },
+    { "lit.fs.glsl", rbl__pass_lit_fs },
+    { "shadow_caster.fs.glsl", rbl__pass_shadow_caster_fs },
 };
 // RBL-SHADERS-END
 
@@ -2201,11 +2435,13 @@ bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeig
 // Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
 // default and not visible here), so the array is generously larger than any build's
 #define RBL__CASTER_MAPS 32
-// The shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): every billboard path draws
-// casters then, with the same calls and materials as the colour pass (defined with the shadows)
-static RblShadowMap *rbl__shadowPass = NULL;
+// Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
+// colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblView *view);
-static Material rbl__casterMaterial(Material material, MaterialMap maps[RBL__CASTER_MAPS], bool instanced);
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program);
+static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
+static bool rbl__programAlive(const rbl__Program *p);
+static void rbl__forgetProgram(rbl__Program *p);
 
 static void rbl__loadBatchGpu(RblBatch *batch)
 {
@@ -2285,7 +2521,7 @@ void RblBeginBatch(RblBatch *batch, Camera3D camera)
 {
     if (batch == NULL) return;
     batch->view = RblGetView(camera);
-    if (rbl__shadowPass != NULL) rbl__shadowPassView(&batch->view);
+    if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->frame.facing = -1;      // the frame depends on the view
     batch->count = 0;
     batch->runCount = 0;
@@ -2421,7 +2657,12 @@ static void rbl__setVertexLayout(size_t baseOffset)
     rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_COLOR);
 }
 
-void RblEndBatch(RblBatch *batch)
+// RblEndBatch under the name of the public call it serves (refusals are logged with that name)
+static void rbl__endBatch(RblBatch *batch, const char *fn);
+
+void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
+
+static void rbl__endBatch(RblBatch *batch, const char *fn)
 {
     if ((batch == NULL) || !batch->begun) return;
     batch->begun = false;
@@ -2442,8 +2683,11 @@ void RblEndBatch(RblBatch *batch)
     {
         const RblBatchRun *run = &batch->runs[r];
         MaterialMap casterMaps[RBL__CASTER_MAPS];
-        Material material = (rbl__shadowPass != NULL)? rbl__casterMaterial(run->material, casterMaps, false) : run->material;
+        Material material = run->material;
+        rbl__Program *program = NULL;
+        if (!rbl__prepareDraw(&material, casterMaps, false, fn, &program)) continue;
         bound |= rbl__bindMaterial(&material);
+        if (program != NULL) rbl__applyMaterialValues(program, &material);
         for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
         {
             int n = run->count - q;
@@ -2456,26 +2700,35 @@ void RblEndBatch(RblBatch *batch)
     rlDisableVertexArray();
 }
 
-static RblBatch rbl__immediate;     // zero-initialised; the immediate path's one-quad batch
-// Counts programs this header loads and unloads: GL reuses the ids of deleted programs, so a location
-// cached by program id is looked up again whenever this changed
-static unsigned int rbl__programGeneration = 0;
-
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
 {
-    if (rbl__immediate.vertices == NULL)
+    RblBatch *immediate = &rbl__state.immediate;
+    if (immediate->vertices == NULL)
     {
-        rbl__immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
-        if (!RblIsBatchValid(rbl__immediate)) return;
+        *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
+        if (!RblIsBatchValid(*immediate)) return;
     }
-    RblBeginBatch(&rbl__immediate, camera);
-    RblBatchAdd(&rbl__immediate, material, &billboard);
-    RblEndBatch(&rbl__immediate);
+    RblBeginBatch(immediate, camera);
+    RblBatchAdd(immediate, material, &billboard);
+    rbl__endBatch(immediate, "RblDrawBillboard");
 }
 
 void RblClose(void)
 {
-    RblUnloadBatch(&rbl__immediate);
+    RblUnloadBatch(&rbl__state.immediate);
+    // Programs still held: deleted with their holders' locations (call RblClose after your own
+    // UnloadMaterial/RblUnloadLitShader calls: a Shader unloaded afterwards would be freed twice)
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    {
+        rbl__Program *p = &rbl__state.programs[i];
+        if (p->refs == 0) continue;
+        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
+        UnloadShader(p->shader);
+    }
+    for (int i = 0; i < rbl__state.handleCount; i++) MemFree(rbl__state.handles[i].locs);
+    RBL_FREE(rbl__state.handles);
+    RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
+    memset(&rbl__state, 0, sizeof(rbl__state));
 }
 
 //----------------------------------------------------------------------------------
@@ -2586,19 +2839,8 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     if (n == 0) return 0;
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
-    if (rbl__shadowPass != NULL) material = rbl__casterMaterial(material, casterMaps, true);
-    Shader sh = material.shader;
-    if ((sh.id != buffer->shaderId) || (buffer->shaderGeneration != rbl__programGeneration))
-    {
-        buffer->loc = rlGetLocationUniform(sh.id, "rblInstancing");
-        buffer->shaderId = sh.id;
-        buffer->shaderGeneration = rbl__programGeneration;
-    }
-    if (buffer->loc == -1)
-    {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: material shader %u is not an instanced lit variant (RblLitShaderDesc.instanced)", sh.id);
-        return 0;
-    }
+    rbl__Program *program = NULL;
+    if (!rbl__prepareDraw(&material, casterMaps, true, "RblDrawInstanced", &program)) return 0;
 
     int texW = 1, texH = 1;
     if ((material.maps != NULL) && (material.maps[MATERIAL_MAP_ALBEDO].texture.id != 0))
@@ -2610,7 +2852,7 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
 
     // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
     RblView view = RblGetView(camera);
-    if (rbl__shadowPass != NULL) rbl__shadowPassView(&view);
+    if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     const float frame[28] = {
         view.eye.x, view.eye.y, view.eye.z, (float)desc.facing,
         view.right.x, view.right.y, view.right.z, desc.roundness,
@@ -2621,7 +2863,8 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
         view.light.x, view.light.y, view.light.z, view.light.w };
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
-    rlSetUniform(buffer->loc, frame, SHADER_UNIFORM_VEC4, 7);
+    rbl__applyMaterialValues(program, &material);
+    rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
 
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
@@ -3703,37 +3946,37 @@ Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
 //----------------------------------------------------------------------------------
 // Module Functions Definition: lights and the forward lit shader
 //----------------------------------------------------------------------------------
-// prefix + lines joined into one allocated string (the embedded sources are arrays of lines)
-static char *rbl__joinSource(const char *prefix, const char *const *lines)
+// prefix + a stage's parts (rbl__pass_*: its includes resolved by the embed step, dependencies first)
+// in one allocated string, without the #include lines (GLSL has no include)
+static char *rbl__joinStage(const char *prefix, const char *const *const *parts)
 {
     size_t len = strlen(prefix);
-    for (int i = 0; lines[i] != NULL; i++) len += strlen(lines[i]);
+    for (int p = 0; parts[p] != NULL; p++)
+        for (int i = 0; parts[p][i] != NULL; i++) if (strncmp(parts[p][i], "#include", 8) != 0) len += strlen(parts[p][i]);
     char *text = (char *)RBL_MALLOC(len + 1);
     if (text == NULL) return NULL;
     size_t at = strlen(prefix);
     memcpy(text, prefix, at);
-    for (int i = 0; lines[i] != NULL; i++) { size_t l = strlen(lines[i]); memcpy(text + at, lines[i], l); at += l; }
+    for (int p = 0; parts[p] != NULL; p++)
+        for (int i = 0; parts[p][i] != NULL; i++)
+        {
+            if (strncmp(parts[p][i], "#include", 8) == 0) continue;
+            size_t l = strlen(parts[p][i]);
+            memcpy(text + at, parts[p][i], l);
+            at += l;
+        }
     text[at] = '\0';
     return text;
 }
 
-// Compile a variant: "#version 330", the variant's defines, then the embedded sources (the fragment
-// stage is several files: the shared lighting and material code, then the pass; fsParts is
-// NULL-terminated). raylib substitutes its default shader when compilation fails; report that.
-static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *const *fsParts, const char *defines)
+// Compile a variant: "#version 330", the variant's defines, then each stage's parts. raylib substitutes
+// its default shader when compilation fails; report that.
+static Shader rbl__loadShaderVariant(const char *const *const *vs, const char *const *const *fs, const char *defines)
 {
-    rbl__programGeneration++;
-    char prefix[1024];
+    char prefix[1200];
     snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
-    char *vsFull = rbl__joinSource(prefix, vs);
-    char *fsFull = NULL;
-    for (int i = 0; (fsParts[i] != NULL); i++)
-    {
-        char *next = rbl__joinSource((fsFull != NULL)? fsFull : prefix, fsParts[i]);
-        RBL_FREE(fsFull);
-        fsFull = next;
-        if (fsFull == NULL) break;
-    }
+    char *vsFull = rbl__joinStage(prefix, vs);
+    char *fsFull = rbl__joinStage(prefix, fs);
     Shader shader;
     memset(&shader, 0, sizeof(shader));
     if ((vsFull != NULL) && (fsFull != NULL)) shader = LoadShaderFromMemory(vsFull, fsFull);
@@ -3747,36 +3990,20 @@ static Shader rbl__loadShaderVariant(const char *const *vs, const char *const *c
     return shader;
 }
 
-// Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed until
-// a map is given (an unbound sampler would read depth 0 and darken everything)
-static void rbl__initShadowUniforms(unsigned int program, int maps, int locLight)
-{
-    if (maps == 0) return;
-    rlEnableShader(program);
-    for (int k = 0; k < maps; k++)
-    {
-        char name[32];
-        snprintf(name, sizeof(name), "rblShadowMap%i", k);
-        int unit = RBL_SHADOW_TEXTURE_UNIT + k;
-        rlSetUniform(rlGetLocationUniform(program, name), &unit, SHADER_UNIFORM_INT, 1);
-    }
-    int none[4] = { -1, -1, -1, -1 };
-    rlSetUniform(locLight, none, SHADER_UNIFORM_IVEC4, 1);
-    rlDisableShader();
-}
-
-// Variant cache: identical (normalised) descs share one program, compiled once, reference counted
-typedef struct rbl__LitCacheEntry {
-    RblLitShaderDesc key;
-    RblLitShader shader;
-    int refs;
-} rbl__LitCacheEntry;
-static rbl__LitCacheEntry rbl__litCache[RBL_SHADER_CACHE_SIZE];
+static const char *const rbl__uniformNames[RBL__U_COUNT] = {
+    "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation",
+    "rblAmbient", "rblAmbientGround", "rblAmbientUp", "rblFog", "rblFogStart", "rblExposure",
+    "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
+    "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
+    "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
+    "rblDebugView", "rblDebugScale", "rblDepthLinear", "rblInvP" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
-static float rbl__colorToLinear(unsigned char c);
 
-// Defaults applied field by field into a zeroed struct, so the cache key has no padding garbage
+// Colours are authored in sRGB like every raylib Color; lighting runs in linear light
+static float rbl__colorToLinear(unsigned char c) { return (float)rbl__srgbToLinear(c/255.0); }
+
+// Defaults applied field by field into a zeroed struct, so the registry key has no padding garbage
 static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *out)
 {
     memset(out, 0, sizeof(*out));
@@ -3787,28 +4014,14 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((m.emissive < RBL_EMISSIVE_NONE) || (m.emissive > RBL_EMISSIVE_RGB)) return "unknown material.emissive";
     if ((m.normalEncoding == RBL_NORMAL_RGB) && m.specular) return "an RGB normal map leaves no channel for specular";
     if ((in.brdf < RBL_BRDF_LAMBERT) || (in.brdf > RBL_BRDF_GGX)) return "unknown brdf";
-    if (!rbl__finiteNonNegative(in.specular) || !rbl__finiteNonNegative(in.shininess)) return "specular or shininess negative or not finite";
-    if (!rbl__finite(in.roughness) || (in.roughness < 0.0f) || (in.roughness > 1.0f)) return "roughness outside 0..1";
-    if (!rbl__finite(in.metalness) || (in.metalness < 0.0f) || (in.metalness > 1.0f)) return "metalness outside 0..1";
-    if (!rbl__finiteNonNegative(in.emissiveIntensity) || !rbl__finite(in.alphaCutoff)) return "emissiveIntensity negative, or alphaCutoff not finite";
-    if ((in.fog.mode < RBL_FOG_NONE) || (in.fog.mode > RBL_FOG_EXP2)) return "unknown fog.mode";
-    if (!rbl__finite(in.fog.start) || !rbl__finite(in.fog.end) || !rbl__finiteNonNegative(in.fog.density)) return "fog start/end not finite or density negative";
-    if ((in.fog.mode == RBL_FOG_LINEAR) && !(in.fog.end > in.fog.start)) return "linear fog needs end > start";
+    if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
-    if (!rbl__finiteNonNegative(in.exposure) || !rbl__finiteNonNegative(in.gamma)) return "exposure or gamma negative or not finite";
+    if (!rbl__finiteNonNegative(in.gamma)) return "gamma negative or not finite";
     if ((in.debugView < 0) || (in.debugView > 4)) return "debugView outside 0..4";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
-    if (in.shadowCaster)
-    {
-        // A caster writes depth and tests alpha, nothing else: one program per vertex stage (the cutoff
-        // is a uniform, set per draw to the colour pass's value)
-        out->maxLights = 1; out->lightFeatures = RBL_LIGHTS_POINT; out->emissiveIntensity = 1.0f;
-        out->alphaCutoff = 0.5f; out->exposure = 1.0f; out->instanced = in.instanced; out->shadowCaster = true;
-        return NULL;
-    }
 
-    out->maxLights = (in.maxLights == 0)? 1 : in.maxLights;
+    out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHTS_POINT : in.lightFeatures;
     out->material.normalEncoding = m.normalEncoding;
     out->material.emissive = m.emissive;
@@ -3816,38 +4029,19 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
     out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugView == 3));
     out->brdf = in.brdf;
-    if (in.brdf == RBL_BRDF_BLINN_PHONG)
-    {
-        out->specular = (in.specular != 0.0f)? in.specular : (out->material.specular? 1.0f : 0.5f);
-        out->shininess = (in.shininess == 0.0f)? 32.0f : ((in.shininess < 1.0f)? 1.0f : in.shininess);
-        bool zero = (in.specularColor.r == 0) && (in.specularColor.g == 0) && (in.specularColor.b == 0) && (in.specularColor.a == 0);
-        out->specularColor = zero? WHITE : in.specularColor;
-    }
-    if (in.brdf == RBL_BRDF_GGX)
-    {
-        out->roughness = (in.roughness == 0.0f)? 0.5f : in.roughness;
-        out->metalness = in.metalness;
-    }
-    out->emissiveColor = in.emissiveColor;
-    out->emissiveColor.a = 0;                       // only rgb matters
-    out->emissiveIntensity = (in.emissiveIntensity == 0.0f)? 1.0f : in.emissiveIntensity;
-    out->alphaCutoff = (in.alphaCutoff == 0.0f)? 0.5f : in.alphaCutoff;
-    out->hemisphereAmbient = in.hemisphereAmbient;
-    if (in.fog.mode != RBL_FOG_NONE) out->fog = in.fog;
+    out->fog = in.fog;
     out->tonemap = in.tonemap;
-    out->exposure = (in.exposure == 0.0f)? 1.0f : in.exposure;
     out->gamma = in.gamma;
+    out->linearOutput = in.linearOutput;
     out->instanced = in.instanced;
     out->deferred = in.deferred;
+    out->debugView = in.debugView;
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
-        out->maxLights = 1; out->lightFeatures = RBL_LIGHTS_POINT; out->hemisphereAmbient = false;
-        memset(&out->fog, 0, sizeof(out->fog)); out->tonemap = RBL_TONEMAP_NONE; out->exposure = 1.0f; out->gamma = 0.0f;
-        out->linearOutput = false; out->debugView = 0;
+        out->maxLights = 1; out->lightFeatures = RBL_LIGHTS_POINT; out->fog = RBL_FOG_NONE; out->tonemap = RBL_TONEMAP_NONE;
+        out->gamma = 0.0f; out->linearOutput = false; out->debugView = 0;
     }
-    out->linearOutput = in.linearOutput;
-    out->debugView = in.debugView;
     out->shadowMaps = in.deferred? 0 : in.shadowMaps;       // the geometry pass receives nothing
     out->shadowFilter = (out->shadowMaps == 0)? 0 : ((in.shadowFilter == 0)? 2 : in.shadowFilter);
     return NULL;
@@ -3857,146 +4051,234 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
 static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 {
     const RblMaterialLayout *m = &d->material;
-    bool emissiveColor = (d->emissiveColor.r | d->emissiveColor.g | d->emissiveColor.b) != 0;
-    bool exposure = (d->tonemap != RBL_TONEMAP_NONE) || (d->exposure != 1.0f);
-    bool view = !d->deferred && ((d->brdf != RBL_BRDF_LAMBERT) || (d->fog.mode != RBL_FOG_NONE));   // the G-buffer stores no view
+    bool view = !d->deferred && ((d->brdf != RBL_BRDF_LAMBERT) || (d->fog != RBL_FOG_NONE));   // the G-buffer stores no view
     int n = snprintf(out, size, "#define RBL_LIGHTS %i\n#define RBL_BRDF %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n"
-                     "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n#define RBL_SHADOWS %i\n#define RBL_SHADOW_FILTER %i\n%s%s%s%s%s%s%s%s%s%s",
-                     d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog.mode, d->tonemap, d->shadowMaps, d->shadowFilter,
+                     "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n#define RBL_SHADOWS %i\n#define RBL_SHADOW_FILTER %i\n%s%s%s%s%s%s%s",
+                     d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog, d->tonemap, d->shadowMaps, d->shadowFilter,
                      (d->lightFeatures & RBL_LIGHTS_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
                      (d->lightFeatures & RBL_LIGHTS_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
                      (d->lightFeatures & RBL_LIGHTS_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
                      m->specular? "#define RBL_SPECULAR\n" : "", m->occlusion? "#define RBL_OCCLUSION\n" : "",
-                     emissiveColor? "#define RBL_EMISSIVE_COLOR\n" : "", d->hemisphereAmbient? "#define RBL_AMBIENT_HEMI\n" : "",
-                     exposure? "#define RBL_EXPOSURE\n" : "", view? "#define RBL_VIEW_VECTOR\n" : "",
-                     d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
+                     view? "#define RBL_VIEW_VECTOR\n" : "", d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
     if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
     if ((n > 0) && ((size_t)n < size) && (d->debugView > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_VIEW %i\n", d->debugView);
 }
 
-static void rbl__setFogUniforms(const RblLitShader *lit, RblFog fog)
+//----------------------------------------------------------------------------------
+// Module Internal Functions: the program registry
+//----------------------------------------------------------------------------------
+// Every program the header compiles is one registry entry, keyed by what changes the code; raylib's
+// UnloadShader (as UnloadMaterial calls it) may delete a lit program behind the registry's back, so
+// entries handed to users are checked before use (a deleted or reused id no longer answers with the
+// registry's location of rblAlphaCutoff, which every lit and caster variant declares)
+static bool rbl__programAlive(const rbl__Program *p)
 {
-    float f[4] = { rbl__colorToLinear(fog.color.r), rbl__colorToLinear(fog.color.g), rbl__colorToLinear(fog.color.b),
-                   (fog.mode == RBL_FOG_LINEAR)? 1.0f/(fog.end - fog.start) : fog.density };
-    SetShaderValue(lit->shader, lit->locFog, f, SHADER_UNIFORM_VEC4);
-    SetShaderValue(lit->shader, lit->locFogStart, &fog.start, SHADER_UNIFORM_FLOAT);
+    if (p->key.kind == RBL__KIND_PASS) return true;         // never handed out
+    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
 }
 
-static RblLitShader rbl__compileLit(const RblLitShaderDesc *d)
+// Forget handles of program id (their locs were freed with it, or belong to holders who unload them)
+static void rbl__dropHandles(unsigned int id)
 {
-    RblLitShader lit;
-    memset(&lit, 0, sizeof(lit));
-    char defines[768];
+    int n = 0;
+    for (int i = 0; i < rbl__state.handleCount; i++) if (rbl__state.handles[i].id != id) rbl__state.handles[n++] = rbl__state.handles[i];
+    rbl__state.handleCount = n;
+}
+
+// A program deleted outside the header: its entry goes (the GL name is not deleted again)
+static void rbl__forgetProgram(rbl__Program *p)
+{
+    TraceLog(LOG_INFO, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
+    rbl__dropHandles(p->shader.id);
+    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
+    memset(p, 0, sizeof(*p));
+}
+
+// Registered lit program id (kind LIT), or NULL. probe: also ask GL that it is still the header's
+// program (loads, scenes and validity checks; draws skip the query, a GL round trip each: a program
+// deleted by raylib's UnloadMaterial went with that Material, and the next load or scene notices)
+static rbl__Program *rbl__findLit(unsigned int id, bool probe)
+{
+    if (id == 0) return NULL;
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    {
+        rbl__Program *p = &rbl__state.programs[i];
+        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != RBL__KIND_LIT)) continue;
+        if (probe && !rbl__programAlive(p)) { rbl__forgetProgram(p); return NULL; }
+        return p;
+    }
+    return NULL;
+}
+
+static void rbl__uploadScene(rbl__Program *p);
+
+// Compile a program for key into a free registry slot; NULL (logged) on failure
+static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
+{
+    int slot = -1;
+    for (int i = 0; (i < RBL_SHADER_CACHE_SIZE) && (slot < 0); i++) if (rbl__state.programs[i].refs == 0) slot = i;
+    if (slot < 0) { TraceLog(LOG_WARNING, "RBL: program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    const RblLitShaderDesc *d = &key->desc;
+    char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
-    const char *const *pass = d->shadowCaster? rbl__shader_shadow_caster_fs : (d->deferred? rbl__shader_gbuffer_fs : rbl__shader_lit_fs);
-    const char *const *const fsParts[4] = { rbl__shader_lighting, rbl__shader_material, pass, NULL };
-    lit.shader = rbl__loadShaderVariant(d->instanced? rbl__shader_lit_instanced_vs : rbl__shader_lit_vs, fsParts, defines);
-    if (lit.shader.id == 0) return lit;
+    Shader shader;
+    if (key->kind == RBL__KIND_PASS)
+    {
+        static const char *const *const *const vs[RBL__PASS_COUNT] = { rbl__pass_fullscreen_vs, rbl__pass_volume_vs, rbl__pass_fullscreen_vs, rbl__pass_fullscreen_vs, rbl__pass_volume_vs };
+        static const char *const *const *const fs[RBL__PASS_COUNT] = { rbl__pass_deferred_ambient_fs, rbl__pass_deferred_volume_fs, rbl__pass_deferred_resolve_fs,
+                                                                       rbl__pass_deferred_ambient_fs, rbl__pass_deferred_volume_fs };
+        if ((key->pass == RBL__PASS_AMBIENT_COUNT) || (key->pass == RBL__PASS_VOLUME_COUNT))
+        {
+            size_t l = strlen(defines);
+            snprintf(defines + l, sizeof(defines) - l, "#define RBL_COUNT_LIGHTS\n");
+        }
+        shader = rbl__loadShaderVariant(vs[key->pass], fs[key->pass], defines);
+    }
+    else
+    {
+        const char *const *const *fs = (key->kind == RBL__KIND_CASTER)? rbl__pass_shadow_caster_fs : (d->deferred? rbl__pass_gbuffer_fs : rbl__pass_lit_fs);
+        shader = rbl__loadShaderVariant(d->instanced? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs, fs, defines);
+    }
+    if (shader.id == 0) return NULL;
+    // GL hands out the names of deleted programs again: an entry still holding this id was deleted
+    // outside the header
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == shader.id)) rbl__forgetProgram(&rbl__state.programs[i]);
 
-    lit.maxLights = d->maxLights;
-    lit.lightFeatures = d->lightFeatures;
-    lit.brdf = d->brdf;
-    lit.fogMode = d->fog.mode;
-    lit.material = d->material;
-    lit.instanced = d->instanced;
+    rbl__Program *p = &rbl__state.programs[slot];
+    memset(p, 0, sizeof(*p));
+    p->key = *key;
+    p->shader = shader;
     // Samplers exist only where the layout uses them (-1 otherwise), so nothing absent is bound
-    lit.shader.locs[SHADER_LOC_VECTOR_VIEW] = GetShaderLocation(lit.shader, "viewPos");
-    lit.shader.locs[SHADER_LOC_MAP_NORMAL] = GetShaderLocation(lit.shader, "texture2");
-    lit.shader.locs[SHADER_LOC_MAP_EMISSION] = GetShaderLocation(lit.shader, "texture5");
-    lit.locLightCount = GetShaderLocation(lit.shader, "rblLightCount");
-    lit.locLightPosition = GetShaderLocation(lit.shader, "rblLightPosition");
-    lit.locLightColor = GetShaderLocation(lit.shader, "rblLightColor");
-    lit.locLightSpot = GetShaderLocation(lit.shader, "rblLightSpot");
-    lit.locLightAttenuation = GetShaderLocation(lit.shader, "rblLightAttenuation");
-    lit.locAmbient = GetShaderLocation(lit.shader, "rblAmbient");
-    lit.locAmbientGround = GetShaderLocation(lit.shader, "rblAmbientGround");
-    lit.locAmbientUp = GetShaderLocation(lit.shader, "rblAmbientUp");
-    lit.locFog = GetShaderLocation(lit.shader, "rblFog");
-    lit.locFogStart = GetShaderLocation(lit.shader, "rblFogStart");
-    lit.locExposure = GetShaderLocation(lit.shader, "rblExposure");
-    lit.locAlphaCutoff = GetShaderLocation(lit.shader, "rblAlphaCutoff");
-    lit.shadowMaps = d->shadowMaps;
-    lit.locShadowLight = GetShaderLocation(lit.shader, "rblShadowLight");
-    lit.locShadowMatrix = GetShaderLocation(lit.shader, "rblShadowMatrix");
-    lit.locShadowParams = GetShaderLocation(lit.shader, "rblShadowParams");
-    lit.locShadowBias = GetShaderLocation(lit.shader, "rblShadowBias");
-    lit.locShadowAxes = GetShaderLocation(lit.shader, "rblShadowAxes");
-    rbl__initShadowUniforms(lit.shader.id, lit.shadowMaps, lit.locShadowLight);
-
-    // Everything the desc fixes is uploaded once here; lights, ambient, fog and exposure can change later
-    SetShaderValue(lit.shader, lit.locAlphaCutoff, &d->alphaCutoff, SHADER_UNIFORM_FLOAT);
-    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblEmissiveIntensity"), &d->emissiveIntensity, SHADER_UNIFORM_FLOAT);
-    float emissive[3] = { rbl__colorToLinear(d->emissiveColor.r)*d->emissiveIntensity, rbl__colorToLinear(d->emissiveColor.g)*d->emissiveIntensity,
-                          rbl__colorToLinear(d->emissiveColor.b)*d->emissiveIntensity };
-    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblEmissiveColor"), emissive, SHADER_UNIFORM_VEC3);
-    float specular[4] = { rbl__colorToLinear(d->specularColor.r)*d->specular, rbl__colorToLinear(d->specularColor.g)*d->specular,
-                          rbl__colorToLinear(d->specularColor.b)*d->specular, d->shininess };
-    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblSpecularColor"), specular, SHADER_UNIFORM_VEC4);
-    float roughMetal[2] = { d->roughness, d->metalness };
-    SetShaderValue(lit.shader, GetShaderLocation(lit.shader, "rblRoughMetal"), roughMetal, SHADER_UNIFORM_VEC2);
-    if (lit.locFog != -1) rbl__setFogUniforms(&lit, d->fog);
-    SetShaderValue(lit.shader, lit.locExposure, &d->exposure, SHADER_UNIFORM_FLOAT);
-    float up[3] = { 0.0f, 1.0f, 0.0f };
-    SetShaderValue(lit.shader, lit.locAmbientUp, up, SHADER_UNIFORM_VEC3);
-    int zero = 0;
-    SetShaderValue(lit.shader, lit.locLightCount, &zero, SHADER_UNIFORM_INT);
-    return lit;
+    p->shader.locs[SHADER_LOC_VECTOR_VIEW] = GetShaderLocation(shader, "viewPos");
+    p->shader.locs[SHADER_LOC_MAP_NORMAL] = GetShaderLocation(shader, "texture2");
+    p->shader.locs[SHADER_LOC_MAP_EMISSION] = GetShaderLocation(shader, "texture5");
+    for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
+    p->refs = 1;
+    rlEnableShader(shader.id);
+    // Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed
+    // until a scene gives a map (an unbound sampler would read depth 0 and darken everything)
+    for (int k = 0; k < d->shadowMaps; k++)
+    {
+        char name[32];
+        snprintf(name, sizeof(name), "rblShadowMap%i", k);
+        int unit = RBL_SHADOW_TEXTURE_UNIT + k;
+        rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
+    }
+    int none[4] = { -1, -1, -1, -1 };
+    if (p->loc[RBL__U_SHADOW_LIGHT] != -1) rlSetUniform(p->loc[RBL__U_SHADOW_LIGHT], none, SHADER_UNIFORM_IVEC4, 1);
+    float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
+    if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
+    if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
+    rlDisableShader();
+    rbl__uploadScene(p);            // a program loaded mid-frame draws with the current scene
+    return p;
 }
 
-RblLitShader RblLoadLitShader(RblLitShaderDesc desc)
+// Entry for key: the registry's (one more holder) or a new compile; NULL (logged) on failure
+static rbl__Program *rbl__acquireProgram(const rbl__ProgramKey *key)
 {
-    RblLitShader lit;
-    memset(&lit, 0, sizeof(lit));
-    RblLitShaderDesc key;
-    const char *bad = rbl__normaliseLitDesc(desc, &key);
-    if (bad != NULL)
-    {
-        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad);
-        return lit;
-    }
-    int freeSlot = -1;
     for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
     {
-        if (rbl__litCache[i].refs == 0) { if (freeSlot < 0) freeSlot = i; continue; }
-        if (memcmp(&rbl__litCache[i].key, &key, sizeof(key)) == 0)
-        {
-            rbl__litCache[i].refs++;
-            return rbl__litCache[i].shader;
-        }
+        rbl__Program *p = &rbl__state.programs[i];
+        if ((p->refs == 0) || (memcmp(&p->key, key, sizeof(*key)) != 0)) continue;
+        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); break; }
+        p->refs++;
+        return p;
     }
-    lit = rbl__compileLit(&key);
-    if ((lit.shader.id != 0) && (freeSlot >= 0))
-    {
-        rbl__litCache[freeSlot].key = key;
-        rbl__litCache[freeSlot].shader = lit;
-        rbl__litCache[freeSlot].refs = 1;
-    }
-    return lit;
+    return rbl__compileProgram(key);
 }
 
-bool RblIsLitShaderValid(RblLitShader shader)
+// One holder fewer; the last one deletes the program
+static void rbl__releaseProgram(unsigned int id, int kind)
 {
-    return (shader.shader.id != 0) && (shader.shader.id != rlGetShaderIdDefault());
-}
-
-void RblUnloadLitShader(RblLitShader shader)
-{
-    if (!RblIsLitShaderValid(shader)) return;
     for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
     {
-        if ((rbl__litCache[i].refs > 0) && (rbl__litCache[i].shader.shader.id == shader.shader.id))
+        rbl__Program *p = &rbl__state.programs[i];
+        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != kind)) continue;
+        if (--p->refs == 0)
         {
-            if (--rbl__litCache[i].refs > 0) return;        // still used by another holder of the same variant
-            memset(&rbl__litCache[i], 0, sizeof(rbl__litCache[i]));
-            break;
+            UnloadShader(p->shader);
+            memset(p, 0, sizeof(*p));
         }
+        return;
     }
-    UnloadShader(shader.shader);
-    rbl__programGeneration++;       // its id may now be given to another program
 }
 
-// Colours are authored in sRGB like every raylib Color; lighting runs in linear light
-static float rbl__colorToLinear(unsigned char c) { return (float)rbl__srgbToLinear(c/255.0); }
+static void rbl__keyFromDesc(const RblLitShaderDesc *normalised, int kind, int pass, rbl__ProgramKey *key)
+{
+    memset(key, 0, sizeof(*key));
+    key->desc = *normalised;
+    key->kind = kind;
+    key->pass = pass;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: lit programs and per-draw material values
+//----------------------------------------------------------------------------------
+Shader RblLoadLitShader(RblLitShaderDesc desc)
+{
+    Shader none;
+    memset(&none, 0, sizeof(none));
+    RblLitShaderDesc normalised;
+    const char *bad = rbl__normaliseLitDesc(desc, &normalised);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad); return none; }
+    if (rbl__state.handleCount == rbl__state.handleCapacity)
+    {
+        int capacity = (rbl__state.handleCapacity > 0)? rbl__state.handleCapacity*2 : 16;
+        rbl__Handle *handles = (rbl__Handle *)RBL_REALLOC(rbl__state.handles, (size_t)capacity*sizeof(rbl__Handle));
+        if (handles == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
+        rbl__state.handles = handles;
+        rbl__state.handleCapacity = capacity;
+    }
+    // The holder's own copy of the locations: raylib's UnloadShader frees a Shader's locs, so no two
+    // holders may share one array (raylib's allocator, since raylib frees it)
+    int *locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
+    if (locs == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_LIT, 0, &key);
+    rbl__Program *p = rbl__acquireProgram(&key);
+    if (p == NULL) { MemFree(locs); return none; }
+    memcpy(locs, p->shader.locs, RL_MAX_SHADER_LOCATIONS*sizeof(int));
+    rbl__state.handles[rbl__state.handleCount].locs = locs;
+    rbl__state.handles[rbl__state.handleCount].id = p->shader.id;
+    rbl__state.handleCount++;
+    Shader shader;
+    shader.id = p->shader.id;
+    shader.locs = locs;
+    return shader;
+}
+
+// Index of the live handle shader is, or -1
+static int rbl__findHandle(Shader shader)
+{
+    if ((shader.id == 0) || (shader.locs == NULL)) return -1;
+    for (int i = 0; i < rbl__state.handleCount; i++)
+        if ((rbl__state.handles[i].locs == shader.locs) && (rbl__state.handles[i].id == shader.id)) return i;
+    return -1;
+}
+
+bool RblIsLitShaderValid(Shader shader)
+{
+    if (rbl__findLit(shader.id, true) == NULL) return false;     // forgets a deleted program and its handles
+    return rbl__findHandle(shader) >= 0;
+}
+
+void RblUnloadLitShader(Shader *shader)
+{
+    if (shader == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: NULL shader"); return; }
+    rbl__findLit(shader->id, true);             // forgets the program (and its handles) if it was deleted outside
+    int h = rbl__findHandle(*shader);
+    if (h < 0)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u is not a live lit program handle (already unloaded, or a stale copy)", shader->id);
+        return;
+    }
+    rbl__releaseProgram(shader->id, RBL__KIND_LIT);
+    MemFree(rbl__state.handles[h].locs);
+    rbl__state.handles[h] = rbl__state.handles[--rbl__state.handleCount];
+    memset(shader, 0, sizeof(*shader));
+}
 
 static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 {
@@ -4013,12 +4295,116 @@ int RblLightFeatures(const RblLight *lights, int count)
     return features;
 }
 
-// One light's uniform values (see lighting.glsl); NULL when it is rejected, with the reason
-static const char *rbl__packLight(const RblLight *l, int variantFeatures, float p[4], float c[4], float spot[4], float k[3])
+// The uniform values of one material for program p (zero fields take their defaults)
+static void rbl__materialValues(const rbl__Program *p, const Material *material, rbl__MaterialValues *v)
+{
+    memset(v, 0, sizeof(*v));
+    v->specularColor = WHITE;
+    if (material->maps != NULL)
+    {
+        const MaterialMap *maps = material->maps;
+        Color sc = maps[MATERIAL_MAP_SPECULAR].color;
+        if ((sc.r | sc.g | sc.b | sc.a) != 0) v->specularColor = sc;
+        v->emissiveColor = maps[MATERIAL_MAP_EMISSION].color;
+        v->shininess = maps[MATERIAL_MAP_NORMAL].value;
+        v->roughness = maps[MATERIAL_MAP_ROUGHNESS].value;
+        v->metalness = maps[MATERIAL_MAP_METALNESS].value;
+        v->emissive = maps[MATERIAL_MAP_EMISSION].value;
+    }
+    v->alphaCutoff = material->params[RBL_PARAM_ALPHA_CUTOFF];
+    v->specular = material->params[RBL_PARAM_SPECULAR];
+    // Defaults, and NaN/Inf or out-of-range values clamped to what the shaders accept
+    bool specularMap = p->key.desc.material.specular;
+    v->specular = !rbl__finite(v->specular)? 0.0f : v->specular;
+    v->specular = (v->specular == 0.0f)? (specularMap? 1.0f : 0.5f) : ((v->specular < 0.0f)? 0.0f : v->specular);
+    v->shininess = (!rbl__finite(v->shininess) || (v->shininess == 0.0f))? 32.0f : ((v->shininess < 1.0f)? 1.0f : v->shininess);
+    v->roughness = (!rbl__finite(v->roughness) || (v->roughness == 0.0f))? 0.5f : ((v->roughness < 0.0f)? 0.0f : ((v->roughness > 1.0f)? 1.0f : v->roughness));
+    v->metalness = !rbl__finite(v->metalness)? 0.0f : ((v->metalness < 0.0f)? 0.0f : ((v->metalness > 1.0f)? 1.0f : v->metalness));
+    v->emissive = (!rbl__finite(v->emissive) || (v->emissive == 0.0f))? 1.0f : ((v->emissive < 0.0f)? 0.0f : v->emissive);
+    v->alphaCutoff = !rbl__finite(v->alphaCutoff)? 0.5f : ((v->alphaCutoff == 0.0f)? 0.5f : v->alphaCutoff);
+    v->emissiveColor.a = 0;                         // only rgb matters
+}
+
+// Upload the material's values into bound program p, unless the last draw with p used the same ones
+static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
+{
+    rbl__MaterialValues v;
+    rbl__materialValues(p, material, &v);
+    if (p->valuesValid && (memcmp(&v, &p->values, sizeof(v)) == 0)) return;
+    p->values = v;
+    p->valuesValid = true;
+    const int *loc = p->loc;
+    if (loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(loc[RBL__U_ALPHA_CUTOFF], &v.alphaCutoff, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_SPECULAR] != -1)
+    {
+        float s[4] = { rbl__colorToLinear(v.specularColor.r)*v.specular, rbl__colorToLinear(v.specularColor.g)*v.specular,
+                       rbl__colorToLinear(v.specularColor.b)*v.specular, v.shininess };
+        rlSetUniform(loc[RBL__U_SPECULAR], s, SHADER_UNIFORM_VEC4, 1);
+    }
+    if (loc[RBL__U_ROUGH_METAL] != -1) { float rm[2] = { v.roughness, v.metalness }; rlSetUniform(loc[RBL__U_ROUGH_METAL], rm, SHADER_UNIFORM_VEC2, 1); }
+    if (loc[RBL__U_EMISSIVE_COLOR] != -1)
+    {
+        float e[3] = { rbl__colorToLinear(v.emissiveColor.r)*v.emissive, rbl__colorToLinear(v.emissiveColor.g)*v.emissive, rbl__colorToLinear(v.emissiveColor.b)*v.emissive };
+        rlSetUniform(loc[RBL__U_EMISSIVE_COLOR], e, SHADER_UNIFORM_VEC3, 1);
+    }
+    if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
+}
+
+// The program of a header draw: inside a shadow pass the caster (the material keeps only its albedo
+// map, never another slot that could hold the very depth texture being written, and its alpha
+// cutoff, so a sprite's silhouette casts); elsewhere the material's own program, checked against the
+// pass in progress. *program = NULL for a shader that is not the header's (drawn as raylib would).
+// false = refused, with one log line.
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program)
+{
+    *program = NULL;
+    if ((rbl__state.shadowPass == NULL) && ((material->shader.id == 0) || (material->shader.locs == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: the material has no shader (a zero Material, or a lit program that failed to load)", fn);
+        return false;
+    }
+    if (rbl__state.shadowPass != NULL)
+    {
+        rbl__Program *caster = NULL;
+        for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+            if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == rbl__state.casterIds[instanced? 1 : 0]) &&
+                (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) caster = &rbl__state.programs[i];
+        if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
+        memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
+        if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
+        else casterMaps[MATERIAL_MAP_ALBEDO].color = WHITE;
+        material->maps = casterMaps;
+        material->shader = caster->shader;
+        *program = caster;
+        return true;
+    }
+    rbl__Program *p = rbl__findLit(material->shader.id, false);
+    const RblGBuffer *g = rbl__state.gbufferPass;
+    const char *bad = NULL;
+    if (p == NULL)
+    {
+        if (instanced) bad = "the material's shader is not an instanced lit program (RblLitShaderDesc.instanced)";
+        else if (g != NULL) bad = "inside a G-buffer pass the material's shader must be a deferred lit program";
+    }
+    else if (p->key.desc.instanced != instanced) bad = instanced? "the material's program is not an instanced variant" : "an instanced variant draws only through RblDrawInstanced";
+    else if ((g != NULL) && !p->key.desc.deferred) bad = "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
+    else if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) bad = "the deferred variant's brdf differs from the G-buffer's";
+    else if ((g == NULL) && p->key.desc.deferred) bad = "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
+    *program = p;
+    return true;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: the scene
+//----------------------------------------------------------------------------------
+#define RBL__LIGHT_FLOATS 16            // position, colour, spot (vec4 each), falloff (vec3) + shadow map index + 1
+
+// One light's uniform values (see lights.glsl); NULL when it is rejected, with the reason
+static const char *rbl__packLight(const RblLight *l, float p[4], float c[4], float spot[4], float k[3])
 {
     int features = 0;
     if (!rbl__lightFeatureOf(l, &features)) return "unknown type or falloff";
-    if ((features & ~variantFeatures & ~RBL_LIGHTS_POINT) != 0) return "type or falloff not compiled into this shader (RblLitShaderDesc.lightFeatures)";
     if (!rbl__finite3(l->position) || !rbl__finite3(l->direction)) return "NaN/Inf position or direction";
     if (!rbl__finiteNonNegative(l->intensity) || !rbl__finiteNonNegative(l->range)) return "negative or non-finite intensity or range";
     bool directed = (l->type != RBL_LIGHT_POINT);
@@ -4056,81 +4442,239 @@ static const char *rbl__packLight(const RblLight *l, int variantFeatures, float 
     return NULL;
 }
 
-bool RblSetLights(RblLitShader *shader, const RblLight *lights, int count, Color ambient)
+static void rbl__shadowUniformData(const RblShadowMap *map, float out[32]);
+static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int lightCount);
+
+// Bind the scene's shadow maps to their texture units (every receiver reads units 12 + k)
+static void rbl__bindSceneShadows(void)
 {
-    if ((shader == NULL) || !RblIsLitShaderValid(*shader)) { TraceLog(LOG_WARNING, "RBL: RblSetLights: invalid shader"); return false; }
-    if ((count < 0) || (count > shader->maxLights) || ((count > 0) && (lights == NULL)))
+    for (int k = 0; k < rbl__state.scene.shadowCount; k++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k); rlEnableTexture(rbl__state.scene.shadowTexture[k]); }
+    rlActiveTextureSlot(0);
+}
+
+// Shadow uniforms of program p: map k shadows light slot slotOf[k] (-1 = none)
+static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_SHADOWS])
+{
+    const rbl__Scene *s = &rbl__state.scene;
+    const int *loc = p->loc;
+    int n = (s->shadowCount < p->key.desc.shadowMaps)? s->shadowCount : p->key.desc.shadowMaps;
+    int lightOf[4] = { -1, -1, -1, -1 };
+    for (int k = 0; k < n; k++) lightOf[k] = slotOf[k];
+    rlSetUniform(loc[RBL__U_SHADOW_LIGHT], lightOf, SHADER_UNIFORM_IVEC4, 1);
+    if (n == 0) return;
+    Matrix m[RBL_MAX_SHADOWS];
+    float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
+    for (int k = 0; k < n; k++)
     {
-        TraceLog(LOG_WARNING, "RBL: RblSetLights: %i lights for a shader compiled with %i slots", count, shader->maxLights);
-        return false;
+        m[k] = rbl__matFromArray(s->shadowUniforms[k]);
+        memcpy(&params[k*4], &s->shadowUniforms[k][16], 4*sizeof(float));
+        memcpy(&bias[k*4], &s->shadowUniforms[k][20], 4*sizeof(float));
+        memcpy(&axes[k*8], &s->shadowUniforms[k][24], 8*sizeof(float));
     }
-    float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
-    for (int i = 0; i < count; i++)
+    rlSetUniformMatrices(loc[RBL__U_SHADOW_MATRIX], m, n);
+    rlSetUniform(loc[RBL__U_SHADOW_PARAMS], params, SHADER_UNIFORM_VEC4, n);
+    rlSetUniform(loc[RBL__U_SHADOW_BIAS], bias, SHADER_UNIFORM_VEC4, n);
+    rlSetUniform(loc[RBL__U_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*n);
+}
+
+// Ambient, fog and exposure of the scene (G-buffer passes: fog and exposure only; their ambient and
+// lights go per draw)
+static void rbl__uploadSceneConstants(const rbl__Program *p, bool ambient)
+{
+    const rbl__Scene *s = &rbl__state.scene;
+    const int *loc = p->loc;
+    if (ambient && (loc[RBL__U_AMBIENT] != -1)) rlSetUniform(loc[RBL__U_AMBIENT], s->ambient, SHADER_UNIFORM_VEC3, 1);
+    if (ambient && (loc[RBL__U_AMBIENT_GROUND] != -1)) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], s->ground, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(loc[RBL__U_AMBIENT_UP], s->up, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_FOG] != -1)
     {
-        const char *bad = rbl__packLight(&lights[i], shader->lightFeatures, &pos[i*4], &col[i*4], &spot[i*4], &att[i*3]);
-        if (bad != NULL)
+        // Another mode than the compiled one (or none) leaves the fog clear: density or slope 0
+        bool same = (s->fogMode == p->key.desc.fog);
+        float f[4] = { s->fog[0], s->fog[1], s->fog[2], same? s->fog[3] : 0.0f }, start = same? s->fogStart : 0.0f;
+        rlSetUniform(loc[RBL__U_FOG], f, SHADER_UNIFORM_VEC4, 1);
+        rlSetUniform(loc[RBL__U_FOG_START], &start, SHADER_UNIFORM_FLOAT, 1);
+    }
+    if (loc[RBL__U_EXPOSURE] != -1) rlSetUniform(loc[RBL__U_EXPOSURE], &s->exposure, SHADER_UNIFORM_FLOAT, 1);
+}
+
+// The scene into one forward program: its first maxLights lights of compiled types, ambient, fog,
+// exposure and the shadow maps it receives; returns lights left out (no slot or type not compiled)
+static int rbl__uploadSceneLights(const rbl__Program *p)
+{
+    const rbl__Scene *s = &rbl__state.scene;
+    const int *loc = p->loc;
+    float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
+    int slotOf[RBL_MAX_SHADOWS] = { -1, -1, -1, -1 };
+    int n = 0, skipped = 0;
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        if ((n == p->key.desc.maxLights) || ((s->lightFeatures[i] & ~p->key.desc.lightFeatures & ~RBL_LIGHTS_POINT) != 0)) { skipped++; continue; }
+        memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
+        memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
+        if (d[15] > 0.0f) slotOf[(int)d[15] - 1] = n;
+        n++;
+    }
+    rlSetUniform(loc[RBL__U_LIGHT_COUNT], &n, SHADER_UNIFORM_INT, 1);
+    if (n > 0)
+    {
+        rlSetUniform(loc[RBL__U_LIGHT_POSITION], pos, SHADER_UNIFORM_VEC4, n);
+        rlSetUniform(loc[RBL__U_LIGHT_COLOR], col, SHADER_UNIFORM_VEC4, n);
+        if (loc[RBL__U_LIGHT_SPOT] != -1) rlSetUniform(loc[RBL__U_LIGHT_SPOT], spot, SHADER_UNIFORM_VEC4, n);
+        if (loc[RBL__U_LIGHT_ATTENUATION] != -1) rlSetUniform(loc[RBL__U_LIGHT_ATTENUATION], att, SHADER_UNIFORM_VEC3, n);
+    }
+    if (loc[RBL__U_SHADOW_MATRIX] != -1) rbl__uploadShadows(p, slotOf);
+    return skipped;
+}
+
+// The current scene into program p (every kind reads what it declares); returns lights left out
+static int rbl__uploadSceneInto(rbl__Program *p)
+{
+    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_MATRIX] == -1)) return 0;
+    int skipped = 0;
+    rlEnableShader(p->shader.id);
+    bool pass = (p->key.kind == RBL__KIND_PASS);
+    rbl__uploadSceneConstants(p, !pass);
+    if (!pass && (p->loc[RBL__U_LIGHT_COUNT] != -1)) skipped = rbl__uploadSceneLights(p);
+    rlDisableShader();
+    return skipped;
+}
+
+static void rbl__uploadScene(rbl__Program *p) { rbl__uploadSceneInto(p); }
+
+bool RblSetScene(const RblScene *scene)
+{
+    const char *bad = NULL;
+    int badLight = -1;
+    Vector3 up = rbl__v3(0.0f, 1.0f, 0.0f);
+    if (scene == NULL) bad = "NULL scene";
+    else if ((scene->lightCount < 0) || ((scene->lightCount > 0) && (scene->lights == NULL))) bad = "lightCount negative, or lights NULL";
+    else if ((scene->lightCount > (1 << 20))) bad = "more than 2^20 lights";
+    else if ((scene->fog.mode < RBL_FOG_NONE) || (scene->fog.mode > RBL_FOG_EXP2)) bad = "unknown fog.mode";
+    else if ((scene->fog.mode != RBL_FOG_NONE) && (!rbl__finite(scene->fog.start) || !rbl__finite(scene->fog.end) || !rbl__finiteNonNegative(scene->fog.density)))
+        bad = "fog start/end not finite or density negative";
+    else if ((scene->fog.mode == RBL_FOG_LINEAR) && !(scene->fog.end > scene->fog.start)) bad = "linear fog needs end > start";
+    else if (!rbl__finiteNonNegative(scene->exposure)) bad = "exposure negative or not finite";
+    else if (!rbl__finite3(scene->ambientUp) || ((rbl__len2(scene->ambientUp) != 0.0f) && !rbl__normalizeTo(scene->ambientUp, &up))) bad = "ambientUp not a finite direction";
+    else bad = rbl__checkShadowMaps(scene->shadowMaps, scene->shadowMapCount, scene->lightCount);
+    rbl__Scene *s = &rbl__state.scene;
+    // Packed storage grows to the largest scene (no allocation in a steady frame)
+    if ((bad == NULL) && (scene->lightCount > s->lightCapacity))
+    {
+        int capacity = (s->lightCapacity > 0)? s->lightCapacity : 16;
+        while (capacity < scene->lightCount) capacity *= 2;
+        float *lights = (float *)RBL_MALLOC((size_t)capacity*RBL__LIGHT_FLOATS*sizeof(float));
+        float *staging = (float *)RBL_MALLOC((size_t)capacity*RBL__LIGHT_FLOATS*sizeof(float));
+        int *features = (int *)RBL_MALLOC((size_t)capacity*sizeof(int));
+        if ((lights == NULL) || (staging == NULL) || (features == NULL))
         {
-            TraceLog(LOG_WARNING, "RBL: RblSetLights: light %i rejected: %s", i, bad);
-            return false;
+            RBL_FREE(lights); RBL_FREE(staging); RBL_FREE(features);
+            bad = "out of memory for the lights";
+        }
+        else
+        {
+            if (s->lightCount > 0)
+            {
+                memcpy(lights, s->lights, (size_t)s->lightCount*RBL__LIGHT_FLOATS*sizeof(float));
+                memcpy(features, s->lightFeatures, (size_t)s->lightCount*sizeof(int));
+            }
+            RBL_FREE(s->lights); RBL_FREE(s->staging); RBL_FREE(s->lightFeatures);
+            s->lights = lights; s->staging = staging; s->lightFeatures = features;
+            s->lightCapacity = capacity;
         }
     }
-    float amb[3] = { rbl__colorToLinear(ambient.r), rbl__colorToLinear(ambient.g), rbl__colorToLinear(ambient.b) };
-    SetShaderValue(shader->shader, shader->locAmbient, amb, SHADER_UNIFORM_VEC3);
-    SetShaderValue(shader->shader, shader->locAmbientGround, amb, SHADER_UNIFORM_VEC3);
-    SetShaderValue(shader->shader, shader->locLightCount, &count, SHADER_UNIFORM_INT);
-    if (count > 0)
+    // Validate every light into the staging area first: a rejected scene changes nothing
+    for (int i = 0; (bad == NULL) && (i < scene->lightCount); i++)
     {
-        SetShaderValueV(shader->shader, shader->locLightPosition, pos, SHADER_UNIFORM_VEC4, count);
-        SetShaderValueV(shader->shader, shader->locLightColor, col, SHADER_UNIFORM_VEC4, count);
-        if (shader->locLightSpot != -1) SetShaderValueV(shader->shader, shader->locLightSpot, spot, SHADER_UNIFORM_VEC4, count);
-        if (shader->locLightAttenuation != -1) SetShaderValueV(shader->shader, shader->locLightAttenuation, att, SHADER_UNIFORM_VEC3, count);
+        float *d = &s->staging[i*RBL__LIGHT_FLOATS];
+        bad = rbl__packLight(&scene->lights[i], &d[0], &d[4], &d[8], &d[12]);
+        if (bad != NULL) badLight = i;
+    }
+    if (bad != NULL)
+    {
+        if (badLight >= 0) TraceLog(LOG_WARNING, "RBL: RblSetScene: light %i rejected: %s", badLight, bad);
+        else TraceLog(LOG_WARNING, "RBL: RblSetScene: %s", bad);
+        return false;
+    }
+    for (int i = 0; i < scene->lightCount; i++)
+    {
+        float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        memcpy(d, &s->staging[i*RBL__LIGHT_FLOATS], RBL__LIGHT_FLOATS*sizeof(float));
+        d[15] = 0.0f;
+        s->lightFeatures[i] = 0;
+        rbl__lightFeatureOf(&scene->lights[i], &s->lightFeatures[i]);
+    }
+    s->lightCount = scene->lightCount;
+    Color sky = scene->ambient, ground = scene->ambientGround;
+    if ((ground.r | ground.g | ground.b | ground.a) == 0) ground = sky;       // flat
+    s->ambient[0] = rbl__colorToLinear(sky.r); s->ambient[1] = rbl__colorToLinear(sky.g); s->ambient[2] = rbl__colorToLinear(sky.b);
+    s->ground[0] = rbl__colorToLinear(ground.r); s->ground[1] = rbl__colorToLinear(ground.g); s->ground[2] = rbl__colorToLinear(ground.b);
+    s->up[0] = up.x; s->up[1] = up.y; s->up[2] = up.z;
+    const RblFog *fog = &scene->fog;
+    s->fogMode = fog->mode;
+    s->fog[0] = rbl__colorToLinear(fog->color.r); s->fog[1] = rbl__colorToLinear(fog->color.g); s->fog[2] = rbl__colorToLinear(fog->color.b);
+    s->fog[3] = (fog->mode == RBL_FOG_NONE)? 0.0f : ((fog->mode == RBL_FOG_LINEAR)? 1.0f/(fog->end - fog->start) : fog->density);
+    s->fogStart = (fog->mode == RBL_FOG_NONE)? 0.0f : fog->start;
+    s->exposure = (scene->exposure == 0.0f)? 1.0f : scene->exposure;
+    s->shadowCount = scene->shadowMapCount;
+    for (int k = 0; k < scene->shadowMapCount; k++)
+    {
+        const RblShadowMap *map = &scene->shadowMaps[k];
+        rbl__shadowUniformData(map, s->shadowUniforms[k]);
+        s->shadowLight[k] = map->light;
+        s->shadowTexture[k] = map->depth.id;
+        s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
+    }
+    rbl__bindSceneShadows();
+    // Every live program now, so raylib's DrawModel/DrawMesh (which bind programs themselves) see it too
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    {
+        rbl__Program *p = &rbl__state.programs[i];
+        if (p->refs == 0) continue;
+        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
+        int skipped = rbl__uploadSceneInto(p);
+        if (skipped > 0)
+            TraceLog(LOG_INFO, "RBL: RblSetScene: lit program %u lights %i of %i lights (maxLights %i, or types not in lightFeatures)",
+                     p->shader.id, s->lightCount - skipped, s->lightCount, p->key.desc.maxLights);
     }
     return true;
 }
 
-bool RblSetHemisphereAmbient(RblLitShader *shader, Color sky, Color ground, Vector3 up)
+// Draw a mesh with the material's lit values (or as a caster inside a shadow pass) through raylib
+void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
 {
-    if ((shader == NULL) || !RblIsLitShaderValid(*shader) || (shader->locAmbientUp == -1))
+    MaterialMap casterMaps[RBL__CASTER_MAPS];
+    rbl__Program *p = NULL;
+    if (!rbl__prepareDraw(&material, casterMaps, false, "RblDrawMesh", &p)) return;
+    if (p != NULL)
     {
-        TraceLog(LOG_WARNING, "RBL: RblSetHemisphereAmbient: shader invalid or not compiled with hemisphereAmbient");
-        return false;
+        rlEnableShader(material.shader.id);
+        rbl__applyMaterialValues(p, &material);
     }
-    float l = sqrtf(up.x*up.x + up.y*up.y + up.z*up.z);
-    if (!rbl__finite3(up) || !(l > 1e-12f) || !rbl__finite(l)) { TraceLog(LOG_WARNING, "RBL: RblSetHemisphereAmbient: up must be finite and non-zero"); return false; }
-    float s[3] = { rbl__colorToLinear(sky.r), rbl__colorToLinear(sky.g), rbl__colorToLinear(sky.b) };
-    float g[3] = { rbl__colorToLinear(ground.r), rbl__colorToLinear(ground.g), rbl__colorToLinear(ground.b) };
-    float u[3] = { up.x/l, up.y/l, up.z/l };
-    SetShaderValue(shader->shader, shader->locAmbient, s, SHADER_UNIFORM_VEC3);
-    SetShaderValue(shader->shader, shader->locAmbientGround, g, SHADER_UNIFORM_VEC3);
-    SetShaderValue(shader->shader, shader->locAmbientUp, u, SHADER_UNIFORM_VEC3);
-    return true;
+    DrawMesh(mesh, material, transform);
 }
 
-bool RblSetFog(RblLitShader *shader, RblFog fog)
+void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
 {
-    if ((shader == NULL) || !RblIsLitShaderValid(*shader) || (shader->fogMode == RBL_FOG_NONE) || (fog.mode != shader->fogMode))
+    if ((model.meshes == NULL) || (model.materials == NULL) || (model.meshMaterial == NULL) || (model.meshCount < 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: model not loaded"); return; }
+    if (!rbl__finite3(position) || !rbl__finite(scale)) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: NaN/Inf position or scale"); return; }
+    // As DrawModel: transform = model.transform x scale x translation; the albedo colour tinted
+    Matrix t = rbl__identity();
+    t.m0 = t.m5 = t.m10 = scale;
+    t.m12 = position.x; t.m13 = position.y; t.m14 = position.z;
+    Matrix transform = rbl__matMul(model.transform, t);
+    for (int i = 0; i < model.meshCount; i++)
     {
-        TraceLog(LOG_WARNING, "RBL: RblSetFog: shader invalid or compiled with another fog mode");
-        return false;
+        int m = model.meshMaterial[i];
+        if ((m < 0) || (m >= model.materialCount)) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: mesh %i names material %i of %i", i, m, model.materialCount); continue; }
+        Material material = model.materials[m];
+        if (material.maps == NULL) { RblDrawMesh(model.meshes[i], material, transform); continue; }
+        Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
+        Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
+        material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
+        RblDrawMesh(model.meshes[i], material, transform);
+        material.maps[MATERIAL_MAP_ALBEDO].color = c;
     }
-    if (!rbl__finite(fog.start) || !rbl__finite(fog.end) || !rbl__finiteNonNegative(fog.density) || ((fog.mode == RBL_FOG_LINEAR) && !(fog.end > fog.start)))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblSetFog: start/end not finite (linear needs end > start) or density negative");
-        return false;
-    }
-    rbl__setFogUniforms(shader, fog);
-    return true;
-}
-
-bool RblSetExposure(RblLitShader *shader, float exposure)
-{
-    if ((shader == NULL) || !RblIsLitShaderValid(*shader) || (shader->locExposure == -1) || !rbl__finiteNonNegative(exposure))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblSetExposure: shader invalid or without exposure (desc.tonemap/exposure), or exposure negative/not finite");
-        return false;
-    }
-    SetShaderValue(shader->shader, shader->locExposure, &exposure, SHADER_UNIFORM_FLOAT);
-    return true;
 }
 
 // Upload a packed material's Images into the slots the lit shader reads. Mip chains (if packed with
@@ -4165,17 +4709,6 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
 //----------------------------------------------------------------------------------
 // Module Functions Definition: deferred G-buffer
 //----------------------------------------------------------------------------------
-// Test hook: pretend MRT / float targets are unavailable (the fallback test sets it)
-static bool rbl__gbufferForceFailure = false;
-
-enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMBIENT_COUNT, RBL__PASS_VOLUME_COUNT };
-enum { RBL__GLOC_ALBEDO = 0, RBL__GLOC_NORMAL, RBL__GLOC_PARAMS, RBL__GLOC_DEPTH, RBL__GLOC_ACCUM, RBL__GLOC_INVVIEW,
-       RBL__GLOC_EYE, RBL__GLOC_MVP, RBL__GLOC_VIEW, RBL__GLOC_SCALE, RBL__GLOC_AMBIENT, RBL__GLOC_GROUND, RBL__GLOC_UP,
-       RBL__GLOC_LIGHT_COUNT, RBL__GLOC_LIGHT_POSITION, RBL__GLOC_LIGHT_COLOR, RBL__GLOC_LIGHT_SPOT, RBL__GLOC_LIGHT_ATTENUATION,
-       RBL__GLOC_FOG, RBL__GLOC_FOG_START, RBL__GLOC_EXPOSURE, RBL__GLOC_DEPTH_LINEAR, RBL__GLOC_INV_P,
-       RBL__GLOC_SHADOW_LIGHT, RBL__GLOC_SHADOW_MATRIX, RBL__GLOC_SHADOW_PARAMS, RBL__GLOC_SHADOW_BIAS, RBL__GLOC_SHADOW_AXES, RBL__GLOC_COUNT };
-#define RBL__INSTANCE_FLOATS 16         // position, colour, spot (vec4 each), falloff (vec3) + shadow map index + 1
-
 // Inverse of a view matrix (rotation + translation): transposed rotation, translation -R^T t
 static Matrix rbl__rigidInverse(Matrix view)
 {
@@ -4195,10 +4728,10 @@ static Matrix rbl__rigidInverse(Matrix view)
 static void rbl__loadVolumeInstances(RblGBuffer *g, int capacity)
 {
     rlEnableVertexArray(g->volumeVao);
-    g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__INSTANCE_FLOATS*(int)sizeof(float), true);
+    g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__LIGHT_FLOATS*(int)sizeof(float), true);
     for (int a = 0; a < 4; a++)
     {
-        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, 4, RL_FLOAT, false, RBL__INSTANCE_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
+        rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, 4, RL_FLOAT, false, RBL__LIGHT_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
         rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + a, 1);
         rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + a);
     }
@@ -4289,7 +4822,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
-    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__gbufferForceFailure;
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__state.gbufferForceFailure;
     if (ok)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
@@ -4320,114 +4853,110 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     return true;
 }
 
-static const char *const rbl__gbufferUniforms[RBL__GLOC_COUNT] = { "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum",
-    "rblInvView", "rblEye", "mvp", "rblDebugView", "rblDebugScale", "rblAmbient", "rblAmbientGround", "rblAmbientUp",
-    "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation", "rblFog", "rblFogStart", "rblExposure",
-    "rblDepthLinear", "rblInvP", "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes" };
+// Lighting-pass desc of a G-buffer desc (the registry key of its passes)
+static void rbl__gbufferLitDesc(const RblGBufferDesc *g, RblLitShaderDesc *out)
+{
+    memset(out, 0, sizeof(*out));
+    out->maxLights = RBL_MAX_LIGHTS;        // unbounded lights (and the naive loop) go through full-screen passes
+    out->lightFeatures = g->lightFeatures; out->brdf = g->brdf; out->fog = g->fog; out->tonemap = g->tonemap; out->gamma = g->gamma;
+    out->linearOutput = g->linearOutput; out->shadowMaps = g->shadowMaps; out->shadowFilter = g->shadowFilter;
+}
 
-RblGBuffer RblLoadGBuffer(int width, int height, RblLitShaderDesc shading)
+static void rbl__releasePasses(RblGBuffer *g)
+{
+    for (int p = 0; p < RBL__PASS_COUNT; p++) if (g->passes[p] != 0) rbl__releaseProgram(g->passes[p], RBL__KIND_PASS);
+    memset(g->passes, 0, sizeof(g->passes));
+}
+
+RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 {
     RblGBuffer g;
     memset(&g, 0, sizeof(g));
-    if (width == 0) width = rlGetFramebufferWidth();
-    if (height == 0) height = rlGetFramebufferHeight();
-    shading.deferred = false;
-    shading.instanced = false;
-    shading.debugView = 0;
-    shading.maxLights = RBL_MAX_LIGHTS;        // unbounded lights (and the naive loop) go through full-screen passes
-    const char *bad = rbl__normaliseLitDesc(shading, &g.shading);
-    if ((bad == NULL) && ((width <= 0) || (height <= 0))) bad = "size must be positive";
-    if (bad != NULL)
-    {
-        TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad);
-        memset(&g, 0, sizeof(g));
-        return g;
-    }
-    if (!rbl__loadTargets(&g, width, height)) { memset(&g, 0, sizeof(g)); return g; }
+    int width = (desc.width == 0)? rlGetFramebufferWidth() : desc.width;
+    int height = (desc.height == 0)? rlGetFramebufferHeight() : desc.height;
+    RblLitShaderDesc lit, normalised;
+    rbl__gbufferLitDesc(&desc, &lit);
+    const char *bad = rbl__normaliseLitDesc(lit, &normalised);
+    if ((bad == NULL) && ((width <= 0) || (height <= 0) || (width > 16384) || (height > 16384))) bad = "size outside 1..16384";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
+    unsigned int callerTarget = rlGetActiveFramebuffer();
+    if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); memset(&g, 0, sizeof(g)); return g; }
+    rbl__restoreTarget(callerTarget);
+    g.desc = desc;
+    g.desc.width = width; g.desc.height = height;
+    g.desc.lightFeatures = normalised.lightFeatures; g.desc.shadowFilter = normalised.shadowFilter;
 
-    // Pass programs: the lighting.glsl of the forward path plus deferred.fs.glsl
-    char base[768];
-    rbl__litDefines(&g.shading, base, sizeof(base));
-    const char *passDefines[5] = { "#define RBL_PASS 1\n", "#define RBL_PASS 2\n", "#define RBL_PASS 3\n",
-                                   "#define RBL_PASS 1\n#define RBL_COUNT_LIGHTS\n", "#define RBL_PASS 2\n#define RBL_COUNT_LIGHTS\n" };
+    // Pass programs from the registry: the forward path's lights.glsl and output.glsl in the deferred stages
     bool ok = true;
-    for (int p = 0; (p < 5) && ok; p++)
+    for (int p = 0; (p < RBL__PASS_COUNT) && ok; p++)
     {
-        char defines[1024];
-        snprintf(defines, sizeof(defines), "%s%s", base, passDefines[p]);
-        const char *const *const fsParts[3] = { rbl__shader_lighting, rbl__shader_deferred_fs, NULL };
-        g.passes[p] = rbl__loadShaderVariant(rbl__shader_deferred_vs, fsParts, defines);
-        ok = (g.passes[p].id != 0);
-        for (int k = 0; ok && (k < RBL__GLOC_COUNT); k++) g.locs[p][k] = GetShaderLocation(g.passes[p], rbl__gbufferUniforms[k]);
-        if (ok) rbl__initShadowUniforms(g.passes[p].id, g.shading.shadowMaps, g.locs[p][RBL__GLOC_SHADOW_LIGHT]);
+        rbl__ProgramKey key;
+        rbl__keyFromDesc(&normalised, RBL__KIND_PASS, p, &key);
+        rbl__Program *program = rbl__acquireProgram(&key);
+        ok = (program != NULL);
+        if (ok) g.passes[p] = program->shader.id;
     }
     if (!ok)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: a lighting pass failed to compile: render forward instead");
-        for (int p = 0; p < 5; p++) if (g.passes[p].id != 0) UnloadShader(g.passes[p]);
+        rbl__releasePasses(&g);
         rbl__unloadTargets(&g);
         memset(&g, 0, sizeof(g));
         return g;
     }
-    // The resolve's fog and exposure are fixed by the shading desc: uploaded once
-    RblLitShader resolve;
-    memset(&resolve, 0, sizeof(resolve));
-    resolve.shader = g.passes[RBL__PASS_RESOLVE];
-    resolve.locFog = g.locs[RBL__PASS_RESOLVE][RBL__GLOC_FOG];
-    resolve.locFogStart = g.locs[RBL__PASS_RESOLVE][RBL__GLOC_FOG_START];
-    if (resolve.locFog != -1) rbl__setFogUniforms(&resolve, g.shading.fog);
-    SetShaderValue(resolve.shader, g.locs[RBL__PASS_RESOLVE][RBL__GLOC_EXPOSURE], &g.shading.exposure, SHADER_UNIFORM_FLOAT);
     g.instanceCapacity = 256;
-    g.instanceData = (float *)RBL_MALLOC((size_t)g.instanceCapacity*RBL__INSTANCE_FLOATS*sizeof(float));
     rbl__loadVolumeMesh(&g);
     g.debugScale = 1.0f;
-    g.ambientUp = rbl__v3(0.0f, 1.0f, 0.0f);
     g.view = rbl__identity(); g.projection = rbl__identity();
-    TraceLog(LOG_INFO, "RBL: G-buffer %ix%i loaded (%i bytes/pixel + depth + RGBA16F accumulation)", width, height, RblGBufferBytesPerPixel(g));
+    TraceLog(LOG_INFO, "RBL: G-buffer %ix%i loaded (%i bytes/pixel + depth + RGBA16F accumulation)", width, height, RblGBufferBytesPerPixel(&g));
     return g;
 }
 
-bool RblIsGBufferValid(RblGBuffer gbuffer)
+bool RblIsGBufferValid(const RblGBuffer *gbuffer)
 {
-    return (gbuffer.id != 0) && (gbuffer.lightId != 0) && (gbuffer.passes[RBL__PASS_RESOLVE].id != 0) && (gbuffer.instanceData != NULL);
+    return (gbuffer != NULL) && (gbuffer->id != 0) && (gbuffer->lightId != 0) && (gbuffer->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->volumeVao != 0);
 }
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 {
-    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer) || (width <= 0) || (height <= 0))
+    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > 16384) || (height > 16384) || gbuffer->begun)
     {
-        TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer or size %ix%i", width, height);
+        TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..16384", width, height);
         return false;
     }
     if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
     RblGBuffer fresh = *gbuffer;
-    if (!rbl__loadTargets(&fresh, width, height)) return false;    // the old targets stay
+    unsigned int callerTarget = rlGetActiveFramebuffer();
+    bool ok = rbl__loadTargets(&fresh, width, height);
+    rbl__restoreTarget(callerTarget);
+    if (!ok) return false;      // the old targets stay
     rbl__unloadTargets(gbuffer);
     gbuffer->id = fresh.id; gbuffer->lightId = fresh.lightId;
     gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
     gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
     gbuffer->width = width; gbuffer->height = height;
+    gbuffer->desc.width = width; gbuffer->desc.height = height;
     return true;
 }
 
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
     if (gbuffer == NULL) return;
+    if (gbuffer->begun) RblEndGBuffer(gbuffer);
     rbl__unloadTargets(gbuffer);
-    for (int p = 0; p < 5; p++) if (gbuffer->passes[p].id != 0) UnloadShader(gbuffer->passes[p]);
+    rbl__releasePasses(gbuffer);
     if (gbuffer->volumeVao != 0) rlUnloadVertexArray(gbuffer->volumeVao);
     if (gbuffer->emptyVao != 0) rlUnloadVertexArray(gbuffer->emptyVao);
     if (gbuffer->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->volumeVbo);
     if (gbuffer->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->volumeIbo);
     if (gbuffer->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->instanceVbo);
-    RBL_FREE(gbuffer->instanceData);
     memset(gbuffer, 0, sizeof(*gbuffer));
 }
 
-int RblGBufferBytesPerPixel(RblGBuffer gbuffer)
+int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
-    if (gbuffer.id == 0) return 0;
-    return GetPixelDataSize(1, 1, gbuffer.albedo.format) + GetPixelDataSize(1, 1, gbuffer.normal.format) + GetPixelDataSize(1, 1, gbuffer.params.format);
+    if ((gbuffer == NULL) || (gbuffer->id == 0)) return 0;
+    return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
 }
 
 // View matrix in raylib's layout (as MatrixLookAt), from the header's degenerate-safe camera frame
@@ -4443,7 +4972,12 @@ static Matrix rbl__viewMatrix(const RblView *v)
 
 bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
 {
-    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) return false;
+    const char *bad = NULL;
+    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    else if (gbuffer->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
+    else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
+    else if (!rbl__finite3(camera.position) || !rbl__finite3(camera.target) || !rbl__finite3(camera.up) || !rbl__finite(camera.fovy) || !(camera.fovy > 0.0f)) bad = "NaN/Inf camera or fovy <= 0";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginGBuffer: %s", bad); return false; }
     rlDrawRenderBatchActive();
     rlEnableFramebuffer(gbuffer->id);
     rlViewport(0, 0, gbuffer->width, gbuffer->height);
@@ -4477,12 +5011,16 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     gbuffer->view = rlGetMatrixModelview();
     gbuffer->projection = rlGetMatrixProjection();
     gbuffer->eye = camera.position;
+    gbuffer->begun = true;
+    rbl__state.gbufferPass = gbuffer;
     return true;
 }
 
 void RblEndGBuffer(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) return;
+    if ((gbuffer == NULL) || !gbuffer->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
+    gbuffer->begun = false;
+    rbl__state.gbufferPass = NULL;
     rlDrawRenderBatchActive();
     rlMatrixMode(RL_PROJECTION);
     rlPopMatrix();
@@ -4493,49 +5031,41 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
     rbl__restoreTarget(0);
 }
 
-// Binds the G-buffer textures and camera uniforms of one pass
-static void rbl__bindGBufferPass(const RblGBuffer *g, int pass)
+// Registry entry of one of the G-buffer's pass programs
+static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass)
 {
-    const int *loc = g->locs[pass];
-    rlEnableShader(g->passes[pass].id);
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == g->passes[pass]) && (rbl__state.programs[i].key.kind == RBL__KIND_PASS)) return &rbl__state.programs[i];
+    return NULL;
+}
+
+// Binds the G-buffer textures, camera and shadow uniforms of one pass; returns its locations
+static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
+{
+    const rbl__Program *program = rbl__passProgram(g, pass);
+    const int *loc = program->loc;
+    rlEnableShader(program->shader.id);
     unsigned int tex[5] = { g->albedo.id, g->normal.id, g->params.id, g->depth.id, g->accum.id };
     for (int i = 0; i < 5; i++)
     {
-        if (loc[RBL__GLOC_ALBEDO + i] == -1) continue;
+        if (loc[RBL__U_G_ALBEDO + i] == -1) continue;
         rlActiveTextureSlot(i);
         rlEnableTexture(tex[i]);
-        rlSetUniform(loc[RBL__GLOC_ALBEDO + i], &i, SHADER_UNIFORM_INT, 1);
+        rlSetUniform(loc[RBL__U_G_ALBEDO + i], &i, SHADER_UNIFORM_INT, 1);
     }
-    if (loc[RBL__GLOC_INVVIEW] != -1) rlSetUniformMatrix(loc[RBL__GLOC_INVVIEW], rbl__rigidInverse(g->view));
-    if (loc[RBL__GLOC_MVP] != -1) rlSetUniformMatrix(loc[RBL__GLOC_MVP], rbl__matMul(g->view, g->projection));
+    if (loc[RBL__U_INV_VIEW] != -1) rlSetUniformMatrix(loc[RBL__U_INV_VIEW], rbl__rigidInverse(g->view));
+    if (loc[RBL__U_MVP] != -1) rlSetUniformMatrix(loc[RBL__U_MVP], rbl__matMul(g->view, g->projection));
     float eye[3] = { g->eye.x, g->eye.y, g->eye.z };
-    if (loc[RBL__GLOC_EYE] != -1) rlSetUniform(loc[RBL__GLOC_EYE], eye, SHADER_UNIFORM_VEC3, 1);
-    // View position from window depth, in closed form (deferred.fs.glsl): perspective (w = 1) or orthographic
+    if (loc[RBL__U_EYE] != -1) rlSetUniform(loc[RBL__U_EYE], eye, SHADER_UNIFORM_VEC3, 1);
+    // View position from window depth, in closed form (gbuffer_read.glsl): perspective (w = 1) or orthographic
     double n = rlGetCullDistanceNear(), f = rlGetCullDistanceFar();
     bool perspective = (g->projection.m15 == 0.0f);
     float depthLinear[4] = { perspective? (float)(n*f) : (float)n, (float)(f - n), (float)f, perspective? 1.0f : 0.0f };
     float invP[2] = { 1.0f/g->projection.m0, 1.0f/g->projection.m5 };
-    if (loc[RBL__GLOC_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__GLOC_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
-    if (loc[RBL__GLOC_INV_P] != -1) rlSetUniform(loc[RBL__GLOC_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
-    if ((g->shadowCount > 0) && (loc[RBL__GLOC_SHADOW_MATRIX] != -1))
-    {
-        Matrix m[RBL_MAX_SHADOWS];
-        float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
-        for (int k = 0; k < g->shadowCount; k++)
-        {
-            m[k] = rbl__matFromArray(g->shadowUniforms[k]);
-            memcpy(&params[k*4], &g->shadowUniforms[k][16], 4*sizeof(float));
-            memcpy(&bias[k*4], &g->shadowUniforms[k][20], 4*sizeof(float));
-            memcpy(&axes[k*8], &g->shadowUniforms[k][24], 8*sizeof(float));
-            rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k);
-            rlEnableTexture(g->shadowTexture[k]);
-        }
-        rlActiveTextureSlot(0);
-        rlSetUniformMatrices(loc[RBL__GLOC_SHADOW_MATRIX], m, g->shadowCount);
-        rlSetUniform(loc[RBL__GLOC_SHADOW_PARAMS], params, SHADER_UNIFORM_VEC4, g->shadowCount);
-        rlSetUniform(loc[RBL__GLOC_SHADOW_BIAS], bias, SHADER_UNIFORM_VEC4, g->shadowCount);
-        rlSetUniform(loc[RBL__GLOC_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*g->shadowCount);
-    }
+    if (loc[RBL__U_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__U_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
+    if (loc[RBL__U_INV_P] != -1) rlSetUniform(loc[RBL__U_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
+    rbl__bindSceneShadows();
+    return loc;
 }
 
 static void rbl__unbindGBufferPass(void)
@@ -4545,29 +5075,29 @@ static void rbl__unbindGBufferPass(void)
 }
 
 // Full-screen pass over unbounded lights (the forward shader's uniform arrays); the first pass of a
-// frame also adds the ambient (sky, and ground when hemispheric), later ones none
-static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, Color ambient, bool withAmbient, const int shadowSlot[4])
+// frame also adds the scene's ambient, later ones none
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, bool withAmbient, const int shadowSlot[4])
 {
-    const int *loc = g->locs[pass];
-    rbl__bindGBufferPass(g, pass);
-    if (loc[RBL__GLOC_SHADOW_LIGHT] != -1) rlSetUniform(loc[RBL__GLOC_SHADOW_LIGHT], shadowSlot, SHADER_UNIFORM_IVEC4, 1);
-    float sky[3] = { 0.0f, 0.0f, 0.0f }, ground[3] = { 0.0f, 0.0f, 0.0f };
-    if (withAmbient)
+    const int *loc = rbl__bindGBufferPass(g, pass);
+    const rbl__Scene *s = &rbl__state.scene;
+    if (loc[RBL__U_SHADOW_MATRIX] != -1)
     {
-        sky[0] = rbl__colorToLinear(ambient.r); sky[1] = rbl__colorToLinear(ambient.g); sky[2] = rbl__colorToLinear(ambient.b);
-        ground[0] = rbl__colorToLinear(g->ambientGround.r); ground[1] = rbl__colorToLinear(g->ambientGround.g); ground[2] = rbl__colorToLinear(g->ambientGround.b);
+        // The registry's shadow upload, with this chunk's slots
+        int n = (s->shadowCount < g->desc.shadowMaps)? s->shadowCount : g->desc.shadowMaps;
+        int slots[RBL_MAX_SHADOWS] = { -1, -1, -1, -1 };
+        for (int k = 0; k < n; k++) slots[k] = shadowSlot[k];
+        rbl__uploadShadows(rbl__passProgram(g, pass), slots);
     }
-    float up[3] = { g->ambientUp.x, g->ambientUp.y, g->ambientUp.z };
-    if (loc[RBL__GLOC_AMBIENT] != -1) rlSetUniform(loc[RBL__GLOC_AMBIENT], sky, SHADER_UNIFORM_VEC3, 1);
-    if (loc[RBL__GLOC_GROUND] != -1) rlSetUniform(loc[RBL__GLOC_GROUND], ground, SHADER_UNIFORM_VEC3, 1);
-    if (loc[RBL__GLOC_UP] != -1) rlSetUniform(loc[RBL__GLOC_UP], up, SHADER_UNIFORM_VEC3, 1);
-    if (loc[RBL__GLOC_LIGHT_COUNT] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_COUNT], &count, SHADER_UNIFORM_INT, 1);
+    float zero[3] = { 0.0f, 0.0f, 0.0f };
+    if (loc[RBL__U_AMBIENT] != -1) rlSetUniform(loc[RBL__U_AMBIENT], withAmbient? s->ambient : zero, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_GROUND] != -1) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], withAmbient? s->ground : zero, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_LIGHT_COUNT] != -1) rlSetUniform(loc[RBL__U_LIGHT_COUNT], &count, SHADER_UNIFORM_INT, 1);
     if (count > 0)
     {
-        if (loc[RBL__GLOC_LIGHT_POSITION] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_POSITION], pos, SHADER_UNIFORM_VEC4, count);
-        if (loc[RBL__GLOC_LIGHT_COLOR] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_COLOR], col, SHADER_UNIFORM_VEC4, count);
-        if (loc[RBL__GLOC_LIGHT_SPOT] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_SPOT], spot, SHADER_UNIFORM_VEC4, count);
-        if (loc[RBL__GLOC_LIGHT_ATTENUATION] != -1) rlSetUniform(loc[RBL__GLOC_LIGHT_ATTENUATION], att, SHADER_UNIFORM_VEC3, count);
+        if (loc[RBL__U_LIGHT_POSITION] != -1) rlSetUniform(loc[RBL__U_LIGHT_POSITION], pos, SHADER_UNIFORM_VEC4, count);
+        if (loc[RBL__U_LIGHT_COLOR] != -1) rlSetUniform(loc[RBL__U_LIGHT_COLOR], col, SHADER_UNIFORM_VEC4, count);
+        if (loc[RBL__U_LIGHT_SPOT] != -1) rlSetUniform(loc[RBL__U_LIGHT_SPOT], spot, SHADER_UNIFORM_VEC4, count);
+        if (loc[RBL__U_LIGHT_ATTENUATION] != -1) rlSetUniform(loc[RBL__U_LIGHT_ATTENUATION], att, SHADER_UNIFORM_VEC3, count);
     }
     rlDisableBackfaceCulling();
     rlEnableVertexArray(g->emptyVao);
@@ -4576,51 +5106,46 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
     rbl__unbindGBufferPass();
 }
 
-// Instance staging slot i: position, colour, spot (vec4 each), falloff (vec3 + padding), as lighting.glsl reads them
-static float *rbl__lightSlot(RblGBuffer *g, int i) { return &g->instanceData[i*RBL__INSTANCE_FLOATS]; }
-
 // A packed light goes through a full-screen pass when it has no range (directional, range 0) or the
 // naive loop is asked for
 static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || g->naiveFullscreen; }
 
-bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int count, Color ambient)
+bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: invalid G-buffer"); return false; }
-    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i lights", count); return false; }
+    const char *bad = NULL;
+    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    else if (gbuffer->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
+    else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
     RblGBuffer *g = gbuffer;
-    // Staging for every light (grown with a log line; no allocation once large enough)
-    if (count > g->instanceCapacity)
-    {
-        int capacity = g->instanceCapacity;
-        while (capacity < count) capacity *= 2;
-        float *data = (float *)RBL_REALLOC(g->instanceData, (size_t)capacity*RBL__INSTANCE_FLOATS*sizeof(float));
-        if (data == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: out of memory for %i lights", count); return false; }
-        g->instanceData = data;
-        rlUnloadVertexBuffer(g->instanceVbo);
-        rbl__loadVolumeInstances(g, capacity);
-        TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->instanceCapacity, capacity);
-        g->instanceCapacity = capacity;
-    }
-    // Validate and pack every light once: a rejected light changes nothing on the GPU
-    int unbounded = 0;
+    const rbl__Scene *s = &rbl__state.scene;
+    int count = s->lightCount, unbounded = 0, uncompiled = 0;
     for (int i = 0; i < count; i++)
     {
-        float *d = rbl__lightSlot(g, i);
-        const char *bad = rbl__packLight(&lights[i], g->shading.lightFeatures, &d[0], &d[4], &d[8], &d[12]);
-        if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: light %i rejected: %s", i, bad); return false; }
-        d[15] = 0.0f;                                       // shadow map index + 1 (0 = unshadowed)
-        for (int k = 0; k < g->shadowCount; k++) if (g->shadowLight[k] == i) d[15] = (float)(k + 1);
-        if (rbl__fullscreenLight(g, d)) unbounded++;
+        if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHTS_POINT) != 0) uncompiled++;
+        else if (rbl__fullscreenLight(g, &s->lights[i*RBL__LIGHT_FLOATS])) unbounded++;
     }
     if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
         return false;
     }
+    if (uncompiled > 0) TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: %i light(s) of types not in the G-buffer's lightFeatures left out", uncompiled);
+    // Volumes need the instance buffer to hold every bounded light (grown with a log line)
+    if (count > g->instanceCapacity)
+    {
+        int capacity = g->instanceCapacity;
+        while (capacity < count) capacity *= 2;
+        rlUnloadVertexBuffer(g->instanceVbo);
+        rbl__loadVolumeInstances(g, capacity);
+        TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->instanceCapacity, capacity);
+        g->instanceCapacity = capacity;
+    }
     float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
     bool counting = (g->debugView == RBL_GBUFFER_VIEW_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
+    unsigned int callerTarget = rlGetActiveFramebuffer();
     rlEnableFramebuffer(g->lightId);
     rlViewport(0, 0, g->width, g->height);
     rlDisableDepthTest();
@@ -4635,9 +5160,9 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
     int shadowSlot[4] = { -1, -1, -1, -1 };                 // slot of each shadowed light in this chunk
     for (int i = 0; i <= count; i++)
     {
-        if ((i < count) && rbl__fullscreenLight(g, rbl__lightSlot(g, i)))
+        const float *d = (i < count)? &s->lights[i*RBL__LIGHT_FLOATS] : NULL;
+        if ((d != NULL) && ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHTS_POINT) == 0) && rbl__fullscreenLight(g, d))
         {
-            const float *d = rbl__lightSlot(g, i);
             memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
             memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
             if (d[15] > 0.0f) shadowSlot[(int)d[15] - 1] = n;
@@ -4645,30 +5170,38 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
         }
         if ((n == RBL_MAX_LIGHTS) || ((i == count) && ((n > 0) || (chunks == 0))))
         {
-            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, ambient, chunks == 0, shadowSlot);
+            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, chunks == 0, shadowSlot);
             for (int k = 0; k < 4; k++) shadowSlot[k] = -1;
             n = 0;
             chunks++;
         }
     }
     g->lightsFullscreen = unbounded;
-    // Volumes: bounded lights moved to the front of the staging (in order), then one instanced draw of
-    // sphere proxies, back faces only (correct with the eye inside one)
+    // Volumes: bounded lights gathered in order, then one instanced draw of sphere proxies, back
+    // faces only (correct with the eye inside one)
     int v = 0;
     for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
     {
-        if (rbl__fullscreenLight(g, rbl__lightSlot(g, i))) continue;
-        if (v != i) memcpy(rbl__lightSlot(g, v), rbl__lightSlot(g, i), RBL__INSTANCE_FLOATS*sizeof(float));
+        const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHTS_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
+        memcpy(&s->staging[v*RBL__LIGHT_FLOATS], d, RBL__LIGHT_FLOATS*sizeof(float));
         v++;
     }
     g->lightsInVolumes = v;
     if (v > 0)
     {
-        rbl__bindGBufferPass(g, counting? RBL__PASS_VOLUME_COUNT : RBL__PASS_VOLUME);
+        int pass = counting? RBL__PASS_VOLUME_COUNT : RBL__PASS_VOLUME;
+        rbl__bindGBufferPass(g, pass);
+        const rbl__Program *volume = rbl__passProgram(g, pass);
+        if (volume->loc[RBL__U_SHADOW_MATRIX] != -1)
+        {
+            int none[RBL_MAX_SHADOWS] = { -1, -1, -1, -1 };
+            rbl__uploadShadows(volume, none);       // each volume carries its own map index
+        }
         rlEnableBackfaceCulling();
         rlSetCullFace(RL_CULL_FACE_FRONT);
         rlEnableVertexArray(g->volumeVao);
-        rlUpdateVertexBuffer(g->instanceVbo, g->instanceData, v*RBL__INSTANCE_FLOATS*(int)sizeof(float), 0);
+        rlUpdateVertexBuffer(g->instanceVbo, s->staging, v*RBL__LIGHT_FLOATS*(int)sizeof(float), 0);
         rlDrawVertexArrayElementsInstanced(0, g->volumeIndexCount, 0, v);
         rlDisableVertexArray();
         rlSetCullFace(RL_CULL_FACE_BACK);
@@ -4676,20 +5209,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer, const RblLight *lights, int coun
     }
     rlEnableBackfaceCulling();
     rlSetBlendMode(BLEND_ALPHA);
-    rbl__restoreTarget(0);
-    return true;
-}
-
-bool RblSetGBufferHemisphere(RblGBuffer *gbuffer, Color ground, Vector3 up)
-{
-    Vector3 u;
-    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer) || !gbuffer->shading.hemisphereAmbient || !rbl__finite3(up) || !rbl__normalizeTo(up, &u))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblSetGBufferHemisphere: G-buffer invalid or without hemisphereAmbient, or up not a direction");
-        return false;
-    }
-    gbuffer->ambientGround = ground;
-    gbuffer->ambientUp = u;
+    rbl__restoreTarget(callerTarget);
     return true;
 }
 
@@ -4706,13 +5226,12 @@ void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer"); return; }
+    if (!RblIsGBufferValid(gbuffer) || gbuffer->begun) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer, or inside its geometry pass"); return; }
     RblGBuffer *g = gbuffer;
     rlDrawRenderBatchActive();
-    rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
-    const int *loc = g->locs[RBL__PASS_RESOLVE];
-    if (loc[RBL__GLOC_VIEW] != -1) rlSetUniform(loc[RBL__GLOC_VIEW], &g->debugView, SHADER_UNIFORM_INT, 1);
-    if (loc[RBL__GLOC_SCALE] != -1) rlSetUniform(loc[RBL__GLOC_SCALE], &g->debugScale, SHADER_UNIFORM_FLOAT, 1);
+    const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
+    if (loc[RBL__U_DEBUG_VIEW] != -1) rlSetUniform(loc[RBL__U_DEBUG_VIEW], &g->debugView, SHADER_UNIFORM_INT, 1);
+    if (loc[RBL__U_DEBUG_SCALE] != -1) rlSetUniform(loc[RBL__U_DEBUG_SCALE], &g->debugScale, SHADER_UNIFORM_FLOAT, 1);
     rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
     rlEnableDepthMask();
     rlDisableBackfaceCulling();
@@ -4727,35 +5246,11 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 //----------------------------------------------------------------------------------
 // Module Functions Definition: shadows
 //----------------------------------------------------------------------------------
-// Alpha cutoff of the colour pass's lit variant (the cache knows it by program); other shaders: 0.5
-static float rbl__cutoffOf(unsigned int shaderId)
-{
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__litCache[i].refs > 0) && (rbl__litCache[i].shader.shader.id == shaderId)) return rbl__litCache[i].key.alphaCutoff;
-    return 0.5f;
-}
-
-// Inside a shadow pass: the material with the caster shader in place of its own, only its albedo map
-// kept (never another slot: one could hold the very depth texture being written) and the colour
-// pass's alpha cutoff, so the sprite's silhouette casts
-static Material rbl__casterMaterial(Material material, MaterialMap maps[RBL__CASTER_MAPS], bool instanced)
-{
-    const RblLitShader *caster = instanced? &rbl__shadowPass->casterInstanced : &rbl__shadowPass->caster;
-    float cutoff = rbl__cutoffOf(material.shader.id);
-    memset(maps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
-    if (material.maps != NULL) maps[MATERIAL_MAP_ALBEDO] = material.maps[MATERIAL_MAP_ALBEDO];
-    else maps[MATERIAL_MAP_ALBEDO].color = WHITE;
-    SetShaderValue(caster->shader, caster->locAlphaCutoff, &cutoff, SHADER_UNIFORM_FLOAT);
-    material.maps = maps;
-    material.shader = caster->shader;
-    return material;
-}
-
 // The billboard frame of a shadow pass: the caller's camera (the shadow matches what is seen), or the
 // light's own frame (desc.faceLight); AXIS billboards get the light and minimum angle to tilt by
 static void rbl__shadowPassView(RblView *view)
 {
-    const RblShadowMap *map = rbl__shadowPass;
+    const RblShadowMap *map = rbl__state.shadowPass;
     if (map->desc.faceLight) *view = map->lightView;
     Vector3 toLight = rbl__neg(rbl__cross(map->lightView.up, map->lightView.right));    // = back
     if (map->lightType == RBL_LIGHT_SPOT) { view->light.x = map->lightView.eye.x; view->light.y = map->lightView.eye.y; view->light.z = map->lightView.eye.z; view->light.w = 1.0f; }
@@ -4779,14 +5274,41 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     return NULL;
 }
 
+// The caster programs (vertex buffers, instanced): one more holder each, or none on failure
+static bool rbl__acquireCasters(void)
+{
+    rbl__Program *got[2] = { NULL, NULL };
+    for (int instanced = 0; instanced < 2; instanced++)
+    {
+        RblLitShaderDesc desc, normalised;
+        memset(&desc, 0, sizeof(desc));
+        desc.instanced = (instanced == 1);
+        rbl__normaliseLitDesc(desc, &normalised);
+        rbl__ProgramKey key;
+        rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
+        got[instanced] = rbl__acquireProgram(&key);
+        if (got[instanced] == NULL)
+        {
+            if (instanced == 1) rbl__releaseProgram(got[0]->shader.id, RBL__KIND_CASTER);
+            return false;
+        }
+    }
+    rbl__state.casterIds[0] = got[0]->shader.id;
+    rbl__state.casterIds[1] = got[1]->shader.id;
+    return true;
+}
+
 RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
 {
     RblShadowMap map;
     memset(&map, 0, sizeof(map));
     const char *bad = rbl__normaliseShadowDesc(desc, &map.desc);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %s", bad); memset(&map, 0, sizeof(map)); return map; }
+    if (!rbl__acquireCasters()) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable"); memset(&map, 0, sizeof(map)); return map; }
+    rbl__state.shadowMapsLoaded++;
     map.size = map.desc.size;
     map.light = -1;
+    unsigned int callerTarget = rlGetActiveFramebuffer();
     map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
     map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
     bool ok = (map.depth.id != 0);
@@ -4795,18 +5317,11 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
         map.id = rlLoadFramebuffer();
         rlFramebufferAttach(map.id, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
         ok = (map.id != 0) && rlFramebufferComplete(map.id);
-        rlDisableFramebuffer();
     }
-    RblLitShaderDesc caster;
-    memset(&caster, 0, sizeof(caster));
-    caster.shadowCaster = true;
-    if (ok) map.caster = RblLoadLitShader(caster);
-    caster.instanced = true;
-    if (ok) map.casterInstanced = RblLoadLitShader(caster);
-    ok = ok && RblIsLitShaderValid(map.caster) && RblIsLitShaderValid(map.casterInstanced);
+    rbl__restoreTarget(callerTarget);
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %ix%i depth target or caster shaders unavailable", map.size, map.size);
+        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %ix%i depth target unavailable", map.size, map.size);
         RblUnloadShadowMap(&map);
         return map;
     }
@@ -4816,17 +5331,22 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
 
 bool RblIsShadowMapValid(RblShadowMap map)
 {
-    return (map.id != 0) && (map.depth.id != 0) && RblIsLitShaderValid(map.caster) && RblIsLitShaderValid(map.casterInstanced);
+    return (map.id != 0) && (map.depth.id != 0) && (map.size > 0);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
     if (map == NULL) return;
+    if ((map->size == 0) && (map->id == 0) && (map->depth.id == 0)) return;    // zero or already unloaded
     if (map->begun) RblEndShadowMap(map);
     if (map->id != 0) rlUnloadFramebuffer(map->id);         // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
-    RblUnloadLitShader(map->caster);
-    RblUnloadLitShader(map->casterInstanced);
+    if (rbl__state.shadowMapsLoaded > 0)
+    {
+        rbl__state.shadowMapsLoaded--;
+        rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);
+        rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+    }
     memset(map, 0, sizeof(*map));
 }
 
@@ -4849,15 +5369,17 @@ static Matrix rbl__frustum(double l, double r, double b, double t, double n, dou
     return m;
 }
 
-bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex, Vector3 focusCenter, float focusRadius)
+bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex, Vector3 focusCenter, float focusRadius)
 {
     const char *bad = NULL;
     float p[4], c[4], spot[4], k[3];
+    const RblLight *lights = (scene != NULL)? scene->lights : NULL;
     if ((map == NULL) || !RblIsShadowMapValid(*map)) bad = "invalid shadow map";
-    else if (map->begun || (rbl__shadowPass != NULL)) bad = "a shadow pass is already in progress";
-    else if ((lights == NULL) || (lightIndex < 0)) bad = "no light";
+    else if (map->begun || (rbl__state.shadowPass != NULL)) bad = "a shadow pass is already in progress";
+    else if (rbl__state.gbufferPass != NULL) bad = "inside a G-buffer pass";
+    else if ((scene == NULL) || (lights == NULL) || (lightIndex < 0) || (lightIndex >= scene->lightCount)) bad = "no scene, or lightIndex outside 0..scene->lightCount-1";
     else if ((lights[lightIndex].type != RBL_LIGHT_DIRECTIONAL) && (lights[lightIndex].type != RBL_LIGHT_SPOT)) bad = "only directional and spot lights cast shadows";
-    else if ((bad = rbl__packLight(&lights[lightIndex], RBL_LIGHTS_POINT | RBL_LIGHTS_DIRECTIONAL | RBL_LIGHTS_SPOT | RBL_LIGHTS_CLASSIC_FALLOFF, p, c, spot, k)) != NULL) {}
+    else if ((bad = rbl__packLight(&lights[lightIndex], p, c, spot, k)) != NULL) {}
     else if (!rbl__finite3(focusCenter) || !rbl__finite(focusRadius) || (focusRadius < 0.0f)) bad = "focus centre/radius not finite or radius negative";
     else if ((lights[lightIndex].type == RBL_LIGHT_DIRECTIONAL) && !(focusRadius > 0.0f)) bad = "a directional shadow needs a focus radius > 0";
     else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && (lights[lightIndex].outerAngle > 80.0f)) bad = "spot shadows need outerAngle <= 80 degrees";
@@ -4924,13 +5446,13 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblLight *lights, int lightIndex
     rlSetMatrixProjection(projection);
     rlSetMatrixModelview(map->view);
     map->begun = true;
-    rbl__shadowPass = map;
+    rbl__state.shadowPass = map;
     return true;
 }
 
 void RblEndShadowMap(RblShadowMap *map)
 {
-    if ((map == NULL) || !map->begun) return;
+    if ((map == NULL) || !map->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
     rlDrawRenderBatchActive();
     rbl__restoreTarget(map->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->savedProjection);
@@ -4938,27 +5460,8 @@ void RblEndShadowMap(RblShadowMap *map)
     rlEnableBackfaceCulling();
     rlDisableDepthTest();
     map->begun = false;
-    rbl__shadowPass = NULL;
-}
-
-void RblDrawModelShadow(Model model, Vector3 position, float scale, Color tint)
-{
-    if (rbl__shadowPass == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawModelShadow: outside RblBeginShadowMap/RblEndShadowMap"); return; }
-    if ((model.meshes == NULL) || (model.materials == NULL) || (model.meshMaterial == NULL) || !rbl__finite3(position) || !rbl__finite(scale)) return;
-    // As DrawModel: transform = model.transform x scale x translation; albedo colour tinted
-    Matrix t = rbl__identity();
-    t.m0 = t.m5 = t.m10 = scale;
-    t.m12 = position.x; t.m13 = position.y; t.m14 = position.z;
-    Matrix transform = rbl__matMul(model.transform, t);
-    for (int i = 0; i < model.meshCount; i++)
-    {
-        MaterialMap maps[RBL__CASTER_MAPS];
-        Material m = rbl__casterMaterial(model.materials[model.meshMaterial[i]], maps, false);
-        Color c = maps[MATERIAL_MAP_ALBEDO].color;
-        maps[MATERIAL_MAP_ALBEDO].color.r = (unsigned char)((c.r*tint.r)/255); maps[MATERIAL_MAP_ALBEDO].color.g = (unsigned char)((c.g*tint.g)/255);
-        maps[MATERIAL_MAP_ALBEDO].color.b = (unsigned char)((c.b*tint.b)/255); maps[MATERIAL_MAP_ALBEDO].color.a = (unsigned char)((c.a*tint.a)/255);
-        DrawMesh(model.meshes[i], m, transform);
-    }
+    rbl__state.shadowPass = NULL;
+    rbl__bindSceneShadows();        // the pass unbound the receivers' units
 }
 
 bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius)
@@ -4986,7 +5489,7 @@ bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance,
     return rbl__finite3(*center) && rbl__finite(*radius);
 }
 
-// What lighting.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)
+// What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)
 static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
 {
     rbl__matToArray(map->matrix, out);
@@ -4996,63 +5499,19 @@ static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
     out[28] = map->lightView.up.x; out[29] = map->lightView.up.y; out[30] = map->lightView.up.z; out[31] = 0.0f;
 }
 
-// Maps usable by receivers: valid, rendered at least once, not being rendered
-static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int slots)
+// Maps a scene may list: valid, rendered for one of its lights, not being rendered, one per light
+static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int lightCount)
 {
-    if ((count < 0) || (count > slots)) return "more maps than the receiver compiled (shadowMaps)";
-    if ((count > 0) && (maps == NULL)) return "no maps";
+    if ((count < 0) || (count > RBL_MAX_SHADOWS)) return "shadowMapCount outside 0..RBL_MAX_SHADOWS";
+    if ((count > 0) && (maps == NULL)) return "shadowMaps NULL";
     for (int k = 0; k < count; k++)
     {
-        if (!RblIsShadowMapValid(maps[k]) || (maps[k].light < 0)) return "a map is invalid or was never rendered (RblBeginShadowMap)";
-        if (maps[k].begun) return "a map is still being rendered (RblEndShadowMap first)";
-        for (int j = 0; j < k; j++) if (maps[j].light == maps[k].light) return "two maps shadow the same light";
+        if (!RblIsShadowMapValid(maps[k]) || (maps[k].light < 0)) return "a shadow map is invalid or was never rendered (RblBeginShadowMap)";
+        if (maps[k].light >= lightCount) return "a shadow map was rendered for a light the scene does not have";
+        if (maps[k].begun) return "a shadow map is still being rendered (RblEndShadowMap first)";
+        for (int j = 0; j < k; j++) if (maps[j].light == maps[k].light) return "two shadow maps shadow the same light";
     }
     return NULL;
-}
-
-bool RblSetShadows(RblLitShader *shader, const RblShadowMap *maps, int count)
-{
-    const char *bad = ((shader == NULL) || !RblIsLitShaderValid(*shader))? "invalid shader" : rbl__checkShadowMaps(maps, count, shader->shadowMaps);
-    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSetShadows: %s", bad); return false; }
-    int lightOf[4] = { -1, -1, -1, -1 };
-    Matrix m[RBL_MAX_SHADOWS];
-    float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
-    for (int k = 0; k < count; k++)
-    {
-        float u[32];
-        rbl__shadowUniformData(&maps[k], u);
-        m[k] = maps[k].matrix;
-        memcpy(&params[k*4], &u[16], 4*sizeof(float)); memcpy(&bias[k*4], &u[20], 4*sizeof(float)); memcpy(&axes[k*8], &u[24], 8*sizeof(float));
-        lightOf[k] = maps[k].light;
-        rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k);
-        rlEnableTexture(maps[k].depth.id);
-    }
-    rlActiveTextureSlot(0);
-    rlEnableShader(shader->shader.id);
-    rlSetUniform(shader->locShadowLight, lightOf, SHADER_UNIFORM_IVEC4, 1);
-    if (count > 0)
-    {
-        rlSetUniformMatrices(shader->locShadowMatrix, m, count);
-        rlSetUniform(shader->locShadowParams, params, SHADER_UNIFORM_VEC4, count);
-        rlSetUniform(shader->locShadowBias, bias, SHADER_UNIFORM_VEC4, count);
-        rlSetUniform(shader->locShadowAxes, axes, SHADER_UNIFORM_VEC4, 2*count);
-    }
-    rlDisableShader();
-    return true;
-}
-
-bool RblSetGBufferShadows(RblGBuffer *gbuffer, const RblShadowMap *maps, int count)
-{
-    const char *bad = ((gbuffer == NULL) || !RblIsGBufferValid(*gbuffer))? "invalid G-buffer" : rbl__checkShadowMaps(maps, count, gbuffer->shading.shadowMaps);
-    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSetGBufferShadows: %s", bad); return false; }
-    for (int k = 0; k < count; k++)
-    {
-        rbl__shadowUniformData(&maps[k], gbuffer->shadowUniforms[k]);
-        gbuffer->shadowLight[k] = maps[k].light;
-        gbuffer->shadowTexture[k] = maps[k].depth.id;
-    }
-    gbuffer->shadowCount = count;
-    return true;
 }
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

@@ -16,7 +16,12 @@
 *       lights per pixel), N toggles the naive full-screen light loop for comparison,
 *       SPACE pauses the lights.
 *   If the G-buffer cannot be created (no MRT / float targets), the same scene is drawn with
-*   the forward lit shader and the 64 nearest lights.
+*   the forward lit shader and the first 63 point lights plus the moon.
+*   Lit programs hold compiled features only: the floor, the spheres and the lanterns differ in
+*   values (roughness, emission) kept in their raylib Materials, so the floor and the spheres share
+*   one program and the lanterns use its instanced twin; lights, ambient and fog are the frame's
+*   RblScene. Only the path in use is compiled: two geometry-pass programs (or, without a
+*   G-buffer, two forward ones).
 *
 *   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
 *   BSD-like license that allows static linking with closed source software
@@ -50,10 +55,9 @@ static const Color deferredAmbient = { 14, 16, 26, 255 };
 
 static RblGBuffer gbuffer = { 0 };
 static bool deferredValid = false;
-static RblLitShader floorGeometry = { 0 };     // G-buffer variants (desc.deferred)
-static RblLitShader lanternGeometry = { 0 };
-static RblLitShader floorForward = { 0 };      // Forward fallback variants
-static RblLitShader lanternForward = { 0 };
+static RblScene deferredScene = { 0 };          // Lights, ambient and fog of every frame
+static Shader sceneShader = { 0 };              // Floor and spheres: G-buffer variant (desc.deferred), or forward without one
+static Shader lanternShader = { 0 };            // Lanterns: the same variant, instanced
 static Model floorModel = { 0 };
 static Model sphereModel = { 0 };
 static Texture2D floorTexture = { 0 };
@@ -164,29 +168,34 @@ static void DeferredInit(int width, int height)
     moon->intensity = 0.15f;
     DeferredUpdate(0.0f);
 
-    // One shading description for the lighting passes: GGX, ACES, a little fog
-    RblLitShaderDesc shading = { 0 };
+    // The scene: lights, ambient and a little fog (its parameters; the programs compile its mode)
+    deferredScene.lights = deferredLights;
+    deferredScene.lightCount = DEFERRED_LIGHTS + 1;
+    deferredScene.ambient = deferredAmbient;
+    deferredScene.fog = (RblFog){ RBL_FOG_EXP2, deferredBackground, 0.0f, 0.0f, 0.03f };
+
+    // One shading description for the lighting passes: GGX, ACES, exp2 fog
+    RblGBufferDesc shading = { 0 };
+    shading.width = width;
+    shading.height = height;
     shading.brdf = RBL_BRDF_GGX;
     shading.lightFeatures = RblLightFeatures(deferredLights, DEFERRED_LIGHTS + 1);
     shading.tonemap = RBL_TONEMAP_ACES;
-    shading.fog = (RblFog){ RBL_FOG_EXP2, deferredBackground, 0.0f, 0.0f, 0.03f };
-    gbuffer = RblLoadGBuffer(width, height, shading);
-    deferredValid = RblIsGBufferValid(gbuffer);
+    shading.fog = RBL_FOG_EXP2;
+    gbuffer = RblLoadGBuffer(shading);
+    deferredValid = RblIsGBufferValid(&gbuffer);
 
-    // Materials: geometry-pass variants (same material model as forward) and forward fallbacks
-    RblLitShaderDesc floorDesc = shading;
-    floorDesc.roughness = 0.35f;
-    floorDesc.deferred = true;
-    floorGeometry = RblLoadLitShader(floorDesc);
-    RblLitShaderDesc lanternDesc = floorDesc;
-    lanternDesc.roughness = 0.6f;
-    lanternDesc.instanced = true;
-    lanternDesc.emissiveColor = (Color){ 40, 24, 8, 255 };         // a faint glow of their own
-    lanternGeometry = RblLoadLitShader(lanternDesc);
-    floorDesc.deferred = false; floorDesc.maxLights = RBL_MAX_LIGHTS;
-    lanternDesc.deferred = false; lanternDesc.maxLights = RBL_MAX_LIGHTS;
-    floorForward = RblLoadLitShader(floorDesc);
-    lanternForward = RblLoadLitShader(lanternDesc);
+    // Programs: geometry-pass variants of the G-buffer's BRDF, or forward ones when there is no G-buffer
+    RblLitShaderDesc desc = { 0 };
+    desc.brdf = shading.brdf;
+    desc.lightFeatures = shading.lightFeatures;
+    desc.tonemap = shading.tonemap;
+    desc.fog = shading.fog;
+    if (deferredValid) desc.deferred = true;
+    else desc.maxLights = RBL_MAX_LIGHTS;
+    sceneShader = RblLoadLitShader(desc);
+    desc.instanced = true;
+    lanternShader = RblLoadLitShader(desc);
 
     Image checker = GenImageChecked(256, 256, 32, 32, (Color){ 120, 120, 126, 255 }, (Color){ 90, 90, 98, 255 });
     floorTexture = LoadTextureFromImage(checker);
@@ -195,6 +204,7 @@ static void DeferredInit(int width, int height)
     SetTextureFilter(floorTexture, TEXTURE_FILTER_TRILINEAR);
     floorModel = LoadModelFromMesh(GenMeshPlane(24.0f, 24.0f, 1, 1));
     floorModel.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    floorModel.materials[0].maps[MATERIAL_MAP_ROUGHNESS].value = 0.35f;   // Floor and spheres (GGX roughness)
     sphereModel = LoadModelFromMesh(GenMeshSphere(0.6f, 24, 24));
 
     // Lantern sprite: a rounded cut-out (alpha-tested in the G-buffer), lit as a ball by rounded normals
@@ -205,6 +215,8 @@ static void DeferredInit(int width, int height)
     UnloadImage(lantern);
     lanternMaterial = LoadMaterialDefault();
     lanternMaterial.maps[MATERIAL_MAP_ALBEDO].texture = lanternTexture;
+    lanternMaterial.maps[MATERIAL_MAP_ROUGHNESS].value = 0.6f;
+    lanternMaterial.maps[MATERIAL_MAP_EMISSION].color = (Color){ 40, 24, 8, 255 };   // A faint glow of their own
     for (int i = 0; i < LANTERN_ROWS*LANTERN_COLUMNS; i++)
     {
         lanterns[i].position = (Vector3){ -7.0f + 2.0f*(float)(i%LANTERN_COLUMNS), 0.0f, -5.0f + 2.0f*(float)(i/LANTERN_COLUMNS) };
@@ -229,13 +241,16 @@ static void DeferredUpdate(float time)
     }
 }
 
+// Models go through RblDrawModel (DrawModel's arguments): it uploads each material's lit values
 static void DrawScene(Material floorMaterial, Material sphereMaterial, Material lanternMat)
 {
+    Shader keepShader = floorModel.materials[0].shader;  // raylib's default: UnloadModel leaves it alone
     floorModel.materials[0].shader = floorMaterial.shader;
-    DrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    RblDrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    floorModel.materials[0].shader = keepShader;
     Material keep = sphereModel.materials[0];
     sphereModel.materials[0] = sphereMaterial;
-    for (int i = 0; i < SPHERE_COUNT; i++) DrawModel(sphereModel, (Vector3){ -6.0f + 3.0f*(float)i, 0.6f, 3.0f }, 1.0f, WHITE);
+    for (int i = 0; i < SPHERE_COUNT; i++) RblDrawModel(sphereModel, (Vector3){ -6.0f + 3.0f*(float)i, 0.6f, 3.0f }, 1.0f, WHITE);
     sphereModel.materials[0] = keep;
     RblInstancedDesc desc = { 0 };
     desc.facing = RBL_FACING_AXIS;                      // Upright, turning toward the camera
@@ -247,15 +262,16 @@ static void DeferredPasses(void)
 {
     if (!deferredValid) return;
     Material floorMaterial = floorModel.materials[0], sphereMaterial = floorModel.materials[0], lanternMat = lanternMaterial;
-    floorMaterial.shader = floorGeometry.shader;
-    sphereMaterial.shader = floorGeometry.shader;
-    lanternMat.shader = lanternGeometry.shader;
+    floorMaterial.shader = sceneShader;
+    sphereMaterial.shader = sceneShader;
+    lanternMat.shader = lanternShader;
     // 1. Geometry pass: billboards and Models write the G-buffer
     RblBeginGBuffer(&gbuffer, deferredCamera);
         DrawScene(floorMaterial, sphereMaterial, lanternMat);
     RblEndGBuffer(&gbuffer);
-    // 2. Lights: the moon full screen, every point light as a volume
-    RblDrawDeferredLights(&gbuffer, deferredLights, DEFERRED_LIGHTS + 1, deferredAmbient);
+    // 2. Lights: the scene's moon full screen, every point light as a volume
+    RblSetScene(&deferredScene);                // Where the lights are this frame
+    RblDrawDeferredLights(&gbuffer);
 }
 
 static void DeferredCompose(void)
@@ -272,12 +288,14 @@ static void DeferredCompose(void)
         RblLight some[RBL_MAX_LIGHTS];
         for (int i = 0; i < RBL_MAX_LIGHTS - 1; i++) some[i] = deferredLights[i];
         some[RBL_MAX_LIGHTS - 1] = deferredLights[DEFERRED_LIGHTS];
-        RblSetLights(&floorForward, some, RBL_MAX_LIGHTS, deferredAmbient);
-        RblSetLights(&lanternForward, some, RBL_MAX_LIGHTS, deferredAmbient);
+        RblScene scene = deferredScene;
+        scene.lights = some;
+        scene.lightCount = RBL_MAX_LIGHTS;
+        RblSetScene(&scene);
         Material floorMaterial = floorModel.materials[0], sphereMaterial = floorModel.materials[0], lanternMat = lanternMaterial;
-        floorMaterial.shader = floorForward.shader;
-        sphereMaterial.shader = floorForward.shader;
-        lanternMat.shader = lanternForward.shader;
+        floorMaterial.shader = sceneShader;
+        sphereMaterial.shader = sceneShader;
+        lanternMat.shader = lanternShader;
         BeginMode3D(deferredCamera);
             DrawScene(floorMaterial, sphereMaterial, lanternMat);
         EndMode3D();
@@ -297,10 +315,8 @@ static void DeferredCompose(void)
 static void DeferredUnload(void)
 {
     RblUnloadGBuffer(&gbuffer);
-    RblUnloadLitShader(floorGeometry);
-    RblUnloadLitShader(lanternGeometry);
-    RblUnloadLitShader(floorForward);
-    RblUnloadLitShader(lanternForward);
+    RblUnloadLitShader(&sceneShader);
+    RblUnloadLitShader(&lanternShader);
     RblUnloadInstanceBuffer(&lanternBuffer);
     RblClose();
     UnloadModel(floorModel);                        // Meshes and material maps; shaders and textures are unloaded here

@@ -18,20 +18,25 @@
 *     - RblPackMaterial packs albedo + normal + occlusion into two textures (albedo and one
 *       RGBA8 material texture: hemi-octahedral normal, occlusion), dilates the gutters around
 *       the card frames and builds the mip chains; RblLoadPackedTextures uploads them and the
-*       card shader variant is compiled for exactly that layout (packed.layout),
+*       card program is compiled for exactly that layout (packed.layout),
 *     - the cards are glossy (Blinn-Phong), the floor is a GenMeshPlane() Model with a polished GGX
-*       variant of the lit shader (roughness 0.3); both variants get the same light array
-*       (RblLightFeatures() tells them which light types to compile), a sky/ground hemispheric
-*       ambient, exp2 fog toward the background colour and an ACES tonemap.
+*       program (roughness 0.3). A lit program holds compiled features only (light types from
+*       RblLightFeatures(), BRDF, maps, fog mode, tonemap, shadow maps received); the per-material
+*       values (specular, shininess, roughness) are set on each raylib Material, and the lights,
+*       the sky/ground hemispheric ambient, the exp2 fog toward the background colour, the
+*       exposure and the shadow map live in one RblScene set once per frame (RblSetScene), which
+*       reaches both programs at once. The floor Model is drawn with RblDrawModel(), which uploads
+*       its Material's values and then calls raylib's DrawMesh.
 *   The cards go through the batched path (RblBeginBatch/RblBatchAdd/RblEndBatch): five cards
 *   stand upright turning around +Y toward the camera (RBL_FACING_AXIS) and one lies flat on
 *   the floor (RBL_FACING_FIXED); all six share one material, so the batch draws them at once.
 *   The moonlight casts the cards' shadows (it comes from behind the ring, so the shadows stretch
 *   toward the viewer instead of hiding behind the cards): each frame, before BeginDrawing(), the
 *   same card batch is drawn into a shadow map (between RblBeginShadowMap and RblEndShadowMap the
-*   library swaps in a depth-only caster shader that keeps the cards' alpha test, so the
-*   transparent rounded corners stay cut out of the shadows), then RblSetShadows() hands the map
-*   to the floor and card shader variants, compiled to receive one (desc.shadowMaps = 1).
+*   library swaps in a depth-only caster program that keeps the cards' alpha test, so the
+*   transparent rounded corners stay cut out of the shadows), then the scene lists the map and
+*   RblSetScene() hands it to the floor and card programs, compiled to receive one
+*   (desc.shadowMaps = 1).
 *
 *   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
 *   BSD-like license that allows static linking with closed source software
@@ -94,13 +99,14 @@ typedef struct LightPath {
 static Camera3D showcaseCamera = { 0 };
 static const Color showcaseBackground = { 18, 20, 28, 255 };
 
-static RblLitShader cardLit = { 0 };        // Card variant: Blinn-Phong, the packed layout (normal + occlusion)
-static RblLitShader floorLit = { 0 };       // Floor variant: GGX, albedo only
+static Shader cardLit = { 0 };              // Card program: Blinn-Phong, the packed layout (normal + occlusion)
+static Shader floorLit = { 0 };             // Floor program: GGX, albedo only
 static RblBatch showcaseBatch = { 0 };
-static Material cardMaterial = { 0 };       // Packed card atlas (albedo + material texture) and cardLit
+static Material cardMaterial = { 0 };       // Packed card atlas (albedo + material texture), cardLit, card stock values
 static Model floorModel = { 0 };
 static Texture2D floorAlbedo = { 0 };
 static RblLight showcaseLights[SCENE_LIGHTS] = { 0 };
+static RblScene showcaseScene = { 0 };      // The frame's lights, ambient, fog, exposure and shadow map
 static RblShadowMap moonShadow = { 0 };     // Depth map of the moonlight (cast by the cards)
 
 static const LightPath lightPaths[LIGHT_COUNT] = {
@@ -124,8 +130,8 @@ static const char *rankGlyphs[CARD_COUNT][7] = {
 // Module Functions Declaration
 //----------------------------------------------------------------------------------
 static void ShowcaseInit(void);             // Generate textures, load shader, batch and floor
-static void ShowcaseUpdate(float time);     // Move the lights (a function of time only)
-static void ShowcaseDrawShadows(void);      // Render the shadow map (outside BeginDrawing/BeginTextureMode)
+static void ShowcaseUpdate(float time);     // Move the lights and fill the scene (a function of time only)
+static void ShowcaseDrawShadows(void);      // Render the shadow map, then set the scene (outside BeginDrawing/BeginTextureMode)
 static void ShowcaseDraw(void);             // Draw the 3D scene (inside BeginMode3D)
 static void DrawCards(void);                // The card batch (colour pass and shadow pass alike)
 static void ShowcaseUnload(void);           // Unload everything ShowcaseInit() loaded
@@ -160,7 +166,8 @@ int main(void)
         // Draw
         //----------------------------------------------------------------------------------
         // Shadow map first: a shadow pass binds its own framebuffer and restores the default
-        // one, so it runs before BeginDrawing() (never inside BeginMode3D/BeginTextureMode)
+        // one, so it runs before BeginDrawing() (never inside BeginMode3D/BeginTextureMode);
+        // it ends by setting the frame's scene (lights, ambient, fog, exposure, shadow map)
         ShowcaseDrawShadows();
 
         BeginDrawing();
@@ -180,7 +187,7 @@ int main(void)
 
     // De-Initialization
     //--------------------------------------------------------------------------------------
-    ShowcaseUnload();               // Unload textures, shaders, shadow map, batch and floor
+    ShowcaseUnload();               // Unload textures, lit programs, shadow map, batch and floor; RblClose()
 
     CloseWindow();                  // Close window and OpenGL context
     //--------------------------------------------------------------------------------------
@@ -415,39 +422,38 @@ static void ShowcaseInit(void)
     UnloadImage(normal);
     UnloadImage(occlusion);
 
-    // Lights first: the shader variants compile exactly the light types the scene uses
+    // Lights first: the programs compile exactly the light types the scene uses
     ShowcaseUpdate(0.0f);
     RblLitShaderDesc sceneDesc = { 0 };
     sceneDesc.maxLights = SCENE_LIGHTS;
     sceneDesc.lightFeatures = RblLightFeatures(showcaseLights, SCENE_LIGHTS);
-    sceneDesc.hemisphereAmbient = true;
-    sceneDesc.fog = (RblFog){ RBL_FOG_EXP2, showcaseBackground, 0.0f, 0.0f, 0.055f };
+    sceneDesc.fog = RBL_FOG_EXP2;               // The fog's colour and density are the scene's
     sceneDesc.tonemap = RBL_TONEMAP_ACES;
-    sceneDesc.exposure = 1.4f;
     sceneDesc.shadowMaps = 1;                   // Floor and cards receive the moon's shadow (default 2x2-texel PCF)
 
-    // Card shader variant: glossy card stock (Blinn-Phong), sampling exactly the maps the packing produced
+    // Card program: Blinn-Phong, sampling exactly the maps the packing produced
     RblLitShaderDesc cardDesc = sceneDesc;
     cardDesc.brdf = RBL_BRDF_BLINN_PHONG;
-    cardDesc.specular = 0.35f;
-    cardDesc.shininess = 48.0f;
     cardDesc.material = packed.layout;
     cardLit = RblLoadLitShader(cardDesc);
     if (!RblIsLitShaderValid(cardLit)) TraceLog(LOG_WARNING, "SHOWCASE: card lit shader failed to compile");
 
     // Upload the packed Images (mip chains included) into the card material, then free the CPU copies
     cardMaterial = LoadMaterialDefault();
-    cardMaterial.shader = cardLit.shader;
+    cardMaterial.shader = cardLit;
     if ((packed.albedo.data != NULL) && !RblLoadPackedTextures(&packed, &cardMaterial)) TraceLog(LOG_WARNING, "SHOWCASE: card textures could not be uploaded");
     RblUnloadPackedMaterial(&packed);
 
+    // Glossy card stock: the per-material values live on the Material
+    cardMaterial.params[RBL_PARAM_SPECULAR] = 0.35f;            // Blinn-Phong specular intensity
+    cardMaterial.maps[MATERIAL_MAP_NORMAL].value = 48.0f;       // Blinn-Phong shininess
+
     showcaseBatch = RblLoadBatch(16);
 
-    // Floor: a plane with a grey checker albedo, drawn with a polished GGX variant of the lit shader
-    // (albedo only: no normal map, so no tangents and no flat normal texture are needed)
+    // Floor: a plane with a grey checker albedo, drawn with a GGX program (albedo only: no normal
+    // map, so no tangents and no flat normal texture are needed) and a polished material
     RblLitShaderDesc floorDesc = sceneDesc;
     floorDesc.brdf = RBL_BRDF_GGX;
-    floorDesc.roughness = 0.3f;
     floorLit = RblLoadLitShader(floorDesc);
     if (!RblIsLitShaderValid(floorLit)) TraceLog(LOG_WARNING, "SHOWCASE: floor lit shader failed to compile");
 
@@ -460,10 +466,11 @@ static void ShowcaseInit(void)
     SetTextureFilter(floorAlbedo, TEXTURE_FILTER_TRILINEAR);
     UnloadImage(checker);
 
-    floorModel.materials[0].shader = floorLit.shader;
+    floorModel.materials[0].shader = floorLit;
     floorModel.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorAlbedo;
+    floorModel.materials[0].maps[MATERIAL_MAP_ROUGHNESS].value = 0.3f;     // GGX perceptual roughness (metalness 0)
 
-    // Shadow map of the moonlight: a depth target and the caster shaders. The default biases are in
+    // Shadow map of the moonlight: a depth target (the caster programs are the library's). The default biases are in
     // texels, so they stay right at any map size; if it fails to load the scene renders unshadowed
     RblShadowDesc shadowDesc = { 0 };
     shadowDesc.size = SHADOW_MAP_SIZE;
@@ -505,42 +512,47 @@ static void ShowcaseUpdate(float time)
     moon->color = (Color){ 150, 170, 255, 255 };
     moon->intensity = 0.8f;
 
-    // The same lights and ambient for both shader variants (before ShowcaseInit compiled them: skipped)
-    if (!RblIsLitShaderValid(cardLit) || !RblIsLitShaderValid(floorLit)) return;
-    const Color sky = { 52, 58, 84, 255 }, ground = { 34, 28, 26, 255 };
-    const Vector3 up = { 0.0f, 1.0f, 0.0f };
-    RblSetLights(&cardLit, showcaseLights, SCENE_LIGHTS, sky);
-    RblSetLights(&floorLit, showcaseLights, SCENE_LIGHTS, sky);
-    RblSetHemisphereAmbient(&cardLit, sky, ground, up);
-    RblSetHemisphereAmbient(&floorLit, sky, ground, up);
+    // The frame's scene, the same for both programs: the lights, a sky/ground hemispheric ambient,
+    // exp2 fog toward the background and the exposure. ShowcaseDrawShadows() adds this frame's
+    // shadow map and sets it (RblSetScene reads the map's matrices, so it runs after the pass)
+    showcaseScene.lights = showcaseLights;
+    showcaseScene.lightCount = SCENE_LIGHTS;
+    showcaseScene.ambient = (Color){ 52, 58, 84, 255 };         // Sky
+    showcaseScene.ambientGround = (Color){ 34, 28, 26, 255 };   // Ground
+    showcaseScene.ambientUp = (Vector3){ 0.0f, 1.0f, 0.0f };
+    showcaseScene.fog = (RblFog){ RBL_FOG_EXP2, showcaseBackground, 0.0f, 0.0f, 0.055f };
+    showcaseScene.exposure = 1.4f;
+    showcaseScene.shadowMaps = NULL;
+    showcaseScene.shadowMapCount = 0;
 }
 
 static void ShowcaseDrawShadows(void)
 {
-    if (!RblIsShadowMapValid(moonShadow)) return;
-
     // The moon's map is orthographic over a sphere fixed around the scene, not one that follows the
     // camera (RblShadowFocusFromCamera): the scene is small and the camera orbits it, so every texel
     // stays on the cards and their shadows, and the shadows never shift as the camera moves
     const Vector3 focus = { 0.0f, 0.5f, 0.0f };
-    if (RblBeginShadowMap(&moonShadow, showcaseLights, MOON_LIGHT, focus, SHADOW_FOCUS_RADIUS))
+    if (RblIsShadowMapValid(moonShadow) && RblBeginShadowMap(&moonShadow, &showcaseScene, MOON_LIGHT, focus, SHADOW_FOCUS_RADIUS))
     {
         // The same batch and material as the colour pass: the library draws them with its caster
-        // shader. The floor is left out (nothing lies below it) and so are the unlit light spheres
+        // program. The floor is left out (nothing lies below it) and so are the unlit light spheres
         DrawCards();
         RblEndShadowMap(&moonShadow);
 
-        // Receivers: the map's matrix and depth texture, once per frame for each lit shader; the cards
+        // Receivers: both programs (compiled with shadowMaps = 1) sample the scene's map; the cards
         // receive too, so the flat card shows the shadows of the cards standing behind it
-        RblSetShadows(&floorLit, &moonShadow, 1);
-        RblSetShadows(&cardLit, &moonShadow, 1);
+        showcaseScene.shadowMaps = &moonShadow;
+        showcaseScene.shadowMapCount = 1;
     }
+
+    // Once per frame, after the shadow pass: every live lit program gets the scene at once
+    if (!RblSetScene(&showcaseScene)) TraceLog(LOG_WARNING, "SHOWCASE: scene rejected");
 }
 
 static void ShowcaseDraw(void)
 {
-    // Floor (a raylib Model lit by the same lights)
-    DrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    // Floor (a raylib Model lit by the same scene; RblDrawModel uploads its material's roughness)
+    RblDrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
 
     DrawCards();
 
@@ -584,13 +596,12 @@ static void DrawCards(void)
 static void ShowcaseUnload(void)
 {
     RblUnloadBatch(&showcaseBatch);
-    RblClose();                                     // Immediate path buffers (unused here, harmless)
 
     UnloadModel(floorModel);                        // Mesh and material maps; not shaders or textures
     UnloadTexture(floorAlbedo);
 
     // Card textures uploaded by RblLoadPackedTextures() (albedo, material texture), as UnloadMaterial()
-    // does but without its shader, which RblUnloadLitShader() unloads below
+    // does but without its shader, which RblUnloadLitShader() releases below
     const int packedSlots[3] = { MATERIAL_MAP_ALBEDO, MATERIAL_MAP_NORMAL, MATERIAL_MAP_EMISSION };
     for (int i = 0; i < 3; i++)
     {
@@ -599,8 +610,10 @@ static void ShowcaseUnload(void)
     }
     MemFree(cardMaterial.maps);
 
-    RblUnloadShadowMap(&moonShadow);                // Depth target; releases the caster shaders
+    RblUnloadShadowMap(&moonShadow);                // Depth target
 
-    RblUnloadLitShader(cardLit);
-    RblUnloadLitShader(floorLit);
+    RblUnloadLitShader(&cardLit);                   // Each releases its holder's reference and zeroes it
+    RblUnloadLitShader(&floorLit);
+
+    RblClose();                                     // After the Unload calls: the library's own programs and buffers
 }

@@ -1,6 +1,8 @@
-// Forward lit fragment shader for billboards and raylib Models. The loader prepends "#version 330",
-// the variant #defines, lighting.glsl (lights, BRDFs, fog, tonemap) and material.glsl (surface
-// decoding), so the deferred passes evaluate exactly the same code.
+// Forward pass, fragment stage, for billboards and raylib Models: material -> lights -> output, the
+// same code the deferred passes evaluate.
+#include "material.glsl"
+#include "lights.glsl"
+#include "output.glsl"
 //   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
 //   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 

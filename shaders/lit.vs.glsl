@@ -1,6 +1,7 @@
-// Forward lit vertex shader: billboards (world-space vertices, matModel = identity) and raylib
-// Models (matModel = the model transform) go through the same code.
-// The loader prepends "#version 330" and the variant's #defines.
+// Lit vertex stage of vertex-buffer geometry: billboards (world-space vertices, matModel = identity)
+// and raylib Models (matModel = the model transform) go through the same code. Pairs with lit.fs.glsl,
+// gbuffer.fs.glsl and shadow_caster.fs.glsl.
+#include "common.glsl"
 
 in vec3 vertexPosition;
 in vec2 vertexTexCoord;
@@ -22,17 +23,11 @@ out vec4 fragColor;
 out vec3 fragNormal;
 out vec4 fragTangent;
 
-// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment
-vec3 rblSrgbToLinear(vec3 c)
-{
-    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
-}
-
 void main()
 {
     fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));
     fragTexCoord = vertexTexCoord;
-    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);
+    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex
     fragNormal = mat3(matNormal)*vertexNormal;
     // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.
     fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);

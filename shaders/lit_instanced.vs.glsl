@@ -1,7 +1,10 @@
-// Instanced billboard vertex shader: expands one quad per instance (6 vertices, gl_VertexID 0..5)
-// from per-instance data, with the same math and degenerate-frame fallbacks as the CPU path
-// (RblBillboardVertices), so all three paths emit the same vertices. Pairs with lit.fs.glsl.
-// The loader prepends "#version 330" and the variant's #defines.
+// Instanced billboard vertex stage: expands one quad per instance (6 vertices, gl_VertexID 0..5)
+// from per-instance data. Each function mirrors the CPU function of the same name in the header's
+// geometry section (rblSinCosDeg = rbl__sinCosDeg, rblFacingBasis = rbl__facingBasis,
+// rblBillboardVertex = one corner of rbl__billboardVertices), with the same degenerate-frame
+// fallbacks, so all three paths emit the same vertices. Pairs with lit.fs.glsl, gbuffer.fs.glsl and
+// shadow_caster.fs.glsl.
+#include "common.glsl"
 
 layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees
 layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin
@@ -26,12 +29,6 @@ out vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
 flat out vec3 fragEye;
 #endif
-
-// Vertex colours are sRGB like every raylib Color: decode once per vertex, not per fragment
-vec3 rblSrgbToLinear(vec3 c)
-{
-    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
-}
 
 bool rblNormalizeTo(vec3 v, out vec3 o)
 {
@@ -59,57 +56,75 @@ vec3 rblFallbackUp(vec3 d)
     return vec3(1.0, 0.0, 0.0);
 }
 
-void main()
+// fmod(degrees, 360) exactly (as the CPU's fmodf), for |degrees| > 368640: there degrees = m 2^e
+// with e >= -5, so 32 degrees is the integer m 2^(e + 5), reduced mod 32*360 by doubling
+float rblReduceDegrees(float degrees)
 {
-    vec3 rblViewEye = rblInstancing[0].xyz, rblViewRight = rblInstancing[1].xyz;
-    vec3 rblViewUp = rblInstancing[2].xyz, rblViewBack = rblInstancing[3].xyz;
-    vec3 rblFacingUp = rblInstancing[4].xyz, rblFacingAxis = rblInstancing[5].xyz;
-    int rblFacing = int(rblInstancing[0].w + 0.5);
-    float rblRoundness = rblInstancing[1].w;
-    vec2 rblTextureSize = vec2(rblInstancing[2].w, rblInstancing[3].w);
-    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
-    int corner = cornerOf[gl_VertexID % 6];
-    vec3 position = rblInstancePosition.xyz;
-    int flags = int(rblInstanceFlags + 0.5);
+    uint bits = floatBitsToUint(degrees);
+    int e = int((bits >> 23) & 255u) - 150;
+    uint r = ((bits & 0x7fffffu) | 0x800000u) % 11520u;
+    for (int i = 0; i < e + 5; i++) r = (r*2u) % 11520u;
+    float f = float(r)/32.0;
+    return (degrees < 0.0)? -f : f;
+}
 
-    // Facing basis (right r, up u, normal n)
-    vec3 r = rblViewRight, u = rblViewUp, n = rblViewBack;
-    if (rblFacing == 0)
+// sin and cos of an angle in degrees: reduction to [-45, 45] exact in degrees (multiples of 90 come
+// out exact), then the same minimax polynomials as the CPU
+vec2 rblSinCosDeg(float degrees)
+{
+    if (abs(degrees) > 368640.0) degrees = rblReduceDegrees(degrees);
+    int q = int(degrees*(1.0/90.0) + ((degrees < 0.0)? -0.5 : 0.5));      // nearest quadrant (truncation, as C)
+    float x = (degrees - float(q)*90.0)*(3.14159265358979323846/180.0);
+    float x2 = x*x;
+    float sn = x + x*x2*(-1.6666654611e-1 + x2*(8.3321608736e-3 + x2*(-1.9515295891e-4)));
+    float cs = 1.0 - 0.5*x2 + x2*x2*(4.166664568298827e-2 + x2*(-1.388731625493765e-3 + x2*2.443315711809948e-5));
+    // Quadrant q: (sin, cos) = (sn, cs), (cs, -sn), (-sn, -cs), (-cs, sn)
+    bool swap = (q & 1) != 0;
+    vec2 r = swap? vec2(cs, sn) : vec2(sn, cs);
+    if ((q & 2) != 0) r.x = -r.x;
+    if (((q + 1) & 2) != 0) r.y = -r.y;
+    return r;
+}
+
+// Right r, up u (unit, except CAMERA_PLANE's caller up) and unit normal n of a billboard at position
+// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS
+// billboards until the light sees them at the minimum angle
+void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,
+                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)
+{
+    r = viewRight; u = viewUp; n = viewBack;
+    if (facing == 0)
     {
         vec3 nn;
-        if ((dot(rblFacingUp, rblFacingUp) > 0.0) && rblNormalizeTo(cross(r, rblFacingUp), nn)) { u = rblFacingUp; n = nn; }
+        if ((dot(facingUp, facingUp) > 0.0) && rblNormalizeTo(cross(r, facingUp), nn)) { u = facingUp; n = nn; }
     }
-    else if (rblFacing == 1)
+    else if (facing == 1)
     {
         vec3 toEye;
-        if (rblNormalizeTo(rblViewEye - position, toEye))
+        if (rblNormalizeTo(eye - position, toEye))
         {
             n = toEye;
             vec3 rr;
-            if (rblNormalizeTo(cross(rblViewUp, n), rr)) { r = rr; u = cross(n, r); }
-            else { r = rblViewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }
+            if (rblNormalizeTo(cross(viewUp, n), rr)) { r = rr; u = cross(n, r); }
+            else { r = viewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }
         }
     }
-    else if (rblFacing == 2)
+    else if (facing == 2)
     {
         vec3 a = vec3(0.0, 1.0, 0.0);
-        if (dot(rblFacingAxis, rblFacingAxis) > 0.0) rblNormalizeTo(rblFacingAxis, a);
+        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, a);
         vec3 nn;
-        if (!rblPerpendicular(rblViewEye - position, a, nn) && !rblPerpendicular(rblViewBack, a, nn) &&
-            !rblPerpendicular(rblViewUp, a, nn)) nn = rblViewBack;
+        if (!rblPerpendicular(eye - position, a, nn) && !rblPerpendicular(viewBack, a, nn) &&
+            !rblPerpendicular(viewUp, a, nn)) nn = viewBack;
         u = a; n = nn; r = cross(u, n);
-        // Shadow pass: tilt about the pivot line (r) until the light sees the quad at >= the minimum
-        // angle, so an upright sprite still casts under a light along its axis (RblShadowTilt on the CPU)
-        float minSin = rblInstancing[4].w;
-        vec4 light = rblInstancing[6];
         vec3 l;
-        if ((minSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
+        if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
         {
             float ln = dot(l, n), la = dot(l, a);
             float x = abs(ln), y = abs(la), rho = sqrt(x*x + y*y);
-            if ((x < minSin) && (rho > 0.0))
+            if ((x < minCastSin) && (rho > 0.0))
             {
-                float k = min(minSin/rho, 1.0), m = sqrt(1.0 - k*k);
+                float k = min(minCastSin/rho, 1.0), m = sqrt(1.0 - k*k);
                 float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;
                 float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
                 n = nn*c + a*sn;
@@ -120,21 +135,19 @@ void main()
     else
     {
         vec3 nn = vec3(0.0, 0.0, 1.0);
-        if (dot(rblFacingAxis, rblFacingAxis) > 0.0) rblNormalizeTo(rblFacingAxis, nn);
-        vec3 uu = (dot(rblFacingUp, rblFacingUp) > 0.0)? rblFacingUp : vec3(0.0, 1.0, 0.0);
+        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, nn);
+        vec3 uu = (dot(facingUp, facingUp) > 0.0)? facingUp : vec3(0.0, 1.0, 0.0);
         if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);
         n = nn; u = uu; r = cross(u, n);
     }
+}
 
-    float rotation = rblInstancePosition.w;
-    if (rotation != 0.0)
-    {
-        float ang = rotation*(3.14159265358979323846/180.0), c = cos(ang), s = sin(ang);
-        vec3 nr = cross(n, r), nu = cross(n, u);
-        r = r*c + nr*s;
-        u = u*c + nu*s;
-    }
-
+// One corner (0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left) of the instance's quad, given
+// its rotated frame: world position, texture coordinate, rounded normal and tangent
+void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,
+                        out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)
+{
+    int flags = int(rblInstanceFlags + 0.5);
     vec2 size = rblInstanceSize.xy, origin = rblInstanceSize.zw;
     float sx = abs(size.x), sy = abs(size.y);
     vec3 un = u;
@@ -144,17 +157,17 @@ void main()
     float ct = (corner < 2)? 1.0 : 0.0;                      // sprite-space t (down)
     float x = (cs > 0.5)? sx - origin.x : -origin.x;
     float y = (ct < 0.5)? sy*ulen - origin.y : -origin.y;
-    vec3 p = position + r*x + un*y;
+    position = rblInstancePosition.xyz + r*x + un*y;
 
     vec4 src = rblInstanceSource;
-    if (src == vec4(0.0)) src = vec4(0.0, 0.0, rblTextureSize);
+    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);
     bool flipU = (size.x < 0.0) != (src.z < 0.0);
     bool flipV = (size.y < 0.0) != (src.w < 0.0);
     bool rotated = (flags & 1) != 0;
     float s = flipU? 1.0 - cs : cs;
     float t = flipV? 1.0 - ct : ct;
     vec2 frame = rotated? vec2(1.0 - t, s) : vec2(s, t);
-    fragTexCoord = (src.xy + frame*abs(src.zw))/rblTextureSize;
+    texCoord = (src.xy + frame*abs(src.zw))/textureSize;
 
     vec3 T, V;
     if (!rotated) { T = flipU? -r : r; V = flipV? un : -un; }
@@ -162,7 +175,7 @@ void main()
     float w = (dot(cross(n, T), V) < 0.0)? -1.0 : 1.0;
 
     vec3 nv = n, tv = T;
-    float round = clamp(rblRoundness, 0.0, 1.0);
+    float round = clamp(roundness, 0.0, 1.0);
     if (round > 0.0)
     {
         float dx = (cs < 0.5)? -1.0 : 1.0;
@@ -170,14 +183,33 @@ void main()
         rblNormalizeTo(n + (r*dx + un*dy)*round, nv);
         if (!rblPerpendicular(T, nv, tv)) tv = T;
     }
+    normal = nv;
+    tangent = vec4(tv, w);
+}
 
+void main()
+{
+    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
+    vec3 eye = rblInstancing[0].xyz;
+    vec3 r, u, n;
+    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,
+                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);
+    // Rotate the frame around the normal (raylib rotates the corners; same result)
+    if (rblInstancePosition.w != 0.0)
+    {
+        vec2 sc = rblSinCosDeg(rblInstancePosition.w);
+        vec3 nr = cross(n, r), nu = cross(n, u);
+        r = r*sc.y + nr*sc.x;
+        u = u*sc.y + nu*sc.x;
+    }
+    vec3 p;
+    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
+                       p, fragTexCoord, fragNormal, fragTangent);
     fragPosition = p;
     vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
-    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);
-    fragNormal = nv;
-    fragTangent = vec4(tv, w);
+    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex
 #ifdef RBL_VIEW_VECTOR
-    fragEye = rblViewEye;
+    fragEye = eye;
 #endif
     gl_Position = mvp*vec4(p, 1.0);
 }

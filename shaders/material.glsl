@@ -1,15 +1,14 @@
-// Surface decoding shared by every pass that shades a material (forward lit.fs.glsl, the deferred
-// G-buffer gbuffer.fs.glsl): vertex inputs, material uniforms and maps, alpha test, normal-map
-// decode and tangent frame, BRDF parameters. The loader places it after lighting.glsl.
-// Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB and decoded to linear light; data maps
-// (normal, specular/roughness, occlusion) are linear.
+// Material: fragment inputs, the material's maps and per-draw values, alpha test, normal-map decode
+// and tangent frame -> RblShadingPoint. Shared by every pass that shades a material (lit.fs.glsl,
+// gbuffer.fs.glsl, shadow_caster.fs.glsl). Colour (albedo, emissive, vertex tint, colDiffuse) is sRGB
+// and decoded to linear light; data maps (normal, specular/roughness, occlusion) are linear.
 // Material defines (absent maps are never declared, so never sampled):
 //   RBL_NORMAL_ENCODING e    0 none, 1 hemi-octahedral RG, 2 XY RG (+Z rebuilt), 3 plain RGB map
 //   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness
 //   RBL_OCCLUSION            material texture A holds ambient occlusion
 //   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)
-//   RBL_EMISSIVE_COLOR       constant emission rblEmissiveColor (linear, intensity applied)
 //   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
+#include "surface.glsl"
 
 in vec3 fragPosition;
 in vec2 fragTexCoord;
@@ -29,9 +28,7 @@ uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): R
 uniform sampler2D texture5;     // emissive (MATERIAL_MAP_EMISSION slot)
 uniform float rblEmissiveIntensity;
 #endif
-#ifdef RBL_EMISSIVE_COLOR
-uniform vec3 rblEmissiveColor;
-#endif
+uniform vec3 rblEmissiveColor;  // constant emission (linear, intensity applied; the material's EMISSION colour)
 #if RBL_BRDF == 1
 uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shininess
 #elif RBL_BRDF == 2
@@ -67,7 +64,6 @@ vec3 rblDecodeNormal(vec4 m)
 // tangent-space normal (debug views) come back through the out parameters
 RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)
 {
-
     vec4 texel = texture(texture0, fragTexCoord);
     vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);
     if (albedo.a < rblAlphaCutoff) discard;
@@ -116,8 +112,6 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
 #elif RBL_EMISSIVE == 2
     emission += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;
 #endif
-#ifdef RBL_EMISSIVE_COLOR
     emission += rblEmissiveColor;
-#endif
     return sp;
 }

@@ -1,7 +1,7 @@
-// Shadow caster fragment stage: depth only. The loader prepends "#version 330", the variant #defines,
-// lighting.glsl and material.glsl, so the alpha test is the colour pass's own (albedo x colDiffuse x
-// vertex colour against rblAlphaCutoff): a sprite's silhouette casts the shadow, not its quad.
-// Nothing else is sampled; the target has no colour attachment.
+// Shadow pass, fragment stage: depth only. The alpha test is the colour pass's own (albedo x
+// colDiffuse x vertex colour against the material's cutoff): a sprite's silhouette casts the shadow,
+// not its quad. Nothing else is sampled; the target has no colour attachment.
+#include "material.glsl"
 
 void main()
 {

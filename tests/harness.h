@@ -46,4 +46,29 @@ void rtFinish(void);
 // GL entry point of the current context (for tests that need GL beyond rlgl, e.g. transform feedback)
 void *rtGlProc(const char *name);
 
+// ---- lit material values ----------------------------------------------------------------------
+// The values 0.3's RblLitShaderDesc held, written where 1.0 reads them: raylib's Material fields
+// (see RblMaterialParam in the header). Zero fields keep the header's defaults.
+typedef struct RtMaterialValues {
+    float specular;          // params[1] (RBL_PARAM_SPECULAR; raylib's SPECULAR map is the METALNESS map)
+    float shininess;         // MATERIAL_MAP_NORMAL.value
+    Color specularColor;     // MATERIAL_MAP_SPECULAR.color
+    float roughness;         // MATERIAL_MAP_ROUGHNESS.value
+    float metalness;         // MATERIAL_MAP_METALNESS.value
+    Color emissiveColor;     // MATERIAL_MAP_EMISSION.color
+    float emissiveIntensity; // MATERIAL_MAP_EMISSION.value
+    float alphaCutoff;       // params[0]
+} RtMaterialValues;
+static inline void rtSetMaterialValues(Material *m, RtMaterialValues v)
+{
+    m->maps[MATERIAL_MAP_NORMAL].value = v.shininess;
+    m->maps[MATERIAL_MAP_SPECULAR].color = v.specularColor;
+    m->maps[MATERIAL_MAP_ROUGHNESS].value = v.roughness;
+    m->maps[MATERIAL_MAP_METALNESS].value = v.metalness;
+    m->maps[MATERIAL_MAP_EMISSION].color = v.emissiveColor;
+    m->maps[MATERIAL_MAP_EMISSION].value = v.emissiveIntensity;
+    m->params[0] = v.alphaCutoff;
+    m->params[1] = v.specular;
+}
+
 #endif

@@ -1,7 +1,8 @@
 // Double-precision reference of the forward shading equations, written from their definitions
 // (Filament's GGX / Smith height-correlated / Schlick; normalised Blinn-Phong; UE4 windowed falloff;
 // smoothstep spot cone; Reinhard; Narkowicz ACES fit; IEC 61966-2-1 sRGB), not from the shader code:
-// it takes the same RblLight / RblLitShaderDesc values a user passes to the header and applies the
+// it takes the same RblLight values a user passes to the header, plus RefParams (the program's
+// features, the material's values and the scene's settings in one place), and applies the
 // documented defaults itself. Shared by the lighting tests and the lighting benchmark.
 #ifndef RBL_TEST_LIGHTING_REFERENCE_H
 #define RBL_TEST_LIGHTING_REFERENCE_H
@@ -14,6 +15,26 @@ static inline RefRgb refLinear(Color c) { return refRgb(srgbDecode(c.r/255.0), s
 static inline RefRgb refAddScaled(RefRgb a, RefRgb b, double s) { return refRgb(a.r + b.r*s, a.g + b.g*s, a.b + b.b*s); }
 static inline RefRgb refMul(RefRgb a, RefRgb b) { return refRgb(a.r*b.r, a.g*b.g, a.b*b.b); }
 static inline double refClamp(double x, double lo, double hi) { return fmin(fmax(x, lo), hi); }
+
+// What shades a point besides its lights and surface: compiled features (brdf, tonemap, gamma,
+// output), the material's values (raylib Material fields in 1.0) and the scene's fog and exposure,
+// under their 0.3 names; zero means the header's documented default
+typedef struct RefParams {
+    int brdf;                   // RblBrdf
+    float specular;             // Blinn-Phong intensity (MATERIAL_MAP_SPECULAR.value)
+    float shininess;            // Blinn-Phong exponent (MATERIAL_MAP_NORMAL.value)
+    Color specularColor;        // MATERIAL_MAP_SPECULAR.color
+    float roughness;            // GGX (MATERIAL_MAP_ROUGHNESS.value)
+    float metalness;            // GGX (MATERIAL_MAP_METALNESS.value)
+    Color emissiveColor;        // MATERIAL_MAP_EMISSION.color
+    float emissiveIntensity;    // MATERIAL_MAP_EMISSION.value
+    bool hemisphereAmbient;     // the scene has a ground colour
+    RblFog fog;                 // the scene's fog (applied when the program compiled that mode)
+    int tonemap;                // RblTonemap
+    float exposure;             // the scene's exposure
+    float gamma;                // display encoding (0 = sRGB)
+    bool linearOutput;
+} RefParams;
 
 // Environment of a shading point besides its lights
 typedef struct RefEnvironment {
@@ -71,7 +92,7 @@ static inline RefRgb refLightIrradiance(const RblLight *L, D3 p, D3 n, D3 *toLig
 }
 
 // pi * BRDF for one channel set: diffuse + specular, given unit n, v, l
-static inline RefRgb refBrdf(const RblLitShaderDesc *d, const RefSurface *s, D3 v, D3 l)
+static inline RefRgb refBrdf(const RefParams *d, const RefSurface *s, D3 v, D3 l)
 {
     D3 n = s->normal;
     if (d->brdf == RBL_BRDF_BLINN_PHONG)
@@ -109,7 +130,7 @@ static inline RefRgb refBrdf(const RblLitShaderDesc *d, const RefSurface *s, D3 
 }
 
 // Linear radiance leaving the surface toward eye (ambient + direct + constant emission), before fog
-static inline RefRgb refShade(const RblLitShaderDesc *d, const RblLight *lights, int count, const RefEnvironment *env,
+static inline RefRgb refShade(const RefParams *d, const RblLight *lights, int count, const RefEnvironment *env,
                               const RefSurface *s, D3 eye)
 {
     RefRgb ambient = refLinear(env->ambient);
@@ -143,7 +164,7 @@ static inline RefRgb refShade(const RblLitShaderDesc *d, const RblLight *lights,
 }
 
 // Fog, half-float clamp, exposure, tonemap, display encoding: the value written to an 8-bit target, 0..1
-static inline double refFinishChannel(const RblLitShaderDesc *d, double c, double fogColor, double distance)
+static inline double refFinishChannel(const RefParams *d, double c, double fogColor, double distance)
 {
     if (d->fog.mode != RBL_FOG_NONE)
     {
@@ -162,7 +183,7 @@ static inline double refFinishChannel(const RblLitShaderDesc *d, double c, doubl
     return srgbEncode(c);
 }
 
-static inline RefRgb refFinish(const RblLitShaderDesc *d, RefRgb c, D3 position, D3 eye)
+static inline RefRgb refFinish(const RefParams *d, RefRgb c, D3 position, D3 eye)
 {
     RefRgb fog = refLinear(d->fog.color);
     double distance = dLen(dSub(position, eye));

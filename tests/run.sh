@@ -3,6 +3,7 @@
 #   compile checks: the header as C99 (gcc, clang) and C++ (g++, clang++), with and without the
 #                   implementation, -Wall -Wextra -pedantic -Werror
 #   cpu:            geometry and shader-source tests (plain, then under ASan+UBSan)
+#   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   gpu:            render tests under EGL surfaceless, then under OSMesa
 set -u
 BUILD=${BUILD:-build}
@@ -49,6 +50,9 @@ for suite in test_cpu test_cpu_san; do
   echo "== $suite"
   out=$("$BUILD/tests/$suite" 2>&1); printf '%s\n' "$out"; count "$out"
 done
+echo "== test_api_san (egl, ASan+UBSan+LSan)"
+out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=detect_leaks=1 "$BUILD/tests/test_api_san" 2>&1); printf '%s\n' "$out"; count "$out"
+if printf '%s\n' "$out" | grep -q "ERROR: \(Address\|Leak\)Sanitizer"; then echo "  FAIL  test_api_san: sanitizer report"; fail=$((fail + 1)); fi
 for ctx in egl osmesa; do
   echo "== test_gpu ($ctx)"
   out=$(RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"

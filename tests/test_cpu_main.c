@@ -55,6 +55,7 @@ int main(int argc, char **argv)
         RT_TEST(test_materials_mip_chain_uses_raylib_sizes_and_layout_and_odd_sizes_keep_constants),
         RT_TEST(test_materials_unload_frees_and_zeroes_the_packed_material),
         RT_TEST(test_shaders_embedded_copies_equal_the_glsl_files),
+        RT_TEST(test_shaders_each_stage_lists_its_include_closure_dependencies_first),
     };
     SetTraceLogLevel(LOG_WARNING);
     return rtRun("cpu", tests, (int)(sizeof(tests)/sizeof(tests[0])), argc, argv);

@@ -2,8 +2,10 @@
 // against forward for the same scene (billboards on every path and a raylib Model, every light
 // type); the eye inside a light volume; 1024 lights against the double reference; the normal
 // encoding against published figures; position from depth against a double reconstruction;
-// the forced fallback; forward-drawn transparent billboards sorting against deferred depth;
-// the debug views. Included by test_gpu_main.c after test_lighting.c.
+// the forced fallback; a geometry variant of another BRDF refused at draw; forward-drawn transparent
+// billboards sorting against deferred depth; the debug views. Programs hold compiled features only:
+// per-material values travel with the Material (rtSetMaterialValues), lights, ambient and fog with the
+// scene (RblSetScene), which RblDrawDeferredLights reads. Included by test_gpu_main.c after test_lighting.c.
 
 #define DEF_W 128
 #define DEF_H 96
@@ -16,7 +18,9 @@ typedef struct DefScene {
     RblLight lights[8];
     int count;
     Color ambient;
-    RblLitShaderDesc desc;          // material + shading (brdf, fog, tonemap, ...)
+    RblFog fog;                     // scene fog (desc.fog compiles its mode in)
+    RblLitShaderDesc desc;          // compiled features: material + shading (brdf, fog mode, tonemap, ...)
+    RtMaterialValues values;        // per-material values of every draw (roughness, metalness, ...)
     Texture2D albedo, disc, normal;
     Model sphere;
     RblBatch batch;
@@ -38,13 +42,19 @@ static DefScene defSceneLoad(int brdf)
     s.ambient = (Color){ 30, 32, 40, 255 };
     memset(&s.desc, 0, sizeof(s.desc));
     s.desc.brdf = brdf;
-    s.desc.roughness = 0.45f; s.desc.metalness = 0.3f; s.desc.shininess = 40.0f;
+    memset(&s.values, 0, sizeof(s.values));
+    s.values.roughness = 0.45f; s.values.shininess = 40.0f;
+    // raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS (one slot): GGX reads its value as metalness,
+    // Blinn-Phong as specular intensity, so the metalness goes to GGX materials only (0.3's desc.metalness
+    // reached no other BRDF; Blinn-Phong keeps its default intensity 0.5)
+    if (brdf == RBL_BRDF_GGX) s.values.metalness = 0.3f;
     s.desc.maxLights = 8;
     s.desc.lightFeatures = RblLightFeatures(s.lights, s.count);
     s.desc.material.normalEncoding = RBL_NORMAL_RGB;
     s.desc.tonemap = RBL_TONEMAP_REINHARD;
-    s.desc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 40, 40, 60, 255 }, 0.0f, 0.0f, 0.04f };
-    s.desc.emissiveColor = (Color){ 12, 4, 0, 255 };
+    s.fog = (RblFog){ RBL_FOG_EXP, (Color){ 40, 40, 60, 255 }, 0.0f, 0.0f, 0.04f };
+    s.desc.fog = s.fog.mode;
+    s.values.emissiveColor = (Color){ 12, 4, 0, 255 };
     Image a = GenImageGradientLinear(16, 16, 30, (Color){ 230, 190, 140, 255 }, (Color){ 110, 170, 220, 255 });
     s.albedo = LoadTextureFromImage(a);
     UnloadImage(a);
@@ -70,6 +80,37 @@ static void defSceneUnload(DefScene *s)
     RblUnloadInstanceBuffer(&s->instances);
 }
 
+// The G-buffer request matching a lit desc's shading (what 0.3 read from the shading desc)
+static RblGBufferDesc defGBufferDesc(const RblLitShaderDesc *d, int width, int height)
+{
+    RblGBufferDesc g;
+    memset(&g, 0, sizeof(g));
+    g.width = width; g.height = height;
+    g.brdf = d->brdf;
+    g.lightFeatures = d->lightFeatures;
+    g.fog = d->fog;
+    g.tonemap = d->tonemap;
+    g.gamma = d->gamma;
+    g.linearOutput = d->linearOutput;
+    g.shadowMaps = d->shadowMaps;
+    g.shadowFilter = d->shadowFilter;
+    return g;
+}
+
+// The frame's scene: count lights, a flat ambient and fog (no exposure, no shadows); RblSetScene's verdict
+static bool defSetLights(const RblLight *lights, int count, Color ambient, RblFog fog)
+{
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights;
+    scene.lightCount = count;
+    scene.ambient = ambient;
+    scene.fog = fog;
+    return RblSetScene(&scene);
+}
+
+static bool defSetScene(const DefScene *s) { return defSetLights(s->lights, s->count, s->ambient, s->fog); }
+
 // Draws the scene's geometry with materials built on `lit` (forward) or `geo`/`geoInstanced` (deferred)
 static void defSceneDraw(DefScene *s, Shader plain, Shader instanced)
 {
@@ -77,14 +118,15 @@ static void defSceneDraw(DefScene *s, Shader plain, Shader instanced)
     m.shader = plain;
     m.maps[MATERIAL_MAP_ALBEDO].texture = s->albedo;
     m.maps[MATERIAL_MAP_NORMAL].texture = s->normal;
+    rtSetMaterialValues(&m, s->values);
     // Floor: fixed billboard, immediate path
     RblBillboard floor = litPlane();
     floor.size = (Vector2){ 8.0f, 8.0f }; floor.origin = (Vector2){ 4.0f, 4.0f };
     RblDrawBillboard(s->camera, m, floor);
-    // Sphere: a raylib Model through DrawModel
+    // Sphere: a raylib Model through RblDrawModel (DrawModel's arguments, the material's lit values uploaded)
     Material keep = s->sphere.materials[0];
     s->sphere.materials[0] = m;
-    DrawModel(s->sphere, (Vector3){ 0.9f, 0.4f, 0.6f }, 1.0f, WHITE);
+    RblDrawModel(s->sphere, (Vector3){ 0.9f, 0.4f, 0.6f }, 1.0f, WHITE);
     s->sphere.materials[0] = keep;
     // Standing cut-out discs: batched (axis mode) and instanced (camera-position mode, rounded)
     Material disc = m;
@@ -119,22 +161,21 @@ static void defSceneDraw(DefScene *s, Shader plain, Shader instanced)
 static Image defRenderForward(DefScene *s)
 {
     RblLitShaderDesc d = s->desc;
-    RblLitShader lit = RblLoadLitShader(d);
+    Shader lit = RblLoadLitShader(d);
     d.instanced = true;
-    RblLitShader inst = RblLoadLitShader(d);
+    Shader inst = RblLoadLitShader(d);
     RT_CHECK(RblIsLitShaderValid(lit) && RblIsLitShaderValid(inst), "forward variants failed");
-    RblSetLights(&lit, s->lights, s->count, s->ambient);
-    RblSetLights(&inst, s->lights, s->count, s->ambient);
+    RT_CHECK(defSetScene(s), "forward scene rejected");
     RenderTexture2D rt = LoadRenderTexture(DEF_W, DEF_H);
     BeginTextureMode(rt);
     ClearBackground(BLANK);
     BeginMode3D(s->camera);
-    defSceneDraw(s, lit.shader, inst.shader);
+    defSceneDraw(s, lit, inst);
     EndMode3D();
     EndTextureMode();
     Image img = rtReadTarget(rt);
     UnloadRenderTexture(rt);
-    RblUnloadLitShader(lit); RblUnloadLitShader(inst);
+    RblUnloadLitShader(&lit); RblUnloadLitShader(&inst);
     return img;
 }
 
@@ -143,16 +184,17 @@ static Image defRenderDeferred(DefScene *s, RblGBuffer *g, bool *ok)
 {
     RblLitShaderDesc d = s->desc;
     d.deferred = true;
-    RblLitShader geo = RblLoadLitShader(d);
+    Shader geo = RblLoadLitShader(d);
     d.instanced = true;
-    RblLitShader geoInst = RblLoadLitShader(d);
+    Shader geoInst = RblLoadLitShader(d);
     RT_CHECK(RblIsLitShaderValid(geo) && RblIsLitShaderValid(geoInst), "geometry variants failed");
+    RT_CHECK(defSetScene(s), "deferred scene rejected");
     *ok = RblBeginGBuffer(g, s->camera);
     if (*ok)
     {
-        defSceneDraw(s, geo.shader, geoInst.shader);
+        defSceneDraw(s, geo, geoInst);
         RblEndGBuffer(g);
-        *ok = RblDrawDeferredLights(g, s->lights, s->count, s->ambient);
+        *ok = RblDrawDeferredLights(g);
     }
     RenderTexture2D rt = LoadRenderTexture(DEF_W, DEF_H);
     BeginTextureMode(rt);
@@ -161,7 +203,7 @@ static Image defRenderDeferred(DefScene *s, RblGBuffer *g, bool *ok)
     EndTextureMode();
     Image img = rtReadTarget(rt);
     UnloadRenderTexture(rt);
-    RblUnloadLitShader(geo); RblUnloadLitShader(geoInst);
+    RblUnloadLitShader(&geo); RblUnloadLitShader(&geoInst);
     return img;
 }
 
@@ -191,11 +233,12 @@ static DefDiff defCompare(Image a, Image b)
 // ---- layout and lifetime ------------------------------------------------------------------------
 static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing(void)
 {
-    RblLitShaderDesc shading;
+    RblGBufferDesc shading;
     memset(&shading, 0, sizeof(shading));
-    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, shading);
-    RT_CHECK(RblIsGBufferValid(g), "G-buffer failed to load");
-    int bpp = RblGBufferBytesPerPixel(g);
+    shading.width = DEF_W; shading.height = DEF_H;
+    RblGBuffer g = RblLoadGBuffer(shading);
+    RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed to load");
+    int bpp = RblGBufferBytesPerPixel(&g);
     RT_CHECK(bpp == 10 && bpp <= 12, "G-buffer %d bytes per pixel (formats %d %d %d)", bpp, g.albedo.format, g.normal.format, g.params.format);
     printf("    G-buffer: %d bytes/pixel measured from the allocated formats (seed pipeline 28, raylib's deferred example 16), + depth + RGBA16F accumulation\n", bpp);
     unsigned int old[5] = { g.albedo.id, g.normal.id, g.params.id, g.accum.id, g.depth.id };
@@ -207,12 +250,12 @@ static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_le
     unsigned int now[5] = { g.albedo.id, g.normal.id, g.params.id, g.accum.id, g.depth.id };
     RblUnloadGBuffer(&g);
     for (int i = 0; i < 5; i++) RT_CHECK(!glIsTextureFn(now[i]), "texture %u leaked by unload", now[i]);
-    RT_CHECK(!RblIsGBufferValid(g), "unloaded G-buffer still valid");
+    RT_CHECK(!RblIsGBufferValid(&g), "unloaded G-buffer still valid");
     // Bad descs are refused
     warnings = 0;
     shading.brdf = 9;
-    g = RblLoadGBuffer(DEF_W, DEF_H, shading);
-    RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "bad shading desc accepted");
+    g = RblLoadGBuffer(shading);
+    RT_CHECK(!RblIsGBufferValid(&g) && warnings == 1, "bad shading desc accepted");
 }
 
 // ---- deferred against forward ---------------------------------------------------------------------
@@ -221,8 +264,8 @@ static void test_deferred_matches_forward_within_2_of_255_for_billboards_and_mod
     for (int brdf = RBL_BRDF_LAMBERT; brdf <= RBL_BRDF_GGX; brdf++)
     {
         DefScene s = defSceneLoad(brdf);
-        RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
-        RT_CHECK(RblIsGBufferValid(g), "G-buffer failed");
+        RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
+        RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed");
         Image fwd = defRenderForward(&s);
         bool ok = false;
         Image def = defRenderDeferred(&s, &g, &ok);
@@ -247,7 +290,7 @@ static void test_deferred_matches_forward_with_an_orthographic_camera(void)
     DefScene s = defSceneLoad(RBL_BRDF_GGX);
     s.camera.projection = CAMERA_ORTHOGRAPHIC;
     s.camera.fovy = 5.0f;                          // view height in world units
-    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
     Image fwd = defRenderForward(&s);
     bool ok = false;
     Image def = defRenderDeferred(&s, &g, &ok);
@@ -267,7 +310,7 @@ static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
     s.lights[0] = litPoint((Vector3){ 0.4f, -3.0f, 2.6f }, 4.0f, 5.0f);       // the eye is 0.6 from it, range 5
     s.count = 1;
     s.desc.lightFeatures = RBL_LIGHTS_POINT;
-    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
     Image fwd = defRenderForward(&s);
     bool ok = false;
     Image def = defRenderDeferred(&s, &g, &ok);
@@ -285,7 +328,7 @@ static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
 static void test_deferred_1024_lights_match_the_double_reference(void)
 {
     LitScene sc = litScene(RBL_BRDF_GGX);
-    sc.desc.roughness = 0.5f;
+    sc.values.roughness = 0.5f;
     sc.camera = headOnCamera();
     static RblLight many[1024];
     unsigned int seed = 99u;
@@ -295,15 +338,16 @@ static void test_deferred_1024_lights_match_the_double_reference(void)
                            rtRandomRange(&seed, 0.002f, 0.01f), rtRandomRange(&seed, 0.2f, 0.6f));
         many[i].color = (Color){ (unsigned char)(rtRandom(&seed)%256), (unsigned char)(rtRandom(&seed)%256), (unsigned char)(rtRandom(&seed)%256), 255 };
     }
-    RblLitShaderDesc shading = sc.desc;
-    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, shading);
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&sc.desc, LIT_TARGET, LIT_TARGET));
     RblLitShaderDesc d = sc.desc;
     d.deferred = true;
-    RblLitShader geo = RblLoadLitShader(d);
+    Shader geo = RblLoadLitShader(d);
     Texture2D albedo = solidTexture(sc.albedo);
     Material m = LoadMaterialDefault();
-    m.shader = geo.shader;
+    m.shader = geo;
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    rtSetMaterialValues(&m, sc.values);
+    RT_CHECK(defSetLights(many, 1024, sc.env.ambient, sc.fog), "1024 lights rejected by the scene");
     Image img[2];
     for (int naive = 0; naive < 2; naive++)
     {
@@ -311,7 +355,7 @@ static void test_deferred_1024_lights_match_the_double_reference(void)
         RT_CHECK(RblBeginGBuffer(&g, sc.camera), "geometry pass refused");
         RblDrawBillboard(sc.camera, m, litPlane());
         RblEndGBuffer(&g);
-        RT_CHECK(RblDrawDeferredLights(&g, many, 1024, sc.env.ambient), "1024 lights refused");
+        RT_CHECK(RblDrawDeferredLights(&g), "1024 lights refused");
         RT_CHECK(naive? (g.lightsFullscreen == 1024) : (g.lightsInVolumes == 1024), "volumes %d full screen %d", g.lightsInVolumes, g.lightsFullscreen);
         RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
         BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
@@ -324,13 +368,22 @@ static void test_deferred_1024_lights_match_the_double_reference(void)
     memset(&e, 0, sizeof(e));
     double sum = 0.0;
     int lit = 0;
+    RefParams shading;                        // what the reference reads: the desc's features, the material's values
+    memset(&shading, 0, sizeof(shading));
+    shading.brdf = sc.desc.brdf;
+    shading.specular = sc.values.specular; shading.shininess = sc.values.shininess; shading.specularColor = sc.values.specularColor;
+    shading.roughness = sc.values.roughness; shading.metalness = sc.values.metalness;
+    shading.emissiveColor = sc.values.emissiveColor; shading.emissiveIntensity = sc.values.emissiveIntensity;
+    shading.fog = sc.fog;                     // the scene's (none)
+    shading.tonemap = sc.desc.tonemap;
+    shading.gamma = sc.desc.gamma;
     for (int py = 1; py < LIT_TARGET - 1; py++)
         for (int px = 1; px < LIT_TARGET - 1; px++)
         {
             D3 p;
             if (!refPixelOnPlane(sc.camera, LIT_TARGET, LIT_TARGET, px, py, d3(0, 0, 0), d3(0, 0, 1), &p)) continue;
             RefSurface surf = litSurface(&sc, p);
-            RefRgb ref = refFinish(&sc.desc, refShade(&sc.desc, many, 1024, &sc.env, &surf, d3f(sc.camera.position)), p, d3f(sc.camera.position));
+            RefRgb ref = refFinish(&shading, refShade(&shading, many, 1024, &sc.env, &surf, d3f(sc.camera.position)), p, d3f(sc.camera.position));
             Color c = rtPixel(img[0], px, py);
             double got[3] = { c.r, c.g, c.b }, want[3] = { ref.r*255.0, ref.g*255.0, ref.b*255.0 };
             for (int ch = 0; ch < 3; ch++) { double q = fabs(got[ch] - floor(want[ch] + 0.5)); if (q > e.max) e.max = q; sum += q; }
@@ -348,7 +401,7 @@ static void test_deferred_1024_lights_match_the_double_reference(void)
     UnloadImage(img[0]); UnloadImage(img[1]);
     MemFree(m.maps);
     UnloadTexture(albedo);
-    RblUnloadLitShader(geo);
+    RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
 }
 
@@ -399,21 +452,22 @@ static void test_deferred_normal_encoding_error_table_against_published_figures(
     RT_CHECK(mean[1] < 0.03 && worst[1] < 0.07, "12-bit: mean %.4f max %.4f", mean[1], worst[1]);
 
     // The shader packs exactly these codes: render known normals (via a normal map) and read the G-buffer bytes
-    RblLitShaderDesc shading;
+    RblGBufferDesc shading;
     memset(&shading, 0, sizeof(shading));
-    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, shading);
+    shading.width = LIT_TARGET; shading.height = LIT_TARGET;
+    RblGBuffer g = RblLoadGBuffer(shading);
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.deferred = true;
     d.material.normalEncoding = RBL_NORMAL_RGB;
-    RblLitShader geo = RblLoadLitShader(d);
+    Shader geo = RblLoadLitShader(d);
     int mismatched = 0, checked = 0;
     for (int t = 0; t < 6; t++)
     {
         Color texel = normalTexel(0.7f*cosf(t*1.1f), 0.7f*sinf(t*1.1f), 0.714f);
         Texture2D albedo = solidTexture(WHITE), nmap = solidTexture(texel);
         Material m = LoadMaterialDefault();
-        m.shader = geo.shader;
+        m.shader = geo;
         m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
         m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
         RblBeginGBuffer(&g, headOnCamera());
@@ -433,24 +487,28 @@ static void test_deferred_normal_encoding_error_table_against_published_figures(
         UnloadTexture(albedo); UnloadTexture(nmap);
     }
     RT_CHECK(mismatched == 0, "%d of %d G-buffer normals differ from the CPU octahedral code by more than 1", mismatched, checked);
-    RblUnloadLitShader(geo);
+    RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
 }
 
 // Position rebuilt from the 24-bit depth texture vs the true point and vs a double reconstruction
 static void test_deferred_position_from_depth_error_at_near_middle_far(void)
 {
-    RblLitShaderDesc shading;
+    RblGBufferDesc shading;
     memset(&shading, 0, sizeof(shading));
+    shading.width = LIT_TARGET; shading.height = LIT_TARGET;
     shading.linearOutput = true;
-    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, shading);
+    RblGBuffer g = RblLoadGBuffer(shading);
+    RblFog noFog;
+    memset(&noFog, 0, sizeof(noFog));
+    RT_CHECK(defSetLights(NULL, 0, BLACK, noFog), "empty scene rejected");   // no exposure or fog left by earlier tests
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.deferred = true;
-    RblLitShader geo = RblLoadLitShader(d);
+    Shader geo = RblLoadLitShader(d);
     Texture2D albedo = solidTexture(WHITE);
     Material m = LoadMaterialDefault();
-    m.shader = geo.shader;
+    m.shader = geo;
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
     const float distances[3] = { 0.5f, 20.0f, 400.0f };
     const char *names[3] = { "near", "middle", "far" };
@@ -497,7 +555,7 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
                 double tx = xv - V.m12, ty = yv - V.m13, tz = zv - V.m14;
                 D3 world = d3(V.m0*tx + V.m1*ty + V.m2*tz, V.m4*tx + V.m5*ty + V.m6*tz, V.m8*tx + V.m9*ty + V.m10*tz);
                 double shaderDistance = pos[i*4]*1e4;       // rlReadTexturePixels: GL rows too
-                D3 truth;
+                D3 truth = d3(0, 0, 0);          // refPixelOnPlane writes it (these pixels see the plane)
                 refPixelOnPlane(cam, LIT_TARGET, LIT_TARGET, x, LIT_TARGET - 1 - y, d3(0, 0, 0), d3(0, 0, 1), &truth);
                 double shaderError = fabs(shaderDistance - dLen(dSub(world, d3f(cam.position))));
                 worstTrue = fmax(worstTrue, dLen(dSub(world, truth)));
@@ -518,7 +576,7 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
     }
     MemFree(m.maps);
     UnloadTexture(albedo);
-    RblUnloadLitShader(geo);
+    RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
 }
 
@@ -526,11 +584,11 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
 static void test_deferred_forced_failure_logs_and_the_forward_fallback_renders(void)
 {
     DefScene s = defSceneLoad(RBL_BRDF_GGX);
-    rbl__gbufferForceFailure = true;
+    rbl__state.gbufferForceFailure = true;
     warnings = 0;
-    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
-    rbl__gbufferForceFailure = false;
-    RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "forced failure: valid=%d warnings=%d", RblIsGBufferValid(g), warnings);
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
+    rbl__state.gbufferForceFailure = false;
+    RT_CHECK(!RblIsGBufferValid(&g) && warnings == 1, "forced failure: valid=%d warnings=%d", RblIsGBufferValid(&g), warnings);
     RT_CHECK(strstr(lastWarning, "forward") != NULL, "the log line should say to render forward: %s", lastWarning);
     // What a program does: the G-buffer refuses the frame, the forward path draws it
     Image fwd = defRenderForward(&s);
@@ -546,23 +604,190 @@ static void test_deferred_forced_failure_logs_and_the_forward_fallback_renders(v
     defSceneUnload(&s);
 }
 
+// ---- a geometry variant of another BRDF -----------------------------------------------------------
+// Every byte a geometry pass can write: the colour targets (albedo, normal, params, accumulation) and the depth
+typedef struct DefGBufferBytes { unsigned char *target[4]; int size[4]; float *depth; } DefGBufferBytes;
+
+static DefGBufferBytes defReadGBuffer(const RblGBuffer *g)
+{
+    DefGBufferBytes b;
+    memset(&b, 0, sizeof(b));
+    const Texture2D t[4] = { g->albedo, g->normal, g->params, g->accum };
+    for (int i = 0; i < 4; i++)
+    {
+        b.size[i] = GetPixelDataSize(g->width, g->height, t[i].format);
+        b.target[i] = (unsigned char *)rlReadTexturePixels(t[i].id, g->width, g->height, t[i].format);
+    }
+    void (*readPixels)(int, int, int, int, unsigned int, unsigned int, void *) = NULL;
+    void *proc = rtGlProc("glReadPixels");
+    memcpy(&readPixels, &proc, sizeof(proc));
+    b.depth = (float *)malloc(sizeof(float)*g->width*g->height);
+    rlEnableFramebuffer(g->id);
+    readPixels(0, 0, g->width, g->height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, b.depth);
+    rlDisableFramebuffer();
+    return b;
+}
+
+static void defFreeGBufferBytes(DefGBufferBytes *b)
+{
+    for (int i = 0; i < 4; i++) RL_FREE(b->target[i]);
+    free(b->depth);
+    memset(b, 0, sizeof(*b));
+}
+
+// Pixels where any target or the depth differs from the reference read-back
+static int defGBufferChanged(const DefGBufferBytes *ref, const DefGBufferBytes *now, int pixels)
+{
+    int changed = 0;
+    for (int p = 0; p < pixels; p++)
+    {
+        bool differs = (ref->depth[p] != now->depth[p]);
+        for (int i = 0; (i < 4) && !differs; i++)
+        {
+            int bpp = ref->size[i]/pixels;
+            if ((ref->target[i] == NULL) || (now->target[i] == NULL)) { differs = true; break; }
+            differs = (memcmp(ref->target[i] + p*bpp, now->target[i] + p*bpp, (size_t)bpp) != 0);
+        }
+        changed += differs;
+    }
+    return changed;
+}
+
+// A G-buffer lit by one BRDF packs its params (shininess or metalness) and normal.a (specular or
+// roughness) for that BRDF alone: a geometry variant of another BRDF would write bytes the lighting
+// passes misread. Every draw path refuses it inside the geometry pass with one log line and writes no
+// pixel of any target or the depth; the G-buffer's own variant then draws as usual.
+static void test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_and_writes_nothing(void)
+{
+    RblGBufferDesc gd;
+    memset(&gd, 0, sizeof(gd));
+    gd.width = LIT_TARGET; gd.height = LIT_TARGET;
+    gd.brdf = RBL_BRDF_GGX;
+    RblGBuffer g = RblLoadGBuffer(gd);
+    RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed to load");
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.deferred = true;
+    d.brdf = RBL_BRDF_GGX;
+    Shader right = RblLoadLitShader(d);
+    d.brdf = RBL_BRDF_LAMBERT;
+    Shader wrong = RblLoadLitShader(d);
+    d.brdf = RBL_BRDF_BLINN_PHONG;
+    Shader wrongToo = RblLoadLitShader(d);
+    d.instanced = true;
+    Shader wrongInstanced = RblLoadLitShader(d);
+    RT_CHECK(RblIsLitShaderValid(right) && RblIsLitShaderValid(wrong) && RblIsLitShaderValid(wrongToo) && RblIsLitShaderValid(wrongInstanced),
+             "geometry variants failed to load");
+    if (!RblIsGBufferValid(&g) || !RblIsLitShaderValid(right) || !RblIsLitShaderValid(wrong) || !RblIsLitShaderValid(wrongToo) || !RblIsLitShaderValid(wrongInstanced))
+    {
+        RblUnloadLitShader(&right); RblUnloadLitShader(&wrong); RblUnloadLitShader(&wrongToo); RblUnloadLitShader(&wrongInstanced);
+        RblUnloadGBuffer(&g);
+        return;
+    }
+    Camera3D cam = headOnCamera();
+    Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
+    Material m = LoadMaterialDefault();
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    rtSetMaterialValues(&m, (RtMaterialValues){ .roughness = 0.4f, .metalness = 0.5f, .emissiveColor = { 40, 30, 20, 255 } });
+    Model cube = LoadModelFromMesh(GenMeshCube(1.5f, 1.5f, 1.5f));
+    RblBatch batch = RblLoadBatch(4);
+    RblInstanceBuffer instances = RblLoadInstanceBuffer(4);
+    RblInstance inst[2];
+    memset(inst, 0, sizeof(inst));
+    inst[0].position = (Vector3){ -0.5f, 0.0f, 0.5f }; inst[1].position = (Vector3){ 0.5f, 0.0f, 0.5f };
+    inst[0].size = inst[1].size = (Vector2){ 1.0f, 1.0f };
+    inst[0].origin = inst[1].origin = (Vector2){ 0.5f, 0.5f };
+    RblInstancedDesc idesc;
+    memset(&idesc, 0, sizeof(idesc));
+    // What an empty geometry pass leaves (cleared targets, far depth)
+    RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass refused");
+    RblEndGBuffer(&g);
+    DefGBufferBytes empty = defReadGBuffer(&g);
+    const int pixels = g.width*g.height;
+    const char *names[6] = { "RblDrawBillboard (Lambert variant)", "RblDrawBillboard (Blinn-Phong variant)", "batch (RblBatchAdd + RblEndBatch)",
+                             "RblDrawModel", "RblDrawMesh", "RblDrawInstanced" };
+    for (int path = 0; path < 6; path++)
+    {
+        RT_CHECK(RblBeginGBuffer(&g, cam), "%s: geometry pass refused", names[path]);
+        Material w = m;
+        w.shader = (path == 1)? wrongToo : ((path == 5)? wrongInstanced : wrong);
+        warnings = 0;
+        switch (path)
+        {
+            case 0: case 1: RblDrawBillboard(cam, w, litPlane()); break;
+            case 2:
+            {
+                RblBeginBatch(&batch, cam);
+                RblBillboard a = litPlane(), b = litPlane();
+                a.size = b.size = (Vector2){ 1.0f, 1.0f }; a.origin = b.origin = (Vector2){ 0.5f, 0.5f };
+                a.position = (Vector3){ -0.6f, 0.0f, 0.2f }; b.position = (Vector3){ 0.6f, 0.0f, 0.2f };
+                RblBatchAdd(&batch, w, &a);
+                RblBatchAdd(&batch, w, &b);
+                RblEndBatch(&batch);
+            } break;
+            case 3:
+            {
+                Material keep = cube.materials[0];
+                cube.materials[0] = w;
+                RblDrawModel(cube, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+                cube.materials[0] = keep;
+            } break;
+            case 4: RblDrawMesh(cube.meshes[0], w, MatrixIdentity()); break;
+            default: RblDrawInstanced(&instances, cam, w, idesc, inst, 2); break;
+        }
+        int logged = warnings;
+        RblEndGBuffer(&g);
+        DefGBufferBytes now = defReadGBuffer(&g);
+        int changed = defGBufferChanged(&empty, &now, pixels);
+        printf("    %-40s refused with %d log line(s), %d pixels written%s%s\n", names[path], logged, changed, (logged > 0)? ": " : "", (logged > 0)? lastWarning : "");
+        RT_CHECK(logged == 1, "%s: a geometry variant of another BRDF gave %d log lines (want exactly 1)", names[path], logged);
+        RT_CHECK(changed == 0, "%s: the refused draw wrote %d of %d G-buffer pixels", names[path], changed, pixels);
+        defFreeGBufferBytes(&now);
+    }
+    // The G-buffer's own BRDF draws (the read-back sees writes), with no log line, after the refusals
+    RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass refused");
+    Material r = m;
+    r.shader = right;
+    warnings = 0;
+    RblDrawBillboard(cam, r, litPlane());
+    int logged = warnings;
+    RblEndGBuffer(&g);
+    DefGBufferBytes drawn = defReadGBuffer(&g);
+    int changed = defGBufferChanged(&empty, &drawn, pixels);
+    RT_CHECK(logged == 0, "the G-buffer's own variant logged %d lines: %s", logged, lastWarning);
+    RT_CHECK(changed == pixels, "the G-buffer's own variant wrote %d of %d pixels", changed, pixels);
+    defFreeGBufferBytes(&drawn);
+    defFreeGBufferBytes(&empty);
+    UnloadModel(cube);
+    RblUnloadBatch(&batch);
+    RblUnloadInstanceBuffer(&instances);
+    MemFree(m.maps);
+    UnloadTexture(albedo);
+    RblUnloadLitShader(&right); RblUnloadLitShader(&wrong); RblUnloadLitShader(&wrongToo); RblUnloadLitShader(&wrongInstanced);
+    RblUnloadGBuffer(&g);
+}
+
 static void test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth(void)
 {
     DefScene s = defSceneLoad(RBL_BRDF_LAMBERT);
     s.desc.material.normalEncoding = RBL_NORMAL_NONE;
-    s.desc.fog.mode = RBL_FOG_NONE;
-    RblGBuffer g = RblLoadGBuffer(DEF_W, DEF_H, s.desc);
+    s.fog.mode = RBL_FOG_NONE;
+    s.desc.fog = RBL_FOG_NONE;
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
     RblLitShaderDesc d = s.desc;
     d.deferred = true;
-    RblLitShader geo = RblLoadLitShader(d);
+    Shader geo = RblLoadLitShader(d);
     d.deferred = false;
-    d.alphaCutoff = -1.0f;                   // blended, never discarded
-    RblLitShader glass = RblLoadLitShader(d);
-    RblSetLights(&glass, s.lights, s.count, s.ambient);
+    Shader glass = RblLoadLitShader(d);
+    RT_CHECK(defSetScene(&s), "scene rejected");    // the forward pane and the deferred lights alike
     Texture2D white = solidTexture(WHITE), red = solidTexture((Color){ 255, 0, 0, 128 });
     Material wall = LoadMaterialDefault(), pane = LoadMaterialDefault();
-    wall.shader = geo.shader; wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    pane.shader = glass.shader; pane.maps[MATERIAL_MAP_ALBEDO].texture = red;
+    wall.shader = geo; wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    rtSetMaterialValues(&wall, s.values);
+    pane.shader = glass; pane.maps[MATERIAL_MAP_ALBEDO].texture = red;
+    RtMaterialValues paneValues = s.values;
+    paneValues.alphaCutoff = -1.0f;          // blended, never discarded
+    rtSetMaterialValues(&pane, paneValues);
     Camera3D cam = headOnCamera();
     // Deferred: an opaque square at z = 0.5 covering the left half of the view
     RblBillboard square = litPlane();
@@ -570,7 +795,7 @@ static void test_deferred_transparent_billboards_drawn_forward_sort_against_defe
     RblBeginGBuffer(&g, cam);
     RblDrawBillboard(cam, wall, square);
     RblEndGBuffer(&g);
-    RblDrawDeferredLights(&g, s.lights, s.count, s.ambient);
+    RblDrawDeferredLights(&g);
     Image img[2];
     for (int withPane = 0; withPane < 2; withPane++)
     {
@@ -596,7 +821,7 @@ static void test_deferred_transparent_billboards_drawn_forward_sort_against_defe
     UnloadImage(img[0]); UnloadImage(img[1]);
     MemFree(wall.maps); MemFree(pane.maps);
     UnloadTexture(white); UnloadTexture(red);
-    RblUnloadLitShader(geo); RblUnloadLitShader(glass);
+    RblUnloadLitShader(&geo); RblUnloadLitShader(&glass);
     RblUnloadGBuffer(&g);
     defSceneUnload(&s);
 }
@@ -604,22 +829,24 @@ static void test_deferred_transparent_billboards_drawn_forward_sort_against_defe
 static void test_deferred_debug_views_show_what_they_name(void)
 {
     LitScene sc = litScene(RBL_BRDF_GGX);
-    sc.desc.roughness = 0.6f;
+    sc.values.roughness = 0.6f;
     sc.normalMap = true;
     sc.normal = normalTexel(0.6f, 0.0f, 0.8f);
     sc.camera = headOnCamera();
     RblLight three[3] = { litPoint((Vector3){ -0.3f, 0.0f, 0.2f }, 1.0f, 1.0f), litPoint((Vector3){ 0.3f, 0.0f, 0.2f }, 1.0f, 1.0f),
                           litPoint((Vector3){ 0.0f, 0.2f, 0.2f }, 1.0f, 1.0f) };
-    RblGBuffer g = RblLoadGBuffer(LIT_TARGET, LIT_TARGET, sc.desc);
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&sc.desc, LIT_TARGET, LIT_TARGET));
     RblLitShaderDesc d = sc.desc;
     d.deferred = true;
     d.material.normalEncoding = RBL_NORMAL_RGB;
-    RblLitShader geo = RblLoadLitShader(d);
+    Shader geo = RblLoadLitShader(d);
     Texture2D albedo = solidTexture(sc.albedo), nmap = solidTexture(sc.normal);
     Material m = LoadMaterialDefault();
-    m.shader = geo.shader;
+    m.shader = geo;
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
     m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
+    rtSetMaterialValues(&m, sc.values);
+    RT_CHECK(defSetLights(three, 3, sc.env.ambient, sc.fog), "scene rejected");
     Color got[RBL_GBUFFER_VIEW_COUNT];
     for (int v = 0; v < RBL_GBUFFER_VIEW_COUNT; v++)
     {
@@ -627,7 +854,7 @@ static void test_deferred_debug_views_show_what_they_name(void)
         RblBeginGBuffer(&g, sc.camera);
         RblDrawBillboard(sc.camera, m, litPlane());
         RblEndGBuffer(&g);
-        RblDrawDeferredLights(&g, three, 3, sc.env.ambient);
+        RblDrawDeferredLights(&g);
         RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
         BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
         Image img = rtReadTarget(rt);
@@ -649,6 +876,6 @@ static void test_deferred_debug_views_show_what_they_name(void)
            got[1].r, got[1].g, got[1].b, got[2].r, got[2].g, got[2].b, got[3].r, got[4].r, got[5].r, got[6].r, got[6].g, got[6].b, heat.r, heat.g, heat.b);
     MemFree(m.maps);
     UnloadTexture(albedo); UnloadTexture(nmap);
-    RblUnloadLitShader(geo);
+    RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
 }

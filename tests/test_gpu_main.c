@@ -14,6 +14,7 @@
 
 #include "reference.h"
 #include "test_render.c"
+#include "test_api.c"
 #include "test_instanced.c"
 #include "test_material_render.c"
 #include "test_lighting.c"
@@ -23,6 +24,7 @@
 int main(int argc, char **argv)
 {
     static const RtTest tests[] = {
+        RBL_API_TESTS,
         RT_TEST(test_shaders_every_lit_variant_compiles_and_links),
         RT_TEST(test_shaders_compile_failure_is_reported_not_replaced_by_the_default),
         RT_TEST(test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u),
@@ -66,6 +68,7 @@ int main(int argc, char **argv)
         RT_TEST(test_deferred_forced_failure_logs_and_the_forward_fallback_renders),
         RT_TEST(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth),
         RT_TEST(test_deferred_debug_views_show_what_they_name),
+        RT_TEST(test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_and_writes_nothing),
         RT_TEST(test_shadows_opaque_card_darkens_its_analytic_footprint_within_a_texel),
         RT_TEST(test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_every_path),
         RT_TEST(test_shadows_raylib_model_casts_its_footprint),

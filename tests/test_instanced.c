@@ -130,19 +130,23 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
     // View-dependent shading (GGX highlight, fog by eye distance): the instanced stage must hand the
     // fragment stage the same eye as matView gives the batched one
     desc.brdf = RBL_BRDF_GGX;
-    desc.roughness = 0.3f;
-    desc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 30, 40, 60, 255 }, 0.0f, 0.0f, 0.08f };
-    RblLitShader plain = RblLoadLitShader(desc);
+    desc.fog = RBL_FOG_EXP;
+    Shader plain = RblLoadLitShader(desc);
     desc.instanced = true;
-    RblLitShader inst = RblLoadLitShader(desc);
+    Shader inst = RblLoadLitShader(desc);
     RT_CHECK(RblIsLitShaderValid(plain) && RblIsLitShaderValid(inst), "lit variants failed");
     Texture2D albedo = solidTexture((Color){ 220, 200, 160, 255 }), nmap = solidTexture(normalTexel(0.5f, 0.3f, 0.81f));
     Material m = LoadMaterialDefault();
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
     m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
+    rtSetMaterialValues(&m, (RtMaterialValues){ .roughness = 0.3f });
     RblLight l = pointLight((Vector3){ 1.5f, 1.0f, 2.0f }, 5.0f);
-    RblSetLights(&plain, &l, 1, (Color){ 25, 25, 25, 255 });
-    RblSetLights(&inst, &l, 1, (Color){ 25, 25, 25, 255 });
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &l; scene.lightCount = 1;
+    scene.ambient = (Color){ 25, 25, 25, 255 };
+    scene.fog = (RblFog){ RBL_FOG_EXP, (Color){ 30, 40, 60, 255 }, 0.0f, 0.0f, 0.08f };
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
 
     unsigned int seed = 31u;
     RblInstance in[12];
@@ -166,7 +170,7 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
     RblInstanceBuffer buf = RblLoadInstanceBuffer(4);     // grows to 16 with one info line
     warnings = 0;
     BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
-    m.shader = inst.shader;
+    m.shader = inst;
     int drawn = RblDrawInstanced(&buf, cam, m, d, in, 12);
     EndMode3D(); EndTextureMode();
     RT_CHECK(drawn == 10 && buf.skipped == 2, "drawn %d skipped %d", drawn, buf.skipped);
@@ -175,7 +179,7 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
 
     RblBatch batch = RblLoadBatch(16);
     BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
-    m.shader = plain.shader;
+    m.shader = plain;
     RblBeginBatch(&batch, cam);
     for (int i = 0; i < 12; i++) { RblBillboard b = billboardOf(&in[i], d); RblBatchAdd(&batch, m, &b); }
     RblEndBatch(&batch);
@@ -197,14 +201,14 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
     warnings = 0;
     RT_CHECK(RblDrawInstanced(&buf, cam, m, d, in, 2) == 0 && warnings == 1, "plain shader accepted for instancing");
     d.facing = 17;
-    m.shader = inst.shader;
+    m.shader = inst;
     RT_CHECK(RblDrawInstanced(&buf, cam, m, d, in, 2) == 0, "bad facing accepted");
 
     UnloadImage(a); UnloadImage(b);
     UnloadRenderTexture(rt);
     RblUnloadBatch(&batch);
     RblUnloadInstanceBuffer(&buf);
-    RblUnloadLitShader(plain); RblUnloadLitShader(inst);
+    RblUnloadLitShader(&plain); RblUnloadLitShader(&inst);
     UnloadTexture(albedo); UnloadTexture(nmap);
     MemFree(m.maps);
 }
@@ -238,8 +242,23 @@ static void test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float
     RT_CHECK(wrong == 0, "%d of 96 field/value probes classified wrongly", wrong);
 }
 
-// GL hands a deleted program's id to the next program: the location RblDrawInstanced keeps for a
-// program id must be looked up again once this header has loaded or unloaded a program
+// Live registry entries (the header's one program registry) holding program id; the last one's
+// rblInstancing location goes to *instancingLoc when given
+static int instancedRegistryEntries(unsigned int id, int *instancingLoc)
+{
+    int n = 0;
+    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    {
+        const rbl__Program *p = &rbl__state.programs[i];
+        if ((p->refs > 0) && (p->shader.id == id)) { n++; if (instancingLoc != NULL) *instancingLoc = p->loc[RBL__U_INSTANCING]; }
+    }
+    return n;
+}
+
+// GL hands a deleted program's id to the next program: the rblInstancing location RblDrawInstanced
+// uses lives in the header's program registry, whose entry goes with the program's last holder and is
+// looked up by id at each draw, so a variant given a reused id never draws with its predecessor's
+// location (the instance buffer keeps none)
 static void test_paths_instanced_location_cache_survives_program_id_reuse(void)
 {
     Camera3D cam = frontCamera();
@@ -247,42 +266,83 @@ static void test_paths_instanced_location_cache_survives_program_id_reuse(void)
     memset(&desc, 0, sizeof(desc));
     desc.instanced = true;
     desc.maxLights = 1;
-    RblLitShader a = RblLoadLitShader(desc);
+    Shader a = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(a), "instanced variant failed");
     Material m = LoadMaterialDefault();
     RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
     RblInstance in;
     memset(&in, 0, sizeof(in));
-    in.size = (Vector2){ 1.0f, 1.0f };
+    in.size = (Vector2){ 2.0f, 2.0f };
+    in.origin = (Vector2){ 1.0f, 1.0f };
     RblInstancedDesc d;
     memset(&d, 0, sizeof(d));
-    RenderTexture2D rt = LoadRenderTexture(8, 8);
-    BeginTextureMode(rt); BeginMode3D(cam);
-    m.shader = a.shader;
+    RblLight l = pointLight((Vector3){ 0.5f, 0.5f, 3.0f }, 6.0f);
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &l; scene.lightCount = 1;
+    scene.ambient = (Color){ 40, 40, 40, 255 };
+    scene.fog = (RblFog){ RBL_FOG_EXP, (Color){ 30, 40, 60, 255 }, 0.0f, 0.0f, 0.1f };
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+    m.shader = a;
     int drawnA = RblDrawInstanced(&buf, cam, m, d, &in, 1);
     EndMode3D(); EndTextureMode();
-    unsigned int idA = a.shader.id;
-    RblUnloadLitShader(a);
-    // A different variant (more uniforms ahead of rblInstancing), likely given idA again
+    unsigned int idA = a.id;
+    int locA = -2;
+    RT_CHECK(instancedRegistryEntries(idA, &locA) == 1, "program %u: %d registry entries, want 1", idA, instancedRegistryEntries(idA, NULL));
+    RT_CHECK((locA != -1) && (locA == rlGetLocationUniform(idA, "rblInstancing")), "registry location %d for A, the program's is %d", locA, rlGetLocationUniform(idA, "rblInstancing"));
+    RblUnloadLitShader(&a);
+    RT_CHECK(a.id == 0, "RblUnloadLitShader did not zero the holder");
+    // The last holder is gone: nothing in the registry may still answer for idA
+    RT_CHECK(instancedRegistryEntries(idA, NULL) == 0, "unloaded program %u still has %d registry entries", idA, instancedRegistryEntries(idA, NULL));
+    // A different variant (more uniforms ahead of rblInstancing), possibly given idA again by GL
     desc.maxLights = 8;
     desc.brdf = RBL_BRDF_GGX;
-    desc.fog.mode = RBL_FOG_EXP;
-    desc.fog.density = 0.1f;
-    RblLitShader b = RblLoadLitShader(desc);
-    // Mesa does not hand idA out again at once; make the buffer look as if it had: the entry cached
-    // for A (a stale location) now names B's id
-    if (b.shader.id != idA) { buf.shaderId = b.shader.id; buf.loc = -7; }
-    BeginTextureMode(rt); BeginMode3D(cam);
-    m.shader = b.shader;
+    desc.fog = RBL_FOG_EXP;
+    Shader b = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(b), "second instanced variant failed");
+    int fresh = rlGetLocationUniform(b.id, "rblInstancing");
+    int locB = -2;
+    RT_CHECK(instancedRegistryEntries(b.id, &locB) == 1, "program %u: %d registry entries, want 1", b.id, instancedRegistryEntries(b.id, NULL));
+    BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+    m.shader = b;
     int drawnB = RblDrawInstanced(&buf, cam, m, d, &in, 1);
     EndMode3D(); EndTextureMode();
-    int fresh = rlGetLocationUniform(b.shader.id, "rblInstancing");
-    printf("    program id %s reused by GL (%u -> %u); cached location %d, fresh lookup %d\n",
-           (b.shader.id == idA)? "was" : "was not (simulated)", idA, b.shader.id, buf.loc, fresh);
+    Image gotB = rtReadTarget(rt);
+    printf("    program id %s reused by GL (%u -> %u); registry location %d, fresh lookup %d (A's was %d)\n",
+           (b.id == idA)? "was" : "was not", idA, b.id, locB, fresh, locA);
     RT_CHECK((drawnA == 1) && (drawnB == 1), "drawn %d then %d", drawnA, drawnB);
-    RT_CHECK((fresh != -1) && (buf.loc == fresh), "cached rblInstancing location %d, the program's is %d", buf.loc, fresh);
+    RT_CHECK((fresh != -1) && (locB == fresh), "registry rblInstancing location %d, the program's is %d", locB, fresh);
+    // And the draw itself used B's location: it renders what B's batched twin renders
+    desc.instanced = false;
+    Shader plainB = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(plainB), "batched twin failed");
+    RblBatch batch = RblLoadBatch(1);
+    BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+    m.shader = plainB;
+    RblBeginBatch(&batch, cam);
+    RblBillboard bb = billboardOf(&in, d);
+    RblBatchAdd(&batch, m, &bb);
+    RblEndBatch(&batch);
+    EndMode3D(); EndTextureMode();
+    Image refB = rtReadTarget(rt);
+    int lit = 0, off = 0;
+    for (int y = 0; y < TARGET; y++)
+    for (int x = 0; x < TARGET; x++)
+    {
+        Color ca = rtPixel(gotB, x, y), cb = rtPixel(refB, x, y);
+        if (cb.r > 0) lit++;
+        if (abs(ca.r - cb.r) > 1 || abs(ca.g - cb.g) > 1 || abs(ca.b - cb.b) > 1) off++;
+    }
+    RT_CHECK(lit > 300, "batched reference nearly empty (%d)", lit);
+    RT_CHECK(off <= 4, "%d pixels differ by more than 1/255 between B instanced and batched", off);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(gotB, "instanced"); rtSaveImage(refB, "batched"); }
+    UnloadImage(gotB); UnloadImage(refB);
+    RblUnloadBatch(&batch);
     UnloadRenderTexture(rt);
     RblUnloadInstanceBuffer(&buf);
-    RblUnloadLitShader(b);
+    RblUnloadLitShader(&b); RblUnloadLitShader(&plainB);
     m.shader = (Shader){ 0 };
     MemFree(m.maps);
 }

@@ -1,8 +1,11 @@
 // Forward lighting specification (GPU, headless): every light type, both BRDFs and the optional
 // stages (fog, exposure, tonemap, gamma, hemispheric ambient, classic falloff, constant emission)
 // against the double-precision reference in lighting_reference.h, pixel by pixel; the hard cases
-// stay finite in float targets; variants compile once; a billboard and a raylib Mesh with the same
-// transform render the same pixels. Included by test_gpu_main.c (after test_render.c).
+// stay finite in float targets; variants compile once and materials that differ only in values share
+// one program; a billboard and a raylib Mesh with the same transform render the same pixels.
+// Programs hold compiled features only: per-material values travel with the Material drawn
+// (rtSetMaterialValues), lights, ambient, fog and exposure with the scene (RblSetScene).
+// Included by test_gpu_main.c (after test_render.c).
 
 #include "lighting_reference.h"
 
@@ -18,11 +21,26 @@ static bool glIsObject(const char *query, unsigned int id)
 }
 static bool glIsProgramFn(unsigned int id) { return glIsObject("glIsProgram", id); }
 
+// Whether a linked program kept a uniform (glGetUniformLocation: silent, unlike GetShaderLocation)
+static bool litHasUniform(Shader shader, const char *name)
+{
+    int (*get)(unsigned int, const char *) = NULL;
+    void *p = rtGlProc("glGetUniformLocation");
+    if (p == NULL) return false;
+    memcpy(&get, &p, sizeof(p));
+    return get(shader.id, name) != -1;
+}
+
 #define LIT_TARGET 96
 #define LIT_PLANE 40.0f         // plane z = 0 centred at the origin, facing +Z (fixed billboard)
 
 typedef struct LitScene {
-    RblLitShaderDesc desc;
+    RblLitShaderDesc desc;      // compiled features (litRender adds maxLights, lightFeatures, fog mode, normal encoding, linear output)
+    RtMaterialValues values;    // per-material values: the Material drawn with (rtSetMaterialValues)
+    RblFog fog;                 // scene fog (the program compiles its mode in)
+    float exposure;             // scene exposure (0 = 1)
+    bool hemisphere;            // scene ambient is hemispheric: env.ground and env.up go to the scene (else flat)
+    int maxLights;              // light slots compiled: 0 = count (at least 1), < 0 = the header's default (4)
     RblLight lights[RBL_MAX_LIGHTS];
     int count;
     RefEnvironment env;
@@ -91,6 +109,70 @@ static RblBillboard litPlane(void)
     b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
     return b;
 }
+// ---- program, scene and reference of a LitScene ---------------------------------------------
+// Light slots the scene's program compiles
+static int litSlots(const LitScene *sc)
+{
+    if (sc->maxLights < 0) return 4;                        // RblLitShaderDesc.maxLights 0: the header's default
+    if (sc->maxLights > 0) return sc->maxLights;
+    return (sc->count > 0)? sc->count : 1;
+}
+
+// Lights the program shades: the scene's first maxLights
+static int litShadedCount(const LitScene *sc) { return (sc->count < litSlots(sc))? sc->count : litSlots(sc); }
+
+// The program's desc: compiled features only
+static RblLitShaderDesc litProgramDesc(const LitScene *sc, int floatFormat)
+{
+    RblLitShaderDesc desc = sc->desc;
+    desc.maxLights = (sc->maxLights < 0)? 0 : litSlots(sc);
+    desc.lightFeatures = RblLightFeatures(sc->lights, sc->count);
+    desc.fog = sc->fog.mode;
+    if (sc->normalMap) desc.material.normalEncoding = RBL_NORMAL_RGB;
+    if (floatFormat != 0) desc.linearOutput = true;
+    return desc;
+}
+
+// The frame's scene: lights and flat ambient (0.3's RblSetLights), hemisphere (RblSetHemisphereAmbient,
+// sky = the ambient colour) only when the scene asks for it, fog and exposure
+static RblScene litSceneOf(const LitScene *sc)
+{
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = sc->lights;
+    scene.lightCount = sc->count;
+    scene.ambient = sc->env.ambient;
+    if (sc->hemisphere)
+    {
+        scene.ambientGround = sc->env.ground;
+        scene.ambientUp = (Vector3){ (float)sc->env.up.x, (float)sc->env.up.y, (float)sc->env.up.z };
+    }
+    scene.fog = sc->fog;
+    scene.exposure = sc->exposure;
+    return scene;
+}
+
+// What the double reference reads: the values 0.3's desc held, wherever 1.0 keeps them
+static RefParams litShading(const LitScene *sc)
+{
+    RefParams d;
+    memset(&d, 0, sizeof(d));
+    d.brdf = sc->desc.brdf;
+    d.specular = sc->values.specular;
+    d.shininess = sc->values.shininess;
+    d.specularColor = sc->values.specularColor;
+    d.roughness = sc->values.roughness;
+    d.metalness = sc->values.metalness;
+    d.emissiveColor = sc->values.emissiveColor;
+    d.emissiveIntensity = sc->values.emissiveIntensity;
+    d.hemisphereAmbient = sc->hemisphere;
+    d.fog = sc->fog;
+    d.tonemap = sc->desc.tonemap;
+    d.exposure = sc->exposure;
+    d.gamma = sc->desc.gamma;
+    d.linearOutput = false;
+    return d;
+}
 
 // ---- render targets -------------------------------------------------------------------------
 // Colour target of a raylib pixel format (RGBA8, RGBA16F, RGBA32F) with a depth renderbuffer
@@ -125,29 +207,29 @@ static float halfToFloat(unsigned short h)
 typedef struct LitRender {
     Image image;                // RGBA8 display output (top row first)
     float *linear;              // RGBA32F or RGBA16F output as floats (top row first), NULL unless asked
-    RblLitShader lit;
+    Shader lit;
     bool loaded;
 } LitRender;
 
-// Renders the scene's plane once into a target of the given format (0 = RGBA8 display image)
-static LitRender litRender(const LitScene *sc, int floatFormat)
+// Renders the scene's plane once into a target of the given format (0 = RGBA8 display image);
+// setScene false draws with the scene the programs already hold
+static LitRender litRenderWith(const LitScene *sc, int floatFormat, bool setScene)
 {
     LitRender out;
     memset(&out, 0, sizeof(out));
-    RblLitShaderDesc desc = sc->desc;
-    desc.maxLights = (sc->count > 0)? sc->count : 1;
-    desc.lightFeatures = RblLightFeatures(sc->lights, sc->count);
-    if (sc->normalMap) desc.material.normalEncoding = RBL_NORMAL_RGB;
-    if (floatFormat != 0) desc.linearOutput = true;
+    RblLitShaderDesc desc = litProgramDesc(sc, floatFormat);
     out.lit = RblLoadLitShader(desc);
     RT_CHECK(RblIsLitShaderValid(out.lit), "variant failed to load");
     if (!RblIsLitShaderValid(out.lit)) return out;
-    RT_CHECK(RblSetLights(&out.lit, sc->lights, sc->count, sc->env.ambient), "lights rejected");
-    if (desc.hemisphereAmbient)
-        RT_CHECK(RblSetHemisphereAmbient(&out.lit, sc->env.ambient, sc->env.ground, (Vector3){ (float)sc->env.up.x, (float)sc->env.up.y, (float)sc->env.up.z }), "hemisphere ambient rejected");
+    if (setScene)
+    {
+        RblScene scene = litSceneOf(sc);
+        RT_CHECK(RblSetScene(&scene), "scene rejected");
+    }
     Texture2D albedo = solidTexture(sc->albedo), normal = solidTexture(sc->normal);
     Material m = LoadMaterialDefault();
-    m.shader = out.lit.shader;
+    m.shader = out.lit;
+    rtSetMaterialValues(&m, sc->values);
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
     if (sc->normalMap) m.maps[MATERIAL_MAP_NORMAL].texture = normal;
     RenderTexture2D rt = (floatFormat != 0)? litTarget(floatFormat) : LoadRenderTexture(LIT_TARGET, LIT_TARGET);
@@ -178,12 +260,28 @@ static LitRender litRender(const LitScene *sc, int floatFormat)
     return out;
 }
 
+static LitRender litRender(const LitScene *sc, int floatFormat) { return litRenderWith(sc, floatFormat, true); }
+
 static void litRenderUnload(LitRender *r)
 {
     if (r->image.data != NULL) UnloadImage(r->image);
     free(r->linear);
-    RblUnloadLitShader(r->lit);
+    RblUnloadLitShader(&r->lit);
     memset(r, 0, sizeof(*r));
+}
+
+// Pixels (RGBA) where two display images differ
+static int litDifferingPixels(Image a, Image b)
+{
+    if ((a.data == NULL) || (b.data == NULL)) return LIT_TARGET*LIT_TARGET;
+    int n = 0;
+    for (int y = 0; y < LIT_TARGET; y++)
+        for (int x = 0; x < LIT_TARGET; x++)
+        {
+            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
+            n += (p.r != q.r) || (p.g != q.g) || (p.b != q.b) || (p.a != q.a);
+        }
+    return n;
 }
 
 // Surface the shader sees at world point p: the decoded map normal (as RblDecodeNormal), the albedo texel
@@ -206,14 +304,16 @@ static RefSurface litSurface(const LitScene *sc, D3 p)
 
 typedef struct LitError { double max, mean, maxRaw, refMin, refMax; int pixels; } LitError;
 
-// Display pixels against round(reference*255) over the interior of the plane (2% margin)
+// Display pixels against round(reference*255) over the interior of the plane (2% margin); the
+// reference shades the lights the program has slots for (the scene's first maxLights)
 static LitError litCompare(const LitScene *sc, Image img)
 {
     LitError e;
     memset(&e, 0, sizeof(e));
     e.refMin = 255.0;
     double sum = 0.0;
-    RblLitShaderDesc d = sc->desc;
+    RefParams d = litShading(sc);
+    int shaded = litShadedCount(sc);
     for (int py = 1; py < LIT_TARGET - 1; py++)
         for (int px = 1; px < LIT_TARGET - 1; px++)
         {
@@ -221,7 +321,7 @@ static LitError litCompare(const LitScene *sc, Image img)
             if (!refPixelOnPlane(sc->camera, LIT_TARGET, LIT_TARGET, px, py, d3(0, 0, 0), d3(0, 0, 1), &p)) continue;
             if ((fabs(p.x) > LIT_PLANE*0.49) || (fabs(p.y) > LIT_PLANE*0.49)) continue;
             RefSurface s = litSurface(sc, p);
-            RefRgb ref = refFinish(&d, refShade(&d, sc->lights, sc->count, &sc->env, &s, d3f(sc->camera.position)), p, d3f(sc->camera.position));
+            RefRgb ref = refFinish(&d, refShade(&d, sc->lights, shaded, &sc->env, &s, d3f(sc->camera.position)), p, d3f(sc->camera.position));
             Color c = rtPixel(img, px, py);
             const double got[3] = { c.r, c.g, c.b }, want[3] = { ref.r*255.0, ref.g*255.0, ref.b*255.0 };
             for (int ch = 0; ch < 3; ch++)
@@ -271,64 +371,82 @@ static void test_lighting_every_variant_in_the_matrix_compiles_links_and_compile
             d.maxLights = 1 + (features*brdf)%RBL_MAX_LIGHTS;
             d.lightFeatures = features;
             d.brdf = brdf;
-            d.fog.mode = (features + brdf)%4;
-            d.fog.start = 1.0f; d.fog.end = 30.0f; d.fog.density = 0.05f;
+            d.fog = (features + brdf)%4;
             d.tonemap = features%3;
-            d.hemisphereAmbient = (features & 1) != 0;
             d.instanced = (features & 2) != 0;
             d.material.normalEncoding = features%4;
             d.material.specular = (features%4 != RBL_NORMAL_RGB) && (brdf != RBL_BRDF_LAMBERT);
             d.material.occlusion = (features & 4) != 0;
             d.material.emissive = brdf;
-            d.emissiveColor = (features & 8)? (Color){ 10, 20, 30, 255 } : BLANK;
             d.gamma = (features == 5)? 2.2f : 0.0f;
-            RblLitShader a = RblLoadLitShader(d);
+            Shader a = RblLoadLitShader(d);
             RT_CHECK(RblIsLitShaderValid(a), "features %d brdf %d failed to compile", features, brdf);
-            RblLitShader b = RblLoadLitShader(d);
-            RT_CHECK(b.shader.id == a.shader.id, "identical desc compiled twice (%u, %u)", a.shader.id, b.shader.id);
+            Shader b = RblLoadLitShader(d);
+            RT_CHECK(b.id == a.id, "identical desc compiled twice (%u, %u)", a.id, b.id);
             // Only what is asked for is compiled: absent features leave no uniform behind
-            RT_CHECK((a.locLightSpot != -1) == ((features & RBL_LIGHTS_SPOT) != 0), "spot uniforms iff spot lights");
-            RT_CHECK((a.locLightAttenuation != -1) == ((features & RBL_LIGHTS_CLASSIC_FALLOFF) != 0), "attenuation iff classic falloff");
-            RT_CHECK((a.locFog != -1) == (d.fog.mode != RBL_FOG_NONE), "fog uniforms iff fog");
-            RT_CHECK((a.locAmbientGround != -1) == d.hemisphereAmbient, "ground colour iff hemispheric ambient");
-            RT_CHECK((a.locExposure != -1) == (d.tonemap != RBL_TONEMAP_NONE), "exposure iff tonemap (exposure 1)");
-            RblUnloadLitShader(b);
-            RT_CHECK(glIsProgramFn(a.shader.id), "unloading one holder freed the program another still uses");
-            RblUnloadLitShader(a);
+            RT_CHECK(litHasUniform(a, "rblLightSpot") == ((features & RBL_LIGHTS_SPOT) != 0), "spot uniforms iff spot lights");
+            RT_CHECK(litHasUniform(a, "rblLightAttenuation") == ((features & RBL_LIGHTS_CLASSIC_FALLOFF) != 0), "attenuation iff classic falloff");
+            RT_CHECK(litHasUniform(a, "rblFog") == (d.fog != RBL_FOG_NONE), "fog uniforms iff fog");
+            // Scene values reach every program: the hemisphere (the scene's ground colour) and the exposure
+            // are compiled into every variant
+            RT_CHECK(litHasUniform(a, "rblAmbientGround"), "ground colour in every variant (the scene picks flat or hemispheric ambient)");
+            RT_CHECK(litHasUniform(a, "rblExposure"), "exposure in every variant (the scene's exposure)");
+            unsigned int id = a.id;
+            RblUnloadLitShader(&b);
+            RT_CHECK(b.id == 0, "RblUnloadLitShader left the holder's id %u", b.id);
+            RT_CHECK(glIsProgramFn(id), "unloading one holder freed the program another still uses");
+            RblUnloadLitShader(&a);
             rlDisableShader();          // raylib's SetShaderValue leaves the program bound; a bound program outlives delete
-            RT_CHECK(!glIsProgramFn(a.shader.id), "program leaked after the last unload");
+            RT_CHECK(!glIsProgramFn(id), "program leaked after the last unload");
             compiled++;
         }
     printf("    %d variants compiled, linked, reused and released\n", compiled);
-    // A different uniform-only value is a different program: materials never share state by accident
-    RblLitShaderDesc d;
-    memset(&d, 0, sizeof(d));
-    d.brdf = RBL_BRDF_GGX; d.roughness = 0.3f;
-    RblLitShader a = RblLoadLitShader(d);
-    d.roughness = 0.7f;
-    RblLitShader b = RblLoadLitShader(d);
-    RT_CHECK(a.shader.id != b.shader.id, "roughness 0.3 and 0.7 returned the same program");
-    RblUnloadLitShader(a); RblUnloadLitShader(b);
+
+    // Materials that differ only in values (roughness 0.3 and 0.7) share one program, and each draw
+    // shows its own material's values: drawing one material never leaves state behind for the next
+    LitScene s03 = litScene(RBL_BRDF_GGX), s07 = litScene(RBL_BRDF_GGX);
+    s03.lights[0] = s07.lights[0] = litPoint((Vector3){ 0.5f, 0.4f, 1.0f }, 2.0f, 8.0f);
+    s03.count = s07.count = 1;
+    s03.values.roughness = 0.3f;
+    s07.values.roughness = 0.7f;
+    Shader a = RblLoadLitShader(litProgramDesc(&s03, 0));
+    Shader b = RblLoadLitShader(litProgramDesc(&s07, 0));
+    RT_CHECK(RblIsLitShaderValid(a) && (a.id == b.id), "roughness 0.3 and 0.7 returned different programs (%u, %u): values must not be compiled in", a.id, b.id);
+    LitRender r03 = litRender(&s03, 0), r07 = litRender(&s07, 0), again = litRender(&s03, 0);
+    RT_CHECK((r03.lit.id == a.id) && (r07.lit.id == a.id) && (again.lit.id == a.id), "material draws used programs %u, %u, %u (expected %u)", r03.lit.id, r07.lit.id, again.lit.id, a.id);
+    int differ = litDifferingPixels(r03.image, r07.image), leaked = litDifferingPixels(r03.image, again.image);
+    printf("    roughness 0.3 vs 0.7 through one program: %d pixels differ; 0.3 drawn again after 0.7: %d differ\n", differ, leaked);
+    RT_CHECK(differ > LIT_TARGET*LIT_TARGET/50, "roughness 0.3 and 0.7 rendered alike (%d pixels differ): the material's value did not reach the draw", differ);
+    RT_CHECK(leaked == 0, "the 0.3 material drawn after the 0.7 one differs in %d pixels (state leaked between materials)", leaked);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(r03.image, "r03"); rtSaveImage(r07.image, "r07"); rtSaveImage(again.image, "r03-again"); }
+    litRenderUnload(&r03); litRenderUnload(&r07); litRenderUnload(&again);
+    litCheckAgainstReference(&s03, "shared-r03", 2.0, 0.25);
+    litCheckAgainstReference(&s07, "shared-r07", 2.0, 0.25);
+    RblUnloadLitShader(&a); RblUnloadLitShader(&b);
 }
 
 static void test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line(void)
 {
-    RblLitShaderDesc bad[10];
+    // Descs: only compiled features are left in them, and each is still checked
+    RblLitShaderDesc bad[16];
     memset(bad, 0, sizeof(bad));
-    bad[0].brdf = 7; bad[1].roughness = 1.5f; bad[2].metalness = NAN; bad[3].fog.mode = RBL_FOG_LINEAR;  // end == start
-    bad[4].tonemap = -1; bad[5].exposure = -1.0f; bad[6].lightFeatures = 16; bad[7].shininess = INFINITY;
-    bad[8].fog.mode = RBL_FOG_EXP; bad[8].fog.density = -0.1f; bad[9].gamma = NAN;
-    for (int i = 0; i < 10; i++)
+    bad[0].brdf = 7; bad[1].maxLights = -1; bad[2].maxLights = RBL_MAX_LIGHTS + 1; bad[3].fog = RBL_FOG_EXP2 + 1;
+    bad[4].tonemap = -1; bad[5].fog = -1; bad[6].lightFeatures = 16; bad[7].tonemap = RBL_TONEMAP_ACES + 1;
+    bad[8].shadowMaps = RBL_MAX_SHADOWS + 1; bad[9].gamma = NAN; bad[10].shadowMaps = -1; bad[11].shadowFilter = RBL_SHADOW_MAX_FILTER + 1;
+    bad[12].gamma = -1.0f; bad[13].material.normalEncoding = RBL_NORMAL_RGB + 1; bad[14].material.emissive = RBL_EMISSIVE_RGB + 1;
+    bad[15].material.normalEncoding = RBL_NORMAL_RGB; bad[15].material.specular = true;
+    for (int i = 0; i < 16; i++)
     {
         warnings = 0;
-        RblLitShader s = RblLoadLitShader(bad[i]);
-        RT_CHECK(!RblIsLitShaderValid(s) && (warnings == 1), "bad desc %d: valid=%d warnings=%d", i, RblIsLitShaderValid(s), warnings);
+        Shader s = RblLoadLitShader(bad[i]);
+        RT_CHECK(!RblIsLitShaderValid(s) && (s.id == 0) && (warnings == 1), "bad desc %d: valid=%d id=%u warnings=%d", i, RblIsLitShaderValid(s), s.id, warnings);
     }
-    // A point-only variant refuses spot/directional/classic lights; bad parameters never reach the shader
+
+    // Lights and scene values: RblSetScene refuses them with one log line and keeps the previous scene
     LitScene sc = litScene(RBL_BRDF_LAMBERT);
     sc.lights[0] = litPoint((Vector3){ 0.5f, 0.5f, 1.0f }, 2.0f, 0.0f);
     sc.count = 1;
-    LitRender before = litRender(&sc, 0);
+    LitRender before = litRender(&sc, 0);           // point-only variant, scene set
     RblLight l[12];
     for (int i = 0; i < 12; i++) l[i] = sc.lights[0];
     l[0].type = RBL_LIGHT_SPOT; l[0].direction = (Vector3){ 0, 0, -1 };
@@ -336,36 +454,111 @@ static void test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line(void
     l[2].falloff = RBL_FALLOFF_CLASSIC;
     l[3].type = 9;
     l[4].intensity = NAN; l[5].intensity = -1.0f; l[6].range = -1.0f; l[7].position.z = INFINITY;
-    l[8].intensity = 3e38f; l[8].color = WHITE;           // colour x intensity stays finite: accepted below
+    l[8].intensity = 3e38f; l[8].color = WHITE;           // colour x intensity stays finite: not a bad light
     l[9].falloff = -1; l[10].direction.x = NAN; l[11].intensity = INFINITY;
-    for (int i = 0; i < 12; i++)
+    for (int i = 3; i < 12; i++)
     {
         if (i == 8) continue;
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = &l[i]; scene.lightCount = 1;
         warnings = 0;
-        RT_CHECK(!RblSetLights(&before.lit, &l[i], 1, BLACK) && (warnings == 1), "bad light %d accepted (warnings %d)", i, warnings);
+        RT_CHECK(!RblSetScene(&scene) && (warnings == 1), "bad light %d accepted (warnings %d)", i, warnings);
     }
-    // Directed lights need a direction and sane cones, in a variant compiled for them
+    // Directed lights need a direction and sane cones (checked as lights, whatever the programs compiled)
     RblLitShaderDesc all;
     memset(&all, 0, sizeof(all));
     all.lightFeatures = RBL_LIGHTS_POINT | RBL_LIGHTS_DIRECTIONAL | RBL_LIGHTS_SPOT | RBL_LIGHTS_CLASSIC_FALLOFF;
-    RblLitShader full = RblLoadLitShader(all);
+    Shader full = RblLoadLitShader(all);
+    RT_CHECK(RblIsLitShaderValid(full), "every-light-feature variant failed to load");
     RblLight s[6];
     for (int i = 0; i < 6; i++) s[i] = litSpot((Vector3){ 0, 0, 2 }, (Vector3){ 0, 0, -1 }, 10.0f, 20.0f, 1.0f);
     s[0].direction = (Vector3){ 0, 0, 0 }; s[1].innerAngle = 30.0f; s[2].outerAngle = 95.0f; s[3].innerAngle = -1.0f;
     s[4].falloff = RBL_FALLOFF_CLASSIC; s[4].linear = -0.5f; s[5].type = RBL_LIGHT_DIRECTIONAL; s[5].direction = (Vector3){ 0, 0, 0 };
     for (int i = 0; i < 6; i++)
     {
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = &s[i]; scene.lightCount = 1;
         warnings = 0;
-        RT_CHECK(!RblSetLights(&full, &s[i], 1, BLACK) && (warnings == 1), "bad directed light %d accepted (warnings %d)", i, warnings);
+        RT_CHECK(!RblSetScene(&scene) && (warnings == 1), "bad directed light %d accepted (warnings %d)", i, warnings);
     }
-    RblUnloadLitShader(full);
-    // Nothing changed: same pixels as before the rejected calls
-    RblLitShader keep = before.lit;
-    LitRender after = litRender(&sc, 0);
+    // A bad light among good ones rejects the whole scene
+    {
+        RblLight mixed[3] = { sc.lights[0], l[4], sc.lights[0] };
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = mixed; scene.lightCount = 3;
+        warnings = 0;
+        RT_CHECK(!RblSetScene(&scene) && (warnings == 1), "a NaN light between good ones accepted (warnings %d)", warnings);
+    }
+    RblUnloadLitShader(&full);
+    // Scene values that were desc values in 0.3: linear fog with end == start, negative fog density, negative exposure
+    RblScene badScene[3];
+    memset(badScene, 0, sizeof(badScene));
+    for (int i = 0; i < 3; i++) { badScene[i].lights = sc.lights; badScene[i].lightCount = 1; badScene[i].ambient = sc.env.ambient; }
+    badScene[0].fog.mode = RBL_FOG_LINEAR;                                      // end == start
+    badScene[1].fog.mode = RBL_FOG_EXP; badScene[1].fog.density = -0.1f;
+    badScene[2].exposure = -1.0f;
+    for (int i = 0; i < 3; i++)
+    {
+        warnings = 0;
+        RT_CHECK(!RblSetScene(&badScene[i]) && (warnings == 1), "bad scene %d accepted (warnings %d)", i, warnings);
+    }
+    // Nothing changed: the programs still hold the scene set before the rejected calls (same pixels)
+    LitRender after = litRenderWith(&sc, 0, false);
     Color a = rtPixel(before.image, LIT_TARGET/2, LIT_TARGET/2), b = rtPixel(after.image, LIT_TARGET/2, LIT_TARGET/2);
     RT_CHECK((a.r == b.r) && (a.g == b.g) && (a.b == b.b), "rejected lights changed the image");
-    (void)keep;
-    litRenderUnload(&before); litRenderUnload(&after);
+    int changed = litDifferingPixels(before.image, after.image);
+    RT_CHECK(changed == 0, "rejected scenes changed %d pixels", changed);
+    if (changed != 0) { rtSaveImage(before.image, "before"); rtSaveImage(after.image, "after"); }
+    litRenderUnload(&after);
+
+    // A light of a type or falloff the point-only program did not compile is not an error: the scene is
+    // accepted and that program ignores the light with a log line (LOG_INFO: nothing is wrong) (ambient
+    // black: the plane goes black)
+    for (int i = 0; i < 3; i++)
+    {
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = &l[i]; scene.lightCount = 1; scene.ambient = BLACK;
+        warnings = 0;
+        SetTraceLogLevel(LOG_INFO);
+        bool accepted = RblSetScene(&scene);
+        SetTraceLogLevel(LOG_WARNING);
+        RT_CHECK(accepted && (warnings == 1), "light %d of a type the variant lacks: accepted=%d warnings=%d (expected accepted, one log line)", i, accepted, warnings);
+        LitRender ignored = litRenderWith(&sc, 0, false);
+        Color c = rtPixel(ignored.image, LIT_TARGET/2, LIT_TARGET/2);
+        RT_CHECK((c.r == 0) && (c.g == 0) && (c.b == 0) && (c.a == 255), "light %d of a type the variant lacks lit the plane (%d,%d,%d,%d)", i, c.r, c.g, c.b, c.a);
+        litRenderUnload(&ignored);
+    }
+    litRenderUnload(&before);
+
+    // Bad values in a Material are not a load error any more: they are clamped or defaulted at draw
+    // (0.3 rejected roughness 1.5, metalness NaN and shininess Inf in the desc): the draw stays finite
+    // and renders as the clamped/default value does
+    struct { const char *name; int brdf; RtMaterialValues bad, same; } values[3] = {
+        { "roughness 1.5", RBL_BRDF_GGX, { .roughness = 1.5f }, { .roughness = 1.0f } },
+        { "metalness NaN", RBL_BRDF_GGX, { .roughness = 0.4f, .metalness = NAN }, { .roughness = 0.4f } },
+        { "shininess Inf", RBL_BRDF_BLINN_PHONG, { .shininess = INFINITY }, { .shininess = 0.0f } },
+    };
+    for (int i = 0; i < 3; i++)
+    {
+        LitScene v = litScene(values[i].brdf);
+        v.lights[0] = litPoint((Vector3){ 0.3f, 0.2f, 1.0f }, 2.0f, 8.0f);
+        v.count = 1;
+        v.values = values[i].bad;
+        LitRender got = litRender(&v, 0), linear = litRender(&v, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+        v.values = values[i].same;
+        LitRender want = litRender(&v, 0);
+        int nonFinite = 0;
+        for (int k = 0; (linear.linear != NULL) && (k < 4*LIT_TARGET*LIT_TARGET); k++) nonFinite += !rtFinite(linear.linear[k]) || (linear.linear[k] < 0.0f);
+        int differ = litDifferingPixels(got.image, want.image);
+        printf("    material %-14s: %d float values non-finite, %d pixels differ from the clamped/default value\n", values[i].name, nonFinite, differ);
+        RT_CHECK((linear.linear != NULL) && (nonFinite == 0), "material %s: %d float output values NaN/Inf/negative", values[i].name, nonFinite);
+        RT_CHECK(differ == 0, "material %s: %d pixels differ from the clamped/default value", values[i].name, differ);
+        litRenderUnload(&got); litRenderUnload(&linear); litRenderUnload(&want);
+    }
 }
 
 // ---- against the double reference -----------------------------------------------------------
@@ -392,9 +585,9 @@ static void test_lighting_matrix_matches_the_double_reference_within_2_of_255(vo
             for (int view = 0; view < 2; view++)
             {
                 LitScene sc = litScene(materials[mi].brdf);
-                sc.desc.shininess = materials[mi].shininess;
-                sc.desc.roughness = materials[mi].roughness;
-                sc.desc.metalness = materials[mi].metalness;
+                sc.values.shininess = materials[mi].shininess;
+                sc.values.roughness = materials[mi].roughness;
+                sc.values.metalness = materials[mi].metalness;
                 sc.lights[0] = lights[li];
                 sc.count = 1;
                 sc.camera = view? grazingCamera() : headOnCamera();
@@ -419,26 +612,26 @@ static void test_lighting_optional_stages_match_the_reference(void)
     for (int i = 0; i < (int)(sizeof(stages)/sizeof(stages[0])); i++)
     {
         LitScene sc = litScene(RBL_BRDF_GGX);
-        sc.desc.roughness = 0.4f;
+        sc.values.roughness = 0.4f;
         sc.lights[0] = litPoint((Vector3){ 0.4f, 0.3f, 1.0f }, 2.0f, 6.0f);
         sc.count = 1;
         sc.camera = grazingCamera();
         switch (stages[i].stage)
         {
-            case 0: sc.desc.fog = (RblFog){ RBL_FOG_LINEAR, (Color){ 120, 130, 150, 255 }, 2.0f, 14.0f, 0.0f }; break;
-            case 1: sc.desc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 120, 130, 150, 255 }, 0.0f, 0.0f, 0.15f }; break;
-            case 2: sc.desc.fog = (RblFog){ RBL_FOG_EXP2, (Color){ 120, 130, 150, 255 }, 0.0f, 0.0f, 0.12f }; break;
-            case 3: sc.desc.tonemap = RBL_TONEMAP_REINHARD; sc.desc.exposure = 2.0f; break;
+            case 0: sc.fog = (RblFog){ RBL_FOG_LINEAR, (Color){ 120, 130, 150, 255 }, 2.0f, 14.0f, 0.0f }; break;
+            case 1: sc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 120, 130, 150, 255 }, 0.0f, 0.0f, 0.15f }; break;
+            case 2: sc.fog = (RblFog){ RBL_FOG_EXP2, (Color){ 120, 130, 150, 255 }, 0.0f, 0.0f, 0.12f }; break;
+            case 3: sc.desc.tonemap = RBL_TONEMAP_REINHARD; sc.exposure = 2.0f; break;
             case 4: sc.desc.tonemap = RBL_TONEMAP_ACES; sc.lights[0].intensity = 20.0f; break;
             case 5: sc.desc.gamma = 2.2f; break;
-            case 6: sc.desc.hemisphereAmbient = true; sc.env.ambient = (Color){ 90, 120, 200, 255 }; sc.env.ground = (Color){ 80, 50, 20, 255 };
+            case 6: sc.hemisphere = true; sc.env.ambient = (Color){ 90, 120, 200, 255 }; sc.env.ground = (Color){ 80, 50, 20, 255 };
                     sc.env.up = d3(0.3, 0.2, 1.0); sc.normalMap = true; sc.normal = normalTexel(0.5f, 0.3f, 0.812f); break;
             case 7: sc.lights[0].falloff = RBL_FALLOFF_CLASSIC; sc.lights[0].constant = 1.0f; sc.lights[0].linear = 0.35f; sc.lights[0].quadratic = 0.44f;
                     sc.lights[0].range = 0.0f; sc.lights[0].intensity = 3.0f; break;
             case 8: sc.lights[0].falloff = RBL_FALLOFF_CLASSIC; sc.lights[0].quadratic = 1.0f; sc.lights[0].range = 3.0f; break;
-            case 9: sc.desc.emissiveColor = (Color){ 60, 20, 0, 255 }; sc.desc.emissiveIntensity = 1.5f; break;
+            case 9: sc.values.emissiveColor = (Color){ 60, 20, 0, 255 }; sc.values.emissiveIntensity = 1.5f; break;
             case 10: sc.lights[0] = litSpot((Vector3){ 0.0f, 0.0f, 3.0f }, (Vector3){ 0.1f, 0.3f, -1.0f }, 20.0f, 20.0f, 9.0f); break;
-            default: sc.desc.brdf = RBL_BRDF_BLINN_PHONG; sc.desc.specularColor = (Color){ 255, 200, 120, 255 }; sc.desc.specular = 0.8f; sc.desc.shininess = 40.0f;
+            default: sc.desc.brdf = RBL_BRDF_BLINN_PHONG; sc.values.specularColor = (Color){ 255, 200, 120, 255 }; sc.values.specular = 0.8f; sc.values.shininess = 40.0f;
                      sc.camera = headOnCamera(); break;
         }
         char name[64];
@@ -452,7 +645,7 @@ static void test_lighting_optional_stages_match_the_reference(void)
 static LitScene hardScene(int brdf)
 {
     LitScene sc = litScene(brdf);
-    sc.desc.roughness = 0.5f;
+    sc.values.roughness = 0.5f;
     sc.lights[0] = litPoint((Vector3){ 0.5f, 0.4f, 1.0f }, 2.0f, 8.0f);
     sc.count = 1;
     return sc;
@@ -473,15 +666,15 @@ static void hardCase(LitScene sc, const char *name)
 static void test_lighting_hard_roughness_zero(void)
 {
     LitScene sc = hardScene(RBL_BRDF_GGX);
-    sc.desc.roughness = 1e-9f;      // below the 0.045 clamp: roughness 0
-    sc.desc.shininess = 1e6f;       // Blinn-Phong's mirror
+    sc.values.roughness = 1e-9f;    // below the 0.045 clamp: roughness 0
+    sc.values.shininess = 1e6f;     // Blinn-Phong's mirror
     hardCase(sc, "roughness 0");
 }
 
 static void test_lighting_hard_metal_with_black_albedo(void)
 {
     LitScene sc = hardScene(RBL_BRDF_GGX);
-    sc.desc.metalness = 1.0f;
+    sc.values.metalness = 1.0f;
     sc.albedo = BLACK;
     hardCase(sc, "metal black albedo");
 }
@@ -535,6 +728,21 @@ static void test_lighting_hard_maximum_light_count(void)
     }
     sc.count = RBL_MAX_LIGHTS;
     hardCase(sc, "64 lights");
+    // A program lights the scene's first maxLights lights: more lights than slots is not an error (the
+    // scene is accepted, one LOG_INFO line), and the reference shades just those first lights
+    sc.maxLights = 17;
+    hardCase(sc, "64 lights 17 slots");
+    sc.maxLights = -1;                      // desc.maxLights 0: the default, 4 slots
+    hardCase(sc, "64 lights default slots");
+    Shader four = RblLoadLitShader(litProgramDesc(&sc, 0));
+    RT_CHECK(RblIsLitShaderValid(four), "default-slot variant failed to load");
+    RblScene scene = litSceneOf(&sc);
+    warnings = 0;
+    SetTraceLogLevel(LOG_INFO);
+    bool accepted = RblSetScene(&scene);
+    SetTraceLogLevel(LOG_WARNING);
+    RT_CHECK(accepted && (warnings == 1), "64 lights for a 4-slot program: accepted=%d, %d log lines (expected accepted, one line)", accepted, warnings);
+    RblUnloadLitShader(&four);
 }
 
 static void test_lighting_hard_half_float_overflow_before_tonemap(void)
@@ -567,7 +775,9 @@ static void test_lighting_hard_zero_length_map_normal_is_the_flat_normal(void)
 
 // ---- one shader for billboards and Models ---------------------------------------------------
 // A fixed billboard and a raylib Mesh quad (GenMeshTangents) with the same transform, material and
-// lights render the same pixels: the Model goes through DrawMesh with matModel/matNormal.
+// scene render the same pixels: the Model goes through RblDrawMesh (the material's values, then
+// raylib's DrawMesh with matModel/matNormal), and through plain DrawMesh, which reads the values the
+// program last received.
 static void test_lighting_billboard_and_model_quad_render_identical_pixels(void)
 {
     // Transform: rotate 35 degrees about (1, 1, 0), translate (0.3, -0.2, 0.5), scale 1.6 x 1.2
@@ -609,52 +819,65 @@ static void test_lighting_billboard_and_model_quad_render_identical_pixels(void)
         memset(&d, 0, sizeof(d));
         d.maxLights = 3;
         d.lightFeatures = RBL_LIGHTS_POINT | RBL_LIGHTS_SPOT | RBL_LIGHTS_DIRECTIONAL;
-        d.brdf = brdfs[k]; d.roughness = 0.35f; d.shininess = 48.0f;
+        d.brdf = brdfs[k];
         d.material.normalEncoding = RBL_NORMAL_RGB;
-        d.fog = (RblFog){ RBL_FOG_EXP, (Color){ 40, 40, 60, 255 }, 0, 0, 0.05f };
-        RblLitShader lit = RblLoadLitShader(d);
+        d.fog = RBL_FOG_EXP;
+        Shader lit = RblLoadLitShader(d);
         RblLight lights[3] = {
             litPoint((Vector3){ 1.0f, 0.8f, 2.0f }, 3.0f, 8.0f),
             litSpot((Vector3){ -1.0f, 0.5f, 2.5f }, (Vector3){ 0.4f, -0.2f, -1.0f }, 10.0f, 30.0f, 6.0f),
             litDirectional((Vector3){ 0.2f, -0.5f, -1.0f }, 0.4f),
         };
-        RT_CHECK(RblSetLights(&lit, lights, 3, (Color){ 30, 30, 35, 255 }), "lights rejected");
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = lights; scene.lightCount = 3; scene.ambient = (Color){ 30, 30, 35, 255 };
+        scene.fog = (RblFog){ RBL_FOG_EXP, (Color){ 40, 40, 60, 255 }, 0, 0, 0.05f };
+        RT_CHECK(RblSetScene(&scene), "scene rejected");
         Material m = LoadMaterialDefault();
-        m.shader = lit.shader;
+        m.shader = lit;
+        rtSetMaterialValues(&m, (RtMaterialValues){ .roughness = 0.35f, .shininess = 48.0f });
         m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
         m.maps[MATERIAL_MAP_NORMAL].texture = normalMap;
         Camera3D cam = litCamera((Vector3){ 0.6f, 0.5f, 3.0f }, (Vector3){ 0.2f, 0.0f, 0.0f });
-        Image img[2];
-        for (int path = 0; path < 2; path++)
+        // Paths: the billboard; the Mesh through RblDrawMesh (uploads the material's values, then raylib's
+        // DrawMesh); the Mesh through plain DrawMesh right after (reads the values last applied)
+        Image img[3];
+        for (int path = 0; path < 3; path++)
         {
             RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
             BeginTextureMode(rt);
             ClearBackground(BLANK);
             BeginMode3D(cam);
-            if (path == 0) RblDrawBillboard(cam, m, b); else DrawMesh(mesh, m, transform);
+            if (path == 0) RblDrawBillboard(cam, m, b);
+            else if (path == 1) RblDrawMesh(mesh, m, transform);
+            else DrawMesh(mesh, m, transform);
             EndMode3D();
             EndTextureMode();
             img[path] = rtReadTarget(rt);
             UnloadRenderTexture(rt);
         }
-        int covered = 0, worst = 0, differ = 0;
-        for (int y = 0; y < LIT_TARGET; y++)
-            for (int x = 0; x < LIT_TARGET; x++)
-            {
-                Color a = rtPixel(img[0], x, y), c = rtPixel(img[1], x, y);
-                if ((a.a == 0) || (c.a == 0)) { if (a.a != c.a) differ++; continue; }       // edges: coverage may differ by a pixel
-                covered++;
-                int e = abs(a.r - c.r); if (abs(a.g - c.g) > e) e = abs(a.g - c.g); if (abs(a.b - c.b) > e) e = abs(a.b - c.b);
-                if (e > worst) worst = e;
-            }
-        printf("    brdf %d: %d pixels covered by both, worst difference %d/255, %d edge pixels covered by one\n", brdfs[k], covered, worst, differ);
-        RT_CHECK(covered > 1500, "the quad covers only %d pixels", covered);
-        RT_CHECK(worst <= 1, "billboard vs Model differ by %d/255", worst);
-        RT_CHECK(differ <= 2*LIT_TARGET, "coverage differs in %d pixels", differ);
-        if (rtFailuresInCurrentTest() > 0) { rtSaveImage(img[0], "billboard"); rtSaveImage(img[1], "model"); }
-        UnloadImage(img[0]); UnloadImage(img[1]);
+        for (int path = 1; path < 3; path++)
+        {
+            int covered = 0, worst = 0, differ = 0;
+            for (int y = 0; y < LIT_TARGET; y++)
+                for (int x = 0; x < LIT_TARGET; x++)
+                {
+                    Color a = rtPixel(img[0], x, y), c = rtPixel(img[path], x, y);
+                    if ((a.a == 0) || (c.a == 0)) { if (a.a != c.a) differ++; continue; }       // edges: coverage may differ by a pixel
+                    covered++;
+                    int e = abs(a.r - c.r); if (abs(a.g - c.g) > e) e = abs(a.g - c.g); if (abs(a.b - c.b) > e) e = abs(a.b - c.b);
+                    if (e > worst) worst = e;
+                }
+            const char *how = (path == 1)? "RblDrawMesh" : "DrawMesh";
+            printf("    brdf %d, %s: %d pixels covered by both, worst difference %d/255, %d edge pixels covered by one\n", brdfs[k], how, covered, worst, differ);
+            RT_CHECK(covered > 1500, "%s: the quad covers only %d pixels", how, covered);
+            RT_CHECK(worst <= 1, "billboard vs Model (%s) differ by %d/255", how, worst);
+            RT_CHECK(differ <= 2*LIT_TARGET, "%s: coverage differs in %d pixels", how, differ);
+        }
+        if (rtFailuresInCurrentTest() > 0) { rtSaveImage(img[0], "billboard"); rtSaveImage(img[1], "model"); rtSaveImage(img[2], "model-drawmesh"); }
+        UnloadImage(img[0]); UnloadImage(img[1]); UnloadImage(img[2]);
         MemFree(m.maps);
-        RblUnloadLitShader(lit);
+        RblUnloadLitShader(&lit);
     }
     UnloadTexture(albedo); UnloadTexture(normalMap);
     UnloadMesh(mesh);

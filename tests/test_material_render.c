@@ -2,7 +2,7 @@
 // normal encoding exactly as RblDecodeNormal(); absent maps are not even declared; occlusion dims
 // ambient only; emission adds after lighting. Included by test_gpu_main.c.
 
-static RblLitShader litVariant(RblMaterialLayout layout, int lights, bool linearOutput, int debugView)
+static Shader litVariant(RblMaterialLayout layout, int lights, bool linearOutput, int debugView)
 {
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
@@ -33,9 +33,9 @@ static RblBillboard screenQuad(void)
     return b;
 }
 
-static Image renderWith(RblLitShader *lit, Material m, RblBillboard b)
+static Image renderWith(const Shader *lit, Material m, RblBillboard b)
 {
-    m.shader = lit->shader;
+    m.shader = *lit;
     RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
     BeginTextureMode(rt);
     ClearBackground(BLACK);
@@ -51,9 +51,9 @@ static Image renderWith(RblLitShader *lit, Material m, RblBillboard b)
 static void test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214(void)
 {
     Scene s = sceneLoad((Color){ 128, 128, 128, 255 }, normalTexel(0, 0, 1), false);
-    RblLitShader linear = litVariant(layoutOf(0, false, false, 0), 0, true, 0);
-    RblLitShader display = litVariant(layoutOf(0, false, false, 0), 0, false, 0);
-    RT_CHECK(RblSetLights(&linear, NULL, 0, WHITE) && RblSetLights(&display, NULL, 0, WHITE), "lights rejected");
+    Shader linear = litVariant(layoutOf(0, false, false, 0), 0, true, 0);
+    Shader display = litVariant(layoutOf(0, false, false, 0), 0, false, 0);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "lights rejected");
     Image a = renderWith(&linear, s.material, centredQuad());
     Image b = renderWith(&display, s.material, centredQuad());
     int lin = rtPixel(a, 32, 32).r, out = rtPixel(b, 32, 32).r;
@@ -62,7 +62,7 @@ static void test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214(void)
     // Encoded for display, unlit-by-ambient-1 reproduces the texel: the pipeline is neutral
     RT_CHECK(abs(out - 128) <= 1, "sRGB output of the same: %d, want 128", out);
     UnloadImage(a); UnloadImage(b);
-    RblUnloadLitShader(linear); RblUnloadLitShader(display);
+    RblUnloadLitShader(&linear); RblUnloadLitShader(&display);
     sceneUnload(s);
 }
 
@@ -85,9 +85,9 @@ static void test_materials_shader_decodes_every_encoding_like_the_cpu(void)
         SetTextureFilter(tex, TEXTURE_FILTER_POINT);
         Scene s = sceneLoad(WHITE, normalTexel(0, 0, 1), false);
         s.material.maps[MATERIAL_MAP_NORMAL].texture = tex;
-        RblLitShader dbg = litVariant(layoutOf(encodings[e], false, false, 0), 0, false, 1);
+        Shader dbg = litVariant(layoutOf(encodings[e], false, false, 0), 0, false, 1);
         RT_CHECK(RblIsLitShaderValid(dbg), "debug variant failed");
-        RblSetLights(&dbg, NULL, 0, WHITE);
+        RT_CHECK(renderSetLights(NULL, 0, WHITE), "lights rejected");
         Image img = renderWith(&dbg, s.material, screenQuad());
         // The quad maps texture rows top-down onto screen rows: pixel (x,y) shows texel (x,y)
         int worst = 0;
@@ -109,7 +109,7 @@ static void test_materials_shader_decodes_every_encoding_like_the_cpu(void)
         if (rtFailuresInCurrentTest() > 0) rtSaveImage(img, "decoded");
         UnloadImage(img); UnloadImage(codes);
         UnloadTexture(tex);
-        RblUnloadLitShader(dbg);
+        RblUnloadLitShader(&dbg);
         sceneUnload(s);
     }
 }
@@ -130,11 +130,11 @@ static void test_materials_absent_maps_are_not_declared_or_sampled(void)
     };
     for (int i = 0; i < 7; i++)
     {
-        RblLitShader s = litVariant(cases[i].l, 1, false, cases[i].debug);
+        Shader s = litVariant(cases[i].l, 1, false, cases[i].debug);
         RT_CHECK(RblIsLitShaderValid(s), "case %d failed to build", i);
-        RT_CHECK((rlGetLocationUniform(s.shader.id, "texture2") != -1) == cases[i].material, "case %d: material sampler presence wrong", i);
-        RT_CHECK((rlGetLocationUniform(s.shader.id, "texture5") != -1) == cases[i].emissive, "case %d: emissive sampler presence wrong", i);
-        RblUnloadLitShader(s);
+        RT_CHECK((rlGetLocationUniform(s.id, "texture2") != -1) == cases[i].material, "case %d: material sampler presence wrong", i);
+        RT_CHECK((rlGetLocationUniform(s.id, "texture5") != -1) == cases[i].emissive, "case %d: emissive sampler presence wrong", i);
+        RblUnloadLitShader(&s);
     }
     // Invalid layouts are refused with a warning
     warnings = 0;
@@ -150,15 +150,15 @@ static void test_materials_occlusion_dims_ambient_only(void)
     Scene s = sceneLoad(WHITE, normalTexel(0, 0, 1), false);
     Texture2D half = solidTexture((Color){ 128, 128, 128, 128 });       // A = occlusion 0.502
     Texture2D none = solidTexture((Color){ 128, 128, 128, 255 });       // A = occlusion 1
-    RblLitShader lit = litVariant(layoutOf(0, false, true, 0), 1, true, 0);
+    Shader lit = litVariant(layoutOf(0, false, true, 0), 1, true, 0);
     int px[2][2];
     for (int k = 0; k < 2; k++)
     {
         s.material.maps[MATERIAL_MAP_NORMAL].texture = k? half : none;
-        RblSetLights(&lit, NULL, 0, (Color){ 188, 188, 188, 255 });      // sRGB 188 = linear 0.5
+        RT_CHECK(renderSetLights(NULL, 0, (Color){ 188, 188, 188, 255 }), "lights rejected");      // sRGB 188 = linear 0.5
         Image a = renderWith(&lit, s.material, centredQuad());
         RblLight l = pointLight((Vector3){ 0, 0, 2 }, 2.0f);
-        RblSetLights(&lit, &l, 1, BLACK);
+        RT_CHECK(renderSetLights(&l, 1, BLACK), "lights rejected");
         Image d = renderWith(&lit, s.material, centredQuad());
         px[k][0] = rtPixel(a, 32, 32).r; px[k][1] = rtPixel(d, 32, 32).r;
         UnloadImage(a); UnloadImage(d);
@@ -167,7 +167,7 @@ static void test_materials_occlusion_dims_ambient_only(void)
     RT_CHECK(abs(px[1][0] - 64) <= 1, "ambient 0.5, occlusion 0.5: %d, want 64", px[1][0]);
     RT_CHECK(px[0][1] == px[1][1] && px[0][1] > 40, "direct light changed by occlusion: %d vs %d", px[0][1], px[1][1]);
     UnloadTexture(half); UnloadTexture(none);
-    RblUnloadLitShader(lit);
+    RblUnloadLitShader(&lit);
     sceneUnload(s);
 }
 
@@ -177,20 +177,20 @@ static void test_materials_emission_adds_after_lighting(void)
     Texture2D mask = solidTexture((Color){ 128, 128, 128, 255 });        // r = 0.502
     Texture2D glow = solidTexture((Color){ 0, 188, 0, 255 });            // sRGB 188 = linear 0.5
     s.material.maps[MATERIAL_MAP_EMISSION].texture = mask;
-    RblLitShader m = litVariant(layoutOf(0, false, false, RBL_EMISSIVE_MASK), 0, true, 0);
-    RblSetLights(&m, NULL, 0, BLACK);
+    Shader m = litVariant(layoutOf(0, false, false, RBL_EMISSIVE_MASK), 0, true, 0);
+    RT_CHECK(renderSetLights(NULL, 0, BLACK), "lights rejected");
     Image a = renderWith(&m, s.material, centredQuad());
     Color ca = rtPixel(a, 32, 32);
     RT_CHECK(abs(ca.r - 128) <= 1 && ca.g == 0, "mask x albedo: (%d,%d), want (128,0)", ca.r, ca.g);
     s.material.maps[MATERIAL_MAP_EMISSION].texture = glow;
-    RblLitShader c = litVariant(layoutOf(0, false, false, RBL_EMISSIVE_RGB), 0, true, 0);
-    RblSetLights(&c, NULL, 0, BLACK);
+    Shader c = litVariant(layoutOf(0, false, false, RBL_EMISSIVE_RGB), 0, true, 0);
+    RT_CHECK(renderSetLights(NULL, 0, BLACK), "lights rejected");
     Image b = renderWith(&c, s.material, centredQuad());
     Color cb = rtPixel(b, 32, 32);
     RT_CHECK(cb.r == 0 && abs(cb.g - 128) <= 1, "own colour: (%d,%d), want (0,128)", cb.r, cb.g);
     UnloadImage(a); UnloadImage(b);
     UnloadTexture(mask); UnloadTexture(glow);
-    RblUnloadLitShader(m); RblUnloadLitShader(c);
+    RblUnloadLitShader(&m); RblUnloadLitShader(&c);
     sceneUnload(s);
 }
 
@@ -207,17 +207,17 @@ static void test_materials_packed_atlas_renders_like_its_separate_maps(void)
     RT_CHECK(packed.layout.normalEncoding == RBL_NORMAL_HEMIOCT && packed.layout.occlusion && !packed.layout.specular, "layout");
     Material m = LoadMaterialDefault();
     RT_CHECK(RblLoadPackedTextures(&packed, &m), "upload failed");
-    RblLitShader lit = litVariant(packed.layout, 1, false, 0);
+    Shader lit = litVariant(packed.layout, 1, false, 0);
     RblLight l = pointLight((Vector3){ 2, 1, 2 }, 6.0f);
-    RblSetLights(&lit, &l, 1, (Color){ 60, 60, 60, 255 });
+    RT_CHECK(renderSetLights(&l, 1, (Color){ 60, 60, 60, 255 }), "lights rejected");
     Image img = renderWith(&lit, m, centredQuad());
 
     // The same inputs, unpacked: plain RGB normal map in the material slot, occlusion not stored
     Scene s = sceneLoad((Color){ 200, 180, 150, 255 }, normalTexel(0.5f, 0.3f, 0.812f), true);
-    RblLitShader plain = litVariant(layoutOf(RBL_NORMAL_RGB, false, false, 0), 1, false, 0);
+    Shader plain = litVariant(layoutOf(RBL_NORMAL_RGB, false, false, 0), 1, false, 0);
     // Occlusion 200/255 scales the linear ambient: sRGB 60 (linear 0.0452) x 0.784 = linear 0.0354,
-    // which is sRGB 53 (linear 0.0354): give the unpacked variant that ambient directly
-    RblSetLights(&plain, &l, 1, (Color){ 53, 53, 53, 255 });
+    // which is sRGB 53 (linear 0.0354): give the unpacked variant's frame that ambient directly
+    RT_CHECK(renderSetLights(&l, 1, (Color){ 53, 53, 53, 255 }), "lights rejected");
     Image ref = renderWith(&plain, s.material, centredQuad());
     int worst = 0;
     for (int y = 20; y < 44; y += 4)
@@ -231,7 +231,7 @@ static void test_materials_packed_atlas_renders_like_its_separate_maps(void)
     }
     RT_CHECK(worst <= 2, "packed atlas differs from its separate maps by %d/255", worst);
     UnloadImage(img); UnloadImage(ref);
-    RblUnloadLitShader(lit); RblUnloadLitShader(plain);
+    RblUnloadLitShader(&lit); RblUnloadLitShader(&plain);
     for (int i = MATERIAL_MAP_ALBEDO; i <= MATERIAL_MAP_EMISSION; i++) if (m.maps[i].texture.id != rlGetTextureIdDefault() && m.maps[i].texture.id != 0) UnloadTexture(m.maps[i].texture);
     MemFree(m.maps);
     RblUnloadPackedMaterial(&packed);

@@ -43,7 +43,7 @@ static Color normalTexel(float x, float y, float z)
     return c;
 }
 
-typedef struct { Material material; Texture2D albedo, normal; RblLitShader lit; } Scene;
+typedef struct { Material material; Texture2D albedo, normal; Shader lit; } Scene;
 
 static Scene sceneLoad(Color albedo, Color normal, bool normalMap)
 {
@@ -57,7 +57,7 @@ static Scene sceneLoad(Color albedo, Color normal, bool normalMap)
     s.albedo = solidTexture(albedo);
     s.normal = solidTexture(normal);
     s.material = LoadMaterialDefault();
-    s.material.shader = s.lit.shader;
+    s.material.shader = s.lit;
     s.material.maps[MATERIAL_MAP_ALBEDO].texture = s.albedo;
     if (normalMap) s.material.maps[MATERIAL_MAP_NORMAL].texture = s.normal;
     return s;
@@ -65,7 +65,7 @@ static Scene sceneLoad(Color albedo, Color normal, bool normalMap)
 
 static void sceneUnload(Scene s)
 {
-    RblUnloadLitShader(s.lit);
+    RblUnloadLitShader(&s.lit);
     UnloadTexture(s.albedo);
     UnloadTexture(s.normal);
     MemFree(s.material.maps);       // not UnloadMaterial: the shader and textures are unloaded above
@@ -105,6 +105,18 @@ static RblLight pointLight(Vector3 p, float intensity)
     return l;
 }
 
+// The frame's scene for every lit program: count lights and a flat ambient, everything else default
+// (no fog, exposure 1, no shadows). Returns RblSetScene's verdict.
+static bool renderSetLights(const RblLight *lights, int count, Color ambient)
+{
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights;
+    scene.lightCount = count;
+    scene.ambient = ambient;
+    return RblSetScene(&scene);
+}
+
 // ---- shaders ------------------------------------------------------------------------------------
 static void test_shaders_every_lit_variant_compiles_and_links(void)
 {
@@ -118,14 +130,18 @@ static void test_shaders_every_lit_variant_compiles_and_links(void)
         desc.maxLights = lights[li];
         desc.material.normalEncoding = nm? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
         desc.instanced = inst;
-        RblLitShader s = RblLoadLitShader(desc);
+        Shader s = RblLoadLitShader(desc);
         RT_CHECK(RblIsLitShaderValid(s), "variant lights=%d normalMap=%d instanced=%d failed", lights[li], nm, inst);
-        RT_CHECK(s.shader.id != rlGetShaderIdDefault(), "variant fell back to raylib's default shader");
-        RT_CHECK(s.locLightPosition != -1 && s.locAmbient != -1 && s.locAlphaCutoff != -1, "uniform locations missing");
+        RT_CHECK(s.id != 0 && s.locs != NULL, "variant lights=%d normalMap=%d instanced=%d came back empty", lights[li], nm, inst);
+        if (s.id == 0 || s.locs == NULL) continue;
+        RT_CHECK(s.id != rlGetShaderIdDefault(), "variant fell back to raylib's default shader");
+        RT_CHECK(rlGetLocationUniform(s.id, "rblLightPosition") != -1 && rlGetLocationUniform(s.id, "rblAmbient") != -1 &&
+                 rlGetLocationUniform(s.id, "rblAlphaCutoff") != -1, "uniform locations missing");
         // The tangent is only an active attribute where a normal map uses it; then at raylib's location 4
-        if (nm && !inst) RT_CHECK(s.shader.locs[SHADER_LOC_VERTEX_TANGENT] == 4, "vertexTangent not at raylib's location 4 (%d)", s.shader.locs[SHADER_LOC_VERTEX_TANGENT]);
-        RT_CHECK((s.shader.locs[SHADER_LOC_MAP_NORMAL] != -1) == (nm != 0), "normal map slot should exist only in the normal-map variant");
-        RblUnloadLitShader(s);
+        if (nm && !inst) RT_CHECK(s.locs[SHADER_LOC_VERTEX_TANGENT] == 4, "vertexTangent not at raylib's location 4 (%d)", s.locs[SHADER_LOC_VERTEX_TANGENT]);
+        RT_CHECK((s.locs[SHADER_LOC_MAP_NORMAL] != -1) == (nm != 0), "normal map slot should exist only in the normal-map variant");
+        RblUnloadLitShader(&s);
+        RT_CHECK(s.id == 0 && s.locs == NULL, "RblUnloadLitShader did not zero the holder");
     }
 }
 
@@ -134,7 +150,7 @@ static void test_shaders_compile_failure_is_reported_not_replaced_by_the_default
     warnings = 0;
     const char *const broken[] = { "void main() { this is not glsl; }\n", NULL };
     const char *const *const parts[2] = { broken, NULL };
-    Shader bad = rbl__loadShaderVariant(rbl__shader_lit_vs, parts, "");
+    Shader bad = rbl__loadShaderVariant(rbl__pass_lit_vs, parts, "");
     RT_CHECK(bad.id == 0, "a broken shader must come back invalid, not as raylib's default (id %u)", bad.id);
     RT_CHECK(warnings == 1, "one RBL warning expected, got %d", warnings);
     RblLitShaderDesc desc;
@@ -157,7 +173,7 @@ static void test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u
         for (int side = 0; side < 2; side++)
         {
             RblLight l = pointLight((Vector3){ side? -3.0f : 3.0f, 0.0f, 1.0f }, 6.0f);
-            RblSetLights(&s.lit, &l, 1, BLACK);
+            RT_CHECK(renderSetLights(&l, 1, BLACK), "scene rejected");
             Image img = renderOne(&s, cam, centredQuad());
             lum[side] = luminance(rtPixel(img, TARGET/2, TARGET/2));
             if (rtFailuresInCurrentTest() > 0) rtSaveImage(img, side? "minusU" : "plusU");
@@ -173,7 +189,7 @@ static void test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u
     for (int side = 0; side < 2; side++)
     {
         RblLight l = pointLight((Vector3){ 0.0f, side? -3.0f : 3.0f, 1.0f }, 6.0f);
-        RblSetLights(&s.lit, &l, 1, BLACK);
+        RT_CHECK(renderSetLights(&l, 1, BLACK), "scene rejected");
         Image img = renderOne(&s, cam, centredQuad());
         lum[side] = luminance(rtPixel(img, TARGET/2, TARGET/2));
         UnloadImage(img);
@@ -216,7 +232,7 @@ static void test_lit_flat_normal_map_matches_analytic_lambert_within_2_of_255(vo
         l.color = (Color){ 255, 220, 160, 255 };
         l.range = 6.0f;
         Color ambient = { 30, 30, 30, 255 };
-        RT_CHECK(RblSetLights(&s.lit, &l, 1, ambient), "lights rejected");
+        RT_CHECK(renderSetLights(&l, 1, ambient), "lights rejected");
         Image img = renderOne(&s, cam, centredQuad());
         double worst = 0.0;
         const int probes[5][2] = { { 32, 32 }, { 31, 31 }, { 20, 40 }, { 44, 24 }, { 28, 36 } };
@@ -263,7 +279,7 @@ static void test_lit_flips_and_rotated_frames_light_the_plus_u_side(void)
         {
             float k = side? -3.0f : 3.0f;
             RblLight l = pointLight((Vector3){ T.x*k, T.y*k, 1.0f }, 6.0f);
-            RblSetLights(&s.lit, &l, 1, BLACK);
+            RT_CHECK(renderSetLights(&l, 1, BLACK), "scene rejected");
             Image img = renderOne(&s, cam, b);
             lum[side] = luminance(rtPixel(img, TARGET/2, TARGET/2));
             UnloadImage(img);
@@ -275,34 +291,54 @@ static void test_lit_flips_and_rotated_frames_light_the_plus_u_side(void)
 
 static void test_lit_bad_lights_are_rejected_and_change_nothing(void)
 {
-    Scene s = sceneLoad(WHITE, normalTexel(0, 0, 1), false);
+    Scene s = sceneLoad(WHITE, normalTexel(0, 0, 1), false);        // 2 light slots
     RblLight good = pointLight((Vector3){ 0, 0, 2 }, 2.0f);
-    RT_CHECK(RblSetLights(&s.lit, &good, 1, BLACK), "good light rejected");
+    RT_CHECK(renderSetLights(&good, 1, BLACK), "good light rejected");
     Image before = renderOne(&s, frontCamera(), centredQuad());
     RblLight bad[5] = { good, good, good, good, good };
     bad[0].position.x = NAN; bad[1].intensity = -1.0f; bad[2].range = INFINITY; bad[3].intensity = NAN; bad[4].range = -2.0f;
     for (int i = 0; i < 5; i++)
     {
         warnings = 0;
-        RT_CHECK(!RblSetLights(&s.lit, &bad[i], 1, WHITE), "bad light %d accepted", i);
+        RT_CHECK(!renderSetLights(&bad[i], 1, WHITE), "bad light %d accepted", i);
         RT_CHECK(warnings == 1, "bad light %d: %d warnings", i, warnings);
     }
+    // A bad light past the program's slots still rejects the scene (the G-buffer lights every one)
+    RblLight tail[3] = { good, good, bad[0] };
     warnings = 0;
-    RT_CHECK(!RblSetLights(&s.lit, &good, 3, WHITE), "more lights than slots accepted");
-    RT_CHECK(!RblSetLights(&s.lit, NULL, 1, WHITE), "NULL lights accepted");
+    RT_CHECK(!renderSetLights(tail, 3, WHITE), "bad light after the slots accepted");
+    RT_CHECK(warnings == 1, "bad light after the slots: %d warnings", warnings);
+    warnings = 0;
+    RT_CHECK(!renderSetLights(&good, -1, WHITE), "negative light count accepted");
+    RT_CHECK(!renderSetLights(NULL, 1, WHITE), "NULL lights accepted");
     RT_CHECK(warnings == 2, "%d warnings", warnings);
     Image after = renderOne(&s, frontCamera(), centredQuad());
     Color a = rtPixel(before, 32, 32), b = rtPixel(after, 32, 32);
     RT_CHECK(a.r == b.r && a.g == b.g && a.b == b.b, "rejected lights changed the image (%d vs %d)", a.r, b.r);
+    // More lights than slots is no error: the program lights the first maxLights (here the good light
+    // and a dark one, so the image is unchanged), the rest are ignored with one (info) log line naming it
+    RblLight three[3] = { good, good, pointLight((Vector3){ 0.5f, 0.5f, 0.5f }, 50.0f) };
+    three[1].intensity = 0.0f;
+    char programName[32];
+    snprintf(programName, sizeof(programName), "program %u ", s.lit.id);
+    warnings = 0;
+    lastWarning[0] = '\0';
+    SetTraceLogLevel(LOG_INFO);
+    RT_CHECK(renderSetLights(three, 3, BLACK), "more lights than slots rejected");
+    SetTraceLogLevel(LOG_WARNING);
+    RT_CHECK(warnings == 1 && strstr(lastWarning, programName) != NULL, "lights beyond the slots: %d log lines, want 1 naming %s(%s)", warnings, programName, lastWarning);
+    Image capped = renderOne(&s, frontCamera(), centredQuad());
+    Color c = rtPixel(capped, 32, 32);
+    RT_CHECK(a.r == c.r && a.g == c.g && a.b == c.b, "a light beyond the slots changed the image (%d vs %d)", a.r, c.r);
     // Zero lights: ambient only; a light a hair in front of the surface hits the distance clamp and saturates
-    RT_CHECK(RblSetLights(&s.lit, NULL, 0, (Color){ 64, 64, 64, 255 }), "zero lights rejected");
+    RT_CHECK(renderSetLights(NULL, 0, (Color){ 64, 64, 64, 255 }), "zero lights rejected");
     Image amb = renderOne(&s, frontCamera(), centredQuad());
     RT_CHECK(abs(rtPixel(amb, 32, 32).r - 64) <= 1, "ambient only: %d", rtPixel(amb, 32, 32).r);
     RblLight onSurface = pointLight((Vector3){ 0.0f, 0.0f, 1e-3f }, 1.0f);
-    RblSetLights(&s.lit, &onSurface, 1, BLACK);
+    RT_CHECK(renderSetLights(&onSurface, 1, BLACK), "light on the surface rejected");
     Image hot = renderOne(&s, frontCamera(), centredQuad());
     RT_CHECK(rtPixel(hot, 32, 32).r == 255, "light on the surface should saturate, got %d", rtPixel(hot, 32, 32).r);
-    UnloadImage(before); UnloadImage(after); UnloadImage(amb); UnloadImage(hot);
+    UnloadImage(before); UnloadImage(after); UnloadImage(capped); UnloadImage(amb); UnloadImage(hot);
     sceneUnload(s);
 }
 
@@ -312,7 +348,7 @@ static void test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_im
     Camera3D cam = frontCamera();
     Scene s = sceneLoad((Color){ 200, 150, 100, 255 }, normalTexel(0, 0, 1), false);
     RblLight l = pointLight((Vector3){ 1, 1, 3 }, 8.0f);
-    RblSetLights(&s.lit, &l, 1, (Color){ 20, 20, 20, 255 });
+    RT_CHECK(renderSetLights(&l, 1, (Color){ 20, 20, 20, 255 }), "scene rejected");
     RblBatch batch = RblLoadBatch(2);
     RT_CHECK(RblIsBatchValid(batch), "batch not created");
     RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);

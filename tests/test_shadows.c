@@ -53,6 +53,14 @@ static ShSetup shSetup(Vector3 direction)
     return s;
 }
 
+// An empty scene (no lights, no maps), set before a test unloads the maps its scene listed
+static void shClearScene(void)
+{
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RT_CHECK(RblSetScene(&none), "empty scene rejected");
+}
+
 // Floor point seen at pixel (x, y) of the top-down image (top row first)
 static Vector2 shFloorAt(int x, int y)
 {
@@ -60,7 +68,8 @@ static Vector2 shFloorAt(int x, int y)
     return (Vector2){ (x + 0.5f)*p - SH_VIEW*0.5f, SH_VIEW*0.5f - (y + 0.5f)*p };
 }
 
-// Renders the floor lit by s's lights with the casters drawn into the shadow map (forward, or deferred)
+// Renders the floor lit by s's lights with the casters drawn into the shadow map (forward, or deferred).
+// The scene (lights, ambient, and the map once rendered) is set after the shadow pass, as receivers need.
 static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D casterTexture, bool deferred)
 {
     RblLitShaderDesc desc;
@@ -70,17 +79,24 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
     desc.brdf = s->brdf;
     desc.shadowMaps = 1;
     desc.shadowFilter = s->filter;
-    RblLitShader lit = RblLoadLitShader(desc);
+    Shader lit = RblLoadLitShader(desc);
     RblShadowMap map = RblLoadShadowMap(s->shadow);
     RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(map), "receiver or shadow map failed to load");
     Material cm = LoadMaterialDefault();
-    cm.shader = lit.shader;                 // the colour pass's material: the shadow pass swaps the caster in
+    cm.shader = lit;                        // the colour pass's material: the shadow pass swaps the caster in
     cm.maps[MATERIAL_MAP_ALBEDO].texture = casterTexture;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = s->lights;
+    scene.lightCount = s->count;
+    scene.ambient = s->ambient;
     if (!s->noShadow)
     {
-        RT_CHECK(RblBeginShadowMap(&map, s->lights, 0, s->focus, s->radius), "shadow pass refused");
+        RT_CHECK(RblBeginShadowMap(&map, &scene, 0, s->focus, s->radius), "shadow pass refused");
         if (casters != NULL) casters(cm, s->viewer, ctx);
         RblEndShadowMap(&map);
+        scene.shadowMaps = &map;            // received once rendered: the scene is set after the pass
+        scene.shadowMapCount = 1;
     }
     Texture2D white = solidTexture(WHITE);
     Material floor = LoadMaterialDefault();
@@ -88,9 +104,8 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
     RenderTexture2D rt = LoadRenderTexture(SH_TARGET, SH_TARGET);
     if (!deferred)
     {
-        RT_CHECK(RblSetLights(&lit, s->lights, s->count, s->ambient), "lights rejected");
-        RT_CHECK(RblSetShadows(&lit, &map, s->noShadow? 0 : 1), "shadows rejected");
-        floor.shader = lit.shader;
+        RT_CHECK(RblSetScene(&scene), "scene (lights, shadow map) rejected");
+        floor.shader = lit;
         BeginTextureMode(rt);
         ClearBackground(BLANK);
         BeginMode3D(s->camera);
@@ -100,33 +115,38 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
     }
     else
     {
-        RblLitShaderDesc shading = desc;
-        RblGBuffer g = RblLoadGBuffer(SH_TARGET, SH_TARGET, shading);
+        RblGBufferDesc shading;
+        memset(&shading, 0, sizeof(shading));
+        shading.width = SH_TARGET; shading.height = SH_TARGET;
+        shading.brdf = desc.brdf; shading.lightFeatures = desc.lightFeatures;
+        shading.shadowMaps = desc.shadowMaps; shading.shadowFilter = desc.shadowFilter;
+        RblGBuffer g = RblLoadGBuffer(shading);
         desc.deferred = true;
-        RblLitShader geo = RblLoadLitShader(desc);
-        RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
-        RT_CHECK(RblSetGBufferShadows(&g, &map, s->noShadow? 0 : 1), "G-buffer shadows rejected");
-        floor.shader = geo.shader;
+        Shader geo = RblLoadLitShader(desc);
+        RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
+        RT_CHECK(RblSetScene(&scene), "scene (lights, G-buffer shadow map) rejected");
+        floor.shader = geo;
         if (RblBeginGBuffer(&g, s->camera))
         {
             RblDrawBillboard(s->camera, floor, litPlane());
             RblEndGBuffer(&g);
-            RT_CHECK(RblDrawDeferredLights(&g, s->lights, s->count, s->ambient), "deferred lights rejected");
+            RT_CHECK(RblDrawDeferredLights(&g), "deferred lights rejected");
         }
         BeginTextureMode(rt);
         ClearBackground(BLANK);
         RblResolveGBuffer(&g);
         EndTextureMode();
-        RblUnloadLitShader(geo);
+        RblUnloadLitShader(&geo);
         RblUnloadGBuffer(&g);
     }
     Image img = rtReadTarget(rt);
+    shClearScene();                         // the scene no longer lists the map unloaded below
     UnloadRenderTexture(rt);
     UnloadTexture(white);
     MemFree(floor.maps);
     MemFree(cm.maps);
     RblUnloadShadowMap(&map);
-    RblUnloadLitShader(lit);
+    RblUnloadLitShader(&lit);
     return img;
 }
 
@@ -519,6 +539,43 @@ static void test_shadows_forward_and_deferred_agree_within_2_of_255(void)
 }
 
 // ---- bad input and hard cases -------------------------------------------------------------------
+// Floor colour at the centre of a small top-down render drawn with m under the current scene
+static Color shProbe(Material m)
+{
+    Camera3D cam = shTopDown();
+    RenderTexture2D rt = LoadRenderTexture(8, 8);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(cam);
+    RblDrawBillboard(cam, m, litPlane());
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    Color c = rtPixel(img, 4, 4);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    return c;
+}
+
+static bool shSameColor(Color a, Color b) { return (a.r == b.r) && (a.g == b.g) && (a.b == b.b) && (a.a == b.a); }
+
+// Texels of a map's depth below 1 (something drawn into it since its pass cleared it); -1 when unreadable
+static int shMapTexelsWritten(const RblShadowMap *map)
+{
+    void (*readPixels)(int, int, int, int, unsigned int, unsigned int, void *) = NULL;
+    void *proc = rtGlProc("glReadPixels");
+    float *d = (float *)malloc((size_t)map->size*map->size*sizeof(float));
+    if ((proc == NULL) || (d == NULL)) { free(d); return -1; }
+    memcpy(&readPixels, &proc, sizeof(proc));
+    rlEnableFramebuffer(map->id);
+    readPixels(0, 0, map->size, map->size, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, d);
+    rlDisableFramebuffer();
+    int n = 0;
+    for (int i = 0; i < map->size*map->size; i++) n += (d[i] < 1.0f);
+    free(d);
+    return n;
+}
+
 static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing(void)
 {
     RblShadowDesc bad;
@@ -537,41 +594,91 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     good.size = 64;
     RblShadowMap map = RblLoadShadowMap(good);
     RT_CHECK(RblIsShadowMapValid(map) && map.light == -1, "default shadow map failed");
-    RblLight lights[3] = { litPoint((Vector3){ 0, 0, 3 }, 1.0f, 5.0f), litDirectional((Vector3){ 0, 0, -1 }, 1.0f),
+    // Dim enough that the probe render below is not saturated (a changed ambient or exposure shows)
+    RblLight lights[3] = { litPoint((Vector3){ 0, 0, 3 }, 1.0f, 5.0f), litDirectional((Vector3){ 0, 0, -1 }, 0.3f),
                            litSpot((Vector3){ 0, 0, 3 }, (Vector3){ 0, 0, -1 }, 10.0f, 85.0f, 1.0f) };
+    RblScene scene, empty;
+    memset(&scene, 0, sizeof(scene));
+    memset(&empty, 0, sizeof(empty));
+    scene.lights = lights; scene.lightCount = 3; scene.ambient = (Color){ 40, 40, 40, 255 };
     Vector3 o = { 0, 0, 0 };
-    struct { const RblLight *lights; int index; Vector3 focus; float radius; const char *what; } cases[] = {
-        { lights, 0, o, 2.0f, "a point light" }, { lights, 1, o, 0.0f, "directional without a focus radius" },
-        { lights, 1, (Vector3){ NAN, 0, 0 }, 2.0f, "NaN focus" }, { lights, 1, o, INFINITY, "infinite radius" },
-        { lights, 2, o, 2.0f, "spot wider than 80 degrees" }, { NULL, 0, o, 2.0f, "no lights" }, { lights, -1, o, 2.0f, "negative index" },
+    struct { const RblScene *scene; int index; Vector3 focus; float radius; const char *what; } cases[] = {
+        { &scene, 0, o, 2.0f, "a point light" }, { &scene, 1, o, 0.0f, "directional without a focus radius" },
+        { &scene, 1, (Vector3){ NAN, 0, 0 }, 2.0f, "NaN focus" }, { &scene, 1, o, INFINITY, "infinite radius" },
+        { &scene, 2, o, 2.0f, "spot wider than 80 degrees" }, { NULL, 0, o, 2.0f, "no scene" },
+        { &empty, 0, o, 2.0f, "a scene without lights" }, { &scene, 3, o, 2.0f, "index past the scene's lights" },
+        { &scene, -1, o, 2.0f, "negative index" },
     };
     for (size_t i = 0; i < sizeof(cases)/sizeof(cases[0]); i++)
     {
         warnings = 0;
-        RT_CHECK(!RblBeginShadowMap(&map, cases[i].lights, cases[i].index, cases[i].focus, cases[i].radius) && warnings == 1 && !map.begun && map.light == -1,
-                 "%s accepted", cases[i].what);
+        RT_CHECK(!RblBeginShadowMap(&map, cases[i].scene, cases[i].index, cases[i].focus, cases[i].radius) && warnings == 1 && !map.begun && map.light == -1,
+                 "%s accepted (%d log lines)", cases[i].what, warnings);
     }
     RblLight bent = litDirectional((Vector3){ 0, 0, 0 }, 1.0f);
+    RblScene bentScene = empty;
+    bentScene.lights = &bent; bentScene.lightCount = 1;
     warnings = 0;
-    RT_CHECK(!RblBeginShadowMap(&map, &bent, 0, o, 2.0f) && warnings == 1, "zero direction accepted");
-    // Nested passes are refused; a pass in progress cannot be received
-    RT_CHECK(RblBeginShadowMap(&map, lights, 1, o, 2.0f), "good pass refused");
-    RblShadowMap other = RblLoadShadowMap(good);
-    warnings = 0;
-    RT_CHECK(!RblBeginShadowMap(&other, lights, 1, o, 2.0f) && warnings == 1, "nested shadow pass accepted");
+    RT_CHECK(!RblBeginShadowMap(&map, &bentScene, 0, o, 2.0f) && warnings == 1 && !map.begun && map.light == -1, "zero direction accepted");
+
+    // A receiver of every light type in the scene (so setting it logs nothing) and its floor
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.lightFeatures = RBL_LIGHTS_DIRECTIONAL; desc.maxLights = 2; desc.shadowMaps = 1;
-    RblLitShader lit = RblLoadLitShader(desc);
+    desc.lightFeatures = RblLightFeatures(lights, 3); desc.maxLights = 3; desc.shadowMaps = 1;
+    Shader lit = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(lit), "receiver failed to load");
+    Texture2D white = solidTexture(WHITE);
+    Material floor = LoadMaterialDefault();
+    floor.shader = lit;
+    floor.maps[MATERIAL_MAP_ALBEDO].texture = white;
     warnings = 0;
-    RT_CHECK(!RblSetShadows(&lit, &map, 1) && warnings == 1, "map still being rendered accepted");
+    RT_CHECK(RblSetScene(&scene) && warnings == 0, "scene without maps refused (%d log lines)", warnings);
+    Color before = shProbe(floor);
+    // A refused scene would show if any of it were applied: another ambient and exposure
+    RblScene wrong = scene;
+    wrong.ambient = (Color){ 200, 0, 0, 255 }; wrong.exposure = 0.5f;
+    // Nested passes are refused; a pass in progress cannot be received
+    RT_CHECK(RblBeginShadowMap(&map, &scene, 1, o, 2.0f), "good pass refused");
+    RblShadowMap other = RblLoadShadowMap(good);
+    warnings = 0;
+    RT_CHECK(!RblBeginShadowMap(&other, &scene, 1, o, 2.0f) && warnings == 1 && !other.begun && other.light == -1, "nested shadow pass accepted");
+    wrong.shadowMaps = &map; wrong.shadowMapCount = 1;
+    warnings = 0;
+    RT_CHECK(!RblSetScene(&wrong) && warnings == 1, "map still being rendered accepted");
     RblEndShadowMap(&map);
-    RT_CHECK(RblSetShadows(&lit, &map, 1), "rendered map refused");
+    Color after = shProbe(floor);
+    RT_CHECK(shSameColor(after, before), "the refused scene (map being rendered) changed the frame: %d,%d,%d -> %d,%d,%d",
+             before.r, before.g, before.b, after.r, after.g, after.b);
+    scene.shadowMaps = &map; scene.shadowMapCount = 1;
     warnings = 0;
-    RT_CHECK(!RblSetShadows(&lit, &other, 1) && warnings == 1, "never-rendered map accepted");
+    RT_CHECK(RblSetScene(&scene) && warnings == 0, "rendered map refused (%d log lines)", warnings);
+    before = shProbe(floor);
+    RT_CHECK(before.r > 40 && before.r < 250, "probe floor %d: saturated or unlit, a changed scene would not show", before.r);
     RblShadowMap two[2] = { map, map };
-    warnings = 0;
-    RT_CHECK(!RblSetShadows(&lit, two, 2) && warnings == 1, "more maps than compiled accepted");
+    RblShadowMap many[RBL_MAX_SHADOWS + 1];
+    for (int k = 0; k <= RBL_MAX_SHADOWS; k++) many[k] = map;
+    struct { const RblShadowMap *maps; int count; int lightCount; const char *what; } refused[] = {
+        { &other, 1, 3, "never-rendered map" }, { two, 2, 3, "two maps for the same light" },
+        { many, RBL_MAX_SHADOWS + 1, 3, "more maps than RBL_MAX_SHADOWS" },
+        { &map, 1, 1, "a map of a light the scene does not have (index 1 of 1 light)" },
+        { two, 2, 3, "two maps for the same light (the second rendered for it too)" },
+    };
+    for (size_t i = 0; i < sizeof(refused)/sizeof(refused[0]); i++)
+    {
+        if (i == 4)
+        {
+            // other rendered for the same light as map: both valid, together refused
+            RT_CHECK(RblBeginShadowMap(&other, &scene, 1, o, 2.0f), "second map's pass refused");
+            RblEndShadowMap(&other);
+            two[1] = other;
+        }
+        wrong.shadowMaps = refused[i].maps; wrong.shadowMapCount = refused[i].count; wrong.lightCount = refused[i].lightCount;
+        warnings = 0;
+        RT_CHECK(!RblSetScene(&wrong) && warnings == 1, "%s accepted (%d log lines)", refused[i].what, warnings);
+        after = shProbe(floor);
+        RT_CHECK(shSameColor(after, before), "the refused scene (%s) changed the frame: %d,%d,%d -> %d,%d,%d", refused[i].what,
+                 before.r, before.g, before.b, after.r, after.g, after.b);
+    }
     // Descs outside the limits
     warnings = 0;
     desc.shadowMaps = RBL_MAX_SHADOWS + 1;
@@ -579,11 +686,28 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     desc.shadowMaps = 1; desc.shadowFilter = RBL_SHADOW_MAX_FILTER + 1;
     warnings = 0;
     RT_CHECK(!RblIsLitShaderValid(RblLoadLitShader(desc)) && warnings == 1, "shadowFilter above the maximum accepted");
-    // A Model caster outside a pass draws nothing and says so
+    // A Model drawn outside a pass (0.3: RblDrawModelShadow, refused) is a colour draw: no log line, it
+    // lands in the current target, and no shadow map is written
+    Model cube = LoadModelFromMesh(GenMeshCube(4, 4, 1));       // covers the centre pixels of the 8-unit view
+    cube.materials[0].shader = lit;
+    int writtenBefore = shMapTexelsWritten(&map);
+    Camera3D top = shTopDown();
+    RenderTexture2D rt = LoadRenderTexture(8, 8);
     warnings = 0;
-    Model cube = LoadModelFromMesh(GenMeshCube(1, 1, 1));
-    RblDrawModelShadow(cube, o, 1.0f, WHITE);
-    RT_CHECK(warnings == 1, "RblDrawModelShadow outside a pass not reported");
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(top);
+    RblDrawModel(cube, o, 1.0f, WHITE);
+    EndMode3D();
+    EndTextureMode();
+    int drawWarnings = warnings;
+    Image drawn = rtReadTarget(rt);
+    int writtenAfter = shMapTexelsWritten(&map);
+    RT_CHECK(drawWarnings == 0 && rtPixel(drawn, 4, 4).a == 255, "RblDrawModel outside a pass: %d log lines, centre alpha %d (expected a plain colour draw)",
+             drawWarnings, rtPixel(drawn, 4, 4).a);
+    RT_CHECK(writtenBefore == 0 && writtenAfter == 0, "RblDrawModel outside a pass wrote the shadow map (%d texels written, %d before)", writtenAfter, writtenBefore);
+    UnloadImage(drawn);
+    UnloadRenderTexture(rt);
     UnloadModel(cube);
     // Focus from a camera: bad input refused, a good one bounds the slice's corners
     Vector3 c; float r;
@@ -601,7 +725,10 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
         worst = fmax(worst, Vector3Distance(p, c)/r);
     }
     RT_CHECK(worst <= 1.0 + 1e-5 && worst > 0.95, "focus sphere does not tightly bound the slice (corner at %.4f radii)", worst);
-    RblUnloadLitShader(lit);
+    shClearScene();
+    RblUnloadLitShader(&lit);
+    MemFree(floor.maps);
+    UnloadTexture(white);
     RblUnloadShadowMap(&map);
     RblUnloadShadowMap(&other);
 }
@@ -645,16 +772,19 @@ static void test_shadows_hard_cases_stay_finite(void)
         RblLitShaderDesc desc;
         memset(&desc, 0, sizeof(desc));
         desc.maxLights = 1; desc.lightFeatures = RblLightFeatures(s.lights, 1); desc.shadowMaps = 1; desc.linearOutput = true; desc.brdf = RBL_BRDF_GGX;
-        desc.roughness = 1e-6f;
-        RblLitShader lit = RblLoadLitShader(desc);
+        Shader lit = RblLoadLitShader(desc);
         RblShadowMap map = RblLoadShadowMap(s.shadow);
         Material cm = LoadMaterialDefault();
-        cm.shader = lit.shader; cm.maps[MATERIAL_MAP_ALBEDO].texture = white;
-        RT_CHECK(RblBeginShadowMap(&map, s.lights, 0, s.focus, s.radius), "%s: pass refused", cases[i].what);
+        cm.shader = lit; cm.maps[MATERIAL_MAP_ALBEDO].texture = white;
+        rtSetMaterialValues(&cm, (RtMaterialValues){ .roughness = 1e-6f });
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = s.lights; scene.lightCount = 1; scene.ambient = s.ambient;
+        RT_CHECK(RblBeginShadowMap(&map, &scene, 0, s.focus, s.radius), "%s: pass refused", cases[i].what);
         shHardCasters(cm, s.viewer, &h);
         RblEndShadowMap(&map);
-        RblSetLights(&lit, s.lights, 1, s.ambient);
-        RblSetShadows(&lit, &map, 1);
+        scene.shadowMaps = &map; scene.shadowMapCount = 1;
+        RblSetScene(&scene);
         RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
         BeginTextureMode(rt);
         ClearBackground(BLANK);
@@ -669,19 +799,20 @@ static void test_shadows_hard_cases_stay_finite(void)
         RL_FREE(px);
         litTargetUnload(rt);
         MemFree(cm.maps);
+        shClearScene();
         RblUnloadShadowMap(&map);
-        RblUnloadLitShader(lit);
+        RblUnloadLitShader(&lit);
     }
     printf("    %d hard cases: every pixel written, float output finite and non-negative\n", (int)(sizeof(cases)/sizeof(cases[0])));
     UnloadTexture(white);
 }
 
-// A raylib Model casts through RblDrawModelShadow (a cube hovering over the floor darkens its footprint)
+// A raylib Model casts through RblDrawModel inside the pass (a cube hovering over the floor darkens its footprint)
 static void shCubeCaster(Material m, Camera3D viewer, void *ctx)
 {
     (void)m; (void)viewer;
     Model *cube = (Model *)ctx;
-    RblDrawModelShadow(*cube, (Vector3){ 0.0f, 0.0f, 1.0f }, 1.0f, WHITE);
+    RblDrawModel(*cube, (Vector3){ 0.0f, 0.0f, 1.0f }, 1.0f, WHITE);
 }
 
 static void test_shadows_raylib_model_casts_its_footprint(void)
@@ -721,11 +852,14 @@ static void test_shadows_pass_restores_the_callers_target_and_matrices(void)
     desc.size = 64;
     RblShadowMap map = RblLoadShadowMap(desc);
     RblLight sun = litDirectional((Vector3){ 0.2f, -1.0f, 0.1f }, 1.0f);
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1;
     RenderTexture2D rt = LoadRenderTexture(32, 16);
     BeginTextureMode(rt);
     ClearBackground(BLACK);
     Matrix view = rlGetMatrixModelview(), proj = rlGetMatrixProjection();
-    RT_CHECK(RblBeginShadowMap(&map, &sun, 0, (Vector3){ 0, 0, 0 }, 2.0f), "pass refused");
+    RT_CHECK(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 2.0f), "pass refused");
     RblEndShadowMap(&map);
     RT_CHECK(rlGetActiveFramebuffer() == rt.id, "framebuffer %u after the pass, expected the render texture's %u", rlGetActiveFramebuffer(), rt.id);
     Matrix v2 = rlGetMatrixModelview(), p2 = rlGetMatrixProjection();

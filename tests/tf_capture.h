@@ -53,7 +53,7 @@ static bool tfLoad(TfGl *gl)
 // Program of the instanced vertex stage alone, capturing its outputs
 static GLu tfProgram(TfGl *gl)
 {
-    char *vs = rbl__joinSource("#version 330\n#define RBL_LIGHTS 1\n", rbl__shader_lit_instanced_vs);
+    char *vs = rbl__joinStage("#version 330\n#define RBL_LIGHTS 1\n", rbl__pass_lit_instanced_vs);
     GLu sh = gl->CreateShader(0x8B31 /* GL_VERTEX_SHADER */);
     const char *src = vs;
     gl->ShaderSource(sh, 1, &src, NULL);

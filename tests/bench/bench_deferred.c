@@ -12,16 +12,17 @@
 //                normal +Y, seen from above at ~40 degrees) lit by 1, 16, 256 and 1024 small point
 //                lights (range 0.3-0.8 world units, windowed falloff, scattered uniformly over the
 //                visible floor with a fixed seed), BRDF BENCH_BRDF, through three pipelines:
-//                  forward   RblLitShader with maxLights = min(n, RBL_MAX_LIGHTS); above RBL_MAX_LIGHTS the
-//                            floor is drawn again per chunk of 64 lights: the first pass with the ambient,
-//                            later passes with ambient BLACK, additive blending (ONE, ONE, ADD) and the
+//                  forward   a lit program (RblLoadLitShader) with maxLights = min(n, RBL_MAX_LIGHTS); above
+//                            RBL_MAX_LIGHTS the floor is drawn again per chunk of 64 lights, each chunk set as
+//                            the scene (RblSetScene): the first pass with the ambient, later passes with
+//                            ambient BLACK, additive blending (ONE, ONE, ADD) and the
 //                            depth test left on: raylib's default depth function is GL_LEQUAL (rlglInit),
 //                            so identical geometry drawn by the same program passes it again. The forward
 //                            shader writes sRGB-encoded colour, so adding passes is not physically the
 //                            same as one pass over every light: only the timing of those rows matters.
-//                  volumes   RblLoadGBuffer + geometry pass (desc.deferred material) + RblDrawDeferredLights
-//                            (bounded lights as instanced sphere volumes) + RblResolveGBuffer into the
-//                            1280x720 RenderTexture.
+//                  volumes   RblLoadGBuffer + geometry pass (desc.deferred material) + RblSetScene (the n
+//                            lights) + RblDrawDeferredLights (bounded lights as instanced sphere volumes) +
+//                            RblResolveGBuffer into the 1280x720 RenderTexture.
 //                  naive     the same with g.naiveFullscreen = true: every light at every pixel, in
 //                            full-screen passes of RBL_MAX_LIGHTS.
 //                The raylib baseline is timed in the same run: the floor as a GenMeshPlane Mesh drawn by
@@ -92,9 +93,10 @@ typedef struct Scene {
     Matrix planeTransform;
     Material rayMat;                // raylib's default material + albedo
     Texture2D albedo;
-    RblLitShader fwd[COUNTS];       // forward: maxLights = min(n, RBL_MAX_LIGHTS)
+    Shader fwd[COUNTS];             // forward: maxLights = min(n, RBL_MAX_LIGHTS)
+    int fwdSlots[COUNTS];           // ... its maxLights
     Material fwdMat[COUNTS];
-    RblLitShader geo;               // deferred geometry variant
+    Shader geo;                     // deferred geometry variant
     Material geoMat;
     RblGBuffer g;
     RblLight lights[MAX_N];
@@ -112,6 +114,17 @@ typedef struct Scene {
 //----------------------------------------------------------------------------------
 static const Matrix identity = { 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f };
 
+// The frame's scene: count lights from first, a flat ambient, nothing else (no fog, exposure 1, no shadows)
+static bool SetLights(const RblLight *first, int count, Color ambient)
+{
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = first;
+    scene.lightCount = count;
+    scene.ambient = ambient;
+    return RblSetScene(&scene);
+}
+
 static void DrawBaseline(Scene *s)
 {
     BeginTextureMode(s->target);
@@ -125,7 +138,7 @@ static void DrawBaseline(Scene *s)
 // Forward: one pass per RBL_MAX_LIGHTS lights; passes after the first add (see the top)
 static int DrawForward(Scene *s, int c)
 {
-    int n = s->counts[c], slots = s->fwd[c].maxLights, passes = 0;
+    int n = s->counts[c], slots = s->fwdSlots[c], passes = 0;
     s->frameOk = true;
     BeginTextureMode(s->target);
     ClearBackground(BLANK);
@@ -138,7 +151,7 @@ static int DrawForward(Scene *s, int c)
             rlSetBlendFactors(RL_ONE, RL_ONE, RL_FUNC_ADD);
             rlSetBlendMode(BLEND_CUSTOM);
         }
-        s->frameOk = RblSetLights(&s->fwd[c], &s->lights[first], k, (passes == 0)? s->ambient : BLACK) && s->frameOk;
+        s->frameOk = SetLights(&s->lights[first], k, (passes == 0)? s->ambient : BLACK) && s->frameOk;
         RblDrawBillboard(s->camera, s->fwdMat[c], s->floor);
     }
     if (passes > 1) rlSetBlendMode(BLEND_ALPHA);
@@ -155,7 +168,7 @@ static void DrawDeferred(Scene *s, int c, bool naive)
     {
         RblDrawBillboard(s->camera, s->geoMat, s->floor);
         RblEndGBuffer(&s->g);
-        s->frameOk = RblDrawDeferredLights(&s->g, s->lights, s->counts[c], s->ambient);
+        s->frameOk = SetLights(s->lights, s->counts[c], s->ambient) && RblDrawDeferredLights(&s->g);
     }
     BeginTextureMode(s->target);
     ClearBackground(BLANK);
@@ -347,9 +360,10 @@ int main(void)
     {
         RblLitShaderDesc d = desc;
         d.maxLights = (counts[c] < RBL_MAX_LIGHTS)? counts[c] : RBL_MAX_LIGHTS;
+        s->fwdSlots[c] = d.maxLights;
         s->fwd[c] = RblLoadLitShader(d);
         s->fwdMat[c] = LoadMaterialDefault();
-        s->fwdMat[c].shader = s->fwd[c].shader;
+        s->fwdMat[c].shader = s->fwd[c];
         s->fwdMat[c].maps[MATERIAL_MAP_ALBEDO].texture = s->albedo;
         s->ok[PIPE_FORWARD*COUNTS + c] = RblIsLitShaderValid(s->fwd[c]);
     }
@@ -357,15 +371,19 @@ int main(void)
     gd.deferred = true;
     s->geo = RblLoadLitShader(gd);
     s->geoMat = LoadMaterialDefault();
-    s->geoMat.shader = s->geo.shader;
+    s->geoMat.shader = s->geo;
     s->geoMat.maps[MATERIAL_MAP_ALBEDO].texture = s->albedo;
-    s->g = RblLoadGBuffer(FRAME_W, FRAME_H, desc);
-    bool deferredOk = RblIsGBufferValid(s->g) && RblIsLitShaderValid(s->geo);
+    RblGBufferDesc gbufferDesc;
+    memset(&gbufferDesc, 0, sizeof(gbufferDesc));
+    gbufferDesc.width = FRAME_W; gbufferDesc.height = FRAME_H;
+    gbufferDesc.brdf = BENCH_BRDF;          // point lights (the default light features), no fog, sRGB
+    s->g = RblLoadGBuffer(gbufferDesc);
+    bool deferredOk = RblIsGBufferValid(&s->g) && RblIsLitShaderValid(s->geo);
     if (!deferredOk) { printf("bench_deferred: G-buffer or geometry variant failed to load: deferred rows skipped\n"); problems++; }
     for (int c = 0; c < COUNTS; c++) s->ok[PIPE_VOLUMES*COUNTS + c] = s->ok[PIPE_NAIVE*COUNTS + c] = deferredOk;
 
     // ---- G-buffer bytes per pixel, from the allocated formats ----------------------------------------
-    int bpp = RblGBufferBytesPerPixel(s->g);
+    int bpp = RblGBufferBytesPerPixel(&s->g);
     int albedoB = GetPixelDataSize(1, 1, s->g.albedo.format), normalB = GetPixelDataSize(1, 1, s->g.normal.format);
     int paramsB = GetPixelDataSize(1, 1, s->g.params.format), accumB = GetPixelDataSize(1, 1, s->g.accum.format);
     double glAlbedo = GlBytesPerPixel(s->g.albedo.id), glNormal = GlBytesPerPixel(s->g.normal.id), glParams = GlBytesPerPixel(s->g.params.id);
@@ -505,10 +523,10 @@ int main(void)
     // ---- release -------------------------------------------------------------------------------------
     for (int c = 0; c < COUNTS; c++)
     {
-        if (RblIsLitShaderValid(s->fwd[c])) RblUnloadLitShader(s->fwd[c]);
+        if (RblIsLitShaderValid(s->fwd[c])) RblUnloadLitShader(&s->fwd[c]);
         MemFree(s->fwdMat[c].maps);
     }
-    if (RblIsLitShaderValid(s->geo)) RblUnloadLitShader(s->geo);
+    if (RblIsLitShaderValid(s->geo)) RblUnloadLitShader(&s->geo);
     MemFree(s->geoMat.maps);
     MemFree(s->rayMat.maps);
     RblUnloadGBuffer(&s->g);

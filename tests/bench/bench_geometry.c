@@ -121,7 +121,7 @@ static const int counts[] = { 1000, 10000, 100000 };
 static Camera3D camera;
 static RenderTexture2D target;
 static Texture2D atlas;
-static RblLitShader lit, litInstanced;
+static Shader lit, litInstanced;
 static Material material, materialInstanced;     // same atlas; vertex-buffer and instanced lit shaders
 static RblBatch batch;
 static RblInstanceBuffer instanceBuffer;
@@ -462,7 +462,7 @@ static void ImmediateCorners(int n, int rotated, float *out)
     for (int i = 0; i < n; i++)
     {
         RblDrawBillboard(camera, material, rblSet[rotated][i]);
-        for (int k = 0; k < 4; k++) memcpy(&out[(size_t)(i*4 + k)*3], rbl__immediate.vertices[k].position, 3*sizeof(float));
+        for (int k = 0; k < 4; k++) memcpy(&out[(size_t)(i*4 + k)*3], rbl__state.immediate.vertices[k].position, 3*sizeof(float));
     }
     EndMode3D();
     EndTextureMode();
@@ -540,28 +540,34 @@ int main(int argc, char **argv)
 
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1;                         // one light slot (0.3's default; 1.0's is 4)
     lit = RblLoadLitShader(desc);
     RblLight light = { 0 };
     light.position = (Vector3){ 0.0f, 6.0f, 8.0f };
     light.color = WHITE;
     light.intensity = 60.0f;
-    if (!RblIsLitShaderValid(lit) || !RblSetLights(&lit, &light, 1, (Color){ 40, 40, 40, 255 }))
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light;
+    scene.lightCount = 1;
+    scene.ambient = (Color){ 40, 40, 40, 255 };
+    if (!RblIsLitShaderValid(lit) || !RblSetScene(&scene))
     {
         printf("bench_geometry: lit shader failed\n");
         return 1;
     }
     desc.instanced = true;
-    litInstanced = RblLoadLitShader(desc);
-    if (!RblIsLitShaderValid(litInstanced) || !RblSetLights(&litInstanced, &light, 1, (Color){ 40, 40, 40, 255 }))
+    litInstanced = RblLoadLitShader(desc);      // loaded after RblSetScene: gets the current scene at load
+    if (!RblIsLitShaderValid(litInstanced) || !RblSetScene(&scene))
     {
         printf("bench_geometry: instanced lit shader failed\n");
         return 1;
     }
     material = LoadMaterialDefault();
-    material.shader = lit.shader;
+    material.shader = lit;
     material.maps[MATERIAL_MAP_ALBEDO].texture = atlas;
     materialInstanced = LoadMaterialDefault();
-    materialInstanced.shader = litInstanced.shader;
+    materialInstanced.shader = litInstanced;
     materialInstanced.maps[MATERIAL_MAP_ALBEDO].texture = atlas;
 
     batch = RblLoadBatch(MAX_BILLBOARDS);     // enough for the largest case: never grows
@@ -802,11 +808,11 @@ int main(int argc, char **argv)
 
     RblUnloadBatch(&batch);
     RblUnloadInstanceBuffer(&instanceBuffer);
-    RblClose();
-    RblUnloadLitShader(lit);
-    RblUnloadLitShader(litInstanced);
+    RblUnloadLitShader(&lit);
+    RblUnloadLitShader(&litInstanced);
     MemFree(material.maps);
     MemFree(materialInstanced.maps);
+    RblClose();                                 // after the Unload calls
     UnloadTexture(atlas);
     UnloadRenderTexture(target);
     FreeScene();

@@ -7,13 +7,15 @@
 //                default (unlit) shader. One timed run draws every case once, each lit frame right
 //                after a baseline frame (a slow phase of a noisy machine hits all cases alike); the
 //                run's baseline is the median of its baseline frames and every lit case is also
-//                reported as its ratio to it (median of the per-run ratios). One extra case draws
+//                reported as its ratio to it (median of the per-run ratios); each case's scene (its
+//                lights, RblSetScene) is set before its frame, outside the timed window. One extra case draws
 //                the quad through RblDrawBillboard with raylib's default shader (the header's draw
 //                path without lighting). Each frame: glFinish, draw, glFinish (GPU work included);
 //                medians over the timed runs. Every case is checked once to write every pixel.
 //   accuracy     error of the rendered RGBA8 image against the double-precision GGX reference
 //                (tests/lighting_reference.h) for dielectric GGX materials of perceptual roughness
-//                0.25, 0.5 and 0.8, rendered with the GGX variant and with the Blinn-Phong variant
+//                0.25, 0.5 and 0.8 (material values: RblLitShaderDesc holds compiled features only),
+//                rendered with the GGX variant and with the Blinn-Phong variant
 //                using the conventional mapping (see BlinnPhongShininess): how much accuracy the
 //                cheaper BRDF gives up. Also Blinn-Phong against its own reference (implementation
 //                error, not model error). 256x256, a tilted view of the plane z = 0 lit by 3 point
@@ -68,7 +70,8 @@ typedef struct Round {
     Frame frame;                    // target, camera, quad; path and material set per frame
     Material unlit;                 // raylib's default shader + albedo (RblDrawBillboard)
     Material lit[LIT_CASES];        // lit variants + albedo
-    RblLitShader shader[LIT_CASES];
+    Shader shader[LIT_CASES];
+    RblScene scene[LIT_CASES];      // each case's lights (GridLights of its count) and ambient
     bool ok[LIT_CASES];
     double baseMin, baseMax;        // spread of the per-run baselines (timed runs and warm-up)
 } Round;
@@ -123,6 +126,7 @@ static void RoundRun(void *ctx, double *out)
         base[nb++] = TimeFrame(&r->frame);
         r->frame.path = DRAW_RBL;
         r->frame.material = r->lit[i];
+        RblSetScene(&r->scene[i]);              // before the frame: TimeFrame's first glFinish absorbs the upload
         out[i] = TimeFrame(&r->frame);
     }
     double roundBase = (nb > 0)? BenchMedian(base, nb) : 0.0;
@@ -168,7 +172,7 @@ static void GridLights(RblLight *lights, int n)
 // Conventional Blinn-Phong exponent for a GGX perceptual roughness r: alpha = r^2 (Disney/Filament
 // remapping), and the Beckmann/Blinn-Phong equivalence alpha^2 = 2/(n + 2) (Walter et al. 2007;
 // Karis's "Specular BRDF reference") gives n = 2/alpha^2 - 2. Kept >= 1: roughness 1 would give
-// n = 0, which RblLitShaderDesc.shininess reads as "default" (32), not as the broadest lobe.
+// n = 0, which the material's shininess (MATERIAL_MAP_NORMAL.value) reads as "default" (32), not as the broadest lobe.
 static float BlinnPhongShininess(float roughness)
 {
     double alpha = (double)roughness*roughness;
@@ -210,18 +214,41 @@ static int AccuracyLights(RblLight lights[3])
 
 static bool InsidePlane(D3 p) { return (fabs(p.x) < ACC_PLANE*0.5) && (fabs(p.y) < ACC_PLANE*0.5); }
 
-// Renders the accuracy scene with desc and compares it with the reference computed for refDesc;
-// false when the shader failed to load
-static bool MeasureAccuracy(RenderTexture2D target, Material material, RblLitShaderDesc desc, RblLitShaderDesc refDesc,
+// What the reference reads for a BRDF and its material values (the values 0.3's desc held)
+static RefParams ShadingOf(int brdf, RtMaterialValues values)
+{
+    RefParams d;
+    memset(&d, 0, sizeof(d));
+    d.brdf = brdf;
+    d.specular = values.specular;
+    d.shininess = values.shininess;
+    d.specularColor = values.specularColor;
+    d.roughness = values.roughness;
+    d.metalness = values.metalness;
+    d.emissiveColor = values.emissiveColor;
+    d.emissiveIntensity = values.emissiveIntensity;
+    return d;
+}
+
+// Renders the accuracy scene with the brdf's variant and the material values, and compares it with the
+// reference computed for refParams; false when the shader failed to load or the scene was rejected
+static bool MeasureAccuracy(RenderTexture2D target, Material material, int brdf, RtMaterialValues materialValues, RefParams refParams,
                             Color albedo, Color ambient, ErrorStats *stats)
 {
     RblLight lights[3];
     int count = AccuracyLights(lights);
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.brdf = brdf;
     desc.maxLights = count;
-    RblLitShader lit = RblLoadLitShader(desc);
+    Shader lit = RblLoadLitShader(desc);
     if (!RblIsLitShaderValid(lit)) return false;
-    if (!RblSetLights(&lit, lights, count, ambient)) { RblUnloadLitShader(lit); return false; }
-    material.shader = lit.shader;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights; scene.lightCount = count; scene.ambient = ambient;
+    if (!RblSetScene(&scene)) { RblUnloadLitShader(&lit); return false; }
+    material.shader = lit;
+    rtSetMaterialValues(&material, materialValues);
 
     Camera3D camera = AccuracyCamera();
     RblBillboard quad;
@@ -239,7 +266,7 @@ static bool MeasureAccuracy(RenderTexture2D target, Material material, RblLitSha
     EndMode3D();
     EndTextureMode();
     Image img = rtReadTarget(target);
-    RblUnloadLitShader(lit);
+    RblUnloadLitShader(&lit);
 
     RefEnvironment env;
     memset(&env, 0, sizeof(env));
@@ -269,7 +296,7 @@ static bool MeasureAccuracy(RenderTexture2D target, Material material, RblLitSha
             }
             if (!interior) continue;
             surface.position = hit;
-            RefRgb ref = refFinish(&refDesc, refShade(&refDesc, lights, count, &env, &surface, eye), hit, eye);
+            RefRgb ref = refFinish(&refParams, refShade(&refParams, lights, count, &env, &surface, eye), hit, eye);
             const unsigned char *c = px + ((size_t)y*ACC_SIZE + x)*4;
             double r[3] = { ref.r, ref.g, ref.b };
             for (int ch = 0; ch < 3; ch++)
@@ -334,22 +361,37 @@ int main(void)
     f->material = rd.unlit;
     missing = UncoveredPixels(f);
     if (missing > 0) { printf("bench_lighting: RblDrawBillboard (unlit) leaves %d pixels unwritten\n", missing); problems++; }
+    // each light count's lights (the scenes point here), checked once by RblSetScene; every lit program
+    // receives each case's scene, and those with fewer slots light its first lights (a LOG_INFO line)
+    static RblLight grid[LIGHT_COUNTS][RBL_MAX_LIGHTS];
+    bool gridOk[LIGHT_COUNTS];
+    for (int c = 0; c < LIGHT_COUNTS; c++)
+    {
+        GridLights(grid[c], lightCounts[c]);
+        RblScene check;
+        memset(&check, 0, sizeof(check));
+        check.lights = grid[c]; check.lightCount = lightCounts[c]; check.ambient = (Color){ 20, 20, 24, 255 };
+        gridOk[c] = RblSetScene(&check);
+    }
     for (int b = 0; b < 3; b++)
         for (int c = 0; c < LIGHT_COUNTS; c++)
         {
             int i = b*LIGHT_COUNTS + c;
-            RblLight lights[RBL_MAX_LIGHTS];
-            GridLights(lights, lightCounts[c]);
             RblLitShaderDesc desc;
             memset(&desc, 0, sizeof(desc));
             desc.maxLights = lightCounts[c];
             desc.brdf = brdfs[b];
             rd.shader[i] = RblLoadLitShader(desc);
-            rd.ok[i] = RblIsLitShaderValid(rd.shader[i]) && RblSetLights(&rd.shader[i], lights, lightCounts[c], (Color){ 20, 20, 24, 255 });
+            memset(&rd.scene[i], 0, sizeof(rd.scene[i]));
+            rd.scene[i].lights = grid[c];
+            rd.scene[i].lightCount = lightCounts[c];
+            rd.scene[i].ambient = (Color){ 20, 20, 24, 255 };
+            rd.ok[i] = RblIsLitShaderValid(rd.shader[i]) && gridOk[c];
             if (!rd.ok[i]) { printf("bench_lighting: %s with %d lights: shader or lights rejected\n", brdfName[b], lightCounts[c]); problems++; continue; }
             rd.lit[i] = rd.unlit;
-            rd.lit[i].shader = rd.shader[i].shader;
+            rd.lit[i].shader = rd.shader[i];
             f->material = rd.lit[i];
+            RblSetScene(&rd.scene[i]);
             missing = UncoveredPixels(f);
             if (missing > 0) { printf("bench_lighting: %s_%dlights leaves %d pixels unwritten\n", brdfName[b], lightCounts[c], missing); problems++; }
         }
@@ -365,7 +407,7 @@ int main(void)
     {
         litMs[i/LIGHT_COUNTS][i%LIGHT_COUNTS] = rd.ok[i]? med[i] : -1.0;
         litRatio[i/LIGHT_COUNTS][i%LIGHT_COUNTS] = med[LIT_CASES + i];
-        if (rd.ok[i]) RblUnloadLitShader(rd.shader[i]);
+        if (rd.ok[i]) RblUnloadLitShader(&rd.shader[i]);
     }
     MemFree(rd.unlit.maps);
     UnloadRenderTexture(f->target);
@@ -390,7 +432,7 @@ int main(void)
     // Blinn-Phong specular intensity: the header's normalised Blinn-Phong is
     // specular*(n + 8)/8*NdotH^n (pi folded in), which approximates the microfacet specular D*V*F
     // at F = F0 (Blinn-Phong D = (n + 2)/(2 pi)*NdotH^n with the implicit visibility 1/4); a
-    // dielectric GGX material has F0 = 0.04, so desc.specular = 0.04 (no Fresnel rise at grazing
+    // dielectric GGX material has F0 = 0.04, so the material's specular = 0.04 (no Fresnel rise at grazing
     // angles: part of the model error measured here). Diffuse is the same Lambert term in both.
     const float roughness[ROUGHNESS_COUNT] = { 0.25f, 0.5f, 0.8f };
     const Color accAlbedo = { 180, 130, 100, 255 }, accAmbient = { 20, 20, 24, 255 };
@@ -405,19 +447,18 @@ int main(void)
     const char *accName[3] = { "ggx", "blinn_phong", "blinn_phong_self" };
     for (int r = 0; r < ROUGHNESS_COUNT; r++)
     {
-        RblLitShaderDesc ggx;
+        RtMaterialValues ggx;
         memset(&ggx, 0, sizeof(ggx));
-        ggx.brdf = RBL_BRDF_GGX;
         ggx.roughness = roughness[r];
         ggx.metalness = 0.0f;
-        RblLitShaderDesc bp;
+        RtMaterialValues bp;
         memset(&bp, 0, sizeof(bp));
-        bp.brdf = RBL_BRDF_BLINN_PHONG;
         bp.shininess = shininess[r] = BlinnPhongShininess(roughness[r]);
         bp.specular = 0.04f;
-        accOk[r][0] = MeasureAccuracy(accTarget, accMat, ggx, ggx, accAlbedo, accAmbient, &err[r][0]);
-        accOk[r][1] = MeasureAccuracy(accTarget, accMat, bp, ggx, accAlbedo, accAmbient, &err[r][1]);
-        accOk[r][2] = MeasureAccuracy(accTarget, accMat, bp, bp, accAlbedo, accAmbient, &err[r][2]);
+        RefParams ggxRef = ShadingOf(RBL_BRDF_GGX, ggx), bpRef = ShadingOf(RBL_BRDF_BLINN_PHONG, bp);
+        accOk[r][0] = MeasureAccuracy(accTarget, accMat, RBL_BRDF_GGX, ggx, ggxRef, accAlbedo, accAmbient, &err[r][0]);
+        accOk[r][1] = MeasureAccuracy(accTarget, accMat, RBL_BRDF_BLINN_PHONG, bp, ggxRef, accAlbedo, accAmbient, &err[r][1]);
+        accOk[r][2] = MeasureAccuracy(accTarget, accMat, RBL_BRDF_BLINN_PHONG, bp, bpRef, accAlbedo, accAmbient, &err[r][2]);
         for (int k = 0; k < 3; k++)
         {
             char name[64];

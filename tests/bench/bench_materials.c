@@ -232,6 +232,9 @@ static bool DecodeCostRows(Image albedo, Image normalMap, double ms[4])
     RblLight light;
     memset(&light, 0, sizeof(light));
     light.position = (Vector3){ 1.0f, 1.0f, 2.0f }; light.color = WHITE; light.intensity = 4.0f;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 40, 40, 40, 255 };
     for (int e = 0; e < 4; e++)
     {
         RblMaterialSource src;
@@ -246,16 +249,16 @@ static bool DecodeCostRows(Image albedo, Image normalMap, double ms[4])
         RblLitShaderDesc desc;
         memset(&desc, 0, sizeof(desc));
         desc.material = packed.layout;
-        RblLitShader lit = RblLoadLitShader(desc);
-        RblSetLights(&lit, &light, 1, (Color){ 40, 40, 40, 255 });
-        f.material.shader = lit.shader;
+        Shader lit = RblLoadLitShader(desc);
+        RblSetScene(&scene);
+        f.material.shader = lit;
         BenchTiming timing = { 3, 15, 40, 3e9 };
         double median = 0.0;
         BenchMedianOfRuns(DecodeRun, &f, 1, timing, &median);
         ms[e] = median*1e-6;
         BenchCsvRow(SUITE, names[e], "ms_per_frame_1280x720", ms[e], "ms");
         if (e > 0) BenchCsvRow(SUITE, names[e], "decode_ns_per_pixel", (ms[e] - ms[0])*1e6/(DECODE_W*DECODE_H), "ns");
-        RblUnloadLitShader(lit);
+        RblUnloadLitShader(&lit);
         UnloadTexture(f.material.maps[MATERIAL_MAP_ALBEDO].texture);
         if (f.material.maps[MATERIAL_MAP_NORMAL].texture.id != 0) UnloadTexture(f.material.maps[MATERIAL_MAP_NORMAL].texture);
         MemFree(f.material.maps);

@@ -28,10 +28,12 @@
 //                and texel grids obliquely; drawn only into the shadow map), for desc.shadowFilter 1, 2,
 //                3, 4 and 6 ((n + 1)^2 depth fetches per pixel), against the same receiver variant built
 //                with desc.shadowMaps = 0 (the unshadowed baseline) and raylib's own DrawBillboardPro of
-//                the floor (unlit). Also timed: the pcf 2 shadow variant given no map (RblSetShadows with
-//                count 0, nothing shadowed): what compiling shadow support in costs a scene without
-//                shadows. The shadow map is rendered once (untimed); each timed frame calls
-//                RblSetLights and RblSetShadows, then draws the floor: glFinish, draw, glFinish. One run
+//                the floor (unlit). Also timed: the pcf 2 shadow variant given no map (a scene with
+//                shadowMapCount 0, nothing shadowed): what compiling shadow support in costs a scene without
+//                shadows. The shadow map is rendered once (untimed); each timed frame calls RblSetScene
+//                (the scene with the map for the shadowed variants, without it for the unshadowed and
+//                no-map ones; it uploads to every live lit program), then draws the floor: glFinish,
+//                draw, glFinish. One run
 //                times raylib once, then each shadowed variant right after an unshadowed frame; ratios
 //                are medians of per-run ratios (bench_lighting's scheme).
 //   edge error   for each filter, the rendered RGBA8 image against the analytic hard shadow computed in
@@ -121,10 +123,11 @@ typedef struct PassScene {
     Camera3D viewer;                // the colour pass's camera: billboards face it in every path
     Camera3D lightCamera;           // raylib orthographic camera over the light's view (baseline)
     RblLight light;
+    RblScene scene;                 // the light alone (RblBeginShadowMap takes the scene's light index)
     Vector3 focus;
     float radius;
     Texture2D sprite;
-    RblLitShader lit, litInstanced; // the colour pass's materials (the shadow pass swaps the casters in)
+    Shader lit, litInstanced;       // the colour pass's materials (the shadow pass swaps the casters in)
     Material material, materialInstanced;
     RblBatch batch;
     RblInstanceBuffer instances;
@@ -154,8 +157,9 @@ typedef struct Receiver {
     RblBillboard floor;
     RblLight light;
     Color ambient;
+    RblScene scene, sceneNoMap;     // light and ambient, with the map (shadowed variants) and without
     Texture2D white;
-    RblLitShader shader[RX_VARIANTS];  // [0] unused (raylib)
+    Shader shader[RX_VARIANTS];     // [0] unused (raylib)
     Material material[RX_VARIANTS];
     RblShadowMap map;
     bool ok[RX_VARIANTS];
@@ -235,6 +239,8 @@ static bool BuildPassScene(PassScene *p)
     p->light.intensity = 1.0f;
     p->focus = (Vector3){ 0.0f, 1.5f, -6.0f };
     p->radius = PASS_FOCUS_RADIUS;
+    p->scene.lights = &p->light;
+    p->scene.lightCount = 1;
     // The light's view as RblBeginShadowMap builds it: eye 2r before the focus centre, orthographic
     // over 2r (raylib's orthographic fovy = view height); the header snaps the window to whole texels
     float l = sqrtf(p->light.direction.x*p->light.direction.x + p->light.direction.y*p->light.direction.y + p->light.direction.z*p->light.direction.z);
@@ -267,7 +273,7 @@ static double PassFrame(PassScene *p, PassPath path, int count, int s)
         EndMode3D();
         EndTextureMode();
     }
-    else if (RblBeginShadowMap(&p->maps[s], &p->light, 0, p->focus, p->radius))
+    else if (RblBeginShadowMap(&p->maps[s], &p->scene, 0, p->focus, p->radius))
     {
         if ((path == PASS_BATCHED) && (count > 0))
         {
@@ -373,12 +379,7 @@ static RblBillboard Card(void)
 static void DrawReceiver(Receiver *r, int v)
 {
     r->frameOk = true;
-    if (v != RX_RAYLIB)
-    {
-        r->frameOk = RblSetLights(&r->shader[v], &r->light, 1, r->ambient);
-        if (v == RX_NOMAP) r->frameOk = RblSetShadows(&r->shader[v], NULL, 0) && r->frameOk;
-        else if (v != RX_UNSHADOWED) r->frameOk = RblSetShadows(&r->shader[v], &r->map, 1) && r->frameOk;
-    }
+    if (v != RX_RAYLIB) r->frameOk = RblSetScene(((v == RX_UNSHADOWED) || (v == RX_NOMAP))? &r->sceneNoMap : &r->scene);
     BeginTextureMode(r->target);
     ClearBackground(BLANK);                 // alpha 0: coverage check
     BeginMode3D(r->camera);
@@ -593,10 +594,10 @@ int main(void)
     pd.instanced = true;
     p->litInstanced = RblLoadLitShader(pd);
     p->material = LoadMaterialDefault();
-    p->material.shader = p->lit.shader;
+    p->material.shader = p->lit;
     p->material.maps[MATERIAL_MAP_ALBEDO].texture = p->sprite;
     p->materialInstanced = LoadMaterialDefault();
-    p->materialInstanced.shader = p->litInstanced.shader;
+    p->materialInstanced.shader = p->litInstanced;
     p->materialInstanced.maps[MATERIAL_MAP_ALBEDO].texture = p->sprite;
     p->batch = RblLoadBatch(PASS_MAX);
     p->instances = RblLoadInstanceBuffer(PASS_MAX);
@@ -674,6 +675,9 @@ int main(void)
     r->light.color = WHITE;
     r->light.intensity = 1.0f;
     r->ambient = (Color){ 40, 40, 40, 255 };
+    r->sceneNoMap.lights = &r->light;
+    r->sceneNoMap.lightCount = 1;
+    r->sceneNoMap.ambient = r->ambient;
     Image whiteImg = GenImageColor(4, 4, WHITE);
     r->white = LoadTextureFromImage(whiteImg);
     UnloadImage(whiteImg);
@@ -690,7 +694,7 @@ int main(void)
         d.shadowFilter = (v == RX_UNSHADOWED)? 0 : ((v == RX_NOMAP)? RX_NOMAP_FILTER : rxFilters[v - RX_UNSHADOWED - 1]);
         r->shader[v] = RblLoadLitShader(d);
         r->material[v] = LoadMaterialDefault();
-        r->material[v].shader = r->shader[v].shader;
+        r->material[v].shader = r->shader[v];
         r->material[v].maps[MATERIAL_MAP_ALBEDO].texture = r->white;
         r->ok[v] = RblIsLitShaderValid(r->shader[v]);
         if (!r->ok[v]) { printf("bench_shadows: receiver variant %d failed to load\n", v); problems++; }
@@ -700,13 +704,16 @@ int main(void)
     rsd.size = RX_MAP;
     r->map = RblLoadShadowMap(rsd);
     RblBillboard card = Card();
-    bool mapOk = RblIsShadowMapValid(r->map) && RblBeginShadowMap(&r->map, &r->light, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, RX_FOCUS);
+    bool mapOk = RblIsShadowMapValid(r->map) && RblBeginShadowMap(&r->map, &r->sceneNoMap, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, RX_FOCUS);
     if (mapOk)
     {
         RblDrawBillboard(r->camera, r->material[RX_UNSHADOWED], card);    // FIXED: the camera does not matter
         RblEndShadowMap(&r->map);
     }
     else { printf("bench_shadows: receiver shadow map failed: shadowed rows skipped\n"); problems++; }
+    r->scene = r->sceneNoMap;           // the rendered map, received by the shadowed variants
+    r->scene.shadowMaps = &r->map;
+    r->scene.shadowMapCount = 1;
     for (int k = 0; k < RX_FILTERS; k++) r->ok[RX_UNSHADOWED + 1 + k] = r->ok[RX_UNSHADOWED + 1 + k] && mapOk;
 
     // Analytic values and the edge error (untimed; also warms every variant up)
@@ -728,8 +735,11 @@ int main(void)
     surface.specularMap = -1.0;
     surface.occlusion = 1.0;
     D3 eye = d3f(r->camera.position);
-    RefRgb litRef = refFinish(&rd, refShade(&rd, &r->light, 1, &env, &surface, eye), surface.position, eye);
-    RefRgb darkRef = refFinish(&rd, refShade(&rd, &r->light, 0, &env, &surface, eye), surface.position, eye);
+    RefParams rp;                       // the receivers' program and material: Lambert, every value default
+    memset(&rp, 0, sizeof(rp));
+    rp.brdf = rd.brdf;
+    RefRgb litRef = refFinish(&rp, refShade(&rp, &r->light, 1, &env, &surface, eye), surface.position, eye);
+    RefRgb darkRef = refFinish(&rp, refShade(&rp, &r->light, 0, &env, &surface, eye), surface.position, eye);
     int litByte = (int)floor(litRef.r*255.0 + 0.5), darkByte = (int)floor(darkRef.r*255.0 + 0.5);
     EdgeStats edge[RX_FILTERS];
     memset(edge, 0, sizeof(edge));
@@ -738,7 +748,7 @@ int main(void)
     {
         if (!r->ok[v]) continue;
         DrawReceiver(r, v);
-        if (!r->frameOk) { printf("bench_shadows: receiver variant %d: lights or shadows rejected\n", v); problems++; r->ok[v] = false; continue; }
+        if (!r->frameOk) { printf("bench_shadows: receiver variant %d: scene (lights, shadow map) rejected\n", v); problems++; r->ok[v] = false; continue; }
         Image img = rtReadTarget(r->target);
         const unsigned char *px = (const unsigned char *)img.data;
         int missing = 0, worst = 0;
@@ -843,17 +853,20 @@ int main(void)
     for (int s = 0; s < MAP_SIZES; s++) { RblUnloadShadowMap(&p->maps[s]); UnloadRenderTexture(p->targets[s]); }
     RblUnloadBatch(&p->batch);
     RblUnloadInstanceBuffer(&p->instances);
-    if (RblIsLitShaderValid(p->lit)) RblUnloadLitShader(p->lit);
-    if (RblIsLitShaderValid(p->litInstanced)) RblUnloadLitShader(p->litInstanced);
+    if (RblIsLitShaderValid(p->lit)) RblUnloadLitShader(&p->lit);
+    if (RblIsLitShaderValid(p->litInstanced)) RblUnloadLitShader(&p->litInstanced);
     MemFree(p->material.maps);
     MemFree(p->materialInstanced.maps);
     UnloadTexture(p->sprite);
     free(p->billboards);
     free(p->instanceSet);
+    RblScene none;                      // the scene no longer lists the map unloaded below
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
     RblUnloadShadowMap(&r->map);
     for (int v = 1; v < RX_VARIANTS; v++)
     {
-        if (RblIsLitShaderValid(r->shader[v])) RblUnloadLitShader(r->shader[v]);
+        if (RblIsLitShaderValid(r->shader[v])) RblUnloadLitShader(&r->shader[v]);
         MemFree(r->material[v].maps);
     }
     UnloadTexture(r->white);
@@ -910,7 +923,7 @@ int main(void)
     {
         char label[32];
         snprintf(label, sizeof(label), "pcf %d, no map", RX_NOMAP_FILTER);
-        printf("  %-16s %9.2f %7.2fx %7.2fx %7d | shadow variant, RblSetShadows(count 0): lit value max err %d/255\n", label, rmed[RV_MS(RX_NOMAP)],
+        printf("  %-16s %9.2f %7.2fx %7.2fx %7d | shadow variant, scene without maps: lit value max err %d/255\n", label, rmed[RV_MS(RX_NOMAP)],
                rmed[RV_RATIO_BASE(RX_SHADOWED - 1)], rmed[RV_RATIO_RAYLIB(RX_NOMAP)], 0, noMapErr);
     }
     printf("  ideal width (box of n texels over the texel step, edge positions uniform):");

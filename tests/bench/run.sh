@@ -28,6 +28,10 @@ echo "== bench_shadows"
 BENCH_CSV="$csv" "$BUILD/bench/bench_shadows"
 
 echo
+echo "== bench_api"
+BENCH_CSV="$csv" "$BUILD/bench/bench_api"
+
+echo
 echo "== $csv"
 if command -v column >/dev/null 2>&1; then
   column -t -s, "$csv"

@@ -40,7 +40,8 @@ static Image bulgeNormals(int w, int h)
 }
 
 // Blinn-Phong (top row, shininess 8..512) and GGX (bottom row, roughness 0.1..0.9): in each cell a
-// raylib sphere Model and a billboard disc with spherical normals (roundness 1), same shader, same lights
+// raylib sphere Model and a billboard disc with spherical normals (roundness 1), same program, same
+// lights. One program per row: the cells differ only in their Material's values
 static bool lightingPicture(const char *dir)
 {
     const int w = 640, h = 300;
@@ -51,6 +52,7 @@ static bool lightingPicture(const char *dir)
     SetTextureFilter(discTexture, TEXTURE_FILTER_BILINEAR);
     Mesh sphereMesh = GenMeshSphere(0.5f, 32, 32);
     Model sphere = LoadModelFromMesh(sphereMesh);
+    Material sphereDefault = sphere.materials[0];       // restored before UnloadModel (the cells' materials are freed per cell)
     RblLight lights[3];
     memset(lights, 0, sizeof(lights));
     lights[0].position = (Vector3){ -2.0f, 3.0f, 4.0f }; lights[0].color = (Color){ 255, 236, 210, 255 }; lights[0].intensity = 30.0f; lights[0].range = 20.0f;
@@ -64,34 +66,39 @@ static bool lightingPicture(const char *dir)
     cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
     cam.fovy = 32.0f;
     cam.projection = CAMERA_PERSPECTIVE;
+    Shader shaders[2];                                  // [row]: Blinn-Phong, GGX
+    for (int row = 0; row < 2; row++)
+    {
+        RblLitShaderDesc d;
+        memset(&d, 0, sizeof(d));
+        d.maxLights = 3;
+        d.lightFeatures = RblLightFeatures(lights, 3);
+        d.brdf = row? RBL_BRDF_GGX : RBL_BRDF_BLINN_PHONG;
+        d.tonemap = RBL_TONEMAP_ACES;
+        shaders[row] = RblLoadLitShader(d);
+    }
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights;
+    scene.lightCount = 3;
+    scene.ambient = (Color){ 30, 30, 36, 255 };
+    bool sceneSet = RblSetScene(&scene);
     RenderTexture2D rt = LoadRenderTexture(w, h);
     BeginTextureMode(rt);
     ClearBackground((Color){ 24, 26, 32, 255 });
     BeginMode3D(cam);
     const float shininess[4] = { 8.0f, 32.0f, 128.0f, 512.0f }, roughness[4] = { 0.1f, 0.3f, 0.6f, 0.9f };
-    RblLitShader shaders[8];
-    int loaded = 0;
     for (int row = 0; row < 2; row++)
         for (int col = 0; col < 4; col++)
         {
-            RblLitShaderDesc d;
-            memset(&d, 0, sizeof(d));
-            d.maxLights = 3;
-            d.lightFeatures = RblLightFeatures(lights, 3);
-            d.brdf = row? RBL_BRDF_GGX : RBL_BRDF_BLINN_PHONG;
-            d.shininess = shininess[col]; d.specular = 0.6f;
-            d.roughness = roughness[col];
-            d.tonemap = RBL_TONEMAP_ACES;
-            RblLitShader lit = RblLoadLitShader(d);
-            if (!RblIsLitShaderValid(lit)) continue;
-            shaders[loaded++] = lit;
-            RblSetLights(&lit, lights, 3, (Color){ 30, 30, 36, 255 });
+            if (!RblIsLitShaderValid(shaders[row])) continue;
             Material m = LoadMaterialDefault();
-            m.shader = lit.shader;
+            m.shader = shaders[row];
+            rtSetMaterialValues(&m, (RtMaterialValues){ .specular = 0.6f, .shininess = shininess[col], .roughness = roughness[col] });
             m.maps[MATERIAL_MAP_ALBEDO].color = row? (Color){ 200, 80, 60, 255 } : (Color){ 70, 130, 200, 255 };
             float x = -4.2f + col*2.8f, y = row? -0.9f : 0.9f;
             sphere.materials[0] = m;
-            DrawModel(sphere, (Vector3){ x - 0.55f, y, 0.0f }, 1.0f, WHITE);
+            RblDrawModel(sphere, (Vector3){ x - 0.55f, y, 0.0f }, 1.0f, WHITE);
             m.maps[MATERIAL_MAP_ALBEDO].texture = discTexture;
             RblBillboard b;
             memset(&b, 0, sizeof(b));
@@ -109,12 +116,12 @@ static bool lightingPicture(const char *dir)
     Image img = rtReadTarget(rt);
     char path[512];
     snprintf(path, sizeof(path), "%s/rbl_lighting.png", dir);
-    bool ok = ExportImage(img, path);
+    bool ok = sceneSet && RblIsLitShaderValid(shaders[0]) && RblIsLitShaderValid(shaders[1]) && ExportImage(img, path);
     printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
     UnloadImage(img);
     UnloadRenderTexture(rt);
-    for (int i = 0; i < loaded; i++) RblUnloadLitShader(shaders[i]);
-    sphere.materials[0] = LoadMaterialDefault();        // the drawn materials were freed above
+    for (int i = 0; i < 2; i++) RblUnloadLitShader(&shaders[i]);
+    sphere.materials[0] = sphereDefault;                // the drawn materials were freed above
     UnloadModel(sphere);
     UnloadTexture(discTexture);
     return ok;
@@ -176,26 +183,34 @@ static bool shadowsPicture(const char *dir)
     d.maxLights = 2;
     d.lightFeatures = RblLightFeatures(lights, 2);
     d.brdf = RBL_BRDF_BLINN_PHONG;
-    d.specular = 0.2f;
     d.tonemap = RBL_TONEMAP_ACES;
     d.shadowMaps = 2;                                   // every receiver samples both maps
-    RblLitShader lit = RblLoadLitShader(d);
+    Shader lit = RblLoadLitShader(d);
+    const RtMaterialValues values = { .specular = 0.2f };   // every material: Blinn-Phong specular intensity 0.2
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
     sd.size = 2048;
     RblShadowMap maps[2] = { RblLoadShadowMap(sd), RblLoadShadowMap(sd) };
     if (!RblIsLitShaderValid(lit) || !RblIsShadowMapValid(maps[0]) || !RblIsShadowMapValid(maps[1])) { printf("pictures: shadows unavailable\n"); return false; }
-    RblSetLights(&lit, lights, 2, (Color){ 44, 48, 60, 255 });
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights;
+    scene.lightCount = 2;
+    scene.ambient = (Color){ 44, 48, 60, 255 };
 
     Material treeMat = LoadMaterialDefault(), hoopMat = LoadMaterialDefault();
-    treeMat.shader = hoopMat.shader = lit.shader;
+    treeMat.shader = hoopMat.shader = lit;
+    rtSetMaterialValues(&treeMat, values);
+    rtSetMaterialValues(&hoopMat, values);
     treeMat.maps[MATERIAL_MAP_ALBEDO].texture = tree;
     hoopMat.maps[MATERIAL_MAP_ALBEDO].texture = hoop;
     Model ground = LoadModelFromMesh(GenMeshPlane(14.0f, 14.0f, 1, 1));
-    ground.materials[0].shader = lit.shader;
+    ground.materials[0].shader = lit;
+    rtSetMaterialValues(&ground.materials[0], values);
     ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
     Model cube = LoadModelFromMesh(GenMeshCube(0.9f, 0.9f, 0.9f));
-    cube.materials[0].shader = lit.shader;
+    cube.materials[0].shader = lit;
+    rtSetMaterialValues(&cube.materials[0], values);
     cube.materials[0].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 70, 130, 200, 255 };
     const float turn = 35.0f*DEG2RAD;                   // turned about +Y (raymath's MatrixRotateY)
     cube.transform.m0 = cosf(turn); cube.transform.m2 = -sinf(turn); cube.transform.m8 = sinf(turn); cube.transform.m10 = cosf(turn);
@@ -218,22 +233,25 @@ static bool shadowsPicture(const char *dir)
     const Material *spriteMat[2] = { &treeMat, &hoopMat };
 
     // Shadow passes (outside BeginTextureMode: they bind their own framebuffer): the sun over a fixed
-    // sphere around the scene, the spot over its cone out to its range
+    // sphere around the scene, the spot over its cone out to its range; then the scene lists both maps
+    // and is set (after the passes: RblSetScene reads their matrices)
     for (int k = 0; k < 2; k++)
     {
-        if (!RblBeginShadowMap(&maps[k], lights, k, (Vector3){ 0.0f, 0.8f, 0.0f }, 4.5f)) continue;
+        if (!RblBeginShadowMap(&maps[k], &scene, k, (Vector3){ 0.0f, 0.8f, 0.0f }, 4.5f)) continue;
         for (int i = 0; i < 2; i++) RblDrawBillboard(cam, *spriteMat[i], sprites[i]);
-        RblDrawModelShadow(cube, cubeAt, 1.0f, WHITE);
+        RblDrawModel(cube, cubeAt, 1.0f, WHITE);       // inside a shadow pass: drawn as a caster
         RblEndShadowMap(&maps[k]);
     }
-    bool ok = RblSetShadows(&lit, maps, 2);
+    scene.shadowMaps = maps;
+    scene.shadowMapCount = 2;
+    bool ok = RblSetScene(&scene);
 
     RenderTexture2D rt = LoadRenderTexture(w, h);
     BeginTextureMode(rt);
     ClearBackground((Color){ 24, 26, 32, 255 });
     BeginMode3D(cam);
-    DrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
-    DrawModel(cube, cubeAt, 1.0f, WHITE);
+    RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    RblDrawModel(cube, cubeAt, 1.0f, WHITE);
     for (int i = 0; i < 2; i++) RblDrawBillboard(cam, *spriteMat[i], sprites[i]);
     EndMode3D();
     DrawText("Shadows: warm sun (directional) + blue spot, one map each: the sun's shadows look blue, the spot's warm", 8, 6, 10, RAYWHITE);
@@ -249,7 +267,7 @@ static bool shadowsPicture(const char *dir)
     for (int k = 0; k < 2; k++) RblUnloadShadowMap(&maps[k]);
     MemFree(treeMat.maps); MemFree(hoopMat.maps);
     UnloadModel(ground); UnloadModel(cube);             // meshes and material maps, not the shader or textures
-    RblUnloadLitShader(lit);
+    RblUnloadLitShader(&lit);
     UnloadTexture(tree); UnloadTexture(hoop); UnloadTexture(floorTexture);
     return ok;
 }
@@ -263,13 +281,13 @@ int main(int argc, char **argv)
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = 2;
     desc.material.normalEncoding = RBL_NORMAL_RGB;
-    RblLitShader lit = RblLoadLitShader(desc);
+    Shader lit = RblLoadLitShader(desc);
     if (!RblIsLitShaderValid(lit)) return 1;
     Image si = signImage((Color){ 40, 110, 190, 255 }), ni = bulgeNormals(64, 96);
     Texture2D sign = LoadTextureFromImage(si), normals = LoadTextureFromImage(ni);
     UnloadImage(si); UnloadImage(ni);
     Material mat = LoadMaterialDefault();
-    mat.shader = lit.shader;
+    mat.shader = lit;
     mat.maps[MATERIAL_MAP_ALBEDO].texture = sign;
     mat.maps[MATERIAL_MAP_NORMAL].texture = normals;
     RblLight lights[2];
@@ -277,7 +295,12 @@ int main(int argc, char **argv)
     // A distant warm key light (nearly uniform over the scene) and a close blue fill on the right
     lights[0].position = (Vector3){ -20.0f, 25.0f, 30.0f }; lights[0].color = (Color){ 255, 230, 200, 255 }; lights[0].intensity = 1500.0f;
     lights[1].position = (Vector3){ 5.0f, 1.5f, 1.0f }; lights[1].color = (Color){ 90, 140, 255, 255 }; lights[1].intensity = 10.0f;
-    RblSetLights(&lit, lights, 2, (Color){ 40, 40, 50, 255 });
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights;
+    scene.lightCount = 2;
+    scene.ambient = (Color){ 40, 40, 50, 255 };
+    if (!RblSetScene(&scene)) return 1;
 
     Camera3D cam;
     memset(&cam, 0, sizeof(cam));
@@ -327,8 +350,8 @@ int main(int argc, char **argv)
     if (!shadowsPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
-    RblUnloadLitShader(lit);
-    RblClose();
+    RblUnloadLitShader(&lit);
+    RblClose();                                         // after the Unload calls
     rtCloseContext();
     return 0;
 }

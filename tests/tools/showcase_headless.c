@@ -25,7 +25,7 @@ static double NowMs(void)
 static void RenderFrame(RenderTexture2D target, int frame)
 {
     ShowcaseUpdate((float)frame/60.0f);
-    ShowcaseDrawShadows();                      // Shadow passes bind their own framebuffer: outside BeginTextureMode
+    ShowcaseDrawShadows();                      // Shadow pass (binds its own framebuffer: outside BeginTextureMode), then RblSetScene
     BeginTextureMode(target);
         ClearBackground(showcaseBackground);
         BeginMode3D(showcaseCamera);

@@ -1,0 +1,25 @@
+// Common: constants and helpers every stage shares (the one sRGB transfer pair, safe normalise).
+// Included first by every stage; includes nothing.
+
+#define RBL_PI 3.14159265358979
+#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf
+
+// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.
+vec3 rblSafeNormalize(vec3 v, vec3 fallback)
+{
+    float len2 = dot(v, v);
+    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;
+}
+
+// Exact sRGB transfer functions (IEC 61966-2-1). Every raylib Color, albedo and emissive texel is
+// sRGB; lighting runs in linear light.
+vec3 rblSrgbToLinear(vec3 c)
+{
+    return mix(c/12.92, pow((c + 0.055)/1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+
+vec3 rblLinearToSrgb(vec3 c)
+{
+    c = clamp(c, 0.0, 1.0);
+    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));
+}

@@ -1,0 +1,21 @@
+// Deferred ambient pass, fragment stage, full screen: the scene's ambient (first chunk) and up to
+// RBL_LIGHTS unbounded lights (directional, range 0), added into the accumulation target.
+//   RBL_COUNT_LIGHTS    add the number of lights evaluated instead of light (heat-map view)
+#include "gbuffer_read.glsl"
+#include "lights.glsl"
+
+in vec2 fragUv;
+out vec4 finalColor;
+
+void main()
+{
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(rblGDepth, texel, 0).r;
+    if (depth >= 1.0) discard;                          // background: nothing was drawn here
+#ifdef RBL_COUNT_LIGHTS
+    finalColor = vec4(vec3(float(rblLightCount)), 1.0);
+#else
+    RblShadingPoint s = rblGBufferSurface(texel, rblPositionFromDepth(texel, depth));
+    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);
+#endif
+}

@@ -1,0 +1,43 @@
+// Deferred resolve, fragment stage: the accumulated light through fog, exposure, tonemap and the
+// display encoding (output.glsl), writing the G-buffer's depth for later forward draws; debug views.
+#include "gbuffer_read.glsl"
+#include "output.glsl"
+
+in vec2 fragUv;
+uniform int rblDebugView;               // RblGBufferView
+uniform float rblDebugScale;            // linear depth / position / light count range of the debug views
+out vec4 finalColor;
+
+// Heat map for the light count view: black -> blue -> green -> yellow -> red -> white
+vec3 rblHeat(float t)
+{
+    t = clamp(t, 0.0, 1.0)*5.0;
+    vec3 c0 = vec3(0.0), c1 = vec3(0.0, 0.2, 1.0), c2 = vec3(0.0, 0.9, 0.3), c3 = vec3(1.0, 0.9, 0.0), c4 = vec3(1.0, 0.1, 0.0), c5 = vec3(1.0);
+    if (t < 1.0) return mix(c0, c1, t);
+    if (t < 2.0) return mix(c1, c2, t - 1.0);
+    if (t < 3.0) return mix(c2, c3, t - 2.0);
+    if (t < 4.0) return mix(c3, c4, t - 3.0);
+    return mix(c4, c5, t - 4.0);
+}
+
+void main()
+{
+    // The resolve covers the target with fragUv 0..1 (same size as the G-buffer expected; nearest texel otherwise)
+    ivec2 texel = ivec2(min(fragUv*vec2(textureSize(rblGDepth, 0)), vec2(textureSize(rblGDepth, 0) - 1)));
+    float depth = texelFetch(rblGDepth, texel, 0).r;
+    if (depth >= 1.0) discard;                          // background: nothing was drawn here
+    vec3 position = rblPositionFromDepth(texel, depth);
+    gl_FragDepth = depth;                               // later forward draws sort against this
+    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;
+    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }
+    RblShadingPoint s = rblGBufferSurface(texel, position);
+    vec3 v = vec3(0.0);
+    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);
+    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;
+    else if (rblDebugView == 3) v = vec3(s.specular);
+    else if (rblDebugView == 4) v = vec3(s.occlusion);
+    else if (rblDebugView == 5) v = vec3(clamp(length(position - rblEye)/rblDebugScale, 0.0, 1.0));
+    else if (rblDebugView == 6) v = fract(position/rblDebugScale);
+    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);
+    finalColor = vec4(v, 1.0);
+}

@@ -1,0 +1,37 @@
+// Deferred light volume pass, fragment stage: one bounded light per instance, added into the
+// accumulation target; pixels outside the light's range are rejected from depth alone.
+//   RBL_COUNT_LIGHTS    add 1 per light evaluated instead of light (heat-map view)
+#include "gbuffer_read.glsl"
+#include "lights.glsl"
+
+flat in vec4 volumePosition;
+flat in vec4 volumeColor;
+flat in vec4 volumeSpot;
+flat in vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)
+out vec4 finalColor;
+
+void main()
+{
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(rblGDepth, texel, 0).r;
+    if (depth >= 1.0) discard;                          // background: nothing was drawn here
+    vec3 position = rblPositionFromDepth(texel, depth);
+    // Most of a proxy's pixels lie outside the light's range
+    vec3 toLight = volumePosition.xyz - position;
+    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;
+#ifdef RBL_COUNT_LIGHTS
+    finalColor = vec4(1.0);
+#else
+    RblShadingPoint s = rblGBufferSurface(texel, position);
+    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);
+#if RBL_SHADOWS > 0
+    int map = int(volumeFalloff.w + 0.5) - 1;
+    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);
+    float NdotL = dot(s.normal, l);
+    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;
+#else
+    float shadow = 1.0;
+#endif
+    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);
+#endif
+}

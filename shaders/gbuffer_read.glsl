@@ -1,0 +1,53 @@
+// G-buffer read: the targets of the geometry pass as a lighting pass sees them, the world position
+// rebuilt from depth, and the surface unpacked (gbuffer_codec.glsl).
+#include "surface.glsl"
+#include "gbuffer_codec.glsl"
+
+uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion
+uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specular/roughness
+uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness
+uniform sampler2D rblGDepth;            // depth texture of the geometry pass
+uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)
+uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0
+uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's projection
+uniform mat4 rblInvView;                // inverse view (camera to world)
+uniform vec3 rblEye;                    // camera position
+
+// World position from the depth buffer, in closed form (an inverse projection matrix would cancel two
+// large terms). Perspective: view distance z = n f/(f - d (f - n)) from the window depth d, then x, y
+// along the pixel's ray. Orthographic: z = n + d (f - n), x, y straight from NDC. Then the inverse view.
+vec3 rblPositionFromDepth(ivec2 texel, float depth)
+{
+    vec2 ndc = (vec2(texel) + 0.5)/vec2(textureSize(rblGDepth, 0))*2.0 - 1.0;
+    vec3 view;
+    if (rblDepthLinear.w > 0.0)
+    {
+        float z = rblDepthLinear.x/(rblDepthLinear.z - depth*rblDepthLinear.y);
+        view = vec3(ndc*rblInvP*z, -z);
+    }
+    else view = vec3(ndc*rblInvP, -(rblDepthLinear.x + depth*rblDepthLinear.y));
+    return (rblInvView*vec4(view, 1.0)).xyz;
+}
+
+RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
+{
+    vec4 a = texelFetch(rblGAlbedo, texel, 0);
+    vec4 n = texelFetch(rblGNormal, texel, 0);
+    vec4 p = texelFetch(rblGParams, texel, 0);
+    RblShadingPoint s;
+    s.position = position;
+    s.normal = rblUnpackNormal(n.rgb);
+    s.albedo = rblSrgbToLinear(a.rgb);
+    s.occlusion = a.a;
+    s.specular = n.a;
+    s.specularColor = vec3(1.0);
+    s.shininess = 1.0;
+    s.metalness = 0.0;
+#if RBL_BRDF == 1
+    // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)
+    s.shininess = rblUnpackShininess(p.r, p.a);
+#elif RBL_BRDF == 2
+    s.metalness = p.r;
+#endif
+    return s;
+}

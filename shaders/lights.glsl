@@ -1,0 +1,165 @@
+// Lights: light and ambient uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,
+// GGX), and the sum over the light slots. Units: a light of linear colour c and intensity I delivers
+// irradiance E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the
+// light, so a white Lambert surface lit head-on by E = 1 returns exactly 1.
+//   RBL_LIGHTS n              light slots
+//   RBL_LIGHT_DIRECTIONAL     directional lights present (rblLightPosition.w = 0)
+//   RBL_LIGHT_SPOT            spot cones
+//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation
+//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)
+#include "surface.glsl"
+#include "shadows.glsl"
+
+#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)
+#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
+#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite
+
+#if RBL_LIGHTS > 0
+uniform int rblLightCount;
+uniform vec4 rblLightPosition[RBL_LIGHTS];  // xyz position, w 1; directional: xyz unit vector toward the light, w 0
+uniform vec4 rblLightColor[RBL_LIGHTS];     // rgb linear colour x intensity, a 1/range (0 = no window)
+#ifdef RBL_LIGHT_SPOT
+uniform vec4 rblLightSpot[RBL_LIGHTS];      // xyz cone axis * scale, w offset; (0,0,0,1) = no cone
+#endif
+#ifdef RBL_LIGHT_CLASSIC
+uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (windowed lights: 0, 0, 1)
+#endif
+#endif
+uniform vec3 rblAmbient;                    // linear sky colour (the scene's ambient)
+uniform vec3 rblAmbientGround;              // linear ground colour (= rblAmbient for a flat ambient)
+uniform vec3 rblAmbientUp;                  // unit
+#if RBL_SHADOWS > 0
+uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)
+#endif
+
+// Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0
+vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)
+{
+#if RBL_BRDF == 1
+    // Normalised Blinn-Phong: (n + 8)/(8 pi) NdotH^n, pi folded
+    vec3 h = rblSafeNormalize(l + v, s.normal);
+    float NdotH = max(dot(s.normal, h), 0.0);
+    float n = s.shininess;
+    return s.albedo + s.specularColor*(s.specular*(n + 8.0)/8.0*pow(NdotH, n));
+#elif RBL_BRDF == 2
+    // Cook-Torrance: GGX D, Smith height-correlated V, Schlick F; diffuse Lambert scaled by (1 - metalness)
+    float perceptual = max(s.specular, RBL_MIN_ROUGHNESS);
+    float a = perceptual*perceptual;
+    float a2 = a*a;
+    float metal = s.metalness;
+    vec3 f0 = mix(vec3(0.04), s.albedo, metal);
+    vec3 h = rblSafeNormalize(l + v, s.normal);
+    float NdotH = clamp(dot(s.normal, h), 0.0, 1.0);
+    vec3 nxh = cross(s.normal, h);                              // 1 - NdotH^2 without cancellation
+    float k = a/(dot(nxh, nxh) + NdotH*NdotH*a2);
+    float D = k*k*(1.0/RBL_PI);
+    float NdotV = max(dot(s.normal, v), RBL_MIN_NDOTV);
+    float V = 0.5/(NdotL*sqrt(NdotV*NdotV*(1.0 - a2) + a2) + NdotV*sqrt(NdotL*NdotL*(1.0 - a2) + a2));
+    float LdotH = clamp(dot(l, h), 0.0, 1.0);
+    float fw = pow(1.0 - LdotH, 5.0);
+    vec3 F = f0 + (1.0 - f0)*fw;
+    return s.albedo*(1.0 - metal) + (RBL_PI*D*V)*F;
+#else
+    return s.albedo;
+#endif
+}
+
+// Ambient: uniform light from every direction, attenuated by occlusion. GGX adds F0 times it (the
+// specular reflectance of a uniform environment, without a split-sum table).
+vec3 rblAmbientLight(RblShadingPoint s)
+{
+    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);
+#if RBL_BRDF == 2
+    vec3 reflectance = s.albedo*(1.0 - s.metalness) + mix(vec3(0.04), s.albedo, s.metalness);
+#else
+    vec3 reflectance = s.albedo;
+#endif
+    return ambient*s.occlusion*reflectance;
+}
+
+#if RBL_SHADOWS > 0
+// Light that map k shadows, at this point: the map's lookup, or 1 (unlit side, or no such light). Done
+// once per map before the light loop, not per light slot (CPU rasterisers run every branch of a loop)
+float rblShadowOfMap(int k, RblShadingPoint s, int light)
+{
+    if ((light < 0) || (light >= rblLightCount)) return 1.0;
+    vec4 p = rblLightPosition[light];
+    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);
+    float NdotL = dot(s.normal, l);
+    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;
+}
+#endif
+
+// One light at a surface point seen along v: p position (w 0: directional), c colour (a: 1/range),
+// spot cone (axis*scale, offset; (0,0,0,1) = none), k classic attenuation ((0,0,1) = inverse square),
+// shadow the fraction its shadow map lets through (1 = unshadowed)
+vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, float shadow)
+{
+#ifdef RBL_LIGHT_DIRECTIONAL
+    vec3 toLight = p.xyz - s.position*p.w;
+#else
+    vec3 toLight = p.xyz - s.position;
+#endif
+    float d2 = dot(toLight, toLight);
+    vec3 l = rblSafeNormalize(toLight, s.normal);      // a light on the surface lights it head-on
+    float NdotL = dot(s.normal, l);
+    if (NdotL <= 0.0) return vec3(0.0);
+    // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)
+    float x2 = d2*c.a*c.a;
+    float window = clamp(1.0 - x2*x2, 0.0, 1.0);
+#ifdef RBL_LIGHT_CLASSIC
+    float attenuation = window*window/max(k.x + k.y*sqrt(d2) + k.z*d2, RBL_MIN_DIST2);
+#else
+    float attenuation = window*window/max(d2, RBL_MIN_DIST2);
+#endif
+#ifdef RBL_LIGHT_SPOT
+    float t = clamp(dot(-l, spot.xyz) + spot.w, 0.0, 1.0);
+    attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone
+#endif
+    attenuation *= shadow;
+    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
+}
+
+// Sum of the light slots at a surface point seen from eye
+vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
+{
+    vec3 sum = vec3(0.0);
+#if RBL_LIGHTS > 0
+    vec3 v = rblSafeNormalize(eye - s.position, s.normal);
+#if RBL_SHADOWS > 0
+    vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows
+    shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);
+#if RBL_SHADOWS > 1
+    shadowed.y = rblShadowOfMap(1, s, rblShadowLight.y);
+#endif
+#if RBL_SHADOWS > 2
+    shadowed.z = rblShadowOfMap(2, s, rblShadowLight.z);
+#endif
+#if RBL_SHADOWS > 3
+    shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);
+#endif
+#endif
+    for (int i = 0; i < RBL_LIGHTS; i++)
+    {
+        if (i >= rblLightCount) break;
+#ifdef RBL_LIGHT_SPOT
+        vec4 spot = rblLightSpot[i];
+#else
+        vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+#ifdef RBL_LIGHT_CLASSIC
+        vec3 k = rblLightAttenuation[i];
+#else
+        vec3 k = vec3(0.0, 0.0, 1.0);
+#endif
+#if RBL_SHADOWS > 0
+        float shadow = (i == rblShadowLight.x)? shadowed.x : ((i == rblShadowLight.y)? shadowed.y :
+                       ((i == rblShadowLight.z)? shadowed.z : ((i == rblShadowLight.w)? shadowed.w : 1.0)));
+#else
+        float shadow = 1.0;
+#endif
+        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);
+    }
+#endif
+    return sum;
+}

@@ -1,0 +1,94 @@
+// Shadows: the shadow maps a receiver samples and the lookup (bias, receiver plane, PCF). Which
+// light a map shadows is the lights' business (lights.glsl, deferred_volume.fs.glsl).
+//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light
+//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup
+#include "common.glsl"
+
+#if RBL_SHADOWS > 0
+uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w
+uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far
+uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels
+uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))
+uniform sampler2D rblShadowMap0;            // depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)
+#if RBL_SHADOWS > 1
+uniform sampler2D rblShadowMap1;
+#endif
+#if RBL_SHADOWS > 2
+uniform sampler2D rblShadowMap2;
+#endif
+#if RBL_SHADOWS > 3
+uniform sampler2D rblShadowMap3;
+#endif
+#endif
+
+#if RBL_SHADOWS > 0
+// Distance along the light's axis from a window depth of map k (prm: texel, perspective, near, far)
+float rblShadowDistance(float d, vec4 prm)
+{
+    return (prm.y > 0.5)? prm.z*prm.w/(prm.w - d*(prm.w - prm.z)) : prm.z + d*(prm.w - prm.z);
+}
+
+// Fraction of light k's map lets through to a surface point with unit normal n, lit at cos(incidence)
+// NdotL (> 0). Depths are compared as distances along the light's axis, in world units:
+//   normal offset   the lookup moves along n by normal*texel*sin(incidence) (lateral shift <= that)
+//   receiver plane  each PCF fetch is compared with the receiver's own plane extended to that texel's
+//                   centre (depth gradient from n in the light's frame, clamped at 10 texels per
+//                   texel), so a flat receiver never shadows itself at any incidence below 84 degrees
+//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10
+// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2
+// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).
+// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch
+// outside the map or of a texel nothing was drawn into.
+float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
+{
+    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];
+    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);
+    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);
+    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here
+    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));
+    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);
+    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);
+    if (!(c.w > 0.0)) return 1.0;
+    vec3 q = c.xyz/c.w;
+    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;
+    float z = rblShadowDistance(max(q.z, 0.0), prm) - texel*(bias.x + bias.y*tanI);
+    // Receiver plane: distance change per texel step along the map's x and y
+    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);
+    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;
+    float size = bias.w;
+    vec2 st = q.xy*size - 0.5*float(RBL_SHADOW_FILTER);         // first bilinear tap's position - 0.5, in texels
+    vec2 base = floor(st), f = st - base;
+    ivec2 b0 = ivec2(base), top = ivec2(int(size) - 1);
+    vec2 origin = base + 0.5 - q.xy*size;                       // first fetched centre relative to the point
+    float lit = 0.0;
+    for (int j = 0; j <= RBL_SHADOW_FILTER; j++)
+    {
+        float wy = (j == 0)? 1.0 - f.y : ((j == RBL_SHADOW_FILTER)? f.y : 1.0);
+        for (int i = 0; i <= RBL_SHADOW_FILTER; i++)
+        {
+            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);
+            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder
+            ivec2 at = b0 + ivec2(i, j);
+            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;
+            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));
+            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;
+        }
+    }
+    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);
+}
+
+float rblShadow(int k, vec3 position, vec3 n, float NdotL)
+{
+    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);
+#if RBL_SHADOWS > 1
+    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);
+#endif
+#if RBL_SHADOWS > 2
+    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);
+#endif
+#if RBL_SHADOWS > 3
+    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);
+#endif
+    return 1.0;
+}
+#endif

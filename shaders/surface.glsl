@@ -1,0 +1,15 @@
+// Surface: what a shaded point is, in linear units. Filled by the material decode (material.glsl)
+// in forward and geometry passes, or from the G-buffer (gbuffer_read.glsl) in the deferred passes;
+// read by the lights (lights.glsl).
+#include "common.glsl"
+
+struct RblShadingPoint {
+    vec3 position;      // world
+    vec3 normal;        // unit, world
+    vec3 albedo;        // linear base colour
+    float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness
+    float occlusion;    // ambient occlusion (indirect light only)
+    vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)
+    float shininess;    // Blinn-Phong exponent
+    float metalness;    // GGX
+};
