@@ -446,8 +446,6 @@ typedef struct RblView {
     Vector3 right;                  // View matrix row 0 (unit)
     Vector3 up;                     // View matrix row 1 (unit)
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
-    Vector4 light;                  // Shadow pass: xyz toward the light (w 0) or its position (w 1); zero otherwise
-    float minCastSin;               // Shadow pass: AXIS billboards tilt until the light sees them at >= asin(this)
 } RblView;
 
 // A run of billboards sharing one material inside a batch
@@ -928,6 +926,13 @@ typedef struct rbl__Handle {
     unsigned int id;
 } rbl__Handle;
 
+// What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
+// >= asin(minSin) (zero outside shadow passes)
+typedef struct rbl__Cast {
+    Vector4 light;                  // xyz toward the light (w 0) or its position (w 1)
+    float minSin;
+} rbl__Cast;
+
 // The frame's scene, validated and packed once by RblSetScene
 typedef struct rbl__Scene {
     float *lights;                  // RBL__LIGHT_FLOATS per light: position, colour, spot (vec4 each), falloff (vec3), shadow map + 1
@@ -955,6 +960,7 @@ typedef struct rbl__State {
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
+    rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
     int shadowMapsLoaded;           // Live shadow maps: they share the two caster programs
     unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
@@ -2197,8 +2203,6 @@ RblView RblGetView(Camera3D camera)
     view.right = right;
     view.up = rbl__cross(back, right);
     view.back = back;
-    view.light.x = view.light.y = view.light.z = view.light.w = 0.0f;
-    view.minCastSin = 0.0f;
     return view;
 }
 
@@ -2225,7 +2229,7 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
 }
 
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal
-static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
+static void rbl__facingBasis(const RblView *view, const rbl__Cast *cast, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
 {
     Vector3 r = view->right, u = view->up, n = view->back;
     switch (b->facing)
@@ -2265,15 +2269,15 @@ static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3
             // sqrt(1 - k^2) (y, -x)/rho, k = min(s/rho, 1) (no inverse trig: CPU and GPU agree). An
             // upright sprite thus still casts under a light along its axis. r stays; n and u turn together.
             Vector3 l;
-            if ((view->minCastSin > 0.0f) &&
-                rbl__normalizeTo(rbl__v3(view->light.x - b->position.x*view->light.w, view->light.y - b->position.y*view->light.w,
-                                         view->light.z - b->position.z*view->light.w), &l))
+            if ((cast != NULL) && (cast->minSin > 0.0f) &&
+                rbl__normalizeTo(rbl__v3(cast->light.x - b->position.x*cast->light.w, cast->light.y - b->position.y*cast->light.w,
+                                         cast->light.z - b->position.z*cast->light.w), &l))
             {
                 float ln = rbl__dot(l, n), la = rbl__dot(l, a);
                 float x = fabsf(ln), y = fabsf(la), rho = sqrtf(x*x + y*y);
-                if ((x < view->minCastSin) && (rho > 0.0f))
+                if ((x < cast->minSin) && (rho > 0.0f))
                 {
-                    float k = fminf(view->minCastSin/rho, 1.0f), m = sqrtf(1.0f - k*k);
+                    float k = fminf(cast->minSin/rho, 1.0f), m = sqrtf(1.0f - k*k);
                     float sg = ((ln >= 0.0f) == (la >= 0.0f))? 1.0f : -1.0f;
                     float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
                     n = rbl__v3(nn.x*c + a.x*sn, nn.y*c + a.y*sn, nn.z*c + a.z*sn);
@@ -2297,12 +2301,12 @@ static void rbl__facingBasis(const RblView *view, const RblBillboard *b, Vector3
 // The facing frame of b, from the cache when it holds b's (CAMERA_PLANE: same up), else made and kept.
 // Made exactly as rbl__facingBasis(); a caller up is normalised here and its length kept (raylib
 // scales the quad's height by it).
-static void rbl__facingFrame(const RblView *view, const RblBillboard *b, RblFrameCache *cache)
+static void rbl__facingFrame(const RblView *view, const rbl__Cast *cast, const RblBillboard *b, RblFrameCache *cache)
 {
     if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) &&
         (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
     Vector3 R, U, N;
-    rbl__facingBasis(view, b, &R, &U, &N);
+    rbl__facingBasis(view, cast, b, &R, &U, &N);
     float ulen = 1.0f;
     if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
     {
@@ -2317,14 +2321,14 @@ static void rbl__facingFrame(const RblView *view, const RblBillboard *b, RblFram
     cache->facing = b->facing;
 }
 
-static bool rbl__billboardVertices(const RblView *view, RblFrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+static bool rbl__billboardVertices(const RblView *view, const rbl__Cast *cast, RblFrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
     // position .. source and up .. roundness are runs of floats (checked at compile time)
     if (!rbl__allFinite(&b->position, 12) || !rbl__allFinite(&b->up, 7)) return false;
     if ((b->facing < RBL_FACING_CAMERA_PLANE) || (b->facing > RBL_FACING_FIXED)) return false;
 
-    rbl__facingFrame(view, b, cache);
+    rbl__facingFrame(view, cast, b, cache);
     Vector3 R = cache->right, U = cache->up, N = cache->normal;
 
     // Rotate the frame around the normal (raylib rotates the corners; same result, fewer ops)
@@ -2426,7 +2430,7 @@ bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeig
     if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
     RblFrameCache cache;
     cache.facing = -1;
-    return rbl__billboardVertices(view, &cache, textureWidth, textureHeight, b, out);
+    return rbl__billboardVertices(view, NULL, &cache, textureWidth, textureHeight, b, out);
 }
 
 //----------------------------------------------------------------------------------
@@ -2563,7 +2567,7 @@ bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboa
         texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
         texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
     }
-    if ((billboard == NULL) || !rbl__billboardVertices(&batch->view, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    if ((billboard == NULL) || !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: batch: billboard skipped (NaN/Inf input, bad facing or texture size %ix%i); further skips this batch are not logged", texW, texH);
         return false;
@@ -2858,9 +2862,9 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
         view.right.x, view.right.y, view.right.z, desc.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
-        desc.up.x, desc.up.y, desc.up.z, view.minCastSin,
+        desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
         desc.axis.x, desc.axis.y, desc.axis.z, 0.0f,
-        view.light.x, view.light.y, view.light.z, view.light.w };
+        rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rbl__applyMaterialValues(program, &material);
@@ -5250,12 +5254,18 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 // light's own frame (desc.faceLight); AXIS billboards get the light and minimum angle to tilt by
 static void rbl__shadowPassView(RblView *view)
 {
-    const RblShadowMap *map = rbl__state.shadowPass;
-    if (map->desc.faceLight) *view = map->lightView;
+    if (rbl__state.shadowPass->desc.faceLight) *view = rbl__state.shadowPass->lightView;
+}
+
+// The light AXIS billboards tilt toward in map's pass
+static rbl__Cast rbl__castOf(const RblShadowMap *map)
+{
+    rbl__Cast cast;
     Vector3 toLight = rbl__neg(rbl__cross(map->lightView.up, map->lightView.right));    // = back
-    if (map->lightType == RBL_LIGHT_SPOT) { view->light.x = map->lightView.eye.x; view->light.y = map->lightView.eye.y; view->light.z = map->lightView.eye.z; view->light.w = 1.0f; }
-    else { view->light.x = toLight.x; view->light.y = toLight.y; view->light.z = toLight.z; view->light.w = 0.0f; }
-    view->minCastSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
+    if (map->lightType == RBL_LIGHT_SPOT) { cast.light.x = map->lightView.eye.x; cast.light.y = map->lightView.eye.y; cast.light.z = map->lightView.eye.z; cast.light.w = 1.0f; }
+    else { cast.light.x = toLight.x; cast.light.y = toLight.y; cast.light.z = toLight.z; cast.light.w = 0.0f; }
+    cast.minSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
+    return cast;
 }
 
 // Defaults applied; NULL or the reason it is rejected
@@ -5447,6 +5457,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlSetMatrixModelview(map->view);
     map->begun = true;
     rbl__state.shadowPass = map;
+    rbl__state.cast = rbl__castOf(map);
     return true;
 }
 
@@ -5461,6 +5472,7 @@ void RblEndShadowMap(RblShadowMap *map)
     rlDisableDepthTest();
     map->begun = false;
     rbl__state.shadowPass = NULL;
+    memset(&rbl__state.cast, 0, sizeof(rbl__state.cast));
     rbl__bindSceneShadows();        // the pass unbound the receivers' units
 }
 

@@ -434,24 +434,27 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
 {
     Camera3D cam = litCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f });
     RblView view = RblGetView(cam);
-    view.minCastSin = sinf(30.0f*PI/180.0f);
+    rbl__Cast cast;                 // what a shadow pass gives the CPU path (the header's internal frame input)
+    cast.minSin = sinf(30.0f*PI/180.0f);
     unsigned int seed = 4242u;
     double worstAngle = 90.0, worstOrtho = 0.0;
     for (int i = 0; i < 200; i++)
     {
         Vector3 L = { rtRandomRange(&seed, -0.3f, 0.3f), 1.0f, rtRandomRange(&seed, -0.3f, 0.3f) };   // near the +Y axis
         float l = sqrtf(L.x*L.x + L.y*L.y + L.z*L.z);
-        view.light = (Vector4){ L.x/l, L.y/l, L.z/l, 0.0f };
+        cast.light = (Vector4){ L.x/l, L.y/l, L.z/l, 0.0f };
         RblBillboard b;
         memset(&b, 0, sizeof(b));
         b.position = (Vector3){ rtRandomRange(&seed, -5, 5), 0.0f, rtRandomRange(&seed, -5, 5) };
         b.size = (Vector2){ 1.0f, 2.0f }; b.origin = (Vector2){ 0.5f, 0.0f }; b.facing = RBL_FACING_AXIS;
         RblVertex q[4];
-        RT_CHECK(RblBillboardVertices(&view, 16, 16, &b, q), "tilted billboard skipped");
+        RblFrameCache cache;
+        cache.facing = -1;
+        RT_CHECK(rbl__billboardVertices(&view, &cast, &cache, 16, 16, &b, q), "tilted billboard skipped");
         Vector3 n = { q[0].normal[0], q[0].normal[1], q[0].normal[2] }, t = { q[0].tangent[0], q[0].tangent[1], q[0].tangent[2] };
         Vector3 e1 = { q[1].position[0] - q[0].position[0], q[1].position[1] - q[0].position[1], q[1].position[2] - q[0].position[2] };
         Vector3 e2 = { q[3].position[0] - q[0].position[0], q[3].position[1] - q[0].position[1], q[3].position[2] - q[0].position[2] };
-        double seen = asin(fmin(1.0, fabs(n.x*view.light.x + n.y*view.light.y + n.z*view.light.z)))*180.0/PI;
+        double seen = asin(fmin(1.0, fabs(n.x*cast.light.x + n.y*cast.light.y + n.z*cast.light.z)))*180.0/PI;
         if (seen < worstAngle) worstAngle = seen;
         worstOrtho = fmax(worstOrtho, fabs(n.x*t.x + n.y*t.y + n.z*t.z));
         worstOrtho = fmax(worstOrtho, fabs(e1.x*e2.x + e1.y*e2.y + e1.z*e2.z)/(Vector3Length(e1)*Vector3Length(e2)));
@@ -474,8 +477,8 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
     double worst = 0.0;
     for (int lightKind = 0; lightKind < 2; lightKind++)
     {
-        view.light = lightKind? (Vector4){ 2.0f, 30.0f, -1.0f, 1.0f } : (Vector4){ 0.1f, 0.99f, 0.1f, 0.0f };
-        tfLight = view.light; tfMinCastSin = view.minCastSin;
+        cast.light = lightKind? (Vector4){ 2.0f, 30.0f, -1.0f, 1.0f } : (Vector4){ 0.1f, 0.99f, 0.1f, 0.0f };
+        tfLight = cast.light; tfMinCastSin = cast.minSin;
         float *gpu = tfCapture(&gl, prog, &buf, cam, d, 256, 128, in, 64);
         tfLight = (Vector4){ 0 }; tfMinCastSin = 0.0f;
         const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
@@ -483,7 +486,9 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
         {
             RblBillboard b = billboardOf(&in[i], d);
             RblVertex q[4];
-            RblBillboardVertices(&view, 256, 128, &b, q);
+            RblFrameCache cache;
+            cache.facing = -1;
+            rbl__billboardVertices(&view, &cast, &cache, 256, 128, &b, q);
             double scale = 1.0 + fabs(b.position.x) + fabs(b.position.y) + fabs(b.position.z) + fabs(b.size.x) + fabs(b.size.y) + fabs(b.origin.x) + fabs(b.origin.y);
             for (int v = 0; v < 6; v++)
             {
