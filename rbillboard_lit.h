@@ -289,7 +289,7 @@
 *                        every path) and Models, received forward and deferred; RblView gained the
 *                        shadow pass's light and minimum cast angle (zero outside shadow passes).
 *       0.3 (2026-11-23) Faster CPU geometry: batches reuse a facing frame while facing and up repeat
-*                        (RblBatch gained RblFrameCache), rotation uses an exact-in-degrees sin/cos
+*                        (RblBatch gained rbl__FrameCache), rotation uses an exact-in-degrees sin/cos
 *                        (quadrant angles exact), instanced draws upload the caller's array directly
 *                        when every instance is valid; the instance bound is now |value| < 2^120.
 *       0.4 (2026-11-23) The 1.0 API shape: a lit program is a raylib Shader of compiled features only;
@@ -448,39 +448,12 @@ typedef struct RblView {
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
 } RblView;
 
-// A run of billboards sharing one material inside a batch
-typedef struct RblBatchRun {
-    Material material;              // Material the run draws with
-    int first;                      // First billboard
-    int count;                      // Billboards in the run
-} RblBatchRun;
-
-// A billboard's facing frame before its rotation, kept by a batch for the next billboard with the
-// same facing and up (CAMERA_PLANE: the frame depends on nothing else). Internal state.
-typedef struct RblFrameCache {
-    Vector3 key;                    // RblBillboard.up the frame was made for
-    Vector3 right, up, normal;      // Unit frame
-    Vector3 normalXRight, normalXUp; // Rotation helpers: normal x right, normal x up
-    float upLength;                 // |caller up| (CAMERA_PLANE scales the height by it, as raylib)
-    int facing;                     // Facing it was made for; -1 = empty
-} RblFrameCache;
-
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 typedef struct RblBatch {
-    RblVertex *vertices;            // 4 per billboard
-    int capacity;                   // Billboards reserved (CPU and GPU)
+    int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
     int count;                      // Billboards added since RblBeginBatch()
-    RblBatchRun *runs;              // Material runs
-    int runCount;                   // Runs used
-    int runCapacity;                // Runs reserved
-    int gpuCapacity;                // Billboards the GPU buffer holds
-    unsigned int vaoId;             // Vertex array
-    unsigned int vboId;             // Vertex buffer
-    unsigned int eboId;             // Index buffer (quads share 16-bit indices in chunks)
-    RblView view;                   // Frame of the current camera
-    RblFrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
-    bool begun;                     // Between RblBeginBatch() and RblEndBatch()
+    struct rbl__BatchState *state;  // The header's: vertices, material runs, GL buffers, camera frame (NULL = not loaded)
 } RblBatch;
 
 // One instance of the instanced path: per-instance data only (56 bytes), the quad is expanded
@@ -926,6 +899,41 @@ typedef struct rbl__Handle {
     unsigned int id;
 } rbl__Handle;
 
+// A run of billboards sharing one material inside a batch
+typedef struct rbl__BatchRun {
+    Material material;              // Material the run draws with
+    int first;                      // First billboard
+    int count;                      // Billboards in the run
+} rbl__BatchRun;
+
+// A billboard's facing frame before its rotation, kept by a batch for the next billboard with the
+// same facing and up (CAMERA_PLANE: the frame depends on nothing else).
+typedef struct rbl__FrameCache {
+    Vector3 key;                    // RblBillboard.up the frame was made for
+    Vector3 right, up, normal;      // Unit frame
+    Vector3 normalXRight, normalXUp; // Rotation helpers: normal x right, normal x up
+    float upLength;                 // |caller up| (CAMERA_PLANE scales the height by it, as raylib)
+    int facing;                     // Facing it was made for; -1 = empty
+} rbl__FrameCache;
+
+// A batch's own data (RblBatch.state); capacity, count and skipped are mirrored into the RblBatch
+typedef struct rbl__BatchState {
+    RblVertex *vertices;            // 4 per billboard
+    int capacity;                   // Billboards reserved (CPU and GPU)
+    int count;                      // Billboards added since RblBeginBatch()
+    rbl__BatchRun *runs;              // Material runs
+    int runCount;                   // Runs used
+    int runCapacity;                // Runs reserved
+    int gpuCapacity;                // Billboards the GPU buffer holds
+    unsigned int vaoId;             // Vertex array
+    unsigned int vboId;             // Vertex buffer
+    unsigned int eboId;             // Index buffer (quads share 16-bit indices in chunks)
+    RblView view;                   // Frame of the current camera
+    rbl__FrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
+    int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    bool begun;                     // Between RblBeginBatch() and RblEndBatch()
+} rbl__BatchState;
+
 // What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
 // >= asin(minSin) (zero outside shadow passes)
 typedef struct rbl__Cast {
@@ -965,9 +973,41 @@ typedef struct rbl__State {
     int shadowMapsLoaded;           // Live shadow maps: they share the two caster programs
     unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
+    const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
+    int liveCount;
+    int liveCapacity;
 } rbl__State;
 
 static rbl__State rbl__state;
+
+// Loaded objects' private states: validity is membership, so a stale copy's pointer (its object
+// unloaded) is recognised without being dereferenced
+static bool rbl__liveAdd(void *object)
+{
+    if (rbl__state.liveCount == rbl__state.liveCapacity)
+    {
+        int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
+        const void **live = (const void **)RBL_REALLOC((void *)rbl__state.live, (size_t)capacity*sizeof(void *));
+        if (live == NULL) return false;
+        rbl__state.live = live;
+        rbl__state.liveCapacity = capacity;
+    }
+    rbl__state.live[rbl__state.liveCount++] = object;
+    return true;
+}
+
+static void rbl__liveRemove(const void *object)
+{
+    for (int i = 0; i < rbl__state.liveCount; i++)
+        if (rbl__state.live[i] == object) { rbl__state.live[i] = rbl__state.live[--rbl__state.liveCount]; return; }
+}
+
+static bool rbl__isLive(const void *object)
+{
+    if (object == NULL) return false;
+    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i] == object) return true;
+    return false;
+}
 
 //----------------------------------------------------------------------------------
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
@@ -2301,7 +2341,7 @@ static void rbl__facingBasis(const RblView *view, const rbl__Cast *cast, const R
 // The facing frame of b, from the cache when it holds b's (CAMERA_PLANE: same up), else made and kept.
 // Made exactly as rbl__facingBasis(); a caller up is normalised here and its length kept (raylib
 // scales the quad's height by it).
-static void rbl__facingFrame(const RblView *view, const rbl__Cast *cast, const RblBillboard *b, RblFrameCache *cache)
+static void rbl__facingFrame(const RblView *view, const rbl__Cast *cast, const RblBillboard *b, rbl__FrameCache *cache)
 {
     if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) &&
         (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
@@ -2321,7 +2361,7 @@ static void rbl__facingFrame(const RblView *view, const rbl__Cast *cast, const R
     cache->facing = b->facing;
 }
 
-static bool rbl__billboardVertices(const RblView *view, const rbl__Cast *cast, RblFrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+static bool rbl__billboardVertices(const RblView *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
     // position .. source and up .. roundness are runs of floats (checked at compile time)
@@ -2428,7 +2468,7 @@ static bool rbl__billboardVertices(const RblView *view, const rbl__Cast *cast, R
 bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
-    RblFrameCache cache;
+    rbl__FrameCache cache;
     cache.facing = -1;
     return rbl__billboardVertices(view, NULL, &cache, textureWidth, textureHeight, b, out);
 }
@@ -2447,7 +2487,7 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
 
-static void rbl__loadBatchGpu(RblBatch *batch)
+static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
     int quads = batch->capacity;
     batch->vaoId = rlLoadVertexArray();
@@ -2472,7 +2512,7 @@ static void rbl__loadBatchGpu(RblBatch *batch)
     batch->gpuCapacity = quads;
 }
 
-static void rbl__unloadBatchGpu(RblBatch *batch)
+static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
@@ -2481,49 +2521,77 @@ static void rbl__unloadBatchGpu(RblBatch *batch)
     batch->gpuCapacity = 0;
 }
 
+static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard);
+
+// The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
+static rbl__BatchState *rbl__batchState(const RblBatch *batch)
+{
+    return ((batch != NULL) && rbl__isLive(batch->state))? batch->state : NULL;
+}
+
+static void rbl__freeBatchState(rbl__BatchState *b)
+{
+    rbl__unloadBatchGpu(b);
+    RBL_FREE(b->vertices);
+    RBL_FREE(b->runs);
+    RBL_FREE(b);
+}
+
 RblBatch RblLoadBatch(int capacity)
 {
     RblBatch batch;
     memset(&batch, 0, sizeof(batch));
     if (capacity < 0) { TraceLog(LOG_WARNING, "RBL: RblLoadBatch: negative capacity %i", capacity); return batch; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
-    batch.vertices = (RblVertex *)RBL_MALLOC((size_t)capacity*4*sizeof(RblVertex));
-    batch.runCapacity = 16;
-    batch.runs = (RblBatchRun *)RBL_MALLOC((size_t)batch.runCapacity*sizeof(RblBatchRun));
-    if ((batch.vertices == NULL) || (batch.runs == NULL))
+    rbl__BatchState *b = (rbl__BatchState *)RBL_CALLOC(1, sizeof(rbl__BatchState));
+    if (b != NULL)
+    {
+        b->vertices = (RblVertex *)RBL_MALLOC((size_t)capacity*4*sizeof(RblVertex));
+        b->runCapacity = 16;
+        b->runs = (rbl__BatchRun *)RBL_MALLOC((size_t)b->runCapacity*sizeof(rbl__BatchRun));
+    }
+    if ((b == NULL) || (b->vertices == NULL) || (b->runs == NULL))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadBatch: out of memory for %i billboards", capacity);
-        RBL_FREE(batch.vertices); RBL_FREE(batch.runs);
-        memset(&batch, 0, sizeof(batch));
+        if (b != NULL) { RBL_FREE(b->vertices); RBL_FREE(b->runs); RBL_FREE(b); }
+        return batch;
+    }
+    b->capacity = capacity;
+    rbl__loadBatchGpu(b);
+    if ((b->vaoId == 0) || (b->vboId == 0) || (b->eboId == 0) || !rbl__liveAdd(b))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadBatch: GPU buffers could not be created (no GL context?)");
+        rbl__freeBatchState(b);
         return batch;
     }
     batch.capacity = capacity;
-    rbl__loadBatchGpu(&batch);
-    if ((batch.vaoId == 0) || (batch.vboId == 0) || (batch.eboId == 0))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblLoadBatch: GPU buffers could not be created (no GL context?)");
-        RblUnloadBatch(&batch);
-    }
+    batch.state = b;
     return batch;
 }
 
 bool RblIsBatchValid(RblBatch batch)
 {
-    return (batch.vertices != NULL) && (batch.vaoId != 0) && (batch.vboId != 0) && (batch.eboId != 0);
+    return rbl__batchState(&batch) != NULL;
 }
 
 void RblUnloadBatch(RblBatch *batch)
 {
     if (batch == NULL) return;
-    rbl__unloadBatchGpu(batch);
-    RBL_FREE(batch->vertices);
-    RBL_FREE(batch->runs);
+    rbl__BatchState *b = rbl__batchState(batch);
+    if (b != NULL)
+    {
+        rbl__liveRemove(b);
+        rbl__freeBatchState(b);
+    }
+    else if (batch->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadBatch: batch already unloaded (a stale copy)");
     memset(batch, 0, sizeof(*batch));
 }
 
-void RblBeginBatch(RblBatch *batch, Camera3D camera)
+void RblBeginBatch(RblBatch *pub, Camera3D camera)
 {
-    if (batch == NULL) return;
+    rbl__BatchState *batch = rbl__batchState(pub);
+    if (batch == NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: batch not loaded"); return; }
+    if (batch->begun && (batch->count > 0)) TraceLog(LOG_WARNING, "RBL: RblBeginBatch: %i billboards added since the last RblBeginBatch were never drawn (RblEndBatch)", batch->count);
     batch->view = RblGetView(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->frame.facing = -1;      // the frame depends on the view
@@ -2531,6 +2599,7 @@ void RblBeginBatch(RblBatch *batch, Camera3D camera)
     batch->runCount = 0;
     batch->skipped = 0;
     batch->begun = true;
+    pub->count = 0; pub->skipped = 0;
 }
 
 static bool rbl__sameMaterial(const Material *a, const Material *b)
@@ -2544,7 +2613,7 @@ static bool rbl__sameMaterial(const Material *a, const Material *b)
 }
 
 // Grow CPU storage by doubling; the GPU buffer follows at the next RblEndBatch()
-static bool rbl__growBatch(RblBatch *batch)
+static bool rbl__growBatch(rbl__BatchState *batch)
 {
     int newCapacity = (batch->capacity > 0)? batch->capacity*2 : RBL_BATCH_DEFAULT_CAPACITY;
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
@@ -2555,9 +2624,17 @@ static bool rbl__growBatch(RblBatch *batch)
     return true;
 }
 
-bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard)
+bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
 {
-    if ((batch == NULL) || !batch->begun || (batch->vertices == NULL)) return false;
+    rbl__BatchState *batch = rbl__batchState(pub);
+    if ((batch == NULL) || !batch->begun) return false;
+    bool added = rbl__batchAdd(batch, material, billboard);
+    pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
+    return added;
+}
+
+static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard)
+{
     if ((batch->count == batch->capacity) && !rbl__growBatch(batch)) return false;
 
     // An albedo slot without a texture draws raylib's 1x1 default texture
@@ -2573,12 +2650,12 @@ bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboa
         return false;
     }
 
-    RblBatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
+    rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     if ((run == NULL) || !rbl__sameMaterial(&run->material, &material))
     {
         if (batch->runCount == batch->runCapacity)
         {
-            RblBatchRun *runs = (RblBatchRun *)RBL_REALLOC(batch->runs, (size_t)batch->runCapacity*2*sizeof(RblBatchRun));
+            rbl__BatchRun *runs = (rbl__BatchRun *)RBL_REALLOC(batch->runs, (size_t)batch->runCapacity*2*sizeof(rbl__BatchRun));
             if (runs == NULL) { TraceLog(LOG_WARNING, "RBL: batch: out of memory for material runs"); return false; }
             batch->runs = runs;
             batch->runCapacity *= 2;
@@ -2666,8 +2743,9 @@ static void rbl__endBatch(RblBatch *batch, const char *fn);
 
 void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
 
-static void rbl__endBatch(RblBatch *batch, const char *fn)
+static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
+    rbl__BatchState *batch = rbl__batchState(pub);
     if ((batch == NULL) || !batch->begun) return;
     batch->begun = false;
     if (batch->count == 0) return;
@@ -2685,7 +2763,7 @@ static void rbl__endBatch(RblBatch *batch, const char *fn)
     unsigned int bound = 0;
     for (int r = 0; r < batch->runCount; r++)
     {
-        const RblBatchRun *run = &batch->runs[r];
+        const rbl__BatchRun *run = &batch->runs[r];
         MaterialMap casterMaps[RBL__CASTER_MAPS];
         Material material = run->material;
         rbl__Program *program = NULL;
@@ -2707,7 +2785,7 @@ static void rbl__endBatch(RblBatch *batch, const char *fn)
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
 {
     RblBatch *immediate = &rbl__state.immediate;
-    if (immediate->vertices == NULL)
+    if (immediate->state == NULL)
     {
         *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
         if (!RblIsBatchValid(*immediate)) return;
@@ -2731,6 +2809,7 @@ void RblClose(void)
     }
     for (int i = 0; i < rbl__state.handleCount; i++) MemFree(rbl__state.handles[i].locs);
     RBL_FREE(rbl__state.handles);
+    RBL_FREE((void *)rbl__state.live);
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
     memset(&rbl__state, 0, sizeof(rbl__state));
 }

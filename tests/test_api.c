@@ -263,6 +263,20 @@ static void test_api_double_and_stale_unloads_are_refused_with_one_log_line(void
     RblUnloadLitShader(&def);
     RT_CHECK((warnings == 1) && (def.id == rlGetShaderIdDefault()), "unloading raylib's default shader was not refused");
     RT_CHECK(!RblIsLitShaderValid(def), "raylib's default shader reports as a lit program");
+    // A stale copy of an unloaded batch is recognised without being read: invalid, and unloading it
+    // again is refused with one line
+    RblBatch batch = RblLoadBatch(4);
+    RblBatch batchCopy = batch;
+    RT_CHECK(RblIsBatchValid(batch) && RblIsBatchValid(batchCopy), "batch did not load");
+    RblUnloadBatch(&batch);
+    RT_CHECK((batch.state == NULL) && !RblIsBatchValid(batch), "unloaded batch not zeroed");
+    RT_CHECK(!RblIsBatchValid(batchCopy), "a stale copy of an unloaded batch reports valid");
+    warnings = 0;
+    RblUnloadBatch(&batchCopy);
+    RT_CHECK((warnings == 1) && (batchCopy.state == NULL), "unloading a stale batch copy: %d log lines, want 1", warnings);
+    warnings = 0;
+    RblBeginBatch(&batchCopy, frontCamera());
+    RT_CHECK(warnings == 1, "beginning an unloaded batch: %d log lines, want 1", warnings);
     // Shadow maps and G-buffers: the second unload of a zeroed object is harmless
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));

@@ -373,15 +373,20 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
     RblView view = RblGetView(cam);
     enum { COUNT = 600 };
-    // A batch without GPU buffers (no GL here): RblBatchAdd only needs the CPU side
+    // A batch without GPU buffers (no GL here): RblBatchAdd only needs the CPU side, so the test
+    // builds the header's private batch state itself and registers it as loaded
+    rbl__BatchState state;
+    memset(&state, 0, sizeof(state));
+    state.vertices = (RblVertex *)malloc(COUNT*4*sizeof(RblVertex));
+    state.capacity = COUNT;
+    state.runs = (rbl__BatchRun *)malloc(16*sizeof(rbl__BatchRun));
+    state.runCapacity = 16;
+    RT_CHECK((state.vertices != NULL) && (state.runs != NULL) && rbl__liveAdd(&state), "out of memory");
+    if ((state.vertices == NULL) || (state.runs == NULL)) { free(state.vertices); free(state.runs); return; }
     RblBatch batch;
     memset(&batch, 0, sizeof(batch));
-    batch.vertices = (RblVertex *)malloc(COUNT*4*sizeof(RblVertex));
+    batch.state = &state;
     batch.capacity = COUNT;
-    batch.runs = (RblBatchRun *)malloc(16*sizeof(RblBatchRun));
-    batch.runCapacity = 16;
-    RT_CHECK((batch.vertices != NULL) && (batch.runs != NULL), "out of memory");
-    if ((batch.vertices == NULL) || (batch.runs == NULL)) { free(batch.vertices); free(batch.runs); return; }
     Material material;
     memset(&material, 0, sizeof(material));
 
@@ -402,7 +407,7 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     {
         RblVertex alone[4];
         RblBillboardVertices(&view, 1, 1, &bbs[i], alone);
-        if (memcmp(alone, &batch.vertices[i*4], sizeof(alone)) != 0) mismatched++;
+        if (memcmp(alone, &state.vertices[i*4], sizeof(alone)) != 0) mismatched++;
     }
     RT_CHECK(skipped == 0, "%d billboards skipped", skipped);
     RT_CHECK(mismatched == 0, "%d of %d batched billboards differ from RblBillboardVertices", mismatched, COUNT);
@@ -415,10 +420,11 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     RblVertex alone[4];
     RblBillboardVertices(&turnedView, 1, 1, last, alone);
     RT_CHECK(last->facing == RBL_FACING_CAMERA_PLANE, "the last billboard should be CAMERA_PLANE");
-    RT_CHECK(memcmp(alone, batch.vertices, sizeof(alone)) == 0, "the frame kept from the previous camera was reused");
+    RT_CHECK(memcmp(alone, state.vertices, sizeof(alone)) == 0, "the frame kept from the previous camera was reused");
     RblEndBatch(&batch);     // no GPU buffer: draws nothing, must not crash
-    free(batch.vertices);
-    free(batch.runs);
+    rbl__liveRemove(&state);
+    free(state.vertices);
+    free(state.runs);
 }
 
 // Rotation uses a sin/cos in degrees with an exact reduction: quadrant angles are exact and every

@@ -405,7 +405,7 @@ static void test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_im
     UnloadImage(batched); UnloadImage(immediate);
     UnloadRenderTexture(rt);
     RblUnloadBatch(&batch);
-    RT_CHECK(!RblIsBatchValid(batch) && batch.vertices == NULL, "unload left state behind");
+    RT_CHECK(!RblIsBatchValid(batch) && batch.state == NULL, "unload left state behind");
     sceneUnload(s);
 }
 

@@ -448,7 +448,7 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
         b.position = (Vector3){ rtRandomRange(&seed, -5, 5), 0.0f, rtRandomRange(&seed, -5, 5) };
         b.size = (Vector2){ 1.0f, 2.0f }; b.origin = (Vector2){ 0.5f, 0.0f }; b.facing = RBL_FACING_AXIS;
         RblVertex q[4];
-        RblFrameCache cache;
+        rbl__FrameCache cache;
         cache.facing = -1;
         RT_CHECK(rbl__billboardVertices(&view, &cast, &cache, 16, 16, &b, q), "tilted billboard skipped");
         Vector3 n = { q[0].normal[0], q[0].normal[1], q[0].normal[2] }, t = { q[0].tangent[0], q[0].tangent[1], q[0].tangent[2] };
@@ -486,7 +486,7 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
         {
             RblBillboard b = billboardOf(&in[i], d);
             RblVertex q[4];
-            RblFrameCache cache;
+            rbl__FrameCache cache;
             cache.facing = -1;
             rbl__billboardVertices(&view, &cast, &cache, 256, 128, &b, q);
             double scale = 1.0 + fabs(b.position.x) + fabs(b.position.y) + fabs(b.position.z) + fabs(b.size.x) + fabs(b.size.y) + fabs(b.origin.x) + fabs(b.origin.y);

@@ -462,7 +462,7 @@ static void ImmediateCorners(int n, int rotated, float *out)
     for (int i = 0; i < n; i++)
     {
         RblDrawBillboard(camera, material, rblSet[rotated][i]);
-        for (int k = 0; k < 4; k++) memcpy(&out[(size_t)(i*4 + k)*3], rbl__state.immediate.vertices[k].position, 3*sizeof(float));
+        for (int k = 0; k < 4; k++) memcpy(&out[(size_t)(i*4 + k)*3], rbl__state.immediate.state->vertices[k].position, 3*sizeof(float));
     }
     EndMode3D();
     EndTextureMode();
@@ -678,7 +678,7 @@ int main(int argc, char **argv)
                     printf("bench_geometry: batch holds %d billboards (%d skipped), expected %d\n", batch.count, batch.skipped, counts[c]);
                     return 1;
                 }
-                CornerError(batch.vertices[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
+                CornerError(batch.state->vertices[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
             }
         }
     }
