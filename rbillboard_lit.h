@@ -671,8 +671,6 @@ typedef struct RblGBufferDesc {
 
 // Deferred G-buffer (RblLoadGBuffer): 10 bytes per pixel + depth + RGBA16F light accumulation
 typedef struct RblGBuffer {
-    unsigned int id;                // Geometry framebuffer: 4 colour attachments + depth texture
-    unsigned int lightId;           // Light framebuffer: the accumulation target alone
     int width;                      // Size in pixels
     int height;
     Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
@@ -681,23 +679,12 @@ typedef struct RblGBuffer {
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblGBufferDesc desc;            // Settings, defaults applied
-    unsigned int passes[5];         // Lighting pass programs (owned by the header's program registry)
-    unsigned int volumeVao;         // Sphere proxy (vertex + index buffers) with per-light instance data
-    unsigned int volumeVbo;
-    unsigned int volumeIbo;
-    unsigned int instanceVbo;
-    unsigned int emptyVao;          // Full-screen triangle (positions from gl_VertexID)
-    int volumeIndexCount;
-    int instanceCapacity;           // Lights the instance buffer holds (grows with a log line)
-    Matrix view;                    // Camera of the last geometry pass
-    Matrix projection;
-    Vector3 eye;
-    int debugView;                  // RblGBufferView
+    int debugView;                  // RblGBufferView (RblSetGBufferView)
     float debugScale;               // Range of the depth/position/light-count views
     bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
-    bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
+    struct rbl__GBufferState *state; // The header's: framebuffers, pass programs, light volumes, camera (NULL = not loaded)
 } RblGBuffer;
 
 // Shadow map settings; zero means default (the biases are in shadow-map texels, see SHADOWS)
@@ -933,6 +920,24 @@ typedef struct rbl__BatchState {
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
 } rbl__BatchState;
+
+// A G-buffer's own data (RblGBuffer.state)
+typedef struct rbl__GBufferState {
+    unsigned int id;                // Geometry framebuffer: 4 colour attachments + depth texture
+    unsigned int lightId;           // Light framebuffer: the accumulation target alone
+    unsigned int passes[5];         // Lighting pass programs (the registry's)
+    unsigned int volumeVao;         // Sphere proxy (vertex + index buffers) with per-light instance data
+    unsigned int volumeVbo;
+    unsigned int volumeIbo;
+    unsigned int instanceVbo;
+    unsigned int emptyVao;          // Full-screen triangle (positions from gl_VertexID)
+    int volumeIndexCount;
+    int instanceCapacity;           // Lights the instance buffer holds (grows with a log line)
+    Matrix view;                    // Camera of the last geometry pass
+    Matrix projection;
+    Vector3 eye;
+    bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
+} rbl__GBufferState;
 
 // What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
 // >= asin(minSin) (zero outside shadow passes)
@@ -4810,8 +4815,8 @@ static Matrix rbl__rigidInverse(Matrix view)
 // Per-light instance buffer of the volume VAO (created, or re-created when it grows)
 static void rbl__loadVolumeInstances(RblGBuffer *g, int capacity)
 {
-    rlEnableVertexArray(g->volumeVao);
-    g->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__LIGHT_FLOATS*(int)sizeof(float), true);
+    rlEnableVertexArray(g->state->volumeVao);
+    g->state->instanceVbo = rlLoadVertexBuffer(NULL, capacity*RBL__LIGHT_FLOATS*(int)sizeof(float), true);
     for (int a = 0; a < 4; a++)
     {
         rlSetVertexAttribute(RBL__INSTANCE_LOCATION + a, 4, RL_FLOAT, false, RBL__LIGHT_FLOATS*(int)sizeof(float), a*4*(int)sizeof(float));
@@ -4858,25 +4863,26 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
     float scale = (float)(1.0/minDist)*1.001f;
     for (int i = 0; i < VERTS*3; i++) v[i] *= scale;
 
-    g->volumeVao = rlLoadVertexArray();
-    rlEnableVertexArray(g->volumeVao);
-    g->volumeVbo = rlLoadVertexBuffer(v, (int)sizeof(v), false);
+    g->state->volumeVao = rlLoadVertexArray();
+    rlEnableVertexArray(g->state->volumeVao);
+    g->state->volumeVbo = rlLoadVertexBuffer(v, (int)sizeof(v), false);
     rlSetVertexAttribute(0, 3, RL_FLOAT, false, 0, 0);
     rlEnableVertexAttribute(0);
-    g->volumeIbo = rlLoadVertexBufferElement(idx, (int)sizeof(idx), false);
-    g->volumeIndexCount = INDICES;
+    g->state->volumeIbo = rlLoadVertexBufferElement(idx, (int)sizeof(idx), false);
+    g->state->volumeIndexCount = INDICES;
     rlDisableVertexArray();
-    rbl__loadVolumeInstances(g, g->instanceCapacity);
-    g->emptyVao = rlLoadVertexArray();
+    rbl__loadVolumeInstances(g, g->state->instanceCapacity);
+    g->state->emptyVao = rlLoadVertexArray();
 }
 
 static void rbl__unloadTargets(RblGBuffer *g)
 {
-    if (g->id != 0) rlUnloadFramebuffer(g->id);
-    if (g->lightId != 0) rlUnloadFramebuffer(g->lightId);
+    // rlUnloadFramebuffer deletes the depth texture attached to it (not the colour ones)
+    if (g->state->id != 0) { rlUnloadFramebuffer(g->state->id); g->depth.id = 0; }
+    if (g->state->lightId != 0) rlUnloadFramebuffer(g->state->lightId);
     Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
     for (int i = 0; i < 5; i++) { if (t[i]->id != 0) rlUnloadTexture(t[i]->id); memset(t[i], 0, sizeof(Texture2D)); }
-    g->id = 0; g->lightId = 0;
+    g->state->id = 0; g->state->lightId = 0;
 }
 
 static Texture2D rbl__targetTexture(int width, int height, int format)
@@ -4910,20 +4916,20 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
         rlTextureParameters(g->depth.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
-        g->id = rlLoadFramebuffer();
-        rlEnableFramebuffer(g->id);
-        rlFramebufferAttach(g->id, g->albedo.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
-        rlFramebufferAttach(g->id, g->normal.id, RL_ATTACHMENT_COLOR_CHANNEL1, RL_ATTACHMENT_TEXTURE2D, 0);
-        rlFramebufferAttach(g->id, g->params.id, RL_ATTACHMENT_COLOR_CHANNEL2, RL_ATTACHMENT_TEXTURE2D, 0);
-        rlFramebufferAttach(g->id, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL3, RL_ATTACHMENT_TEXTURE2D, 0);
-        rlFramebufferAttach(g->id, g->depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
-        rlEnableFramebuffer(g->id);                 // rlFramebufferAttach() unbinds it again
+        g->state->id = rlLoadFramebuffer();
+        rlEnableFramebuffer(g->state->id);
+        rlFramebufferAttach(g->state->id, g->albedo.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->state->id, g->normal.id, RL_ATTACHMENT_COLOR_CHANNEL1, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->state->id, g->params.id, RL_ATTACHMENT_COLOR_CHANNEL2, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->state->id, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL3, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(g->state->id, g->depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlEnableFramebuffer(g->state->id);                 // rlFramebufferAttach() unbinds it again
         rlActiveDrawBuffers(4);                     // framebuffer state: set once
-        ok = rlFramebufferComplete(g->id);
-        g->lightId = rlLoadFramebuffer();
-        rlEnableFramebuffer(g->lightId);
-        rlFramebufferAttach(g->lightId, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
-        ok = ok && rlFramebufferComplete(g->lightId);
+        ok = rlFramebufferComplete(g->state->id);
+        g->state->lightId = rlLoadFramebuffer();
+        rlEnableFramebuffer(g->state->lightId);
+        rlFramebufferAttach(g->state->lightId, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+        ok = ok && rlFramebufferComplete(g->state->lightId);
         rlDisableFramebuffer();
     }
     if (!ok)
@@ -4947,8 +4953,8 @@ static void rbl__gbufferLitDesc(const RblGBufferDesc *g, RblLitShaderDesc *out)
 
 static void rbl__releasePasses(RblGBuffer *g)
 {
-    for (int p = 0; p < RBL__PASS_COUNT; p++) if (g->passes[p] != 0) rbl__releaseProgram(g->passes[p], RBL__KIND_PASS);
-    memset(g->passes, 0, sizeof(g->passes));
+    for (int p = 0; p < RBL__PASS_COUNT; p++) if (g->state->passes[p] != 0) rbl__releaseProgram(g->state->passes[p], RBL__KIND_PASS);
+    memset(g->state->passes, 0, sizeof(g->state->passes));
 }
 
 RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
@@ -4962,8 +4968,16 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
     if ((bad == NULL) && ((width <= 0) || (height <= 0) || (width > 16384) || (height > 16384))) bad = "size outside 1..16384";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
+    g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
+    if ((g.state == NULL) || !rbl__liveAdd(g.state))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: out of memory");
+        RBL_FREE(g.state);
+        memset(&g, 0, sizeof(g));
+        return g;
+    }
     unsigned int callerTarget = rlGetActiveFramebuffer();
-    if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); memset(&g, 0, sizeof(g)); return g; }
+    if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); RblUnloadGBuffer(&g); return g; }
     rbl__restoreTarget(callerTarget);
     g.desc = desc;
     g.desc.width = width; g.desc.height = height;
@@ -4977,44 +4991,45 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
         rbl__keyFromDesc(&normalised, RBL__KIND_PASS, p, &key);
         rbl__Program *program = rbl__acquireProgram(&key);
         ok = (program != NULL);
-        if (ok) g.passes[p] = program->shader.id;
+        if (ok) g.state->passes[p] = program->shader.id;
     }
     if (!ok)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: a lighting pass failed to compile: render forward instead");
-        rbl__releasePasses(&g);
-        rbl__unloadTargets(&g);
-        memset(&g, 0, sizeof(g));
+        RblUnloadGBuffer(&g);
         return g;
     }
-    g.instanceCapacity = 256;
+    g.state->instanceCapacity = 256;
     rbl__loadVolumeMesh(&g);
     g.debugScale = 1.0f;
-    g.view = rbl__identity(); g.projection = rbl__identity();
+    g.state->view = rbl__identity(); g.state->projection = rbl__identity();
     TraceLog(LOG_INFO, "RBL: G-buffer %ix%i loaded (%i bytes/pixel + depth + RGBA16F accumulation)", width, height, RblGBufferBytesPerPixel(&g));
     return g;
 }
 
 bool RblIsGBufferValid(const RblGBuffer *gbuffer)
 {
-    return (gbuffer != NULL) && (gbuffer->id != 0) && (gbuffer->lightId != 0) && (gbuffer->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->volumeVao != 0);
+    // Membership first: a stale copy's state (its G-buffer unloaded) is never read
+    return (gbuffer != NULL) && rbl__isLive(gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
 }
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 {
-    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > 16384) || (height > 16384) || gbuffer->begun)
+    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > 16384) || (height > 16384) || gbuffer->state->begun)
     {
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..16384", width, height);
         return false;
     }
     if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
+    rbl__GBufferState freshState = *gbuffer->state;
     RblGBuffer fresh = *gbuffer;
+    fresh.state = &freshState;
     unsigned int callerTarget = rlGetActiveFramebuffer();
     bool ok = rbl__loadTargets(&fresh, width, height);
     rbl__restoreTarget(callerTarget);
     if (!ok) return false;      // the old targets stay
     rbl__unloadTargets(gbuffer);
-    gbuffer->id = fresh.id; gbuffer->lightId = fresh.lightId;
+    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
     gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
     gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
     gbuffer->width = width; gbuffer->height = height;
@@ -5025,20 +5040,28 @@ bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
     if (gbuffer == NULL) return;
-    if (gbuffer->begun) RblEndGBuffer(gbuffer);
+    if (!rbl__isLive(gbuffer->state))
+    {
+        if (gbuffer->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: G-buffer already unloaded (a stale copy)");
+        memset(gbuffer, 0, sizeof(*gbuffer));
+        return;
+    }
+    if (gbuffer->state->begun) RblEndGBuffer(gbuffer);
     rbl__unloadTargets(gbuffer);
     rbl__releasePasses(gbuffer);
-    if (gbuffer->volumeVao != 0) rlUnloadVertexArray(gbuffer->volumeVao);
-    if (gbuffer->emptyVao != 0) rlUnloadVertexArray(gbuffer->emptyVao);
-    if (gbuffer->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->volumeVbo);
-    if (gbuffer->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->volumeIbo);
-    if (gbuffer->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->instanceVbo);
+    if (gbuffer->state->volumeVao != 0) rlUnloadVertexArray(gbuffer->state->volumeVao);
+    if (gbuffer->state->emptyVao != 0) rlUnloadVertexArray(gbuffer->state->emptyVao);
+    if (gbuffer->state->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeVbo);
+    if (gbuffer->state->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeIbo);
+    if (gbuffer->state->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->state->instanceVbo);
+    rbl__liveRemove(gbuffer->state);
+    RBL_FREE(gbuffer->state);
     memset(gbuffer, 0, sizeof(*gbuffer));
 }
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || (gbuffer->id == 0)) return 0;
+    if ((gbuffer == NULL) || (gbuffer->state->id == 0)) return 0;
     return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
 }
 
@@ -5057,12 +5080,12 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
 {
     const char *bad = NULL;
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
-    else if (gbuffer->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
+    else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__finite3(camera.position) || !rbl__finite3(camera.target) || !rbl__finite3(camera.up) || !rbl__finite(camera.fovy) || !(camera.fovy > 0.0f)) bad = "NaN/Inf camera or fovy <= 0";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginGBuffer: %s", bad); return false; }
     rlDrawRenderBatchActive();
-    rlEnableFramebuffer(gbuffer->id);
+    rlEnableFramebuffer(gbuffer->state->id);
     rlViewport(0, 0, gbuffer->width, gbuffer->height);
     rlDisableColorBlend();                          // G-buffer values are data: never blended
     rlEnableDepthTest();
@@ -5091,18 +5114,18 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     float view[16];
     rbl__matToArray(rbl__viewMatrix(&v), view);
     rlMultMatrixf(view);
-    gbuffer->view = rlGetMatrixModelview();
-    gbuffer->projection = rlGetMatrixProjection();
-    gbuffer->eye = camera.position;
-    gbuffer->begun = true;
+    gbuffer->state->view = rlGetMatrixModelview();
+    gbuffer->state->projection = rlGetMatrixProjection();
+    gbuffer->state->eye = camera.position;
+    gbuffer->state->begun = true;
     rbl__state.gbufferPass = gbuffer;
     return true;
 }
 
 void RblEndGBuffer(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !gbuffer->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
-    gbuffer->begun = false;
+    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
+    gbuffer->state->begun = false;
     rbl__state.gbufferPass = NULL;
     rlDrawRenderBatchActive();
     rlMatrixMode(RL_PROJECTION);
@@ -5118,7 +5141,7 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
 static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass)
 {
     for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == g->passes[pass]) && (rbl__state.programs[i].key.kind == RBL__KIND_PASS)) return &rbl__state.programs[i];
+        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == g->state->passes[pass]) && (rbl__state.programs[i].key.kind == RBL__KIND_PASS)) return &rbl__state.programs[i];
     return NULL;
 }
 
@@ -5136,15 +5159,15 @@ static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
         rlEnableTexture(tex[i]);
         rlSetUniform(loc[RBL__U_G_ALBEDO + i], &i, SHADER_UNIFORM_INT, 1);
     }
-    if (loc[RBL__U_INV_VIEW] != -1) rlSetUniformMatrix(loc[RBL__U_INV_VIEW], rbl__rigidInverse(g->view));
-    if (loc[RBL__U_MVP] != -1) rlSetUniformMatrix(loc[RBL__U_MVP], rbl__matMul(g->view, g->projection));
-    float eye[3] = { g->eye.x, g->eye.y, g->eye.z };
+    if (loc[RBL__U_INV_VIEW] != -1) rlSetUniformMatrix(loc[RBL__U_INV_VIEW], rbl__rigidInverse(g->state->view));
+    if (loc[RBL__U_MVP] != -1) rlSetUniformMatrix(loc[RBL__U_MVP], rbl__matMul(g->state->view, g->state->projection));
+    float eye[3] = { g->state->eye.x, g->state->eye.y, g->state->eye.z };
     if (loc[RBL__U_EYE] != -1) rlSetUniform(loc[RBL__U_EYE], eye, SHADER_UNIFORM_VEC3, 1);
     // View position from window depth, in closed form (gbuffer_read.glsl): perspective (w = 1) or orthographic
     double n = rlGetCullDistanceNear(), f = rlGetCullDistanceFar();
-    bool perspective = (g->projection.m15 == 0.0f);
+    bool perspective = (g->state->projection.m15 == 0.0f);
     float depthLinear[4] = { perspective? (float)(n*f) : (float)n, (float)(f - n), (float)f, perspective? 1.0f : 0.0f };
-    float invP[2] = { 1.0f/g->projection.m0, 1.0f/g->projection.m5 };
+    float invP[2] = { 1.0f/g->state->projection.m0, 1.0f/g->state->projection.m5 };
     if (loc[RBL__U_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__U_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
     if (loc[RBL__U_INV_P] != -1) rlSetUniform(loc[RBL__U_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
     rbl__bindSceneShadows();
@@ -5183,7 +5206,7 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
         if (loc[RBL__U_LIGHT_ATTENUATION] != -1) rlSetUniform(loc[RBL__U_LIGHT_ATTENUATION], att, SHADER_UNIFORM_VEC3, count);
     }
     rlDisableBackfaceCulling();
-    rlEnableVertexArray(g->emptyVao);
+    rlEnableVertexArray(g->state->emptyVao);
     rlDrawVertexArray(0, 3);
     rlDisableVertexArray();
     rbl__unbindGBufferPass();
@@ -5197,7 +5220,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 {
     const char *bad = NULL;
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
-    else if (gbuffer->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
+    else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
     RblGBuffer *g = gbuffer;
@@ -5215,21 +5238,21 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     }
     if (uncompiled > 0) TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: %i light(s) of types not in the G-buffer's lightFeatures left out", uncompiled);
     // Volumes need the instance buffer to hold every bounded light (grown with a log line)
-    if (count > g->instanceCapacity)
+    if (count > g->state->instanceCapacity)
     {
-        int capacity = g->instanceCapacity;
+        int capacity = g->state->instanceCapacity;
         while (capacity < count) capacity *= 2;
-        rlUnloadVertexBuffer(g->instanceVbo);
+        rlUnloadVertexBuffer(g->state->instanceVbo);
         rbl__loadVolumeInstances(g, capacity);
-        TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->instanceCapacity, capacity);
-        g->instanceCapacity = capacity;
+        TraceLog(LOG_INFO, "RBL: G-buffer light volumes grown from %i to %i", g->state->instanceCapacity, capacity);
+        g->state->instanceCapacity = capacity;
     }
     float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
     bool counting = (g->debugView == RBL_GBUFFER_VIEW_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
     unsigned int callerTarget = rlGetActiveFramebuffer();
-    rlEnableFramebuffer(g->lightId);
+    rlEnableFramebuffer(g->state->lightId);
     rlViewport(0, 0, g->width, g->height);
     rlDisableDepthTest();
     rlSetBlendFactors(RL_ONE, RL_ONE, RL_FUNC_ADD);     // light adds up in the accumulation target
@@ -5283,9 +5306,9 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         }
         rlEnableBackfaceCulling();
         rlSetCullFace(RL_CULL_FACE_FRONT);
-        rlEnableVertexArray(g->volumeVao);
-        rlUpdateVertexBuffer(g->instanceVbo, s->staging, v*RBL__LIGHT_FLOATS*(int)sizeof(float), 0);
-        rlDrawVertexArrayElementsInstanced(0, g->volumeIndexCount, 0, v);
+        rlEnableVertexArray(g->state->volumeVao);
+        rlUpdateVertexBuffer(g->state->instanceVbo, s->staging, v*RBL__LIGHT_FLOATS*(int)sizeof(float), 0);
+        rlDrawVertexArrayElementsInstanced(0, g->state->volumeIndexCount, 0, v);
         rlDisableVertexArray();
         rlSetCullFace(RL_CULL_FACE_BACK);
         rbl__unbindGBufferPass();
@@ -5309,7 +5332,7 @@ void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer) || gbuffer->begun) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer, or inside its geometry pass"); return; }
+    if (!RblIsGBufferValid(gbuffer) || gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer, or inside its geometry pass"); return; }
     RblGBuffer *g = gbuffer;
     rlDrawRenderBatchActive();
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
@@ -5318,7 +5341,7 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
     rlEnableDepthMask();
     rlDisableBackfaceCulling();
-    rlEnableVertexArray(g->emptyVao);
+    rlEnableVertexArray(g->state->emptyVao);
     rlDrawVertexArray(0, 3);
     rlDisableVertexArray();
     rlEnableBackfaceCulling();

@@ -291,9 +291,19 @@ static void test_api_double_and_stale_unloads_are_refused_with_one_log_line(void
     gd.width = 32; gd.height = 32;
     RblGBuffer g = RblLoadGBuffer(gd);
     RT_CHECK(RblIsGBufferValid(&g), "G-buffer did not load");
+    RblGBuffer gCopy = g;
     RblUnloadGBuffer(&g);
     RblUnloadGBuffer(&g);
     RT_CHECK(!RblIsGBufferValid(&g), "unloaded G-buffer reports valid");
+    RT_CHECK(!RblIsGBufferValid(&gCopy), "a stale copy of an unloaded G-buffer reports valid");
+    warnings = 0;
+    RblUnloadGBuffer(&gCopy);
+    RT_CHECK((warnings == 1) && (gCopy.state == NULL), "unloading a stale G-buffer copy: %d log lines, want 1", warnings);
+    warnings = 0;
+    RT_CHECK(!RblBeginGBuffer(&gCopy, frontCamera()) && (warnings == 1), "beginning a zeroed G-buffer: %d log lines, want 1", warnings);
+    warnings = 0;
+    RblEndGBuffer(&gCopy);
+    RT_CHECK(warnings == 1, "ending a G-buffer pass never begun: %d log lines, want 1", warnings);
 }
 
 // Renders the lit cell 5 with a fresh Lambert program under the current scene

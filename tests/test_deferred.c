@@ -534,11 +534,11 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
         RblSetGBufferView(&g, RBL_GBUFFER_VIEW_LIT, 1.0f);
         // Depth values of the geometry pass
         float *depth = (float *)malloc(sizeof(float)*LIT_TARGET*LIT_TARGET);
-        rlEnableFramebuffer(g.id);
+        rlEnableFramebuffer(g.state->id);
         readPixels(0, 0, LIT_TARGET, LIT_TARGET, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, depth);
         rlDisableFramebuffer();
         // Double reconstruction from the same depth, and the true plane point behind the pixel centre
-        Matrix P = g.projection, V = g.view;
+        Matrix P = g.state->projection, V = g.state->view;
         double worstShader = 0.0, worstTrue = 0.0, worstRatio = 0.0;
         int n = 0;
         for (int y = 8; y < LIT_TARGET - 8; y += 4)
@@ -622,7 +622,7 @@ static DefGBufferBytes defReadGBuffer(const RblGBuffer *g)
     void *proc = rtGlProc("glReadPixels");
     memcpy(&readPixels, &proc, sizeof(proc));
     b.depth = (float *)malloc(sizeof(float)*g->width*g->height);
-    rlEnableFramebuffer(g->id);
+    rlEnableFramebuffer(g->state->id);
     readPixels(0, 0, g->width, g->height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, b.depth);
     rlDisableFramebuffer();
     return b;
