@@ -699,23 +699,11 @@ typedef struct RblShadowDesc {
 
 // Shadow map of one directional or spot light: a depth texture and its light camera (caster programs are the header's)
 typedef struct RblShadowMap {
-    unsigned int id;                // Framebuffer (depth attachment only)
     Texture2D depth;                // Depth texture (receivers compare in the shader: rlgl exposes no compare mode)
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
-    int lightType;                  // RBL_LIGHT_DIRECTIONAL or RBL_LIGHT_SPOT
-    RblView lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
-    Matrix view;                    // Light camera matrices of the last pass
-    Matrix projection;
-    Matrix matrix;                  // World -> (u, v, window depth) before the divide: view x projection x bias
-    float texelWorld;               // World size of a texel (perspective: per unit distance along the axis)
-    float nearPlane;                // Depth range along the light's axis
-    float farPlane;
-    Matrix savedView;               // rlgl state restored by RblEndShadowMap: matrices and framebuffer
-    Matrix savedProjection;
-    unsigned int savedFramebuffer;
-    bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
+    struct rbl__ShadowMapState *state; // The header's: framebuffer, light camera and matrices, pass state (NULL = not loaded)
 } RblShadowMap;
 
 // What lights the frame, set once per frame with RblSetScene(); zero means default
@@ -939,6 +927,23 @@ typedef struct rbl__GBufferState {
     bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
 } rbl__GBufferState;
 
+// A shadow map's own data (RblShadowMap.state)
+typedef struct rbl__ShadowMapState {
+    unsigned int id;                // Framebuffer (depth attachment only)
+    int lightType;                  // RBL_LIGHT_DIRECTIONAL or RBL_LIGHT_SPOT
+    RblView lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
+    Matrix view;                    // Light camera matrices of the last pass
+    Matrix projection;
+    Matrix matrix;                  // World -> (u, v, window depth) before the divide: view x projection x bias
+    float texelWorld;               // World size of a texel (perspective: per unit distance along the axis)
+    float nearPlane;                // Depth range along the light's axis
+    float farPlane;
+    Matrix savedView;               // rlgl state restored by RblEndShadowMap: matrices and framebuffer
+    Matrix savedProjection;
+    unsigned int savedFramebuffer;
+    bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
+} rbl__ShadowMapState;
+
 // What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
 // >= asin(minSin) (zero outside shadow passes)
 typedef struct rbl__Cast {
@@ -975,7 +980,6 @@ typedef struct rbl__State {
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
-    int shadowMapsLoaded;           // Live shadow maps: they share the two caster programs
     unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
@@ -5356,15 +5360,15 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 // light's own frame (desc.faceLight); AXIS billboards get the light and minimum angle to tilt by
 static void rbl__shadowPassView(RblView *view)
 {
-    if (rbl__state.shadowPass->desc.faceLight) *view = rbl__state.shadowPass->lightView;
+    if (rbl__state.shadowPass->desc.faceLight) *view = rbl__state.shadowPass->state->lightView;
 }
 
 // The light AXIS billboards tilt toward in map's pass
 static rbl__Cast rbl__castOf(const RblShadowMap *map)
 {
     rbl__Cast cast;
-    Vector3 toLight = rbl__neg(rbl__cross(map->lightView.up, map->lightView.right));    // = back
-    if (map->lightType == RBL_LIGHT_SPOT) { cast.light.x = map->lightView.eye.x; cast.light.y = map->lightView.eye.y; cast.light.z = map->lightView.eye.z; cast.light.w = 1.0f; }
+    Vector3 toLight = rbl__neg(rbl__cross(map->state->lightView.up, map->state->lightView.right));    // = back
+    if (map->state->lightType == RBL_LIGHT_SPOT) { cast.light.x = map->state->lightView.eye.x; cast.light.y = map->state->lightView.eye.y; cast.light.z = map->state->lightView.eye.z; cast.light.w = 1.0f; }
     else { cast.light.x = toLight.x; cast.light.y = toLight.y; cast.light.z = toLight.z; cast.light.w = 0.0f; }
     cast.minSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
     return cast;
@@ -5416,8 +5420,22 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     memset(&map, 0, sizeof(map));
     const char *bad = rbl__normaliseShadowDesc(desc, &map.desc);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %s", bad); memset(&map, 0, sizeof(map)); return map; }
-    if (!rbl__acquireCasters()) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable"); memset(&map, 0, sizeof(map)); return map; }
-    rbl__state.shadowMapsLoaded++;
+    map.state = (rbl__ShadowMapState *)RBL_CALLOC(1, sizeof(rbl__ShadowMapState));
+    if ((map.state == NULL) || !rbl__liveAdd(map.state))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: out of memory");
+        RBL_FREE(map.state);
+        memset(&map, 0, sizeof(map));
+        return map;
+    }
+    if (!rbl__acquireCasters())
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable");
+        rbl__liveRemove(map.state);
+        RBL_FREE(map.state);
+        memset(&map, 0, sizeof(map));
+        return map;
+    }
     map.size = map.desc.size;
     map.light = -1;
     unsigned int callerTarget = rlGetActiveFramebuffer();
@@ -5426,9 +5444,9 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     bool ok = (map.depth.id != 0);
     if (ok)
     {
-        map.id = rlLoadFramebuffer();
-        rlFramebufferAttach(map.id, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
-        ok = (map.id != 0) && rlFramebufferComplete(map.id);
+        map.state->id = rlLoadFramebuffer();
+        rlFramebufferAttach(map.state->id, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        ok = (map.state->id != 0) && rlFramebufferComplete(map.state->id);
     }
     rbl__restoreTarget(callerTarget);
     if (!ok)
@@ -5443,22 +5461,26 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
 
 bool RblIsShadowMapValid(RblShadowMap map)
 {
-    return (map.id != 0) && (map.depth.id != 0) && (map.size > 0);
+    // Membership first: a stale copy's state (its map unloaded) is never read
+    return rbl__isLive(map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
     if (map == NULL) return;
-    if ((map->size == 0) && (map->id == 0) && (map->depth.id == 0)) return;    // zero or already unloaded
-    if (map->begun) RblEndShadowMap(map);
-    if (map->id != 0) rlUnloadFramebuffer(map->id);         // deletes its depth texture too
-    else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
-    if (rbl__state.shadowMapsLoaded > 0)
+    if (!rbl__isLive(map->state))
     {
-        rbl__state.shadowMapsLoaded--;
-        rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);
-        rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+        if (map->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: shadow map already unloaded (a stale copy)");
+        memset(map, 0, sizeof(*map));
+        return;
     }
+    if (map->state->begun) RblEndShadowMap(map);
+    if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture too
+    else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
+    rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
+    rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+    rbl__liveRemove(map->state);
+    RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));
 }
 
@@ -5487,7 +5509,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     float p[4], c[4], spot[4], k[3];
     const RblLight *lights = (scene != NULL)? scene->lights : NULL;
     if ((map == NULL) || !RblIsShadowMapValid(*map)) bad = "invalid shadow map";
-    else if (map->begun || (rbl__state.shadowPass != NULL)) bad = "a shadow pass is already in progress";
+    else if (map->state->begun || (rbl__state.shadowPass != NULL)) bad = "a shadow pass is already in progress";
     else if (rbl__state.gbufferPass != NULL) bad = "inside a G-buffer pass";
     else if ((scene == NULL) || (lights == NULL) || (lightIndex < 0) || (lightIndex >= scene->lightCount)) bad = "no scene, or lightIndex outside 0..scene->lightCount-1";
     else if ((lights[lightIndex].type != RBL_LIGHT_DIRECTIONAL) && (lights[lightIndex].type != RBL_LIGHT_SPOT)) bad = "only directional and spot lights cast shadows";
@@ -5514,12 +5536,12 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double r = focusRadius, texel = 2.0*r/(size - 1.0);
         cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
         cam.target = focusCenter;
-        map->lightView = RblGetView(cam);
-        double ex = rbl__dot(map->lightView.right, cam.position), ey = rbl__dot(map->lightView.up, cam.position);
-        double cx = rbl__dot(map->lightView.right, focusCenter), cy = rbl__dot(map->lightView.up, focusCenter);
+        map->state->lightView = RblGetView(cam);
+        double ex = rbl__dot(map->state->lightView.right, cam.position), ey = rbl__dot(map->state->lightView.up, cam.position);
+        double cx = rbl__dot(map->state->lightView.right, focusCenter), cy = rbl__dot(map->state->lightView.up, focusCenter);
         double left = floor((cx - r)/texel)*texel - ex, bottom = floor((cy - r)/texel)*texel - ey;
-        map->nearPlane = 0.0f; map->farPlane = (float)(3.0*r);
-        map->texelWorld = (float)texel;
+        map->state->nearPlane = 0.0f; map->state->farPlane = (float)(3.0*r);
+        map->state->texelWorld = (float)texel;
         projection = rbl__ortho(left, left + texel*size, bottom, bottom + texel*size, 0.0, 3.0*r);
     }
     else
@@ -5530,34 +5552,34 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double nearPlane = farPlane*1e-3, t = tan(outer);
         cam.position = light->position;
         cam.target = rbl__v3(light->position.x + dir.x, light->position.y + dir.y, light->position.z + dir.z);
-        map->lightView = RblGetView(cam);
-        map->nearPlane = (float)nearPlane; map->farPlane = (float)farPlane;
-        map->texelWorld = (float)(2.0*t/size);
+        map->state->lightView = RblGetView(cam);
+        map->state->nearPlane = (float)nearPlane; map->state->farPlane = (float)farPlane;
+        map->state->texelWorld = (float)(2.0*t/size);
         projection = rbl__frustum(-t*nearPlane, t*nearPlane, -t*nearPlane, t*nearPlane, nearPlane, farPlane);
     }
     Matrix bias = rbl__identity();
     bias.m0 = bias.m5 = bias.m10 = 0.5f; bias.m12 = bias.m13 = bias.m14 = 0.5f;
-    map->view = rbl__viewMatrix(&map->lightView);
-    map->projection = projection;
-    map->matrix = rbl__matMul(rbl__matMul(map->view, projection), bias);
+    map->state->view = rbl__viewMatrix(&map->state->lightView);
+    map->state->projection = projection;
+    map->state->matrix = rbl__matMul(rbl__matMul(map->state->view, projection), bias);
     map->light = lightIndex;
-    map->lightType = light->type;
+    map->state->lightType = light->type;
 
     rlDrawRenderBatchActive();
     for (int u = 0; u < RBL_MAX_SHADOWS; u++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + u); rlDisableTexture(); }   // nothing may sample the target
     rlActiveTextureSlot(0);
-    map->savedView = rlGetMatrixModelview();
-    map->savedProjection = rlGetMatrixProjection();
-    map->savedFramebuffer = rlGetActiveFramebuffer();
-    rlEnableFramebuffer(map->id);
+    map->state->savedView = rlGetMatrixModelview();
+    map->state->savedProjection = rlGetMatrixProjection();
+    map->state->savedFramebuffer = rlGetActiveFramebuffer();
+    rlEnableFramebuffer(map->state->id);
     rlViewport(0, 0, map->size, map->size);
     rlEnableDepthTest();
     rlEnableDepthMask();
     rlClearScreenBuffers();
     rlDisableBackfaceCulling();             // a billboard facing the viewer may show the light its back
     rlSetMatrixProjection(projection);
-    rlSetMatrixModelview(map->view);
-    map->begun = true;
+    rlSetMatrixModelview(map->state->view);
+    map->state->begun = true;
     rbl__state.shadowPass = map;
     rbl__state.cast = rbl__castOf(map);
     return true;
@@ -5565,14 +5587,14 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
 
 void RblEndShadowMap(RblShadowMap *map)
 {
-    if ((map == NULL) || !map->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
+    if ((map == NULL) || !rbl__isLive(map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
     rlDrawRenderBatchActive();
-    rbl__restoreTarget(map->savedFramebuffer);      // e.g. inside BeginTextureMode
-    rlSetMatrixProjection(map->savedProjection);
-    rlSetMatrixModelview(map->savedView);
+    rbl__restoreTarget(map->state->savedFramebuffer);      // e.g. inside BeginTextureMode
+    rlSetMatrixProjection(map->state->savedProjection);
+    rlSetMatrixModelview(map->state->savedView);
     rlEnableBackfaceCulling();
     rlDisableDepthTest();
-    map->begun = false;
+    map->state->begun = false;
     rbl__state.shadowPass = NULL;
     memset(&rbl__state.cast, 0, sizeof(rbl__state.cast));
     rbl__bindSceneShadows();        // the pass unbound the receivers' units
@@ -5606,11 +5628,11 @@ bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance,
 // What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)
 static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
 {
-    rbl__matToArray(map->matrix, out);
-    out[16] = map->texelWorld; out[17] = (map->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f; out[18] = map->nearPlane; out[19] = map->farPlane;
+    rbl__matToArray(map->state->matrix, out);
+    out[16] = map->state->texelWorld; out[17] = (map->state->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f; out[18] = map->state->nearPlane; out[19] = map->state->farPlane;
     out[20] = map->desc.constantBias; out[21] = map->desc.slopeBias; out[22] = map->desc.normalBias; out[23] = (float)map->size;
-    out[24] = map->lightView.right.x; out[25] = map->lightView.right.y; out[26] = map->lightView.right.z; out[27] = 0.0f;
-    out[28] = map->lightView.up.x; out[29] = map->lightView.up.y; out[30] = map->lightView.up.z; out[31] = 0.0f;
+    out[24] = map->state->lightView.right.x; out[25] = map->state->lightView.right.y; out[26] = map->state->lightView.right.z; out[27] = 0.0f;
+    out[28] = map->state->lightView.up.x; out[29] = map->state->lightView.up.y; out[30] = map->state->lightView.up.z; out[31] = 0.0f;
 }
 
 // Maps a scene may list: valid, rendered for one of its lights, not being rendered, one per light
@@ -5622,7 +5644,7 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
     {
         if (!RblIsShadowMapValid(maps[k]) || (maps[k].light < 0)) return "a shadow map is invalid or was never rendered (RblBeginShadowMap)";
         if (maps[k].light >= lightCount) return "a shadow map was rendered for a light the scene does not have";
-        if (maps[k].begun) return "a shadow map is still being rendered (RblEndShadowMap first)";
+        if (maps[k].state->begun) return "a shadow map is still being rendered (RblEndShadowMap first)";
         for (int j = 0; j < k; j++) if (maps[j].light == maps[k].light) return "two shadow maps shadow the same light";
     }
     return NULL;

@@ -283,9 +283,17 @@ static void test_api_double_and_stale_unloads_are_refused_with_one_log_line(void
     sd.size = 64;
     RblShadowMap map = RblLoadShadowMap(sd);
     RT_CHECK(RblIsShadowMapValid(map), "shadow map did not load");
+    RblShadowMap mapCopy = map;
     RblUnloadShadowMap(&map);
     RblUnloadShadowMap(&map);
     RT_CHECK(!RblIsShadowMapValid(map), "unloaded shadow map reports valid");
+    RT_CHECK(!RblIsShadowMapValid(mapCopy), "a stale copy of an unloaded shadow map reports valid");
+    warnings = 0;
+    RblUnloadShadowMap(&mapCopy);
+    RT_CHECK((warnings == 1) && (mapCopy.state == NULL), "unloading a stale shadow map copy: %d log lines, want 1", warnings);
+    warnings = 0;
+    RblEndShadowMap(&mapCopy);
+    RT_CHECK(warnings == 1, "ending a shadow pass never begun: %d log lines, want 1", warnings);
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
     gd.width = 32; gd.height = 32;

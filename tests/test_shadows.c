@@ -572,7 +572,7 @@ static int shMapTexelsWritten(const RblShadowMap *map)
     float *d = (float *)malloc((size_t)map->size*map->size*sizeof(float));
     if ((proc == NULL) || (d == NULL)) { free(d); return -1; }
     memcpy(&readPixels, &proc, sizeof(proc));
-    rlEnableFramebuffer(map->id);
+    rlEnableFramebuffer(map->state->id);
     readPixels(0, 0, map->size, map->size, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, d);
     rlDisableFramebuffer();
     int n = 0;
@@ -617,14 +617,14 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     for (size_t i = 0; i < sizeof(cases)/sizeof(cases[0]); i++)
     {
         warnings = 0;
-        RT_CHECK(!RblBeginShadowMap(&map, cases[i].scene, cases[i].index, cases[i].focus, cases[i].radius) && warnings == 1 && !map.begun && map.light == -1,
+        RT_CHECK(!RblBeginShadowMap(&map, cases[i].scene, cases[i].index, cases[i].focus, cases[i].radius) && warnings == 1 && !map.state->begun && map.light == -1,
                  "%s accepted (%d log lines)", cases[i].what, warnings);
     }
     RblLight bent = litDirectional((Vector3){ 0, 0, 0 }, 1.0f);
     RblScene bentScene = empty;
     bentScene.lights = &bent; bentScene.lightCount = 1;
     warnings = 0;
-    RT_CHECK(!RblBeginShadowMap(&map, &bentScene, 0, o, 2.0f) && warnings == 1 && !map.begun && map.light == -1, "zero direction accepted");
+    RT_CHECK(!RblBeginShadowMap(&map, &bentScene, 0, o, 2.0f) && warnings == 1 && !map.state->begun && map.light == -1, "zero direction accepted");
 
     // A receiver of every light type in the scene (so setting it logs nothing) and its floor
     RblLitShaderDesc desc;
@@ -646,7 +646,7 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     RT_CHECK(RblBeginShadowMap(&map, &scene, 1, o, 2.0f), "good pass refused");
     RblShadowMap other = RblLoadShadowMap(good);
     warnings = 0;
-    RT_CHECK(!RblBeginShadowMap(&other, &scene, 1, o, 2.0f) && warnings == 1 && !other.begun && other.light == -1, "nested shadow pass accepted");
+    RT_CHECK(!RblBeginShadowMap(&other, &scene, 1, o, 2.0f) && warnings == 1 && !other.state->begun && other.light == -1, "nested shadow pass accepted");
     wrong.shadowMaps = &map; wrong.shadowMapCount = 1;
     warnings = 0;
     RT_CHECK(!RblSetScene(&wrong) && warnings == 1, "map still being rendered accepted");

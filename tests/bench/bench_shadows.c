@@ -338,7 +338,7 @@ static double PassCoverage(PassScene *p, PassPath path, int count, int s, float 
     float *d = (float *)malloc((size_t)n*n*sizeof(float));
     if ((proc == NULL) || (d == NULL)) { free(d); return -1.0; }
     memcpy(&readPixels, &proc, sizeof(proc));
-    rlEnableFramebuffer(p->maps[s].id);
+    rlEnableFramebuffer(p->maps[s].state->id);
     readPixels(0, 0, n, n, GL_DEPTH_COMPONENT_, GL_FLOAT_, d);
     rlDisableFramebuffer();
     long covered = 0;
@@ -718,9 +718,9 @@ int main(void)
 
     // Analytic values and the edge error (untimed; also warms every variant up)
     Analytic an = BuildAnalytic(r->light, card, RX_FOCUS, RX_MAP);
-    if (mapOk && (fabs(an.texel - r->map.texelWorld) > 1e-6*an.texel))
+    if (mapOk && (fabs(an.texel - r->map.state->texelWorld) > 1e-6*an.texel))
     {
-        printf("bench_shadows: texel %.7g (2r/(size - 1)) differs from the map's texelWorld %.7g\n", an.texel, (double)r->map.texelWorld);
+        printf("bench_shadows: texel %.7g (2r/(size - 1)) differs from the map's texelWorld %.7g\n", an.texel, (double)r->map.state->texelWorld);
         problems++;
     }
     RefEnvironment env;
