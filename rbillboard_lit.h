@@ -19,7 +19,7 @@
 *       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
 *         Types and Structures Definition (private)   registry entry, packed scene, header state
 *         material maps                     packing, normal encodings, mips, generators (CPU, load time)
-*         (Embedded shaders, RBL-SHADERS-BEGIN/END)   shaders/ *.glsl files, includes resolved (make shaders)
+*         (Embedded shaders, RBL-SHADERS-BEGIN/END)   shaders/ files, includes resolved (make shaders)
 *         lights and the forward lit shader variant #defines before the embedded sources, compilation
 *         the program registry              one entry per compiled program, shared by equal keys
 *         lit programs and per-draw material values   Shader handles; Material -> uniforms per draw
@@ -192,7 +192,7 @@
 *       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
 *       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, kept for
-*       comparison). Debug views: RblSetGBufferView.
+*       comparison). Debug views: RblSetGBufferOutput.
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
 *       Receivers are variants with desc.shadowMaps > 0 (G-buffer: its desc.shadowMaps) and sample the
@@ -328,7 +328,20 @@
 *           desc.maxLights 0 = 1                       desc.maxLights 0 = 4
 *           desc.shadowCaster                          removed (casters are the header's)
 *           gbuffer.shading (RblLitShaderDesc)         gbuffer.desc (RblGBufferDesc)
-*           gbuffer.passes[] (Shader)                  gbuffer.passes[] (program ids, the registry's)
+*           RBL_LIGHTS_POINT, _DIRECTIONAL, _SPOT,     RBL_LIGHT_FEATURE_POINT, ... (RblLightFeature;
+*             _CLASSIC_FALLOFF                           RBL_LIGHT_POINT etc. stay the light types)
+*           RblView, RblGetView(camera)                RblCameraFrame, RblGetCameraFrame(camera)
+*           RblView.light, .minCastSin                 removed (the shadow pass's, private)
+*           RblGBufferView, RBL_GBUFFER_VIEW_*         RblGBufferOutput, RBL_GBUFFER_OUTPUT_*
+*           RblSetGBufferView(&g, v, s); g.debugView,  RblSetGBufferOutput(&g, o, s); g.output,
+*             g.debugScale                               g.outputScale
+*           desc.debugView                             desc.debugOutput
+*           batch.vertices, .runs, .view, .frame, ...  private (batch.state); capacity, count and
+*                                                        skipped stay
+*           gbuffer.id, .lightId, .passes[], VAOs, ... private (gbuffer.state); targets, desc,
+*                                                        output, naiveFullscreen, light counts stay
+*           map.id, .lightView, .matrix, .begun, ...   private (map.state); depth, size, desc,
+*                                                        light stay
 *           map.caster, map.casterInstanced            removed (casters are the header's)
 *           instanceBuffer.shaderId, .shaderGeneration, .loc   removed (the registry keeps locations)
 *
@@ -441,12 +454,12 @@ typedef struct RblVertex {
 } RblVertex;
 
 // Camera frame derived once per batch (degenerate cameras already resolved)
-typedef struct RblView {
+typedef struct RblCameraFrame {
     Vector3 eye;                    // Camera position
     Vector3 right;                  // View matrix row 0 (unit)
     Vector3 up;                     // View matrix row 1 (unit)
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
-} RblView;
+} RblCameraFrame;
 
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 typedef struct RblBatch {
@@ -553,10 +566,10 @@ typedef enum {
 
 // Light features a lit shader variant compiles in (RblLitShaderDesc.lightFeatures; bit flags)
 typedef enum {
-    RBL_LIGHTS_POINT = 1,           // Point lights (windowed falloff)
-    RBL_LIGHTS_DIRECTIONAL = 2,     // Directional lights
-    RBL_LIGHTS_SPOT = 4,            // Spot cones
-    RBL_LIGHTS_CLASSIC_FALLOFF = 8  // Constant/linear/quadratic attenuation
+    RBL_LIGHT_FEATURE_POINT = 1,           // Point lights (windowed falloff)
+    RBL_LIGHT_FEATURE_DIRECTIONAL = 2,     // Directional lights
+    RBL_LIGHT_FEATURE_SPOT = 4,            // Spot cones
+    RBL_LIGHT_FEATURE_CLASSIC_FALLOFF = 8  // Constant/linear/quadratic attenuation
 } RblLightFeature;
 
 // Reflectance models (RblLitShaderDesc.brdf)
@@ -622,7 +635,7 @@ typedef struct RblLitShaderDesc {
     int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
-    int debugView;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
 // Per-material values a lit program reads from raylib's Material at each draw (zero means default):
@@ -642,18 +655,18 @@ typedef enum {
     RBL_PARAM_SPECULAR = 1          // Material.params index of the Blinn-Phong specular intensity
 } RblMaterialParam;
 
-// Deferred debug views (RblSetGBufferView)
+// Deferred debug views (RblSetGBufferOutput)
 typedef enum {
-    RBL_GBUFFER_VIEW_LIT = 0,       // The lit, resolved image
-    RBL_GBUFFER_VIEW_ALBEDO,        // Albedo (sRGB)
-    RBL_GBUFFER_VIEW_NORMAL,        // World normal *0.5 + 0.5
-    RBL_GBUFFER_VIEW_SPECULAR,      // Specular intensity / roughness
-    RBL_GBUFFER_VIEW_OCCLUSION,     // Ambient occlusion
-    RBL_GBUFFER_VIEW_DEPTH,         // Linear distance to the eye / scale
-    RBL_GBUFFER_VIEW_POSITION,      // fract(reconstructed world position / scale)
-    RBL_GBUFFER_VIEW_LIGHT_COUNT,   // Lights evaluated per pixel, heat map (scale = count shown white)
-    RBL_GBUFFER_VIEW_COUNT
-} RblGBufferView;
+    RBL_GBUFFER_OUTPUT_LIT = 0,       // The lit, resolved image
+    RBL_GBUFFER_OUTPUT_ALBEDO,        // Albedo (sRGB)
+    RBL_GBUFFER_OUTPUT_NORMAL,        // World normal *0.5 + 0.5
+    RBL_GBUFFER_OUTPUT_SPECULAR,      // Specular intensity / roughness
+    RBL_GBUFFER_OUTPUT_OCCLUSION,     // Ambient occlusion
+    RBL_GBUFFER_OUTPUT_DEPTH,         // Linear distance to the eye / scale
+    RBL_GBUFFER_OUTPUT_POSITION,      // fract(reconstructed world position / scale)
+    RBL_GBUFFER_OUTPUT_LIGHT_COUNT,   // Lights evaluated per pixel, heat map (scale = count shown white)
+    RBL_GBUFFER_OUTPUT_COUNT
+} RblGBufferOutput;
 
 // G-buffer request; zero means default. Geometry variants (RblLitShaderDesc.deferred) must use its brdf.
 typedef struct RblGBufferDesc {
@@ -679,8 +692,8 @@ typedef struct RblGBuffer {
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblGBufferDesc desc;            // Settings, defaults applied
-    int debugView;                  // RblGBufferView (RblSetGBufferView)
-    float debugScale;               // Range of the depth/position/light-count views
+    int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
+    float outputScale;              // Range of the depth/position/light-count outputs
     bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
@@ -727,8 +740,8 @@ extern "C" {            // Prevents name mangling of functions
 // Module Functions Declaration
 //----------------------------------------------------------------------------------
 // Geometry (CPU, no GL needed)
-RBLAPI RblView RblGetView(Camera3D camera);                                   // Camera frame with degenerate cases resolved
-RBLAPI bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
+RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
+RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
 
 // Batched and immediate paths (GL)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
@@ -776,7 +789,7 @@ RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // 
 RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with deferred variants of the G-buffer's brdf); false = rejected
 RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
 RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's ambient and lights into the accumulation (bounded lights as volumes); false = rejected
-RBLAPI void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferView) and its range
+RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
 
 // Shadows
@@ -838,7 +851,7 @@ typedef enum {
     RBL__U_SHADOW_LIGHT, RBL__U_SHADOW_MATRIX, RBL__U_SHADOW_PARAMS, RBL__U_SHADOW_BIAS, RBL__U_SHADOW_AXES,
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
-    RBL__U_DEBUG_VIEW, RBL__U_DEBUG_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P,
+    RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -903,7 +916,7 @@ typedef struct rbl__BatchState {
     unsigned int vaoId;             // Vertex array
     unsigned int vboId;             // Vertex buffer
     unsigned int eboId;             // Index buffer (quads share 16-bit indices in chunks)
-    RblView view;                   // Frame of the current camera
+    RblCameraFrame view;                   // Frame of the current camera
     rbl__FrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
@@ -931,7 +944,7 @@ typedef struct rbl__GBufferState {
 typedef struct rbl__ShadowMapState {
     unsigned int id;                // Framebuffer (depth attachment only)
     int lightType;                  // RBL_LIGHT_DIRECTIONAL or RBL_LIGHT_SPOT
-    RblView lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
+    RblCameraFrame lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
     Matrix view;                    // Light camera matrices of the last pass
     Matrix projection;
     Matrix matrix;                  // World -> (u, v, window depth) before the divide: view x projection x bias
@@ -1079,8 +1092,8 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "#include \"output.glsl\"\n",
     "\n",
     "in vec2 fragUv;\n",
-    "uniform int rblDebugView;               // RblGBufferView\n",
-    "uniform float rblDebugScale;            // linear depth / position / light count range of the debug views\n",
+    "uniform int rblOutput;               // RblGBufferOutput\n",
+    "uniform float rblOutputScale;            // linear depth / position / light count range of the debug views\n",
     "out vec4 finalColor;\n",
     "\n",
     "// Heat map for the light count view: black -> blue -> green -> yellow -> red -> white\n",
@@ -1104,16 +1117,16 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "    vec3 position = rblPositionFromDepth(texel, depth);\n",
     "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
     "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
-    "    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
+    "    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = vec3(0.0);\n",
-    "    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);\n",
-    "    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;\n",
-    "    else if (rblDebugView == 3) v = vec3(s.specular);\n",
-    "    else if (rblDebugView == 4) v = vec3(s.occlusion);\n",
-    "    else if (rblDebugView == 5) v = vec3(clamp(length(position - rblEye)/rblDebugScale, 0.0, 1.0));\n",
-    "    else if (rblDebugView == 6) v = fract(position/rblDebugScale);\n",
-    "    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);\n",
+    "    if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);\n",
+    "    else if (rblOutput == 2) v = s.normal*0.5 + 0.5;\n",
+    "    else if (rblOutput == 3) v = vec3(s.specular);\n",
+    "    else if (rblOutput == 4) v = vec3(s.occlusion);\n",
+    "    else if (rblOutput == 5) v = vec3(clamp(length(position - rblEye)/rblOutputScale, 0.0, 1.0));\n",
+    "    else if (rblOutput == 6) v = fract(position/rblOutputScale);\n",
+    "    else if (rblOutput == 7) v = rblHeat(color.r/rblOutputScale);\n",
     "    finalColor = vec4(v, 1.0);\n",
     "}\n",
     NULL };
@@ -1473,7 +1486,7 @@ static const char *const rbl__shader_lit_fs[] = {
     "#include \"lights.glsl\"\n",
     "#include \"output.glsl\"\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
-    "//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
+    "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
     "out vec4 finalColor;\n",
     "\n",
@@ -1489,13 +1502,13 @@ static const char *const rbl__shader_lit_fs[] = {
     "#endif\n",
     "    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye) + emission;\n",
     "\n",
-    "#if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)\n",
+    "#if defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 1)\n",
     "    finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);\n",
-    "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)\n",
+    "#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 2)\n",
     "    finalColor = vec4(sp.normal*0.5 + 0.5, 1.0);\n",
-    "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)\n",
+    "#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 3)\n",
     "    finalColor = vec4(vec3(sp.specular), 1.0);\n",
-    "#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)\n",
+    "#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 4)\n",
     "    finalColor = vec4(vec3(sp.occlusion), 1.0);\n",
     "#else\n",
     "    finalColor = vec4(rblFinish(color, fragPosition, eye), alpha);\n",
@@ -2235,9 +2248,9 @@ static inline bool rbl__perpendicular(Vector3 v, Vector3 n, Vector3 *out)
 // Module Functions Definition: geometry
 //----------------------------------------------------------------------------------
 // Camera frame, computed in the same operation order as raymath's MatrixLookAt (parity with raylib)
-RblView RblGetView(Camera3D camera)
+RblCameraFrame RblGetCameraFrame(Camera3D camera)
 {
-    RblView view;
+    RblCameraFrame view;
     view.eye = camera.position;
     Vector3 back;
     if (!rbl__normalizeTo(rbl__sub(camera.position, camera.target), &back)) back = rbl__v3(0.0f, 0.0f, 1.0f);
@@ -2278,7 +2291,7 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
 }
 
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal
-static void rbl__facingBasis(const RblView *view, const rbl__Cast *cast, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
+static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
 {
     Vector3 r = view->right, u = view->up, n = view->back;
     switch (b->facing)
@@ -2350,7 +2363,7 @@ static void rbl__facingBasis(const RblView *view, const rbl__Cast *cast, const R
 // The facing frame of b, from the cache when it holds b's (CAMERA_PLANE: same up), else made and kept.
 // Made exactly as rbl__facingBasis(); a caller up is normalised here and its length kept (raylib
 // scales the quad's height by it).
-static void rbl__facingFrame(const RblView *view, const rbl__Cast *cast, const RblBillboard *b, rbl__FrameCache *cache)
+static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, rbl__FrameCache *cache)
 {
     if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) &&
         (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
@@ -2370,7 +2383,7 @@ static void rbl__facingFrame(const RblView *view, const rbl__Cast *cast, const R
     cache->facing = b->facing;
 }
 
-static bool rbl__billboardVertices(const RblView *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
     // position .. source and up .. roundness are runs of floats (checked at compile time)
@@ -2474,7 +2487,7 @@ static bool rbl__billboardVertices(const RblView *view, const rbl__Cast *cast, r
     return true;
 }
 
-bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
     rbl__FrameCache cache;
@@ -2490,7 +2503,7 @@ bool RblBillboardVertices(const RblView *view, int textureWidth, int textureHeig
 #define RBL__CASTER_MAPS 32
 // Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
 // colour pass; per-material values go with each draw (defined with the lit programs)
-static void rbl__shadowPassView(RblView *view);
+static void rbl__shadowPassView(RblCameraFrame *view);
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
@@ -2601,7 +2614,7 @@ void RblBeginBatch(RblBatch *pub, Camera3D camera)
     rbl__BatchState *batch = rbl__batchState(pub);
     if (batch == NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: batch not loaded"); return; }
     if (batch->begun && (batch->count > 0)) TraceLog(LOG_WARNING, "RBL: RblBeginBatch: %i billboards added since the last RblBeginBatch were never drawn (RblEndBatch)", batch->count);
-    batch->view = RblGetView(camera);
+    batch->view = RblGetCameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->frame.facing = -1;      // the frame depends on the view
     batch->count = 0;
@@ -2943,7 +2956,7 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
 
     // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
-    RblView view = RblGetView(camera);
+    RblCameraFrame view = RblGetCameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     const float frame[28] = {
         view.eye.x, view.eye.y, view.eye.z, (float)desc.facing,
@@ -4088,7 +4101,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblDebugView", "rblDebugScale", "rblDepthLinear", "rblInvP" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -4109,17 +4122,17 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
     if (!rbl__finiteNonNegative(in.gamma)) return "gamma negative or not finite";
-    if ((in.debugView < 0) || (in.debugView > 4)) return "debugView outside 0..4";
+    if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
-    out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHTS_POINT : in.lightFeatures;
+    out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
     out->material.normalEncoding = m.normalEncoding;
     out->material.emissive = m.emissive;
     out->material.occlusion = m.occlusion;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
-    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugView == 3));
+    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == 3));
     out->brdf = in.brdf;
     out->fog = in.fog;
     out->tonemap = in.tonemap;
@@ -4127,12 +4140,12 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->linearOutput = in.linearOutput;
     out->instanced = in.instanced;
     out->deferred = in.deferred;
-    out->debugView = in.debugView;
+    out->debugOutput = in.debugOutput;
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
-        out->maxLights = 1; out->lightFeatures = RBL_LIGHTS_POINT; out->fog = RBL_FOG_NONE; out->tonemap = RBL_TONEMAP_NONE;
-        out->gamma = 0.0f; out->linearOutput = false; out->debugView = 0;
+        out->maxLights = 1; out->lightFeatures = RBL_LIGHT_FEATURE_POINT; out->fog = RBL_FOG_NONE; out->tonemap = RBL_TONEMAP_NONE;
+        out->gamma = 0.0f; out->linearOutput = false; out->debugOutput = 0;
     }
     out->shadowMaps = in.deferred? 0 : in.shadowMaps;       // the geometry pass receives nothing
     out->shadowFilter = (out->shadowMaps == 0)? 0 : ((in.shadowFilter == 0)? 2 : in.shadowFilter);
@@ -4147,13 +4160,13 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     int n = snprintf(out, size, "#define RBL_LIGHTS %i\n#define RBL_BRDF %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n"
                      "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n#define RBL_SHADOWS %i\n#define RBL_SHADOW_FILTER %i\n%s%s%s%s%s%s%s",
                      d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog, d->tonemap, d->shadowMaps, d->shadowFilter,
-                     (d->lightFeatures & RBL_LIGHTS_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
-                     (d->lightFeatures & RBL_LIGHTS_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
-                     (d->lightFeatures & RBL_LIGHTS_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
+                     (d->lightFeatures & RBL_LIGHT_FEATURE_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
+                     (d->lightFeatures & RBL_LIGHT_FEATURE_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
+                     (d->lightFeatures & RBL_LIGHT_FEATURE_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
                      m->specular? "#define RBL_SPECULAR\n" : "", m->occlusion? "#define RBL_OCCLUSION\n" : "",
                      view? "#define RBL_VIEW_VECTOR\n" : "", d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
     if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
-    if ((n > 0) && ((size_t)n < size) && (d->debugView > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_VIEW %i\n", d->debugView);
+    if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
 //----------------------------------------------------------------------------------
@@ -4375,8 +4388,8 @@ void RblUnloadLitShader(Shader *shader)
 static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 {
     if ((l->type < RBL_LIGHT_POINT) || (l->type > RBL_LIGHT_SPOT) || (l->falloff < RBL_FALLOFF_WINDOWED) || (l->falloff > RBL_FALLOFF_CLASSIC)) return false;
-    *features |= (l->type == RBL_LIGHT_POINT)? RBL_LIGHTS_POINT : ((l->type == RBL_LIGHT_SPOT)? RBL_LIGHTS_SPOT : RBL_LIGHTS_DIRECTIONAL);
-    if ((l->type != RBL_LIGHT_DIRECTIONAL) && (l->falloff == RBL_FALLOFF_CLASSIC)) *features |= RBL_LIGHTS_CLASSIC_FALLOFF;
+    *features |= (l->type == RBL_LIGHT_POINT)? RBL_LIGHT_FEATURE_POINT : ((l->type == RBL_LIGHT_SPOT)? RBL_LIGHT_FEATURE_SPOT : RBL_LIGHT_FEATURE_DIRECTIONAL);
+    if ((l->type != RBL_LIGHT_DIRECTIONAL) && (l->falloff == RBL_FALLOFF_CLASSIC)) *features |= RBL_LIGHT_FEATURE_CLASSIC_FALLOFF;
     return true;
 }
 
@@ -4601,7 +4614,7 @@ static int rbl__uploadSceneLights(const rbl__Program *p)
     for (int i = 0; i < s->lightCount; i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
-        if ((n == p->key.desc.maxLights) || ((s->lightFeatures[i] & ~p->key.desc.lightFeatures & ~RBL_LIGHTS_POINT) != 0)) { skipped++; continue; }
+        if ((n == p->key.desc.maxLights) || ((s->lightFeatures[i] & ~p->key.desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0)) { skipped++; continue; }
         memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
         memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
         if (d[15] > 0.0f) slotOf[(int)d[15] - 1] = n;
@@ -5005,7 +5018,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     }
     g.state->instanceCapacity = 256;
     rbl__loadVolumeMesh(&g);
-    g.debugScale = 1.0f;
+    g.outputScale = 1.0f;
     g.state->view = rbl__identity(); g.state->projection = rbl__identity();
     TraceLog(LOG_INFO, "RBL: G-buffer %ix%i loaded (%i bytes/pixel + depth + RGBA16F accumulation)", width, height, RblGBufferBytesPerPixel(&g));
     return g;
@@ -5070,7 +5083,7 @@ int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 }
 
 // View matrix in raylib's layout (as MatrixLookAt), from the header's degenerate-safe camera frame
-static Matrix rbl__viewMatrix(const RblView *v)
+static Matrix rbl__viewMatrix(const RblCameraFrame *v)
 {
     Matrix m;
     m.m0 = v->right.x; m.m1 = v->up.x; m.m2 = v->back.x; m.m3 = 0.0f;
@@ -5114,7 +5127,7 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     }
     rlMatrixMode(RL_MODELVIEW);
     rlLoadIdentity();
-    RblView v = RblGetView(camera);
+    RblCameraFrame v = RblGetCameraFrame(camera);
     float view[16];
     rbl__matToArray(rbl__viewMatrix(&v), view);
     rlMultMatrixf(view);
@@ -5232,7 +5245,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     int count = s->lightCount, unbounded = 0, uncompiled = 0;
     for (int i = 0; i < count; i++)
     {
-        if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHTS_POINT) != 0) uncompiled++;
+        if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) uncompiled++;
         else if (rbl__fullscreenLight(g, &s->lights[i*RBL__LIGHT_FLOATS])) unbounded++;
     }
     if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
@@ -5252,7 +5265,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         g->state->instanceCapacity = capacity;
     }
     float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
-    bool counting = (g->debugView == RBL_GBUFFER_VIEW_LIGHT_COUNT);
+    bool counting = (g->output == RBL_GBUFFER_OUTPUT_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
     unsigned int callerTarget = rlGetActiveFramebuffer();
@@ -5271,7 +5284,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     for (int i = 0; i <= count; i++)
     {
         const float *d = (i < count)? &s->lights[i*RBL__LIGHT_FLOATS] : NULL;
-        if ((d != NULL) && ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHTS_POINT) == 0) && rbl__fullscreenLight(g, d))
+        if ((d != NULL) && ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) == 0) && rbl__fullscreenLight(g, d))
         {
             memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
             memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
@@ -5293,7 +5306,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
-        if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHTS_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
+        if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
         memcpy(&s->staging[v*RBL__LIGHT_FLOATS], d, RBL__LIGHT_FLOATS*sizeof(float));
         v++;
     }
@@ -5323,15 +5336,15 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     return true;
 }
 
-void RblSetGBufferView(RblGBuffer *gbuffer, int view, float scale)
+void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 {
-    if ((gbuffer == NULL) || (view < 0) || (view >= RBL_GBUFFER_VIEW_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
+    if ((gbuffer == NULL) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
     {
-        TraceLog(LOG_WARNING, "RBL: RblSetGBufferView: unknown view %i or bad scale", view);
+        TraceLog(LOG_WARNING, "RBL: RblSetGBufferOutput: unknown view %i or bad scale", view);
         return;
     }
-    gbuffer->debugView = view;
-    gbuffer->debugScale = (scale > 0.0f)? scale : 1.0f;
+    gbuffer->output = view;
+    gbuffer->outputScale = (scale > 0.0f)? scale : 1.0f;
 }
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
@@ -5340,8 +5353,8 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     RblGBuffer *g = gbuffer;
     rlDrawRenderBatchActive();
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
-    if (loc[RBL__U_DEBUG_VIEW] != -1) rlSetUniform(loc[RBL__U_DEBUG_VIEW], &g->debugView, SHADER_UNIFORM_INT, 1);
-    if (loc[RBL__U_DEBUG_SCALE] != -1) rlSetUniform(loc[RBL__U_DEBUG_SCALE], &g->debugScale, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_OUTPUT] != -1) rlSetUniform(loc[RBL__U_OUTPUT], &g->output, SHADER_UNIFORM_INT, 1);
+    if (loc[RBL__U_OUTPUT_SCALE] != -1) rlSetUniform(loc[RBL__U_OUTPUT_SCALE], &g->outputScale, SHADER_UNIFORM_FLOAT, 1);
     rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
     rlEnableDepthMask();
     rlDisableBackfaceCulling();
@@ -5358,7 +5371,7 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 //----------------------------------------------------------------------------------
 // The billboard frame of a shadow pass: the caller's camera (the shadow matches what is seen), or the
 // light's own frame (desc.faceLight); AXIS billboards get the light and minimum angle to tilt by
-static void rbl__shadowPassView(RblView *view)
+static void rbl__shadowPassView(RblCameraFrame *view)
 {
     if (rbl__state.shadowPass->desc.faceLight) *view = rbl__state.shadowPass->state->lightView;
 }
@@ -5525,7 +5538,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     if (light->type == RBL_LIGHT_SPOT) rbl__normalizeTo(light->direction, &dir);
     Camera3D cam;
     memset(&cam, 0, sizeof(cam));
-    cam.up = rbl__v3(0.0f, 1.0f, 0.0f);                     // RblGetView falls back when the light is vertical
+    cam.up = rbl__v3(0.0f, 1.0f, 0.0f);                     // RblGetCameraFrame falls back when the light is vertical
     double size = (double)map->size;
     Matrix projection;
     if (light->type == RBL_LIGHT_DIRECTIONAL)
@@ -5536,7 +5549,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double r = focusRadius, texel = 2.0*r/(size - 1.0);
         cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
         cam.target = focusCenter;
-        map->state->lightView = RblGetView(cam);
+        map->state->lightView = RblGetCameraFrame(cam);
         double ex = rbl__dot(map->state->lightView.right, cam.position), ey = rbl__dot(map->state->lightView.up, cam.position);
         double cx = rbl__dot(map->state->lightView.right, focusCenter), cy = rbl__dot(map->state->lightView.up, focusCenter);
         double left = floor((cx - r)/texel)*texel - ex, bottom = floor((cy - r)/texel)*texel - ey;
@@ -5552,7 +5565,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double nearPlane = farPlane*1e-3, t = tan(outer);
         cam.position = light->position;
         cam.target = rbl__v3(light->position.x + dir.x, light->position.y + dir.y, light->position.z + dir.z);
-        map->state->lightView = RblGetView(cam);
+        map->state->lightView = RblGetCameraFrame(cam);
         map->state->nearPlane = (float)nearPlane; map->state->farPlane = (float)farPlane;
         map->state->texelWorld = (float)(2.0*t/size);
         projection = rbl__frustum(-t*nearPlane, t*nearPlane, -t*nearPlane, t*nearPlane, nearPlane, farPlane);
@@ -5609,7 +5622,7 @@ bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance,
         TraceLog(LOG_WARNING, "RBL: RblShadowFocusFromCamera: needs 0 <= near < far, aspect > 0, 0 < fovy (< 180 perspective), finite values");
         return false;
     }
-    RblView v = RblGetView(camera);
+    RblCameraFrame v = RblGetCameraFrame(camera);
     // Half-diagonal of the slice's cross-section at distance d: perspective grows with d, orthographic not
     double n = nearDistance, f = farDistance, k = sqrt(1.0 + (double)aspect*aspect);
     double rn, rf;

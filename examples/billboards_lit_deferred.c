@@ -93,7 +93,7 @@ int main(void)
 
     DeferredInit(GetRenderWidth(), GetRenderHeight());
 
-    const char *viewNames[RBL_GBUFFER_VIEW_COUNT] = { "lit", "albedo", "normal", "roughness", "occlusion", "depth", "position", "lights per pixel" };
+    const char *viewNames[RBL_GBUFFER_OUTPUT_COUNT] = { "lit", "albedo", "normal", "roughness", "occlusion", "depth", "position", "lights per pixel" };
     bool paused = false;
     float time = 0.0f;
 
@@ -110,8 +110,8 @@ int main(void)
         if (IsKeyPressed(KEY_N)) gbuffer.naiveFullscreen = !gbuffer.naiveFullscreen;
         if (IsKeyPressed(KEY_D))
         {
-            int view = (gbuffer.debugView + 1)%RBL_GBUFFER_VIEW_COUNT;
-            RblSetGBufferView(&gbuffer, view, (view == RBL_GBUFFER_VIEW_LIGHT_COUNT)? 32.0f : 20.0f);
+            int view = (gbuffer.output + 1)%RBL_GBUFFER_OUTPUT_COUNT;
+            RblSetGBufferOutput(&gbuffer, view, (view == RBL_GBUFFER_OUTPUT_LIGHT_COUNT)? 32.0f : 20.0f);
         }
         if (!paused) time += GetFrameTime();
         DeferredUpdate(time);
@@ -125,7 +125,7 @@ int main(void)
             DeferredCompose();          // Resolve into the screen, then forward glows
 
             DrawText(TextFormat("%s: %i lights, view: %s (D), %s (N)", deferredValid? "deferred" : "forward fallback", DEFERRED_LIGHTS + 1,
-                                viewNames[gbuffer.debugView], gbuffer.naiveFullscreen? "naive full-screen loop" : "light volumes"), 10, 40, 20, RAYWHITE);
+                                viewNames[gbuffer.output], gbuffer.naiveFullscreen? "naive full-screen loop" : "light volumes"), 10, 40, 20, RAYWHITE);
             DrawFPS(10, 10);
         EndDrawing();
         //----------------------------------------------------------------------------------

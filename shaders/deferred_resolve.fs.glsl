@@ -4,8 +4,8 @@
 #include "output.glsl"
 
 in vec2 fragUv;
-uniform int rblDebugView;               // RblGBufferView
-uniform float rblDebugScale;            // linear depth / position / light count range of the debug views
+uniform int rblOutput;               // RblGBufferOutput
+uniform float rblOutputScale;            // linear depth / position / light count range of the debug views
 out vec4 finalColor;
 
 // Heat map for the light count view: black -> blue -> green -> yellow -> red -> white
@@ -29,15 +29,15 @@ void main()
     vec3 position = rblPositionFromDepth(texel, depth);
     gl_FragDepth = depth;                               // later forward draws sort against this
     vec3 color = texelFetch(rblGAccum, texel, 0).rgb;
-    if (rblDebugView == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }
+    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }
     RblShadingPoint s = rblGBufferSurface(texel, position);
     vec3 v = vec3(0.0);
-    if (rblDebugView == 1) v = rblLinearToSrgb(s.albedo);
-    else if (rblDebugView == 2) v = s.normal*0.5 + 0.5;
-    else if (rblDebugView == 3) v = vec3(s.specular);
-    else if (rblDebugView == 4) v = vec3(s.occlusion);
-    else if (rblDebugView == 5) v = vec3(clamp(length(position - rblEye)/rblDebugScale, 0.0, 1.0));
-    else if (rblDebugView == 6) v = fract(position/rblDebugScale);
-    else if (rblDebugView == 7) v = rblHeat(color.r/rblDebugScale);
+    if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);
+    else if (rblOutput == 2) v = s.normal*0.5 + 0.5;
+    else if (rblOutput == 3) v = vec3(s.specular);
+    else if (rblOutput == 4) v = vec3(s.occlusion);
+    else if (rblOutput == 5) v = vec3(clamp(length(position - rblEye)/rblOutputScale, 0.0, 1.0));
+    else if (rblOutput == 6) v = fract(position/rblOutputScale);
+    else if (rblOutput == 7) v = rblHeat(color.r/rblOutputScale);
     finalColor = vec4(v, 1.0);
 }

@@ -4,7 +4,7 @@
 #include "lights.glsl"
 #include "output.glsl"
 //   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
-//   RBL_DEBUG_VIEW v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
+//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 
 out vec4 finalColor;
 
@@ -20,13 +20,13 @@ void main()
 #endif
     vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye) + emission;
 
-#if defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 1)
+#if defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 1)
     finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);
-#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 2)
+#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 2)
     finalColor = vec4(sp.normal*0.5 + 0.5, 1.0);
-#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 3)
+#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 3)
     finalColor = vec4(vec3(sp.specular), 1.0);
-#elif defined(RBL_DEBUG_VIEW) && (RBL_DEBUG_VIEW == 4)
+#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 4)
     finalColor = vec4(vec3(sp.occlusion), 1.0);
 #else
     finalColor = vec4(rblFinish(color, fragPosition, eye), alpha);

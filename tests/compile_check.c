@@ -17,7 +17,7 @@ int main(void)
     memset(&billboard, 0, sizeof(billboard));
 #if defined(CHECK_IMPLEMENTATION)
     RblVertex quad[4];
-    RblView view = RblGetView(camera);
+    RblCameraFrame view = RblGetCameraFrame(camera);
     return RblBillboardVertices(&view, 1, 1, &billboard, quad)? 0 : 1;
 #else
     return (int)sizeof(RblVertex) - 52;     // the layout the vertex attributes describe

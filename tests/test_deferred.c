@@ -309,7 +309,7 @@ static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
     DefScene s = defSceneLoad(RBL_BRDF_GGX);
     s.lights[0] = litPoint((Vector3){ 0.4f, -3.0f, 2.6f }, 4.0f, 5.0f);       // the eye is 0.6 from it, range 5
     s.count = 1;
-    s.desc.lightFeatures = RBL_LIGHTS_POINT;
+    s.desc.lightFeatures = RBL_LIGHT_FEATURE_POINT;
     RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
     Image fwd = defRenderForward(&s);
     bool ok = false;
@@ -526,12 +526,12 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
         RblDrawBillboard(cam, m, plane);
         RblEndGBuffer(&g);
         // Shader reconstruction: the distance-to-eye debug view written unencoded into a float target
-        RblSetGBufferView(&g, RBL_GBUFFER_VIEW_DEPTH, 1e4f);
+        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_DEPTH, 1e4f);
         RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
         BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
         float *pos = (float *)rlReadTexturePixels(rt.texture.id, LIT_TARGET, LIT_TARGET, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
         litTargetUnload(rt);
-        RblSetGBufferView(&g, RBL_GBUFFER_VIEW_LIT, 1.0f);
+        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
         // Depth values of the geometry pass
         float *depth = (float *)malloc(sizeof(float)*LIT_TARGET*LIT_TARGET);
         rlEnableFramebuffer(g.state->id);
@@ -847,10 +847,10 @@ static void test_deferred_debug_views_show_what_they_name(void)
     m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
     rtSetMaterialValues(&m, sc.values);
     RT_CHECK(defSetLights(three, 3, sc.env.ambient, sc.fog), "scene rejected");
-    Color got[RBL_GBUFFER_VIEW_COUNT];
-    for (int v = 0; v < RBL_GBUFFER_VIEW_COUNT; v++)
+    Color got[RBL_GBUFFER_OUTPUT_COUNT];
+    for (int v = 0; v < RBL_GBUFFER_OUTPUT_COUNT; v++)
     {
-        RblSetGBufferView(&g, v, (v == RBL_GBUFFER_VIEW_LIGHT_COUNT)? 5.0f : 10.0f);
+        RblSetGBufferOutput(&g, v, (v == RBL_GBUFFER_OUTPUT_LIGHT_COUNT)? 5.0f : 10.0f);
         RblBeginGBuffer(&g, sc.camera);
         RblDrawBillboard(sc.camera, m, litPlane());
         RblEndGBuffer(&g);
@@ -863,14 +863,14 @@ static void test_deferred_debug_views_show_what_they_name(void)
         UnloadImage(img);
     }
     D3 n = dNorm(d3(sc.normal.r/255.0*2.0 - 1.0, sc.normal.g/255.0*2.0 - 1.0, sc.normal.b/255.0*2.0 - 1.0));
-    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_ALBEDO].r - sc.albedo.r) <= 1 && abs(got[RBL_GBUFFER_VIEW_ALBEDO].b - sc.albedo.b) <= 1, "albedo view %d", got[RBL_GBUFFER_VIEW_ALBEDO].r);
-    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_NORMAL].r - (int)lround((n.x*0.5 + 0.5)*255)) <= 1 && abs(got[RBL_GBUFFER_VIEW_NORMAL].b - (int)lround((n.z*0.5 + 0.5)*255)) <= 1,
-             "normal view %d,%d,%d", got[RBL_GBUFFER_VIEW_NORMAL].r, got[RBL_GBUFFER_VIEW_NORMAL].g, got[RBL_GBUFFER_VIEW_NORMAL].b);
-    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_SPECULAR].r - 153) <= 1, "roughness view %d (0.6 = 153)", got[RBL_GBUFFER_VIEW_SPECULAR].r);
-    RT_CHECK(got[RBL_GBUFFER_VIEW_OCCLUSION].r == 255, "occlusion view %d", got[RBL_GBUFFER_VIEW_OCCLUSION].r);
-    RT_CHECK(abs(got[RBL_GBUFFER_VIEW_DEPTH].r - 102) <= 1, "depth view %d (4/10 = 102)", got[RBL_GBUFFER_VIEW_DEPTH].r);
+    RT_CHECK(abs(got[RBL_GBUFFER_OUTPUT_ALBEDO].r - sc.albedo.r) <= 1 && abs(got[RBL_GBUFFER_OUTPUT_ALBEDO].b - sc.albedo.b) <= 1, "albedo view %d", got[RBL_GBUFFER_OUTPUT_ALBEDO].r);
+    RT_CHECK(abs(got[RBL_GBUFFER_OUTPUT_NORMAL].r - (int)lround((n.x*0.5 + 0.5)*255)) <= 1 && abs(got[RBL_GBUFFER_OUTPUT_NORMAL].b - (int)lround((n.z*0.5 + 0.5)*255)) <= 1,
+             "normal view %d,%d,%d", got[RBL_GBUFFER_OUTPUT_NORMAL].r, got[RBL_GBUFFER_OUTPUT_NORMAL].g, got[RBL_GBUFFER_OUTPUT_NORMAL].b);
+    RT_CHECK(abs(got[RBL_GBUFFER_OUTPUT_SPECULAR].r - 153) <= 1, "roughness view %d (0.6 = 153)", got[RBL_GBUFFER_OUTPUT_SPECULAR].r);
+    RT_CHECK(got[RBL_GBUFFER_OUTPUT_OCCLUSION].r == 255, "occlusion view %d", got[RBL_GBUFFER_OUTPUT_OCCLUSION].r);
+    RT_CHECK(abs(got[RBL_GBUFFER_OUTPUT_DEPTH].r - 102) <= 1, "depth view %d (4/10 = 102)", got[RBL_GBUFFER_OUTPUT_DEPTH].r);
     // Three volumes cover the centre (no unbounded lights): 3 of 5 on the heat ramp is yellow
-    Color heat = got[RBL_GBUFFER_VIEW_LIGHT_COUNT];
+    Color heat = got[RBL_GBUFFER_OUTPUT_LIGHT_COUNT];
     RT_CHECK(heat.r == 255 && heat.g > 200 && heat.b < 40, "light count view %d,%d,%d, expected yellow (3 of 5)", heat.r, heat.g, heat.b);
     printf("    centre pixel: albedo %d,%d,%d normal %d,%d,%d roughness %d occlusion %d depth %d position %d,%d,%d count %d,%d,%d\n",
            got[1].r, got[1].g, got[1].b, got[2].r, got[2].g, got[2].b, got[3].r, got[4].r, got[5].r, got[6].r, got[6].g, got[6].b, heat.r, heat.g, heat.b);

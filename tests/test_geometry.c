@@ -42,7 +42,7 @@ static void checkFrame(const RblVertex q[4], const char *what)
 static void test_geometry_corners_match_double_reference_in_every_mode(void)
 {
     Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     unsigned int seed = 12345u;
     for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
     {
@@ -70,7 +70,7 @@ static void test_geometry_corners_match_double_reference_in_every_mode(void)
 static void test_geometry_camera_modes_face_the_eye(void)
 {
     Camera3D cam = makeCamera((Vector3){ 0.0f, 2.0f, 10.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     unsigned int seed = 99u;
     for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_AXIS; facing++)
     {
@@ -103,7 +103,7 @@ static void test_geometry_camera_modes_face_the_eye(void)
 static void test_geometry_tangent_follows_plus_u_under_every_flip_and_rotated_frame(void)
 {
     Camera3D cam = makeCamera((Vector3){ 2.0f, 3.0f, 9.0f }, (Vector3){ 0.0f, 1.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     int combos = 0;
     for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
     for (int mask = 0; mask < 32; mask++)
@@ -138,7 +138,7 @@ static void test_geometry_tangent_follows_plus_u_under_every_flip_and_rotated_fr
 static void test_geometry_uvs_match_raylib_layout_and_mirror_inside_the_source(void)
 {
     Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     RblBillboard b;
     memset(&b, 0, sizeof(b));
     b.size = (Vector2){ 3.0f, 1.0f };           // deliberately not the source size in texels
@@ -180,7 +180,7 @@ static void test_geometry_uvs_match_raylib_layout_and_mirror_inside_the_source(v
 static void test_geometry_rounded_normals_bend_outward_and_stay_orthonormal(void)
 {
     Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     RblBillboard b;
     memset(&b, 0, sizeof(b));
     b.size = (Vector2){ 2.0f, 2.0f }; b.origin = (Vector2){ 1.0f, 1.0f };
@@ -215,7 +215,7 @@ static void test_hard_camera_looking_straight_up_or_down_gets_a_stable_frame(voi
     for (int k = 0; k < 2; k++)
     {
         Camera3D cam = makeCamera((Vector3){ 1.0f, ys[k], 2.0f }, (Vector3){ 1.0f, 0.0f, 2.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
-        RblView view = RblGetView(cam);
+        RblCameraFrame view = RblGetCameraFrame(cam);
         RT_CHECK(fabs(dLen(d3f(view.right)) - 1.0) < 1e-6 && fabs(dLen(d3f(view.up)) - 1.0) < 1e-6, "view frame not unit");
         RT_CHECK(fabs(dDot(d3f(view.right), d3f(view.up))) < 1e-6, "view frame not orthogonal");
         // Looking down, screen-up is -Z (north); looking up it is +Z
@@ -235,7 +235,7 @@ static void test_hard_camera_looking_straight_up_or_down_gets_a_stable_frame(voi
 static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
 {
     Camera3D cam = makeCamera((Vector3){ 1, 2, 3 }, (Vector3){ 1, 2, 3 }, (Vector3){ 0, 1, 0 });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     RT_CHECK(view.back.z == 1.0f, "target == position: view should fall back to looking down -Z");
     for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
     {
@@ -253,7 +253,7 @@ static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
     memset(&b, 0, sizeof(b));
     b.facing = RBL_FACING_AXIS; b.size = (Vector2){ 1, 2 };
     RblVertex q[4];
-    RblView aboveView = RblGetView(above);
+    RblCameraFrame aboveView = RblGetCameraFrame(above);
     RT_CHECK(RblBillboardVertices(&aboveView, 8, 8, &b, q), "axis mode, eye on axis: skipped");
     checkFrame(q, "eye on axis");
     RT_CHECK(fabs(q[3].position[1] - q[0].position[1] - 2.0f) < 1e-6, "axis-locked billboard must stay upright");
@@ -262,7 +262,7 @@ static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
 static void test_hard_zero_negative_and_huge_sizes(void)
 {
     Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     const float sizes[][2] = { { 0, 0 }, { 0, 1 }, { -1, -1 }, { -1e-30f, 1e-30f }, { 1e30f, 1e30f }, { -1e30f, 3e30f } };
     for (int i = 0; i < (int)(sizeof(sizes)/sizeof(sizes[0])); i++)
     {
@@ -287,7 +287,7 @@ static void test_hard_far_from_origin_keeps_relative_precision(void)
 {
     Vector3 far = { 1e5f, -1e5f, 1e5f };
     Camera3D cam = makeCamera((Vector3){ far.x + 3.0f, far.y + 2.0f, far.z + 10.0f }, far, (Vector3){ 0, 1, 0 });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     unsigned int seed = 7u;
     double worst = 0.0;
     for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
@@ -312,7 +312,7 @@ static void test_hard_far_from_origin_keeps_relative_precision(void)
 
 static void test_hard_degenerate_source_and_texture_size(void)
 {
-    RblView view = RblGetView(makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }));
+    RblCameraFrame view = RblGetCameraFrame(makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }));
     RblBillboard b;
     memset(&b, 0, sizeof(b));
     b.size = (Vector2){ 1, 1 };
@@ -329,7 +329,7 @@ static void test_hard_degenerate_source_and_texture_size(void)
 
 static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
 {
-    RblView view = RblGetView(makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }));
+    RblCameraFrame view = RblGetCameraFrame(makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 }));
     RblBillboard good;
     memset(&good, 0, sizeof(good));
     good.size = (Vector2){ 1, 1 };
@@ -357,7 +357,7 @@ static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
     RT_CHECK(probed >= 34 && rejected == probed, "probed %d float fields, rejected %d", probed, rejected);
     // A bad camera also never produces NaN: the view falls back
     Camera3D nanCam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ NAN, 1, 0 });
-    RblView v = RblGetView(nanCam);
+    RblCameraFrame v = RblGetCameraFrame(nanCam);
     RT_CHECK(rtFinite(v.right.x) && rtFinite(v.up.y) && rtFinite(v.back.z), "NaN camera up leaked into the view");
     RT_CHECK(!RblBillboardVertices(&view, 8, 8, NULL, NULL), "NULL input must be rejected");
     good.facing = 99;
@@ -371,7 +371,7 @@ static void test_hard_nan_or_inf_in_any_input_is_skipped(void)
 static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboards(void)
 {
     Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     enum { COUNT = 600 };
     // A batch without GPU buffers (no GL here): RblBatchAdd only needs the CPU side, so the test
     // builds the header's private batch state itself and registers it as loaded
@@ -413,7 +413,7 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     RT_CHECK(mismatched == 0, "%d of %d batched billboards differ from RblBillboardVertices", mismatched, COUNT);
     // A new view invalidates the kept frame
     Camera3D turned = makeCamera((Vector3){ -20.0f, 2.0f, 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
-    RblView turnedView = RblGetView(turned);
+    RblCameraFrame turnedView = RblGetCameraFrame(turned);
     const RblBillboard *last = &bbs[COUNT - 1];   // CAMERA_PLANE: its frame is the one kept
     RblBeginBatch(&batch, turned);
     RblBatchAdd(&batch, material, last);

@@ -53,7 +53,7 @@ static void test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode(void)
         RblInstance in[256];
         for (int i = 0; i < 256; i++) in[i] = randomInstance(&seed);
         float *gpu = tfCapture(&gl, prog, &buf, cam, d, 256, 128, in, 256);
-        RblView view = RblGetView(cam);
+        RblCameraFrame view = RblGetCameraFrame(cam);
         for (int i = 0; i < 256; i++)
         {
             RblBillboard b = billboardOf(&in[i], d);

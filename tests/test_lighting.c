@@ -384,8 +384,8 @@ static void test_lighting_every_variant_in_the_matrix_compiles_links_and_compile
             Shader b = RblLoadLitShader(d);
             RT_CHECK(b.id == a.id, "identical desc compiled twice (%u, %u)", a.id, b.id);
             // Only what is asked for is compiled: absent features leave no uniform behind
-            RT_CHECK(litHasUniform(a, "rblLightSpot") == ((features & RBL_LIGHTS_SPOT) != 0), "spot uniforms iff spot lights");
-            RT_CHECK(litHasUniform(a, "rblLightAttenuation") == ((features & RBL_LIGHTS_CLASSIC_FALLOFF) != 0), "attenuation iff classic falloff");
+            RT_CHECK(litHasUniform(a, "rblLightSpot") == ((features & RBL_LIGHT_FEATURE_SPOT) != 0), "spot uniforms iff spot lights");
+            RT_CHECK(litHasUniform(a, "rblLightAttenuation") == ((features & RBL_LIGHT_FEATURE_CLASSIC_FALLOFF) != 0), "attenuation iff classic falloff");
             RT_CHECK(litHasUniform(a, "rblFog") == (d.fog != RBL_FOG_NONE), "fog uniforms iff fog");
             // Scene values reach every program: the hemisphere (the scene's ground colour) and the exposure
             // are compiled into every variant
@@ -468,7 +468,7 @@ static void test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line(void
     // Directed lights need a direction and sane cones (checked as lights, whatever the programs compiled)
     RblLitShaderDesc all;
     memset(&all, 0, sizeof(all));
-    all.lightFeatures = RBL_LIGHTS_POINT | RBL_LIGHTS_DIRECTIONAL | RBL_LIGHTS_SPOT | RBL_LIGHTS_CLASSIC_FALLOFF;
+    all.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL | RBL_LIGHT_FEATURE_SPOT | RBL_LIGHT_FEATURE_CLASSIC_FALLOFF;
     Shader full = RblLoadLitShader(all);
     RT_CHECK(RblIsLitShaderValid(full), "every-light-feature variant failed to load");
     RblLight s[6];
@@ -818,7 +818,7 @@ static void test_lighting_billboard_and_model_quad_render_identical_pixels(void)
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
         d.maxLights = 3;
-        d.lightFeatures = RBL_LIGHTS_POINT | RBL_LIGHTS_SPOT | RBL_LIGHTS_DIRECTIONAL;
+        d.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_SPOT | RBL_LIGHT_FEATURE_DIRECTIONAL;
         d.brdf = brdfs[k];
         d.material.normalEncoding = RBL_NORMAL_RGB;
         d.fog = RBL_FOG_EXP;

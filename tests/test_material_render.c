@@ -2,14 +2,14 @@
 // normal encoding exactly as RblDecodeNormal(); absent maps are not even declared; occlusion dims
 // ambient only; emission adds after lighting. Included by test_gpu_main.c.
 
-static Shader litVariant(RblMaterialLayout layout, int lights, bool linearOutput, int debugView)
+static Shader litVariant(RblMaterialLayout layout, int lights, bool linearOutput, int debugOutput)
 {
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = lights;
     desc.material = layout;
     desc.linearOutput = linearOutput;
-    desc.debugView = debugView;
+    desc.debugOutput = debugOutput;
     return RblLoadLitShader(desc);
 }
 

@@ -263,7 +263,7 @@ static void test_lit_flips_and_rotated_frames_light_the_plus_u_side(void)
 {
     Camera3D cam = frontCamera();
     Scene s = sceneLoad(WHITE, normalTexel(0.6f, 0.0f, 0.8f), true);
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     for (int mask = 0; mask < 16; mask++)
     {
         RblBillboard b = centredQuad();
@@ -424,7 +424,7 @@ static void test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboa
         Camera3D cam = frontCamera();
         cam.position = (Vector3){ rtRandomRange(&seed, -10, 10), rtRandomRange(&seed, -5, 8), rtRandomRange(&seed, 5, 15) };
         cam.target = (Vector3){ rtRandomRange(&seed, -2, 2), rtRandomRange(&seed, -2, 2), rtRandomRange(&seed, -2, 2) };
-        RblView view = RblGetView(cam);
+        RblCameraFrame view = RblGetCameraFrame(cam);
         BeginTextureMode(scratch);
         rlSetRenderBatchActive(&capture);
         RblBillboard set[64];

@@ -433,7 +433,7 @@ static void test_shadows_axis_locked_billboard_casts_under_a_light_straight_abov
 static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
 {
     Camera3D cam = litCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f });
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     rbl__Cast cast;                 // what a shadow pass gives the CPU path (the header's internal frame input)
     cast.minSin = sinf(30.0f*PI/180.0f);
     unsigned int seed = 4242u;
@@ -720,7 +720,7 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     RT_CHECK(!RblShadowFocusFromCamera(litCamera(o, (Vector3){ 0, 0, -1 }), 1.5f, 5.0f, 2.0f, &c, &r) && warnings == 1, "far < near accepted");
     Camera3D cam = litCamera((Vector3){ 1, 2, 3 }, (Vector3){ 4, 2, -1 });
     RT_CHECK(RblShadowFocusFromCamera(cam, 16.0f/9.0f, 0.5f, 20.0f, &c, &r), "focus from camera refused");
-    RblView v = RblGetView(cam);
+    RblCameraFrame v = RblGetCameraFrame(cam);
     double t = tan(22.5*PI/180.0), worst = 0.0;
     for (int k = 0; k < 8; k++)
     {

@@ -80,7 +80,7 @@ static float tfMinCastSin;
 // Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
 static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
 {
-    RblView view = RblGetView(cam);
+    RblCameraFrame view = RblGetCameraFrame(cam);
     // A complete framebuffer must be bound even with rasterisation discarded (surfaceless has none)
     RenderTexture2D scratch = LoadRenderTexture(4, 4);
     BeginTextureMode(scratch);

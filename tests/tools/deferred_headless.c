@@ -56,15 +56,15 @@ int main(int argc, char **argv)
            litPath, W, H, backend, ms, FRAMES, DEFERRED_LIGHTS + 1, gbuffer.lightsInVolumes, gbuffer.lightsFullscreen);
     // Debug views, 4 x 2 tiles at half size
     Image strip = GenImageColor(W*2, H, BLACK);
-    for (int v = 0; v < RBL_GBUFFER_VIEW_COUNT; v++)
+    for (int v = 0; v < RBL_GBUFFER_OUTPUT_COUNT; v++)
     {
-        RblSetGBufferView(&gbuffer, v, (v == RBL_GBUFFER_VIEW_LIGHT_COUNT)? 32.0f : 20.0f);
+        RblSetGBufferOutput(&gbuffer, v, (v == RBL_GBUFFER_OUTPUT_LIGHT_COUNT)? 32.0f : 20.0f);
         Image img = RenderFrame(target, FRAMES/60.0f);
         ImageResize(&img, W/2, H/2);
         ImageDraw(&strip, img, (Rectangle){ 0, 0, W/2, H/2 }, (Rectangle){ (float)((v%4)*W/2), (float)((v/4)*H/2), W/2, H/2 }, WHITE);
         UnloadImage(img);
     }
-    RblSetGBufferView(&gbuffer, RBL_GBUFFER_VIEW_LIT, 1.0f);
+    RblSetGBufferOutput(&gbuffer, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
     if (!ExportImage(strip, viewsPath)) rc = 1;
     else printf("deferred: wrote %s (lit, albedo, normal, roughness / occlusion, depth, position, lights per pixel)\n", viewsPath);
     UnloadImage(strip);
