@@ -34,7 +34,7 @@ void main()
     vec3 v = vec3(0.0);
     if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);
     else if (rblOutput == 2) v = s.normal*0.5 + 0.5;
-    else if (rblOutput == 3) v = vec3(s.specular);
+    else if (rblOutput == 3) v = vec3(s.specular);     // the stored channel: intensity or roughness
     else if (rblOutput == 4) v = vec3(s.occlusion);
     else if (rblOutput == 5) v = vec3(clamp(length(position - rblEye)/rblOutputScale, 0.0, 1.0));
     else if (rblOutput == 6) v = fract(position/rblOutputScale);

@@ -17,8 +17,10 @@ void main()
 #if RBL_BRDF == 1
     // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)
     float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));
+#elif RBL_BRDF == 2
+    float specular = sp.roughness;
 #else
-    float specular = sp.specular;
+    float specular = sp.specular;         // Lambert reads neither; the debug output shows the map
 #endif
     rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));
 #if RBL_BRDF == 1

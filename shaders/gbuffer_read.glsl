@@ -39,7 +39,8 @@ RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
     s.normal = rblUnpackNormal(n.rgb);
     s.albedo = rblSrgbToLinear(a.rgb);
     s.occlusion = a.a;
-    s.specular = n.a;
+    s.specular = n.a;                   // one channel: the intensity or the roughness, by BRDF
+    s.roughness = n.a;
     s.specularColor = vec3(1.0);
     s.shininess = 1.0;
     s.metalness = 0.0;

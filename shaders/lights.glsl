@@ -43,7 +43,7 @@ vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)
     return s.albedo + s.specularColor*(s.specular*(n + 8.0)/8.0*pow(NdotH, n));
 #elif RBL_BRDF == 2
     // Cook-Torrance: GGX D, Smith height-correlated V, Schlick F; diffuse Lambert scaled by (1 - metalness)
-    float perceptual = max(s.specular, RBL_MIN_ROUGHNESS);
+    float perceptual = max(s.roughness, RBL_MIN_ROUGHNESS);
     float a = perceptual*perceptual;
     float a2 = a*a;
     float metal = s.metalness;

@@ -25,7 +25,11 @@ void main()
 #elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 2)
     finalColor = vec4(sp.normal*0.5 + 0.5, 1.0);
 #elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 3)
+#if RBL_BRDF == 2
+    finalColor = vec4(vec3(sp.roughness), 1.0);
+#else
     finalColor = vec4(vec3(sp.specular), 1.0);
+#endif
 #elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 4)
     finalColor = vec4(vec3(sp.occlusion), 1.0);
 #else

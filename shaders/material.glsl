@@ -88,6 +88,7 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     sp.normal = n;
     sp.albedo = albedo.rgb;
     sp.specular = 1.0;
+    sp.roughness = 0.5;
     sp.specularColor = vec3(1.0);
     sp.shininess = 1.0;
     sp.metalness = 0.0;
@@ -95,10 +96,12 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     sp.specularColor = rblSpecularColor.rgb;
     sp.shininess = rblSpecularColor.a;
 #elif RBL_BRDF == 2
-    sp.specular = rblRoughMetal.x;
+    sp.roughness = rblRoughMetal.x;
     sp.metalness = rblRoughMetal.y;
 #endif
-#ifdef RBL_SPECULAR
+#if defined(RBL_SPECULAR) && (RBL_BRDF == 2)
+    sp.roughness = material.b;             // a GGX material texture holds roughness in B
+#elif defined(RBL_SPECULAR)
     sp.specular = material.b;
 #endif
     sp.occlusion = 1.0;

@@ -7,7 +7,8 @@ struct RblShadingPoint {
     vec3 position;      // world
     vec3 normal;        // unit, world
     vec3 albedo;        // linear base colour
-    float specular;     // Blinn-Phong: specular intensity; GGX: perceptual roughness
+    float specular;     // Blinn-Phong: specular intensity (the map, or 1: its colour holds the scale)
+    float roughness;    // GGX: perceptual roughness
     float occlusion;    // ambient occlusion (indirect light only)
     vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)
     float shininess;    // Blinn-Phong exponent
