@@ -9,9 +9,9 @@ out vec4 finalColor;
 
 void main()
 {
-    ivec2 texel = ivec2(gl_FragCoord.xy);
-    float depth = texelFetch(rblGDepth, texel, 0).r;
-    if (depth >= 1.0) discard;                          // background: nothing was drawn here
+    ivec2 texel;
+    float depth;
+    if (!rblLightPassTexel(texel, depth)) discard;
 #ifdef RBL_COUNT_LIGHTS
     finalColor = vec4(vec3(float(rblLightCount)), 1.0);
 #else

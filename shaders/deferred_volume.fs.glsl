@@ -12,9 +12,9 @@ out vec4 finalColor;
 
 void main()
 {
-    ivec2 texel = ivec2(gl_FragCoord.xy);
-    float depth = texelFetch(rblGDepth, texel, 0).r;
-    if (depth >= 1.0) discard;                          // background: nothing was drawn here
+    ivec2 texel;
+    float depth;
+    if (!rblLightPassTexel(texel, depth)) discard;
     vec3 position = rblPositionFromDepth(texel, depth);
     // Most of a proxy's pixels lie outside the light's range
     vec3 toLight = volumePosition.xyz - position;

@@ -13,6 +13,15 @@ uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's p
 uniform mat4 rblInvView;                // inverse view (camera to world)
 uniform vec3 rblEye;                    // camera position
 
+// This pixel's G-buffer texel and depth in a light pass (drawn at the G-buffer's size); false where
+// nothing was drawn (background)
+bool rblLightPassTexel(out ivec2 texel, out float depth)
+{
+    texel = ivec2(gl_FragCoord.xy);
+    depth = texelFetch(rblGDepth, texel, 0).r;
+    return depth < 1.0;
+}
+
 // World position from the depth buffer, in closed form (an inverse projection matrix would cancel two
 // large terms). Perspective: view distance z = n f/(f - d (f - n)) from the window depth d, then x, y
 // along the pixel's ray. Orthographic: z = n + d (f - n), x, y straight from NDC. Then the inverse view.

@@ -1,8 +1,8 @@
 // The 1.0 API's shape: materials are values (one program for materials that differ only in values),
 // the scene is set once per frame and reaches every program (raylib's own DrawModel included), and
 // every GL object has one owner (raylib's UnloadMaterial on a lit program is survivable, double and
-// stale unloads are refused). Included by test_gpu_main.c after test_render.c (countingLog,
-// frontCamera, solidTexture, TARGET).
+// stale unloads are refused). Needs gpu_common.h (included by test_gpu_main.c through test_render.c,
+// and by test_api_main.c).
 
 // Live lit programs in the registry (what users' materials share)
 static int apiLitPrograms(void)
@@ -22,16 +22,6 @@ static RblLight apiFrontLight(float intensity)
     l.color = WHITE;
     l.intensity = intensity;
     return l;
-}
-
-static bool apiSetScene(const RblLight *lights, int count, Color ambient)
-{
-    RblScene scene;
-    memset(&scene, 0, sizeof(scene));
-    scene.lights = lights;
-    scene.lightCount = count;
-    scene.ambient = ambient;
-    return RblSetScene(&scene);
 }
 
 // Value set i of 16: GGX roughness and metalness, albedo colour, emission and alpha cutoff all vary
@@ -56,6 +46,24 @@ static RblBillboard apiCell(int i)
     return b;
 }
 
+// Cell 5 drawn alone with material m by the immediate path; its centre pixel
+static Color apiCellPixel(Material m)
+{
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    RblBillboard b = apiCell(5);
+    BeginTextureMode(rt);
+    ClearBackground(BLACK);
+    BeginMode3D(frontCamera());
+    RblDrawBillboard(frontCamera(), m, b);
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    Color c = rtPixel(img, 16 + 8, 16 + 8);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    return c;
+}
+
 static RblLitShaderDesc apiGgxDesc(void)
 {
     RblLitShaderDesc d;
@@ -68,7 +76,7 @@ static RblLitShaderDesc apiGgxDesc(void)
 static void test_api_16_value_only_materials_share_one_program_and_match_separate_programs(void)
 {
     RblLight light = apiFrontLight(6.0f);
-    RT_CHECK(apiSetScene(&light, 1, (Color){ 40, 40, 60, 255 }), "scene rejected");
+    RT_CHECK(renderSetLights(&light, 1, (Color){ 40, 40, 60, 255 }), "scene rejected");
     int before = apiLitPrograms();
     Texture2D white = solidTexture(WHITE);
     Material m[16];
@@ -173,11 +181,11 @@ static void test_api_scene_reaches_raylib_drawmodel_and_programs_loaded_later(vo
     Shader phong = RblLoadLitShader(d);
     Model a = apiFacingPlane(lambert), b = apiFacingPlane(phong);
     RblLight light = apiFrontLight(4.0f);
-    RT_CHECK(apiSetScene(&light, 1, BLACK), "scene 1 rejected");
+    RT_CHECK(renderSetLights(&light, 1, BLACK), "scene 1 rejected");
     Color a1 = apiDrawModelPixel(a), b1 = apiDrawModelPixel(b);
     light.intensity = 1.0f;
     light.color = (Color){ 255, 128, 0, 255 };
-    RT_CHECK(apiSetScene(&light, 1, BLACK), "scene 2 rejected");
+    RT_CHECK(renderSetLights(&light, 1, BLACK), "scene 2 rejected");
     Color a2 = apiDrawModelPixel(a), b2 = apiDrawModelPixel(b);
     // One RblSetScene changed both programs: the light's blue went, its intensity fell
     RT_CHECK((a1.b > 60) && (a2.b <= 1) && (a2.r < a1.r), "Lambert DrawModel did not follow the scene: (%d,%d,%d) then (%d,%d,%d)", a1.r, a1.g, a1.b, a2.r, a2.g, a2.b);
@@ -203,7 +211,7 @@ static void test_api_scene_reaches_raylib_drawmodel_and_programs_loaded_later(vo
 static void test_api_raylib_habitual_unload_material_sequence_draws(void)
 {
     RblLight light = apiFrontLight(4.0f);
-    RT_CHECK(apiSetScene(&light, 1, BLACK), "scene rejected");
+    RT_CHECK(renderSetLights(&light, 1, BLACK), "scene rejected");
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.maxLights = 3;                        // a variant no other test holds
@@ -219,23 +227,12 @@ static void test_api_raylib_habitual_unload_material_sequence_draws(void)
     m = LoadMaterialDefault();
     m.shader = RblLoadLitShader(d);
     RT_CHECK(RblIsLitShaderValid(m.shader), "loading again after UnloadMaterial gave no live program");
-    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
-    RblBillboard b = apiCell(5);
-    BeginTextureMode(rt);
-    ClearBackground(BLACK);
-    BeginMode3D(frontCamera());
-    RblDrawBillboard(frontCamera(), m, b);
-    EndMode3D();
-    EndTextureMode();
-    Image img = rtReadTarget(rt);
-    Color c = rtPixel(img, 16 + 8, 16 + 8);
+    Color c = apiCellPixel(m);
     RT_CHECK(c.r > 40, "nothing drawn after the reload: (%d,%d,%d)", c.r, c.g, c.b);
-    UnloadImage(img);
-    UnloadRenderTexture(rt);
     UnloadMaterial(m);
     RT_CHECK(apiLitPrograms() == before || !RblIsLitShaderValid(m.shader), "second UnloadMaterial left a live entry");
     // Once the registry looked again (any load or scene), the dead entry is gone
-    RT_CHECK(apiSetScene(&light, 1, BLACK), "scene rejected");
+    RT_CHECK(renderSetLights(&light, 1, BLACK), "scene rejected");
     RT_CHECK(apiLitPrograms() == before, "dead program still registered after RblSetScene");
 }
 
@@ -321,18 +318,7 @@ static Color apiLitCell(void)
     memset(&d, 0, sizeof(d));
     Material m = LoadMaterialDefault();
     m.shader = RblLoadLitShader(d);
-    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
-    RblBillboard b = apiCell(5);
-    BeginTextureMode(rt);
-    ClearBackground(BLACK);
-    BeginMode3D(frontCamera());
-    RblDrawBillboard(frontCamera(), m, b);
-    EndMode3D();
-    EndTextureMode();
-    Image img = rtReadTarget(rt);
-    Color c = rtPixel(img, 16 + 8, 16 + 8);
-    UnloadImage(img);
-    UnloadRenderTexture(rt);
+    Color c = apiCellPixel(m);
     RblUnloadLitShader(&m.shader);
     m.shader = (Shader){ 0, NULL };
     MemFree(m.maps);
@@ -342,7 +328,7 @@ static Color apiLitCell(void)
 static void test_api_bad_scenes_are_refused_with_one_log_line_and_keep_the_previous_scene(void)
 {
     RblLight good = apiFrontLight(3.0f);
-    RT_CHECK(apiSetScene(&good, 1, (Color){ 30, 30, 30, 255 }), "good scene rejected");
+    RT_CHECK(renderSetLights(&good, 1, (Color){ 30, 30, 30, 255 }), "good scene rejected");
     Color ref = apiLitCell();
     RblLight nanLight = good; nanLight.position.x = NAN;
     RblLight hugeLight = good; hugeLight.range = -1.0f;

@@ -13,37 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TARGET 64
-
-static int warnings = 0;
-static char lastWarning[512];
-static void countingLog(int level, const char *text, va_list args)
-{
-    (void)level;
-    char line[512];
-    vsnprintf(line, sizeof(line), text, args);
-    if (strncmp(line, "RBL:", 4) == 0) { warnings++; memcpy(lastWarning, line, sizeof(line)); }
-}
-
-static Camera3D frontCamera(void)
-{
-    Camera3D c;
-    memset(&c, 0, sizeof(c));
-    c.position = (Vector3){ 0.0f, 0.0f, 5.0f };
-    c.up = (Vector3){ 0.0f, 1.0f, 0.0f };
-    c.fovy = 45.0f;
-    c.projection = CAMERA_PERSPECTIVE;
-    return c;
-}
-
-static Texture2D solidTexture(Color c)
-{
-    Image img = GenImageColor(4, 4, c);
-    Texture2D t = LoadTextureFromImage(img);
-    UnloadImage(img);
-    return t;
-}
-
+#include "gpu_common.h"
 #include "test_api.c"
 
 int main(int argc, char **argv)

@@ -2,38 +2,7 @@
 // Lambert reference, normal-map sides under every flip, batch behaviour, parity with raylib's
 // DrawBillboardPro captured from rlgl's own batch. Included by test_gpu_main.c.
 
-#define TARGET 64
-
-static int warnings = 0;
-static char lastWarning[512];
-// Counts the header's log lines that pass the current trace level (warnings unless a test lowers it)
-static void countingLog(int level, const char *text, va_list args)
-{
-    (void)level;
-    char line[512];
-    vsnprintf(line, sizeof(line), text, args);
-    if (strncmp(line, "RBL:", 4) == 0) { warnings++; memcpy(lastWarning, line, sizeof(line)); }
-}
-
-static Camera3D frontCamera(void)
-{
-    Camera3D c;
-    memset(&c, 0, sizeof(c));
-    c.position = (Vector3){ 0.0f, 0.0f, 5.0f };
-    c.target = (Vector3){ 0.0f, 0.0f, 0.0f };
-    c.up = (Vector3){ 0.0f, 1.0f, 0.0f };
-    c.fovy = 45.0f;
-    c.projection = CAMERA_PERSPECTIVE;
-    return c;
-}
-
-static Texture2D solidTexture(Color c)
-{
-    Image img = GenImageColor(4, 4, c);
-    Texture2D t = LoadTextureFromImage(img);
-    UnloadImage(img);
-    return t;
-}
+#include "gpu_common.h"
 
 // Normal-map texel for a unit tangent-space normal (OpenGL convention), rounded like an 8-bit map
 static Color normalTexel(float x, float y, float z)
@@ -103,18 +72,6 @@ static RblLight pointLight(Vector3 p, float intensity)
     memset(&l, 0, sizeof(l));
     l.position = p; l.color = WHITE; l.intensity = intensity; l.range = 0.0f;
     return l;
-}
-
-// The frame's scene for every lit program: count lights and a flat ambient, everything else default
-// (no fog, exposure 1, no shadows). Returns RblSetScene's verdict.
-static bool renderSetLights(const RblLight *lights, int count, Color ambient)
-{
-    RblScene scene;
-    memset(&scene, 0, sizeof(scene));
-    scene.lights = lights;
-    scene.lightCount = count;
-    scene.ambient = ambient;
-    return RblSetScene(&scene);
 }
 
 // ---- shaders ------------------------------------------------------------------------------------
