@@ -268,6 +268,16 @@
 *           map is loaded, 5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch, or instances an instance buffer, reserves when loaded with 0.
+*       #define RBL_MAX_BATCH_BILLBOARDS 2097152, RBL_MAX_INSTANCES 2097152
+*           Limits of a batch and of an instance buffer / one instanced draw (their byte sizes fit an int).
+*       #define RBL_MAX_SCENE_LIGHTS 65536, RBL_MAX_LIGHT_INTENSITY 1e12f
+*           Lights one RblScene may list, and the largest intensity (sums of lights stay finite).
+*       #define RBL_MAX_TARGET_SIZE 16384
+*           Largest G-buffer side and shadow-map size (the driver's own maximum applies too).
+*       #define RBL_MAX_OCCLUSION_RADIUS 256
+*           Largest RblGenOcclusionFromHeight radius, in texels.
+*           Input beyond any limit is refused with one log line; world positions and camera vectors
+*           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
@@ -402,6 +412,24 @@
 #ifndef RBL_BATCH_DEFAULT_CAPACITY
     #define RBL_BATCH_DEFAULT_CAPACITY 1024     // Billboards reserved by RblLoadBatch(0)
 #endif
+#ifndef RBL_MAX_BATCH_BILLBOARDS
+    #define RBL_MAX_BATCH_BILLBOARDS 2097152    // Billboards one batch may hold (2^21: 436 MB of vertices)
+#endif
+#ifndef RBL_MAX_INSTANCES
+    #define RBL_MAX_INSTANCES 2097152           // Instances one buffer may hold and one draw may take (2^21)
+#endif
+#ifndef RBL_MAX_SCENE_LIGHTS
+    #define RBL_MAX_SCENE_LIGHTS 65536          // Lights one RblScene may hold (forward lights the first maxLights)
+#endif
+#ifndef RBL_MAX_TARGET_SIZE
+    #define RBL_MAX_TARGET_SIZE 16384           // Largest G-buffer side and shadow-map size (also capped by the driver)
+#endif
+#ifndef RBL_MAX_LIGHT_INTENSITY
+    #define RBL_MAX_LIGHT_INTENSITY 1e12f       // Largest RblLight.intensity (sums of lights stay finite in float)
+#endif
+#ifndef RBL_MAX_OCCLUSION_RADIUS
+    #define RBL_MAX_OCCLUSION_RADIUS 256        // Largest RblGenOcclusionFromHeight radius in texels
+#endif
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
 #endif
@@ -491,11 +519,9 @@ typedef struct RblInstancedDesc {
 
 // GPU instance buffer plus a staging copy (validated)
 typedef struct RblInstanceBuffer {
-    RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
-    int capacity;                   // Instances reserved
-    unsigned int vaoId;             // Vertex array (instance attributes only)
-    unsigned int vboId;             // Instance buffer
+    int capacity;                   // Instances reserved (doubles with a log line when a draw needs more)
     int skipped;                    // Instances skipped for bad input in the last draw
+    struct rbl__InstanceBufferState *state; // The header's: GPU buffers, staging copy (NULL = not loaded)
 } RblInstanceBuffer;
 
 // Normal encodings (packed material texture, or a plain normal map)
@@ -702,7 +728,7 @@ typedef struct RblGBuffer {
 
 // Shadow map settings; zero means default (the biases are in shadow-map texels, see SHADOWS)
 typedef struct RblShadowDesc {
-    int size;                       // Texels per side, square (0 = 1024; 16..8192)
+    int size;                       // Texels per side, square (0 = 1024; 16..RBL_MAX_TARGET_SIZE)
     float constantBias;             // Depth bias (0 = 0.2; negative = none)
     float slopeBias;                // Depth bias per unit tan(incidence) (0 = 0.1; negative = none)
     float normalBias;               // Lookup offset along the receiver normal x sin(incidence) (0 = 0.25; negative = none)
@@ -747,7 +773,7 @@ RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, i
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
 RBLAPI bool RblIsBatchValid(RblBatch batch);                                  // Check the batch owns its GPU buffers
 RBLAPI void RblUnloadBatch(RblBatch *batch);                                  // Unload batch buffers
-RBLAPI void RblBeginBatch(RblBatch *batch, Camera3D camera);                  // Start collecting billboards seen by camera
+RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  // Start collecting billboards seen by camera; false = rejected (billboards still pending, bad camera)
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
@@ -921,6 +947,14 @@ typedef struct rbl__BatchState {
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
 } rbl__BatchState;
+
+// An instance buffer's own data (RblInstanceBuffer.state)
+typedef struct rbl__InstanceBufferState {
+    RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
+    int capacity;                   // Instances reserved (CPU and GPU)
+    unsigned int vaoId;             // Vertex array (instance attributes only)
+    unsigned int vboId;             // Instance buffer
+} rbl__InstanceBufferState;
 
 // A G-buffer's own data (RblGBuffer.state)
 typedef struct rbl__GBufferState {
@@ -2160,6 +2194,16 @@ static const struct { const char *file; const char *const *const *parts; } rbl__
 static inline Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
 static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
 static inline bool rbl__finite3(Vector3 v) { return rbl__finite(v.x) && rbl__finite(v.y) && rbl__finite(v.z); }
+// Below 2^60 (1.2e18) so that squared lengths and differences stay finite in float
+static inline bool rbl__bounded3(Vector3 v) { return (fabsf(v.x) < 1.15e18f) && (fabsf(v.y) < 1.15e18f) && (fabsf(v.z) < 1.15e18f); }
+// A camera the frame and matrix code can use: bounded finite vectors, fovy in (0, 180) for a
+// perspective camera (any finite positive height for an orthographic one), a known projection
+static inline bool rbl__cameraOk(Camera3D c)
+{
+    if (!rbl__bounded3(c.position) || !rbl__bounded3(c.target) || !rbl__bounded3(c.up)) return false;
+    if (c.projection == CAMERA_PERSPECTIVE) return (c.fovy > 0.0f) && (c.fovy < 180.0f);
+    return (c.projection == CAMERA_ORTHOGRAPHIC) && (c.fovy > 0.0f) && (c.fovy < 1.15e18f);
+}
 // None of n floats stored from f on has |value| >= 2^(limitExponent - 127) (NaN and Inf included):
 // adding 256 - limitExponent to the exponent field carries into the sign bit exactly for those, so
 // one OR over all of them decides. Branch-free (per-float tests were a chain of branches).
@@ -2268,7 +2312,8 @@ static inline bool rbl__perpendicular(Vector3 v, Vector3 n, Vector3 *out)
 // Module Functions Definition: geometry
 //----------------------------------------------------------------------------------
 // Camera frame, computed in the same operation order as raymath's MatrixLookAt (parity with raylib)
-RblCameraFrame RblGetCameraFrame(Camera3D camera)
+// The frame of a checked camera (the header's own light cameras have no fovy)
+static RblCameraFrame rbl__cameraFrame(Camera3D camera)
 {
     RblCameraFrame view;
     view.eye = camera.position;
@@ -2286,6 +2331,17 @@ RblCameraFrame RblGetCameraFrame(Camera3D camera)
     view.up = rbl__cross(back, right);
     view.back = back;
     return view;
+}
+
+RblCameraFrame RblGetCameraFrame(Camera3D camera)
+{
+    if (!rbl__cameraOk(camera))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblGetCameraFrame: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection; identity frame returned");
+        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f } };
+        return view;
+    }
+    return rbl__cameraFrame(camera);
 }
 
 // sin and cos of an angle in degrees. The reduction to [-45, 45] is exact in degrees (multiples of 90
@@ -2583,7 +2639,7 @@ RblBatch RblLoadBatch(int capacity)
 {
     RblBatch batch;
     memset(&batch, 0, sizeof(batch));
-    if (capacity < 0) { TraceLog(LOG_WARNING, "RBL: RblLoadBatch: negative capacity %i", capacity); return batch; }
+    if ((capacity < 0) || (capacity > RBL_MAX_BATCH_BILLBOARDS)) { TraceLog(LOG_WARNING, "RBL: RblLoadBatch: capacity %i outside 0..%i", capacity, RBL_MAX_BATCH_BILLBOARDS); return batch; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
     rbl__BatchState *b = (rbl__BatchState *)RBL_CALLOC(1, sizeof(rbl__BatchState));
     if (b != NULL)
@@ -2629,12 +2685,17 @@ void RblUnloadBatch(RblBatch *batch)
     memset(batch, 0, sizeof(*batch));
 }
 
-void RblBeginBatch(RblBatch *pub, Camera3D camera)
+bool RblBeginBatch(RblBatch *pub, Camera3D camera)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if (batch == NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: batch not loaded"); return; }
-    if (batch->begun && (batch->count > 0)) TraceLog(LOG_WARNING, "RBL: RblBeginBatch: %i billboards added since the last RblBeginBatch were never drawn (RblEndBatch)", batch->count);
-    batch->view = RblGetCameraFrame(camera);
+    if (batch == NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: batch not loaded"); return false; }
+    if (batch->begun && (batch->count > 0))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblBeginBatch: %i billboards added since the last RblBeginBatch are not drawn yet (call RblEndBatch first)", batch->count);
+        return false;
+    }
+    if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: camera with NaN/Inf fields"); return false; }
+    batch->view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->frame.facing = -1;      // the frame depends on the view
     batch->count = 0;
@@ -2642,6 +2703,7 @@ void RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->skipped = 0;
     batch->begun = true;
     pub->count = 0; pub->skipped = 0;
+    return true;
 }
 
 static bool rbl__sameMaterial(const Material *a, const Material *b)
@@ -2657,7 +2719,8 @@ static bool rbl__sameMaterial(const Material *a, const Material *b)
 // Grow CPU storage by doubling; the GPU buffer follows at the next RblEndBatch()
 static bool rbl__growBatch(rbl__BatchState *batch)
 {
-    int newCapacity = (batch->capacity > 0)? batch->capacity*2 : RBL_BATCH_DEFAULT_CAPACITY;
+    if (batch->capacity >= RBL_MAX_BATCH_BILLBOARDS) return false;
+    int newCapacity = (batch->capacity > RBL_MAX_BATCH_BILLBOARDS/2)? RBL_MAX_BATCH_BILLBOARDS : batch->capacity*2;
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
     if (vertices == NULL) { TraceLog(LOG_WARNING, "RBL: batch: out of memory growing to %i billboards", newCapacity); return false; }
     TraceLog(LOG_INFO, "RBL: batch grown from %i to %i billboards (reserve more in RblLoadBatch)", batch->capacity, newCapacity);
@@ -2669,7 +2732,7 @@ static bool rbl__growBatch(rbl__BatchState *batch)
 bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) return false;
+    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return false; }
     bool added = rbl__batchAdd(batch, material, billboard);
     pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
     return added;
@@ -2677,7 +2740,11 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
 
 static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard)
 {
-    if ((batch->count == batch->capacity) && !rbl__growBatch(batch)) return false;
+    if ((batch->count == batch->capacity) && !rbl__growBatch(batch))
+    {
+        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: RblBatchAdd: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
+        return false;
+    }
 
     // An albedo slot without a texture draws raylib's 1x1 default texture
     int texW = 1, texH = 1;
@@ -2788,15 +2855,23 @@ void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) return;
+    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return; }
     batch->begun = false;
     if (batch->count == 0) return;
     if (batch->capacity > batch->gpuCapacity)
     {
-        rbl__unloadBatchGpu(batch);
+        // Grow the GPU side; on failure keep the old buffers (the batch stays valid) and draw nothing
+        rbl__BatchState old = *batch;
         rbl__loadBatchGpu(batch);
+        if ((batch->vaoId == 0) || (batch->vboId == 0) || (batch->eboId == 0))
+        {
+            rbl__unloadBatchGpu(batch);
+            batch->vaoId = old.vaoId; batch->vboId = old.vboId; batch->eboId = old.eboId; batch->gpuCapacity = old.gpuCapacity;
+            TraceLog(LOG_WARNING, "RBL: %s: GPU buffers for %i billboards could not be created; nothing drawn", fn, batch->capacity);
+            return;
+        }
+        rbl__unloadBatchGpu(&old);
     }
-    if (batch->vboId == 0) return;
 
     rlDrawRenderBatchActive();      // keep draw order with raylib's own pending geometry
     rlEnableVertexArray(batch->vaoId);
@@ -2827,6 +2902,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
 {
     RblBatch *immediate = &rbl__state.immediate;
+    if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return; }
     if (immediate->state == NULL)
     {
         *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
@@ -2865,7 +2941,7 @@ void RblClose(void)
 // combines them: rejected like NaN
 #define RBL__INSTANCE_LIMIT_EXPONENT 247u
 
-static void rbl__loadInstanceGpu(RblInstanceBuffer *buffer)
+static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
 {
     const int stride = (int)sizeof(RblInstance);
     buffer->vaoId = rlLoadVertexArray();
@@ -2881,35 +2957,62 @@ static void rbl__loadInstanceGpu(RblInstanceBuffer *buffer)
     rlDisableVertexArray();
 }
 
+static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
+{
+    if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
+    if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
+    RBL_FREE(b->staging);
+    RBL_FREE(b);
+}
+
+// The state of a loaded instance buffer, or NULL (never dereferences a stale copy's pointer)
+static rbl__InstanceBufferState *rbl__instanceState(const RblInstanceBuffer *buffer)
+{
+    return ((buffer != NULL) && rbl__isLive(buffer->state))? buffer->state : NULL;
+}
+
 RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
 {
     RblInstanceBuffer buffer;
     memset(&buffer, 0, sizeof(buffer));
-    if (capacity < 0) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: negative capacity %i", capacity); return buffer; }
+    if ((capacity < 0) || (capacity > RBL_MAX_INSTANCES)) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: capacity %i outside 0..%i", capacity, RBL_MAX_INSTANCES); return buffer; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
-    buffer.staging = (RblInstance *)RBL_MALLOC((size_t)capacity*sizeof(RblInstance));
-    if (buffer.staging == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: out of memory for %i instances", capacity); return buffer; }
-    buffer.capacity = capacity;
-    rbl__loadInstanceGpu(&buffer);
-    if ((buffer.vaoId == 0) || (buffer.vboId == 0))
+    rbl__InstanceBufferState *b = (rbl__InstanceBufferState *)RBL_CALLOC(1, sizeof(rbl__InstanceBufferState));
+    if (b != NULL) b->staging = (RblInstance *)RBL_MALLOC((size_t)capacity*sizeof(RblInstance));
+    if ((b == NULL) || (b->staging == NULL))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: out of memory for %i instances", capacity);
+        RBL_FREE(b);
+        return buffer;
+    }
+    b->capacity = capacity;
+    rbl__loadInstanceGpu(b);
+    if ((b->vaoId == 0) || (b->vboId == 0) || !rbl__liveAdd(b))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: GPU buffers could not be created (no GL context?)");
-        RblUnloadInstanceBuffer(&buffer);
+        rbl__freeInstanceState(b);
+        return buffer;
     }
+    buffer.capacity = capacity;
+    buffer.state = b;
     return buffer;
 }
 
 bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
 {
-    return (buffer.staging != NULL) && (buffer.vaoId != 0) && (buffer.vboId != 0);
+    return rbl__instanceState(&buffer) != NULL;
 }
 
 void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
 {
     if (buffer == NULL) return;
-    if (buffer->vaoId != 0) rlUnloadVertexArray(buffer->vaoId);
-    if (buffer->vboId != 0) rlUnloadVertexBuffer(buffer->vboId);
-    RBL_FREE(buffer->staging);
+    rbl__InstanceBufferState *b = rbl__instanceState(buffer);
+    if (b != NULL)
+    {
+        rbl__liveRemove(b);
+        rbl__freeInstanceState(b);
+    }
+    else if (buffer->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadInstanceBuffer: instance buffer already unloaded (a stale copy)");
     memset(buffer, 0, sizeof(*buffer));
 }
 
@@ -2919,10 +3022,12 @@ static inline bool rbl__instanceOk(const RblInstance *in)
     return rbl__exponentsBelow(&in->position, 12, RBL__INSTANCE_LIMIT_EXPONENT);
 }
 
-int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
+int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
-    if ((buffer == NULL) || !RblIsInstanceBufferValid(*buffer)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: invalid instance buffer"); return 0; }
-    if ((count < 0) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (%i)", count); return 0; }
+    rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
+    if (buffer == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: instance buffer not loaded"); return 0; }
+    if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
+    if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
         !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness))
     {
@@ -2932,15 +3037,27 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     if (count > buffer->capacity)
     {
         int newCapacity = buffer->capacity;
-        while (newCapacity < count) newCapacity *= 2;
+        while (newCapacity < count) newCapacity = (newCapacity > RBL_MAX_INSTANCES/2)? RBL_MAX_INSTANCES : newCapacity*2;
         RblInstance *staging = (RblInstance *)RBL_REALLOC(buffer->staging, (size_t)newCapacity*sizeof(RblInstance));
         if (staging == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: out of memory for %i instances", newCapacity); return 0; }
-        TraceLog(LOG_INFO, "RBL: instance buffer grown from %i to %i (reserve more in RblLoadInstanceBuffer)", buffer->capacity, newCapacity);
         buffer->staging = staging;
+        const unsigned int oldVao = buffer->vaoId, oldVbo = buffer->vboId;
+        const int oldCapacity = buffer->capacity;
         buffer->capacity = newCapacity;
-        rlUnloadVertexArray(buffer->vaoId);
-        rlUnloadVertexBuffer(buffer->vboId);
         rbl__loadInstanceGpu(buffer);
+        if ((buffer->vaoId == 0) || (buffer->vboId == 0))
+        {
+            // Keep the old GPU buffers: the object stays valid at its old capacity
+            if (buffer->vaoId != 0) rlUnloadVertexArray(buffer->vaoId);
+            if (buffer->vboId != 0) rlUnloadVertexBuffer(buffer->vboId);
+            buffer->vaoId = oldVao; buffer->vboId = oldVbo; buffer->capacity = oldCapacity;
+            TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: GPU buffer for %i instances could not be created", newCapacity);
+            return 0;
+        }
+        rlUnloadVertexArray(oldVao);
+        rlUnloadVertexBuffer(oldVbo);
+        TraceLog(LOG_INFO, "RBL: instance buffer grown from %i to %i (reserve more in RblLoadInstanceBuffer)", oldCapacity, newCapacity);
+        pub->capacity = newCapacity;
     }
 
     // Validate in place, so no NaN reaches the GPU buffer: a clean set is uploaded straight from the
@@ -2949,17 +3066,17 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     int n = 0;
     while ((n < count) && rbl__instanceOk(&instances[n])) n++;
     const RblInstance *upload = instances;
-    buffer->skipped = 0;
+    pub->skipped = 0;
     if (n < count)
     {
         memcpy(buffer->staging, instances, (size_t)n*sizeof(RblInstance));
         for (int i = n; i < count; i++)
         {
             if (rbl__instanceOk(&instances[i])) buffer->staging[n++] = instances[i];
-            else buffer->skipped++;
+            else pub->skipped++;
         }
         upload = buffer->staging;
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36)", buffer->skipped);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36)", pub->skipped);
     }
     if (n == 0) return 0;
 
@@ -2976,7 +3093,7 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
 
     // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
-    RblCameraFrame view = RblGetCameraFrame(camera);
+    RblCameraFrame view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     const float frame[28] = {
         view.eye.x, view.eye.y, view.eye.z, (float)desc.facing,
@@ -3887,9 +4004,9 @@ void RblUnloadPackedMaterial(RblPackedMaterial *packed)
 // A map for the Gen functions: present, sized and convertible; false (logged) otherwise
 static bool rbl__checkGenInput(Image image, const char *function)
 {
-    if ((image.data == NULL) || (image.width <= 0) || (image.height <= 0))
+    if ((image.data == NULL) || (image.width <= 0) || (image.height <= 0) || (image.width > RBL_MAX_TARGET_SIZE) || (image.height > RBL_MAX_TARGET_SIZE))
     {
-        TraceLog(LOG_WARNING, "RBL: %s: empty image (%ix%i, data %p)", function, image.width, image.height, image.data);
+        TraceLog(LOG_WARNING, "RBL: %s: empty or oversized image (%ix%i, data %p; sides 1..RBL_MAX_TARGET_SIZE)", function, image.width, image.height, image.data);
         return false;
     }
     if (!rbl__formatConvertible(image.format))
@@ -4018,9 +4135,9 @@ Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
     Image out;
     memset(&out, 0, sizeof(out));
     if (!rbl__checkGenInput(height, "RblGenOcclusionFromHeight")) return out;
-    if ((radius < 0) || !rbl__finite(strength) || (strength < 0.0f))
+    if ((radius < 0) || (radius > RBL_MAX_OCCLUSION_RADIUS) || !rbl__finite(strength) || (strength < 0.0f))
     {
-        TraceLog(LOG_WARNING, "RBL: RblGenOcclusionFromHeight: radius %i (>= 0) or strength %g (finite, >= 0) out of range", radius, strength);
+        TraceLog(LOG_WARNING, "RBL: RblGenOcclusionFromHeight: radius %i (0..%i) or strength %g (finite, >= 0) out of range", radius, RBL_MAX_OCCLUSION_RADIUS, strength);
         return out;
     }
     const int w = height.width, hgt = height.height;
@@ -4530,16 +4647,21 @@ static const char *rbl__packLight(const RblLight *l, float p[4], float c[4], flo
 {
     int features = 0;
     if (!rbl__lightFeatureOf(l, &features)) return "unknown type or falloff";
-    if (!rbl__finite3(l->position) || !rbl__finite3(l->direction)) return "NaN/Inf position or direction";
+    if (!rbl__bounded3(l->position) || !rbl__finite3(l->direction)) return "NaN/Inf or |value| >= 1.15e18 in position, NaN/Inf direction";
     if (!rbl__finiteNonNegative(l->intensity) || !rbl__finiteNonNegative(l->range)) return "negative or non-finite intensity or range";
+    if ((l->intensity > RBL_MAX_LIGHT_INTENSITY) || (l->range > 1.15e18f)) return "intensity above RBL_MAX_LIGHT_INTENSITY or range >= 1.15e18";
     bool directed = (l->type != RBL_LIGHT_POINT);
-    float dl = sqrtf(l->direction.x*l->direction.x + l->direction.y*l->direction.y + l->direction.z*l->direction.z);
-    if (directed && !(dl > 1e-12f)) return "zero direction";
+    // Scaled by the largest component first, so a long direction's squared length cannot overflow
+    float dm = fmaxf(fabsf(l->direction.x), fmaxf(fabsf(l->direction.y), fabsf(l->direction.z)));
+    float ds = (dm > 0.0f)? 1.0f/dm : 0.0f;
+    Vector3 du = rbl__v3(l->direction.x*ds, l->direction.y*ds, l->direction.z*ds);
+    float dl = sqrtf(du.x*du.x + du.y*du.y + du.z*du.z);
+    if (directed && !(dm > 1e-30f)) return "zero direction";
     float outer = (l->outerAngle == 0.0f)? 30.0f : l->outerAngle;
     if ((l->type == RBL_LIGHT_SPOT) && (!rbl__finite(l->innerAngle) || !rbl__finite(outer) || (l->innerAngle < 0.0f) || (l->innerAngle > outer) || (outer > 90.0f)))
         return "spot angles must satisfy 0 <= inner <= outer <= 90 degrees";
     if (!rbl__finiteNonNegative(l->constant) || !rbl__finiteNonNegative(l->linear) || !rbl__finiteNonNegative(l->quadratic)) return "negative or non-finite attenuation coefficients";
-    Vector3 d = l->direction;
+    Vector3 d = du;
     float invDl = directed? 1.0f/dl : 0.0f;
     d.x *= invDl; d.y *= invDl; d.z *= invDl;
     if (l->type == RBL_LIGHT_DIRECTIONAL) { p[0] = -d.x; p[1] = -d.y; p[2] = -d.z; p[3] = 0.0f; }
@@ -4674,7 +4796,7 @@ bool RblSetScene(const RblScene *scene)
     Vector3 up = rbl__v3(0.0f, 1.0f, 0.0f);
     if (scene == NULL) bad = "NULL scene";
     else if ((scene->lightCount < 0) || ((scene->lightCount > 0) && (scene->lights == NULL))) bad = "lightCount negative, or lights NULL";
-    else if ((scene->lightCount > (1 << 20))) bad = "more than 2^20 lights";
+    else if (scene->lightCount > RBL_MAX_SCENE_LIGHTS) bad = "more than RBL_MAX_SCENE_LIGHTS lights";
     else if ((scene->fog.mode < RBL_FOG_NONE) || (scene->fog.mode > RBL_FOG_EXP2)) bad = "unknown fog.mode";
     else if ((scene->fog.mode != RBL_FOG_NONE) && (!rbl__finite(scene->fog.start) || !rbl__finite(scene->fog.end) || !rbl__finiteNonNegative(scene->fog.density)))
         bad = "fog start/end not finite or density negative";
@@ -5003,7 +5125,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     RblLitShaderDesc lit, normalised;
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
-    if ((bad == NULL) && ((width <= 0) || (height <= 0) || (width > 16384) || (height > 16384))) bad = "size outside 1..16384";
+    if ((bad == NULL) && ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))) bad = "size outside 1..RBL_MAX_TARGET_SIZE";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
     g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
     if ((g.state == NULL) || !rbl__liveAdd(g.state))
@@ -5052,9 +5174,9 @@ bool RblIsGBufferValid(const RblGBuffer *gbuffer)
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 {
-    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > 16384) || (height > 16384) || gbuffer->state->begun)
+    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
     {
-        TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..16384", width, height);
+        TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
     }
     if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
@@ -5119,7 +5241,7 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
-    else if (!rbl__finite3(camera.position) || !rbl__finite3(camera.target) || !rbl__finite3(camera.up) || !rbl__finite(camera.fovy) || !(camera.fovy > 0.0f)) bad = "NaN/Inf camera or fovy <= 0";
+    else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginGBuffer: %s", bad); return false; }
     rlDrawRenderBatchActive();
     rlEnableFramebuffer(gbuffer->state->id);
@@ -5147,7 +5269,7 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     }
     rlMatrixMode(RL_MODELVIEW);
     rlLoadIdentity();
-    RblCameraFrame v = RblGetCameraFrame(camera);
+    RblCameraFrame v = rbl__cameraFrame(camera);
     float view[16];
     rbl__matToArray(rbl__viewMatrix(&v), view);
     rlMultMatrixf(view);
@@ -5411,7 +5533,7 @@ static rbl__Cast rbl__castOf(const RblShadowMap *map)
 static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out)
 {
     memset(out, 0, sizeof(*out));
-    if ((in.size != 0) && ((in.size < 16) || (in.size > 8192))) return "size outside 16..8192";
+    if ((in.size != 0) && ((in.size < 16) || (in.size > RBL_MAX_TARGET_SIZE))) return "size outside 16..RBL_MAX_TARGET_SIZE";
     if (!rbl__finite(in.constantBias) || !rbl__finite(in.slopeBias) || !rbl__finite(in.normalBias) || !rbl__finite(in.minCastAngle)) return "NaN/Inf bias or angle";
     if (in.minCastAngle > 80.0f) return "minCastAngle above 80 degrees";
     out->size = (in.size == 0)? 1024 : in.size;
@@ -5547,7 +5669,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     else if ((scene == NULL) || (lights == NULL) || (lightIndex < 0) || (lightIndex >= scene->lightCount)) bad = "no scene, or lightIndex outside 0..scene->lightCount-1";
     else if ((lights[lightIndex].type != RBL_LIGHT_DIRECTIONAL) && (lights[lightIndex].type != RBL_LIGHT_SPOT)) bad = "only directional and spot lights cast shadows";
     else if ((bad = rbl__packLight(&lights[lightIndex], p, c, spot, k)) != NULL) {}
-    else if (!rbl__finite3(focusCenter) || !rbl__finite(focusRadius) || (focusRadius < 0.0f)) bad = "focus centre/radius not finite or radius negative";
+    else if (!rbl__bounded3(focusCenter) || !rbl__finite(focusRadius) || (focusRadius < 0.0f) || (focusRadius > 1e17f)) bad = "focus centre not finite or >= 1.15e18, radius outside 0..1e17";
     else if ((lights[lightIndex].type == RBL_LIGHT_DIRECTIONAL) && !(focusRadius > 0.0f)) bad = "a directional shadow needs a focus radius > 0";
     else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && (lights[lightIndex].outerAngle > 80.0f)) bad = "spot shadows need outerAngle <= 80 degrees";
     else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && !(lights[lightIndex].range > 0.0f) && !(focusRadius > 0.0f)) bad = "a spot shadow without a range needs a focus radius > 0";
@@ -5569,7 +5691,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double r = focusRadius, texel = 2.0*r/(size - 1.0);
         cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
         cam.target = focusCenter;
-        map->state->lightView = RblGetCameraFrame(cam);
+        map->state->lightView = rbl__cameraFrame(cam);
         double ex = rbl__dot(map->state->lightView.right, cam.position), ey = rbl__dot(map->state->lightView.up, cam.position);
         double cx = rbl__dot(map->state->lightView.right, focusCenter), cy = rbl__dot(map->state->lightView.up, focusCenter);
         double left = floor((cx - r)/texel)*texel - ex, bottom = floor((cy - r)/texel)*texel - ey;
@@ -5585,7 +5707,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double nearPlane = farPlane*1e-3, t = tan(outer);
         cam.position = light->position;
         cam.target = rbl__v3(light->position.x + dir.x, light->position.y + dir.y, light->position.z + dir.z);
-        map->state->lightView = RblGetCameraFrame(cam);
+        map->state->lightView = rbl__cameraFrame(cam);
         map->state->nearPlane = (float)nearPlane; map->state->farPlane = (float)farPlane;
         map->state->texelWorld = (float)(2.0*t/size);
         projection = rbl__frustum(-t*nearPlane, t*nearPlane, -t*nearPlane, t*nearPlane, nearPlane, farPlane);
@@ -5635,14 +5757,13 @@ void RblEndShadowMap(RblShadowMap *map)
 
 bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius)
 {
-    if ((center == NULL) || (radius == NULL) || !rbl__finite3(camera.position) || !rbl__finite3(camera.target) || !rbl__finite(camera.fovy) ||
-        !rbl__finite(aspect) || !(aspect > 0.0f) || !rbl__finite(nearDistance) || !rbl__finite(farDistance) || !(nearDistance >= 0.0f) ||
-        !(farDistance > nearDistance) || !(camera.fovy > 0.0f) || ((camera.projection != CAMERA_ORTHOGRAPHIC) && !(camera.fovy < 180.0f)))
+    if ((center == NULL) || (radius == NULL) || !rbl__cameraOk(camera) || !rbl__finite(aspect) || !(aspect > 0.0f) || !(aspect < 1e6f) ||
+        !rbl__finite(nearDistance) || !rbl__finite(farDistance) || !(nearDistance >= 0.0f) || !(farDistance > nearDistance) || !(farDistance < 1e17f))
     {
-        TraceLog(LOG_WARNING, "RBL: RblShadowFocusFromCamera: needs 0 <= near < far, aspect > 0, 0 < fovy (< 180 perspective), finite values");
+        TraceLog(LOG_WARNING, "RBL: RblShadowFocusFromCamera: needs 0 <= near < far < 1e17, 0 < aspect < 1e6, a valid camera (0 < fovy < 180 perspective), finite values");
         return false;
     }
-    RblCameraFrame v = RblGetCameraFrame(camera);
+    RblCameraFrame v = rbl__cameraFrame(camera);
     // Half-diagonal of the slice's cross-section at distance d: perspective grows with d, orthographic not
     double n = nearDistance, f = farDistance, k = sqrt(1.0 + (double)aspect*aspect);
     double rn, rf;
@@ -5653,9 +5774,15 @@ bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance,
     if (c < n) c = n;
     if (c > f) c = f;
     double r = fmax(sqrt((c - n)*(c - n) + rn*rn), sqrt((f - c)*(f - c) + rf*rf));
-    *center = rbl__v3(camera.position.x - v.back.x*(float)c, camera.position.y - v.back.y*(float)c, camera.position.z - v.back.z*(float)c);
+    Vector3 cc = rbl__v3(camera.position.x - v.back.x*(float)c, camera.position.y - v.back.y*(float)c, camera.position.z - v.back.z*(float)c);
+    if (!rbl__bounded3(cc) || !(r < 1e17))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblShadowFocusFromCamera: the focus sphere overflows (radius %g)", r);
+        return false;
+    }
+    *center = cc;
     *radius = (float)r;
-    return rbl__finite3(*center) && rbl__finite(*radius);
+    return true;
 }
 
 // What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)

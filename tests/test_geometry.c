@@ -415,7 +415,9 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     Camera3D turned = makeCamera((Vector3){ -20.0f, 2.0f, 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
     RblCameraFrame turnedView = RblGetCameraFrame(turned);
     const RblBillboard *last = &bbs[COUNT - 1];   // CAMERA_PLANE: its frame is the one kept
-    RblBeginBatch(&batch, turned);
+    RT_CHECK(!RblBeginBatch(&batch, turned) && (batch.count == COUNT), "a Begin over pending billboards must be refused and keep them");
+    RblEndBatch(&batch);     // no GL here: the GPU buffers cannot be created, nothing is drawn (one log line)
+    RT_CHECK(RblBeginBatch(&batch, turned), "Begin after End refused");
     RblBatchAdd(&batch, material, last);
     RblVertex alone[4];
     RblBillboardVertices(&turnedView, 1, 1, last, alone);

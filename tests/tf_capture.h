@@ -99,8 +99,8 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
     gl->BufferData(0x8C8E, (ptrdiff_t)bytes, NULL, 0x88E5 /* GL_STATIC_READ */);
     gl->BindBufferBase(0x8C8E, 0, tfb);
 
-    rlEnableVertexArray(buf->vaoId);
-    rlUpdateVertexBuffer(buf->vboId, in, n*(int)sizeof(RblInstance), 0);
+    rlEnableVertexArray(buf->state->vaoId);
+    rlUpdateVertexBuffer(buf->state->vboId, in, n*(int)sizeof(RblInstance), 0);
     gl->Enable(0x8C89 /* GL_RASTERIZER_DISCARD */);
     gl->BeginTransformFeedback(0x0004 /* GL_TRIANGLES */);
     rlDrawVertexArrayInstanced(0, 6, n);
