@@ -67,7 +67,13 @@ $(BUILD)/tests/test_api_san: tests/test_api_main.c tests/test_api.c $(HARNESS) $
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_api_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
+# Contract suite: small limits so that they are reached in a few draws (the checks are the same code)
+CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256
+$(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SAN) $(CONTRACT_LIMITS) $(RAYLIB_CFLAGS) tests/test_contracts.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------

@@ -655,7 +655,7 @@ typedef struct RblLitShaderDesc {
     int brdf;                       // RblBrdf (0 = Lambert)
     int fog;                        // RblFogMode compiled in (0 = none); the scene's fog of that mode applies
     int tonemap;                    // RblTonemap (0 = none: clamp)
-    float gamma;                    // Display encoding pow(c, 1/gamma) (0 = the exact sRGB curve)
+    float gamma;                    // Display encoding pow(c, 1/gamma), 1/16..16 (0 = the exact sRGB curve)
     bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
     int shadowMaps;                 // Scene shadow maps received (0 = none, at most RBL_MAX_SHADOWS)
     int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
@@ -2196,6 +2196,7 @@ static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); } 
 static inline bool rbl__finite3(Vector3 v) { return rbl__finite(v.x) && rbl__finite(v.y) && rbl__finite(v.z); }
 // Below 2^60 (1.2e18) so that squared lengths and differences stay finite in float
 static inline bool rbl__bounded3(Vector3 v) { return (fabsf(v.x) < 1.15e18f) && (fabsf(v.y) < 1.15e18f) && (fabsf(v.z) < 1.15e18f); }
+static inline bool rbl__unit3(Vector3 v) { return rbl__finite3(v) && (fabsf(v.x*v.x + v.y*v.y + v.z*v.z - 1.0f) < 1e-3f); }
 // A camera the frame and matrix code can use: bounded finite vectors, fovy in (0, 180) for a
 // perspective camera (any finite positive height for an orthographic one), a known projection
 static inline bool rbl__cameraOk(Camera3D c)
@@ -2221,6 +2222,10 @@ static inline bool rbl__exponentsBelow(const void *f, int n, unsigned int limitE
 }
 // None of n floats stored from f on is NaN or Inf (exponent field 255)
 static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsBelow(f, n, 255u); }
+// Billboard positions, sizes, origins, rotations and source rectangles: below 2^60 (exponent 127 + 60)
+#define RBL__BILLBOARD_LIMIT_EXPONENT 187u
+// Largest texture side a billboard's frame may come from
+#define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
 static inline float rbl__dot(Vector3 a, Vector3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
 static inline Vector3 rbl__sub(Vector3 a, Vector3 b) { return rbl__v3(a.x - b.x, a.y - b.y, a.z - b.z); }
@@ -2459,12 +2464,19 @@ static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, 
     cache->facing = b->facing;
 }
 
+// A billboard every path can expand: position .. source and up .. roundness are runs of floats
+// (checked at compile time), below 2^60 so that corners (position + size along unit axes) and
+// texcoords (source edges / texture size) stay finite; a known facing; a texture of 1..65536 texels
+static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
+{
+    if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
+    if (!rbl__exponentsBelow(&b->position, 12, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED);
+}
+
 static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
-    if ((textureWidth <= 0) || (textureHeight <= 0)) return false;
-    // position .. source and up .. roundness are runs of floats (checked at compile time)
-    if (!rbl__allFinite(&b->position, 12) || !rbl__allFinite(&b->up, 7)) return false;
-    if ((b->facing < RBL_FACING_CAMERA_PLANE) || (b->facing > RBL_FACING_FIXED)) return false;
+    if (!rbl__billboardOk(b, textureWidth, textureHeight)) return false;
 
     rbl__facingFrame(view, cast, b, cache);
     Vector3 R = cache->right, U = cache->up, N = cache->normal;
@@ -2565,10 +2577,18 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
 
 bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
-    if ((view == NULL) || (b == NULL) || (out == NULL)) return false;
+    const char *bad = NULL;
+    if ((view == NULL) || (b == NULL) || (out == NULL)) bad = "NULL view, billboard or out";
+    else if (!rbl__bounded3(view->eye) || !rbl__unit3(view->right) || !rbl__unit3(view->up) || !rbl__unit3(view->back)) bad = "view is not a camera frame (NaN/Inf, huge eye or non-unit axes)";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBillboardVertices: %s", bad); return false; }
     rbl__FrameCache cache;
     cache.facing = -1;
-    return rbl__billboardVertices(view, NULL, &cache, textureWidth, textureHeight, b, out);
+    if (!rbl__billboardVertices(view, NULL, &cache, textureWidth, textureHeight, b, out))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblBillboardVertices: billboard skipped (NaN/Inf or huge input, bad facing or texture size %ix%i)", textureWidth, textureHeight);
+        return false;
+    }
+    return true;
 }
 
 //----------------------------------------------------------------------------------
@@ -2581,6 +2601,7 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
 // colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblCameraFrame *view);
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program);
+static const char *rbl__materialProblem(const Material *material, bool instanced, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
@@ -2619,7 +2640,7 @@ static void rbl__unloadBatchGpu(rbl__BatchState *batch)
     batch->gpuCapacity = 0;
 }
 
-static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard);
+static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
 
 // The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
 static rbl__BatchState *rbl__batchState(const RblBatch *batch)
@@ -2674,14 +2695,14 @@ bool RblIsBatchValid(RblBatch batch)
 
 void RblUnloadBatch(RblBatch *batch)
 {
-    if (batch == NULL) return;
+    if (batch == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadBatch: NULL batch"); return; }
     rbl__BatchState *b = rbl__batchState(batch);
     if (b != NULL)
     {
         rbl__liveRemove(b);
         rbl__freeBatchState(b);
     }
-    else if (batch->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadBatch: batch already unloaded (a stale copy)");
+    else TraceLog(LOG_WARNING, "RBL: RblUnloadBatch: %s", (batch->state != NULL)? "batch already unloaded (a stale copy)" : "batch not loaded (zero, or unloaded before)");
     memset(batch, 0, sizeof(*batch));
 }
 
@@ -2733,16 +2754,16 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
 {
     rbl__BatchState *batch = rbl__batchState(pub);
     if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return false; }
-    bool added = rbl__batchAdd(batch, material, billboard);
+    bool added = rbl__batchAdd(batch, material, billboard, "RblBatchAdd");
     pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
     return added;
 }
 
-static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard)
+static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn)
 {
     if ((batch->count == batch->capacity) && !rbl__growBatch(batch))
     {
-        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: RblBatchAdd: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
+        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", fn, batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
         return false;
     }
 
@@ -2753,14 +2774,19 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
         texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
     }
-    if ((billboard == NULL) || !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
+    const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
+    rbl__Program *program = NULL;
+    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, false, &program) : NULL;
+    if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+        bad = "NaN/Inf or huge input, or bad facing";
+    if (bad != NULL)
     {
-        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: batch: billboard skipped (NaN/Inf input, bad facing or texture size %ix%i); further skips this batch are not logged", texW, texH);
+        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
         return false;
     }
 
-    rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
-    if ((run == NULL) || !rbl__sameMaterial(&run->material, &material))
+    if (newRun)
     {
         if (batch->runCount == batch->runCapacity)
         {
@@ -2902,20 +2928,31 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
 {
     RblBatch *immediate = &rbl__state.immediate;
-    if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return; }
+    // Everything is checked before the one-quad batch is touched (or created on first use)
+    rbl__Program *program = NULL;
+    int texW = 1, texH = 1;
+    if ((material.maps != NULL) && (material.maps[MATERIAL_MAP_ALBEDO].texture.id != 0))
+    {
+        texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
+        texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
+    }
+    const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
+                      rbl__materialProblem(&material, false, &program);
+    if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
     if (immediate->state == NULL)
     {
         *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
         if (!RblIsBatchValid(*immediate)) return;
     }
     RblBeginBatch(immediate, camera);
-    RblBatchAdd(immediate, material, &billboard);
+    rbl__batchAdd(immediate->state, material, &billboard, "RblDrawBillboard");
     rbl__endBatch(immediate, "RblDrawBillboard");
 }
 
 void RblClose(void)
 {
-    RblUnloadBatch(&rbl__state.immediate);
+    if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
     // Programs still held: deleted with their holders' locations (call RblClose after your own
     // UnloadMaterial/RblUnloadLitShader calls: a Shader unloaded afterwards would be freed twice)
     for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
@@ -3005,14 +3042,14 @@ bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
 
 void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
 {
-    if (buffer == NULL) return;
+    if (buffer == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadInstanceBuffer: NULL buffer"); return; }
     rbl__InstanceBufferState *b = rbl__instanceState(buffer);
     if (b != NULL)
     {
         rbl__liveRemove(b);
         rbl__freeInstanceState(b);
     }
-    else if (buffer->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadInstanceBuffer: instance buffer already unloaded (a stale copy)");
+    else TraceLog(LOG_WARNING, "RBL: RblUnloadInstanceBuffer: %s", (buffer->state != NULL)? "instance buffer already unloaded (a stale copy)" : "instance buffer not loaded (zero, or unloaded before)");
     memset(buffer, 0, sizeof(*buffer));
 }
 
@@ -3034,6 +3071,9 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i or NaN/Inf vectors)", desc.facing);
         return 0;
     }
+    rbl__Program *checked = NULL;
+    const char *bad = rbl__materialProblem(&material, true, &checked);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
     if (count > buffer->capacity)
     {
         int newCapacity = buffer->capacity;
@@ -3280,8 +3320,14 @@ static void rbl__encode(const double a[3], int encoding, unsigned char out[3])
     }
 }
 
+static inline bool rbl__knownEncoding(int encoding) { return (encoding == RBL_NORMAL_HEMIOCT) || (encoding == RBL_NORMAL_XY) || (encoding == RBL_NORMAL_RGB); }
+
 void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3])
 {
+    const double x = normal.x, y = normal.y, z = normal.z;
+    const char *bad = (out == NULL)? "NULL out" : !rbl__knownEncoding(encoding)? "encoding is not HEMIOCT, XY or RGB" :
+                      (!rbl__finite3(normal) || !(x*x + y*y + z*z > 0.0))? "NaN/Inf or zero normal" : NULL;
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblEncodeNormal: %s", bad); return; }
     double a[3];
     rbl__sanitizeNormal(normal, a);
     rbl__encode(a, encoding, out);
@@ -3289,7 +3335,11 @@ void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3])
 
 Vector3 RblDecodeNormal(const unsigned char in[3], int encoding)
 {
-    if (in == NULL) return rbl__flatNormal();
+    if ((in == NULL) || (!rbl__knownEncoding(encoding) && (encoding != RBL_NORMAL_NONE)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDecodeNormal: %s; +Z returned", (in == NULL)? "NULL input" : "encoding is not HEMIOCT, XY or RGB");
+        return rbl__flatNormal();
+    }
     return rbl__decode(in, encoding);
 }
 
@@ -3327,19 +3377,22 @@ RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normal
         TraceLog(LOG_WARNING, "RBL: RblMeasureNormalEncoding: encoding %i is not HEMIOCT, XY or RGB", encoding);
         return stats;
     }
-    if ((count <= 0) || (normals == NULL)) return stats;
+    if ((count < 0) || ((count > 0) && (normals == NULL))) { TraceLog(LOG_WARNING, "RBL: RblMeasureNormalEncoding: count %i with normals %p", count, (const void *)normals); return stats; }
+    if (count == 0) return stats;
 
     double *errors = (double *)RBL_MALLOC((size_t)count*sizeof(double));
     if (errors == NULL) TraceLog(LOG_WARNING, "RBL: RblMeasureNormalEncoding: out of memory for %i errors (p99 reported as max)", count);
     double sum = 0.0;
-    int n = 0;
+    int n = 0, skipped = 0;
     for (int i = 0; i < count; i++)
     {
         Vector3 in = normals[i];
         double x = in.x, y = in.y, z = in.z, l = sqrt(x*x + y*y + z*z);
-        if (!rbl__finite3(in) || !(l > 0.0)) continue;          // no direction to compare with: not counted
+        if (!rbl__finite3(in) || !(l > 0.0)) { skipped++; continue; }     // no direction to compare with: not counted
         unsigned char code[3];
-        RblEncodeNormal(in, encoding, code);
+        double a[3];
+        rbl__sanitizeNormal(in, a);
+        rbl__encode(a, encoding, code);
         Vector3 d = rbl__decode(code, encoding);
         double dx = d.x, dy = d.y, dz = d.z;
         double cx = y*dz - z*dy, cy = z*dx - x*dz, cz = x*dy - y*dx;
@@ -3350,6 +3403,7 @@ RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normal
         n++;
     }
     stats.count = n;
+    if (skipped > 0) TraceLog(LOG_WARNING, "RBL: RblMeasureNormalEncoding: %i NaN/Inf or zero normals skipped", skipped);
     if (n > 0)
     {
         stats.mean = sum/n;
@@ -3991,7 +4045,11 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
 
 void RblUnloadPackedMaterial(RblPackedMaterial *packed)
 {
-    if (packed == NULL) return;
+    if ((packed == NULL) || ((packed->albedo.data == NULL) && (packed->material.data == NULL) && (packed->emissive.data == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUnloadPackedMaterial: %s", (packed == NULL)? "NULL packed" : "nothing packed (zero, or unloaded before)");
+        return;
+    }
     if (packed->albedo.data != NULL) UnloadImage(packed->albedo);
     if (packed->material.data != NULL) UnloadImage(packed->material);
     if (packed->emissive.data != NULL) UnloadImage(packed->emissive);
@@ -4258,7 +4316,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.brdf < RBL_BRDF_LAMBERT) || (in.brdf > RBL_BRDF_GGX)) return "unknown brdf";
     if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
-    if (!rbl__finiteNonNegative(in.gamma)) return "gamma negative or not finite";
+    if (!rbl__finiteNonNegative(in.gamma) || (in.gamma > 16.0f) || ((in.gamma > 0.0f) && (in.gamma < 0.0625f))) return "gamma outside 1/16..16 (0 = sRGB)";
     if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
@@ -4533,7 +4591,9 @@ static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 int RblLightFeatures(const RblLight *lights, int count)
 {
     int features = 0;
-    for (int i = 0; (lights != NULL) && (i < count); i++) rbl__lightFeatureOf(&lights[i], &features);
+    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i with lights %p", count, (const void *)lights); return 0; }
+    for (int i = 0; i < count; i++)
+        if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: light %i has an unknown type or falloff", i); return 0; }
     return features;
 }
 
@@ -4597,14 +4657,39 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
 // cutoff, so a sprite's silhouette casts); elsewhere the material's own program, checked against the
 // pass in progress. *program = NULL for a shader that is not the header's (drawn as raylib would).
 // false = refused, with one log line.
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program)
+// Why a material cannot draw in the current pass through a path (instanced or not); NULL = it can.
+// No side effect: the draw calls ask before they touch any state.
+static const char *rbl__materialProblem(const Material *material, bool instanced, rbl__Program **program)
 {
     *program = NULL;
-    if ((rbl__state.shadowPass == NULL) && ((material->shader.id == 0) || (material->shader.locs == NULL)))
+    if (material->maps != NULL)
     {
-        TraceLog(LOG_WARNING, "RBL: %s: the material has no shader (a zero Material, or a lit program that failed to load)", fn);
-        return false;
+        Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
+        if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
+            return "the albedo texture's size is outside 1..65536";
     }
+    if (rbl__state.shadowPass != NULL) return NULL;        // every material casts through the header's casters
+    if ((material->shader.id == 0) || (material->shader.locs == NULL)) return "the material has no shader (a zero Material, or a lit program that failed to load or was unloaded)";
+    rbl__Program *p = rbl__findLit(material->shader.id, false);
+    const RblGBuffer *g = rbl__state.gbufferPass;
+    if (p == NULL)
+    {
+        if (instanced) return "the material's shader is not an instanced lit program (RblLitShaderDesc.instanced)";
+        if (g != NULL) return "inside a G-buffer pass the material's shader must be a deferred lit program";
+        return NULL;        // the user's own shader: drawn as raylib would
+    }
+    if (p->key.desc.instanced != instanced) return instanced? "the material's program is not an instanced variant" : "an instanced variant draws only through RblDrawInstanced";
+    if ((g != NULL) && !p->key.desc.deferred) return "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
+    if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
+    if ((g == NULL) && p->key.desc.deferred) return "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
+    *program = p;
+    return NULL;
+}
+
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program)
+{
+    const char *bad = rbl__materialProblem(material, instanced, program);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
         rbl__Program *caster = NULL;
@@ -4618,22 +4703,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         material->maps = casterMaps;
         material->shader = caster->shader;
         *program = caster;
-        return true;
     }
-    rbl__Program *p = rbl__findLit(material->shader.id, false);
-    const RblGBuffer *g = rbl__state.gbufferPass;
-    const char *bad = NULL;
-    if (p == NULL)
-    {
-        if (instanced) bad = "the material's shader is not an instanced lit program (RblLitShaderDesc.instanced)";
-        else if (g != NULL) bad = "inside a G-buffer pass the material's shader must be a deferred lit program";
-    }
-    else if (p->key.desc.instanced != instanced) bad = instanced? "the material's program is not an instanced variant" : "an instanced variant draws only through RblDrawInstanced";
-    else if ((g != NULL) && !p->key.desc.deferred) bad = "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
-    else if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) bad = "the deferred variant's brdf differs from the G-buffer's";
-    else if ((g == NULL) && p->key.desc.deferred) bad = "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
-    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
-    *program = p;
     return true;
 }
 
@@ -4888,7 +4958,16 @@ bool RblSetScene(const RblScene *scene)
 }
 
 // Draw a mesh with the material's lit values (or as a caster inside a shadow pass) through raylib
-void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
+// Why a mesh cannot be drawn with this transform; NULL = it can
+static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
+{
+    if ((mesh->vertexCount <= 0) || ((mesh->vaoId == 0) && ((mesh->vboId == NULL) || (mesh->vboId[0] == 0)))) return "mesh not uploaded (no vertices, vaoId and vboId 0)";
+    if (!rbl__exponentsBelow(transform, 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "transform with NaN/Inf or |value| >= 2^60";
+    return NULL;
+}
+
+// DrawMesh with the lit values of a checked material
+static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform)
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *p = NULL;
@@ -4901,25 +4980,45 @@ void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
     DrawMesh(mesh, material, transform);
 }
 
+void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
+{
+    rbl__Program *p = NULL;
+    const char *bad = rbl__meshProblem(&mesh, &transform);
+    if (bad == NULL) bad = rbl__materialProblem(&material, false, &p);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawMesh: %s", bad); return; }
+    rbl__drawMesh(mesh, material, transform);
+}
+
 void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
 {
-    if ((model.meshes == NULL) || (model.materials == NULL) || (model.meshMaterial == NULL) || (model.meshCount < 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: model not loaded"); return; }
-    if (!rbl__finite3(position) || !rbl__finite(scale)) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: NaN/Inf position or scale"); return; }
+    // Every mesh and material is checked first: a model draws whole or not at all
+    const char *bad = NULL;
+    int at = -1;
+    if ((model.meshes == NULL) || (model.materials == NULL) || (model.meshMaterial == NULL) || (model.meshCount < 0) || (model.materialCount <= 0)) bad = "model not loaded";
+    else if (!rbl__bounded3(position) || !rbl__finite(scale) || !(fabsf(scale) < 1.15e18f)) bad = "NaN/Inf or |value| >= 1.15e18 in position or scale";
     // As DrawModel: transform = model.transform x scale x translation; the albedo colour tinted
     Matrix t = rbl__identity();
     t.m0 = t.m5 = t.m10 = scale;
     t.m12 = position.x; t.m13 = position.y; t.m14 = position.z;
     Matrix transform = rbl__matMul(model.transform, t);
+    for (int i = 0; (bad == NULL) && (i < model.meshCount); i++)
+    {
+        rbl__Program *p = NULL;
+        int m = model.meshMaterial[i];
+        at = i;
+        if ((m < 0) || (m >= model.materialCount)) bad = "a mesh names a material index outside 0..materialCount-1";
+        else if ((bad = rbl__meshProblem(&model.meshes[i], &transform)) != NULL) {}
+        else bad = rbl__materialProblem(&model.materials[m], false, &p);
+    }
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: %s (mesh %i)", bad, at); return; }
     for (int i = 0; i < model.meshCount; i++)
     {
-        int m = model.meshMaterial[i];
-        if ((m < 0) || (m >= model.materialCount)) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: mesh %i names material %i of %i", i, m, model.materialCount); continue; }
-        Material material = model.materials[m];
-        if (material.maps == NULL) { RblDrawMesh(model.meshes[i], material, transform); continue; }
+        Material material = model.materials[model.meshMaterial[i]];
+        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform); continue; }
         Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
         Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
         material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
-        RblDrawMesh(model.meshes[i], material, transform);
+        rbl__drawMesh(model.meshes[i], material, transform);
         material.maps[MATERIAL_MAP_ALBEDO].color = c;
     }
 }
@@ -4935,6 +5034,20 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
     }
     const Image *images[3] = { &packed->albedo, &packed->material, &packed->emissive };
     const int slots[3] = { MATERIAL_MAP_ALBEDO, MATERIAL_MAP_NORMAL, MATERIAL_MAP_EMISSION };
+    const RblMaterialLayout *l = &packed->layout;
+    const char *bad = NULL;
+    if ((l->normalEncoding < RBL_NORMAL_NONE) || (l->normalEncoding > RBL_NORMAL_RGB) || (l->emissive < RBL_EMISSIVE_NONE) || (l->emissive > RBL_EMISSIVE_RGB)) bad = "unknown layout encodings";
+    for (int i = 0; (i < 3) && (bad == NULL); i++)
+    {
+        const Image *im = images[i];
+        if (im->data == NULL) continue;
+        int levels = 1;
+        for (int side = (im->width > im->height)? im->width : im->height; side > 1; side /= 2) levels++;
+        if ((im->width != packed->albedo.width) || (im->height != packed->albedo.height) || (im->width <= 0) || (im->height <= 0) || (im->width > RBL__MAX_TEXTURE_SIDE) || (im->height > RBL__MAX_TEXTURE_SIDE)) bad = "an image's size is outside 1..65536 or differs from the albedo's";
+        else if ((im->format != PIXELFORMAT_UNCOMPRESSED_GRAYSCALE) && (im->format != PIXELFORMAT_UNCOMPRESSED_R8G8B8A8)) bad = "an image is neither R8 nor RGBA8 (not packed by RblPackMaterial)";
+        else if ((im->mipmaps < 1) || (im->mipmaps > levels)) bad = "an image's mipmap count is outside 1..full chain";
+    }
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadPackedTextures: %s", bad); return false; }
     Texture2D textures[3];
     memset(textures, 0, sizeof(textures));
     for (int i = 0; i < 3; i++)
@@ -5198,10 +5311,10 @@ bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
-    if (gbuffer == NULL) return;
+    if (gbuffer == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: NULL G-buffer"); return; }
     if (!rbl__isLive(gbuffer->state))
     {
-        if (gbuffer->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: G-buffer already unloaded (a stale copy)");
+        TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: %s", (gbuffer->state != NULL)? "G-buffer already unloaded (a stale copy)" : "G-buffer not loaded (zero, or unloaded before)");
         memset(gbuffer, 0, sizeof(*gbuffer));
         return;
     }
@@ -5220,7 +5333,7 @@ void RblUnloadGBuffer(RblGBuffer *gbuffer)
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || (gbuffer->state->id == 0)) return 0;
+    if (!RblIsGBufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
     return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
 }
 
@@ -5480,9 +5593,9 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 
 void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 {
-    if ((gbuffer == NULL) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
+    if (!RblIsGBufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
     {
-        TraceLog(LOG_WARNING, "RBL: RblSetGBufferOutput: unknown view %i or bad scale", view);
+        TraceLog(LOG_WARNING, "RBL: RblSetGBufferOutput: G-buffer not loaded, unknown view %i or bad scale", view);
         return;
     }
     gbuffer->output = view;
@@ -5622,10 +5735,10 @@ bool RblIsShadowMapValid(RblShadowMap map)
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
-    if (map == NULL) return;
+    if (map == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: NULL map"); return; }
     if (!rbl__isLive(map->state))
     {
-        if (map->state != NULL) TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: shadow map already unloaded (a stale copy)");
+        TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: %s", (map->state != NULL)? "shadow map already unloaded (a stale copy)" : "shadow map not loaded (zero, or unloaded before)");
         memset(map, 0, sizeof(*map));
         return;
     }

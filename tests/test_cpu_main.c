@@ -34,7 +34,7 @@ int main(int argc, char **argv)
         RT_TEST(test_materials_xy_error_is_small_near_the_pole_and_over_3_degrees_at_grazing_angles),
         RT_TEST(test_materials_precise_hemioct_is_never_worse_than_rounding_and_better_on_average),
         RT_TEST(test_materials_every_code_decodes_to_a_finite_unit_normal),
-        RT_TEST(test_materials_encoder_maps_nan_zero_and_below_hemisphere_input_to_defined_codes),
+        RT_TEST(test_materials_encoder_refuses_nan_inf_zero_and_maps_below_hemisphere_input_to_defined_codes),
         RT_TEST(test_materials_measure_reports_mean_nearest_rank_p99_max_and_counts_only_valid_normals),
         RT_TEST(test_materials_height_plane_tilted_by_a_known_angle_gives_that_normal),
         RT_TEST(test_materials_strength_is_height_units_per_texel_so_one_per_texel_at_strength_1_is_45_degrees),

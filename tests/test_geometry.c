@@ -263,7 +263,8 @@ static void test_hard_zero_negative_and_huge_sizes(void)
 {
     Camera3D cam = makeCamera((Vector3){ 0, 0, 5 }, (Vector3){ 0, 0, 0 }, (Vector3){ 0, 1, 0 });
     RblCameraFrame view = RblGetCameraFrame(cam);
-    const float sizes[][2] = { { 0, 0 }, { 0, 1 }, { -1, -1 }, { -1e-30f, 1e-30f }, { 1e30f, 1e30f }, { -1e30f, 3e30f } };
+    // Up to the documented bound 2^60 (1.15e18) every size is accepted with finite corners
+    const float sizes[][2] = { { 0, 0 }, { 0, 1 }, { -1, -1 }, { -1e-30f, 1e-30f }, { 1e18f, 1e18f }, { -1e18f, 1.1e18f } };
     for (int i = 0; i < (int)(sizeof(sizes)/sizeof(sizes[0])); i++)
     {
         RblBillboard b;
@@ -273,14 +274,18 @@ static void test_hard_zero_negative_and_huge_sizes(void)
         RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "size %g,%g skipped", sizes[i][0], sizes[i][1]);
         checkFrame(q, "sizes");
     }
-    // Sizes whose corners overflow float are skipped, not written as Inf
-    RblBillboard b;
-    memset(&b, 0, sizeof(b));
-    b.size = (Vector2){ 3e38f, 3e38f }; b.origin = (Vector2){ -3e38f, 0 };
-    RblVertex q[4];
-    memset(q, 0x5A, sizeof(q));
-    RT_CHECK(!RblBillboardVertices(&view, 8, 8, &b, q), "overflowing corners must be skipped");
-    RT_CHECK(((unsigned char *)q)[0] == 0x5A && ((unsigned char *)q)[sizeof(q) - 1] == 0x5A, "skipped quad must leave the output untouched");
+    // Beyond it (just above 2^60, 1e30, corners that overflow float) they are skipped, not written as Inf
+    const float beyond[][4] = { { 1.16e18f, 1.0f, 0.0f, 0.0f }, { 1.0f, -1e30f, 0.0f, 0.0f }, { 3e38f, 3e38f, -3e38f, 0.0f } };
+    for (int i = 0; i < 3; i++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.size = (Vector2){ beyond[i][0], beyond[i][1] }; b.origin = (Vector2){ beyond[i][2], beyond[i][3] };
+        RblVertex q[4];
+        memset(q, 0x5A, sizeof(q));
+        RT_CHECK(!RblBillboardVertices(&view, 8, 8, &b, q), "size %g,%g beyond 2^60 must be skipped", beyond[i][0], beyond[i][1]);
+        RT_CHECK(((unsigned char *)q)[0] == 0x5A && ((unsigned char *)q)[sizeof(q) - 1] == 0x5A, "skipped quad must leave the output untouched");
+    }
 }
 
 static void test_hard_far_from_origin_keeps_relative_precision(void)
@@ -387,8 +392,13 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     memset(&batch, 0, sizeof(batch));
     batch.state = &state;
     batch.capacity = COUNT;
+    // A material with a user's own shader (any non-zero program that is not the header's): accepted
+    int locs[32];
+    memset(locs, 0xff, sizeof(locs));
     Material material;
     memset(&material, 0, sizeof(material));
+    material.shader.id = 1;
+    material.shader.locs = locs;
 
     // Runs of repeated ups, a -0 up (a different key, the same frame), zero up, other modes between
     const Vector3 ups[5] = { { 0, 1, 0 }, { 0.3f, 2.0f, -0.1f }, { -0.0f, 1, 0 }, { 0, 0, 0 }, { 1e-3f, 1, 0 } };

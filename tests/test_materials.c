@@ -219,15 +219,26 @@ static void test_materials_every_code_decodes_to_a_finite_unit_normal(void)
     RT_CHECK((none.x == 0.0f) && (none.y == 0.0f) && (none.z == 1.0f), "NONE decodes to %g %g %g", none.x, none.y, none.z);
 }
 
-static void test_materials_encoder_maps_nan_zero_and_below_hemisphere_input_to_defined_codes(void)
+static void test_materials_encoder_refuses_nan_inf_zero_and_maps_below_hemisphere_input_to_defined_codes(void)
 {
     const float nan = NAN, inf = INFINITY;
+    SetTraceLogCallback(matCountingLog);
     for (int e = RBL_NORMAL_HEMIOCT; e <= RBL_NORMAL_RGB; e++)
     {
         unsigned char flat[3], c[3];
         RblEncodeNormal((Vector3){ 0.0f, 0.0f, 1.0f }, e, flat);
-        const Vector3 toFlat[5] = { { nan, 0.0f, 1.0f }, { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, -1.0f }, { inf, 1.0f, 1.0f }, { 0.0f, 0.0f, 7.0f } };
-        for (int i = 0; i < 5; i++)
+        // No direction at all: refused with one log line, the output untouched
+        const Vector3 refused[3] = { { nan, 0.0f, 1.0f }, { 0.0f, 0.0f, 0.0f }, { inf, 1.0f, 1.0f } };
+        for (int i = 0; i < 3; i++)
+        {
+            memset(c, 0xA5, 3);
+            matWarnings = 0;
+            RblEncodeNormal(refused[i], e, c);
+            RT_CHECK(c[0] == 0xA5 && c[1] == 0xA5 && c[2] == 0xA5 && matWarnings == 1, "encoding %d input %d: out written or %d warnings", e, i, matWarnings);
+        }
+        // Straight down (clamped onto the hemisphere's pole) and a long +Z: the flat code
+        const Vector3 toFlat[2] = { { 0.0f, 0.0f, -1.0f }, { 0.0f, 0.0f, 7.0f } };
+        for (int i = 0; i < 2; i++)
         {
             RblEncodeNormal(toFlat[i], e, c);
             RT_CHECK(memcmp(c, flat, 3) == 0, "encoding %d input %d: code %d,%d,%d, flat is %d,%d,%d", e, i, c[0], c[1], c[2], flat[0], flat[1], flat[2]);
@@ -242,8 +253,10 @@ static void test_materials_encoder_maps_nan_zero_and_below_hemisphere_input_to_d
         RblEncodeNormal((Vector3){ 3.0f, -4.0f, 5.0f }, e, b);
         RT_CHECK(memcmp(a, b, 3) == 0, "encoding %d: scaled inputs encode differently", e);
     }
+    matWarnings = 0;
     Vector3 n = RblDecodeNormal(NULL, RBL_NORMAL_RGB);
-    RT_CHECK(n.z == 1.0f, "NULL decodes to %g %g %g", n.x, n.y, n.z);
+    RT_CHECK(n.z == 1.0f && matWarnings == 1, "NULL decodes to %g %g %g (%d warnings)", n.x, n.y, n.z, matWarnings);
+    SetTraceLogCallback(NULL);
 }
 
 static int compareDouble(const void *a, const void *b)

@@ -1,0 +1,1145 @@
+// Contract suite: every public function of the header against every class of bad input (NULL, zero
+// and never-loaded objects, stale and double unloads, Begin/End imbalance and nesting, mismatched
+// variants, huge and negative counts and sizes, NaN/Inf/overflowing floats in every float field).
+// Each case runs in its own process (fork) under ASan+UBSan with its own headless context, so a crash
+// or hang fails one case, not the run. A refused call must log exactly one "RBL:" warning, return
+// failure, and leave the caller's outputs, GL bindings, enable state, viewport and rlgl matrices (and
+// the matrix stack depth) as they were; an accepted extreme input must leave only finite values in
+// what it wrote. The public functions are read from the header: one without a case fails the suite.
+// Built with small limits (RBL_MAX_BATCH_BILLBOARDS etc., see the Makefile) so limits are reached fast.
+#define RBILLBOARD_LIT_IMPLEMENTATION
+#include "rbillboard_lit.h"
+#include "rlgl.h"
+#include "raymath.h"
+#include "harness.h"
+
+#include <float.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "gpu_common.h"
+
+// ---- checks -------------------------------------------------------------------------------------
+static int caseFailures = 0;
+static int raylibErrors = 0;
+static void ck(bool ok, const char *fmt, ...)
+{
+    if (ok) return;
+    caseFailures++;
+    va_list a;
+    va_start(a, fmt);
+    printf("      ");
+    vprintf(fmt, a);
+    printf("\n");
+    va_end(a);
+    fflush(stdout);
+}
+
+// Counts the header's warnings (and rlgl's matrix-stack errors) at LOG_WARNING and above
+static void contractLog(int level, const char *text, va_list args)
+{
+    char line[512];
+    vsnprintf(line, sizeof(line), text, args);
+    if (level < LOG_WARNING) return;
+    if (strncmp(line, "RBL:", 4) == 0) { warnings++; memcpy(lastWarning, line, sizeof(line)); }
+    else if (strstr(line, "Matrix stack overflow") != NULL) raylibErrors++;
+}
+
+// ---- the caller's state a refused call must not change --------------------------------------------
+typedef void (*GlGetIntegerv)(unsigned int, int *);
+typedef unsigned char (*GlIsEnabled)(unsigned int);
+typedef void (*GlGetBooleanv)(unsigned int, unsigned char *);
+typedef void (*GlActiveTexture)(unsigned int);
+static GlGetIntegerv glGetI;
+static GlIsEnabled glIsOn;
+static GlGetBooleanv glGetB;
+static GlActiveTexture glActive;
+
+typedef struct Snap {
+    int ints[9];            // draw/read framebuffer, program, vertex array, array buffer, active texture, viewport
+    int textures[16];       // 2D texture bound on units 0..15
+    unsigned char enabled[5];   // depth test, blend, cull face, scissor, depth write
+    Matrix modelview, projection;
+} Snap;
+
+static void snapTake(Snap *s)
+{
+    memset(s, 0, sizeof(*s));
+    static const unsigned int names[6] = { 0x8CA6, 0x8CAA, 0x8B8D, 0x85B5, 0x8894, 0x84E0 };
+    for (int i = 0; i < 6; i++) glGetI(names[i], &s->ints[i]);
+    int vp[4]; glGetI(0x0BA2, vp);
+    s->ints[6] = vp[0]*7919 + vp[1]; s->ints[7] = vp[2]; s->ints[8] = vp[3];
+    for (int u = 0; u < 16; u++) { glActive(0x84C0 + (unsigned int)u); glGetI(0x8069, &s->textures[u]); }
+    glActive((unsigned int)s->ints[5]);
+    static const unsigned int caps[4] = { 0x0B71, 0x0BE2, 0x0B44, 0x0C11 };
+    for (int i = 0; i < 4; i++) s->enabled[i] = glIsOn(caps[i]);
+    glGetB(0x0B72, &s->enabled[4]);
+    s->modelview = rlGetMatrixModelview();
+    s->projection = rlGetMatrixProjection();
+}
+
+static void snapCompare(const Snap *a, const Snap *b, const char *what)
+{
+    static const char *intNames[9] = { "draw framebuffer", "read framebuffer", "program", "vertex array", "array buffer", "active texture", "viewport origin", "viewport width", "viewport height" };
+    for (int i = 0; i < 9; i++) ck(a->ints[i] == b->ints[i], "%s: %s changed (%d -> %d)", what, intNames[i], a->ints[i], b->ints[i]);
+    for (int u = 0; u < 16; u++) ck(a->textures[u] == b->textures[u], "%s: texture unit %d binding changed (%d -> %d)", what, u, a->textures[u], b->textures[u]);
+    static const char *capNames[5] = { "depth test", "blend", "cull face", "scissor", "depth write" };
+    for (int i = 0; i < 5; i++) ck(a->enabled[i] == b->enabled[i], "%s: %s changed (%d -> %d)", what, capNames[i], a->enabled[i], b->enabled[i]);
+    ck(memcmp(&a->modelview, &b->modelview, sizeof(Matrix)) == 0, "%s: rlgl modelview changed", what);
+    ck(memcmp(&a->projection, &b->projection, sizeof(Matrix)) == 0, "%s: rlgl projection changed", what);
+}
+
+static Snap before;
+static void refusedBegin(void) { rlDrawRenderBatchActive(); snapTake(&before); warnings = 0; lastWarning[0] = 0; }
+static void refusedEnd(bool ok, const char *what)
+{
+    Snap after;
+    snapTake(&after);
+    ck(!ok, "%s: returned success", what);
+    ck(warnings == 1, "%s: %d RBL log lines, expected 1 (last: %s)", what, warnings, lastWarning);
+    snapCompare(&before, &after, what);
+}
+// expr yields true on success; V(call) turns a void call into "no success"
+#define EXPECT_REFUSED(expr) do { refusedBegin(); bool ok_ = (expr); refusedEnd(ok_, #expr); } while (0)
+#define V(call) ((call), false)
+// A query or a harmless call: no log line, the stated result
+#define EXPECT_QUIET(expr, want) do { warnings = 0; bool r_ = (expr); ck(r_ == (want), "%s: returned %d", #expr, (int)r_); ck(warnings == 0, "%s: %d RBL log lines, expected none (%s)", #expr, warnings, lastWarning); } while (0)
+
+// A GL entry point as a function pointer (ISO C has no object-to-function pointer cast)
+#define GL_PROC(var, name) do { void *p_ = rtGlProc(name); memcpy(&(var), &p_, sizeof(p_)); } while (0)
+
+static bool allFinite(const float *f, size_t n) { for (size_t i = 0; i < n; i++) if (!isfinite(f[i])) return false; return true; }
+
+// ---- fixture ------------------------------------------------------------------------------------
+static RenderTexture2D target;
+static Texture2D white;
+static Material material;           // a forward lit material (Lambert, one light slot)
+static Shader litShader;
+
+static Camera3D camera(void) { return frontCamera(); }
+
+static RblBillboard billboard(void)
+{
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 1.0f, 1.0f };
+    return b;
+}
+
+static RblLight pointLight(void)
+{
+    RblLight l;
+    memset(&l, 0, sizeof(l));
+    l.position = (Vector3){ 0.0f, 1.0f, 3.0f };
+    l.color = WHITE;
+    l.intensity = 4.0f;
+    return l;
+}
+
+static Material litMaterial(RblLitShaderDesc desc)
+{
+    Material m = LoadMaterialDefault();
+    m.shader = RblLoadLitShader(desc);
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    return m;
+}
+
+static RblLitShaderDesc descOf(int brdf, bool instanced, bool deferred)
+{
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1;
+    d.brdf = brdf;
+    d.instanced = instanced;
+    d.deferred = deferred;
+    return d;
+}
+
+// The state a user is in mid-frame: a bound render target inside BeginMode3D, one light in the scene
+static void fixtureUp(void)
+{
+    target = LoadRenderTexture(TARGET, TARGET);
+    white = solidTexture(WHITE);
+    litShader = RblLoadLitShader(descOf(RBL_BRDF_LAMBERT, false, false));
+    material = LoadMaterialDefault();
+    material.shader = litShader;
+    material.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RblLight l = pointLight();
+    renderSetLights(&l, 1, DARKGRAY);
+    BeginTextureMode(target);
+    ClearBackground(BLACK);
+    BeginMode3D(camera());
+    rlDrawRenderBatchActive();
+}
+
+// Float values every float input is tried with: NaN, infinities, and finite values that overflow
+static const float badFloats[5] = { NAN, INFINITY, -INFINITY, 3.0e38f, -3.0e38f };
+
+typedef struct Field { const char *name; size_t offset; } Field;
+#define FIELD(T, f) { #f, offsetof(T, f) }
+
+static const Field billboardFloats[] = {
+    FIELD(RblBillboard, position.x), FIELD(RblBillboard, position.y), FIELD(RblBillboard, position.z),
+    FIELD(RblBillboard, size.x), FIELD(RblBillboard, size.y), FIELD(RblBillboard, origin.x), FIELD(RblBillboard, origin.y),
+    FIELD(RblBillboard, rotation), FIELD(RblBillboard, source.x), FIELD(RblBillboard, source.y),
+    FIELD(RblBillboard, source.width), FIELD(RblBillboard, source.height), FIELD(RblBillboard, up.x), FIELD(RblBillboard, up.y),
+    FIELD(RblBillboard, up.z), FIELD(RblBillboard, axis.x), FIELD(RblBillboard, axis.y), FIELD(RblBillboard, axis.z),
+    FIELD(RblBillboard, roundness) };
+static const Field cameraFloats[] = {
+    FIELD(Camera3D, position.x), FIELD(Camera3D, position.y), FIELD(Camera3D, position.z), FIELD(Camera3D, target.x),
+    FIELD(Camera3D, target.y), FIELD(Camera3D, target.z), FIELD(Camera3D, up.x), FIELD(Camera3D, up.y), FIELD(Camera3D, up.z),
+    FIELD(Camera3D, fovy) };
+static const Field lightFloats[] = {
+    FIELD(RblLight, position.x), FIELD(RblLight, position.y), FIELD(RblLight, position.z), FIELD(RblLight, intensity),
+    FIELD(RblLight, range), FIELD(RblLight, direction.x), FIELD(RblLight, direction.y), FIELD(RblLight, direction.z),
+    FIELD(RblLight, innerAngle), FIELD(RblLight, outerAngle), FIELD(RblLight, constant), FIELD(RblLight, linear),
+    FIELD(RblLight, quadratic) };
+static const Field instancedDescFloats[] = {
+    FIELD(RblInstancedDesc, up.x), FIELD(RblInstancedDesc, up.y), FIELD(RblInstancedDesc, up.z), FIELD(RblInstancedDesc, axis.x),
+    FIELD(RblInstancedDesc, axis.y), FIELD(RblInstancedDesc, axis.z), FIELD(RblInstancedDesc, roundness) };
+static const Field sceneFloats[] = {
+    FIELD(RblScene, ambientUp.x), FIELD(RblScene, ambientUp.y), FIELD(RblScene, ambientUp.z), FIELD(RblScene, fog.start),
+    FIELD(RblScene, fog.end), FIELD(RblScene, fog.density), FIELD(RblScene, exposure) };
+static const Field shadowDescFloats[] = {
+    FIELD(RblShadowDesc, constantBias), FIELD(RblShadowDesc, slopeBias), FIELD(RblShadowDesc, normalBias), FIELD(RblShadowDesc, minCastAngle) };
+#define COUNT_OF(a) ((int)(sizeof(a)/sizeof((a)[0])))
+#define SET_FIELD(obj, field, value) memcpy((char *)&(obj) + (field).offset, &(value), sizeof(float))
+
+// Every camera field bad: f(camera) must be refused (one line, nothing changed)
+#define EVERY_BAD_CAMERA(call) do { \
+    for (int fi_ = 0; fi_ < COUNT_OF(cameraFloats); fi_++) for (int vi_ = 0; vi_ < 5; vi_++) { \
+        Camera3D cam = camera(); SET_FIELD(cam, cameraFloats[fi_], badFloats[vi_]); \
+        EXPECT_REFUSED(call); } \
+    Camera3D cam = camera(); cam.fovy = 0.0f; EXPECT_REFUSED(call); \
+    cam = camera(); cam.fovy = -45.0f; EXPECT_REFUSED(call); \
+    cam = camera(); cam.fovy = 180.0f; EXPECT_REFUSED(call); \
+    cam = camera(); cam.projection = 7; EXPECT_REFUSED(call); \
+} while (0)
+
+// ---- cases: geometry ------------------------------------------------------------------------------
+static void c_frame_bad_camera(void)
+{
+    for (int fi = 0; fi < COUNT_OF(cameraFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        Camera3D cam = camera(); SET_FIELD(cam, cameraFloats[fi], badFloats[vi]);
+        warnings = 0;
+        RblCameraFrame f = RblGetCameraFrame(cam);
+        ck(warnings == 1, "%s = %g: %d log lines", cameraFloats[fi].name, badFloats[vi], warnings);
+        ck(allFinite(&f.eye.x, 12), "%s = %g: non-finite frame", cameraFloats[fi].name, badFloats[vi]);
+    }
+}
+
+static void c_frame_degenerate_cameras_are_fine(void)
+{
+    Camera3D cams[3] = { camera(), camera(), camera() };
+    cams[0].target = cams[0].position;                  // no view direction
+    cams[1].up = (Vector3){ 0.0f, 0.0f, -1.0f };        // up along the view
+    cams[2].up = (Vector3){ 0.0f, 0.0f, 0.0f };         // zero up
+    for (int i = 0; i < 3; i++)
+    {
+        warnings = 0;
+        RblCameraFrame f = RblGetCameraFrame(cams[i]);
+        ck(warnings == 0, "degenerate camera %d logged", i);
+        ck(allFinite(&f.eye.x, 12) && fabsf(Vector3Length(f.right) - 1.0f) < 1e-5f && fabsf(Vector3DotProduct(f.right, f.up)) < 1e-5f, "degenerate camera %d: frame not orthonormal", i);
+    }
+}
+
+static void c_vertices_null_and_sizes(void)
+{
+    RblCameraFrame f = RblGetCameraFrame(camera());
+    RblBillboard b = billboard();
+    RblVertex out[4], sentinel[4];
+    memset(out, 0x5a, sizeof(out)); memcpy(sentinel, out, sizeof(out));
+    EXPECT_REFUSED(RblBillboardVertices(NULL, 4, 4, &b, out));
+    EXPECT_REFUSED(RblBillboardVertices(&f, 4, 4, NULL, out));
+    EXPECT_REFUSED(RblBillboardVertices(&f, 4, 4, &b, NULL));
+    EXPECT_REFUSED(RblBillboardVertices(&f, 0, 4, &b, out));
+    EXPECT_REFUSED(RblBillboardVertices(&f, 4, -4, &b, out));
+    EXPECT_REFUSED(RblBillboardVertices(&f, 2147483647, 4, &b, out));
+    b.facing = 9; EXPECT_REFUSED(RblBillboardVertices(&f, 4, 4, &b, out));
+    b.facing = -1; EXPECT_REFUSED(RblBillboardVertices(&f, 4, 4, &b, out));
+    ck(memcmp(out, sentinel, sizeof(out)) == 0, "refused calls wrote to out");
+}
+
+static void c_vertices_every_float_field(void)
+{
+    RblCameraFrame f = RblGetCameraFrame(camera());
+    for (int facing = 0; facing < 4; facing++)
+    for (int fi = 0; fi < COUNT_OF(billboardFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblBillboard b = billboard(); b.facing = facing; b.roundness = 0.5f;
+        SET_FIELD(b, billboardFloats[fi], badFloats[vi]);
+        RblVertex out[4], sentinel[4];
+        memset(out, 0x5a, sizeof(out)); memcpy(sentinel, out, sizeof(out));
+        warnings = 0;
+        bool ok = RblBillboardVertices(&f, 64, 64, &b, out);
+        if (ok) ck(warnings == 0 && allFinite(out[0].position, 3) && allFinite(out[1].position, 3) &&
+                   allFinite(out[2].position, 3) && allFinite(out[3].position, 3) && allFinite(out[0].texcoord, 2) && allFinite(out[2].texcoord, 2) &&
+                   allFinite(out[0].normal, 3) && allFinite(out[0].tangent, 4),
+                   "facing %d %s = %g accepted with non-finite output or a log line", facing, billboardFloats[fi].name, badFloats[vi]);
+        else ck(warnings == 1 && memcmp(out, sentinel, sizeof(out)) == 0, "facing %d %s = %g refused with %d log lines or out written", facing, billboardFloats[fi].name, badFloats[vi], warnings);
+    }
+    // A finite source rectangle whose far edge overflows
+    RblBillboard b = billboard(); b.source = (Rectangle){ 3.0e38f, 0.0f, 3.0e38f, 4.0f };
+    RblVertex out[4];
+    warnings = 0;
+    bool ok = RblBillboardVertices(&f, 64, 64, &b, out);
+    ck(!ok && warnings == 1, "source far edge overflowing float accepted (or %d log lines)", warnings);
+}
+
+static void c_vertices_bad_frame(void)
+{
+    RblCameraFrame good = RblGetCameraFrame(camera());
+    for (int i = 0; i < 12; i++) for (int vi = 0; vi < 3; vi++)
+    {
+        RblCameraFrame f = good;
+        ((float *)&f)[i] = badFloats[vi];
+        RblBillboard b = billboard();
+        RblVertex out[4];
+        EXPECT_REFUSED(RblBillboardVertices(&f, 4, 4, &b, out));
+    }
+}
+
+// ---- cases: batches -------------------------------------------------------------------------------
+static void c_batch_load_counts(void)
+{
+    RblBatch b;
+    int bad[4] = { -1, -2147483647 - 1, RBL_MAX_BATCH_BILLBOARDS + 1, 2147483647 };
+    for (int i = 0; i < 4; i++)
+    {
+        EXPECT_REFUSED((b = RblLoadBatch(bad[i]), RblIsBatchValid(b)));
+        ck(b.state == NULL && b.capacity == 0, "capacity %d: not a zero batch", bad[i]);
+    }
+}
+
+static void c_batch_valid_queries(void)
+{
+    RblBatch zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblIsBatchValid(zero), false);
+    RblBatch b = RblLoadBatch(4), stale = b;
+    EXPECT_QUIET(RblIsBatchValid(b), true);
+    RblUnloadBatch(&b);
+    EXPECT_QUIET(RblIsBatchValid(stale), false);
+    EXPECT_QUIET(RblIsBatchValid(b), false);
+}
+
+static void c_batch_unload(void)
+{
+    EXPECT_REFUSED(V(RblUnloadBatch(NULL)));
+    RblBatch zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(V(RblUnloadBatch(&zero)));
+    RblBatch b = RblLoadBatch(4), stale = b;
+    RblUnloadBatch(&b);
+    ck(b.state == NULL, "unload did not zero the batch");
+    EXPECT_REFUSED(V(RblUnloadBatch(&b)));      // double unload through the zeroed holder: one line
+    EXPECT_REFUSED(V(RblUnloadBatch(&stale)));       // a stale copy: one line
+    ck(stale.state == NULL, "stale copy not zeroed");
+}
+
+static void c_batch_begin(void)
+{
+    RblBatch zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(RblBeginBatch(NULL, camera()));
+    EXPECT_REFUSED(RblBeginBatch(&zero, camera()));
+    RblBatch b = RblLoadBatch(4), stale = b;
+    EVERY_BAD_CAMERA(RblBeginBatch(&b, cam));
+    RblBillboard bb = billboard();
+    ck(RblBeginBatch(&b, camera()) && RblBatchAdd(&b, material, &bb), "good batch refused");
+    EXPECT_REFUSED(RblBeginBatch(&b, camera()));      // pending billboards are kept
+    ck(b.count == 1, "pending billboards dropped (%d)", b.count);
+    RblEndBatch(&b);
+    RblUnloadBatch(&b);
+    EXPECT_REFUSED(RblBeginBatch(&stale, camera()));
+}
+
+static void c_batch_add(void)
+{
+    RblBatch zero; memset(&zero, 0, sizeof(zero));
+    RblBillboard bb = billboard();
+    EXPECT_REFUSED(RblBatchAdd(NULL, material, &bb));
+    EXPECT_REFUSED(RblBatchAdd(&zero, material, &bb));
+    RblBatch b = RblLoadBatch(4);
+    EXPECT_REFUSED(RblBatchAdd(&b, material, &bb));            // not begun
+    RblBeginBatch(&b, camera());
+    EXPECT_REFUSED(RblBatchAdd(&b, material, NULL));
+    // Every float field bad: refused (one line for the batch's first skip) or finite vertices
+    for (int fi = 0; fi < COUNT_OF(billboardFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblBillboard x = billboard();
+        SET_FIELD(x, billboardFloats[fi], badFloats[vi]);
+        int before = b.count;
+        bool ok = RblBatchAdd(&b, material, &x);
+        if (ok) ck(allFinite(b.state->vertices[before*4].position, 3) &&
+                   allFinite(b.state->vertices[before*4 + 2].position, 3) && allFinite(b.state->vertices[before*4 + 2].texcoord, 2),
+                   "%s = %g accepted with non-finite vertices", billboardFloats[fi].name, badFloats[vi]);
+        if (b.count >= RBL_MAX_BATCH_BILLBOARDS - 1) { RblEndBatch(&b); RblBeginBatch(&b, camera()); }
+    }
+    RblEndBatch(&b);
+    // A zero material, a material whose program was unloaded, a texture with a negative size
+    RblBeginBatch(&b, camera());
+    Material z; memset(&z, 0, sizeof(z));
+    EXPECT_REFUSED(RblBatchAdd(&b, z, &bb));
+    Material dead = litMaterial(descOf(RBL_BRDF_GGX, false, false));
+    Shader s = dead.shader;
+    RblUnloadLitShader(&s);
+    dead.shader = s;
+    RblEndBatch(&b); RblBeginBatch(&b, camera());        // the first skip of a batch is logged, later ones counted
+    EXPECT_REFUSED(RblBatchAdd(&b, dead, &bb));
+    Material neg = material; MaterialMap maps[12]; memcpy(maps, material.maps, sizeof(maps)); neg.maps = maps;
+    maps[MATERIAL_MAP_ALBEDO].texture.width = -4;
+    RblEndBatch(&b); RblBeginBatch(&b, camera());
+    EXPECT_REFUSED(RblBatchAdd(&b, neg, &bb));
+    ck(b.skipped == 1 && b.count == 0, "skips not counted (%d) or bad billboards kept (%d)", b.skipped, b.count);
+    RblEndBatch(&b);
+    RblUnloadBatch(&b);
+}
+
+static void c_batch_limit(void)
+{
+    RblBatch b = RblLoadBatch(RBL_MAX_BATCH_BILLBOARDS);
+    RblBillboard bb = billboard();
+    RblBeginBatch(&b, camera());
+    for (int i = 0; i < RBL_MAX_BATCH_BILLBOARDS; i++) RblBatchAdd(&b, material, &bb);
+    ck(b.count == RBL_MAX_BATCH_BILLBOARDS, "batch holds %d", b.count);
+    EXPECT_REFUSED(RblBatchAdd(&b, material, &bb));
+    RblEndBatch(&b);
+    RblUnloadBatch(&b);
+    // Growth stops at the limit
+    b = RblLoadBatch(1);
+    RblBeginBatch(&b, camera());
+    warnings = 0;
+    for (int i = 0; i < RBL_MAX_BATCH_BILLBOARDS + 5; i++) RblBatchAdd(&b, material, &bb);
+    ck(b.count == RBL_MAX_BATCH_BILLBOARDS && b.capacity == RBL_MAX_BATCH_BILLBOARDS && warnings == 1, "growth past the limit: count %d capacity %d, %d lines", b.count, b.capacity, warnings);
+    RblEndBatch(&b);
+    RblUnloadBatch(&b);
+}
+
+static void c_batch_end(void)
+{
+    RblBatch zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(V(RblEndBatch(NULL)));
+    EXPECT_REFUSED(V(RblEndBatch(&zero)));
+    RblBatch b = RblLoadBatch(4), stale = b;
+    EXPECT_REFUSED(V(RblEndBatch(&b)));             // never begun
+    RblBeginBatch(&b, camera()); RblEndBatch(&b);
+    EXPECT_REFUSED(V(RblEndBatch(&b)));             // ended twice
+    RblUnloadBatch(&b);
+    EXPECT_REFUSED(V(RblEndBatch(&stale)));
+}
+
+static void c_draw_billboard(void)
+{
+    RblBillboard bb = billboard();
+    EVERY_BAD_CAMERA(V(RblDrawBillboard(cam, material, bb)));
+    Material z; memset(&z, 0, sizeof(z));
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), z, bb)));
+    Material inst = litMaterial(descOf(RBL_BRDF_LAMBERT, true, false));
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), inst, bb)));      // an instanced variant through the batch
+    Material def = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), def, bb)));       // a deferred variant outside a G-buffer pass
+    bb.facing = 17;
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), material, bb)));
+}
+
+static void c_close_twice(void)
+{
+    RblBillboard bb = billboard();
+    RblDrawBillboard(camera(), material, bb);
+    EXPECT_QUIET(V(RblClose()), false);
+    EXPECT_QUIET(V(RblClose()), false);
+}
+
+// ---- cases: instanced -----------------------------------------------------------------------------
+static RblInstance instance(void)
+{
+    RblInstance in;
+    memset(&in, 0, sizeof(in));
+    in.size = (Vector2){ 1.0f, 1.0f };
+    return in;
+}
+
+static void c_instances_load(void)
+{
+    int bad[4] = { -1, -2147483647 - 1, RBL_MAX_INSTANCES + 1, 2147483647 };
+    RblInstanceBuffer b;
+    for (int i = 0; i < 4; i++) EXPECT_REFUSED((b = RblLoadInstanceBuffer(bad[i]), RblIsInstanceBufferValid(b)));
+    RblInstanceBuffer zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblIsInstanceBufferValid(zero), false);
+    b = RblLoadInstanceBuffer(4);
+    RblInstanceBuffer stale = b;
+    EXPECT_QUIET(RblIsInstanceBufferValid(b), true);
+    EXPECT_REFUSED(V(RblUnloadInstanceBuffer(NULL)));
+    RblUnloadInstanceBuffer(&b);
+    EXPECT_QUIET(RblIsInstanceBufferValid(stale), false);
+    EXPECT_REFUSED(V(RblUnloadInstanceBuffer(&b)));
+    EXPECT_REFUSED(V(RblUnloadInstanceBuffer(&stale)));
+}
+
+static void c_instances_draw(void)
+{
+    Material inst = litMaterial(descOf(RBL_BRDF_LAMBERT, true, false));
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    RblInstance in[4] = { instance(), instance(), instance(), instance() };
+    RblInstanceBuffer zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(RblDrawInstanced(NULL, camera(), inst, d, in, 4) > 0);
+    EXPECT_REFUSED(RblDrawInstanced(&zero, camera(), inst, d, in, 4) > 0);      // also before any buffer exists
+    RblInstanceBuffer b = RblLoadInstanceBuffer(4), stale;
+    EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, d, in, -1) > 0);
+    EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, d, NULL, 4) > 0);
+    EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, d, in, RBL_MAX_INSTANCES + 1) > 0);
+    EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, d, in, 2147483647) > 0);
+    EVERY_BAD_CAMERA(RblDrawInstanced(&b, cam, inst, d, in, 4) > 0);
+    for (int fi = 0; fi < COUNT_OF(instancedDescFloats); fi++) for (int vi = 0; vi < 3; vi++)
+    {
+        RblInstancedDesc x = d; SET_FIELD(x, instancedDescFloats[fi], badFloats[vi]);
+        EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, x, in, 4) > 0);
+    }
+    d.facing = 4; EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, d, in, 4) > 0);
+    d.facing = -1; EXPECT_REFUSED(RblDrawInstanced(&b, camera(), inst, d, in, 4) > 0);
+    d.facing = 0;
+    Material z; memset(&z, 0, sizeof(z));
+    EXPECT_REFUSED(RblDrawInstanced(&b, camera(), z, d, in, 4) > 0);
+    EXPECT_REFUSED(RblDrawInstanced(&b, camera(), material, d, in, 4) > 0);    // a vertex-buffer variant
+    // Instances with bad floats are skipped with one line; what is drawn is the clean rest
+    for (int f = 0; f < 12; f++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblInstance x[2] = { instance(), instance() };
+        ((float *)&x[1])[f] = badFloats[vi];
+        warnings = 0;
+        int n = RblDrawInstanced(&b, camera(), inst, d, x, 2);
+        ck((n == 1 && warnings == 1) || (n == 2 && warnings == 0 && fabsf(badFloats[vi]) < 1e38f && f == 3), "instance float %d = %g: drawn %d, %d lines", f, badFloats[vi], n, warnings);
+    }
+    stale = b;
+    RblUnloadInstanceBuffer(&b);
+    EXPECT_REFUSED(RblDrawInstanced(&stale, camera(), inst, d, in, 4) > 0);
+}
+
+// ---- cases: materials -----------------------------------------------------------------------------
+static Image greyImage(int w, int h) { return GenImageColor(w, h, GRAY); }
+
+static void c_pack_material(void)
+{
+    RblMaterialSource src; memset(&src, 0, sizeof(src));
+    RblPackedMaterial packed, sentinel;
+    memset(&packed, 0x5a, sizeof(packed)); memcpy(&sentinel, &packed, sizeof(packed));
+    EXPECT_REFUSED(RblPackMaterial(NULL, &packed));
+    EXPECT_REFUSED(RblPackMaterial(&src, NULL));
+    EXPECT_REFUSED(RblPackMaterial(&src, &packed));                     // no albedo
+    src.albedo = greyImage(8, 8);
+    Image bad = src.albedo;
+    bad.width = -8; src.albedo = bad; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    bad.width = 8; bad.format = 9999; src.albedo = bad; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    bad.format = PIXELFORMAT_UNCOMPRESSED_GRAYSCALE; bad.height = 2147483647; src.albedo = bad; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    bad.height = 8; bad.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8; src.albedo = bad;
+    src.normal = greyImage(4, 4); EXPECT_REFUSED(RblPackMaterial(&src, &packed));   // size mismatch
+    UnloadImage(src.normal); memset(&src.normal, 0, sizeof(Image));
+    src.normalEncoding = 7; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    src.normalEncoding = -1; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    src.normalEncoding = 0;
+    Rectangle frames[1] = { { 0.0f, 0.0f, NAN, 4.0f } };
+    src.frames = frames; src.frameCount = 1; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    src.frameCount = -1; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    src.frames = NULL; src.frameCount = 3; EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    frames[0] = (Rectangle){ 3.0e38f, 0.0f, 3.0e38f, 4.0f }; src.frames = frames; src.frameCount = 1;
+    EXPECT_REFUSED(RblPackMaterial(&src, &packed));
+    ck(memcmp(&packed, &sentinel, sizeof(packed)) == 0, "a refused pack wrote to packed");
+    UnloadImage(src.albedo);
+}
+
+static void c_unload_packed(void)
+{
+    EXPECT_REFUSED(V(RblUnloadPackedMaterial(NULL)));
+    RblMaterialSource src; memset(&src, 0, sizeof(src));
+    src.albedo = greyImage(8, 8);
+    RblPackedMaterial p;
+    ck(RblPackMaterial(&src, &p), "pack failed");
+    RblUnloadPackedMaterial(&p);
+    ck(p.albedo.data == NULL, "unload did not zero");
+    EXPECT_REFUSED(V(RblUnloadPackedMaterial(&p)));
+    UnloadImage(src.albedo);
+}
+
+static void c_encode_decode_normal(void)
+{
+    unsigned char out[3] = { 7, 7, 7 };
+    EXPECT_REFUSED(V(RblEncodeNormal((Vector3){ 0, 0, 1 }, RBL_NORMAL_HEMIOCT, NULL)));
+    for (int e = -1; e < 6; e += 5) EXPECT_REFUSED(V(RblEncodeNormal((Vector3){ 0, 0, 1 }, e, out)));
+    for (int c = 0; c < 3; c++) for (int vi = 0; vi < 5; vi++)
+    {
+        Vector3 n = { 0.0f, 0.0f, 1.0f };
+        ((float *)&n)[c] = badFloats[vi];
+        if (vi >= 3)
+        {
+            // A finite long vector is a direction: encoded (its unit vector), never NaN
+            unsigned char code[3];
+            warnings = 0; RblEncodeNormal(n, RBL_NORMAL_HEMIOCT, code);
+            Vector3 d = RblDecodeNormal(code, RBL_NORMAL_HEMIOCT);
+            ck(warnings <= 1 && isfinite(d.x) && isfinite(d.y) && isfinite(d.z), "long normal component %d: %d lines, decoded non-finite", c, warnings);
+            continue;
+        }
+        EXPECT_REFUSED(V(RblEncodeNormal(n, RBL_NORMAL_HEMIOCT, out)));
+    }
+    EXPECT_REFUSED(V(RblEncodeNormal((Vector3){ 0, 0, 0 }, RBL_NORMAL_HEMIOCT, out)));
+    ck(out[0] == 7 && out[1] == 7 && out[2] == 7, "refused encodes wrote out");
+    Vector3 d;
+    EXPECT_REFUSED((d = RblDecodeNormal(NULL, RBL_NORMAL_HEMIOCT), false));
+    ck(d.z == 1.0f, "NULL decode is not +Z");
+    EXPECT_REFUSED((d = RblDecodeNormal(out, 9), false));
+    EXPECT_REFUSED((d = RblDecodeNormal(out, -3), false));
+    unsigned char zero[3] = { 128, 128, 0 };
+    for (int e = 1; e < 4; e++) { warnings = 0; d = RblDecodeNormal(zero, e); ck(isfinite(d.x) && isfinite(d.y) && isfinite(d.z) && warnings == 0, "decode %d of a zero texel", e); }
+}
+
+static void c_measure_normals(void)
+{
+    Vector3 n[2] = { { 0, 0, 1 }, { NAN, 0, 1 } };
+    RblNormalErrorStats s;
+    EXPECT_REFUSED((s = RblMeasureNormalEncoding(RBL_NORMAL_HEMIOCT, NULL, 4), s.count > 0));
+    EXPECT_REFUSED((s = RblMeasureNormalEncoding(RBL_NORMAL_HEMIOCT, n, -1), s.count > 0));
+    EXPECT_REFUSED((s = RblMeasureNormalEncoding(11, n, 1), s.count > 0));
+    warnings = 0;
+    s = RblMeasureNormalEncoding(RBL_NORMAL_HEMIOCT, n, 2);
+    ck(isfinite(s.mean) && isfinite(s.max) && isfinite(s.p99) && s.count == 1 && warnings == 1, "a NaN normal: count %d, %d lines, mean %g", s.count, warnings, s.mean);
+}
+
+static void c_gen_maps(void)
+{
+    Image ok = greyImage(8, 8), img;
+    Image bad[5] = { ok, ok, ok, ok, ok };
+    bad[0].data = NULL; bad[1].width = -8; bad[2].format = 12345; bad[3].height = 2147483647; bad[4].width = 0;
+    for (int i = 0; i < 5; i++)
+    {
+        EXPECT_REFUSED((img = RblGenNormalMapFromHeight(bad[i], 1.0f, false), img.data != NULL));
+        EXPECT_REFUSED((img = RblGenHeightFromLuminance(bad[i]), img.data != NULL));
+        EXPECT_REFUSED((img = RblGenOcclusionFromHeight(bad[i], 2, 1.0f), img.data != NULL));
+    }
+    for (int vi = 0; vi < 3; vi++)
+    {
+        EXPECT_REFUSED((img = RblGenNormalMapFromHeight(ok, badFloats[vi], true), img.data != NULL));
+        EXPECT_REFUSED((img = RblGenOcclusionFromHeight(ok, 2, badFloats[vi]), img.data != NULL));
+    }
+    // Huge finite strength: a valid (steep) map, no NaN
+    img = RblGenNormalMapFromHeight(ok, 3.0e38f, false);
+    ck(img.data != NULL, "huge strength refused");
+    UnloadImage(img);
+    int radii[3] = { -1, RBL_MAX_OCCLUSION_RADIUS + 1, 2147483647 };
+    for (int i = 0; i < 3; i++) EXPECT_REFUSED((img = RblGenOcclusionFromHeight(ok, radii[i], 1.0f), img.data != NULL));
+    EXPECT_REFUSED((img = RblGenOcclusionFromHeight(ok, 2, -1.0f), img.data != NULL));
+    UnloadImage(ok);
+}
+
+static void c_load_packed_textures(void)
+{
+    RblMaterialSource src; memset(&src, 0, sizeof(src));
+    src.albedo = greyImage(8, 8);
+    RblPackedMaterial p;
+    RblPackMaterial(&src, &p);
+    Material m = LoadMaterialDefault(), sentinel = m;
+    Material nomaps = m; nomaps.maps = NULL;
+    EXPECT_REFUSED(RblLoadPackedTextures(NULL, &m));
+    EXPECT_REFUSED(RblLoadPackedTextures(&p, NULL));
+    EXPECT_REFUSED(RblLoadPackedTextures(&p, &nomaps));
+    RblPackedMaterial bad = p; bad.albedo.width = -3;
+    EXPECT_REFUSED(RblLoadPackedTextures(&bad, &m));
+    bad = p; bad.albedo.format = 4242;
+    EXPECT_REFUSED(RblLoadPackedTextures(&bad, &m));
+    bad = p; bad.layout.normalEncoding = 12;
+    EXPECT_REFUSED(RblLoadPackedTextures(&bad, &m));
+    ck(memcmp(&m, &sentinel, sizeof(m)) == 0 && m.maps[MATERIAL_MAP_ALBEDO].texture.id == sentinel.maps[MATERIAL_MAP_ALBEDO].texture.id, "refused loads changed the material");
+    RblUnloadPackedMaterial(&p);
+    UnloadImage(src.albedo);
+}
+
+// ---- cases: lit programs and the scene ------------------------------------------------------------
+static void c_load_lit_shader(void)
+{
+    Shader s;
+    const size_t ints[] = { offsetof(RblLitShaderDesc, maxLights), offsetof(RblLitShaderDesc, lightFeatures), offsetof(RblLitShaderDesc, material.normalEncoding),
+                            offsetof(RblLitShaderDesc, material.emissive), offsetof(RblLitShaderDesc, brdf), offsetof(RblLitShaderDesc, fog),
+                            offsetof(RblLitShaderDesc, tonemap), offsetof(RblLitShaderDesc, shadowMaps), offsetof(RblLitShaderDesc, shadowFilter),
+                            offsetof(RblLitShaderDesc, debugOutput) };
+    const int values[3] = { -1, 1000, -2147483647 - 1 };
+    for (size_t i = 0; i < sizeof(ints)/sizeof(ints[0]); i++) for (int v = 0; v < 3; v++)
+    {
+        RblLitShaderDesc d = descOf(0, false, false);
+        memcpy((char *)&d + ints[i], &values[v], sizeof(int));
+        EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
+        if (s.id != 0) printf("      (desc field at offset %d = %d accepted)\n", (int)ints[i], values[v]);
+    }
+    for (int vi = 0; vi < 5; vi++)
+    {
+        RblLitShaderDesc d = descOf(0, false, false); d.gamma = badFloats[vi];
+        EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
+    }
+    RblLitShaderDesc d = descOf(0, false, false); d.gamma = -2.0f;
+    EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
+    d = descOf(0, true, true);      // instanced geometry-pass variant: not a thing
+    s = RblLoadLitShader(d);
+    ck((s.id == 0) || RblIsLitShaderValid(s), "instanced+deferred gave an invalid non-zero shader");
+    RblUnloadLitShader(&s);
+}
+
+static void c_lit_shader_queries(void)
+{
+    Shader zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblIsLitShaderValid(zero), false);
+    Shader def = LoadShader(NULL, NULL);     // raylib's default
+    EXPECT_QUIET(RblIsLitShaderValid(def), false);
+    Shader s = RblLoadLitShader(descOf(RBL_BRDF_GGX, false, false)), stale = s;
+    EXPECT_QUIET(RblIsLitShaderValid(s), true);
+    RblUnloadLitShader(&s);
+    EXPECT_QUIET(RblIsLitShaderValid(stale), false);
+}
+
+static void c_unload_lit_shader(void)
+{
+    EXPECT_REFUSED(V(RblUnloadLitShader(NULL)));
+    Shader zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(V(RblUnloadLitShader(&zero)));
+    Shader def = LoadShader(NULL, NULL);
+    EXPECT_REFUSED(V(RblUnloadLitShader(&def)));
+    Shader s = RblLoadLitShader(descOf(RBL_BRDF_GGX, false, false)), stale = s;
+    RblUnloadLitShader(&s);
+    ck(s.id == 0 && s.locs == NULL, "unload did not zero the shader");
+    EXPECT_REFUSED(V(RblUnloadLitShader(&s)));
+    EXPECT_REFUSED(V(RblUnloadLitShader(&stale)));
+}
+
+static void c_light_features(void)
+{
+    RblLight l = pointLight();
+    int f;
+    EXPECT_REFUSED((f = RblLightFeatures(NULL, 2), f != 0));
+    EXPECT_REFUSED((f = RblLightFeatures(&l, -1), f != 0));
+    l.type = 9;
+    EXPECT_REFUSED((f = RblLightFeatures(&l, 1), f != 0));
+    l.type = 0; l.falloff = 5;
+    EXPECT_REFUSED((f = RblLightFeatures(&l, 1), f != 0));
+    EXPECT_QUIET(RblLightFeatures(NULL, 0) == 0, true);
+}
+
+static void c_set_scene(void)
+{
+    RblLight good = pointLight();
+    RblScene scene; memset(&scene, 0, sizeof(scene));
+    scene.lights = &good; scene.lightCount = 1;
+    EXPECT_REFUSED(RblSetScene(NULL));
+    RblScene x = scene; x.lightCount = -1; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.lightCount = RBL_MAX_SCENE_LIGHTS + 1; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.lightCount = 2147483647; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.lights = NULL; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.shadowMapCount = -1; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.shadowMapCount = 2; EXPECT_REFUSED(RblSetScene(&x));      // NULL maps
+    RblShadowMap maps[RBL_MAX_SHADOWS + 1]; memset(maps, 0, sizeof(maps));
+    x = scene; x.shadowMaps = maps; x.shadowMapCount = 1; EXPECT_REFUSED(RblSetScene(&x));   // never-loaded map
+    x = scene; x.shadowMaps = maps; x.shadowMapCount = RBL_MAX_SHADOWS + 1; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.fog.mode = 9; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.fog.mode = RBL_FOG_LINEAR; x.fog.start = 5; x.fog.end = 5; EXPECT_REFUSED(RblSetScene(&x));
+    x = scene; x.exposure = -1.0f; EXPECT_REFUSED(RblSetScene(&x));
+    for (int fi = 0; fi < COUNT_OF(sceneFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        x = scene; x.fog.mode = RBL_FOG_EXP2; x.fog.density = 0.1f; x.fog.end = 10.0f;
+        SET_FIELD(x, sceneFloats[fi], badFloats[vi]);
+        warnings = 0;
+        bool ok = RblSetScene(&x);
+        if (ok) ck(warnings == 0 && allFinite(rbl__state.scene.fog, 4) && allFinite(rbl__state.scene.up, 3) && isfinite(rbl__state.scene.exposure) && isfinite(rbl__state.scene.fogStart),
+                   "scene %s = %g accepted with non-finite packed values", sceneFloats[fi].name, badFloats[vi]);
+        else ck(warnings == 1, "scene %s = %g refused with %d lines", sceneFloats[fi].name, badFloats[vi], warnings);
+    }
+    // Every light type x every float field
+    for (int type = 0; type < 3; type++) for (int fi = 0; fi < COUNT_OF(lightFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblLight l = pointLight(); l.type = type; l.direction = (Vector3){ 0, -1, 0 }; l.range = 10.0f;
+        l.falloff = (fi >= 10)? RBL_FALLOFF_CLASSIC : RBL_FALLOFF_WINDOWED;
+        SET_FIELD(l, lightFloats[fi], badFloats[vi]);
+        x = scene; x.lights = &l;
+        warnings = 0;
+        bool ok = RblSetScene(&x);
+        if (ok) ck(warnings == 0 && allFinite(rbl__state.scene.lights, (size_t)RBL__LIGHT_FLOATS) &&
+                   (rbl__state.scene.lights[0]*rbl__state.scene.lights[0] + rbl__state.scene.lights[1]*rbl__state.scene.lights[1] + rbl__state.scene.lights[2]*rbl__state.scene.lights[2] > 0.0f || type == RBL_LIGHT_POINT),
+                   "light type %d %s = %g accepted with non-finite or zero packed values", type, lightFloats[fi].name, badFloats[vi]);
+        else ck(warnings == 1, "light type %d %s = %g refused with %d lines", type, lightFloats[fi].name, badFloats[vi], warnings);
+    }
+    RblLight l = pointLight(); l.type = 5; x = scene; x.lights = &l; EXPECT_REFUSED(RblSetScene(&x));
+    l = pointLight(); l.falloff = 5; EXPECT_REFUSED(RblSetScene(&x));
+    l = pointLight(); l.intensity = RBL_MAX_LIGHT_INTENSITY*2.0f; EXPECT_REFUSED(RblSetScene(&x));
+}
+
+static void c_draw_model_and_mesh(void)
+{
+    Model model = LoadModelFromMesh(GenMeshCube(1, 1, 1));
+    model.materials[0].shader = litShader;
+    EXPECT_QUIET(V(RblDrawModel(model, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)), false);
+    for (int vi = 0; vi < 5; vi++)
+    {
+        EXPECT_REFUSED(V(RblDrawModel(model, (Vector3){ badFloats[vi], 0, 0 }, 1.0f, WHITE)));
+        EXPECT_REFUSED(V(RblDrawModel(model, (Vector3){ 0, 0, 0 }, badFloats[vi], WHITE)));
+    }
+    Model m = model; m.meshes = NULL; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    m = model; m.materials = NULL; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    m = model; m.meshCount = -1; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    int badIndex[2] = { 5, -1 };
+    int *saved = model.meshMaterial;
+    for (int i = 0; i < 2; i++) { m = model; m.meshMaterial = &badIndex[i]; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE))); }
+    Material z; memset(&z, 0, sizeof(z));
+    Material zs = model.materials[0]; zs.shader.id = 0;
+    m = model; m.materials = &zs; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    EXPECT_REFUSED(V(RblDrawMesh(model.meshes[0], z, MatrixIdentity())));
+    Matrix nan = MatrixIdentity(); nan.m12 = NAN;
+    EXPECT_REFUSED(V(RblDrawMesh(model.meshes[0], material, nan)));
+    Mesh noVao = model.meshes[0]; noVao.vaoId = 0; noVao.vboId = NULL;
+    EXPECT_REFUSED(V(RblDrawMesh(noVao, material, MatrixIdentity())));
+    Material def = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
+    EXPECT_REFUSED(V(RblDrawMesh(model.meshes[0], def, MatrixIdentity())));   // deferred variant outside a pass
+    model.meshMaterial = saved;
+    model.materials[0].shader = (Shader){ 0 };
+    UnloadModel(model);
+}
+
+// ---- cases: G-buffer ------------------------------------------------------------------------------
+static RblGBufferDesc gdesc(int brdf) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = brdf; return d; }
+
+static void c_gbuffer_load(void)
+{
+    RblGBuffer g;
+    const size_t ints[] = { offsetof(RblGBufferDesc, width), offsetof(RblGBufferDesc, height), offsetof(RblGBufferDesc, brdf),
+                            offsetof(RblGBufferDesc, lightFeatures), offsetof(RblGBufferDesc, fog), offsetof(RblGBufferDesc, tonemap),
+                            offsetof(RblGBufferDesc, shadowMaps), offsetof(RblGBufferDesc, shadowFilter) };
+    const int values[4] = { -1, 1000, 1 << 30, -2147483647 - 1 };
+    for (size_t i = 0; i < sizeof(ints)/sizeof(ints[0]); i++) for (int v = 0; v < 4; v++)
+    {
+        RblGBufferDesc d = gdesc(0);
+        if ((ints[i] <= offsetof(RblGBufferDesc, height)) && (v == 1)) continue;     // 1000 pixels is a valid size
+        memcpy((char *)&d + ints[i], &values[v], sizeof(int));
+        EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(&g)));
+        ck(g.state == NULL, "desc field at offset %d = %d: load left a state", (int)ints[i], values[v]);
+    }
+    for (int vi = 0; vi < 5; vi++) { RblGBufferDesc d = gdesc(0); d.gamma = badFloats[vi]; EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(&g))); }
+}
+
+static void c_gbuffer_lifecycle(void)
+{
+    RblGBuffer zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblIsGBufferValid(NULL), false);
+    EXPECT_QUIET(RblIsGBufferValid(&zero), false);
+    RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_GGX)), stale = g;
+    EXPECT_QUIET(RblIsGBufferValid(&g), true);
+    int bpp;
+    EXPECT_REFUSED((bpp = RblGBufferBytesPerPixel(NULL), bpp != 0));
+    EXPECT_REFUSED((bpp = RblGBufferBytesPerPixel(&zero), bpp != 0));
+    EXPECT_REFUSED(RblResizeGBuffer(NULL, 16, 16));
+    EXPECT_REFUSED(RblResizeGBuffer(&zero, 16, 16));
+    int sizes[5][2] = { { 0, 16 }, { 16, -1 }, { 1 << 30, 16 }, { 16, RBL_MAX_TARGET_SIZE + 1 }, { -2147483647 - 1, 4 } };
+    for (int i = 0; i < 5; i++) EXPECT_REFUSED(RblResizeGBuffer(&g, sizes[i][0], sizes[i][1]));
+    ck(g.width == 32 && g.height == 32 && RblIsGBufferValid(&g), "refused resize changed the G-buffer");
+    EXPECT_REFUSED(V(RblUnloadGBuffer(NULL)));
+    RblUnloadGBuffer(&g);
+    ck(g.state == NULL && g.albedo.id == 0, "unload did not zero");
+    EXPECT_REFUSED(V(RblUnloadGBuffer(&g)));
+    EXPECT_QUIET(RblIsGBufferValid(&stale), false);
+    EXPECT_REFUSED((bpp = RblGBufferBytesPerPixel(&stale), bpp != 0));
+    EXPECT_REFUSED(RblResizeGBuffer(&stale, 16, 16));
+    EXPECT_REFUSED(RblBeginGBuffer(&stale, camera()));
+    EXPECT_REFUSED(RblDrawDeferredLights(&stale));
+    EXPECT_REFUSED(V(RblResolveGBuffer(&stale)));
+    EXPECT_REFUSED(V(RblSetGBufferOutput(&stale, 1, 1.0f)));
+    EXPECT_REFUSED(V(RblUnloadGBuffer(&stale)));
+}
+
+static void c_gbuffer_passes(void)
+{
+    RblGBuffer zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(RblBeginGBuffer(NULL, camera()));
+    EXPECT_REFUSED(RblBeginGBuffer(&zero, camera()));
+    EXPECT_REFUSED(V(RblEndGBuffer(NULL)));
+    EXPECT_REFUSED(V(RblEndGBuffer(&zero)));
+    RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_GGX)), h = RblLoadGBuffer(gdesc(RBL_BRDF_GGX));
+    EXPECT_REFUSED(V(RblEndGBuffer(&g)));                      // never begun: projection, modelview, depth test kept
+    EVERY_BAD_CAMERA(RblBeginGBuffer(&g, cam));
+    ck(RblBeginGBuffer(&g, camera()), "good pass refused");
+    EXPECT_REFUSED(RblBeginGBuffer(&g, camera()));             // nested, same
+    EXPECT_REFUSED(RblBeginGBuffer(&h, camera()));             // nested, other
+    EXPECT_REFUSED(RblDrawDeferredLights(&g));                  // lights inside the geometry pass
+    EXPECT_REFUSED(V(RblResolveGBuffer(&g)));
+    EXPECT_REFUSED(RblResizeGBuffer(&g, 16, 16));
+    EXPECT_REFUSED(V(RblEndGBuffer(&h)));                      // ending the other one
+    // Mismatched variants inside the pass: forward, other BRDF, instanced forward
+    RblBillboard bb = billboard();
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), material, bb)));
+    Material lam = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), lam, bb)));
+    RblShadowMap map = RblLoadShadowMap((RblShadowDesc){ 0 });
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0, -1, 0 };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 5.0f));   // a shadow pass inside a G-buffer pass
+    RblEndGBuffer(&g);
+    // Good frame, then the light and resolve calls on bad arguments
+    ck(RblDrawDeferredLights(&g), "lights refused");
+    EXPECT_REFUSED(RblDrawDeferredLights(NULL));
+    EXPECT_REFUSED(V(RblResolveGBuffer(NULL)));
+    EXPECT_REFUSED(V(RblSetGBufferOutput(NULL, 1, 1.0f)));
+    EXPECT_REFUSED(V(RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_COUNT, 1.0f)));
+    EXPECT_REFUSED(V(RblSetGBufferOutput(&g, -1, 1.0f)));
+    for (int vi = 0; vi < 5; vi++) EXPECT_REFUSED(V(RblSetGBufferOutput(&g, 1, (vi < 3)? badFloats[vi] : -1.0f)));
+    RblUnloadShadowMap(&map);
+    RblUnloadGBuffer(&g);
+    RblUnloadGBuffer(&h);
+}
+
+// Extreme but accepted lights leave the accumulation finite
+static void c_gbuffer_extreme_lights_stay_finite(void)
+{
+    RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_GGX));
+    Material ggx = litMaterial(descOf(RBL_BRDF_GGX, false, true));
+    ggx.maps[MATERIAL_MAP_ROUGHNESS].value = 0.0f;
+    RblLight l[3] = { pointLight(), pointLight(), pointLight() };
+    l[0].intensity = l[1].intensity = l[2].intensity = RBL_MAX_LIGHT_INTENSITY;
+    l[1].position = (Vector3){ 0.0f, 0.0f, 0.001f };
+    l[2].type = RBL_LIGHT_DIRECTIONAL; l[2].direction = (Vector3){ 1e30f, -1e30f, -3e38f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = l; scene.lightCount = 3; scene.exposure = 3e38f;
+    ck(RblSetScene(&scene), "extreme but valid scene refused: %s", lastWarning);
+    RblBeginGBuffer(&g, camera());
+    RblBillboard bb = billboard(); bb.size = (Vector2){ 4.0f, 4.0f };
+    RblDrawBillboard(camera(), ggx, bb);
+    RblEndGBuffer(&g);
+    RblDrawDeferredLights(&g);
+    // Read the RGBA16F accumulation as floats
+    typedef void (*GlReadPixels)(int, int, int, int, unsigned int, unsigned int, void *);
+    typedef void (*GlBindFramebuffer)(unsigned int, unsigned int);
+    GlReadPixels readPixels; GL_PROC(readPixels, "glReadPixels");
+    GlBindFramebuffer bindFb; GL_PROC(bindFb, "glBindFramebuffer");
+    int prev = 0; glGetI(0x8CAA, &prev);
+    bindFb(0x8CA8, g.state->lightId);
+    static float px[32*32*4];
+    readPixels(0, 0, 32, 32, 0x1908, 0x1406, px);
+    bindFb(0x8CA8, (unsigned int)prev);
+    int bad = 0;
+    for (int i = 0; i < 32*32*4; i++) if (!isfinite(px[i])) bad++;
+    ck(bad == 0, "%d non-finite accumulation values", bad);
+    RblUnloadGBuffer(&g);
+}
+
+// ---- cases: shadows -------------------------------------------------------------------------------
+static void c_shadow_load(void)
+{
+    RblShadowMap m;
+    int sizes[5] = { -1, 8, RBL_MAX_TARGET_SIZE + 1, 1 << 30, -2147483647 - 1 };
+    for (int i = 0; i < 5; i++) { RblShadowDesc d; memset(&d, 0, sizeof(d)); d.size = sizes[i]; EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m))); }
+    for (int fi = 0; fi < COUNT_OF(shadowDescFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblShadowDesc d; memset(&d, 0, sizeof(d));
+        SET_FIELD(d, shadowDescFloats[fi], badFloats[vi]);
+        warnings = 0;
+        m = RblLoadShadowMap(d);
+        if (RblIsShadowMapValid(m)) ck(warnings == 0 && isfinite(m.desc.constantBias) && isfinite(m.desc.slopeBias) && isfinite(m.desc.normalBias) && isfinite(m.desc.minCastAngle), "shadow desc %s = %g accepted non-finite", shadowDescFloats[fi].name, badFloats[vi]);
+        else ck(warnings == 1, "shadow desc %s = %g refused with %d lines", shadowDescFloats[fi].name, badFloats[vi], warnings);
+        RblUnloadShadowMap(&m);
+    }
+    RblShadowMap zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblIsShadowMapValid(zero), false);
+    EXPECT_REFUSED(V(RblUnloadShadowMap(NULL)));
+    RblShadowDesc d; memset(&d, 0, sizeof(d)); d.size = 64;
+    m = RblLoadShadowMap(d);
+    RblShadowMap stale = m;
+    EXPECT_QUIET(RblIsShadowMapValid(m), true);
+    RblUnloadShadowMap(&m);
+    EXPECT_REFUSED(V(RblUnloadShadowMap(&m)));
+    EXPECT_QUIET(RblIsShadowMapValid(stale), false);
+    EXPECT_REFUSED(V(RblUnloadShadowMap(&stale)));
+}
+
+static void c_shadow_passes(void)
+{
+    RblShadowDesc d; memset(&d, 0, sizeof(d)); d.size = 64;
+    RblShadowMap map = RblLoadShadowMap(d), other = RblLoadShadowMap(d), zero;
+    memset(&zero, 0, sizeof(zero));
+    RblLight l[2] = { pointLight(), pointLight() };
+    l[0].type = RBL_LIGHT_DIRECTIONAL; l[0].direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = l; scene.lightCount = 2;
+    Vector3 o = { 0, 0, 0 };
+    EXPECT_REFUSED(RblBeginShadowMap(NULL, &scene, 0, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMap(&zero, &scene, 0, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMap(&map, NULL, 0, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, 2, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, -1, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, 1, o, 5.0f));          // a point light casts no shadow
+    for (int c = 0; c < 4; c++) for (int vi = 0; vi < 5; vi++)
+    {
+        Vector3 fc = o; float r = 5.0f;
+        if (c < 3) ((float *)&fc)[c] = badFloats[vi]; else r = badFloats[vi];
+        EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, 0, fc, r));
+    }
+    EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, 0, o, -1.0f));
+    EXPECT_REFUSED(V(RblEndShadowMap(NULL)));
+    EXPECT_REFUSED(V(RblEndShadowMap(&zero)));
+    EXPECT_REFUSED(V(RblEndShadowMap(&map)));                              // never begun
+    ck(RblBeginShadowMap(&map, &scene, 0, o, 5.0f), "good pass refused: %s", lastWarning);
+    EXPECT_REFUSED(RblBeginShadowMap(&map, &scene, 0, o, 5.0f));          // nested, same
+    EXPECT_REFUSED(RblBeginShadowMap(&other, &scene, 0, o, 5.0f));        // nested, other
+    RblGBuffer g = RblLoadGBuffer(gdesc(0));
+    EXPECT_REFUSED(RblBeginGBuffer(&g, camera()));                         // a G-buffer pass inside a shadow pass
+    EXPECT_REFUSED(RblDrawDeferredLights(&g));
+    EXPECT_REFUSED(V(RblEndShadowMap(&other)));
+    RblEndShadowMap(&map);
+    RblShadowMap stale = map;
+    RblUnloadShadowMap(&map);
+    EXPECT_REFUSED(RblBeginShadowMap(&stale, &scene, 0, o, 5.0f));
+    EXPECT_REFUSED(V(RblEndShadowMap(&stale)));
+    RblUnloadGBuffer(&g);
+    RblUnloadShadowMap(&other);
+}
+
+static void c_shadow_focus(void)
+{
+    Vector3 c = { 7, 7, 7 }; float r = 7.0f;
+    EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 1.0f, 0.1f, 10.0f, NULL, &r));
+    EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 1.0f, 0.1f, 10.0f, &c, NULL));
+    EVERY_BAD_CAMERA(RblShadowFocusFromCamera(cam, 1.0f, 0.1f, 10.0f, &c, &r));
+    for (int vi = 0; vi < 5; vi++)
+    {
+        EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), badFloats[vi], 0.1f, 10.0f, &c, &r));
+        EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 1.0f, badFloats[vi], 10.0f, &c, &r));
+        if (vi != 3) EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 1.0f, 0.1f, badFloats[vi], &c, &r));
+    }
+    EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 1.0f, 10.0f, 10.0f, &c, &r));
+    EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 0.0f, 0.1f, 10.0f, &c, &r));
+    EXPECT_REFUSED(RblShadowFocusFromCamera(camera(), 1.0f, 0.1f, 3.0e38f, &c, &r));
+    ck(c.x == 7.0f && c.y == 7.0f && c.z == 7.0f && r == 7.0f, "refused calls wrote the outputs");
+}
+
+// ---- the case table -----------------------------------------------------------------------------
+typedef struct Case { const char *functions; const char *name; void (*run)(void); } Case;
+static const Case cases[] = {
+    { "RblGetCameraFrame", "NaN/Inf/huge in every camera field", c_frame_bad_camera },
+    { "RblGetCameraFrame", "degenerate cameras: no log, orthonormal", c_frame_degenerate_cameras_are_fine },
+    { "RblBillboardVertices", "NULL pointers, sizes, facing", c_vertices_null_and_sizes },
+    { "RblBillboardVertices", "every float field x every facing", c_vertices_every_float_field },
+    { "RblBillboardVertices", "NaN/Inf camera frame", c_vertices_bad_frame },
+    { "RblLoadBatch", "negative and huge capacities", c_batch_load_counts },
+    { "RblIsBatchValid", "zero, loaded, stale", c_batch_valid_queries },
+    { "RblUnloadBatch", "NULL, zero, double, stale", c_batch_unload },
+    { "RblBeginBatch", "NULL, zero, stale, pending, bad camera", c_batch_begin },
+    { "RblBatchAdd", "NULL, not begun, bad floats, bad materials", c_batch_add },
+    { "RblBatchAdd RblLoadBatch", "the billboard limit", c_batch_limit },
+    { "RblEndBatch", "NULL, zero, unbegun, twice, stale", c_batch_end },
+    { "RblDrawBillboard", "bad camera, materials, variants", c_draw_billboard },
+    { "RblClose", "twice", c_close_twice },
+    { "RblLoadInstanceBuffer RblIsInstanceBufferValid RblUnloadInstanceBuffer", "counts, zero, stale, double", c_instances_load },
+    { "RblDrawInstanced", "NULL, stale, counts, camera, desc, materials, bad instances", c_instances_draw },
+    { "RblPackMaterial", "NULL, sizes, formats, encodings, frames", c_pack_material },
+    { "RblUnloadPackedMaterial", "NULL, double", c_unload_packed },
+    { "RblEncodeNormal RblDecodeNormal", "NULL, encodings, NaN/Inf/huge, zero", c_encode_decode_normal },
+    { "RblMeasureNormalEncoding", "NULL, counts, encoding, NaN normal", c_measure_normals },
+    { "RblGenNormalMapFromHeight RblGenHeightFromLuminance RblGenOcclusionFromHeight", "images, strengths, radii", c_gen_maps },
+    { "RblLoadPackedTextures", "NULL, bad images, no maps", c_load_packed_textures },
+    { "RblLoadLitShader", "every desc field out of range", c_load_lit_shader },
+    { "RblIsLitShaderValid", "zero, raylib default, stale", c_lit_shader_queries },
+    { "RblUnloadLitShader", "NULL, zero, default, double, stale", c_unload_lit_shader },
+    { "RblLightFeatures", "NULL, counts, types", c_light_features },
+    { "RblSetScene", "counts, maps, fog, every float of scene and lights", c_set_scene },
+    { "RblDrawModel RblDrawMesh", "bad models, transforms, materials, variants", c_draw_model_and_mesh },
+    { "RblLoadGBuffer", "every desc field out of range", c_gbuffer_load },
+    { "RblIsGBufferValid RblGBufferBytesPerPixel RblResizeGBuffer RblUnloadGBuffer", "NULL, zero, sizes, stale, double", c_gbuffer_lifecycle },
+    { "RblBeginGBuffer RblEndGBuffer RblDrawDeferredLights RblSetGBufferOutput RblResolveGBuffer", "imbalance, nesting, mismatched variants, bad arguments", c_gbuffer_passes },
+    { "RblDrawDeferredLights", "extreme accepted lights keep the accumulation finite", c_gbuffer_extreme_lights_stay_finite },
+    { "RblLoadShadowMap RblIsShadowMapValid RblUnloadShadowMap", "sizes, desc floats, zero, stale, double", c_shadow_load },
+    { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes },
+    { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus },
+};
+
+// One case in a child process: its own context and fixture, then the matrix stack depth check
+static int runCase(const Case *c)
+{
+    alarm(60);      // a hang fails the case
+    if (rtInitContext(256, 256) == NULL) return 3;
+    GL_PROC(glGetI, "glGetIntegerv");
+    GL_PROC(glIsOn, "glIsEnabled");
+    GL_PROC(glGetB, "glGetBooleanv");
+    GL_PROC(glActive, "glActiveTexture");
+    SetTraceLogLevel(LOG_WARNING);
+    SetTraceLogCallback(contractLog);
+    fixtureUp();
+    c->run();
+    rlDrawRenderBatchActive();
+    // rlgl's matrix stack holds 32: a pass left open shows as an overflow before 32 pushes
+    raylibErrors = 0;
+    for (int i = 0; i < 31; i++) rlPushMatrix();
+    ck(raylibErrors == 0, "rlgl matrix stack left deeper than it was (overflow after pushes)");
+    return (caseFailures == 0)? 0 : 1;
+}
+
+// Public function names of the header (lines "RBLAPI <type> <name>(")
+static int headerFunctions(const char *path, char names[][64], int max)
+{
+    FILE *f = fopen(path, "r");
+    if (f == NULL) return -1;
+    char line[1024];
+    int n = 0;
+    while (fgets(line, sizeof(line), f) != NULL)
+    {
+        if (strncmp(line, "RBLAPI ", 7) != 0) continue;
+        char *paren = strchr(line, '(');
+        if (paren == NULL) continue;
+        char *end = paren;
+        while ((end > line) && (end[-1] == ' ')) end--;
+        char *start = end;
+        while ((start > line) && (start[-1] != ' ') && (start[-1] != '*')) start--;
+        if ((n < max) && (end - start < 63)) { memcpy(names[n], start, (size_t)(end - start)); names[n][end - start] = 0; n++; }
+    }
+    fclose(f);
+    return n;
+}
+
+static bool caseCovers(const Case *c, const char *fn)
+{
+    const char *p = c->functions;
+    size_t len = strlen(fn);
+    while ((p = strstr(p, fn)) != NULL)
+    {
+        if (((p == c->functions) || (p[-1] == ' ')) && ((p[len] == 0) || (p[len] == ' '))) return true;
+        p += len;
+    }
+    return false;
+}
+
+int main(int argc, char **argv)
+{
+    const char *header = (argc > 1)? argv[1] : "rbillboard_lit.h";
+    const char *filter = (argc > 2)? argv[2] : NULL;
+    static char names[128][64];
+    int fnCount = headerFunctions(header, names, 128);
+    if (fnCount <= 0) { printf("contracts: cannot read public functions from %s\ncontracts: 0 passed, 1 failed\n", header); return 1; }
+    const int caseCount = (int)(sizeof(cases)/sizeof(cases[0]));
+    int passed = 0, failed = 0;
+    int fnCases[128] = { 0 }, fnPassed[128] = { 0 };
+    for (int i = 0; i < caseCount; i++)
+    {
+        if ((filter != NULL) && (strstr(cases[i].functions, filter) == NULL) && (strstr(cases[i].name, filter) == NULL)) continue;
+        fflush(stdout);
+        pid_t pid = fork();
+        if (pid == 0) _exit(runCase(&cases[i]));
+        int status = 0;
+        waitpid(pid, &status, 0);
+        bool ok = WIFEXITED(status) && (WEXITSTATUS(status) == 0);
+        const char *why = ok? "" : WIFSIGNALED(status)? ((WTERMSIG(status) == SIGALRM)? " (hang: killed after 60 s)" : " (crashed)") :
+                          (WEXITSTATUS(status) == 3)? " (no context)" : (WEXITSTATUS(status) == 66)? " (sanitizer report)" : (WEXITSTATUS(status) == 1)? "" : " (abort)";
+        printf("  %s  %s: %s%s\n", ok? "ok  " : "FAIL", cases[i].functions, cases[i].name, why);
+        if (ok) passed++; else failed++;
+        for (int f = 0; f < fnCount; f++) if (caseCovers(&cases[i], names[f])) { fnCases[f]++; if (ok) fnPassed[f]++; }
+    }
+    printf("\n  %-28s %5s %6s\n", "function", "cases", "passed");
+    for (int f = 0; f < fnCount; f++)
+    {
+        printf("  %-28s %5d %6d\n", names[f], fnCases[f], fnPassed[f]);
+        if ((filter == NULL) && (fnCases[f] == 0)) { printf("  FAIL  %s has no contract case\n", names[f]); failed++; }
+    }
+    printf("contracts: %d passed, %d failed\n", passed, failed);
+    return (failed == 0)? 0 : 1;
+}
