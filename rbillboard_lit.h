@@ -1029,6 +1029,7 @@ typedef struct rbl__State {
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
     unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
+    char problem[512];              // Why the last internal step failed (its public caller logs it once)
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
     int liveCount;
     int liveCapacity;
@@ -2609,6 +2610,7 @@ static void rbl__forgetProgram(rbl__Program *p);
 static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
     int quads = batch->capacity;
+    batch->eboId = 0;               // stays 0 if the index allocation fails (never the old, smaller buffer)
     batch->vaoId = rlLoadVertexArray();
     rlEnableVertexArray(batch->vaoId);
     batch->vboId = rlLoadVertexBuffer(NULL, quads*4*(int)sizeof(RblVertex), true);
@@ -2743,7 +2745,7 @@ static bool rbl__growBatch(rbl__BatchState *batch)
     if (batch->capacity >= RBL_MAX_BATCH_BILLBOARDS) return false;
     int newCapacity = (batch->capacity > RBL_MAX_BATCH_BILLBOARDS/2)? RBL_MAX_BATCH_BILLBOARDS : batch->capacity*2;
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
-    if (vertices == NULL) { TraceLog(LOG_WARNING, "RBL: batch: out of memory growing to %i billboards", newCapacity); return false; }
+    if (vertices == NULL) return false;     // the caller logs the skip
     TraceLog(LOG_INFO, "RBL: batch grown from %i to %i billboards (reserve more in RblLoadBatch)", batch->capacity, newCapacity);
     batch->vertices = vertices;
     batch->capacity = newCapacity;
@@ -4283,7 +4285,9 @@ static Shader rbl__loadShaderVariant(const char *const *const *vs, const char *c
     RBL_FREE(vsFull); RBL_FREE(fsFull);
     if ((shader.id == 0) || (shader.id == rlGetShaderIdDefault()))
     {
-        TraceLog(LOG_WARNING, "RBL: shader variant failed to compile/link (defines: %s)", defines);
+        // The caller logs it, under its own name
+        if ((vsFull == NULL) || (fsFull == NULL)) snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory joining the shader sources");
+        else snprintf(rbl__state.problem, sizeof(rbl__state.problem), "a shader variant failed to compile/link (defines: %.400s)", defines);
         if ((shader.id != 0) && (shader.locs != NULL) && (shader.locs != rlGetShaderLocsDefault())) MemFree(shader.locs);
         memset(&shader, 0, sizeof(shader));
     }
@@ -4417,7 +4421,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
 {
     int slot = -1;
     for (int i = 0; (i < RBL_SHADER_CACHE_SIZE) && (slot < 0); i++) if (rbl__state.programs[i].refs == 0) slot = i;
-    if (slot < 0) { TraceLog(LOG_WARNING, "RBL: program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (slot < 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
@@ -4538,7 +4542,7 @@ Shader RblLoadLitShader(RblLitShaderDesc desc)
     rbl__ProgramKey key;
     rbl__keyFromDesc(&normalised, RBL__KIND_LIT, 0, &key);
     rbl__Program *p = rbl__acquireProgram(&key);
-    if (p == NULL) { MemFree(locs); return none; }
+    if (p == NULL) { MemFree(locs); TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
     memcpy(locs, p->shader.locs, RL_MAX_SHADER_LOCATIONS*sizeof(int));
     rbl__state.handles[rbl__state.handleCount].locs = locs;
     rbl__state.handles[rbl__state.handleCount].id = p->shader.id;
@@ -5267,7 +5271,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     }
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: a lighting pass failed to compile: render forward instead");
+        TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: a lighting pass could not be loaded (%s): render forward instead", rbl__state.problem);
         RblUnloadGBuffer(&g);
         return g;
     }
@@ -5698,7 +5702,7 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     }
     if (!rbl__acquireCasters())
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable");
+        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable (%s)", rbl__state.problem);
         rbl__liveRemove(map.state);
         RBL_FREE(map.state);
         memset(&map, 0, sizeof(map));

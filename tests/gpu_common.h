@@ -17,7 +17,7 @@ static inline void countingLog(int level, const char *text, va_list args)
     if (strncmp(line, "RBL:", 4) == 0) { warnings++; memcpy(lastWarning, line, sizeof(line)); }
 }
 
-static Camera3D frontCamera(void)
+static inline Camera3D frontCamera(void)
 {
     Camera3D c;
     memset(&c, 0, sizeof(c));
@@ -29,7 +29,7 @@ static Camera3D frontCamera(void)
     return c;
 }
 
-static Texture2D solidTexture(Color c)
+static inline Texture2D solidTexture(Color c)
 {
     Image img = GenImageColor(4, 4, c);
     Texture2D t = LoadTextureFromImage(img);
@@ -39,7 +39,7 @@ static Texture2D solidTexture(Color c)
 
 // The frame's scene for every lit program: count lights and a flat ambient, everything else default
 // (no fog, exposure 1, no shadows). Returns RblSetScene's verdict.
-static bool renderSetLights(const RblLight *lights, int count, Color ambient)
+static inline bool renderSetLights(const RblLight *lights, int count, Color ambient)
 {
     RblScene scene;
     memset(&scene, 0, sizeof(scene));

@@ -5,6 +5,7 @@
 #   cpu:            geometry and shader-source tests (plain, then under ASan+UBSan)
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
+#   alloc:          RBL_MALLOC family failing at the Nth call, swept over N on every allocating path
 #   gpu:            render tests under EGL surfaceless, then under OSMesa
 set -u
 BUILD=${BUILD:-build}
@@ -56,6 +57,8 @@ out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=detect_leaks=1 "$BUILD/tests/test_api_sa
 if printf '%s\n' "$out" | grep -q "ERROR: \(Address\|Leak\)Sanitizer"; then echo "  FAIL  test_api_san: sanitizer report"; fail=$((fail + 1)); fi
 echo "== test_contracts (egl, ASan+UBSan, one process per case)"
 out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=exitcode=66:detect_leaks=0 "$BUILD/tests/test_contracts" rbillboard_lit.h 2>&1); printf '%s\n' "$out"; count "$out"
+echo "== test_alloc (egl, ASan+UBSan, the header's allocator failing at every call)"
+out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/test_alloc" 2>&1); printf '%s\n' "$out"; count "$out"
 for ctx in egl osmesa; do
   echo "== test_gpu ($ctx)"
   out=$(RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"
