@@ -17,6 +17,7 @@ in vec3 fragNormal;
 in vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
 flat in vec3 fragEye;           // camera position (from matView in the vertex stage)
+flat in vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)
 #endif
 
 uniform sampler2D texture0;     // albedo (sRGB)

@@ -19,6 +19,7 @@
 #include "test_material_render.c"
 #include "test_lighting.c"
 #include "test_deferred.c"
+#include "test_view.c"
 #include "test_shadows.c"
 
 int main(int argc, char **argv)
@@ -69,6 +70,9 @@ int main(int argc, char **argv)
         RT_TEST(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth),
         RT_TEST(test_deferred_debug_views_show_what_they_name),
         RT_TEST(test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_and_writes_nothing),
+        RT_TEST(test_view_orthographic_plane_on_every_path_matches_the_double_reference),
+        RT_TEST(test_view_orthographic_fog_runs_along_the_view_axis),
+        RT_TEST(test_view_orthographic_sphere_model_matches_the_double_reference),
         RT_TEST(test_shadows_opaque_card_darkens_its_analytic_footprint_within_a_texel),
         RT_TEST(test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_every_path),
         RT_TEST(test_shadows_raylib_model_casts_its_footprint),
