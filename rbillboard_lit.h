@@ -919,6 +919,8 @@ typedef struct rbl__BatchState {
     RblCameraFrame view;                   // Frame of the current camera
     rbl__FrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    bool orthographic;              // The camera's projection (which side of a quad it sees)
+    bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
 } rbl__BatchState;
 
@@ -1886,6 +1888,12 @@ static const char *const rbl__shader_material[] = {
     "    if (albedo.a < rblAlphaCutoff) discard;\n",
     "\n",
     "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
+    "    // Two-sided: a back face (a card seen from behind, an open mesh from inside) is shaded on the\n",
+    "    // side the viewer sees, as the card's mirror image through its plane: the normal flips, the\n",
+    "    // normal map's tangent components stay (a relief reads raised from both sides). The winding says\n",
+    "    // which side is seen for any projection, where dot(N, view) would also flip the interpolated\n",
+    "    // normals of front faces near a smooth silhouette.\n",
+    "    float side = gl_FrontFacing? 1.0 : -1.0;\n",
     "#ifdef RBL_MATERIAL_TEXTURE\n",
     "    vec4 material = texture(texture2, fragTexCoord);\n",
     "#endif\n",
@@ -1898,7 +1906,9 @@ static const char *const rbl__shader_material[] = {
     "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
     "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
     "    tangentNormal = rblDecodeNormal(material);\n",
-    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);\n",
+    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z), n*side);\n",
+    "#else\n",
+    "    n *= side;\n",
     "#endif\n",
     "    RblShadingPoint sp;\n",
     "    sp.position = fragPosition;\n",
@@ -2662,6 +2672,8 @@ void RblBeginBatch(RblBatch *pub, Camera3D camera)
     if (batch->begun && (batch->count > 0)) TraceLog(LOG_WARNING, "RBL: RblBeginBatch: %i billboards added since the last RblBeginBatch were never drawn (RblEndBatch)", batch->count);
     batch->view = RblGetCameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
+    batch->orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
+    batch->backFacing = false;
     batch->frame.facing = -1;      // the frame depends on the view
     batch->count = 0;
     batch->runCount = 0;
@@ -2717,6 +2729,10 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: batch: billboard skipped (NaN/Inf input, bad facing or texture size %ix%i); further skips this batch are not logged", texW, texH);
         return false;
     }
+    // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
+    // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
+    Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
+    if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
 
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     if ((run == NULL) || !rbl__sameMaterial(&run->material, &material))
@@ -2825,6 +2841,11 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (batch->vboId == 0) return;
 
     rlDrawRenderBatchActive();      // keep draw order with raylib's own pending geometry
+    // Billboards seen from behind are drawn (two-sided, shaded on the side seen): culling goes off for
+    // this draw and back on after (raylib's default; rlgl cannot report the caller's state). Shadow
+    // passes keep it off throughout.
+    bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
+    if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
     rlUpdateVertexBuffer(batch->vboId, batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
@@ -2848,6 +2869,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     }
     rbl__unbindMaterial(bound);
     rlDisableVertexArray();
+    if (cullOff) rlEnableBackfaceCulling();
 }
 
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
@@ -2945,6 +2967,37 @@ static inline bool rbl__instanceOk(const RblInstance *in)
     return rbl__exponentsBelow(&in->position, 12, RBL__INSTANCE_LIMIT_EXPONENT);
 }
 
+// Whether an instanced draw shows the camera the back of a quad (the batch's test, with each mode's
+// plane normal): CAMERA_PLANE only with a caller up (N = right x up), FIXED cards, AXIS under an
+// orthographic camera (it turns toward the camera's position, which a parallel view does not look
+// from); CAMERA_POSITION, and AXIS in perspective, face the eye by construction
+static bool rbl__instancesShowBack(const RblInstancedDesc *desc, const RblCameraFrame *view, bool orthographic, const RblInstance *in, int n)
+{
+    Vector3 a = desc->axis;
+    bool noAxis = (a.x == 0.0f) && (a.y == 0.0f) && (a.z == 0.0f);
+    if (desc->facing == RBL_FACING_CAMERA_PLANE)
+    {
+        if ((desc->up.x == 0.0f) && (desc->up.y == 0.0f) && (desc->up.z == 0.0f)) return false;
+        a = rbl__cross(view->right, desc->up);
+    }
+    else if (desc->facing == RBL_FACING_FIXED) { if (noAxis) a = rbl__v3(0.0f, 0.0f, 1.0f); }
+    else if ((desc->facing == RBL_FACING_AXIS) && orthographic) { if (noAxis) a = rbl__v3(0.0f, 1.0f, 0.0f); }
+    else return false;
+    if (orthographic && (desc->facing != RBL_FACING_AXIS)) return rbl__dot(a, view->back) < 0.0f;
+    for (int i = 0; i < n; i++)
+    {
+        Vector3 toEye = rbl__sub(view->eye, in[i].position), normal = a;
+        if (desc->facing == RBL_FACING_AXIS)
+        {
+            // The eye direction off the axis (its degenerate fallbacks face the view)
+            float k = rbl__dot(a, toEye)/rbl__dot(a, a);
+            normal = rbl__v3(toEye.x - a.x*k, toEye.y - a.y*k, toEye.z - a.z*k);
+        }
+        if (rbl__dot(normal, orthographic? view->back : toEye) < 0.0f) return true;
+    }
+    return false;
+}
+
 int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     if ((buffer == NULL) || !RblIsInstanceBufferValid(*buffer)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: invalid instance buffer"); return 0; }
@@ -3012,15 +3065,19 @@ int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material materi
         desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
         desc.axis.x, desc.axis.y, desc.axis.z, (camera.projection == CAMERA_ORTHOGRAPHIC)? 1.0f : 0.0f,
         rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
+    // Quads seen from behind are drawn, as in the batch: culling off for this draw only
+    bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rbl__applyMaterialValues(program, &material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
 
+    if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
     rlDrawVertexArrayInstanced(0, 6, n);
     rlDisableVertexArray();
+    if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
     return n;
 }

@@ -374,3 +374,316 @@ static void test_view_orthographic_sphere_model_matches_the_double_reference(voi
     viewMeshFree(&ref);
     UnloadModel(model);
 }
+
+// ---- two-sided cards -----------------------------------------------------------------------------
+// A fixed card (facing +Z) seen from in front or behind, lit from the viewer's side or the far side,
+// with a flat or tilted normal map, forward (immediate, batched, instanced) and deferred (immediate,
+// instanced), perspective and orthographic. The reference (litSurface) shades the side the viewer
+// sees: from behind the normal flips, the map's tangent components stay (the card's mirror image).
+static void test_view_card_seen_from_behind_is_lit_on_the_side_the_viewer_sees(void)
+{
+    const char *pathNames[5] = { "immediate", "batched", "instanced", "deferred immediate", "deferred instanced" };
+    double worst[2] = { 0.0, 0.0 }, worstMean[2] = { 0.0, 0.0 };
+    int uncovered = 0;
+    for (int path = 0; path < 5; path++)
+        for (int proj = 0; proj < 2; proj++)
+            for (int behind = 0; behind < 2; behind++)
+                for (int far = 0; far < 2; far++)
+                    for (int tilted = 0; tilted < 2; tilted++)
+                    {
+                        bool deferred = path >= 3;
+                        LitScene sc = litScene(RBL_BRDF_GGX);
+                        sc.values.roughness = deferred? 0.5f : 0.35f;
+                        sc.path = (path == 1)? LIT_PATH_BATCHED : (((path == 2) || (path == 4))? LIT_PATH_INSTANCED : LIT_PATH_IMMEDIATE);
+                        float z = behind? -1.0f : 1.0f;                     // the viewer's side of the card
+                        Camera3D ortho = viewOrtho((Vector3){ 0.4f, 0.3f, 4.0f*z }, (Vector3){ 0.0f, 0.0f, 0.0f }, 5.0f);
+                        sc.camera = proj? ortho : viewPerspective(ortho);
+                        sc.lights[0] = litPoint((Vector3){ 0.5f, 0.4f, (far? -1.2f : 1.2f)*z }, 2.0f, 6.0f);
+                        sc.lights[1] = litDirectional((Vector3){ -0.3f, -0.2f, (far? 1.0f : -1.0f)*z }, 0.5f);
+                        sc.count = 2;
+                        sc.normalMap = true;
+                        sc.normal = tilted? normalTexel(0.5f, 0.2f, 0.843f) : normalTexel(0.0f, 0.0f, 1.0f);
+                        char name[128];
+                        snprintf(name, sizeof(name), "%s-%s-%s-%s-%s", pathNames[path], viewProjectionName(sc.camera), behind? "behind" : "front",
+                                 far? "far-light" : "near-light", tilted? "tilted" : "flat");
+                        for (char *c = name; *c; c++) if (*c == ' ') *c = '_';
+                        Image img;
+                        bool ok = true;
+                        if (deferred) img = viewRenderDeferredPlane(&sc, &ok);
+                        else { LitRender r = litRender(&sc, 0); img = ImageCopy(r.image); ok = r.loaded; litRenderUnload(&r); }
+                        int blank = 0;
+                        for (int y = 0; y < LIT_TARGET; y++) for (int x = 0; x < LIT_TARGET; x++) blank += (rtPixel(img, x, y).a == 0);
+                        LitError e = litCompare(&sc, img);
+                        uncovered += blank;
+                        RT_CHECK(ok, "%s: render refused", name);
+                        RT_CHECK(blank == 0, "%s: %d pixels not drawn (culled?)", name, blank);
+                        RT_CHECK(e.pixels > LIT_TARGET*LIT_TARGET/2, "%s: only %d pixels compared", name, e.pixels);
+                        RT_CHECK(e.max <= 2.0 && e.mean <= 0.25, "%s: error max %.0f mean %.3f /255 (allowed 2, 0.25)", name, e.max, e.mean);
+                        if (rtFailuresInCurrentTest() > 0) rtSaveImage(img, name);
+                        printf("    %-19s %s %-6s %-10s %-6s max %3.0f mean %7.4f /255, reference %5.1f..%5.1f\n", pathNames[path], viewProjectionName(sc.camera),
+                               behind? "behind" : "front", far? "far light" : "near light", tilted? "tilted" : "flat", e.max, e.mean, e.refMin, e.refMax);
+                        worst[behind] = fmax(worst[behind], e.max); worstMean[behind] = fmax(worstMean[behind], e.mean);
+                        UnloadImage(img);
+                    }
+    printf("    worst: front max %.0f mean %.4f /255; behind max %.0f mean %.4f /255; %d pixels not drawn\n", worst[0], worstMean[0], worst[1], worstMean[1], uncovered);
+}
+
+// Without the reference's rule: seen from behind, the far side's light changes nothing (the image is
+// the ambient-only one) and the viewer's side's light brightens it; a normal map tilted toward +U
+// (world +X) is brighter lit from +X than from -X, from either side (a full negation of the normal
+// from behind would light the -X side instead)
+static void test_view_card_from_behind_far_light_adds_nothing_and_tilt_keeps_its_side(void)
+{
+    // Camera z (the viewer's side), light (0 none, 1 point, 2 directional) and where it is, map tilted toward +U
+    struct { float eyeZ; int light; Vector3 at; bool tilted; } cases[7] = {
+        { -4.0f, 0, { 0.0f, 0.0f, 0.0f }, false },                          // 0 behind: ambient only
+        { -4.0f, 1, { 0.2f, 0.1f, 1.5f }, false },                          // 1 behind, point on the far side
+        { -4.0f, 1, { 0.2f, 0.1f, -1.5f }, false },                         // 2 behind, point on the viewer's side
+        { -4.0f, 2, { -1.0f, 0.0f, 0.5f }, true },                          // 3 behind, from +X on the viewer's side (direction of travel)
+        { -4.0f, 2, { 1.0f, 0.0f, 0.5f }, true },                           // 4 behind, from -X
+        { 4.0f, 2, { -1.0f, 0.0f, -0.5f }, true },                          // 5 front, from +X
+        { 4.0f, 2, { 1.0f, 0.0f, -0.5f }, true },                           // 6 front, from -X
+    };
+    for (int deferred = 0; deferred < 2; deferred++)
+    {
+        double level[7];
+        for (int k = 0; k < 7; k++)
+        {
+            LitScene sc = litScene(RBL_BRDF_LAMBERT);
+            sc.normalMap = true;
+            sc.normal = cases[k].tilted? normalTexel(0.6f, 0.0f, 0.8f) : normalTexel(0.0f, 0.0f, 1.0f);
+            sc.camera = litCamera((Vector3){ 0.0f, 0.0f, cases[k].eyeZ }, (Vector3){ 0.0f, 0.0f, 0.0f });
+            if (cases[k].light == 1) sc.lights[0] = litPoint(cases[k].at, 2.0f, 0.0f);
+            if (cases[k].light == 2) sc.lights[0] = litDirectional(cases[k].at, 1.0f);
+            sc.count = (cases[k].light > 0)? 1 : 0;
+            bool ok = true;
+            Image img;
+            if (deferred) img = viewRenderDeferredPlane(&sc, &ok);
+            else { LitRender r = litRender(&sc, 0); img = ImageCopy(r.image); ok = r.loaded; litRenderUnload(&r); }
+            RT_CHECK(ok, "render %d refused", k);
+            double sum = 0.0;
+            for (int y = 0; y < LIT_TARGET; y++) for (int x = 0; x < LIT_TARGET; x++) { Color c = rtPixel(img, x, y); sum += c.r + c.g + c.b; }
+            level[k] = sum/(3.0*LIT_TARGET*LIT_TARGET);
+            if (rtFailuresInCurrentTest() > 0) { char tag[32]; snprintf(tag, sizeof(tag), "%s-%d", deferred? "deferred" : "forward", k); rtSaveImage(img, tag); }
+            UnloadImage(img);
+        }
+        const char *how = deferred? "deferred" : "forward";
+        printf("    %s, seen from behind: mean level ambient only %.2f, far-side light %.2f, viewer-side light %.2f /255; tilted toward +U, lit from +X / -X: front %.2f / %.2f, behind %.2f / %.2f\n",
+               how, level[0], level[1], level[2], level[5], level[6], level[3], level[4]);
+        RT_CHECK(fabs(level[1] - level[0]) < 0.01, "%s: a light on the far side changed the card seen from behind (%.2f vs ambient %.2f)", how, level[1], level[0]);
+        RT_CHECK(level[2] > level[0] + 40.0, "%s: a light on the viewer's side left the card seen from behind near ambient (%.2f vs %.2f)", how, level[2], level[0]);
+        RT_CHECK(level[5] > level[6] + 40.0, "%s front: map tilted toward +U not brighter lit from +X (%.2f vs %.2f)", how, level[5], level[6]);
+        RT_CHECK(level[3] > level[4] + 40.0, "%s behind: map tilted toward +U not brighter lit from +X (%.2f vs %.2f)", how, level[3], level[4]);
+    }
+}
+
+// Face culling: only a draw that shows the camera a quad's back turns it off, for itself, and turns it
+// back on (raylib's default); a draw of front faces leaves the caller's state alone (on or off), and
+// inside a shadow pass it stays off until RblEndShadowMap
+static bool viewCullingEnabled(void)
+{
+    unsigned char (*isEnabled)(unsigned int) = NULL;
+    void *p = rtGlProc("glIsEnabled");
+    if (p == NULL) return false;
+    memcpy(&isEnabled, &p, sizeof(p));
+    return isEnabled(0x0B44) != 0;      // GL_CULL_FACE
+}
+
+static void test_view_culling_is_off_only_for_draws_that_show_a_back_and_restored(void)
+{
+    LitScene sc = litScene(RBL_BRDF_LAMBERT);
+    sc.lights[0] = litPoint((Vector3){ 0.2f, 0.1f, -1.5f }, 2.0f, 0.0f);
+    sc.count = 1;
+    RblScene scene = litSceneOf(&sc);
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
+    RblLitShaderDesc desc = litProgramDesc(&sc, 0);
+    Shader plain = RblLoadLitShader(desc);
+    desc.instanced = true;
+    Shader inst = RblLoadLitShader(desc);
+    Material m = LoadMaterialDefault();
+    RblBatch batch = RblLoadBatch(4);
+    RblInstanceBuffer ib = RblLoadInstanceBuffer(4);
+    const char *pathNames[3] = { "immediate", "batched", "instanced" };
+    for (int path = 0; path < 3; path++)
+        for (int behind = 0; behind < 2; behind++)
+            for (int callerOn = 0; callerOn < 2; callerOn++)
+            {
+                Camera3D cam = litCamera((Vector3){ 0.3f, 0.2f, behind? -4.0f : 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f });
+                RblBillboard b = litPlane();
+                m.shader = (path == 2)? inst : plain;
+                RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
+                BeginTextureMode(rt);
+                ClearBackground(BLANK);
+                BeginMode3D(cam);
+                if (callerOn) rlEnableBackfaceCulling(); else rlDisableBackfaceCulling();
+                if (path == 0) RblDrawBillboard(cam, m, b);
+                else if (path == 1) { RblBeginBatch(&batch, cam); RblBatchAdd(&batch, m, &b); RblEndBatch(&batch); }
+                else
+                {
+                    RblInstance in;
+                    memset(&in, 0, sizeof(in));
+                    in.size = b.size; in.origin = b.origin;
+                    RblInstancedDesc idesc;
+                    memset(&idesc, 0, sizeof(idesc));
+                    idesc.facing = RBL_FACING_FIXED; idesc.axis = b.axis; idesc.up = b.up;
+                    RblDrawInstanced(&ib, cam, m, idesc, &in, 1);
+                }
+                bool after = viewCullingEnabled();
+                EndMode3D();
+                EndTextureMode();
+                Image img = rtReadTarget(rt);
+                UnloadRenderTexture(rt);
+                Color c = rtPixel(img, LIT_TARGET/2, LIT_TARGET/2);
+                UnloadImage(img);
+                // A front view leaves the caller's state; a back view is drawn and leaves culling on
+                bool want = behind? true : (callerOn != 0);
+                printf("    %-9s %-6s caller culling %-3s: drawn %d, culling after %s\n", pathNames[path], behind? "behind" : "front", callerOn? "on" : "off", c.a != 0, after? "on" : "off");
+                RT_CHECK(c.a == 255, "%s %s (caller culling %d): the card was not drawn", pathNames[path], behind? "behind" : "front", callerOn);
+                RT_CHECK(after == want, "%s %s (caller culling %d): culling %d after the draw (expected %d)", pathNames[path], behind? "behind" : "front", callerOn, after, want);
+            }
+    rlEnableBackfaceCulling();
+
+    // Inside a shadow pass culling is off for every caster, and a card seen from behind leaves it off
+    RblLight sun = litDirectional((Vector3){ -0.2f, -0.3f, -1.0f }, 1.0f);
+    RblScene shadowScene;
+    memset(&shadowScene, 0, sizeof(shadowScene));
+    shadowScene.lights = &sun; shadowScene.lightCount = 1;
+    RblShadowDesc sdesc;
+    memset(&sdesc, 0, sizeof(sdesc));
+    sdesc.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sdesc);
+    RT_CHECK(RblBeginShadowMap(&map, &shadowScene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, 4.0f), "shadow pass refused");
+    Camera3D back = litCamera((Vector3){ 0.3f, 0.2f, -4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f });
+    m.shader = plain;
+    RblBillboard card = litPlane();
+    card.size = (Vector2){ 2.0f, 2.0f }; card.origin = (Vector2){ 1.0f, 1.0f };
+    RblBeginBatch(&batch, back); RblBatchAdd(&batch, m, &card); RblEndBatch(&batch);
+    bool inPass = viewCullingEnabled();
+    RblEndShadowMap(&map);
+    RT_CHECK(!inPass, "a card seen from behind turned culling back on inside the shadow pass");
+    RblUnloadShadowMap(&map);
+    RblUnloadInstanceBuffer(&ib);
+    RblUnloadBatch(&batch);
+    MemFree(m.maps);
+    RblUnloadLitShader(&plain); RblUnloadLitShader(&inst);
+}
+
+// A card seen from behind receives the shadow map of a light on the viewer's side: lit without
+// self-shadowing (the lookup's normal offset and plane use the flipped normal), and darkened where a
+// smaller card between the light and it (drawn only into the map) blocks the light; forward and
+// deferred, perspective and orthographic
+static Image viewRenderShadowedCard(const LitScene *sc, bool deferred, bool *ok)
+{
+    RblLitShaderDesc desc = litProgramDesc(sc, 0);
+    desc.shadowMaps = 1;
+    RblGBufferDesc gdesc = defGBufferDesc(&desc, LIT_TARGET, LIT_TARGET);
+    desc.deferred = deferred;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sdesc;
+    memset(&sdesc, 0, sizeof(sdesc));
+    sdesc.size = 1024;
+    RblShadowMap map = RblLoadShadowMap(sdesc);
+    Texture2D albedo = solidTexture(sc->albedo);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    rtSetMaterialValues(&m, sc->values);
+    RblScene scene = litSceneOf(sc);
+    *ok = RblIsLitShaderValid(lit) && RblIsShadowMapValid(map) && RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, 5.0f);
+    if (*ok)
+    {
+        RblBillboard card = litSceneBillboard(sc), blocker = card;
+        blocker.position = (Vector3){ 0.0f, 0.0f, -1.0f };
+        blocker.size = (Vector2){ 1.0f, 1.0f }; blocker.origin = (Vector2){ 0.5f, 0.5f };
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, sc->camera);
+        RblBatchAdd(&batch, m, &card);
+        RblBatchAdd(&batch, m, &blocker);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+        RblEndShadowMap(&map);
+        scene.shadowMaps = &map;
+        scene.shadowMapCount = 1;
+        *ok = RblSetScene(&scene);
+    }
+    RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
+    if (!deferred)
+    {
+        BeginTextureMode(rt);
+        ClearBackground(BLANK);
+        BeginMode3D(sc->camera);
+        litDrawPlane(sc, m);
+        EndMode3D();
+        EndTextureMode();
+    }
+    else
+    {
+        RblGBuffer g = RblLoadGBuffer(gdesc);
+        if (*ok && RblBeginGBuffer(&g, sc->camera))
+        {
+            litDrawPlane(sc, m);
+            RblEndGBuffer(&g);
+            *ok = RblDrawDeferredLights(&g);
+        }
+        else *ok = false;
+        BeginTextureMode(rt);
+        ClearBackground(BLANK);
+        if (*ok) RblResolveGBuffer(&g);
+        EndTextureMode();
+        RblUnloadGBuffer(&g);
+    }
+    Image img = rtReadTarget(rt);
+    UnloadRenderTexture(rt);
+    UnloadTexture(albedo);
+    MemFree(m.maps);
+    RblUnloadShadowMap(&map);
+    RblUnloadLitShader(&lit);
+    return img;
+}
+
+static void test_view_card_seen_from_behind_receives_shadows_on_its_lit_side(void)
+{
+    const Vector3 sunDirection = { 0.3f, 0.2f, 1.0f };         // travels toward +Z: comes from the -Z side
+    for (int deferred = 0; deferred < 2; deferred++)
+        for (int proj = 0; proj < 2; proj++)
+        {
+            LitScene sc = litScene(RBL_BRDF_LAMBERT);
+            sc.lights[0] = litDirectional(sunDirection, 1.0f);
+            sc.count = 1;
+            Camera3D ortho = viewOrtho((Vector3){ -0.5f, 0.4f, -4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, 5.0f);
+            sc.camera = proj? ortho : viewPerspective(ortho);
+            bool ok = false;
+            Image img = viewRenderShadowedCard(&sc, deferred != 0, &ok);
+            // The blocker (1 x 1 at z = -1) shadows the square centred where the light's ray through its
+            // centre meets z = 0; pixels farther than 0.25 from that square's edge are compared
+            D3 d = dNorm(d3f(sunDirection));
+            D3 centre = d3(d.x/d.z, d.y/d.z, 0.0);
+            RefParams rp = litShading(&sc);
+            int lit = 0, shadowed = 0;
+            double litMax = 0.0, shadowMax = 0.0;
+            for (int py = 1; py < LIT_TARGET - 1; py++)
+                for (int px = 1; px < LIT_TARGET - 1; px++)
+                {
+                    D3 p;
+                    if (!refPixelOnPlane(sc.camera, LIT_TARGET, LIT_TARGET, px, py, d3(0, 0, 0), d3(0, 0, 1), &p)) continue;
+                    double edge = fmax(fabs(p.x - centre.x), fabs(p.y - centre.y)) - 0.5;     // signed distance to the square
+                    if (fabs(edge) < 0.25) continue;
+                    RefSurface s = litSurface(&sc, p);
+                    RefRgb ref = refFinishAt(&rp, refShadeView(&rp, sc.lights, (edge < 0.0)? 0 : 1, &sc.env, &s, refViewVector(sc.camera, p)), refViewDistance(sc.camera, p));
+                    Color c = rtPixel(img, px, py);
+                    const double got[3] = { c.r, c.g, c.b }, want[3] = { ref.r*255.0, ref.g*255.0, ref.b*255.0 };
+                    double err = 0.0;
+                    for (int ch = 0; ch < 3; ch++) err = fmax(err, fabs(got[ch] - floor(want[ch] + 0.5)));
+                    if (edge < 0.0) { shadowed++; shadowMax = fmax(shadowMax, err); } else { lit++; litMax = fmax(litMax, err); }
+                }
+            const char *name = deferred? "deferred" : "forward";
+            printf("    %-8s %s, card seen from behind: lit side max %.0f/255 over %d pixels (no self-shadowing), blocker's shadow max %.0f/255 over %d pixels\n",
+                   name, viewProjectionName(sc.camera), litMax, lit, shadowMax, shadowed);
+            RT_CHECK(ok, "%s %s: render refused", name, viewProjectionName(sc.camera));
+            RT_CHECK(lit > 2000 && shadowed > 50, "%s %s: %d lit and %d shadowed pixels compared", name, viewProjectionName(sc.camera), lit, shadowed);
+            RT_CHECK(litMax <= 2.0, "%s %s: the lit back side differs from the unshadowed reference by %.0f/255 (self-shadowing?)", name, viewProjectionName(sc.camera), litMax);
+            RT_CHECK(shadowMax <= 2.0, "%s %s: the blocker's shadow differs from the ambient-only reference by %.0f/255", name, viewProjectionName(sc.camera), shadowMax);
+            if (rtFailuresInCurrentTest() > 0) { char tag[32]; snprintf(tag, sizeof(tag), "%s-%s", name, viewProjectionName(sc.camera)); rtSaveImage(img, tag); }
+            UnloadImage(img);
+        }
+}
