@@ -77,6 +77,7 @@ int main(int argc, char **argv)
         RT_TEST(test_view_card_from_behind_far_light_adds_nothing_and_tilt_keeps_its_side),
         RT_TEST(test_view_culling_is_off_only_for_draws_that_show_a_back_and_restored),
         RT_TEST(test_view_card_seen_from_behind_receives_shadows_on_its_lit_side),
+        RT_TEST(test_view_open_model_seen_from_below_is_lit_on_the_side_seen),
         RT_TEST(test_shadows_opaque_card_darkens_its_analytic_footprint_within_a_texel),
         RT_TEST(test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_every_path),
         RT_TEST(test_shadows_raylib_model_casts_its_footprint),

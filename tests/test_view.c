@@ -687,3 +687,73 @@ static void test_view_card_seen_from_behind_receives_shadows_on_its_lit_side(voi
             UnloadImage(img);
         }
 }
+
+// A raylib Model drawn without culling (an open mesh: raylib's GenMeshPlane, facing +Y) seen from
+// below is two-sided like a card: lit by a light below it, untouched by one above it
+static void test_view_open_model_seen_from_below_is_lit_on_the_side_seen(void)
+{
+    Mesh mesh = GenMeshPlane(6.0f, 6.0f, 1, 1);
+    Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
+    for (int deferred = 0; deferred < 2; deferred++)
+    {
+        double level[3];
+        for (int k = 0; k < 3; k++)        // ambient only, light above (far side), light below (viewer's side)
+        {
+            RblLight light = litPoint((Vector3){ 0.3f, (k == 1)? 1.5f : -1.5f, 0.2f }, 2.0f, 0.0f);
+            RblLitShaderDesc desc;
+            memset(&desc, 0, sizeof(desc));
+            desc.maxLights = 1;
+            RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&desc, LIT_TARGET, LIT_TARGET));
+            desc.deferred = deferred;
+            Shader lit = RblLoadLitShader(desc);
+            RblScene scene;
+            memset(&scene, 0, sizeof(scene));
+            scene.lights = &light; scene.lightCount = (k > 0)? 1 : 0; scene.ambient = (Color){ 25, 25, 30, 255 };
+            RT_CHECK(RblIsLitShaderValid(lit) && RblSetScene(&scene), "program or scene refused");
+            Material m = LoadMaterialDefault();
+            m.shader = lit;
+            m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+            Camera3D cam = litCamera((Vector3){ 0.4f, -4.0f, 0.3f }, (Vector3){ 0.0f, 0.0f, 0.0f });
+            cam.up = (Vector3){ 0.0f, 0.0f, 1.0f };
+            RenderTexture2D rt = LoadRenderTexture(LIT_TARGET, LIT_TARGET);
+            if (deferred)
+            {
+                RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass refused");
+                rlDisableBackfaceCulling();                 // the caller's choice for an open mesh
+                RblDrawMesh(mesh, m, MatrixIdentity());
+                rlEnableBackfaceCulling();
+                RblEndGBuffer(&g);
+                RT_CHECK(RblDrawDeferredLights(&g), "deferred lights refused");
+                BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+            }
+            else
+            {
+                BeginTextureMode(rt);
+                ClearBackground(BLANK);
+                BeginMode3D(cam);
+                rlDisableBackfaceCulling();
+                RblDrawMesh(mesh, m, MatrixIdentity());
+                rlEnableBackfaceCulling();
+                EndMode3D();
+                EndTextureMode();
+            }
+            Image img = rtReadTarget(rt);
+            UnloadRenderTexture(rt);
+            double sum = 0.0;
+            int covered = 0;
+            for (int y = 0; y < LIT_TARGET; y++) for (int x = 0; x < LIT_TARGET; x++) { Color c = rtPixel(img, x, y); if (c.a == 0) continue; sum += c.r + c.g + c.b; covered++; }
+            level[k] = (covered > 0)? sum/(3.0*covered) : 0.0;
+            RT_CHECK(covered > LIT_TARGET*LIT_TARGET/2, "%s case %d: the plane covers %d pixels", deferred? "deferred" : "forward", k, covered);
+            UnloadImage(img);
+            MemFree(m.maps);
+            RblUnloadLitShader(&lit);
+            RblUnloadGBuffer(&g);
+        }
+        const char *how = deferred? "deferred" : "forward";
+        printf("    %s, plane Model seen from below: mean level ambient only %.2f, light above %.2f, light below %.2f /255\n", how, level[0], level[1], level[2]);
+        RT_CHECK(fabs(level[1] - level[0]) < 0.01, "%s: a light above the plane changed it seen from below (%.2f vs %.2f)", how, level[1], level[0]);
+        RT_CHECK(level[2] > level[0] + 40.0, "%s: a light below left the plane seen from below near ambient (%.2f vs %.2f)", how, level[2], level[0]);
+    }
+    UnloadTexture(albedo);
+    UnloadMesh(mesh);
+}
