@@ -123,6 +123,11 @@
 *       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
 *       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
 *       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
+*       Two-sided: a quad seen from behind (FIXED, or CAMERA_PLANE with an up against the view's) is
+*       drawn and shaded on the side seen (gl_FrontFacing): the normal flips, the normal map's tangent
+*       components stay (the card's mirror image through its plane; a relief reads raised from both
+*       sides). Models drawn without culling get the same. A draw showing a quad's back turns culling
+*       off for itself and back on after; draws of front faces leave it alone.
 *
 *   DEGENERATE FRAMES (documented fallbacks, all deterministic):
 *       - camera.target == camera.position: the view direction falls back to -Z (raylib's default).
@@ -165,6 +170,10 @@
 *       - Ambient (flat, or ground..sky by dot(N, up)*0.5 + 0.5) x occlusion x albedo (GGX: albedo*
 *         (1 - metalness) + F0). Occlusion dims ambient light only: direct light is occluded by
 *         shadows, and darkening it too would count the same blocker twice.
+*       - View: v = normalize(eye - p); orthographic cameras (parallel rays): v = the camera's back
+*         direction everywhere. Lit programs tell them apart by matProjection (raylib's DrawMesh sets it
+*         with matView), instanced draws by their camera, the G-buffer by RblBeginGBuffer's camera.
+*       - Fog distance: |p - eye|; orthographic: along the view axis from the camera's plane.
 *       - Order: ambient + direct + emission -> fog -> clamp -> exposure -> tonemap -> sRGB (or gamma).
 *       - Clamps (no NaN/Inf from any input the API accepts): perceptual roughness >= 0.045, NdotV >=
 *         1e-4, falloff denominator >= 1e-4, zero vectors normalise to a fallback, radiance to [0,
@@ -185,9 +194,10 @@
 *         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high, g low byte;
 *                      GGX: r metalness
 *       plus RT3 RGBA16F accumulation (emission from the geometry pass, then light) and a depth texture
-*       (rlLoadTextureDepth, at least 24 bits) under raylib's perspective (rlgl's cull distances).
+*       (rlLoadTextureDepth, at least 24 bits) under raylib's projection (rlgl's cull distances).
 *       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
-*       inverse projection's cancellation), the view vector, anything derivable. The depth is raylib's
+*       inverse projection's cancellation; orthographic z = n + d (f - n)), the view vector (the
+*       camera's back direction under an orthographic camera), anything derivable. The depth is raylib's
 *       own, so later forward draws test against it; lighting tolerates its far-field error.
 *       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
@@ -254,6 +264,9 @@
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
+*       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
+*         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
+*         billboards still turn toward camera.position (their shading uses the parallel view).
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *

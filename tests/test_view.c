@@ -3,7 +3,9 @@
 // (not eye - position) and fog runs along the view axis; a plane on every billboard path, a sphere
 // Model (RblDrawModel and raylib's own DrawModel) and the G-buffer, each with a perspective control.
 // Two-sided: a card seen from behind is shaded on the side the viewer sees (its mirror image through
-// its plane) and is not culled, forward and deferred. Included by test_gpu_main.c after test_deferred.c.
+// its plane) and is not culled, forward and deferred; the caller's culling state survives front-only
+// draws; the back side receives shadows; an open Model drawn without culling is two-sided too.
+// Included by test_gpu_main.c after test_deferred.c.
 
 // Orthographic camera showing `height` world units vertically (raylib's fovy under CAMERA_ORTHOGRAPHIC)
 static Camera3D viewOrtho(Vector3 position, Vector3 target, float height)
