@@ -123,6 +123,11 @@
 *       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
 *       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
 *       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
+*       Two-sided: a quad seen from behind (FIXED, or CAMERA_PLANE with an up against the view's) is
+*       drawn and shaded on the side seen (gl_FrontFacing): the normal flips, the normal map's tangent
+*       components stay (the card's mirror image through its plane; a relief reads raised from both
+*       sides). Models drawn without culling get the same. A draw showing a quad's back turns culling
+*       off for itself and back on after; draws of front faces leave it alone.
 *
 *   DEGENERATE FRAMES (documented fallbacks, all deterministic):
 *       - camera.target == camera.position: the view direction falls back to -Z (raylib's default).
@@ -165,6 +170,10 @@
 *       - Ambient (flat, or ground..sky by dot(N, up)*0.5 + 0.5) x occlusion x albedo (GGX: albedo*
 *         (1 - metalness) + F0). Occlusion dims ambient light only: direct light is occluded by
 *         shadows, and darkening it too would count the same blocker twice.
+*       - View: v = normalize(eye - p); orthographic cameras (parallel rays): v = the camera's back
+*         direction everywhere. Lit programs tell them apart by matProjection (raylib's DrawMesh sets it
+*         with matView), instanced draws by their camera, the G-buffer by RblBeginGBuffer's camera.
+*       - Fog distance: |p - eye|; orthographic: along the view axis from the camera's plane.
 *       - Order: ambient + direct + emission -> fog -> clamp -> exposure -> tonemap -> sRGB (or gamma).
 *       - Clamps (no NaN/Inf from any input the API accepts): perceptual roughness >= 0.045, NdotV >=
 *         1e-4, falloff denominator >= 1e-4, zero vectors normalise to a fallback, radiance to [0,
@@ -185,9 +194,10 @@
 *         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high, g low byte;
 *                      GGX: r metalness
 *       plus RT3 RGBA16F accumulation (emission from the geometry pass, then light) and a depth texture
-*       (rlLoadTextureDepth, at least 24 bits) under raylib's perspective (rlgl's cull distances).
+*       (rlLoadTextureDepth, at least 24 bits) under raylib's projection (rlgl's cull distances).
 *       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
-*       inverse projection's cancellation), the view vector, anything derivable. The depth is raylib's
+*       inverse projection's cancellation; orthographic z = n + d (f - n)), the view vector (the
+*       camera's back direction under an orthographic camera), anything derivable. The depth is raylib's
 *       own, so later forward draws test against it; lighting tolerates its far-field error.
 *       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
@@ -254,6 +264,9 @@
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
+*       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
+*         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
+*         billboards still turn toward camera.position (their shading uses the parallel view).
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
@@ -877,7 +890,7 @@ typedef enum {
     RBL__U_SHADOW_LIGHT, RBL__U_SHADOW_MATRIX, RBL__U_SHADOW_PARAMS, RBL__U_SHADOW_BIAS, RBL__U_SHADOW_AXES,
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
-    RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P,
+    RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -945,6 +958,8 @@ typedef struct rbl__BatchState {
     RblCameraFrame view;                   // Frame of the current camera
     rbl__FrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    bool orthographic;              // The camera's projection (which side of a quad it sees)
+    bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
 } rbl__BatchState;
 
@@ -1084,6 +1099,20 @@ static const char *const rbl__shader_common[] = {
     "    return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;\n",
     "}\n",
     "\n",
+    "// The viewer of a shaded point: eye = camera position; axis.xyz = unit camera back direction (target\n",
+    "// toward eye), axis.w = 1 for an orthographic projection (else 0). A parallel projection has no eye\n",
+    "// point: every ray runs along the axis, so the view vector is the axis itself everywhere.\n",
+    "vec3 rblViewVector(vec3 eye, vec4 axis, vec3 position, vec3 fallback)\n",
+    "{\n",
+    "    return (axis.w > 0.5)? axis.xyz : rblSafeNormalize(eye - position, fallback);\n",
+    "}\n",
+    "\n",
+    "// Fog distance: to the eye (perspective); orthographic, along the view axis from the camera's plane\n",
+    "float rblViewDistance(vec3 eye, vec4 axis, vec3 position)\n",
+    "{\n",
+    "    return (axis.w > 0.5)? max(dot(eye - position, axis.xyz), 0.0) : length(position - eye);\n",
+    "}\n",
+    "\n",
     "// Exact sRGB transfer functions (IEC 61966-2-1). Every raylib Color, albedo and emissive texel is\n",
     "// sRGB; lighting runs in linear light.\n",
     "vec3 rblSrgbToLinear(vec3 c)\n",
@@ -1116,7 +1145,7 @@ static const char *const rbl__shader_deferred_ambient_fs[] = {
     "    finalColor = vec4(vec3(float(rblLightCount)), 1.0);\n",
     "#else\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, rblPositionFromDepth(texel, depth));\n",
-    "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);\n",
+    "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblViewVector(rblEye, rblViewAxis, s.position, s.normal)), 1.0);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -1152,14 +1181,15 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "    vec3 position = rblPositionFromDepth(texel, depth);\n",
     "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
     "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
-    "    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, position, rblEye), 1.0); return; }\n",
+    "    float viewDistance = rblViewDistance(rblEye, rblViewAxis, position);\n",
+    "    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, viewDistance), 1.0); return; }\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = vec3(0.0);\n",
     "    if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);\n",
     "    else if (rblOutput == 2) v = s.normal*0.5 + 0.5;\n",
     "    else if (rblOutput == 3) v = vec3(s.specular);     // the stored channel: intensity or roughness\n",
     "    else if (rblOutput == 4) v = vec3(s.occlusion);\n",
-    "    else if (rblOutput == 5) v = vec3(clamp(length(position - rblEye)/rblOutputScale, 0.0, 1.0));\n",
+    "    else if (rblOutput == 5) v = vec3(clamp(viewDistance/rblOutputScale, 0.0, 1.0));\n",
     "    else if (rblOutput == 6) v = fract(position/rblOutputScale);\n",
     "    else if (rblOutput == 7) v = rblHeat(color.r/rblOutputScale);\n",
     "    finalColor = vec4(v, 1.0);\n",
@@ -1191,7 +1221,7 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "    finalColor = vec4(1.0);\n",
     "#else\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
-    "    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);\n",
+    "    vec3 v = rblViewVector(rblEye, rblViewAxis, s.position, s.normal);\n",
     "#if RBL_SHADOWS > 0\n",
     "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
     "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
@@ -1309,6 +1339,7 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's projection\n",
     "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
     "uniform vec3 rblEye;                    // camera position\n",
+    "uniform vec4 rblViewAxis;               // camera back direction, w 1 orthographic (rblViewVector)\n",
     "\n",
     "// This pixel's G-buffer texel and depth in a light pass (drawn at the G-buffer's size); false where\n",
     "// nothing was drawn (background)\n",
@@ -1482,12 +1513,11 @@ static const char *const rbl__shader_lights[] = {
     "    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);\n",
     "}\n",
     "\n",
-    "// Sum of the light slots at a surface point seen from eye\n",
-    "vec3 rblDirectLight(RblShadingPoint s, vec3 eye)\n",
+    "// Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)\n",
+    "vec3 rblDirectLight(RblShadingPoint s, vec3 v)\n",
     "{\n",
     "    vec3 sum = vec3(0.0);\n",
     "#if RBL_LIGHTS > 0\n",
-    "    vec3 v = rblSafeNormalize(eye - s.position, s.normal);\n",
     "#if RBL_SHADOWS > 0\n",
     "    vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows\n",
     "    shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);\n",
@@ -1543,11 +1573,13 @@ static const char *const rbl__shader_lit_fs[] = {
     "    vec3 emission, tangentNormal;\n",
     "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "    vec3 eye = fragEye;\n",
+    "    vec3 v = rblViewVector(fragEye, fragViewAxis, fragPosition, sp.normal);\n",
+    "    float viewDistance = rblViewDistance(fragEye, fragViewAxis, fragPosition);\n",
     "#else\n",
-    "    vec3 eye = fragPosition + sp.normal;     // unused: no view-dependent term compiled\n",
+    "    vec3 v = sp.normal;                      // unused: no view-dependent term compiled\n",
+    "    float viewDistance = 0.0;\n",
     "#endif\n",
-    "    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye) + emission;\n",
+    "    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, v) + emission;\n",
     "\n",
     "#if defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 1)\n",
     "    finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);\n",
@@ -1562,7 +1594,7 @@ static const char *const rbl__shader_lit_fs[] = {
     "#elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 4)\n",
     "    finalColor = vec4(vec3(sp.occlusion), 1.0);\n",
     "#else\n",
-    "    finalColor = vec4(rblFinish(color, fragPosition, eye), alpha);\n",
+    "    finalColor = vec4(rblFinish(color, viewDistance), alpha);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -1582,8 +1614,10 @@ static const char *const rbl__shader_lit_vs[] = {
     "uniform mat4 matModel;\n",
     "uniform mat4 matNormal;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set it: no viewPos glue needed\n",
+    "uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set both: no viewPos glue needed\n",
+    "uniform mat4 matProjection;\n",
     "flat out vec3 fragEye;\n",
+    "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
     "out vec3 fragPosition;\n",
@@ -1602,6 +1636,10 @@ static const char *const rbl__shader_lit_vs[] = {
     "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "    fragEye = -(transpose(mat3(matView))*matView[3].xyz);     // view = [R|t]: eye = -R^T t\n",
+    "    // Orthographic: clip w does not depend on the position (the projection's last row is 0 0 0 w);\n",
+    "    // an unset matProjection (all zero) counts as perspective, the pre-ortho behaviour\n",
+    "    bool parallel = (matProjection[0][3] == 0.0) && (matProjection[1][3] == 0.0) && (matProjection[2][3] == 0.0) && (matProjection[3][3] != 0.0);\n",
+    "    fragViewAxis = vec4(rblSafeNormalize(vec3(matView[0][2], matView[1][2], matView[2][2]), vec3(0.0, 0.0, 1.0)), parallel? 1.0 : 0.0);\n",
     "#endif\n",
     "    gl_Position = mvp*vec4(vertexPosition, 1.0);\n",
     "}\n",
@@ -1626,7 +1664,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "//   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
     "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass\n",
     "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
-    "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z)\n",
+    "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera\n",
     "//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes\n",
     "uniform vec4 rblInstancing[7];\n",
     "\n",
@@ -1637,6 +1675,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "out vec4 fragTangent;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "flat out vec3 fragEye;\n",
+    "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
     "bool rblNormalizeTo(vec3 v, out vec3 o)\n",
@@ -1819,6 +1858,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "    fragEye = eye;\n",
+    "    fragViewAxis = vec4(rblInstancing[3].xyz, rblInstancing[5].w);\n",
     "#endif\n",
     "    gl_Position = mvp*vec4(p, 1.0);\n",
     "}\n",
@@ -1843,6 +1883,7 @@ static const char *const rbl__shader_material[] = {
     "in vec4 fragTangent;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "flat in vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
+    "flat in vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
     "#endif\n",
     "\n",
     "uniform sampler2D texture0;     // albedo (sRGB)\n",
@@ -1895,6 +1936,12 @@ static const char *const rbl__shader_material[] = {
     "    if (albedo.a < rblAlphaCutoff) discard;\n",
     "\n",
     "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
+    "    // Two-sided: a back face (a card seen from behind, an open mesh from inside) is shaded on the\n",
+    "    // side the viewer sees, as the card's mirror image through its plane: the normal flips, the\n",
+    "    // normal map's tangent components stay (a relief reads raised from both sides). The winding says\n",
+    "    // which side is seen for any projection, where dot(N, view) would also flip the interpolated\n",
+    "    // normals of front faces near a smooth silhouette.\n",
+    "    float side = gl_FrontFacing? 1.0 : -1.0;\n",
     "#ifdef RBL_MATERIAL_TEXTURE\n",
     "    vec4 material = texture(texture2, fragTexCoord);\n",
     "#endif\n",
@@ -1907,7 +1954,9 @@ static const char *const rbl__shader_material[] = {
     "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
     "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
     "    tangentNormal = rblDecodeNormal(material);\n",
-    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);\n",
+    "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z), n*side);\n",
+    "#else\n",
+    "    n *= side;\n",
     "#endif\n",
     "    RblShadingPoint sp;\n",
     "    sp.position = fragPosition;\n",
@@ -1948,7 +1997,8 @@ static const char *const rbl__shader_material[] = {
 static const char *const rbl__shader_output[] = {
     "// Output: fog, half-float clamp, exposure, tonemap and the display encoding, in that order (the\n",
     "// scene's fog and exposure; the program's compiled tonemap and encoding).\n",
-    "//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by distance to the eye)\n",
+    "//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by rblViewDistance: to the eye, or\n",
+    "//                             along the view axis for an orthographic camera)\n",
     "//   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)\n",
     "//   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve\n",
     "//   RBL_LINEAR_OUTPUT         keep linear light (float targets)\n",
@@ -1960,12 +2010,11 @@ static const char *const rbl__shader_output[] = {
     "#endif\n",
     "uniform float rblExposure;                  // the scene's exposure\n",
     "\n",
-    "// Fog, exposure, tonemap and the display encoding, in that order. linearOut keeps linear light\n",
-    "// (clamped to half-float range) for float targets.\n",
-    "vec3 rblFinish(vec3 color, vec3 position, vec3 eye)\n",
+    "// Fog at view distance d, exposure, tonemap and the display encoding, in that order. linearOut keeps\n",
+    "// linear light (clamped to half-float range) for float targets.\n",
+    "vec3 rblFinish(vec3 color, float d)\n",
     "{\n",
     "#if RBL_FOG > 0\n",
-    "    float d = length(position - eye);\n",
     "#if RBL_FOG == 1\n",
     "    float visible = clamp(1.0 - (d - rblFogStart)*rblFog.a, 0.0, 1.0);\n",
     "#elif RBL_FOG == 2\n",
@@ -2720,6 +2769,8 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: camera with NaN/Inf fields"); return false; }
     batch->view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
+    batch->orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
+    batch->backFacing = false;
     batch->frame.facing = -1;      // the frame depends on the view
     batch->count = 0;
     batch->runCount = 0;
@@ -2787,6 +2838,10 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
         return false;
     }
+    // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
+    // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
+    Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
+    if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
 
     if (newRun)
     {
@@ -2902,6 +2957,11 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     }
 
     rlDrawRenderBatchActive();      // keep draw order with raylib's own pending geometry
+    // Billboards seen from behind are drawn (two-sided, shaded on the side seen): culling goes off for
+    // this draw and back on after (raylib's default; rlgl cannot report the caller's state). Shadow
+    // passes keep it off throughout.
+    bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
+    if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
     rlUpdateVertexBuffer(batch->vboId, batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
@@ -2925,6 +2985,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     }
     rbl__unbindMaterial(bound);
     rlDisableVertexArray();
+    if (cullOff) rlEnableBackfaceCulling();
 }
 
 void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
@@ -3061,6 +3122,37 @@ static inline bool rbl__instanceOk(const RblInstance *in)
     return rbl__exponentsBelow(&in->position, 12, RBL__INSTANCE_LIMIT_EXPONENT);
 }
 
+// Whether an instanced draw shows the camera the back of a quad (the batch's test, with each mode's
+// plane normal): CAMERA_PLANE only with a caller up (N = right x up), FIXED cards, AXIS under an
+// orthographic camera (it turns toward the camera's position, which a parallel view does not look
+// from); CAMERA_POSITION, and AXIS in perspective, face the eye by construction
+static bool rbl__instancesShowBack(const RblInstancedDesc *desc, const RblCameraFrame *view, bool orthographic, const RblInstance *in, int n)
+{
+    Vector3 a = desc->axis;
+    bool noAxis = (a.x == 0.0f) && (a.y == 0.0f) && (a.z == 0.0f);
+    if (desc->facing == RBL_FACING_CAMERA_PLANE)
+    {
+        if ((desc->up.x == 0.0f) && (desc->up.y == 0.0f) && (desc->up.z == 0.0f)) return false;
+        a = rbl__cross(view->right, desc->up);
+    }
+    else if (desc->facing == RBL_FACING_FIXED) { if (noAxis) a = rbl__v3(0.0f, 0.0f, 1.0f); }
+    else if ((desc->facing == RBL_FACING_AXIS) && orthographic) { if (noAxis) a = rbl__v3(0.0f, 1.0f, 0.0f); }
+    else return false;
+    if (orthographic && (desc->facing != RBL_FACING_AXIS)) return rbl__dot(a, view->back) < 0.0f;
+    for (int i = 0; i < n; i++)
+    {
+        Vector3 toEye = rbl__sub(view->eye, in[i].position), normal = a;
+        if (desc->facing == RBL_FACING_AXIS)
+        {
+            // The eye direction off the axis (its degenerate fallbacks face the view)
+            float k = rbl__dot(a, toEye)/rbl__dot(a, a);
+            normal = rbl__v3(toEye.x - a.x*k, toEye.y - a.y*k, toEye.z - a.z*k);
+        }
+        if (rbl__dot(normal, orthographic? view->back : toEye) < 0.0f) return true;
+    }
+    return false;
+}
+
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
@@ -3143,17 +3235,21 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
         desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
-        desc.axis.x, desc.axis.y, desc.axis.z, 0.0f,
+        desc.axis.x, desc.axis.y, desc.axis.z, (camera.projection == CAMERA_ORTHOGRAPHIC)? 1.0f : 0.0f,
         rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
+    // Quads seen from behind are drawn, as in the batch: culling off for this draw only
+    bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rbl__applyMaterialValues(program, &material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
 
+    if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
     rlDrawVertexArrayInstanced(0, 6, n);
     rlDisableVertexArray();
+    if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
     return n;
 }
@@ -4300,7 +4396,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -5442,6 +5538,9 @@ static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
     // View position from window depth, in closed form (gbuffer_read.glsl): perspective (w = 1) or orthographic
     double n = rlGetCullDistanceNear(), f = rlGetCullDistanceFar();
     bool perspective = (g->state->projection.m15 == 0.0f);
+    // View vector (common.glsl rblViewVector): the view matrix's row 2 is the back direction
+    float viewAxis[4] = { g->state->view.m2, g->state->view.m6, g->state->view.m10, perspective? 0.0f : 1.0f };
+    if (loc[RBL__U_VIEW_AXIS] != -1) rlSetUniform(loc[RBL__U_VIEW_AXIS], viewAxis, SHADER_UNIFORM_VEC4, 1);
     float depthLinear[4] = { perspective? (float)(n*f) : (float)n, (float)(f - n), (float)f, perspective? 1.0f : 0.0f };
     float invP[2] = { 1.0f/g->state->projection.m0, 1.0f/g->state->projection.m5 };
     if (loc[RBL__U_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__U_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);

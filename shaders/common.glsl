@@ -11,6 +11,20 @@ vec3 rblSafeNormalize(vec3 v, vec3 fallback)
     return (len2 > 1e-20)? v*inversesqrt(len2) : fallback;
 }
 
+// The viewer of a shaded point: eye = camera position; axis.xyz = unit camera back direction (target
+// toward eye), axis.w = 1 for an orthographic projection (else 0). A parallel projection has no eye
+// point: every ray runs along the axis, so the view vector is the axis itself everywhere.
+vec3 rblViewVector(vec3 eye, vec4 axis, vec3 position, vec3 fallback)
+{
+    return (axis.w > 0.5)? axis.xyz : rblSafeNormalize(eye - position, fallback);
+}
+
+// Fog distance: to the eye (perspective); orthographic, along the view axis from the camera's plane
+float rblViewDistance(vec3 eye, vec4 axis, vec3 position)
+{
+    return (axis.w > 0.5)? max(dot(eye - position, axis.xyz), 0.0) : length(position - eye);
+}
+
 // Exact sRGB transfer functions (IEC 61966-2-1). Every raylib Color, albedo and emissive texel is
 // sRGB; lighting runs in linear light.
 vec3 rblSrgbToLinear(vec3 c)

@@ -16,6 +16,6 @@ void main()
     finalColor = vec4(vec3(float(rblLightCount)), 1.0);
 #else
     RblShadingPoint s = rblGBufferSurface(texel, rblPositionFromDepth(texel, depth));
-    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblEye), 1.0);
+    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblViewVector(rblEye, rblViewAxis, s.position, s.normal)), 1.0);
 #endif
 }

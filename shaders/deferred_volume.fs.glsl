@@ -23,7 +23,7 @@ void main()
     finalColor = vec4(1.0);
 #else
     RblShadingPoint s = rblGBufferSurface(texel, position);
-    vec3 v = rblSafeNormalize(rblEye - s.position, s.normal);
+    vec3 v = rblViewVector(rblEye, rblViewAxis, s.position, s.normal);
 #if RBL_SHADOWS > 0
     int map = int(volumeFalloff.w + 0.5) - 1;
     vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);

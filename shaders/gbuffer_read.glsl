@@ -12,6 +12,7 @@ uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthog
 uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's projection
 uniform mat4 rblInvView;                // inverse view (camera to world)
 uniform vec3 rblEye;                    // camera position
+uniform vec4 rblViewAxis;               // camera back direction, w 1 orthographic (rblViewVector)
 
 // This pixel's G-buffer texel and depth in a light pass (drawn at the G-buffer's size); false where
 // nothing was drawn (background)

@@ -120,12 +120,11 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, 
     return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
 }
 
-// Sum of the light slots at a surface point seen from eye
-vec3 rblDirectLight(RblShadingPoint s, vec3 eye)
+// Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)
+vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 {
     vec3 sum = vec3(0.0);
 #if RBL_LIGHTS > 0
-    vec3 v = rblSafeNormalize(eye - s.position, s.normal);
 #if RBL_SHADOWS > 0
     vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows
     shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);

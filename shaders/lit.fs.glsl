@@ -14,11 +14,13 @@ void main()
     vec3 emission, tangentNormal;
     RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);
 #ifdef RBL_VIEW_VECTOR
-    vec3 eye = fragEye;
+    vec3 v = rblViewVector(fragEye, fragViewAxis, fragPosition, sp.normal);
+    float viewDistance = rblViewDistance(fragEye, fragViewAxis, fragPosition);
 #else
-    vec3 eye = fragPosition + sp.normal;     // unused: no view-dependent term compiled
+    vec3 v = sp.normal;                      // unused: no view-dependent term compiled
+    float viewDistance = 0.0;
 #endif
-    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, eye) + emission;
+    vec3 color = rblAmbientLight(sp) + rblDirectLight(sp, v) + emission;
 
 #if defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 1)
     finalColor = vec4(tangentNormal*0.5 + 0.5, 1.0);
@@ -33,6 +35,6 @@ void main()
 #elif defined(RBL_DEBUG_OUTPUT) && (RBL_DEBUG_OUTPUT == 4)
     finalColor = vec4(vec3(sp.occlusion), 1.0);
 #else
-    finalColor = vec4(rblFinish(color, fragPosition, eye), alpha);
+    finalColor = vec4(rblFinish(color, viewDistance), alpha);
 #endif
 }

@@ -13,8 +13,10 @@ uniform mat4 mvp;
 uniform mat4 matModel;
 uniform mat4 matNormal;
 #ifdef RBL_VIEW_VECTOR
-uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set it: no viewPos glue needed
+uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set both: no viewPos glue needed
+uniform mat4 matProjection;
 flat out vec3 fragEye;
+flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)
 #endif
 
 out vec3 fragPosition;
@@ -33,6 +35,10 @@ void main()
     fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);
 #ifdef RBL_VIEW_VECTOR
     fragEye = -(transpose(mat3(matView))*matView[3].xyz);     // view = [R|t]: eye = -R^T t
+    // Orthographic: clip w does not depend on the position (the projection's last row is 0 0 0 w);
+    // an unset matProjection (all zero) counts as perspective, the pre-ortho behaviour
+    bool parallel = (matProjection[0][3] == 0.0) && (matProjection[1][3] == 0.0) && (matProjection[2][3] == 0.0) && (matProjection[3][3] != 0.0);
+    fragViewAxis = vec4(rblSafeNormalize(vec3(matView[0][2], matView[1][2], matView[2][2]), vec3(0.0, 0.0, 1.0)), parallel? 1.0 : 0.0);
 #endif
     gl_Position = mvp*vec4(vertexPosition, 1.0);
 }

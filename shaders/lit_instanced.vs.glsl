@@ -17,7 +17,7 @@ uniform mat4 mvp;
 //   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height
 //   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass
 //       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
-//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z)
+//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera
 //   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes
 uniform vec4 rblInstancing[7];
 
@@ -28,6 +28,7 @@ out vec3 fragNormal;
 out vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
 flat out vec3 fragEye;
+flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)
 #endif
 
 bool rblNormalizeTo(vec3 v, out vec3 o)
@@ -210,6 +211,7 @@ void main()
     fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex
 #ifdef RBL_VIEW_VECTOR
     fragEye = eye;
+    fragViewAxis = vec4(rblInstancing[3].xyz, rblInstancing[5].w);
 #endif
     gl_Position = mvp*vec4(p, 1.0);
 }

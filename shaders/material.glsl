@@ -17,6 +17,7 @@ in vec3 fragNormal;
 in vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
 flat in vec3 fragEye;           // camera position (from matView in the vertex stage)
+flat in vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)
 #endif
 
 uniform sampler2D texture0;     // albedo (sRGB)
@@ -69,6 +70,12 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     if (albedo.a < rblAlphaCutoff) discard;
 
     vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));
+    // Two-sided: a back face (a card seen from behind, an open mesh from inside) is shaded on the
+    // side the viewer sees, as the card's mirror image through its plane: the normal flips, the
+    // normal map's tangent components stay (a relief reads raised from both sides). The winding says
+    // which side is seen for any projection, where dot(N, view) would also flip the interpolated
+    // normals of front faces near a smooth silhouette.
+    float side = gl_FrontFacing? 1.0 : -1.0;
 #ifdef RBL_MATERIAL_TEXTURE
     vec4 material = texture(texture2, fragTexCoord);
 #endif
@@ -81,7 +88,9 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);
     tangentNormal = rblDecodeNormal(material);
-    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*tangentNormal.z, n);
+    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z), n*side);
+#else
+    n *= side;
 #endif
     RblShadingPoint sp;
     sp.position = fragPosition;

@@ -1,6 +1,7 @@
 // Output: fog, half-float clamp, exposure, tonemap and the display encoding, in that order (the
 // scene's fog and exposure; the program's compiled tonemap and encoding).
-//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by distance to the eye)
+//   RBL_FOG f                 0 none, 1 linear, 2 exp, 3 exp2 (by rblViewDistance: to the eye, or
+//                             along the view axis for an orthographic camera)
 //   RBL_TONEMAP t             0 none, 1 Reinhard, 2 ACES fit (Narkowicz 2015)
 //   RBL_GAMMA g               encode with pow(1/g) instead of the exact sRGB curve
 //   RBL_LINEAR_OUTPUT         keep linear light (float targets)
@@ -12,12 +13,11 @@ uniform float rblFogStart;                  // linear fog: distance where it beg
 #endif
 uniform float rblExposure;                  // the scene's exposure
 
-// Fog, exposure, tonemap and the display encoding, in that order. linearOut keeps linear light
-// (clamped to half-float range) for float targets.
-vec3 rblFinish(vec3 color, vec3 position, vec3 eye)
+// Fog at view distance d, exposure, tonemap and the display encoding, in that order. linearOut keeps
+// linear light (clamped to half-float range) for float targets.
+vec3 rblFinish(vec3 color, float d)
 {
 #if RBL_FOG > 0
-    float d = length(position - eye);
 #if RBL_FOG == 1
     float visible = clamp(1.0 - (d - rblFogStart)*rblFog.a, 0.0, 1.0);
 #elif RBL_FOG == 2

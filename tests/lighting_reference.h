@@ -129,9 +129,28 @@ static inline RefRgb refBrdf(const RefParams *d, const RefSurface *s, D3 v, D3 l
     return s->albedo;
 }
 
-// Linear radiance leaving the surface toward eye (ambient + direct + constant emission), before fog
-static inline RefRgb refShade(const RefParams *d, const RblLight *lights, int count, const RefEnvironment *env,
-                              const RefSurface *s, D3 eye)
+// Unit view vector at p (toward the viewer): perspective toward the eye; orthographic the camera's
+// back direction (target toward position) everywhere, since every ray of the projection is parallel
+static inline D3 refViewVector(Camera3D cam, D3 p)
+{
+    if (cam.projection == CAMERA_ORTHOGRAPHIC) return dNorm(dSub(d3f(cam.position), d3f(cam.target)));
+    D3 toEye = dSub(d3f(cam.position), p);
+    return (dLen(toEye) > 0.0)? dNorm(toEye) : d3(0, 0, 1);
+}
+
+// Fog distance of p: perspective the distance to the eye; orthographic the distance along the view
+// axis from the camera's plane (the eye is a plane, not a point, under a parallel projection)
+static inline double refViewDistance(Camera3D cam, D3 p)
+{
+    D3 eye = d3f(cam.position);
+    if (cam.projection == CAMERA_ORTHOGRAPHIC) return fmax(dDot(dSub(eye, p), dNorm(dSub(eye, d3f(cam.target)))), 0.0);
+    return dLen(dSub(p, eye));
+}
+
+// Linear radiance leaving the surface along the unit view vector v (ambient + direct + constant
+// emission), before fog
+static inline RefRgb refShadeView(const RefParams *d, const RblLight *lights, int count, const RefEnvironment *env,
+                                  const RefSurface *s, D3 v)
 {
     RefRgb ambient = refLinear(env->ambient);
     if (d->hemisphereAmbient)
@@ -149,8 +168,6 @@ static inline RefRgb refShade(const RefParams *d, const RblLight *lights, int co
     }
     RefRgb out = refMul(ambient, reflectance);
     out = refRgb(out.r*s->occlusion, out.g*s->occlusion, out.b*s->occlusion);
-    D3 toEye = dSub(eye, s->position);
-    D3 v = (dLen(toEye) > 0.0)? dNorm(toEye) : s->normal;
     for (int i = 0; i < count; i++)
     {
         D3 l;
@@ -161,6 +178,15 @@ static inline RefRgb refShade(const RefParams *d, const RblLight *lights, int co
     double ei = (d->emissiveIntensity == 0.0f)? 1.0 : d->emissiveIntensity;
     out = refAddScaled(out, refLinear(d->emissiveColor), ei);
     return out;
+}
+
+// The same seen from a point eye (perspective)
+static inline RefRgb refShade(const RefParams *d, const RblLight *lights, int count, const RefEnvironment *env,
+                              const RefSurface *s, D3 eye)
+{
+    D3 toEye = dSub(eye, s->position);
+    D3 v = (dLen(toEye) > 0.0)? dNorm(toEye) : s->normal;
+    return refShadeView(d, lights, count, env, s, v);
 }
 
 // Fog, half-float clamp, exposure, tonemap, display encoding: the value written to an 8-bit target, 0..1
@@ -183,27 +209,48 @@ static inline double refFinishChannel(const RefParams *d, double c, double fogCo
     return srgbEncode(c);
 }
 
-static inline RefRgb refFinish(const RefParams *d, RefRgb c, D3 position, D3 eye)
+// The output of linear radiance c at fog distance `distance`
+static inline RefRgb refFinishAt(const RefParams *d, RefRgb c, double distance)
 {
     RefRgb fog = refLinear(d->fog.color);
-    double distance = dLen(dSub(position, eye));
     return refRgb(refFinishChannel(d, c.r, fog.r, distance), refFinishChannel(d, c.g, fog.g, distance), refFinishChannel(d, c.b, fog.b, distance));
 }
 
-// World point seen through the centre of pixel (px, py) (row 0 at the top) of a width x height
-// target, on the plane through p0 with normal n; false when the ray misses it.
-static inline bool refPixelOnPlane(Camera3D cam, int width, int height, int px, int py, D3 p0, D3 n, D3 *hit)
+static inline RefRgb refFinish(const RefParams *d, RefRgb c, D3 position, D3 eye) { return refFinishAt(d, c, dLen(dSub(position, eye))); }
+
+// Ray through the centre of pixel (px, py) (row 0 at the top) of a width x height target, as raylib's
+// BeginMode3D projects: perspective from the eye (fovy = vertical angle); orthographic parallel to the
+// view axis from the camera's plane (fovy = view height in world units)
+static inline void refPixelRay(Camera3D cam, int width, int height, int px, int py, D3 *origin, D3 *dir)
 {
     D3 eye = d3f(cam.position), f = dNorm(dSub(d3f(cam.target), eye));
     D3 r = dNorm(dCross(f, d3f(cam.up))), u = dCross(r, f);
-    double t = tan(cam.fovy*PI/360.0), aspect = (double)width/height;
+    double aspect = (double)width/height;
     double ndcX = ((px + 0.5)/width)*2.0 - 1.0, ndcY = 1.0 - ((py + 0.5)/height)*2.0;
-    D3 dir = dAdd(f, dAdd(dScale(r, ndcX*t*aspect), dScale(u, ndcY*t)));
+    if (cam.projection == CAMERA_ORTHOGRAPHIC)
+    {
+        double top = cam.fovy*0.5;
+        *origin = dAdd(eye, dAdd(dScale(r, ndcX*top*aspect), dScale(u, ndcY*top)));
+        *dir = f;
+        return;
+    }
+    double t = tan(cam.fovy*PI/360.0);
+    *origin = eye;
+    *dir = dAdd(f, dAdd(dScale(r, ndcX*t*aspect), dScale(u, ndcY*t)));
+}
+
+// World point seen through the centre of pixel (px, py) on the plane through p0 with normal n; false
+// when the ray misses it or meets it nearer than raylib's near plane (RL_CULL_DISTANCE_NEAR, 0.05: the
+// GPU clips it; the ray's view-axis component is 1, so s is the view depth)
+static inline bool refPixelOnPlane(Camera3D cam, int width, int height, int px, int py, D3 p0, D3 n, D3 *hit)
+{
+    D3 origin, dir;
+    refPixelRay(cam, width, height, px, py, &origin, &dir);
     double denom = dDot(dir, n);
     if (fabs(denom) < 1e-12) return false;
-    double s = dDot(dSub(p0, eye), n)/denom;
-    if (s <= 0.0) return false;
-    *hit = dAdd(eye, dScale(dir, s));
+    double s = dDot(dSub(p0, origin), n)/denom;
+    if (s < 0.05) return false;
+    *hit = dAdd(origin, dScale(dir, s));
     return true;
 }
 

@@ -19,6 +19,7 @@
 #include "test_material_render.c"
 #include "test_lighting.c"
 #include "test_deferred.c"
+#include "test_view.c"
 #include "test_shadows.c"
 
 int main(int argc, char **argv)
@@ -69,6 +70,14 @@ int main(int argc, char **argv)
         RT_TEST(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth),
         RT_TEST(test_deferred_debug_views_show_what_they_name),
         RT_TEST(test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_and_writes_nothing),
+        RT_TEST(test_view_orthographic_plane_on_every_path_matches_the_double_reference),
+        RT_TEST(test_view_orthographic_fog_runs_along_the_view_axis),
+        RT_TEST(test_view_orthographic_sphere_model_matches_the_double_reference),
+        RT_TEST(test_view_card_seen_from_behind_is_lit_on_the_side_the_viewer_sees),
+        RT_TEST(test_view_card_from_behind_far_light_adds_nothing_and_tilt_keeps_its_side),
+        RT_TEST(test_view_culling_is_off_only_for_draws_that_show_a_back_and_restored),
+        RT_TEST(test_view_card_seen_from_behind_receives_shadows_on_its_lit_side),
+        RT_TEST(test_view_open_model_seen_from_below_is_lit_on_the_side_seen),
         RT_TEST(test_shadows_opaque_card_darkens_its_analytic_footprint_within_a_texel),
         RT_TEST(test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_every_path),
         RT_TEST(test_shadows_raylib_model_casts_its_footprint),

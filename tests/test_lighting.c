@@ -48,7 +48,11 @@ typedef struct LitScene {
     bool normalMap;             // RGB normal map (desc.material.normalEncoding = RBL_NORMAL_RGB) of one texel
     Color normal;
     Camera3D camera;
+    int facing;                 // the plane's facing mode: RBL_FACING_FIXED (litScene's; +Z) or RBL_FACING_CAMERA_PLANE
+    int path;                   // LIT_PATH_*: how the plane is drawn
 } LitScene;
+
+enum { LIT_PATH_IMMEDIATE = 0, LIT_PATH_BATCHED, LIT_PATH_INSTANCED };
 
 static Camera3D litCamera(Vector3 position, Vector3 target)
 {
@@ -71,6 +75,7 @@ static LitScene litScene(int brdf)
     s.env.up = d3(0, 1, 0);
     s.albedo = (Color){ 200, 160, 120, 255 };
     s.camera = headOnCamera();
+    s.facing = RBL_FACING_FIXED;
     return s;
 }
 
@@ -130,7 +135,42 @@ static RblLitShaderDesc litProgramDesc(const LitScene *sc, int floatFormat)
     desc.fog = sc->fog.mode;
     if (sc->normalMap) desc.material.normalEncoding = RBL_NORMAL_RGB;
     if (floatFormat != 0) desc.linearOutput = true;
+    if (sc->path == LIT_PATH_INSTANCED) desc.instanced = true;
     return desc;
+}
+
+// The scene's plane: litPlane in the scene's facing mode
+static RblBillboard litSceneBillboard(const LitScene *sc)
+{
+    RblBillboard b = litPlane();
+    b.facing = sc->facing;
+    if (b.facing != RBL_FACING_FIXED) { b.axis = (Vector3){ 0.0f, 0.0f, 0.0f }; b.up = (Vector3){ 0.0f, 0.0f, 0.0f }; }
+    return b;
+}
+
+// Draws the scene's plane on its path (inside BeginMode3D)
+static void litDrawPlane(const LitScene *sc, Material m)
+{
+    RblBillboard b = litSceneBillboard(sc);
+    if (sc->path == LIT_PATH_IMMEDIATE) { RblDrawBillboard(sc->camera, m, b); return; }
+    if (sc->path == LIT_PATH_BATCHED)
+    {
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, sc->camera);
+        RT_CHECK(RblBatchAdd(&batch, m, &b), "batch refused the plane");
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+        return;
+    }
+    RblInstanceBuffer ib = RblLoadInstanceBuffer(4);
+    RblInstance in;
+    memset(&in, 0, sizeof(in));
+    in.position = b.position; in.size = b.size; in.origin = b.origin;
+    RblInstancedDesc idesc;
+    memset(&idesc, 0, sizeof(idesc));
+    idesc.facing = b.facing; idesc.axis = b.axis; idesc.up = b.up;
+    RT_CHECK(RblDrawInstanced(&ib, sc->camera, m, idesc, &in, 1) == 1, "instanced draw refused the plane");
+    RblUnloadInstanceBuffer(&ib);
 }
 
 // The frame's scene: lights and flat ambient (0.3's RblSetLights), hemisphere (RblSetHemisphereAmbient,
@@ -236,7 +276,7 @@ static LitRender litRenderWith(const LitScene *sc, int floatFormat, bool setScen
     BeginTextureMode(rt);
     ClearBackground(BLANK);
     BeginMode3D(sc->camera);
-    RblDrawBillboard(sc->camera, m, litPlane());
+    litDrawPlane(sc, m);
     EndMode3D();
     EndTextureMode();
     if (floatFormat == 0) out.image = rtReadTarget(rt);
@@ -284,17 +324,37 @@ static int litDifferingPixels(Image a, Image b)
     return n;
 }
 
-// Surface the shader sees at world point p: the decoded map normal (as RblDecodeNormal), the albedo texel
+// The scene's plane in world space (reference.h's refQuad): corner 0 (bottom-left), unit right R (+U of
+// the texture), image-up U and normal N = R x U
+typedef struct LitFrame { D3 origin, R, U, N; double width, height; } LitFrame;
+static LitFrame litFrame(const LitScene *sc)
+{
+    RblBillboard b = litSceneBillboard(sc);
+    D3 c[4], n;
+    refQuad(sc->camera, &b, c, &n);
+    LitFrame f;
+    f.origin = c[0];
+    f.width = dLen(dSub(c[1], c[0])); f.height = dLen(dSub(c[3], c[0]));
+    f.R = dNorm(dSub(c[1], c[0])); f.U = dNorm(dSub(c[3], c[0])); f.N = n;
+    return f;
+}
+
+// Surface the shader sees at world point p of the plane: the decoded map normal (as RblDecodeNormal) in
+// the plane's tangent frame, the albedo texel. Seen from behind (the view vector on the -N side), the
+// card is shaded as its mirror image through its plane: N flips, the in-plane (tangent) components of
+// the map's normal stay.
 static RefSurface litSurface(const LitScene *sc, D3 p)
 {
     RefSurface s;
     memset(&s, 0, sizeof(s));
     s.position = p;
-    s.normal = d3(0, 0, 1);
+    LitFrame f = litFrame(sc);
+    D3 n = (dDot(f.N, refViewVector(sc->camera, p)) < 0.0)? dScale(f.N, -1.0) : f.N;
+    s.normal = n;
     if (sc->normalMap)
     {
         D3 e = d3(sc->normal.r/255.0*2.0 - 1.0, sc->normal.g/255.0*2.0 - 1.0, sc->normal.b/255.0*2.0 - 1.0);
-        if (dDot(e, e) >= 1.0/4096.0) s.normal = dNorm(e);      // T = +X, image up = +Y, N = +Z
+        if (dDot(e, e) >= 1.0/4096.0) s.normal = dNorm(dAdd(dAdd(dScale(f.R, e.x), dScale(f.U, e.y)), dScale(n, e.z)));
     }
     s.albedo = refLinear(sc->albedo);
     s.specularMap = -1.0;
@@ -314,14 +374,16 @@ static LitError litCompare(const LitScene *sc, Image img)
     double sum = 0.0;
     RefParams d = litShading(sc);
     int shaded = litShadedCount(sc);
+    LitFrame f = litFrame(sc);
     for (int py = 1; py < LIT_TARGET - 1; py++)
         for (int px = 1; px < LIT_TARGET - 1; px++)
         {
             D3 p;
-            if (!refPixelOnPlane(sc->camera, LIT_TARGET, LIT_TARGET, px, py, d3(0, 0, 0), d3(0, 0, 1), &p)) continue;
-            if ((fabs(p.x) > LIT_PLANE*0.49) || (fabs(p.y) > LIT_PLANE*0.49)) continue;
+            if (!refPixelOnPlane(sc->camera, LIT_TARGET, LIT_TARGET, px, py, f.origin, f.N, &p)) continue;
+            double a = dDot(dSub(p, f.origin), f.R)/f.width, b = dDot(dSub(p, f.origin), f.U)/f.height;
+            if ((a < 0.01) || (a > 0.99) || (b < 0.01) || (b > 0.99)) continue;
             RefSurface s = litSurface(sc, p);
-            RefRgb ref = refFinish(&d, refShade(&d, sc->lights, shaded, &sc->env, &s, d3f(sc->camera.position)), p, d3f(sc->camera.position));
+            RefRgb ref = refFinishAt(&d, refShadeView(&d, sc->lights, shaded, &sc->env, &s, refViewVector(sc->camera, p)), refViewDistance(sc->camera, p));
             Color c = rtPixel(img, px, py);
             const double got[3] = { c.r, c.g, c.b }, want[3] = { ref.r*255.0, ref.g*255.0, ref.b*255.0 };
             for (int ch = 0; ch < 3; ch++)
