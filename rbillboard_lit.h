@@ -367,6 +367,14 @@
 *                                                        light stay
 *           map.caster, map.casterInstanced            removed (casters are the header's)
 *           instanceBuffer.shaderId, .shaderGeneration, .loc   removed (the registry keeps locations)
+*           instanceBuffer.staging, .vaoId, .vboId     private (buffer.state); capacity, skipped stay
+*           void RblBeginBatch(...)                    bool RblBeginBatch(...): refuses while billboards
+*                                                        are pending (was: dropped them)
+*           RblEncodeNormal(NaN/zero normal) = +Z      refused with a log line, out untouched
+*         Reliability (0.4): every refusal logs one line and changes nothing (a contract suite over
+*         all public functions, one process per case); limits RBL_MAX_BATCH_BILLBOARDS,
+*         RBL_MAX_INSTANCES, RBL_MAX_SCENE_LIGHTS, RBL_MAX_LIGHT_INTENSITY, RBL_MAX_TARGET_SIZE,
+*         RBL_MAX_OCCLUSION_RADIUS; allocation failures swept on every allocating path.
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
