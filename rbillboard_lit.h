@@ -179,11 +179,16 @@
 *       into the accumulation) -> RblResolveGBuffer (fog, exposure, tonemap, encoding; writes depth).
 *       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
 *         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a occlusion
-*         RT1 RGBA8    rgb world normal, octahedral (Cigolle et al. 2014), 12 bits per coordinate:
-*                      r = x[11:4], g = x[3:0] << 4 | y[11:8], b = y[7:0]; a specular intensity
-*                      (Blinn-Phong, colour folded to its luminance) or perceptual roughness (GGX)
-*         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high, g low byte;
-*                      GGX: r metalness
+*         RT1 RGBA8 + RT2 RG8: one 48-bit word, RT1.r its most significant byte:
+*           GGX        normal 30 bits | roughness 10: log over [0.045, 1] | metalness 8: linear
+*           Blinn-P.   normal 29 bits | shininess 10: log2(n)/11 | intensity 9: log2(1 + 256 s)/9
+*                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
+*           Lambert    normal 30 bits | 0 | specular map 8 (debug view)
+*         normal       octahedral (Cigolle et al. 2014), L levels per coordinate, L odd (0 and +-1 are
+*                      codes: axis-aligned normals exact), code x L + y, the nearest of the 4 codes
+*                      around the point; L = 32767 (30 bits, max 0.0049 deg) or 23169 (29 bits)
+*       Steps are fixed relative changes of what the BRDF reads (a highlight's error is relative);
+*       shaders/gbuffer_codec.glsl has the packing, README "Deferred" the measured errors and limits.
 *       plus RT3 RGBA16F accumulation (emission from the geometry pass, then light) and a depth texture
 *       (rlLoadTextureDepth, at least 24 bits) under raylib's perspective (rlgl's cull distances).
 *       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
@@ -248,9 +253,12 @@
 *         the target, viewport and matrices it found but leaves the depth test off and culling on (as
 *         EndMode3D): run shadow passes before BeginMode3D (inside BeginTextureMode is fine).
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
-*         refused at draw); Blinn-Phong specular colour folded to its luminance; at most RBL_MAX_LIGHTS
-*         unbounded lights (directional, range 0); the geometry pass ends on the default framebuffer
-*         (run it outside BeginTextureMode, resolve inside); resolve into a target of its size.
+*         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
+*         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
+*         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
+*         BeginTextureMode, resolve inside); resolve into a target of its size. Below GGX roughness
+*         ~0.1 a curved surface's pixel on a highlight's steepest flank can differ from forward by
+*         more than 2/255 (first-order bound 9.5/255 at 0.045; 2/255 everywhere needs ~50 bits).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
@@ -687,8 +695,8 @@ typedef struct RblGBuffer {
     int width;                      // Size in pixels
     int height;
     Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
-    Texture2D normal;               // RGBA8: octahedral 12+12 normal, specular/roughness
-    Texture2D params;               // RG8: Blinn-Phong shininess (16-bit log2) or GGX metalness
+    Texture2D normal;               // RGBA8: bits 47..16 of the normal/material word (octahedral normal, ...)
+    Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblGBufferDesc desc;            // Settings, defaults applied
