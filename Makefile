@@ -118,7 +118,7 @@ $(BUILD)/bench/bench_lighting: tests/bench/bench_lighting.c tests/bench/bench.h 
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_lighting.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/bench/bench_deferred: tests/bench/bench_deferred.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/bench/bench_deferred: tests/bench/bench_deferred.c tests/bench/bench.h tests/lighting_reference.h tests/reference.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_deferred.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 

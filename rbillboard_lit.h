@@ -188,11 +188,16 @@
 *       into the accumulation) -> RblResolveGBuffer (fog, exposure, tonemap, encoding; writes depth).
 *       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
 *         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a occlusion
-*         RT1 RGBA8    rgb world normal, octahedral (Cigolle et al. 2014), 12 bits per coordinate:
-*                      r = x[11:4], g = x[3:0] << 4 | y[11:8], b = y[7:0]; a specular intensity
-*                      (Blinn-Phong, colour folded to its luminance) or perceptual roughness (GGX)
-*         RT2 RG8      Blinn-Phong: code = round(log2(shininess)/11*65535), r high, g low byte;
-*                      GGX: r metalness
+*         RT1 RGBA8 + RT2 RG8: one 48-bit word, RT1.r its most significant byte:
+*           GGX        normal 30 bits | roughness 10: log over [0.045, 1] | metalness 8: linear
+*           Blinn-P.   normal 29 bits | shininess 10: log2(n)/11 | intensity 9: log2(1 + 256 s)/9
+*                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
+*           Lambert    normal 30 bits | 0 | specular map 8 (debug view)
+*         normal       octahedral (Cigolle et al. 2014), L levels per coordinate, L odd (0 and +-1 are
+*                      codes: axis-aligned normals exact), code x L + y, the nearest of the 4 codes
+*                      around the point; L = 32767 (30 bits, max 0.0049 deg) or 23169 (29 bits)
+*       Steps are fixed relative changes of what the BRDF reads (a highlight's error is relative);
+*       shaders/gbuffer_codec.glsl has the packing, README "Deferred" the measured errors and limits.
 *       plus RT3 RGBA16F accumulation (emission from the geometry pass, then light) and a depth texture
 *       (rlLoadTextureDepth, at least 24 bits) under raylib's projection (rlgl's cull distances).
 *       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
@@ -258,9 +263,12 @@
 *         the target, viewport and matrices it found but leaves the depth test off and culling on (as
 *         EndMode3D): run shadow passes before BeginMode3D (inside BeginTextureMode is fine).
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
-*         refused at draw); Blinn-Phong specular colour folded to its luminance; at most RBL_MAX_LIGHTS
-*         unbounded lights (directional, range 0); the geometry pass ends on the default framebuffer
-*         (run it outside BeginTextureMode, resolve inside); resolve into a target of its size.
+*         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
+*         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
+*         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
+*         BeginTextureMode, resolve inside); resolve into a target of its size. Below GGX roughness
+*         ~0.1 a curved surface's pixel on a highlight's steepest flank can differ from forward by
+*         more than 2/255 (first-order bound 9.5/255 at 0.045; 2/255 everywhere needs ~50 bits).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
@@ -734,8 +742,8 @@ typedef struct RblGBuffer {
     int width;                      // Size in pixels
     int height;
     Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
-    Texture2D normal;               // RGBA8: octahedral 12+12 normal, specular/roughness
-    Texture2D params;               // RG8: Blinn-Phong shininess (16-bit log2) or GGX metalness
+    Texture2D normal;               // RGBA8: bits 47..16 of the normal/material word (octahedral normal, ...)
+    Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblGBufferDesc desc;            // Settings, defaults applied
@@ -1099,6 +1107,7 @@ static const char *const rbl__shader_common[] = {
     "\n",
     "#define RBL_PI 3.14159265358979\n",
     "#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf\n",
+    "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
     "\n",
     "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
     "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
@@ -1275,17 +1284,18 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "#if RBL_BRDF == 1\n",
     "    // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)\n",
     "    float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));\n",
+    "    uint field1 = rblQuantize(rblEncodeShininess(sp.shininess), RBL_GB_FIELD1_BITS);\n",
+    "    uint field2 = rblQuantize(rblEncodeIntensity(specular), RBL_GB_FIELD2_BITS);\n",
     "#elif RBL_BRDF == 2\n",
-    "    float specular = sp.roughness;\n",
+    "    uint field1 = rblQuantize(rblEncodeRoughness(sp.roughness), RBL_GB_FIELD1_BITS);\n",
+    "    uint field2 = rblQuantize(sp.metalness, RBL_GB_FIELD2_BITS);\n",
     "#else\n",
-    "    float specular = sp.specular;         // Lambert reads neither; the debug output shows the map\n",
+    "    uint field1 = 0u;                      // Lambert reads neither; the debug output shows the map\n",
+    "    uint field2 = rblQuantize(sp.specular, RBL_GB_FIELD2_BITS);\n",
     "#endif\n",
-    "    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));\n",
-    "#if RBL_BRDF == 1\n",
-    "    rblOutParams = vec4(rblPackShininess(sp.shininess), 0.0, 1.0);\n",
-    "#else\n",
-    "    rblOutParams = vec4(sp.metalness, 0.0, 0.0, 1.0);\n",
-    "#endif\n",
+    "    vec2 params;\n",
+    "    rblPackWord(sp.normal, field1, field2, rblOutNormal, params);\n",
+    "    rblOutParams = vec4(params, 0.0, 1.0);\n",
     "    rblOutAccum = vec4(emission, 1.0);\n",
     "}\n",
     NULL };
@@ -1293,43 +1303,109 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "// G-buffer codec: how the geometry pass packs a surface into 10 bytes per pixel and the lighting\n",
     "// passes unpack it (RblLoadGBuffer; position is never stored, it comes back from depth):\n",
     "//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a occlusion\n",
-    "//   RT1 RGBA8    rgb world normal, octahedral 12+12 bits, a specular (Blinn-Phong intensity, specular\n",
-    "//                colour luminance folded in / GGX perceptual roughness)\n",
-    "//   RT2 RG8      Blinn-Phong: log2(shininess)/11 in 16 bits (r high, g low byte); GGX: r metalness\n",
+    "//   RT1 RGBA8 + RT2 RG8: one 48-bit word, RT1.r its most significant byte, RT2.g its least:\n",
+    "//     GGX, Lambert   normal 30 bits | perceptual roughness 10 (GGX; Lambert: 0) | metalness 8 (Lambert:\n",
+    "//                    the specular map, for the debug view)\n",
+    "//     Blinn-Phong    normal 29 bits | shininess 10 | specular intensity 9 (colour folded to its luminance)\n",
     "//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then ambient and lights\n",
+    "// Every field is stored in the form whose step is the same relative change of what the BRDF reads\n",
+    "// (a highlight's error is relative), except metalness (linear in the output). Not stored: the\n",
+    "// normal's third coordinate, roughness below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the\n",
+    "// (n + 8)/8 normalisation.\n",
+    "//   normal       octahedral (Cigolle et al. 2014), L levels per coordinate, L odd so that 0 and +-1\n",
+    "//                are codes (axis-aligned normals exact), code = x L + y; of the 4 neighbouring codes\n",
+    "//                the one decoding nearest the normal. L = 32767 (GGX, Lambert), 23169 (Blinn-Phong).\n",
+    "//   roughness    log over [RBL_MIN_ROUGHNESS, 1], 1023 steps\n",
+    "//   metalness    linear, 255 steps (0 and 1 exact)\n",
+    "//   shininess    log2(n)/11, 1023 steps (n in 1..2048)\n",
+    "//   intensity    log2(1 + 256 s)/9, 511 steps: relative above 1/256, linear toward 0 (0 exact), s <= 511/256\n",
     "#include \"common.glsl\"\n",
     "\n",
-    "// World normal <-> octahedral 12+12 bits in three 8-bit channels (the G-buffer's normal). Octahedral\n",
-    "// map (Cigolle et al. 2014), each coordinate rounded to 12 bits, packed high byte / two nibbles / low byte.\n",
-    "vec3 rblPackNormal(vec3 n)\n",
+    "#if RBL_BRDF == 1\n",
+    "#define RBL_GB_NORMAL_LEVELS 23169u     // 23169^2 < 2^29\n",
+    "#define RBL_GB_NORMAL_BITS 29u\n",
+    "#define RBL_GB_FIELD1_BITS 10u          // shininess\n",
+    "#define RBL_GB_FIELD2_BITS 9u           // specular intensity\n",
+    "#else\n",
+    "#define RBL_GB_NORMAL_LEVELS 32767u     // 32767^2 < 2^30\n",
+    "#define RBL_GB_NORMAL_BITS 30u\n",
+    "#define RBL_GB_FIELD1_BITS 10u          // roughness\n",
+    "#define RBL_GB_FIELD2_BITS 8u           // metalness (Lambert: specular map)\n",
+    "#endif\n",
+    "#define RBL_GB_SPLIT (32u - RBL_GB_NORMAL_BITS)     // bits of field 1 in RT1 (the rest in RT2)\n",
+    "\n",
+    "// Octahedral map of a unit vector onto [-1,1]^2 and back (the lower hemisphere folded over the diagonals)\n",
+    "vec2 rblOctahedral(vec3 n)\n",
     "{\n",
     "    n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-20);\n",
     "    vec2 e = n.xy;\n",
     "    if (n.z < 0.0) e = (1.0 - abs(n.yx))*vec2((n.x >= 0.0)? 1.0 : -1.0, (n.y >= 0.0)? 1.0 : -1.0);\n",
-    "    uvec2 q = uvec2(floor(clamp(e*0.5 + 0.5, 0.0, 1.0)*4095.0 + 0.5));\n",
-    "    return vec3(float(q.x >> 4u), float(((q.x & 15u) << 4u) | (q.y >> 8u)), float(q.y & 255u))/255.0;\n",
+    "    return e;\n",
     "}\n",
     "\n",
-    "vec3 rblUnpackNormal(vec3 c)\n",
+    "vec3 rblOctahedralDecode(vec2 e)\n",
     "{\n",
-    "    uvec3 b = uvec3(floor(c*255.0 + 0.5));\n",
-    "    vec2 e = vec2(float((b.x << 4u) | (b.y >> 4u)), float(((b.y & 15u) << 8u) | b.z))/4095.0*2.0 - 1.0;\n",
     "    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));\n",
     "    float t = max(-n.z, 0.0);\n",
     "    n.xy += vec2((n.x >= 0.0)? -t : t, (n.y >= 0.0)? -t : t);\n",
     "    return normalize(n);        // |n| >= 1/sqrt(3): never zero\n",
     "}\n",
     "\n",
-    "// Blinn-Phong shininess <-> 16-bit code in two 8-bit channels\n",
-    "vec2 rblPackShininess(float shininess)\n",
+    "// Normal code: the nearest of the 4 codes around the octahedral point (rounding each coordinate\n",
+    "// alone can pick a farther one: the map's cells are sheared). Compared as |d - n|^2, which float\n",
+    "// resolves at these angles (1 - cos would not).\n",
+    "uint rblPackNormal(vec3 n)\n",
     "{\n",
-    "    float code = floor(clamp(log2(max(shininess, 1.0))/11.0, 0.0, 1.0)*65535.0 + 0.5);\n",
-    "    return vec2(floor(code/256.0)/255.0, mod(code, 256.0)/255.0);\n",
+    "    float centre = float(RBL_GB_NORMAL_LEVELS - 1u)*0.5;\n",
+    "    vec2 f = clamp(rblOctahedral(n)*centre + centre, 0.0, 2.0*centre);\n",
+    "    vec2 base = floor(f), q = base;\n",
+    "    float best = 1e30;\n",
+    "    for (int k = 0; k < 4; k++)\n",
+    "    {\n",
+    "        vec2 c = min(base + vec2(float(k & 1), float(k >> 1)), vec2(2.0*centre));\n",
+    "        vec3 d = rblOctahedralDecode((c - centre)/centre) - n;\n",
+    "        float e = dot(d, d);\n",
+    "        if (e < best) { best = e; q = c; }\n",
+    "    }\n",
+    "    return uint(q.x)*RBL_GB_NORMAL_LEVELS + uint(q.y);\n",
     "}\n",
     "\n",
-    "float rblUnpackShininess(float high, float low)\n",
+    "vec3 rblUnpackNormal(uint code)\n",
     "{\n",
-    "    return exp2((floor(high*255.0 + 0.5)*256.0 + floor(low*255.0 + 0.5))/65535.0*11.0);\n",
+    "    float centre = float(RBL_GB_NORMAL_LEVELS - 1u)*0.5;\n",
+    "    uint x = code/RBL_GB_NORMAL_LEVELS;\n",
+    "    return rblOctahedralDecode((vec2(float(x), float(code - x*RBL_GB_NORMAL_LEVELS)) - centre)/centre);\n",
+    "}\n",
+    "\n",
+    "// Fields in [0,1] <-> codes of b bits\n",
+    "uint rblQuantize(float t, uint bits) { return uint(floor(clamp(t, 0.0, 1.0)*float((1u << bits) - 1u) + 0.5)); }\n",
+    "float rblDequantize(uint code, uint bits) { return float(code)/float((1u << bits) - 1u); }\n",
+    "\n",
+    "float rblEncodeRoughness(float r) { return 1.0 - log2(clamp(r, RBL_MIN_ROUGHNESS, 1.0))/log2(RBL_MIN_ROUGHNESS); }\n",
+    "float rblDecodeRoughness(float t) { return exp2(log2(RBL_MIN_ROUGHNESS)*(1.0 - t)); }\n",
+    "float rblEncodeShininess(float n) { return log2(max(n, 1.0))/11.0; }\n",
+    "float rblDecodeShininess(float t) { return exp2(t*11.0); }\n",
+    "float rblEncodeIntensity(float s) { return log2(1.0 + 256.0*max(s, 0.0))/9.0; }\n",
+    "float rblDecodeIntensity(float t) { return (exp2(t*9.0) - 1.0)/256.0; }\n",
+    "\n",
+    "// The 48-bit word as RT1 (4 bytes) and RT2 (2 bytes), each byte /255 as an 8-bit target stores it\n",
+    "void rblPackWord(vec3 normal, uint field1, uint field2, out vec4 rt1, out vec2 rt2)\n",
+    "{\n",
+    "    uint hi = (rblPackNormal(normal) << RBL_GB_SPLIT) | (field1 >> (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT));\n",
+    "    uint lo = ((field1 & ((1u << (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT)) - 1u)) << RBL_GB_FIELD2_BITS) | field2;\n",
+    "    rt1 = vec4(float(hi >> 24u), float((hi >> 16u) & 255u), float((hi >> 8u) & 255u), float(hi & 255u))/255.0;\n",
+    "    rt2 = vec2(float(lo >> 8u), float(lo & 255u))/255.0;\n",
+    "}\n",
+    "\n",
+    "void rblUnpackWord(vec4 rt1, vec2 rt2, out vec3 normal, out uint field1, out uint field2)\n",
+    "{\n",
+    "    uvec4 a = uvec4(floor(rt1*255.0 + 0.5));\n",
+    "    uvec2 b = uvec2(floor(rt2*255.0 + 0.5));\n",
+    "    uint hi = (a.x << 24u) | (a.y << 16u) | (a.z << 8u) | a.w;\n",
+    "    uint lo = (b.x << 8u) | b.y;\n",
+    "    normal = rblUnpackNormal(hi >> RBL_GB_SPLIT);\n",
+    "    field1 = ((hi & ((1u << RBL_GB_SPLIT) - 1u)) << (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT)) | (lo >> RBL_GB_FIELD2_BITS);\n",
+    "    field2 = lo & ((1u << RBL_GB_FIELD2_BITS) - 1u);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_gbuffer_read[] = {
@@ -1339,8 +1415,8 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "#include \"gbuffer_codec.glsl\"\n",
     "\n",
     "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion\n",
-    "uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specular/roughness\n",
-    "uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness\n",
+    "uniform sampler2D rblGNormal;           // RGBA8: bits 47..16 of the normal/material word\n",
+    "uniform sampler2D rblGParams;           // RG8: bits 15..0\n",
     "uniform sampler2D rblGDepth;            // depth texture of the geometry pass\n",
     "uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)\n",
     "uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0\n",
@@ -1381,19 +1457,23 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    vec4 p = texelFetch(rblGParams, texel, 0);\n",
     "    RblShadingPoint s;\n",
     "    s.position = position;\n",
-    "    s.normal = rblUnpackNormal(n.rgb);\n",
+    "    uint field1, field2;\n",
+    "    rblUnpackWord(n, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
     "    s.albedo = rblSrgbToLinear(a.rgb);\n",
     "    s.occlusion = a.a;\n",
-    "    s.specular = n.a;                   // one channel: the intensity or the roughness, by BRDF\n",
-    "    s.roughness = n.a;\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
     "    s.metalness = 0.0;\n",
+    "    s.roughness = 0.5;\n",
     "#if RBL_BRDF == 1\n",
-    "    // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
-    "    s.shininess = rblUnpackShininess(p.r, p.a);\n",
+    "    s.shininess = rblDecodeShininess(rblDequantize(field1, RBL_GB_FIELD1_BITS));\n",
+    "    s.specular = rblDecodeIntensity(rblDequantize(field2, RBL_GB_FIELD2_BITS));\n",
     "#elif RBL_BRDF == 2\n",
-    "    s.metalness = p.r;\n",
+    "    s.roughness = rblDecodeRoughness(rblDequantize(field1, RBL_GB_FIELD1_BITS));\n",
+    "    s.metalness = rblDequantize(field2, RBL_GB_FIELD2_BITS);\n",
+    "    s.specular = s.roughness;           // the debug view shows the stored channel\n",
+    "#else\n",
+    "    s.specular = rblDequantize(field2, RBL_GB_FIELD2_BITS);\n",
     "#endif\n",
     "    return s;\n",
     "}\n",
@@ -1411,7 +1491,6 @@ static const char *const rbl__shader_lights[] = {
     "#include \"surface.glsl\"\n",
     "#include \"shadows.glsl\"\n",
     "\n",
-    "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
     "#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite\n",
     "\n",

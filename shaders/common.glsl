@@ -3,6 +3,7 @@
 
 #define RBL_PI 3.14159265358979
 #define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf
+#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)
 
 // normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.
 vec3 rblSafeNormalize(vec3 v, vec3 fallback)

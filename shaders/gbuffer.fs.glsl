@@ -17,16 +17,17 @@ void main()
 #if RBL_BRDF == 1
     // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)
     float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));
+    uint field1 = rblQuantize(rblEncodeShininess(sp.shininess), RBL_GB_FIELD1_BITS);
+    uint field2 = rblQuantize(rblEncodeIntensity(specular), RBL_GB_FIELD2_BITS);
 #elif RBL_BRDF == 2
-    float specular = sp.roughness;
+    uint field1 = rblQuantize(rblEncodeRoughness(sp.roughness), RBL_GB_FIELD1_BITS);
+    uint field2 = rblQuantize(sp.metalness, RBL_GB_FIELD2_BITS);
 #else
-    float specular = sp.specular;         // Lambert reads neither; the debug output shows the map
+    uint field1 = 0u;                      // Lambert reads neither; the debug output shows the map
+    uint field2 = rblQuantize(sp.specular, RBL_GB_FIELD2_BITS);
 #endif
-    rblOutNormal = vec4(rblPackNormal(sp.normal), clamp(specular, 0.0, 1.0));
-#if RBL_BRDF == 1
-    rblOutParams = vec4(rblPackShininess(sp.shininess), 0.0, 1.0);
-#else
-    rblOutParams = vec4(sp.metalness, 0.0, 0.0, 1.0);
-#endif
+    vec2 params;
+    rblPackWord(sp.normal, field1, field2, rblOutNormal, params);
+    rblOutParams = vec4(params, 0.0, 1.0);
     rblOutAccum = vec4(emission, 1.0);
 }

@@ -4,8 +4,8 @@
 #include "gbuffer_codec.glsl"
 
 uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion
-uniform sampler2D rblGNormal;           // RGBA8: octahedral 12+12 normal, specular/roughness
-uniform sampler2D rblGParams;           // RG8: shininess (16-bit log) or metalness
+uniform sampler2D rblGNormal;           // RGBA8: bits 47..16 of the normal/material word
+uniform sampler2D rblGParams;           // RG8: bits 15..0
 uniform sampler2D rblGDepth;            // depth texture of the geometry pass
 uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)
 uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0
@@ -46,19 +46,23 @@ RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
     vec4 p = texelFetch(rblGParams, texel, 0);
     RblShadingPoint s;
     s.position = position;
-    s.normal = rblUnpackNormal(n.rgb);
+    uint field1, field2;
+    rblUnpackWord(n, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)
     s.albedo = rblSrgbToLinear(a.rgb);
     s.occlusion = a.a;
-    s.specular = n.a;                   // one channel: the intensity or the roughness, by BRDF
-    s.roughness = n.a;
     s.specularColor = vec3(1.0);
     s.shininess = 1.0;
     s.metalness = 0.0;
+    s.roughness = 0.5;
 #if RBL_BRDF == 1
-    // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)
-    s.shininess = rblUnpackShininess(p.r, p.a);
+    s.shininess = rblDecodeShininess(rblDequantize(field1, RBL_GB_FIELD1_BITS));
+    s.specular = rblDecodeIntensity(rblDequantize(field2, RBL_GB_FIELD2_BITS));
 #elif RBL_BRDF == 2
-    s.metalness = p.r;
+    s.roughness = rblDecodeRoughness(rblDequantize(field1, RBL_GB_FIELD1_BITS));
+    s.metalness = rblDequantize(field2, RBL_GB_FIELD2_BITS);
+    s.specular = s.roughness;           // the debug view shows the stored channel
+#else
+    s.specular = rblDequantize(field2, RBL_GB_FIELD2_BITS);
 #endif
     return s;
 }

@@ -10,7 +10,6 @@
 #include "surface.glsl"
 #include "shadows.glsl"
 
-#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)
 #define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
 #define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite
 

@@ -64,6 +64,8 @@ int main(int argc, char **argv)
         RT_TEST(test_deferred_matches_forward_with_an_orthographic_camera),
         RT_TEST(test_deferred_eye_inside_a_light_volume_is_lit_like_forward),
         RT_TEST(test_deferred_1024_lights_match_the_double_reference),
+        RT_TEST(test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved),
+        RT_TEST(test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255_or_the_10_byte_bound),
         RT_TEST(test_deferred_normal_encoding_error_table_against_published_figures),
         RT_TEST(test_deferred_position_from_depth_error_at_near_middle_far),
         RT_TEST(test_deferred_forced_failure_logs_and_the_forward_fallback_renders),

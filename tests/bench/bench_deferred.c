@@ -33,6 +33,15 @@
 //                Checked once, untimed: every case writes every pixel; volumes and naive agree within
 //                1/255 (max channel difference over covered pixels) at every light count; forward and
 //                deferred agree at 16 lights (one forward pass, so the same light sum).
+//   encoding     (CPU, double; no GL) what the G-buffer's quantisation alone does to the image, 0.3's
+//                codec beside this one: the double-precision reference (tests/lighting_reference.h)
+//                shades every pixel of the GPU sweep test's two scenes (test_deferred.c: an axis-aligned
+//                plane seen obliquely, a sphere of radius 1.2 filling a 128x128 frame; a point and a
+//                directional light, sRGB, no tonemap) once with the exact surface and once with the
+//                surface each codec stores (normal, roughness, metalness, shininess, intensity decoded
+//                as the shaders do); max and mean channel difference in 1/255 before 8-bit rounding.
+//                Normal codes over 400000 uniform sphere normals (degrees), and the first-order worst
+//                case of a GGX highlight's flank: 255 sRGB'(1) (2/alpha) x the code's worst normal error.
 // Rows (suite "deferred"):
 //   gbuffer: bytes_per_pixel (RblGBufferBytesPerPixel), gl_bytes_per_pixel (GL-reported bits / 8)
 //   gbuffer_albedo|gbuffer_normal|gbuffer_params|gbuffer_depth|gbuffer_accum: bytes_per_pixel
@@ -43,12 +52,16 @@
 //   deferred_volumes_<n>lights: speedup_vs_naive (median of per-run naive/volumes), speedup_vs_forward
 //   deferred_vs_forward: crossover_lights (smallest tested n where volumes beat forward; 0 = none)
 //   check_volumes_vs_naive_<n>lights, check_forward_vs_deferred_16lights: max_diff (1/255), pixels
+//   normal_<old_12x12_rounded|30bit_nearest|29bit_nearest>: mean_deg, max_deg
+//   encoding_<brdf>_<parameters>_<plane|sphere>: old_max, old_mean, new_max, new_mean (1/255)
+//   flank_bound_ggx_r<roughness>: old, new (1/255, first-order worst case of the normal code)
 // Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "rlgl.h"
 #include "harness.h"
 #include "bench.h"
+#include "lighting_reference.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -314,6 +327,229 @@ static bool ScatterLights(Scene *s, int n)
 }
 
 //----------------------------------------------------------------------------------
+// Encoding error (CPU, double): 0.3's G-buffer codec and this one, mirrored from their layouts
+//----------------------------------------------------------------------------------
+typedef enum { CODEC_OLD = 0, CODEC_NEW } Codec;
+
+// Octahedral code q in 0..levels-1 stands for e = q/(levels - 1)*2 - 1 (Cigolle et al. 2014)
+static D3 OctDecode(int qx, int qy, int levels)
+{
+    double h = (levels - 1)*0.5, ex = (qx - h)/h, ey = (qy - h)/h;
+    D3 r = d3(ex, ey, 1.0 - fabs(ex) - fabs(ey));
+    double t = fmax(-r.z, 0.0);
+    r.x += (r.x >= 0.0)? -t : t;
+    r.y += (r.y >= 0.0)? -t : t;
+    return dNorm(r);
+}
+
+// Rounded per coordinate (0.3: 4096 levels) or the nearest of the 4 neighbouring codes (the G-buffer now)
+static D3 OctRoundTrip(D3 n, int levels, bool nearest)
+{
+    double s = fabs(n.x) + fabs(n.y) + fabs(n.z), ex = n.x/s, ey = n.y/s;
+    if (n.z < 0.0) { double tx = (1.0 - fabs(ey))*((ex >= 0.0)? 1.0 : -1.0), ty = (1.0 - fabs(ex))*((ey >= 0.0)? 1.0 : -1.0); ex = tx; ey = ty; }
+    double h = (levels - 1)*0.5, fx = ex*h + h, fy = ey*h + h;
+    if (!nearest) return OctDecode((int)floor(fx + 0.5), (int)floor(fy + 0.5), levels);
+    D3 best = n;
+    double cosBest = -2.0;
+    for (int k = 0; k < 4; k++)
+    {
+        int qx = (int)floor(fx) + (k & 1), qy = (int)floor(fy) + (k >> 1);
+        D3 d = OctDecode((qx < levels)? qx : levels - 1, (qy < levels)? qy : levels - 1, levels);
+        if (dDot(d, n) > cosBest) { cosBest = dDot(d, n); best = d; }
+    }
+    return best;
+}
+
+static double Quantize(double t, int bits) { double m = (double)((1 << bits) - 1); return floor(fmin(fmax(t, 0.0), 1.0)*m + 0.5)/m; }
+
+// The material values a codec hands the lighting passes (RefParams: what the reference reads)
+static RefParams StoredParams(RefParams p, Codec c)
+{
+    RefParams q = p;
+    if (c == CODEC_OLD)
+    {
+        q.roughness = (float)Quantize(p.roughness, 8);                                  // RT1.a, linear
+        q.metalness = (float)Quantize(p.metalness, 8);
+        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, 16)*11.0);
+        q.specular = (float)Quantize(p.specular, 8);                                    // RT1.a, linear, clamped to 1
+    }
+    else
+    {
+        double lo = log2(0.045);
+        q.roughness = (float)exp2(lo*(1.0 - Quantize(1.0 - log2(fmin(fmax(p.roughness, 0.045), 1.0))/lo, 10)));
+        q.metalness = (float)Quantize(p.metalness, 8);
+        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, 10)*11.0);
+        q.specular = (float)((exp2(Quantize(log2(1.0 + 256.0*p.specular)/9.0, 9)*9.0) - 1.0)/256.0);
+    }
+    return q;
+}
+
+static D3 StoredNormal(D3 n, int brdf, Codec c)
+{
+    if (c == CODEC_OLD) return OctRoundTrip(n, 4096, false);
+    return OctRoundTrip(n, (brdf == RBL_BRDF_BLINN_PHONG)? 23169 : 32767, true);
+}
+
+typedef struct EncError { double max, mean; } EncError;
+
+// The GPU sweep test's scenes (tests/test_deferred.c, defSweepScene), shaded in double at each pixel centre
+static EncError EncodingError(RefParams p, bool sphere, Codec c)
+{
+    const int size = 128;
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    RblLight lights[2];
+    memset(lights, 0, sizeof(lights));
+    lights[0].type = RBL_LIGHT_POINT; lights[0].color = (Color){ 255, 240, 220, 255 };
+    lights[1].type = RBL_LIGHT_DIRECTIONAL; lights[1].color = WHITE;
+    if (sphere)
+    {
+        cam = makeCamera((Vector3){ 0.0f, 0.0f, 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        lights[0].position = (Vector3){ 1.6f, 1.2f, 2.4f }; lights[0].intensity = 4.0f; lights[0].range = 8.0f;
+        lights[1].direction = (Vector3){ 0.5f, -0.3f, -1.0f }; lights[1].intensity = 0.6f;
+    }
+    else
+    {
+        cam = makeCamera((Vector3){ 0.0f, -2.5f, 2.0f }, (Vector3){ 0.0f, 0.5f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        lights[0].position = (Vector3){ 0.3f, 0.8f, 0.6f }; lights[0].intensity = 0.5f; lights[0].range = 4.0f;
+        lights[1].direction = (Vector3){ 0.5f, -3.7f, -2.0f }; lights[1].intensity = 0.6f;
+    }
+    RefEnvironment env;
+    memset(&env, 0, sizeof(env));
+    env.ambient = (Color){ 20, 22, 28, 255 };
+    env.up = d3(0, 1, 0);
+    RefParams q = StoredParams(p, c);
+    D3 eye = d3f(cam.position), f = dNorm(dSub(d3f(cam.target), eye));
+    D3 right = dNorm(dCross(f, d3f(cam.up))), up = dCross(right, f);
+    double t = tan(cam.fovy*PI/360.0), sum = 0.0;
+    EncError e = { 0.0, 0.0 };
+    int pixels = 0;
+    for (int py = 0; py < size; py++)
+        for (int px = 0; px < size; px++)
+        {
+            D3 dir = dNorm(dAdd(f, dAdd(dScale(right, (((px + 0.5)/size)*2.0 - 1.0)*t), dScale(up, (1.0 - ((py + 0.5)/size)*2.0)*t))));
+            RefSurface s;
+            memset(&s, 0, sizeof(s));
+            if (sphere)
+            {
+                double b = dDot(eye, dir), disc = b*b - (dDot(eye, eye) - 1.44);
+                if (disc < 0.0) continue;
+                s.position = dAdd(eye, dScale(dir, -b - sqrt(disc)));
+                s.normal = dNorm(s.position);
+            }
+            else
+            {
+                if (dir.z >= 0.0) continue;
+                s.position = dAdd(eye, dScale(dir, -eye.z/dir.z));
+                s.normal = d3(0, 0, 1);
+            }
+            s.albedo = refLinear((Color){ 200, 160, 120, 255 });
+            s.specularMap = -1.0;
+            s.occlusion = 1.0;
+            RefSurface stored = s;
+            stored.normal = StoredNormal(s.normal, p.brdf, c);
+            RefRgb a = refFinish(&p, refShade(&p, lights, 2, &env, &s, eye), s.position, eye);
+            RefRgb b = refFinish(&q, refShade(&q, lights, 2, &env, &stored, eye), s.position, eye);
+            double d[3] = { fabs(a.r - b.r)*255.0, fabs(a.g - b.g)*255.0, fabs(a.b - b.b)*255.0 };
+            for (int k = 0; k < 3; k++) { e.max = fmax(e.max, d[k]); sum += d[k]; }
+            pixels++;
+        }
+    e.mean = (pixels > 0)? sum/(3.0*pixels) : 0.0;
+    return e;
+}
+
+// Worst and mean angle (degrees) of a normal code over a uniform sphere sample
+static void NormalCodeError(int levels, bool nearest, double *mean, double *worst)
+{
+    unsigned int seed = 2024u;
+    const int count = 400000;
+    *mean = 0.0; *worst = 0.0;
+    for (int i = 0; i < count; i++)
+    {
+        double z = rtRandomRange(&seed, -1.0f, 1.0f), phi = rtRandomRange(&seed, 0.0f, (float)(2.0*PI)), r = sqrt(fmax(0.0, 1.0 - z*z));
+        D3 n = d3(r*cos(phi), r*sin(phi), z), q = OctRoundTrip(n, levels, nearest);
+        double e = atan2(dLen(dCross(n, q)), dDot(n, q))*180.0/PI;
+        *mean += e/count;
+        *worst = fmax(*worst, e);
+    }
+}
+
+static void EncodingRows(void)
+{
+    const char *normalName[3] = { "old_12x12_rounded", "30bit_nearest", "29bit_nearest" };
+    const int normalLevels[3] = { 4096, 32767, 23169 };
+    double nMean[3], nMax[3];
+    printf("\ndeferred: G-buffer encoding error (CPU, double reference; no GL), 0.3's codec -> this one\n");
+    printf("  normal codes over 400000 uniform sphere normals (degrees):\n");
+    for (int k = 0; k < 3; k++)
+    {
+        NormalCodeError(normalLevels[k], k > 0, &nMean[k], &nMax[k]);
+        char name[64];
+        snprintf(name, sizeof(name), "normal_%s", normalName[k]);
+        BenchCsvRow(SUITE, name, "mean_deg", nMean[k], "deg");
+        BenchCsvRow(SUITE, name, "max_deg", nMax[k], "deg");
+        printf("    %-22s %d levels per coordinate: mean %.5f  max %.5f\n", normalName[k], normalLevels[k], nMean[k], nMax[k]);
+    }
+    printf("  image error from the stored surface alone, 1/255 before 8-bit rounding (the GPU sweep test's scenes):\n");
+    printf("    %-40s %21s %21s\n", "", "plane old -> new", "sphere old -> new");
+    typedef struct { int brdf; float roughness, metalness, shininess, specular; } Case;
+    Case cases[20];
+    int n = 0;
+    cases[n++] = (Case){ RBL_BRDF_LAMBERT, 0, 0, 0, 0 };
+    const float shininess[6] = { 4.0f, 16.0f, 64.0f, 256.0f, 600.0f, 1024.0f };
+    for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, shininess[i], 0.5f };
+    cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 0.03f };
+    const float roughness[6] = { 0.02f, 0.05f, 0.1f, 0.3f, 0.6f, 1.0f };
+    for (int metal = 0; metal < 2; metal++)
+        for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_GGX, roughness[i], (float)metal, 0, 0 };
+    for (int i = 0; i < n; i++)
+    {
+        RefParams p;
+        memset(&p, 0, sizeof(p));
+        p.brdf = cases[i].brdf; p.roughness = cases[i].roughness; p.metalness = cases[i].metalness;
+        p.shininess = cases[i].shininess; p.specular = cases[i].specular;
+        char label[64], key[64];
+        if (p.brdf == RBL_BRDF_GGX)
+        {
+            snprintf(label, sizeof(label), "GGX roughness %.2f %s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
+            snprintf(key, sizeof(key), "ggx_r%.2f_%s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
+        }
+        else if (p.brdf == RBL_BRDF_BLINN_PHONG)
+        {
+            snprintf(label, sizeof(label), "Blinn-Phong shininess %.0f, spec %.2f", p.shininess, p.specular);
+            snprintf(key, sizeof(key), "blinn_phong_n%.0f_s%.2f", p.shininess, p.specular);
+        }
+        else { snprintf(label, sizeof(label), "Lambert"); snprintf(key, sizeof(key), "lambert"); }
+        printf("    %-40s", label);
+        for (int surface = 0; surface < 2; surface++)
+        {
+            EncError old = EncodingError(p, surface == 1, CODEC_OLD), now = EncodingError(p, surface == 1, CODEC_NEW);
+            char name[96];
+            snprintf(name, sizeof(name), "encoding_%s_%s", key, surface? "sphere" : "plane");
+            BenchCsvRow(SUITE, name, "old_max", old.max, "1/255");
+            BenchCsvRow(SUITE, name, "old_mean", old.mean, "1/255");
+            BenchCsvRow(SUITE, name, "new_max", now.max, "1/255");
+            BenchCsvRow(SUITE, name, "new_mean", now.mean, "1/255");
+            printf("  %5.2f/%5.3f -> %4.2f/%5.3f", old.max, old.mean, now.max, now.mean);
+        }
+        printf("\n");
+    }
+    printf("  (max/mean per surface)\n");
+    printf("  first-order worst case on a highlight's flank, 255 sRGB'(1) (2/alpha) x worst normal error (GGX;\n");
+    printf("  first order holds while that error is small beside alpha: 0.3's figures at 0.045-0.05 only say 'far off'):\n");
+    const float flank[4] = { 0.045f, 0.05f, 0.1f, 0.3f };
+    for (int i = 0; i < 4; i++)
+    {
+        double alpha = (double)flank[i]*flank[i], k = 255.0*(1.055/2.4)*2.0/alpha*PI/180.0;
+        char name[64];
+        snprintf(name, sizeof(name), "flank_bound_ggx_r%.3f", flank[i]);
+        BenchCsvRow(SUITE, name, "old", k*nMax[0], "1/255");
+        BenchCsvRow(SUITE, name, "new", k*nMax[1], "1/255");
+        printf("    roughness %.3f: 0.3's codec %6.1f/255, this one %5.1f/255\n", flank[i], k*nMax[0], k*nMax[1]);
+    }
+}
+
+//----------------------------------------------------------------------------------
 // Main
 //----------------------------------------------------------------------------------
 int main(void)
@@ -321,7 +557,7 @@ int main(void)
     double benchStart = BenchNowNs();
     SetTraceLogLevel(LOG_WARNING);
     const char *backend = rtInitContext(FRAME_W, FRAME_H);
-    if (backend == NULL) { printf("bench_deferred: no headless GL context, skipped\n"); return 0; }
+    if (backend == NULL) { printf("bench_deferred: no headless GL context, GL rows skipped\n"); EncodingRows(); return 0; }
     int problems = 0;
 
     static Scene sc;
@@ -583,6 +819,7 @@ int main(void)
         printf(" over %d covered pixels (limit 1/255: %s)\n", agree[last].pixels, agreeOk? "ok" : "EXCEEDED");
         if (fwdVsDef.worst >= 0) printf("  check: forward vs deferred at 16 lights (one forward pass) max %d/255 over %d pixels\n", fwdVsDef.worst, fwdVsDef.pixels);
     }
+    EncodingRows();
     printf("bench_deferred: done in %.1f s, rows in %s%s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath(), problems? " (with problems, see above)" : "");
     return 0;
 }
