@@ -119,6 +119,76 @@ static void test_paths_instanced_hard_cases_stay_finite(void)
     RblUnloadInstanceBuffer(&buf);
 }
 
+// Rotation at any angle an instance may carry (|value| < 2^120): the instanced stage's exact degree
+// reduction (rblReduceDegrees, integer arithmetic) against the CPU's fmodf and a double reference.
+// Seen from the front the tangent of an unflipped quad is (cos, sin, 0) of the rotation.
+static void test_paths_instanced_rotation_agrees_with_the_cpu_at_any_angle(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
+    GLu prog = tfProgram(&gl);
+    enum { FIXED_ANGLES = 24, RANDOM_ANGLES = 1000, N = FIXED_ANGLES + RANDOM_ANGLES };
+    static const float fixedAngles[FIXED_ANGLES] = {
+        1e4f, -1e4f, 1e6f, -1e6f, 3.6e8f, -3.6e8f, 12345.678f, -98765.4321f, 1000000.3f, -7777777.7f, 368639.97f, 368640.03f,
+        -368641.0f, 16777215.0f, -16777217.0f, 94371840.0f /* 90 x 2^20 */, 283115520.0f /* 270 x 2^20 */, 4.831838e10f /* 45 x 2^30 */,
+        1e30f, -1e30f, 1.3e36f, -1.3e36f, 359.99997f, -0.00001f };
+    RblInstance in[N];
+    float angles[N];
+    unsigned int seed = 90210u;
+    for (int i = 0; i < N; i++)
+    {
+        // random: magnitude log-uniform over 1e-3 .. 1e36, either sign, fraction bits set wherever float has them
+        float a = (i < FIXED_ANGLES)? fixedAngles[i] : (float)pow(10.0, rtRandomRange(&seed, -3.0f, 36.0f));
+        if ((i >= FIXED_ANGLES) && (rtRandom(&seed) & 1)) a = -a;
+        angles[i] = a;
+        memset(&in[i], 0, sizeof(in[i]));
+        in[i].position = (Vector3){ 0.25f*(float)(i%7), 0.5f*(float)(i%5), 0.0f };
+        in[i].size = (Vector2){ 1.0f, 2.0f }; in[i].origin = (Vector2){ 0.5f, 0.25f };
+        in[i].rotation = a;
+    }
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(N);
+    Camera3D cam = makeCamera((Vector3){ 0.0f, 0.0f, 10.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    float *gpu = tfCapture(&gl, prog, &buf, cam, d, 8, 8, in, N);
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worstRef = 0.0, worstCpu = 0.0, worstCpuRef = 0.0;
+    int exactQuadrants = 0, quadrantAngles = 0;
+    for (int i = 0; i < N; i++)
+    {
+        double r = fmod((double)angles[i], 360.0)*(3.14159265358979323846/180.0), cr = cos(r), sr = sin(r);
+        const float *g = gpu + (size_t)i*6*TF_FLOATS;
+        double e = fmax(fabs(g[8] - cr), fabs(g[9] - sr));
+        RT_CHECK(e <= 1e-6 && g[10] == 0.0f, "%.9g degrees: instanced (cos, sin) (%.9g, %.9g), double (%.9g, %.9g)", angles[i], g[8], g[9], cr, sr);
+        worstRef = fmax(worstRef, e);
+        if (fmod((double)angles[i], 90.0) == 0.0)
+        {
+            quadrantAngles++;
+            if ((g[8] == (float)cr) && (g[9] == (float)sr)) exactQuadrants++;
+        }
+        RblBillboard b = billboardOf(&in[i], d);
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "cpu skipped %g degrees", angles[i]);
+        worstCpuRef = fmax(worstCpuRef, fmax(fabs(q[0].tangent[0] - cr), fabs(q[0].tangent[1] - sr)));
+        for (int v = 0; v < 6; v++)
+        {
+            const float *gv = gpu + ((size_t)i*6 + v)*TF_FLOATS;
+            const RblVertex *c = &q[cornerOf[v]];
+            for (int k = 0; k < 3; k++) worstCpu = fmax(worstCpu, fmax(fabs(gv[k] - c->position[k])/4.0, fabs(gv[5 + k] - c->normal[k])));
+            for (int k = 0; k < 4; k++) worstCpu = fmax(worstCpu, fabs(gv[8 + k] - c->tangent[k]));
+        }
+    }
+    RT_CHECK(worstCpu < 1e-6, "instanced vs cpu at large angles: %.3g", worstCpu);
+    RT_CHECK(worstCpuRef <= 1e-6, "cpu (cos, sin) vs double at large angles: %.3g", worstCpuRef);
+    RT_CHECK(quadrantAngles >= 10 && exactQuadrants == quadrantAngles, "%d of %d multiples of 90 degrees exact on the instanced stage", exactQuadrants, quadrantAngles);
+    printf("    rotation at %d angles up to 1.3e36 degrees: instanced vs double %.2e, cpu vs double %.2e, instanced vs cpu %.2e; %d multiples of 90 exact\n",
+           N, worstRef, worstCpuRef, worstCpu, quadrantAngles);
+    free(gpu);
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
 // RblDrawInstanced itself: skips bad instances with one warning, and renders what the batch renders
 static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances(void)
 {
