@@ -132,6 +132,7 @@
 *       - AXIS with the eye on the axis: the camera plane projected off the axis; if the view looks
 *         along the axis too, the camera's up projected off the axis.
 *       - FIXED with up parallel to the normal: up falls back as for the camera.
+*       - up or axis shorter than 1e-12 counts as zero (the default), on the CPU and the GPU alike.
 *       - NaN/Inf input is skipped with one warning per batch or draw, never written to a buffer;
 *         instance values must stay below 2^120 in magnitude (the GPU could overflow).
 *
@@ -1604,10 +1605,10 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "flat out vec3 fragEye;\n",
     "#endif\n",
     "\n",
-    "bool rblNormalizeTo(vec3 v, out vec3 o)\n",
+    "// Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)\n",
+    "bool rblNormalizeTo(vec3 v, inout vec3 o)\n",
     "{\n",
     "    float l2 = dot(v, v);\n",
-    "    o = v;\n",
     "    if (!(l2 > 1e-24)) return false;\n",
     "    o = v*inversesqrt(l2);\n",
     "    return true;\n",
@@ -1669,16 +1670,16 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    r = viewRight; u = viewUp; n = viewBack;\n",
     "    if (facing == 0)\n",
     "    {\n",
-    "        vec3 nn;\n",
+    "        vec3 nn = n;\n",
     "        if ((dot(facingUp, facingUp) > 0.0) && rblNormalizeTo(cross(r, facingUp), nn)) { u = facingUp; n = nn; }\n",
     "    }\n",
     "    else if (facing == 1)\n",
     "    {\n",
-    "        vec3 toEye;\n",
+    "        vec3 toEye = n;\n",
     "        if (rblNormalizeTo(eye - position, toEye))\n",
     "        {\n",
     "            n = toEye;\n",
-    "            vec3 rr;\n",
+    "            vec3 rr = r;\n",
     "            if (rblNormalizeTo(cross(viewUp, n), rr)) { r = rr; u = cross(n, r); }\n",
     "            else { r = viewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }\n",
     "        }\n",
@@ -1686,12 +1687,12 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    else if (facing == 2)\n",
     "    {\n",
     "        vec3 a = vec3(0.0, 1.0, 0.0);\n",
-    "        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, a);\n",
+    "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);\n",
     "        vec3 nn;\n",
     "        if (!rblPerpendicular(eye - position, a, nn) && !rblPerpendicular(viewBack, a, nn) &&\n",
     "            !rblPerpendicular(viewUp, a, nn)) nn = viewBack;\n",
     "        u = a; n = nn; r = cross(u, n);\n",
-    "        vec3 l;\n",
+    "        vec3 l = a;\n",
     "        if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
     "        {\n",
     "            float ln = dot(l, n), la = dot(l, a);\n",
@@ -1709,8 +1710,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    else\n",
     "    {\n",
     "        vec3 nn = vec3(0.0, 0.0, 1.0);\n",
-    "        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, nn);\n",
-    "        vec3 uu = (dot(facingUp, facingUp) > 0.0)? facingUp : vec3(0.0, 1.0, 0.0);\n",
+    "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, nn);\n",
+    "        vec3 uu = (dot(facingUp, facingUp) > 1e-24)? facingUp : vec3(0.0, 1.0, 0.0);\n",
     "        if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);\n",
     "        n = nn; u = uu; r = cross(u, n);\n",
     "    }\n",
@@ -2339,7 +2340,7 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         case RBL_FACING_AXIS:
         {
             Vector3 a = rbl__v3(0.0f, 1.0f, 0.0f);
-            if (rbl__len2(b->axis) > 0.0f) rbl__normalizeTo(b->axis, &a);
+            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);    // shorter counts as zero (a GPU may flush it)
             Vector3 nn;
             if (!rbl__perpendicular(rbl__sub(view->eye, b->position), a, &nn) &&
                 !rbl__perpendicular(view->back, a, &nn) &&
@@ -2370,8 +2371,8 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         case RBL_FACING_FIXED:
         {
             Vector3 nn = rbl__v3(0.0f, 0.0f, 1.0f);
-            if (rbl__len2(b->axis) > 0.0f) rbl__normalizeTo(b->axis, &nn);
-            Vector3 uu = (rbl__len2(b->up) > 0.0f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f);
+            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &nn);
+            Vector3 uu = (rbl__len2(b->up) > 1e-24f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f);
             if (!rbl__perpendicular(uu, nn, &uu)) rbl__perpendicular(rbl__fallbackUp(nn), nn, &uu);
             n = nn; u = uu; r = rbl__cross(u, n);
         } break;

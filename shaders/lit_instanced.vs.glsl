@@ -30,10 +30,10 @@ out vec4 fragTangent;
 flat out vec3 fragEye;
 #endif
 
-bool rblNormalizeTo(vec3 v, out vec3 o)
+// Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)
+bool rblNormalizeTo(vec3 v, inout vec3 o)
 {
     float l2 = dot(v, v);
-    o = v;
     if (!(l2 > 1e-24)) return false;
     o = v*inversesqrt(l2);
     return true;
@@ -95,16 +95,16 @@ void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 vi
     r = viewRight; u = viewUp; n = viewBack;
     if (facing == 0)
     {
-        vec3 nn;
+        vec3 nn = n;
         if ((dot(facingUp, facingUp) > 0.0) && rblNormalizeTo(cross(r, facingUp), nn)) { u = facingUp; n = nn; }
     }
     else if (facing == 1)
     {
-        vec3 toEye;
+        vec3 toEye = n;
         if (rblNormalizeTo(eye - position, toEye))
         {
             n = toEye;
-            vec3 rr;
+            vec3 rr = r;
             if (rblNormalizeTo(cross(viewUp, n), rr)) { r = rr; u = cross(n, r); }
             else { r = viewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }
         }
@@ -112,12 +112,12 @@ void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 vi
     else if (facing == 2)
     {
         vec3 a = vec3(0.0, 1.0, 0.0);
-        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, a);
+        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);
         vec3 nn;
         if (!rblPerpendicular(eye - position, a, nn) && !rblPerpendicular(viewBack, a, nn) &&
             !rblPerpendicular(viewUp, a, nn)) nn = viewBack;
         u = a; n = nn; r = cross(u, n);
-        vec3 l;
+        vec3 l = a;
         if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
         {
             float ln = dot(l, n), la = dot(l, a);
@@ -135,8 +135,8 @@ void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 vi
     else
     {
         vec3 nn = vec3(0.0, 0.0, 1.0);
-        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, nn);
-        vec3 uu = (dot(facingUp, facingUp) > 0.0)? facingUp : vec3(0.0, 1.0, 0.0);
+        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, nn);
+        vec3 uu = (dot(facingUp, facingUp) > 1e-24)? facingUp : vec3(0.0, 1.0, 0.0);
         if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);
         n = nn; u = uu; r = cross(u, n);
     }

@@ -119,6 +119,57 @@ static void test_paths_instanced_hard_cases_stay_finite(void)
     RblUnloadInstanceBuffer(&buf);
 }
 
+// Caller vectors too short to give a direction (|v| <= 1e-12 counts as zero: the default) and just
+// long enough, including denormal lengths a GPU may flush to zero: both paths read them alike
+static void test_paths_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
+    GLu prog = tfProgram(&gl);
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+    Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    const float lengths[5] = { 1e-20f, 1e-13f, 9e-13f, 2e-12f, 1e-11f };
+    const Vector3 dirs[3] = { { 1.0f, 0.0f, 0.0f }, { 0.0f, 0.6f, 0.8f }, { -0.48f, 0.6f, 0.64f } };
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worst = 0.0;
+    int cases = 0;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    for (int which = 0; which < 2; which++)          // 0: up tiny, 1: axis tiny
+    for (int li = 0; li < 5; li++)
+    for (int di = 0; di < 3; di++)
+    {
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = facing;
+        Vector3 v = { dirs[di].x*lengths[li], dirs[di].y*lengths[li], dirs[di].z*lengths[li] };
+        if (which == 0) { d.up = v; if (facing == RBL_FACING_FIXED) d.axis = (Vector3){ 0.2f, 0.5f, 1.0f }; }
+        else { d.axis = v; if (facing == RBL_FACING_FIXED) d.up = (Vector3){ 0.3f, 1.0f, 0.0f }; }
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = (Vector3){ 1.0f, 0.5f, -2.0f }; in.size = (Vector2){ 1.5f, 2.0f }; in.origin = (Vector2){ 0.75f, 0.5f };
+        float *gpu = tfCapture(&gl, prog, &buf, cam, d, 8, 8, &in, 1);
+        RblBillboard b = billboardOf(&in, d);
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "cpu skipped");
+        double e = 0.0;
+        for (int k = 0; k < 6; k++)
+        {
+            const float *g = gpu + (size_t)k*TF_FLOATS;
+            const RblVertex *c = &q[cornerOf[k]];
+            for (int j = 0; j < 3; j++) e = fmax(e, fmax(fabs(g[j] - c->position[j])/4.0, fabs(g[5 + j] - c->normal[j])));
+            for (int j = 0; j < 4; j++) e = fmax(e, fabs(g[8 + j] - c->tangent[j]));
+        }
+        RT_CHECK(e < 1e-5, "mode %d, %s of length %g along (%g, %g, %g): instanced vs cpu %.3g", facing, which? "axis" : "up", lengths[li], dirs[di].x, dirs[di].y, dirs[di].z, e);
+        worst = fmax(worst, e);
+        cases++;
+        free(gpu);
+    }
+    printf("    tiny up/axis (lengths 1e-20 .. 1e-11, %d cases): worst instanced vs cpu %.2e\n", cases, worst);
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
 // Rotation at any angle an instance may carry (|value| < 2^120): the instanced stage's exact degree
 // reduction (rblReduceDegrees, integer arithmetic) against the CPU's fmodf and a double reference.
 // Seen from the front the tangent of an unflipped quad is (cos, sin, 0) of the rotation.
