@@ -35,6 +35,7 @@ int main(int argc, char **argv)
         RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro),
         RT_TEST(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),
         RT_TEST(test_paths_instanced_hard_cases_stay_finite),
+        RT_TEST(test_paths_instanced_near_degenerate_frames_agree_with_the_cpu_path),
         RT_TEST(test_paths_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu),
         RT_TEST(test_paths_instanced_rotation_agrees_with_the_cpu_at_any_angle),
         RT_TEST(test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances),

@@ -3,6 +3,7 @@
 // RblBillboardVertices() (which the immediate and batched paths share). Included by test_gpu_main.c.
 
 #include "tf_capture.h"
+#include "degenerate.h"
 
 static RblBillboard billboardOf(const RblInstance *in, RblInstancedDesc d)
 {
@@ -115,6 +116,106 @@ static void test_paths_instanced_hard_cases_stay_finite(void)
         }
         free(gpu);
     }
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// One near-degenerate case through the instanced stage (6 captured vertices, freed by the caller)
+static float *dgGpuCase(TfGl *gl, GLu prog, RblInstanceBuffer *buf, const DgCase *c)
+{
+    RblInstance in;
+    memset(&in, 0, sizeof(in));
+    in.position = c->billboard.position; in.size = c->billboard.size; in.origin = c->billboard.origin;
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    d.facing = c->billboard.facing; d.up = c->billboard.up; d.axis = c->billboard.axis; d.roundness = c->billboard.roundness;
+    tfLight = c->light; tfMinCastSin = c->minSin;
+    float *gpu = tfCapture(gl, prog, buf, c->camera, d, 64, 64, &in, 1);
+    tfLight = (Vector4){ 0 }; tfMinCastSin = 0.0f;
+    return gpu;
+}
+
+// Near-degenerate frames (tests/degenerate.h: every fallback approached from 5 degrees down to
+// 1e-7 rad, both sides, six azimuths): the instanced stage emits the CPU path's vertices within 1e-5
+// along every sweep, with and without rounded normals. Densely through each blend's cancelling point
+// (the opposed side at weight 1/2, where any continuous blend turns its output around within a
+// rounding error) the instanced frame stays finite and orthonormal; how far the two paths' roundings
+// take them apart there is reported.
+static void test_paths_instanced_near_degenerate_frames_agree_with_the_cpu_path(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
+    GLu prog = tfProgram(&gl);
+    RT_CHECK(prog != 0, "instanced vertex stage did not link with transform feedback");
+    if (prog == 0) return;
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worstAll = 0.0;
+    for (int config = 0; config < DG_CONFIGS; config++)
+    {
+        double worstPos = 0.0, worstAttr = 0.0, worstNT = 0.0, worstAngle = 0.0;
+        for (int k = 0; k < DG_CASES; k++)
+        {
+            DgCase c = dgCase(config, k);
+            c.billboard.roundness = (c.azimuth & 2)? 0.5f : 0.0f;
+            RblVertex q[4];
+            RT_CHECK(dgCpuQuad(&c, 64, 64, q), "%s case %d: cpu skipped", dgNames[config], k);
+            float *gpu = dgGpuCase(&gl, prog, &buf, &c);
+            double scale = 1.0 + dLen(d3f(c.billboard.position)) + 3.0;
+            double casePos = 0.0, caseAttr = 0.0;
+            for (int v = 0; v < 6; v++)
+            {
+                const float *g = gpu + (size_t)v*TF_FLOATS;
+                const RblVertex *cv = &q[cornerOf[v]];
+                for (int j = 0; j < 3; j++) casePos = fmax(casePos, fabs(g[j] - cv->position[j])/scale);
+                for (int j = 0; j < 3; j++) caseAttr = fmax(caseAttr, fabs(g[5 + j] - cv->normal[j]));
+                for (int j = 0; j < 4; j++) caseAttr = fmax(caseAttr, fabs(g[8 + j] - cv->tangent[j]));
+                worstNT = fmax(worstNT, fabs(g[5]*g[8] + g[6]*g[9] + g[7]*g[10]));
+            }
+            if (fmax(casePos, caseAttr) > 1e-5 && fmax(worstPos, worstAttr) <= 1e-5)
+                printf("    %s: first case over 1e-5: angle %.3g side %d variant %d azimuth %d (pos %.2e attr %.2e)\n",
+                       dgNames[config], c.angle, c.side, c.variant, c.azimuth*60, casePos, caseAttr);
+            if (fmax(casePos, caseAttr) > fmax(worstPos, worstAttr)) worstAngle = c.angle;
+            worstPos = fmax(worstPos, casePos); worstAttr = fmax(worstAttr, caseAttr);
+            free(gpu);
+        }
+        printf("    %-32s instanced vs cpu: position %.2e, attributes %.2e (worst at %.2g), gpu |N.T| %.2e\n", dgNames[config], worstPos, worstAttr, worstAngle, worstNT);
+        worstAll = fmax(worstAll, fmax(worstPos, worstAttr));
+        RT_CHECK(worstPos < 1e-5 && worstAttr < 1e-5, "%s: instanced vs cpu position %.3g attributes %.3g", dgNames[config], worstPos, worstAttr);
+    }
+    printf("    near-degenerate sweeps (%d cases): worst instanced vs cpu %.2e\n", DG_CASES*DG_CONFIGS, worstAll);
+    // Through the cancelling points: the instanced frame alone
+    double worstOrtho = 0.0, worstApart = 0.0;
+    int apart = 0, dense = 0;
+    for (int config = 0; config < DG_CONFIGS; config++)
+    for (int k = 0; (dgCancelAngle(config) > 0.0) && (k < DG_DENSE_CASES); k++)
+    {
+        DgCase c = dgDenseCase(config, k);
+        float *gpu = dgGpuCase(&gl, prog, &buf, &c);
+        RblVertex q[4];
+        dgCpuQuad(&c, 64, 64, q);
+        D3 p0 = vecOf(gpu), e1 = dSub(vecOf(gpu + TF_FLOATS), p0), e2 = dSub(vecOf(gpu + 5*TF_FLOATS), p0);     // corners 1 and 3
+        e1 = dScale(e1, 1.0/dLen(e1)); e2 = dScale(e2, 1.0/dLen(e2));
+        bool parallelogram = (c.billboard.facing == RBL_FACING_CAMERA_PLANE) && (dDot(d3f(c.billboard.up), d3f(c.billboard.up)) > 1e-24);
+        double o = 0.0, e = 0.0;
+        for (int v = 0; v < 6; v++)
+        {
+            const float *g = gpu + (size_t)v*TF_FLOATS;
+            D3 n = vecOf(g + 5), t = vecOf(g + 8);
+            o = fmax(o, fmax(fabs(dLen(n) - 1.0), fmax(fabs(dLen(t) - 1.0), fabs(dDot(n, t)))));
+            o = fmax(o, fmax(fabs(dDot(n, e1)), fabs(dDot(n, e2))));
+            if (!parallelogram) o = fmax(o, fabs(dDot(e1, e2)));
+            for (int j = 0; j < 3; j++) e = fmax(e, fabs(g[5 + j] - q[cornerOf[v]].normal[j]));
+        }
+        if (!(o <= worstOrtho)) worstOrtho = o;
+        worstApart = fmax(worstApart, e);
+        if (e > 1e-5) apart++;
+        dense++;
+        free(gpu);
+    }
+    RT_CHECK(worstOrtho <= 1e-5, "instanced frame through the cancelling points: orthonormality error %.3g", worstOrtho);
+    printf("    through the cancelling points (%d cases within 2%% of the weight-1/2 angle): instanced orthonormality error %.2e; "
+           "instanced vs cpu normals up to %.2e, %d cases over 1e-5\n", dense, worstOrtho, worstApart, apart);
     gl.DeleteProgram(prog);
     RblUnloadInstanceBuffer(&buf);
 }
