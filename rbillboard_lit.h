@@ -129,14 +129,29 @@
 *       sides). Models drawn without culling get the same. A draw showing a quad's back turns culling
 *       off for itself and back on after; draws of front faces leave it alone.
 *
-*   DEGENERATE FRAMES (documented fallbacks, all deterministic):
-*       - camera.target == camera.position: the view direction falls back to -Z (raylib's default).
-*       - camera.up parallel to the view: up falls back to the world axis least aligned with the view
-*         (-Z looking straight down, +Z straight up), so a top-down camera keeps -Z as screen-up.
-*       - CAMERA_POSITION with the billboard centre at the eye: faces the camera plane.
-*       - AXIS with the eye on the axis: the camera plane projected off the axis; if the view looks
-*         along the axis too, the camera's up projected off the axis.
-*       - FIXED with up parallel to the normal: up falls back as for the camera.
+*   DEGENERATE FRAMES (documented fallbacks, all deterministic, continuous as they are approached):
+*       A frame direction taken from a vector v off an axis n (camera.up off the view, up off a
+*       normal, the eye off a locked axis ...) blends with a fallback f as v nears n: with s the sine
+*       between v and n, direction = unit(w unit(v off n) + (1 - w) unit(f off n)), w = smoothstep(lo,
+*       hi, s). Billboards: lo = 1/64, hi = 1/8 (0.9 and 7.2 degrees; float gives v's direction off n
+*       only to ~6e-8/s, and the GPU rounds differently from the CPU). Camera frame (made in double,
+*       exact to float): lo = 1e-6, hi = 1e-5. On the side where v's direction opposes f's the two
+*       cancel at w = 1/2 and the frame turns over there (any continuous fallback must, somewhere).
+*       The cases (v off n, then the fallback f):
+*       - Camera: camera.up off the view; f = -Z looking down (a top-down camera keeps -Z, raylib's
+*         forward, as screen-up), +Z looking up, +Y for views along X or Z (by the view's largest
+*         component). right = up x back. camera.target == camera.position: the view looks down -Z.
+*       - CAMERA_PLANE: the caller's up off the camera's right; f = the camera's up. normal = right x
+*         up; the up keeps its length and its part along right (collapsing as raylib's quad does).
+*       - CAMERA_POSITION: the camera's up off n (toward the eye); f = n x the camera's right (the
+*         centre on the camera's screen-up line: shadow passes orient casters by the viewer's
+*         camera). right = up x n. Centre at the eye: the camera plane.
+*       - AXIS: the eye off the axis; f = the view's back off the axis, itself blended toward the
+*         view's up off the axis where the view looks along the axis. right = axis x n.
+*       - FIXED: up off the normal; f = the fallback up of the normal (as for the camera).
+*       - AXIS in a shadow pass: the tilt fades out (weight w of the sine between the light and the
+*         pivot line) where the light nears the pivot line, along which no tilt helps.
+*       - up or axis shorter than 1e-12 counts as zero (the default).
 *       - NaN/Inf input is skipped with one warning per batch or draw, never written to a buffer;
 *         instance values must stay below 2^120 in magnitude (the GPU could overflow).
 *
@@ -147,13 +162,15 @@
 *       - Normal maps: OpenGL convention (+X right, +Y up in the image as you see it).
 *       - Texture slots are raylib's: MATERIAL_MAP_ALBEDO -> texture0, MATERIAL_MAP_NORMAL (packed
 *         material texture, or RGB normal map) -> texture2, MATERIAL_MAP_EMISSION -> texture5.
-*       - Every Color is sRGB; lighting runs in linear light. Rotation: degrees, exact at quadrants.
+*       - Every Color is sRGB; lighting runs in linear light. Rotation: degrees, reduced mod 360
+*         exactly (CPU and GPU alike, any angle), exact at quadrants.
 *
 *   DEVIATIONS FROM raylib's DrawBillboardPro (deliberate, tested):
 *       - Negative size mirrors the image inside the source rectangle and keeps the quad's footprint
 *         and pivot. raylib shifts the source rectangle by the world size (source.x -= size.x), right
 *         only when |size| equals the source width in pixels, and negates the pivot (the quad moves).
 *       - camera.up parallel to the view: raylib's quad collapses (zero right vector); here: fallback.
+*         Near it raylib's float frame is off by ~6e-8/s and not orthonormal; here: exact, blended.
 *
 *   LIGHTING (shaders/lights.glsl, output.glsl; tests/lighting_reference.h: independent, in double):
 *       - Units: a light of sRGB colour c and intensity I delivers irradiance E = linear(c)*I*falloff;
@@ -221,7 +238,8 @@
 *       Billboards face the billboard call's camera (the viewer's): the shadow is the silhouette seen,
 *       never falling on the visibly lit side (RblShadowDesc.faceLight: face the light instead). AXIS
 *       billboards lean away from the light about their pivot line until it sees them at minCastAngle
-*       (30 degrees): an upright tree under a light along its axis would be edge-on and cast nothing.
+*       (30 degrees): an upright tree under a light along its axis would be edge-on and cast nothing
+*       (a light within 7.2 degrees of the pivot line tilts them less, none within 0.9: DEGENERATE FRAMES).
 *       Receiver bias (per light sample, world units, t = texel size at the point):
 *         normal offset    lookup moved along N by normalBias*t*sin(incidence) (shifts edges <= that)
 *         receiver plane   each PCF fetch compares with the receiver's plane extended to that texel
@@ -1765,10 +1783,10 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
-    "bool rblNormalizeTo(vec3 v, out vec3 o)\n",
+    "// Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)\n",
+    "bool rblNormalizeTo(vec3 v, inout vec3 o)\n",
     "{\n",
     "    float l2 = dot(v, v);\n",
-    "    o = v;\n",
     "    if (!(l2 > 1e-24)) return false;\n",
     "    o = v*inversesqrt(l2);\n",
     "    return true;\n",
@@ -1786,9 +1804,44 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "vec3 rblFallbackUp(vec3 d)\n",
     "{\n",
     "    vec3 a = abs(d);\n",
-    "    if ((a.z <= a.x) && (a.z <= a.y)) return vec3(0.0, 0.0, (d.y > 0.0)? -1.0 : 1.0);\n",
-    "    if (a.y <= a.x) return vec3(0.0, 1.0, 0.0);\n",
-    "    return vec3(1.0, 0.0, 0.0);\n",
+    "    if ((a.y >= a.x) && (a.y >= a.z)) return vec3(0.0, 0.0, (d.y > 0.0)? -1.0 : 1.0);\n",
+    "    return vec3(0.0, 1.0, 0.0);\n",
+    "}\n",
+    "\n",
+    "// Near-degenerate blend (the CPU's rbl__blendWeight, rbl__offAxis, rbl__blendOffAxis): a direction\n",
+    "// off the axis n from v, blended with the fallback f's as the sine s between v and n drops from 1/8\n",
+    "// to 1/64, where float gives v's direction off n only to about 6e-8/s\n",
+    "#define RBL_BLEND_LO 0.015625\n",
+    "#define RBL_BLEND_HI 0.125\n",
+    "\n",
+    "float rblBlendWeight(float s)\n",
+    "{\n",
+    "    float t = clamp((s - RBL_BLEND_LO)*(1.0/(RBL_BLEND_HI - RBL_BLEND_LO)), 0.0, 1.0);\n",
+    "    return t*t*(3.0 - 2.0*t);\n",
+    "}\n",
+    "\n",
+    "float rblOffAxis(vec3 v, vec3 n, out vec3 vp)\n",
+    "{\n",
+    "    vp = v - n*dot(v, n);\n",
+    "    float vv = dot(v, v), pp = dot(vp, vp);\n",
+    "    if (!(vv > 1e-24)) return 0.0;\n",
+    "    if (pp >= (RBL_BLEND_HI*RBL_BLEND_HI)*vv) return 1.0;\n",
+    "    return rblBlendWeight(sqrt(pp/vv));\n",
+    "}\n",
+    "\n",
+    "vec3 rblBlendOffAxis(vec3 vp, float w, vec3 f, vec3 n)\n",
+    "{\n",
+    "    vec3 c = vec3(0.0);\n",
+    "    if (w > 0.0)\n",
+    "    {\n",
+    "        c = vp*(w*inversesqrt(dot(vp, vp)));\n",
+    "        if (w >= 1.0) return c;\n",
+    "    }\n",
+    "    vec3 fp = f - n*dot(f, n);\n",
+    "    c = c + fp*((1.0 - w)*inversesqrt(dot(fp, fp)));\n",
+    "    for (int i = 0; i < 2; i++) c = c - n*dot(c, n);\n",
+    "    if (!(dot(c, c) > 1e-24)) c = fp;\n",
+    "    return c*inversesqrt(dot(c, c));\n",
     "}\n",
     "\n",
     "// fmod(degrees, 360) exactly (as the CPU's fmodf), for |degrees| > 368640: there degrees = m 2^e\n",
@@ -1823,36 +1876,45 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "\n",
     "// Right r, up u (unit, except CAMERA_PLANE's caller up) and unit normal n of a billboard at position\n",
     "// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS\n",
-    "// billboards until the light sees them at the minimum angle\n",
+    "// billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,\n",
+    "// a vector v and a fallback f, one blend follows, then the frame is built.\n",
     "void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
     "                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)\n",
     "{\n",
     "    r = viewRight; u = viewUp; n = viewBack;\n",
-    "    if (facing == 0)\n",
-    "    {\n",
-    "        vec3 nn;\n",
-    "        if ((dot(facingUp, facingUp) > 0.0) && rblNormalizeTo(cross(r, facingUp), nn)) { u = facingUp; n = nn; }\n",
-    "    }\n",
-    "    else if (facing == 1)\n",
-    "    {\n",
-    "        vec3 toEye;\n",
-    "        if (rblNormalizeTo(eye - position, toEye))\n",
-    "        {\n",
-    "            n = toEye;\n",
-    "            vec3 rr;\n",
-    "            if (rblNormalizeTo(cross(viewUp, n), rr)) { r = rr; u = cross(n, r); }\n",
-    "            else { r = viewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }\n",
-    "        }\n",
-    "    }\n",
+    "    vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);\n",
+    "    bool own = true;\n",
+    "    if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }\n",
+    "    else if (facing == 1) { own = rblNormalizeTo(eye - position, axis); f = cross(axis, r); }\n",
     "    else if (facing == 2)\n",
     "    {\n",
-    "        vec3 a = vec3(0.0, 1.0, 0.0);\n",
-    "        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, a);\n",
-    "        vec3 nn;\n",
-    "        if (!rblPerpendicular(eye - position, a, nn) && !rblPerpendicular(viewBack, a, nn) &&\n",
-    "            !rblPerpendicular(viewUp, a, nn)) nn = viewBack;\n",
+    "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);\n",
+    "        vec3 q;\n",
+    "        float wb = rblOffAxis(viewBack, a, q);\n",
+    "        axis = a; v = eye - position; f = rblBlendOffAxis(q, wb, viewUp, a);\n",
+    "    }\n",
+    "    else\n",
+    "    {\n",
+    "        axis = vec3(0.0, 0.0, 1.0);\n",
+    "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, axis);\n",
+    "        v = (dot(facingUp, facingUp) > 1e-24)? facingUp : vec3(0.0, 1.0, 0.0); f = rblFallbackUp(axis);\n",
+    "    }\n",
+    "    if (!own) return;\n",
+    "    vec3 p;\n",
+    "    float w = rblOffAxis(v, axis, p);\n",
+    "    vec3 d = rblBlendOffAxis(p, w, f, axis);\n",
+    "    if (facing == 0)\n",
+    "    {\n",
+    "        n = cross(r, d);\n",
+    "        u = facingUp;\n",
+    "        if (w < 1.0) u = r*dot(facingUp, r) + d*sqrt(dot(p, p));\n",
+    "    }\n",
+    "    else if (facing == 1) { n = axis; u = d; r = cross(u, n); }\n",
+    "    else if (facing == 2)\n",
+    "    {\n",
+    "        vec3 nn = d;\n",
     "        u = a; n = nn; r = cross(u, n);\n",
-    "        vec3 l;\n",
+    "        vec3 l = a;\n",
     "        if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
     "        {\n",
     "            float ln = dot(l, n), la = dot(l, a);\n",
@@ -1862,19 +1924,19 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "                float k = min(minCastSin/rho, 1.0), m = sqrt(1.0 - k*k);\n",
     "                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;\n",
     "                float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;\n",
+    "                float wt = rblBlendWeight(rho);\n",
+    "                if (wt < 1.0)\n",
+    "                {\n",
+    "                    c = c*wt + (1.0 - wt); sn = sn*wt;\n",
+    "                    float inv = 1.0/sqrt(c*c + sn*sn);\n",
+    "                    c *= inv; sn *= inv;\n",
+    "                }\n",
     "                n = nn*c + a*sn;\n",
     "                u = a*c - nn*sn;\n",
     "            }\n",
     "        }\n",
     "    }\n",
-    "    else\n",
-    "    {\n",
-    "        vec3 nn = vec3(0.0, 0.0, 1.0);\n",
-    "        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, nn);\n",
-    "        vec3 uu = (dot(facingUp, facingUp) > 0.0)? facingUp : vec3(0.0, 1.0, 0.0);\n",
-    "        if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);\n",
-    "        n = nn; u = uu; r = cross(u, n);\n",
-    "    }\n",
+    "    else { n = axis; u = d; r = cross(u, n); }\n",
     "}\n",
     "\n",
     "// One corner (0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left) of the instance's quad, given\n",
@@ -2359,8 +2421,11 @@ static inline bool rbl__exponentsBelow(const void *f, int n, unsigned int limitE
 }
 // None of n floats stored from f on is NaN or Inf (exponent field 255)
 static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsBelow(f, n, 255u); }
-// Billboard positions, sizes, origins, rotations and source rectangles: below 2^60 (exponent 127 + 60)
+// Billboard positions, sizes, origins and source rectangles: below 2^60 (exponent 127 + 60)
 #define RBL__BILLBOARD_LIMIT_EXPONENT 187u
+// Instance floats and any rotation: values of 2^120 (1.3e36, exponent field 127 + 120) or more could
+// overflow float once the GPU combines them: rejected like NaN
+#define RBL__INSTANCE_LIMIT_EXPONENT 247u
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
@@ -2429,15 +2494,15 @@ static inline bool rbl__normalizeTo(Vector3 v, Vector3 *out)
     return true;
 }
 
-// World axis least aligned with d: the stable substitute for an up vector parallel to d.
-// Ties prefer Z; d is the view's back vector, so a camera looking straight down (back = +Y)
-// gets -Z (raylib's forward, "north") as screen-up, and one looking straight up gets +Z.
+// World axis standing in for an up vector parallel to d: -Z (raylib's forward, "north") for d
+// along +Y, so a camera looking straight down keeps -Z as screen-up, +Z along -Y, +Y for d along X
+// or Z. Chosen by d's largest component, which stays put near every axis (the least aligned axis
+// flips between two when d is near an axis, where the fallback is used).
 static Vector3 rbl__fallbackUp(Vector3 d)
 {
     float ax = fabsf(d.x), ay = fabsf(d.y), az = fabsf(d.z);
-    if ((az <= ax) && (az <= ay)) return rbl__v3(0.0f, 0.0f, (d.y > 0.0f)? -1.0f : 1.0f);
-    if (ay <= ax) return rbl__v3(0.0f, 1.0f, 0.0f);
-    return rbl__v3(1.0f, 0.0f, 0.0f);
+    if ((ay >= ax) && (ay >= az)) return rbl__v3(0.0f, 0.0f, (d.y > 0.0f)? -1.0f : 1.0f);
+    return rbl__v3(0.0f, 1.0f, 0.0f);
 }
 
 // Unit component of v perpendicular to unit n; false if v is (nearly) parallel to n
@@ -2450,28 +2515,120 @@ static inline bool rbl__perpendicular(Vector3 v, Vector3 n, Vector3 *out)
     return rbl__normalizeTo(p, out);
 }
 
+// Near-degenerate frames. Float gives the direction of v's component off an axis n only to about
+// 6e-8/s (s = sine of the angle between v and n; the GPU's rounding differs from the CPU's), so a
+// frame direction taken from v is blended with a fallback's where s is small:
+//     unit(w unit(v off n) + (1 - w) unit(f off n)),  w = smoothstep(RBL__BLEND_LO, RBL__BLEND_HI, s)
+// v alone at s >= 1/8 (7.2 degrees), the fallback f alone at s <= 1/64 (0.9 degrees), continuous in
+// between (the two directions cancel only on the side where v's points away from f's, at w = 1/2).
+#define RBL__BLEND_LO 0.015625f
+#define RBL__BLEND_HI 0.125f
+
+// smoothstep(RBL__BLEND_LO, RBL__BLEND_HI, s)
+static inline float rbl__blendWeight(float s)
+{
+    float t = (s - RBL__BLEND_LO)*(1.0f/(RBL__BLEND_HI - RBL__BLEND_LO));
+    t = fminf(fmaxf(t, 0.0f), 1.0f);
+    return t*t*(3.0f - 2.0f*t);
+}
+
+// Weight of v's own direction off unit n (1 well off n; 0 along n or for v shorter than 1e-12) and
+// v's component off n (*vp)
+static inline float rbl__offAxis(Vector3 v, Vector3 n, Vector3 *vp)
+{
+    float d = rbl__dot(v, n);
+    *vp = rbl__v3(v.x - n.x*d, v.y - n.y*d, v.z - n.z*d);
+    float vv = rbl__len2(v), pp = rbl__len2(*vp);
+    if (!(vv > 1e-24f)) return 0.0f;
+    if (pp >= (RBL__BLEND_HI*RBL__BLEND_HI)*vv) return 1.0f;
+    return rbl__blendWeight(sqrtf(pp/vv));
+}
+
+// Unit direction perpendicular to unit n: vp's (from rbl__offAxis) at w = 1, the fallback f's
+// component off n at w = 0 (f must stand well off n), the blend between, projected off n again,
+// twice: the blended directions are each perpendicular to n only to 6e-8/s, and where they nearly
+// cancel that residue is most of what is left
+static inline Vector3 rbl__blendOffAxis(Vector3 vp, float w, Vector3 f, Vector3 n)
+{
+    Vector3 c = rbl__v3(0.0f, 0.0f, 0.0f);
+    if (w > 0.0f)
+    {
+        float k = w/sqrtf(rbl__len2(vp));
+        c = rbl__v3(vp.x*k, vp.y*k, vp.z*k);
+        if (w >= 1.0f) return c;
+    }
+    float d = rbl__dot(f, n);
+    Vector3 fp = rbl__v3(f.x - n.x*d, f.y - n.y*d, f.z - n.z*d);
+    float kf = (1.0f - w)/sqrtf(rbl__len2(fp));
+    c = rbl__v3(c.x + fp.x*kf, c.y + fp.y*kf, c.z + fp.z*kf);
+    for (int i = 0; i < 2; i++)
+    {
+        d = rbl__dot(c, n);
+        c = rbl__v3(c.x - n.x*d, c.y - n.y*d, c.z - n.z*d);
+    }
+    if (!(rbl__len2(c) > 1e-24f)) c = fp;      // exactly at the cancelling point
+    float kc = 1.0f/sqrtf(rbl__len2(c));
+    return rbl__v3(c.x*kc, c.y*kc, c.z*kc);
+}
+
 //----------------------------------------------------------------------------------
 // Module Functions Definition: geometry
 //----------------------------------------------------------------------------------
-// Camera frame, computed in the same operation order as raymath's MatrixLookAt (parity with raylib)
-// The frame of a checked camera (the header's own light cameras have no fovy)
+// Camera frame as raymath's MatrixLookAt builds it, in double: the float inputs subtract and
+// multiply exactly there, so the frame is right to float however close camera.up comes to the view
+// (raylib's float frame is off by 6e-8/s there, and not orthonormal). Near-degenerate blend as for
+// billboards, over s from 1e-6 (the old hard threshold) to 1e-5: only cameras whose float frame is
+// already noise above 0.3 degrees notice it.
+#define RBL__CAMERA_BLEND_LO 1e-6
+#define RBL__CAMERA_BLEND_HI 1e-5
+// (the public RblGetCameraFrame checks the camera first; the header's own light cameras have no fovy)
 static RblCameraFrame rbl__cameraFrame(Camera3D camera)
 {
     RblCameraFrame view;
     view.eye = camera.position;
-    Vector3 back;
-    if (!rbl__normalizeTo(rbl__sub(camera.position, camera.target), &back)) back = rbl__v3(0.0f, 0.0f, 1.0f);
-    Vector3 up = camera.up;
-    Vector3 right = rbl__v3(1.0f, 0.0f, 0.0f);     // overwritten: the fallback up is never parallel to back
-    if (!rbl__finite3(up) || !rbl__normalizeTo(rbl__cross(up, back), &right) ||
-        (rbl__len2(rbl__cross(up, back)) < 1e-12f*rbl__len2(up)))
+    double b[3] = { (double)camera.position.x - camera.target.x, (double)camera.position.y - camera.target.y, (double)camera.position.z - camera.target.z };
+    double bb = b[0]*b[0] + b[1]*b[1] + b[2]*b[2];
+    if (!(bb > 1e-24) || !(bb < 1e300)) { b[0] = 0.0; b[1] = 0.0; b[2] = 1.0; bb = 1.0; }
+    double inv = 1.0/sqrt(bb);
+    for (int i = 0; i < 3; i++) b[i] *= inv;
+    // Up off the view; its weight against the fallback by the sine s between camera.up and the view
+    double u[3] = { camera.up.x, camera.up.y, camera.up.z };
+    if (!rbl__finite3(camera.up)) u[0] = u[1] = u[2] = 0.0;
+    double d = u[0]*b[0] + u[1]*b[1] + u[2]*b[2];
+    double p[3] = { u[0] - b[0]*d, u[1] - b[1]*d, u[2] - b[2]*d };
+    double uu = u[0]*u[0] + u[1]*u[1] + u[2]*u[2], pp = p[0]*p[0] + p[1]*p[1] + p[2]*p[2];
+    double w = 0.0;
+    if (uu > 1e-24)
     {
-        up = rbl__fallbackUp(back);
-        rbl__normalizeTo(rbl__cross(up, back), &right);
+        double t = (sqrt(pp/uu) - RBL__CAMERA_BLEND_LO)/(RBL__CAMERA_BLEND_HI - RBL__CAMERA_BLEND_LO);
+        t = (t < 0.0)? 0.0 : ((t > 1.0)? 1.0 : t);
+        w = t*t*(3.0 - 2.0*t);
     }
-    view.right = right;
-    view.up = rbl__cross(back, right);
-    view.back = back;
+    double c[3] = { 0.0, 0.0, 0.0 };
+    if (w > 0.0) { double k = w/sqrt(pp); for (int i = 0; i < 3; i++) c[i] = p[i]*k; }
+    if (w < 1.0)
+    {
+        Vector3 fv = rbl__fallbackUp(rbl__v3((float)b[0], (float)b[1], (float)b[2]));
+        double f[3] = { fv.x, fv.y, fv.z };
+        double df = f[0]*b[0] + f[1]*b[1] + f[2]*b[2];
+        for (int i = 0; i < 3; i++) f[i] -= b[i]*df;
+        double k = (1.0 - w)/sqrt(f[0]*f[0] + f[1]*f[1] + f[2]*f[2]);
+        for (int i = 0; i < 3; i++) c[i] += f[i]*k;
+        for (int pass = 0; pass < 2; pass++)
+        {
+            double dc = c[0]*b[0] + c[1]*b[1] + c[2]*b[2];
+            for (int i = 0; i < 3; i++) c[i] -= b[i]*dc;
+        }
+        double cc = c[0]*c[0] + c[1]*c[1] + c[2]*c[2];
+        if (!(cc > 1e-30)) { for (int i = 0; i < 3; i++) c[i] = f[i]; cc = f[0]*f[0] + f[1]*f[1] + f[2]*f[2]; }   // exactly at the cancelling point
+        double kc = 1.0/sqrt(cc);
+        for (int i = 0; i < 3; i++) c[i] *= kc;
+    }
+    // right = up x back, up = back x right (both unit: c is unit and perpendicular to back)
+    double r[3] = { c[1]*b[2] - c[2]*b[1], c[2]*b[0] - c[0]*b[2], c[0]*b[1] - c[1]*b[0] };
+    view.right = rbl__v3((float)r[0], (float)r[1], (float)r[2]);
+    view.up = rbl__v3((float)(b[1]*r[2] - b[2]*r[1]), (float)(b[2]*r[0] - b[0]*r[2]), (float)(b[0]*r[1] - b[1]*r[0]));
+    view.back = rbl__v3((float)b[0], (float)b[1], (float)b[2]);
     return view;
 }
 
@@ -2508,40 +2665,62 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
     memcpy(cosOut, &rc, sizeof(rc));
 }
 
-// Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal
+// Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
+// takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
+// (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
+// the frame (one blend, not one per mode: llvmpipe runs every branch of the GLSL twin).
 static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
 {
     Vector3 r = view->right, u = view->up, n = view->back;
+    Vector3 axis = r, v = u, f = u, a = rbl__v3(0.0f, 1.0f, 0.0f);
+    bool own = true;        // false: CAMERA_PLANE without an up, CAMERA_POSITION at the eye (the view's frame)
+    switch (b->facing)
+    {
+        // normal = right x (the caller's up off right), toward the camera's up
+        case RBL_FACING_CAMERA_PLANE: own = rbl__len2(b->up) > 1e-24f; v = b->up; break;
+        // n toward the eye; up = the camera's up off n, toward n x right (the centre on the camera's up line)
+        case RBL_FACING_CAMERA_POSITION: own = rbl__normalizeTo(rbl__sub(view->eye, b->position), &axis); f = rbl__cross(axis, r); break;
+        // n = toward the eye off the axis, toward the view's back off the axis, itself toward the view's
+        // up off the axis where the view looks along it (up and back are never both near it)
+        case RBL_FACING_AXIS:
+        {
+            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);    // shorter counts as zero (a GPU may flush it)
+            Vector3 q;
+            float wb = rbl__offAxis(view->back, a, &q);
+            axis = a; v = rbl__sub(view->eye, b->position); f = rbl__blendOffAxis(q, wb, view->up, a);
+        } break;
+        // up off the normal, toward the normal's fallback up
+        case RBL_FACING_FIXED:
+        {
+            axis = rbl__v3(0.0f, 0.0f, 1.0f);
+            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &axis);
+            v = (rbl__len2(b->up) > 1e-24f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
+        } break;
+        default: own = false; break;
+    }
+    if (!own) { *right = r; *up = u; *normal = n; return; }
+    Vector3 p;
+    float w = rbl__offAxis(v, axis, &p);
+    Vector3 d = rbl__blendOffAxis(p, w, f, axis);
     switch (b->facing)
     {
         case RBL_FACING_CAMERA_PLANE:
         {
-            // raylib scales the caller's up as given (not normalised): keep that for parity
-            if (rbl__len2(b->up) > 0.0f)
+            // raylib scales the caller's up as given (not normalised): keep that for parity. Blended, the
+            // up keeps its length and its part along right and turns its part off right to d (the quad
+            // stays flat, and collapses as raylib's does with up along right)
+            n = rbl__cross(r, d);
+            u = b->up;
+            if (w < 1.0f)
             {
-                Vector3 nn;
-                if (rbl__normalizeTo(rbl__cross(r, b->up), &nn)) { u = b->up; n = nn; }
+                float along = rbl__dot(b->up, r), off = sqrtf(rbl__len2(p));
+                u = rbl__v3(r.x*along + d.x*off, r.y*along + d.y*off, r.z*along + d.z*off);
             }
         } break;
-        case RBL_FACING_CAMERA_POSITION:
-        {
-            Vector3 toEye;
-            if (rbl__normalizeTo(rbl__sub(view->eye, b->position), &toEye))
-            {
-                n = toEye;
-                Vector3 rr;
-                if (rbl__normalizeTo(rbl__cross(view->up, n), &rr)) { r = rr; u = rbl__cross(n, r); }
-                else { r = view->right; u = rbl__cross(n, r); rbl__normalizeTo(u, &u); r = rbl__cross(u, n); }
-            }
-        } break;
+        case RBL_FACING_CAMERA_POSITION: n = axis; u = d; r = rbl__cross(u, n); break;
         case RBL_FACING_AXIS:
         {
-            Vector3 a = rbl__v3(0.0f, 1.0f, 0.0f);
-            if (rbl__len2(b->axis) > 0.0f) rbl__normalizeTo(b->axis, &a);
-            Vector3 nn;
-            if (!rbl__perpendicular(rbl__sub(view->eye, b->position), a, &nn) &&
-                !rbl__perpendicular(view->back, a, &nn) &&
-                !rbl__perpendicular(view->up, a, &nn)) nn = view->back;    // unreachable: up and back can't both be parallel to a
+            Vector3 nn = d;
             u = a; n = nn; r = rbl__cross(u, n);
             // Shadow pass: tilt about the pivot line (r), leaning away from the light, by the smallest
             // angle t at which the light sees the quad at the minimum angle s: in the (n, a) plane with
@@ -2560,20 +2739,21 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
                     float k = fminf(cast->minSin/rho, 1.0f), m = sqrtf(1.0f - k*k);
                     float sg = ((ln >= 0.0f) == (la >= 0.0f))? 1.0f : -1.0f;
                     float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
+                    // rho is the sine between l and the pivot line, where no tilt helps and (x, y)/rho is
+                    // float noise: the tilt fades out with the near-degenerate blend weight (c >= 0: no cancelling)
+                    float wt = rbl__blendWeight(rho);
+                    if (wt < 1.0f)
+                    {
+                        c = c*wt + (1.0f - wt); sn = sn*wt;
+                        float inv = 1.0f/sqrtf(c*c + sn*sn);
+                        c *= inv; sn *= inv;
+                    }
                     n = rbl__v3(nn.x*c + a.x*sn, nn.y*c + a.y*sn, nn.z*c + a.z*sn);
                     u = rbl__v3(a.x*c - nn.x*sn, a.y*c - nn.y*sn, a.z*c - nn.z*sn);
                 }
             }
         } break;
-        case RBL_FACING_FIXED:
-        {
-            Vector3 nn = rbl__v3(0.0f, 0.0f, 1.0f);
-            if (rbl__len2(b->axis) > 0.0f) rbl__normalizeTo(b->axis, &nn);
-            Vector3 uu = (rbl__len2(b->up) > 0.0f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f);
-            if (!rbl__perpendicular(uu, nn, &uu)) rbl__perpendicular(rbl__fallbackUp(nn), nn, &uu);
-            n = nn; u = uu; r = rbl__cross(u, n);
-        } break;
-        default: break;
+        default: n = axis; u = d; r = rbl__cross(u, n); break;      // RBL_FACING_FIXED
     }
     *right = r; *up = u; *normal = n;
 }
@@ -2602,12 +2782,15 @@ static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, 
 }
 
 // A billboard every path can expand: position .. source and up .. roundness are runs of floats
-// (checked at compile time), below 2^60 so that corners (position + size along unit axes) and
-// texcoords (source edges / texture size) stay finite; a known facing; a texture of 1..65536 texels
+// (checked at compile time), below 2^60 so that corners (position + size along unit axes), eye
+// distances and texcoords (source edges / texture size) stay finite; a known facing; a texture of
+// 1..65536 texels
 static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
-    if (!rbl__exponentsBelow(&b->position, 12, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
+    if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
+        !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
     return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED);
 }
 
@@ -3124,9 +3307,6 @@ void RblClose(void)
 //----------------------------------------------------------------------------------
 // Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
 #define RBL__INSTANCE_LOCATION 10
-// Values of 2^120 (1.3e36, exponent field 127 + 120) or more could overflow float once the GPU
-// combines them: rejected like NaN
-#define RBL__INSTANCE_LIMIT_EXPONENT 247u
 
 static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
 {

@@ -31,10 +31,10 @@ flat out vec3 fragEye;
 flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)
 #endif
 
-bool rblNormalizeTo(vec3 v, out vec3 o)
+// Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)
+bool rblNormalizeTo(vec3 v, inout vec3 o)
 {
     float l2 = dot(v, v);
-    o = v;
     if (!(l2 > 1e-24)) return false;
     o = v*inversesqrt(l2);
     return true;
@@ -52,9 +52,44 @@ bool rblPerpendicular(vec3 v, vec3 n, out vec3 o)
 vec3 rblFallbackUp(vec3 d)
 {
     vec3 a = abs(d);
-    if ((a.z <= a.x) && (a.z <= a.y)) return vec3(0.0, 0.0, (d.y > 0.0)? -1.0 : 1.0);
-    if (a.y <= a.x) return vec3(0.0, 1.0, 0.0);
-    return vec3(1.0, 0.0, 0.0);
+    if ((a.y >= a.x) && (a.y >= a.z)) return vec3(0.0, 0.0, (d.y > 0.0)? -1.0 : 1.0);
+    return vec3(0.0, 1.0, 0.0);
+}
+
+// Near-degenerate blend (the CPU's rbl__blendWeight, rbl__offAxis, rbl__blendOffAxis): a direction
+// off the axis n from v, blended with the fallback f's as the sine s between v and n drops from 1/8
+// to 1/64, where float gives v's direction off n only to about 6e-8/s
+#define RBL_BLEND_LO 0.015625
+#define RBL_BLEND_HI 0.125
+
+float rblBlendWeight(float s)
+{
+    float t = clamp((s - RBL_BLEND_LO)*(1.0/(RBL_BLEND_HI - RBL_BLEND_LO)), 0.0, 1.0);
+    return t*t*(3.0 - 2.0*t);
+}
+
+float rblOffAxis(vec3 v, vec3 n, out vec3 vp)
+{
+    vp = v - n*dot(v, n);
+    float vv = dot(v, v), pp = dot(vp, vp);
+    if (!(vv > 1e-24)) return 0.0;
+    if (pp >= (RBL_BLEND_HI*RBL_BLEND_HI)*vv) return 1.0;
+    return rblBlendWeight(sqrt(pp/vv));
+}
+
+vec3 rblBlendOffAxis(vec3 vp, float w, vec3 f, vec3 n)
+{
+    vec3 c = vec3(0.0);
+    if (w > 0.0)
+    {
+        c = vp*(w*inversesqrt(dot(vp, vp)));
+        if (w >= 1.0) return c;
+    }
+    vec3 fp = f - n*dot(f, n);
+    c = c + fp*((1.0 - w)*inversesqrt(dot(fp, fp)));
+    for (int i = 0; i < 2; i++) c = c - n*dot(c, n);
+    if (!(dot(c, c) > 1e-24)) c = fp;
+    return c*inversesqrt(dot(c, c));
 }
 
 // fmod(degrees, 360) exactly (as the CPU's fmodf), for |degrees| > 368640: there degrees = m 2^e
@@ -89,36 +124,45 @@ vec2 rblSinCosDeg(float degrees)
 
 // Right r, up u (unit, except CAMERA_PLANE's caller up) and unit normal n of a billboard at position
 // for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS
-// billboards until the light sees them at the minimum angle
+// billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,
+// a vector v and a fallback f, one blend follows, then the frame is built.
 void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,
                     vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)
 {
     r = viewRight; u = viewUp; n = viewBack;
-    if (facing == 0)
-    {
-        vec3 nn;
-        if ((dot(facingUp, facingUp) > 0.0) && rblNormalizeTo(cross(r, facingUp), nn)) { u = facingUp; n = nn; }
-    }
-    else if (facing == 1)
-    {
-        vec3 toEye;
-        if (rblNormalizeTo(eye - position, toEye))
-        {
-            n = toEye;
-            vec3 rr;
-            if (rblNormalizeTo(cross(viewUp, n), rr)) { r = rr; u = cross(n, r); }
-            else { r = viewRight; u = cross(n, r); rblNormalizeTo(u, u); r = cross(u, n); }
-        }
-    }
+    vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);
+    bool own = true;
+    if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }
+    else if (facing == 1) { own = rblNormalizeTo(eye - position, axis); f = cross(axis, r); }
     else if (facing == 2)
     {
-        vec3 a = vec3(0.0, 1.0, 0.0);
-        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, a);
-        vec3 nn;
-        if (!rblPerpendicular(eye - position, a, nn) && !rblPerpendicular(viewBack, a, nn) &&
-            !rblPerpendicular(viewUp, a, nn)) nn = viewBack;
+        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);
+        vec3 q;
+        float wb = rblOffAxis(viewBack, a, q);
+        axis = a; v = eye - position; f = rblBlendOffAxis(q, wb, viewUp, a);
+    }
+    else
+    {
+        axis = vec3(0.0, 0.0, 1.0);
+        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, axis);
+        v = (dot(facingUp, facingUp) > 1e-24)? facingUp : vec3(0.0, 1.0, 0.0); f = rblFallbackUp(axis);
+    }
+    if (!own) return;
+    vec3 p;
+    float w = rblOffAxis(v, axis, p);
+    vec3 d = rblBlendOffAxis(p, w, f, axis);
+    if (facing == 0)
+    {
+        n = cross(r, d);
+        u = facingUp;
+        if (w < 1.0) u = r*dot(facingUp, r) + d*sqrt(dot(p, p));
+    }
+    else if (facing == 1) { n = axis; u = d; r = cross(u, n); }
+    else if (facing == 2)
+    {
+        vec3 nn = d;
         u = a; n = nn; r = cross(u, n);
-        vec3 l;
+        vec3 l = a;
         if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
         {
             float ln = dot(l, n), la = dot(l, a);
@@ -128,19 +172,19 @@ void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 vi
                 float k = min(minCastSin/rho, 1.0), m = sqrt(1.0 - k*k);
                 float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;
                 float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
+                float wt = rblBlendWeight(rho);
+                if (wt < 1.0)
+                {
+                    c = c*wt + (1.0 - wt); sn = sn*wt;
+                    float inv = 1.0/sqrt(c*c + sn*sn);
+                    c *= inv; sn *= inv;
+                }
                 n = nn*c + a*sn;
                 u = a*c - nn*sn;
             }
         }
     }
-    else
-    {
-        vec3 nn = vec3(0.0, 0.0, 1.0);
-        if (dot(facingAxis, facingAxis) > 0.0) rblNormalizeTo(facingAxis, nn);
-        vec3 uu = (dot(facingUp, facingUp) > 0.0)? facingUp : vec3(0.0, 1.0, 0.0);
-        if (!rblPerpendicular(uu, nn, uu)) rblPerpendicular(rblFallbackUp(nn), nn, uu);
-        n = nn; u = uu; r = cross(u, n);
-    }
+    else { n = axis; u = d; r = cross(u, n); }
 }
 
 // One corner (0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left) of the instance's quad, given

@@ -3,6 +3,7 @@
 // Included by test_cpu_main.c (one translation unit with the implementation).
 
 #include "reference.h"
+#include "degenerate.h"
 
 static RblBillboard randomBillboard(unsigned int *seed, int facing)
 {
@@ -257,6 +258,125 @@ static void test_hard_target_equals_position_and_billboard_at_the_eye(void)
     RT_CHECK(RblBillboardVertices(&aboveView, 8, 8, &b, q), "axis mode, eye on axis: skipped");
     checkFrame(q, "eye on axis");
     RT_CHECK(fabs(q[3].position[1] - q[0].position[1] - 2.0f) < 1e-6, "axis-locked billboard must stay upright");
+}
+
+// Orthonormality errors of one near-degenerate case: camera frame, normal/tangent, quad edges and
+// normal (CAMERA_PLANE with a caller up keeps raylib's parallelogram: its edges are not perpendicular,
+// the normal is perpendicular to both), unit lengths; NaN sticks
+typedef struct { double view, nt, edges, unit; } DgOrtho;
+static void dgMeasureOrtho(const DgCase *c, DgOrtho *o)
+{
+    RblCameraFrame view = RblGetCameraFrame(c->camera);
+    D3 vr = d3f(view.right), vu = d3f(view.up), vb = d3f(view.back);
+    double e = fmax(fabs(dDot(vr, vu)), fmax(fabs(dDot(vr, vb)), fabs(dDot(vu, vb))));
+    e = fmax(e, fmax(fabs(dLen(vr) - 1.0), fmax(fabs(dLen(vu) - 1.0), fabs(dLen(vb) - 1.0))));
+    if (!(e <= o->view)) o->view = e;
+    RblVertex q[4];
+    RT_CHECK(dgCpuQuad(c, 64, 64, q), "%s skipped", dgNames[0]);
+    D3 e1 = dSub(vecOf(q[1].position), vecOf(q[0].position)), e2 = dSub(vecOf(q[3].position), vecOf(q[0].position));
+    e1 = dScale(e1, 1.0/dLen(e1)); e2 = dScale(e2, 1.0/dLen(e2));
+    bool parallelogram = (c->billboard.facing == RBL_FACING_CAMERA_PLANE) && (dDot(d3f(c->billboard.up), d3f(c->billboard.up)) > 1e-24);
+    for (int i = 0; i < 4; i++)
+    {
+        D3 n = vecOf(q[i].normal), t = vecOf(q[i].tangent);
+        e = fmax(fabs(dLen(n) - 1.0), fabs(dLen(t) - 1.0));
+        if (!(e <= o->unit)) o->unit = e;
+        e = fabs(dDot(n, t));
+        if (!(e <= o->nt)) o->nt = e;
+    }
+    D3 n = vecOf(q[0].normal);
+    e = fmax(fabs(dDot(n, e1)), fabs(dDot(n, e2)));
+    if (!parallelogram) e = fmax(e, fabs(dDot(e1, e2)));
+    if (!(e <= o->edges)) o->edges = e;
+}
+
+// Near-degenerate frames (tests/degenerate.h: every fallback approached from 5 degrees down to
+// 1e-7 rad, both sides, six azimuths, and densely through each blend's cancelling point): the camera
+// frame, normal, tangent and quad edges stay orthonormal within 1e-5
+static void test_hard_near_degenerate_frames_are_orthonormal(void)
+{
+    double worstAll = 0.0;
+    for (int config = 0; config < DG_CONFIGS; config++)
+    {
+        DgOrtho o = { 0.0, 0.0, 0.0, 0.0 };
+        for (int k = 0; k < DG_CASES; k++) { DgCase c = dgCase(config, k); dgMeasureOrtho(&c, &o); }
+        int dense = (dgCancelAngle(config) > 0.0)? DG_DENSE_CASES : 0;
+        for (int k = 0; k < dense; k++) { DgCase c = dgDenseCase(config, k); dgMeasureOrtho(&c, &o); }
+        double worst = fmax(fmax(o.view, o.nt), fmax(o.edges, o.unit));
+        if (!(worst <= worstAll)) worstAll = worst;
+        printf("    %-32s |N.T| %.2e, quad edges/normal %.2e, unit %.2e, camera frame %.2e\n", dgNames[config], o.nt, o.edges, o.unit, o.view);
+        RT_CHECK(worst <= 1e-5, "%s: |N.T| %.3g, edges %.3g, unit %.3g, camera frame %.3g", dgNames[config], o.nt, o.edges, o.unit, o.view);
+    }
+    printf("    near-degenerate sweeps (%d cases, and %d through the cancelling points): worst orthonormality error %.2e\n",
+           DG_CASES*DG_CONFIGS, DG_DENSE_CASES*7, worstAll);
+}
+
+// The same sweeps against the double reference of the documented blend (reference.h, written from
+// the README): corners within 1e-5 of the quad's size, normals within 1e-5
+static void test_hard_near_degenerate_frames_follow_the_documented_blend(void)
+{
+    double worstAll = 0.0;
+    for (int config = 0; config < DG_CONFIGS; config++)
+    {
+        double worstPos = 0.0, worstN = 0.0, atAngle = 0.0;
+        int atAz = 0, atSide = 0, atVariant = 0;
+        for (int k = 0; k < DG_CASES; k++)
+        {
+            DgCase c = dgCase(config, k);
+            c.billboard.rotation = (c.azimuth & 1)? 37.5f : 0.0f;
+            RblVertex q[4];
+            RT_CHECK(dgCpuQuad(&c, 64, 64, q), "%s case %d skipped", dgNames[config], k);
+            D3 ref[4], N;
+            refQuadCast(c.camera, &c.billboard, c.light, c.minSin, ref, &N);
+            double scale = fabs(c.billboard.size.x) + fabs(c.billboard.size.y) + fabs(c.billboard.origin.x) + fabs(c.billboard.origin.y);
+            double e = 0.0;
+            for (int i = 0; i < 4; i++) e = fmax(e, v3dist(q[i].position, ref[i])/scale);
+            double en = dLen(dSub(vecOf(q[0].normal), N));
+            if (!(fmax(e, en) <= fmax(worstPos, worstN))) { atAngle = c.angle; atAz = c.azimuth*60; atSide = c.side; atVariant = c.variant; }
+            if (!(e <= worstPos)) worstPos = e;
+            if (!(en <= worstN)) worstN = en;
+        }
+        worstAll = fmax(worstAll, fmax(worstPos, worstN));
+        printf("    %-32s corners %.2e of the size, normal %.2e (worst at %.3g, azimuth %d, side %d, variant %d)\n",
+               dgNames[config], worstPos, worstN, atAngle, atAz, atSide, atVariant);
+        RT_CHECK(worstPos <= 1e-5 && worstN <= 1e-5, "%s: corners %.3g, normal %.3g from the double reference", dgNames[config], worstPos, worstN);
+    }
+    printf("    near-degenerate sweeps (%d cases): worst difference from the reference blend %.2e\n", DG_CASES*DG_CONFIGS, worstAll);
+}
+
+// The fallbacks themselves, reached exactly: the camera looking along its up gets +Y for a view along
+// X or Z (-Z / +Z along +Y / -Y: the test above), FIXED with up along a normal along X gets +Y, and a
+// CAMERA_PLANE caller up along the camera's right keeps its length along right: the quad collapses
+// to a line as raylib's does, its normal the view's back
+static void test_hard_exact_degenerate_frames_are_the_documented_fallbacks(void)
+{
+    const Vector3 views[4] = { { 10, 0, 0 }, { -10, 0, 0 }, { 0, 0, 10 }, { 0, 0, -10 } };
+    for (int i = 0; i < 4; i++)
+    {
+        Vector3 dir = { views[i].x/10.0f, views[i].y/10.0f, views[i].z/10.0f };
+        RblCameraFrame v = RblGetCameraFrame(makeCamera(views[i], (Vector3){ 0, 0, 0 }, dir));
+        RT_CHECK(v.up.x == 0.0f && v.up.y == 1.0f && v.up.z == 0.0f, "view along (%g, %g, %g) with up along it: screen-up (%g, %g, %g), want +Y",
+                 dir.x, dir.y, dir.z, v.up.x, v.up.y, v.up.z);
+    }
+    RblCameraFrame view = RblGetCameraFrame(makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f }));
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 1.5f, 2.0f }; b.origin = (Vector2){ 0.75f, 0.5f };
+    b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 1, 0, 0 }; b.up = (Vector3){ 3, 0, 0 };
+    RblVertex q[4];
+    RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "FIXED skipped");
+    checkFrame(q, "FIXED up along the normal");
+    D3 up = dSub(vecOf(q[3].position), vecOf(q[0].position));
+    RT_CHECK(fabs(up.x) < 1e-6 && fabs(up.y - 2.0) < 1e-6 && fabs(up.z) < 1e-6, "FIXED normal +X, up +X: up edge (%g, %g, %g), want +Y x 2", up.x, up.y, up.z);
+    b.facing = RBL_FACING_CAMERA_PLANE; b.axis = (Vector3){ 0, 0, 0 };
+    b.up = (Vector3){ 2.0f*view.right.x, 2.0f*view.right.y, 2.0f*view.right.z };
+    RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "CAMERA_PLANE skipped");
+    checkFrame(q, "CAMERA_PLANE up along right");
+    D3 e1 = dSub(vecOf(q[1].position), vecOf(q[0].position)), e2 = dSub(vecOf(q[3].position), vecOf(q[0].position));
+    double area = dLen(dCross(e1, e2))/(dLen(e1)*dLen(e2));
+    RT_CHECK(area < 1e-5, "CAMERA_PLANE up along right: the quad should collapse (sine between edges %.3g)", area);
+    RT_CHECK(fabs(dLen(e2) - 4.0) < 1e-5, "CAMERA_PLANE up along right: up edge %.7f long, want |up| x height = 4", dLen(e2));
+    RT_CHECK(dDot(vecOf(q[0].normal), d3f(view.back)) > 1.0 - 1e-6, "CAMERA_PLANE up along right: normal should be the view's back");
 }
 
 static void test_hard_zero_negative_and_huge_sizes(void)

@@ -3,6 +3,7 @@
 // RblBillboardVertices() (which the immediate and batched paths share). Included by test_gpu_main.c.
 
 #include "tf_capture.h"
+#include "degenerate.h"
 
 static RblBillboard billboardOf(const RblInstance *in, RblInstancedDesc d)
 {
@@ -115,6 +116,227 @@ static void test_paths_instanced_hard_cases_stay_finite(void)
         }
         free(gpu);
     }
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// One near-degenerate case through the instanced stage (6 captured vertices, freed by the caller)
+static float *dgGpuCase(TfGl *gl, GLu prog, RblInstanceBuffer *buf, const DgCase *c)
+{
+    RblInstance in;
+    memset(&in, 0, sizeof(in));
+    in.position = c->billboard.position; in.size = c->billboard.size; in.origin = c->billboard.origin;
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    d.facing = c->billboard.facing; d.up = c->billboard.up; d.axis = c->billboard.axis; d.roundness = c->billboard.roundness;
+    tfLight = c->light; tfMinCastSin = c->minSin;
+    float *gpu = tfCapture(gl, prog, buf, c->camera, d, 64, 64, &in, 1);
+    tfLight = (Vector4){ 0 }; tfMinCastSin = 0.0f;
+    return gpu;
+}
+
+// Near-degenerate frames (tests/degenerate.h: every fallback approached from 5 degrees down to
+// 1e-7 rad, both sides, six azimuths): the instanced stage emits the CPU path's vertices within 1e-5
+// along every sweep, with and without rounded normals. Densely through each blend's cancelling point
+// (the opposed side at weight 1/2, where any continuous blend turns its output around within a
+// rounding error) the instanced frame stays finite and orthonormal; how far the two paths' roundings
+// take them apart there is reported.
+static void test_paths_instanced_near_degenerate_frames_agree_with_the_cpu_path(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
+    GLu prog = tfProgram(&gl);
+    RT_CHECK(prog != 0, "instanced vertex stage did not link with transform feedback");
+    if (prog == 0) return;
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worstAll = 0.0;
+    for (int config = 0; config < DG_CONFIGS; config++)
+    {
+        double worstPos = 0.0, worstAttr = 0.0, worstNT = 0.0, worstAngle = 0.0;
+        for (int k = 0; k < DG_CASES; k++)
+        {
+            DgCase c = dgCase(config, k);
+            c.billboard.roundness = (c.azimuth & 2)? 0.5f : 0.0f;
+            RblVertex q[4];
+            RT_CHECK(dgCpuQuad(&c, 64, 64, q), "%s case %d: cpu skipped", dgNames[config], k);
+            float *gpu = dgGpuCase(&gl, prog, &buf, &c);
+            double scale = 1.0 + dLen(d3f(c.billboard.position)) + 3.0;
+            double casePos = 0.0, caseAttr = 0.0;
+            for (int v = 0; v < 6; v++)
+            {
+                const float *g = gpu + (size_t)v*TF_FLOATS;
+                const RblVertex *cv = &q[cornerOf[v]];
+                for (int j = 0; j < 3; j++) casePos = fmax(casePos, fabs(g[j] - cv->position[j])/scale);
+                for (int j = 0; j < 3; j++) caseAttr = fmax(caseAttr, fabs(g[5 + j] - cv->normal[j]));
+                for (int j = 0; j < 4; j++) caseAttr = fmax(caseAttr, fabs(g[8 + j] - cv->tangent[j]));
+                worstNT = fmax(worstNT, fabs(g[5]*g[8] + g[6]*g[9] + g[7]*g[10]));
+            }
+            if (fmax(casePos, caseAttr) > 1e-5 && fmax(worstPos, worstAttr) <= 1e-5)
+                printf("    %s: first case over 1e-5: angle %.3g side %d variant %d azimuth %d (pos %.2e attr %.2e)\n",
+                       dgNames[config], c.angle, c.side, c.variant, c.azimuth*60, casePos, caseAttr);
+            if (fmax(casePos, caseAttr) > fmax(worstPos, worstAttr)) worstAngle = c.angle;
+            worstPos = fmax(worstPos, casePos); worstAttr = fmax(worstAttr, caseAttr);
+            free(gpu);
+        }
+        printf("    %-32s instanced vs cpu: position %.2e, attributes %.2e (worst at %.2g), gpu |N.T| %.2e\n", dgNames[config], worstPos, worstAttr, worstAngle, worstNT);
+        worstAll = fmax(worstAll, fmax(worstPos, worstAttr));
+        RT_CHECK(worstPos < 1e-5 && worstAttr < 1e-5, "%s: instanced vs cpu position %.3g attributes %.3g", dgNames[config], worstPos, worstAttr);
+    }
+    printf("    near-degenerate sweeps (%d cases): worst instanced vs cpu %.2e\n", DG_CASES*DG_CONFIGS, worstAll);
+    // Through the cancelling points: the instanced frame alone
+    double worstOrtho = 0.0, worstApart = 0.0;
+    int apart = 0, dense = 0;
+    for (int config = 0; config < DG_CONFIGS; config++)
+    for (int k = 0; (dgCancelAngle(config) > 0.0) && (k < DG_DENSE_CASES); k++)
+    {
+        DgCase c = dgDenseCase(config, k);
+        float *gpu = dgGpuCase(&gl, prog, &buf, &c);
+        RblVertex q[4];
+        dgCpuQuad(&c, 64, 64, q);
+        D3 p0 = vecOf(gpu), e1 = dSub(vecOf(gpu + TF_FLOATS), p0), e2 = dSub(vecOf(gpu + 5*TF_FLOATS), p0);     // corners 1 and 3
+        e1 = dScale(e1, 1.0/dLen(e1)); e2 = dScale(e2, 1.0/dLen(e2));
+        bool parallelogram = (c.billboard.facing == RBL_FACING_CAMERA_PLANE) && (dDot(d3f(c.billboard.up), d3f(c.billboard.up)) > 1e-24);
+        double o = 0.0, e = 0.0;
+        for (int v = 0; v < 6; v++)
+        {
+            const float *g = gpu + (size_t)v*TF_FLOATS;
+            D3 n = vecOf(g + 5), t = vecOf(g + 8);
+            o = fmax(o, fmax(fabs(dLen(n) - 1.0), fmax(fabs(dLen(t) - 1.0), fabs(dDot(n, t)))));
+            o = fmax(o, fmax(fabs(dDot(n, e1)), fabs(dDot(n, e2))));
+            if (!parallelogram) o = fmax(o, fabs(dDot(e1, e2)));
+            for (int j = 0; j < 3; j++) e = fmax(e, fabs(g[5 + j] - q[cornerOf[v]].normal[j]));
+        }
+        if (!(o <= worstOrtho)) worstOrtho = o;
+        worstApart = fmax(worstApart, e);
+        if (e > 1e-5) apart++;
+        dense++;
+        free(gpu);
+    }
+    RT_CHECK(worstOrtho <= 1e-5, "instanced frame through the cancelling points: orthonormality error %.3g", worstOrtho);
+    printf("    through the cancelling points (%d cases within 2%% of the weight-1/2 angle): instanced orthonormality error %.2e; "
+           "instanced vs cpu normals up to %.2e, %d cases over 1e-5\n", dense, worstOrtho, worstApart, apart);
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// Caller vectors too short to give a direction (|v| <= 1e-12 counts as zero: the default) and just
+// long enough, including denormal lengths a GPU may flush to zero: both paths read them alike
+static void test_paths_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
+    GLu prog = tfProgram(&gl);
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+    Camera3D cam = makeCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f }, (Vector3){ 0.1f, 1.0f, 0.0f });
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    const float lengths[5] = { 1e-20f, 1e-13f, 9e-13f, 2e-12f, 1e-11f };
+    const Vector3 dirs[3] = { { 1.0f, 0.0f, 0.0f }, { 0.0f, 0.6f, 0.8f }, { -0.48f, 0.6f, 0.64f } };
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worst = 0.0;
+    int cases = 0;
+    for (int facing = RBL_FACING_CAMERA_PLANE; facing <= RBL_FACING_FIXED; facing++)
+    for (int which = 0; which < 2; which++)          // 0: up tiny, 1: axis tiny
+    for (int li = 0; li < 5; li++)
+    for (int di = 0; di < 3; di++)
+    {
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = facing;
+        Vector3 v = { dirs[di].x*lengths[li], dirs[di].y*lengths[li], dirs[di].z*lengths[li] };
+        if (which == 0) { d.up = v; if (facing == RBL_FACING_FIXED) d.axis = (Vector3){ 0.2f, 0.5f, 1.0f }; }
+        else { d.axis = v; if (facing == RBL_FACING_FIXED) d.up = (Vector3){ 0.3f, 1.0f, 0.0f }; }
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = (Vector3){ 1.0f, 0.5f, -2.0f }; in.size = (Vector2){ 1.5f, 2.0f }; in.origin = (Vector2){ 0.75f, 0.5f };
+        float *gpu = tfCapture(&gl, prog, &buf, cam, d, 8, 8, &in, 1);
+        RblBillboard b = billboardOf(&in, d);
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "cpu skipped");
+        double e = 0.0;
+        for (int k = 0; k < 6; k++)
+        {
+            const float *g = gpu + (size_t)k*TF_FLOATS;
+            const RblVertex *c = &q[cornerOf[k]];
+            for (int j = 0; j < 3; j++) e = fmax(e, fmax(fabs(g[j] - c->position[j])/4.0, fabs(g[5 + j] - c->normal[j])));
+            for (int j = 0; j < 4; j++) e = fmax(e, fabs(g[8 + j] - c->tangent[j]));
+        }
+        RT_CHECK(e < 1e-5, "mode %d, %s of length %g along (%g, %g, %g): instanced vs cpu %.3g", facing, which? "axis" : "up", lengths[li], dirs[di].x, dirs[di].y, dirs[di].z, e);
+        worst = fmax(worst, e);
+        cases++;
+        free(gpu);
+    }
+    printf("    tiny up/axis (lengths 1e-20 .. 1e-11, %d cases): worst instanced vs cpu %.2e\n", cases, worst);
+    gl.DeleteProgram(prog);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// Rotation at any angle an instance may carry (|value| < 2^120): the instanced stage's exact degree
+// reduction (rblReduceDegrees, integer arithmetic) against the CPU's fmodf and a double reference.
+// Seen from the front the tangent of an unflipped quad is (cos, sin, 0) of the rotation.
+static void test_paths_instanced_rotation_agrees_with_the_cpu_at_any_angle(void)
+{
+    TfGl gl;
+    if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
+    GLu prog = tfProgram(&gl);
+    enum { FIXED_ANGLES = 24, RANDOM_ANGLES = 1000, N = FIXED_ANGLES + RANDOM_ANGLES };
+    static const float fixedAngles[FIXED_ANGLES] = {
+        1e4f, -1e4f, 1e6f, -1e6f, 3.6e8f, -3.6e8f, 12345.678f, -98765.4321f, 1000000.3f, -7777777.7f, 368639.97f, 368640.03f,
+        -368641.0f, 16777215.0f, -16777217.0f, 94371840.0f /* 90 x 2^20 */, 283115520.0f /* 270 x 2^20 */, 4.831838e10f /* 45 x 2^30 */,
+        1e30f, -1e30f, 1.3e36f, -1.3e36f, 359.99997f, -0.00001f };
+    RblInstance in[N];
+    float angles[N];
+    unsigned int seed = 90210u;
+    for (int i = 0; i < N; i++)
+    {
+        // random: magnitude log-uniform over 1e-3 .. 1e36, either sign, fraction bits set wherever float has them
+        float a = (i < FIXED_ANGLES)? fixedAngles[i] : (float)pow(10.0, rtRandomRange(&seed, -3.0f, 36.0f));
+        if ((i >= FIXED_ANGLES) && (rtRandom(&seed) & 1)) a = -a;
+        angles[i] = a;
+        memset(&in[i], 0, sizeof(in[i]));
+        in[i].position = (Vector3){ 0.25f*(float)(i%7), 0.5f*(float)(i%5), 0.0f };
+        in[i].size = (Vector2){ 1.0f, 2.0f }; in[i].origin = (Vector2){ 0.5f, 0.25f };
+        in[i].rotation = a;
+    }
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(N);
+    Camera3D cam = makeCamera((Vector3){ 0.0f, 0.0f, 10.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    float *gpu = tfCapture(&gl, prog, &buf, cam, d, 8, 8, in, N);
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    double worstRef = 0.0, worstCpu = 0.0, worstCpuRef = 0.0;
+    int exactQuadrants = 0, quadrantAngles = 0;
+    for (int i = 0; i < N; i++)
+    {
+        double r = fmod((double)angles[i], 360.0)*(3.14159265358979323846/180.0), cr = cos(r), sr = sin(r);
+        const float *g = gpu + (size_t)i*6*TF_FLOATS;
+        double e = fmax(fabs(g[8] - cr), fabs(g[9] - sr));
+        RT_CHECK(e <= 1e-6 && g[10] == 0.0f, "%.9g degrees: instanced (cos, sin) (%.9g, %.9g), double (%.9g, %.9g)", angles[i], g[8], g[9], cr, sr);
+        worstRef = fmax(worstRef, e);
+        if (fmod((double)angles[i], 90.0) == 0.0)
+        {
+            quadrantAngles++;
+            if ((g[8] == (float)cr) && (g[9] == (float)sr)) exactQuadrants++;
+        }
+        RblBillboard b = billboardOf(&in[i], d);
+        RblVertex q[4];
+        RT_CHECK(RblBillboardVertices(&view, 8, 8, &b, q), "cpu skipped %g degrees", angles[i]);
+        worstCpuRef = fmax(worstCpuRef, fmax(fabs(q[0].tangent[0] - cr), fabs(q[0].tangent[1] - sr)));
+        for (int v = 0; v < 6; v++)
+        {
+            const float *gv = gpu + ((size_t)i*6 + v)*TF_FLOATS;
+            const RblVertex *c = &q[cornerOf[v]];
+            for (int k = 0; k < 3; k++) worstCpu = fmax(worstCpu, fmax(fabs(gv[k] - c->position[k])/4.0, fabs(gv[5 + k] - c->normal[k])));
+            for (int k = 0; k < 4; k++) worstCpu = fmax(worstCpu, fabs(gv[8 + k] - c->tangent[k]));
+        }
+    }
+    RT_CHECK(worstCpu < 1e-6, "instanced vs cpu at large angles: %.3g", worstCpu);
+    RT_CHECK(worstCpuRef <= 1e-6, "cpu (cos, sin) vs double at large angles: %.3g", worstCpuRef);
+    RT_CHECK(quadrantAngles >= 10 && exactQuadrants == quadrantAngles, "%d of %d multiples of 90 degrees exact on the instanced stage", exactQuadrants, quadrantAngles);
+    printf("    rotation at %d angles up to 1.3e36 degrees: instanced vs double %.2e, cpu vs double %.2e, instanced vs cpu %.2e; %d multiples of 90 exact\n",
+           N, worstRef, worstCpuRef, worstCpu, quadrantAngles);
+    free(gpu);
     gl.DeleteProgram(prog);
     RblUnloadInstanceBuffer(&buf);
 }
