@@ -1115,6 +1115,16 @@ static bool rbl__isLive(const void *object)
     return false;
 }
 
+// An unload's holder check: true when holder's state is live; otherwise one line under fn (NULL
+// holder, zero holder, stale copy) and false
+static bool rbl__unloadable(const void *holder, const void *state, const char *fn, const char *what)
+{
+    if (holder == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL %s", fn, what); return false; }
+    if (rbl__isLive(state)) return true;
+    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, (state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+    return false;
+}
+
 //----------------------------------------------------------------------------------
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
 //----------------------------------------------------------------------------------
@@ -2781,6 +2791,14 @@ static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, 
     cache->facing = b->facing;
 }
 
+// The albedo texture's size; an empty slot draws raylib's 1x1 default texture
+static void rbl__albedoSize(const Material *material, int *width, int *height)
+{
+    const bool has = (material->maps != NULL) && (material->maps[MATERIAL_MAP_ALBEDO].texture.id != 0);
+    *width = has? material->maps[MATERIAL_MAP_ALBEDO].texture.width : 1;
+    *height = has? material->maps[MATERIAL_MAP_ALBEDO].texture.height : 1;
+}
+
 // A billboard every path can expand: position .. source and up .. roundness are runs of floats
 // (checked at compile time), below 2^60 so that corners (position + size along unit axes), eye
 // distances and texcoords (source edges / texture size) stay finite; a known facing; a texture of
@@ -3016,14 +3034,9 @@ bool RblIsBatchValid(RblBatch batch)
 
 void RblUnloadBatch(RblBatch *batch)
 {
-    if (batch == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadBatch: NULL batch"); return; }
-    rbl__BatchState *b = rbl__batchState(batch);
-    if (b != NULL)
-    {
-        rbl__liveRemove(b);
-        rbl__freeBatchState(b);
-    }
-    else TraceLog(LOG_WARNING, "RBL: RblUnloadBatch: %s", (batch->state != NULL)? "batch already unloaded (a stale copy)" : "batch not loaded (zero, or unloaded before)");
+    if (!rbl__unloadable(batch, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
+    rbl__liveRemove(batch->state);
+    rbl__freeBatchState(batch->state);
     memset(batch, 0, sizeof(*batch));
 }
 
@@ -3090,13 +3103,8 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         return false;
     }
 
-    // An albedo slot without a texture draws raylib's 1x1 default texture
-    int texW = 1, texH = 1;
-    if ((material.maps != NULL) && (material.maps[MATERIAL_MAP_ALBEDO].texture.id != 0))
-    {
-        texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
-        texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
-    }
+    int texW, texH;
+    rbl__albedoSize(&material, &texW, &texH);
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
     rbl__Program *program = NULL;
@@ -3263,12 +3271,8 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     RblBatch *immediate = &rbl__state.immediate;
     // Everything is checked before the one-quad batch is touched (or created on first use)
     rbl__Program *program = NULL;
-    int texW = 1, texH = 1;
-    if ((material.maps != NULL) && (material.maps[MATERIAL_MAP_ALBEDO].texture.id != 0))
-    {
-        texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
-        texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
-    }
+    int texW, texH;
+    rbl__albedoSize(&material, &texW, &texH);
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
                       rbl__materialProblem(&material, false, &program);
     if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
@@ -3372,14 +3376,9 @@ bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
 
 void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
 {
-    if (buffer == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadInstanceBuffer: NULL buffer"); return; }
-    rbl__InstanceBufferState *b = rbl__instanceState(buffer);
-    if (b != NULL)
-    {
-        rbl__liveRemove(b);
-        rbl__freeInstanceState(b);
-    }
-    else TraceLog(LOG_WARNING, "RBL: RblUnloadInstanceBuffer: %s", (buffer->state != NULL)? "instance buffer already unloaded (a stale copy)" : "instance buffer not loaded (zero, or unloaded before)");
+    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
+    rbl__liveRemove(buffer->state);
+    rbl__freeInstanceState(buffer->state);
     memset(buffer, 0, sizeof(*buffer));
 }
 
@@ -3485,12 +3484,8 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     rbl__Program *program = NULL;
     if (!rbl__prepareDraw(&material, casterMaps, true, "RblDrawInstanced", &program)) return 0;
 
-    int texW = 1, texH = 1;
-    if ((material.maps != NULL) && (material.maps[MATERIAL_MAP_ALBEDO].texture.id != 0))
-    {
-        texW = material.maps[MATERIAL_MAP_ALBEDO].texture.width;
-        texH = material.maps[MATERIAL_MAP_ALBEDO].texture.height;
-    }
+    int texW, texH;
+    rbl__albedoSize(&material, &texW, &texH);
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
 
     // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
@@ -5678,13 +5673,7 @@ bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
-    if (gbuffer == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: NULL G-buffer"); return; }
-    if (!rbl__isLive(gbuffer->state))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: %s", (gbuffer->state != NULL)? "G-buffer already unloaded (a stale copy)" : "G-buffer not loaded (zero, or unloaded before)");
-        memset(gbuffer, 0, sizeof(*gbuffer));
-        return;
-    }
+    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
     if (gbuffer->state->begun) RblEndGBuffer(gbuffer);
     rbl__unloadTargets(gbuffer);
     rbl__releasePasses(gbuffer);
@@ -6105,13 +6094,7 @@ bool RblIsShadowMapValid(RblShadowMap map)
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
-    if (map == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: NULL map"); return; }
-    if (!rbl__isLive(map->state))
-    {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: %s", (map->state != NULL)? "shadow map already unloaded (a stale copy)" : "shadow map not loaded (zero, or unloaded before)");
-        memset(map, 0, sizeof(*map));
-        return;
-    }
+    if (!rbl__unloadable(map, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
     if (map->state->begun) RblEndShadowMap(map);
     if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);

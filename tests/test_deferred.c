@@ -533,6 +533,19 @@ static Image defSweepRender(const DefSweepScene *s, DefSweepCase c, Model *spher
     return img;
 }
 
+// A G-buffer of the sweep's size for one BRDF, point and directional lights
+static RblGBuffer sweepGBuffer(int brdf)
+{
+    RblGBufferDesc gd;
+    memset(&gd, 0, sizeof(gd));
+    gd.width = SWEEP_SIZE; gd.height = SWEEP_SIZE;
+    gd.brdf = brdf;
+    gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+    RblGBuffer g = RblLoadGBuffer(gd);
+    RT_CHECK(RblIsGBufferValid(&g), "G-buffer for brdf %d failed", brdf);
+    return g;
+}
+
 static void test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved(void)
 {
     DefSweepCase cases[32];
@@ -548,16 +561,7 @@ static void test_deferred_matches_forward_for_every_brdf_roughness_and_shininess
     Model sphere = LoadModelFromMesh(mesh);
     Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
     RblGBuffer g[3];
-    for (int b = 0; b < 3; b++)
-    {
-        RblGBufferDesc gd;
-        memset(&gd, 0, sizeof(gd));
-        gd.width = SWEEP_SIZE; gd.height = SWEEP_SIZE;
-        gd.brdf = b;
-        gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
-        g[b] = RblLoadGBuffer(gd);
-        RT_CHECK(RblIsGBufferValid(&g[b]), "G-buffer for brdf %d failed", b);
-    }
+    for (int b = 0; b < 3; b++) g[b] = sweepGBuffer(b);
     const char *brdfName[3] = { "Lambert", "Blinn-Phong", "GGX" };
     printf("    %-12s %-28s %18s %18s\n", "brdf", "parameters", "plane max/mean", "sphere max/mean");
     int failed = 0;
@@ -627,16 +631,7 @@ static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within
     Model sphere = LoadModelFromMesh(GenMeshSphere(1.2f, 96, 96));
     Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
     RblGBuffer g[3];
-    for (int b = 1; b < 3; b++)
-    {
-        RblGBufferDesc gd;
-        memset(&gd, 0, sizeof(gd));
-        gd.width = SWEEP_SIZE; gd.height = SWEEP_SIZE;
-        gd.brdf = b;
-        gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
-        g[b] = RblLoadGBuffer(gd);
-        RT_CHECK(RblIsGBufferValid(&g[b]), "G-buffer for brdf %d failed", b);
-    }
+    for (int b = 1; b < 3; b++) g[b] = sweepGBuffer(b);
     const float turns[3] = { 0.3f, 1.1f, 1.9f }, scales[3] = { 0.2f, 1.0f, 5.0f };
     const Vector3 about = Vector3Normalize((Vector3){ 0.3f, 1.0f, 0.2f });
     printf("    30-bit normal code: worst %.2e rad; per case over 9 rigs: worst max, worst mean, rigs over 2/255, limit\n", worstNormal);
