@@ -3,6 +3,8 @@
 #   make test    every test, headless, under EGL and OSMesa; ends with "N passed, N failed"
 #   make bench   benchmarks (-O2) -> build/bench/results.csv and a table
 #   make shaders splice shaders/*.glsl into rbillboard_lit.h
+#   make web     the showcase as a page: build/web/index.html (WebGL2, WebGL1 fallback build)
+#   make test-web  the browser GPU suite in headless Chromium; ends with "web: N passed, N failed"
 # raylib >= 6.0 is found by tests/tools/get-raylib.sh: pkg-config, then RAYLIB_SRC=<tree>, then
 # Debian's source package (built once into build/raylib).
 
@@ -14,7 +16,7 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
@@ -148,6 +150,60 @@ clean:
 
 clean-all:
 	rm -rf $(BUILD)
+
+# ---- browser (Debian's emscripten 3.1.6 + headless Chromium, both from tests/tools/deps.sh web) ----
+# raylib is built for PLATFORM_WEB_RGFW twice (ES 3 for WebGL2, ES 2 for the WebGL1 fallback) into
+# $(BUILD)/web/raylib-es3|es2 from the source tree get-raylib.sh fetched. emcc writes .js + .wasm only
+# (its -o page.html minifier crashes on Debian's node): the pages are tests/web/*.html.
+WEB_SHOWCASE := examples/billboards_lit_showcase.c
+WEBCC        := NODE_PATH=/usr/share/nodejs emcc
+WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests
+WEB_LDFLAGS  := -sALLOW_MEMORY_GROWTH=1 -sTOTAL_STACK=16777216 -sINITIAL_MEMORY=67108864
+WEB_ES3      := $(BUILD)/web/raylib-es3/libraylib.web.a
+WEB_ES2      := $(BUILD)/web/raylib-es2/libraylib.web.a
+
+web-deps:
+	@bash tests/tools/deps.sh web
+
+$(WEB_ES3): tests/tools/get-raylib-web.sh $(BUILD)/raylib.mk | web-deps
+	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib-web.sh es3
+
+$(WEB_ES2): tests/tools/get-raylib-web.sh $(BUILD)/raylib.mk | web-deps
+	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib-web.sh es2
+
+# The showcase page: WebGL2 build (showcase.js) and WebGL1 build (showcase-gl1.js); index.html loads
+# the first when the browser gives a WebGL2 context, else the second
+$(BUILD)/web/showcase.js: tests/web/showcase_web.c $(WEB_SHOWCASE) $(HEADER) $(WEB_ES3) | web-deps
+	@mkdir -p $(@D)
+	$(WEBCC) $(WEB_CFLAGS) -DRBL_WEB_SHOWCASE='"../../$(WEB_SHOWCASE)"' -DRBL_WEB_GL=2 -I$(BUILD)/web/raylib-es3 $< $(WEB_ES3) -o $@ \
+	  $(WEB_LDFLAGS) -sUSE_WEBGL2=1 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
+
+$(BUILD)/web/showcase-gl1.js: tests/web/showcase_web.c $(WEB_SHOWCASE) $(HEADER) $(WEB_ES2) | web-deps
+	@mkdir -p $(@D)
+	$(WEBCC) $(WEB_CFLAGS) -DRBL_WEB_SHOWCASE='"../../$(WEB_SHOWCASE)"' -DRBL_WEB_GL=1 -I$(BUILD)/web/raylib-es2 $< $(WEB_ES2) -o $@ \
+	  $(WEB_LDFLAGS) -sMIN_WEBGL_VERSION=1 -sMAX_WEBGL_VERSION=1
+
+$(BUILD)/web/index.html: tests/web/index.html
+	@mkdir -p $(@D)
+	cp $< $@
+
+web: $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html
+	@echo "web: open build/web/index.html through a web server (python3 -m http.server -d $(BUILD)/web)"
+
+# Headless screenshot of the page for the README (SwiftShader WebGL2)
+web-shot: web
+	@python3 tests/web/run.py shot $(BUILD)/web examples/resources/rbl_web.png 800 450 6000
+
+# The browser GPU suite: tests/web/test_web_main.c (tests/test_*.c are included whole: the ones not
+# run in the browser are unused there, hence -Wno-unused-function)
+$(BUILD)/web/test/test_web.js: tests/web/test_web_main.c tests/web/test.html $(GPU_TESTS) tests/gpu_common.h $(HARNESS) $(HEADER) $(WEB_ES3) | web-deps
+	@mkdir -p $(@D)
+	$(WEBCC) $(WEB_CFLAGS) -Wno-unused-function -I$(BUILD)/web/raylib-es3 tests/web/test_web_main.c tests/harness.c $(WEB_ES3) -o $@ \
+	  $(WEB_LDFLAGS) -sUSE_WEBGL2=1 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sEXIT_RUNTIME=1
+	cp tests/web/test.html $(@D)/index.html
+
+test-web: $(BUILD)/web/test/test_web.js
+	@python3 tests/web/run.py test $(BUILD)/web/test $(WEB_FILTER)
 
 # ---- README pictures (rendered headlessly, committed under examples/resources) -------------
 $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk

@@ -1,8 +1,8 @@
 // Test support implementation; see harness.h.
+#define RT_HARNESS_IMPLEMENTATION
 #include "harness.h"
 #include "rlgl.h"
 
-#include <dlfcn.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -10,9 +10,15 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#if defined(__EMSCRIPTEN__)
+#include <emscripten/html5.h>
+#include <GLES3/gl3.h>
+#else
+#include <dlfcn.h>
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/osmesa.h>
+#endif
 
 // ---- runner ---------------------------------------------------------------------------------
 static const char *rtTestName = "";
@@ -69,6 +75,129 @@ float rtRandomRange(unsigned int *s, float lo, float hi)
 }
 
 // ---- headless GL ----------------------------------------------------------------------------
+#if defined(__EMSCRIPTEN__)
+// Browser: the page's #canvas gets a WebGL2 context made here, not by raylib's RGFW web platform,
+// which asks for WebGL1 (raylib 6.0 sets no context version for ES 3). rlgl is then started on it
+// the same way as on the desktop contexts.
+static EMSCRIPTEN_WEBGL_CONTEXT_HANDLE rtWebContext = 0;
+
+// ISO C has no cast between function pointers and void *: both travel through memcpy
+typedef void *(*RtWebGetProc)(const char *);
+static void *rtWebLoaderPtr(void) { RtWebGetProc f = emscripten_webgl_get_proc_address; void *p; memcpy(&p, &f, sizeof(p)); return p; }
+
+const char *rtInitContext(int width, int height)
+{
+    EmscriptenWebGLContextAttributes attrs;
+    emscripten_webgl_init_context_attributes(&attrs);
+    attrs.majorVersion = 2;
+    attrs.minorVersion = 0;
+    attrs.antialias = EM_FALSE;     // tests compare exact coverage; MSAA would blend quad edges
+    attrs.preserveDrawingBuffer = EM_TRUE;
+    emscripten_set_canvas_element_size("#canvas", width, height);
+    rtWebContext = emscripten_webgl_create_context("#canvas", &attrs);
+    if (rtWebContext <= 0) { printf("    context: webgl2: refused (%d)\n", (int)rtWebContext); return NULL; }
+    emscripten_webgl_make_context_current(rtWebContext);
+    // Float render targets (deferred light accumulation, linear readbacks) need this on WebGL2
+    if (!emscripten_webgl_enable_extension(rtWebContext, "EXT_color_buffer_float")) printf("    context: webgl2: no EXT_color_buffer_float\n");
+    emscripten_webgl_enable_extension(rtWebContext, "OES_texture_float_linear");
+    SetTraceLogLevel(LOG_WARNING);
+    rlLoadExtensions(rtWebLoaderPtr());
+    rlglInit(width, height);
+    // InitWindow would also give the shapes functions a texture (the default font's white rectangle);
+    // raylib's 1x1 white default texture serves the same purpose
+    SetShapesTexture((Texture2D){ rlGetTextureIdDefault(), 1, 1, 1, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 }, (Rectangle){ 0, 0, 1, 1 });
+    return "webgl2";
+}
+
+void rtCloseContext(void)
+{
+    rlglClose();
+    if (rtWebContext > 0) emscripten_webgl_destroy_context(rtWebContext);
+    rtWebContext = 0;
+}
+
+void rtFinish(void)
+{
+    void (*finish)(void) = NULL;
+    void *p = emscripten_webgl_get_proc_address("glFinish");
+    memcpy(&finish, &p, sizeof(p));
+    if (finish != NULL) finish();
+}
+
+void *rtGlProc(const char *name) { return emscripten_webgl_get_proc_address(name); }
+
+// IEEE half from float, round to nearest even (values read from half targets convert exactly)
+static unsigned short rtHalfFromFloat(float f)
+{
+    unsigned int x; memcpy(&x, &f, sizeof(x));
+    unsigned int sign = (x >> 16) & 0x8000u, mant = x & 0x7FFFFFu;
+    int e = (int)((x >> 23) & 0xFF);
+    if (e == 0xFF) return (unsigned short)(sign | 0x7C00u | (mant? 0x200u : 0u));   // inf, NaN
+    e = e - 127 + 15;
+    if (e >= 0x1F) return (unsigned short)(sign | 0x7C00u);                          // overflow to inf
+    if (e <= 0)
+    {
+        if (e < -10) return (unsigned short)sign;                                     // below half subnormals
+        mant |= 0x800000u;
+        int shift = 14 - e;
+        unsigned int h = mant >> shift, rest = mant & ((1u << shift) - 1u), halfway = 1u << (shift - 1);
+        if ((rest > halfway) || ((rest == halfway) && (h & 1u))) h++;
+        return (unsigned short)(sign | h);
+    }
+    unsigned int h = ((unsigned int)e << 10) | (mant >> 13), rest = mant & 0x1FFFu;
+    if ((rest > 0x1000u) || ((rest == 0x1000u) && (h & 1u))) h++;                    // may carry into the exponent: correct
+    return (unsigned short)(sign | h);
+}
+
+void *rtWebReadTexturePixels(unsigned int id, int width, int height, int format)
+{
+    int channels = 0; bool half = false;
+    switch (format)
+    {
+        case PIXELFORMAT_UNCOMPRESSED_R32: channels = 1; break;
+        case PIXELFORMAT_UNCOMPRESSED_R32G32B32: channels = 3; break;
+        case PIXELFORMAT_UNCOMPRESSED_R32G32B32A32: channels = 4; break;
+        case PIXELFORMAT_UNCOMPRESSED_R16: channels = 1; half = true; break;
+        case PIXELFORMAT_UNCOMPRESSED_R16G16B16: channels = 3; half = true; break;
+        case PIXELFORMAT_UNCOMPRESSED_R16G16B16A16: channels = 4; half = true; break;
+        default: break;
+    }
+    size_t count = (size_t)width*height;
+    if (channels == 0)
+    {
+        // 8-bit formats: raylib's FBO readback gives RGBA8; keep the channels the format names
+        unsigned char *rgba = (unsigned char *)rlReadTexturePixels(id, width, height, format);
+        if ((rgba == NULL) || (format == PIXELFORMAT_UNCOMPRESSED_R8G8B8A8)) return rgba;
+        int keep = (format == PIXELFORMAT_UNCOMPRESSED_GRAYSCALE)? 1 : (format == PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA)? 2 :
+                   (format == PIXELFORMAT_UNCOMPRESSED_R8G8B8)? 3 : 4;
+        for (size_t i = 0; i < count; i++)
+            for (int c = 0; c < keep; c++) rgba[i*keep + c] = rgba[i*4 + ((keep == 2) && (c == 1)? 3 : c)];
+        return rgba;
+    }
+    float *rgba = (float *)malloc(count*4*sizeof(float));
+    if (rgba == NULL) return NULL;
+    GLint previous = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);    // the one float readback WebGL2 guarantees
+    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)previous);
+    glDeleteFramebuffers(1, &fbo);
+    if (!half)
+    {
+        for (size_t i = 0; i < count; i++) for (int c = 0; c < channels; c++) rgba[i*channels + c] = rgba[i*4 + c];
+        return rgba;
+    }
+    unsigned short *out = (unsigned short *)malloc(count*channels*sizeof(unsigned short));
+    if (out != NULL) for (size_t i = 0; i < count; i++) for (int c = 0; c < channels; c++) out[i*channels + c] = rtHalfFromFloat(rgba[i*4 + c]);
+    free(rgba);
+    return out;
+}
+
+#else
 // Both libraries are opened at run time so one binary runs on either and reports what is missing.
 // Function pointers travel through memcpy: ISO C has no cast between them and void *.
 typedef void (*RtFn)(void);
@@ -184,6 +313,8 @@ void rtCloseContext(void)
     }
 }
 
+#endif  // __EMSCRIPTEN__
+
 Image rtReadTarget(RenderTexture2D target)
 {
     Image image = LoadImageFromTexture(target.texture);
@@ -206,6 +337,7 @@ void rtSaveImage(Image image, const char *tag)
 }
 
 // ---- timing support -------------------------------------------------------------------------
+#if !defined(__EMSCRIPTEN__)
 // glFinish through the current context's loader (looked up again if the context changed)
 void rtFinish(void)
 {
@@ -224,3 +356,4 @@ void *rtGlProc(const char *name)
 {
     return (rtGetProc != NULL)? rtFnToPtr(rtGetProc(name)) : NULL;
 }
+#endif

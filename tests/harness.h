@@ -46,6 +46,14 @@ void rtFinish(void);
 // GL entry point of the current context (for tests that need GL beyond rlgl, e.g. transform feedback)
 void *rtGlProc(const char *name);
 
+#if defined(__EMSCRIPTEN__) && !defined(RT_HARNESS_IMPLEMENTATION)
+// WebGL2 has no glGetTexImage: raylib's ES readback always returns RGBA8 through an FBO, whatever the
+// format asked. This one reads float/half targets as RGBA floats and repacks every uncompressed format
+// into the layout the format names (what the desktop readback returns), so tests read alike on both.
+void *rtWebReadTexturePixels(unsigned int id, int width, int height, int format);
+#define rlReadTexturePixels rtWebReadTexturePixels
+#endif
+
 // ---- lit material values ----------------------------------------------------------------------
 // The values 0.3's RblLitShaderDesc held, written where 1.0 reads them: raylib's Material fields
 // (see RblMaterialParam in the header). Zero fields keep the header's defaults.

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build, tests and showcase need, when missing.
-# Usage: tests/tools/deps.sh [xvfb]   (xvfb only for a windowed run)
+# Usage: tests/tools/deps.sh [xvfb|web]   (xvfb only for a windowed run; web: emscripten and headless
+#        chromium for make web / make test-web, plus python3 for the loopback runner)
 set -eu
 pkgs="clang pkg-config dpkg-dev libegl-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev"
 [ "${1:-}" = xvfb ] && pkgs="$pkgs xvfb"
+[ "${1:-}" = web ] && pkgs="emscripten chromium python3"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
