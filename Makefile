@@ -1,6 +1,6 @@
 # rbillboard_lit.h - build, test, run and benchmark.
 #   make run     the showcase (a window when a display exists, else build/showcase.png)
-#   make test    every test, headless, under EGL and OSMesa; ends with "N passed, N failed"
+#   make test    every test, headless (EGL GL 3.3, OSMesa, strict ES 3.0 / ES 2.0 / GL 2.1); ends with "N passed, N failed"
 #   make bench   benchmarks (-O2) -> build/bench/results.csv and a table
 #   make shaders splice shaders/*.glsl into rbillboard_lit.h
 # raylib >= 6.0 is found by tests/tools/get-raylib.sh: pkg-config, then RAYLIB_SRC=<tree>, then
@@ -77,7 +77,30 @@ $(BUILD)/tests/test_alloc: tests/test_alloc.c tests/gpu_common.h $(HARNESS) $(HE
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_alloc.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
+# The GPU suite against raylib built for ES 3, ES 2 and GL 2.1 (tests/tools/raylib-variant.sh builds
+# each once from the same source tree; the harness makes the context itself)
+GPU_CONTEXTS := gles3 gles2 gl21
+$(BUILD)/raylib-%/libraylib.a: tests/tools/raylib-variant.sh $(BUILD)/raylib.mk
+	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/raylib-variant.sh $*
+
+$(BUILD)/tests/test_gpu_gles3: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es3/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es3 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+
+$(BUILD)/tests/test_gpu_gles2: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es2/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+
+$(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-gl21/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+
+# Every stage as the loader splices it, in every dialect, for glslangValidator (tests/run.sh)
+$(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
+
+test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------

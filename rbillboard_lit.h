@@ -274,7 +274,13 @@
 *       linear light), RblGenOcclusionFromHeight (darker the deeper a texel lies below its window mean).
 *
 *   LIMITATIONS:
-*       - OpenGL 3.3 core (GLSL 330) only; GLES2/WebGL variants are not written yet.
+*       - Platforms (the GLSL dialect follows rlGetVersion(): 330, 300 es, 120, 100; see PLATFORMS in
+*         the README): GL 3.3/4.3 and ES 3/WebGL2 run everything (deferred needs a float colour target,
+*         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
+*         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
+*         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
+*         the G-buffer are refused there with one log line. ES 2: raylib 6.0's rlGetActiveFramebuffer
+*         answers 0, so a shadow pass run inside BeginTextureMode returns to the default framebuffer.
 *       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
@@ -1086,6 +1092,42 @@ typedef struct rbl__State {
 
 static rbl__State rbl__state;
 
+// The GLSL dialect of rlgl's context (shaders/dialect.glsl): 330 desktop GL 3.3/4.3, 300 ES 3 and
+// WebGL2, 120 GL 2.1, 100 ES 2 and WebGL1; 0 for a context this header cannot shade (GL 1.1, software)
+static int rbl__glsl(void)
+{
+    switch (rlGetVersion())
+    {
+        case RL_OPENGL_33: case RL_OPENGL_43: return 330;
+        case RL_OPENGL_ES_30: return 300;
+        case RL_OPENGL_21: return 120;
+        case RL_OPENGL_ES_20: return 100;
+        default: return 0;
+    }
+}
+
+// Names the context for log lines
+static const char *rbl__contextName(void)
+{
+    switch (rbl__glsl())
+    {
+        case 330: return "OpenGL 3.3";
+        case 300: return "OpenGL ES 3";
+        case 120: return "OpenGL 2.1";
+        case 100: return "OpenGL ES 2";
+        default: return "OpenGL 1.1/software";
+    }
+}
+
+// Instanced draws, the G-buffer and its passes need GLSL 3 (integer bits, MRT, instancing): NULL when
+// the context has them, else the reason
+static const char *rbl__needsGlsl3(const char *feature)
+{
+    if (rbl__glsl() >= 300) return NULL;
+    snprintf(rbl__state.problem, sizeof(rbl__state.problem), "%s need OpenGL 3.3 or ES 3 (WebGL2); this context is %s: use the forward path", feature, rbl__contextName());
+    return rbl__state.problem;
+}
+
 // Loaded objects' private states: validity is membership, so a stale copy's pointer (its object
 // unloaded) is recognised without being dereferenced
 static bool rbl__liveAdd(void *object)
@@ -1131,11 +1173,18 @@ static bool rbl__unloadable(const void *holder, const void *state, const char *f
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_common[] = {
     "// Common: constants and helpers every stage shares (the one sRGB transfer pair, safe normalise).\n",
-    "// Included first by every stage; includes nothing.\n",
+    "// Included first by every stage (after dialect.glsl, its one include).\n",
+    "#include \"dialect.glsl\"\n",
     "\n",
     "#define RBL_PI 3.14159265358979\n",
     "#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf\n",
     "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
+    "\n",
+    "// Upper-left 3x3 (GLSL ES 1.00 has no mat3(mat4) constructor)\n",
+    "mat3 rblMat3(mat4 m)\n",
+    "{\n",
+    "    return mat3(m[0].xyz, m[1].xyz, m[2].xyz);\n",
+    "}\n",
     "\n",
     "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
     "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
@@ -1178,7 +1227,7 @@ static const char *const rbl__shader_deferred_ambient_fs[] = {
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"lights.glsl\"\n",
     "\n",
-    "in vec2 fragUv;\n",
+    "RBL_VARYING vec2 fragUv;\n",
     "out vec4 finalColor;\n",
     "\n",
     "void main()\n",
@@ -1200,7 +1249,7 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"output.glsl\"\n",
     "\n",
-    "in vec2 fragUv;\n",
+    "RBL_VARYING vec2 fragUv;\n",
     "uniform int rblOutput;               // RblGBufferOutput\n",
     "uniform float rblOutputScale;            // linear depth / position / light count range of the debug views\n",
     "out vec4 finalColor;\n",
@@ -1247,10 +1296,10 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"lights.glsl\"\n",
     "\n",
-    "flat in vec4 volumePosition;\n",
-    "flat in vec4 volumeColor;\n",
-    "flat in vec4 volumeSpot;\n",
-    "flat in vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
+    "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeSpot;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
     "out vec4 finalColor;\n",
     "\n",
     "void main()\n",
@@ -1279,11 +1328,55 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#endif\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_dialect[] = {
+    "// Dialect: the few words that differ between GLSL 330 (desktop GL 3.3+), GLSL ES 3.00 (ES 3, WebGL2),\n",
+    "// GLSL 1.20 (GL 2.1) and GLSL ES 1.00 (ES 2, WebGL1). The loader writes the #version line and\n",
+    "// RBL_GLSL (330, 300, 120 or 100), RBL_GLSL_ES on ES, and RBL_VERTEX_STAGE or RBL_FRAGMENT_STAGE\n",
+    "// before any source; every other file writes these words instead. Included first (by common.glsl,\n",
+    "// fullscreen.vs.glsl and volume.vs.glsl); includes nothing.\n",
+    "//   RBL_ATTRIBUTE          a vertex input\n",
+    "//   RBL_VARYING            a vertex output / fragment input\n",
+    "//   RBL_FLAT               not interpolated (1.x dialects have no flat: such values are constant anyway)\n",
+    "//   rblFetch(map, at, n)   texel `at` (ivec2) of an n x n texture, unfiltered\n",
+    "// Instanced and deferred stages use GLSL 3 features (integer bits, MRT, layout locations): the loader\n",
+    "// compiles them only for 330 and 300 es.\n",
+    "\n",
+    "#ifdef RBL_GLSL_ES\n",
+    "// Highp everywhere it exists: ES defaults samplers to lowp, which bands depth reads, and ES 2 may\n",
+    "// lack highp in the fragment stage (then mediump, the most it has)\n",
+    "#if (RBL_GLSL < 300) && defined(RBL_FRAGMENT_STAGE) && !defined(GL_FRAGMENT_PRECISION_HIGH)\n",
+    "precision mediump float;\n",
+    "precision mediump int;\n",
+    "#else\n",
+    "precision highp float;\n",
+    "precision highp int;\n",
+    "precision highp sampler2D;\n",
+    "#endif\n",
+    "#endif\n",
+    "\n",
+    "#if RBL_GLSL >= 300\n",
+    "#define RBL_ATTRIBUTE in\n",
+    "#define RBL_FLAT flat\n",
+    "#ifdef RBL_VERTEX_STAGE\n",
+    "#define RBL_VARYING out\n",
+    "#else\n",
+    "#define RBL_VARYING in\n",
+    "#endif\n",
+    "#define rblFetch(map, at, n) texelFetch(map, at, 0)\n",
+    "#else\n",
+    "#define RBL_ATTRIBUTE attribute\n",
+    "#define RBL_VARYING varying\n",
+    "#define RBL_FLAT\n",
+    "#define texture texture2D\n",
+    "#define rblFetch(map, at, n) texture2D(map, (vec2(at) + 0.5)/(n))\n",
+    "#endif\n",
+    NULL };
 static const char *const rbl__shader_fullscreen_vs[] = {
     "// Full-screen triangle from gl_VertexID (deferred ambient/unbounded-light pass and resolve); no\n",
     "// vertex buffer.\n",
+    "#include \"dialect.glsl\"\n",
     "\n",
-    "out vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
+    "RBL_VARYING vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -1323,7 +1416,7 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "#endif\n",
     "    vec2 params;\n",
     "    rblPackWord(sp.normal, field1, field2, rblOutNormal, params);\n",
-    "    rblOutParams = vec4(params, 0.0, 1.0);\n",
+    "    rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)\n",
     "    rblOutAccum = vec4(emission, 1.0);\n",
     "}\n",
     NULL };
@@ -1591,7 +1684,12 @@ static const char *const rbl__shader_lights[] = {
     "float rblShadowOfMap(int k, RblShadingPoint s, int light)\n",
     "{\n",
     "    if ((light < 0) || (light >= rblLightCount)) return 1.0;\n",
+    "#if RBL_GLSL >= 300\n",
     "    vec4 p = rblLightPosition[light];\n",
+    "#else\n",
+    "    vec4 p = vec4(0.0);                             // GLSL ES 1.00: uniform arrays by loop index only\n",
+    "    for (int i = 0; i < RBL_LIGHTS; i++) if (i == light) p = rblLightPosition[i];\n",
+    "#endif\n",
     "    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
     "    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;\n",
@@ -1680,7 +1778,11 @@ static const char *const rbl__shader_lit_fs[] = {
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
     "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
+    "#if RBL_GLSL >= 300\n",
     "out vec4 finalColor;\n",
+    "#else\n",
+    "#define finalColor gl_FragColor   // GLSL 1.x: the one built-in output\n",
+    "#endif\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -1719,11 +1821,11 @@ static const char *const rbl__shader_lit_vs[] = {
     "// gbuffer.fs.glsl and shadow_caster.fs.glsl.\n",
     "#include \"common.glsl\"\n",
     "\n",
-    "in vec3 vertexPosition;\n",
-    "in vec2 vertexTexCoord;\n",
-    "in vec3 vertexNormal;\n",
-    "in vec4 vertexColor;\n",
-    "in vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;\n",
+    "RBL_ATTRIBUTE vec2 vertexTexCoord;\n",
+    "RBL_ATTRIBUTE vec3 vertexNormal;\n",
+    "RBL_ATTRIBUTE vec4 vertexColor;\n",
+    "RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
     "\n",
     "uniform mat4 mvp;\n",
     "uniform mat4 matModel;\n",
@@ -1731,26 +1833,27 @@ static const char *const rbl__shader_lit_vs[] = {
     "#ifdef RBL_VIEW_VECTOR\n",
     "uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set both: no viewPos glue needed\n",
     "uniform mat4 matProjection;\n",
-    "flat out vec3 fragEye;\n",
-    "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
+    "RBL_FLAT RBL_VARYING vec3 fragEye;\n",
+    "RBL_FLAT RBL_VARYING vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
-    "out vec3 fragPosition;\n",
-    "out vec2 fragTexCoord;\n",
-    "out vec4 fragColor;\n",
-    "out vec3 fragNormal;\n",
-    "out vec4 fragTangent;\n",
+    "RBL_VARYING vec3 fragPosition;\n",
+    "RBL_VARYING vec2 fragTexCoord;\n",
+    "RBL_VARYING vec4 fragColor;\n",
+    "RBL_VARYING vec3 fragNormal;\n",
+    "RBL_VARYING vec4 fragTangent;\n",
     "\n",
     "void main()\n",
     "{\n",
     "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
     "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex\n",
-    "    fragNormal = mat3(matNormal)*vertexNormal;\n",
+    "    fragNormal = rblMat3(matNormal)*vertexNormal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
-    "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
+    "    fragTangent = vec4(rblMat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "    fragEye = -(transpose(mat3(matView))*matView[3].xyz);     // view = [R|t]: eye = -R^T t\n",
+    "    vec3 t = matView[3].xyz;                                // view = [R|t]: eye = -R^T t\n",
+    "    fragEye = -vec3(dot(matView[0].xyz, t), dot(matView[1].xyz, t), dot(matView[2].xyz, t));\n",
     "    // Orthographic: clip w does not depend on the position (the projection's last row is 0 0 0 w);\n",
     "    // an unset matProjection (all zero) counts as perspective, the pre-ortho behaviour\n",
     "    bool parallel = (matProjection[0][3] == 0.0) && (matProjection[1][3] == 0.0) && (matProjection[2][3] == 0.0) && (matProjection[3][3] != 0.0);\n",
@@ -1783,14 +1886,14 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes\n",
     "uniform vec4 rblInstancing[7];\n",
     "\n",
-    "out vec3 fragPosition;\n",
-    "out vec2 fragTexCoord;\n",
-    "out vec4 fragColor;\n",
-    "out vec3 fragNormal;\n",
-    "out vec4 fragTangent;\n",
+    "RBL_VARYING vec3 fragPosition;\n",
+    "RBL_VARYING vec2 fragTexCoord;\n",
+    "RBL_VARYING vec4 fragColor;\n",
+    "RBL_VARYING vec3 fragNormal;\n",
+    "RBL_VARYING vec4 fragTangent;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "flat out vec3 fragEye;\n",
-    "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
+    "RBL_FLAT RBL_VARYING vec3 fragEye;\n",
+    "RBL_FLAT RBL_VARYING vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
     "// Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)\n",
@@ -2035,14 +2138,14 @@ static const char *const rbl__shader_material[] = {
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
     "#include \"surface.glsl\"\n",
     "\n",
-    "in vec3 fragPosition;\n",
-    "in vec2 fragTexCoord;\n",
-    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
-    "in vec3 fragNormal;\n",
-    "in vec4 fragTangent;\n",
+    "RBL_VARYING vec3 fragPosition;\n",
+    "RBL_VARYING vec2 fragTexCoord;\n",
+    "RBL_VARYING vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
+    "RBL_VARYING vec3 fragNormal;\n",
+    "RBL_VARYING vec4 fragTangent;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "flat in vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
-    "flat in vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
+    "RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
+    "RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
     "#endif\n",
     "\n",
     "uniform sampler2D texture0;     // albedo (sRGB)\n",
@@ -2221,7 +2324,8 @@ static const char *const rbl__shader_shadows[] = {
     "#include \"common.glsl\"\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
-    "uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w\n",
+    "uniform vec4 rblShadowMatrix[4*RBL_SHADOWS]; // rows 4k..4k+3: world -> (u, v, window depth, w) of map k (rows: no\n",
+    "                                            // transpose convention to differ between GL and ES uploads)\n",
     "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far\n",
     "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
     "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
@@ -2255,15 +2359,23 @@ static const char *const rbl__shader_shadows[] = {
     "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
     "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
     "// outside the map or of a texel nothing was drawn into.\n",
-    "float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)\n",
+    "// Map k's uniforms come in as arguments, indexed by constants at the call: GLSL ES 1.00 fragment\n",
+    "// stages may index uniform arrays only by constants and loop indices.\n",
+    "vec4 rblShadowTransform(vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec3 p)\n",
     "{\n",
-    "    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];\n",
-    "    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);\n",
-    "    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);\n",
+    "    vec4 h = vec4(p, 1.0);\n",
+    "    return vec4(dot(r0, h), dot(r1, h), dot(r2, h), dot(r3, h));\n",
+    "}\n",
+    "\n",
+    "float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec3 right, vec3 up,\n",
+    "                      vec3 position, vec3 n, float NdotL)\n",
+    "{\n",
+    "    vec3 along = cross(up, right);\n",
+    "    vec4 c0 = rblShadowTransform(r0, r1, r2, r3, position);\n",
     "    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here\n",
     "    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));\n",
     "    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);\n",
-    "    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);\n",
+    "    vec4 c = rblShadowTransform(r0, r1, r2, r3, position + n*(bias.z*texel*sinI));\n",
     "    if (!(c.w > 0.0)) return 1.0;\n",
     "    vec3 q = c.xyz/c.w;\n",
     "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;\n",
@@ -2285,7 +2397,7 @@ static const char *const rbl__shader_shadows[] = {
     "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
     "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
     "            ivec2 at = b0 + ivec2(i, j);\n",
-    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;\n",
+    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at, size).r : 1.0;\n",
     "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
     "            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
     "        }\n",
@@ -2295,15 +2407,19 @@ static const char *const rbl__shader_shadows[] = {
     "\n",
     "float rblShadow(int k, vec3 position, vec3 n, float NdotL)\n",
     "{\n",
-    "    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);\n",
+    "    if (k == 0) return rblShadowLookup(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3],\n",
+    "                                     rblShadowParams[0], rblShadowBias[0], rblShadowAxes[0].xyz, rblShadowAxes[1].xyz, position, n, NdotL);\n",
     "#if RBL_SHADOWS > 1\n",
-    "    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);\n",
+    "    if (k == 1) return rblShadowLookup(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7],\n",
+    "                                     rblShadowParams[1], rblShadowBias[1], rblShadowAxes[2].xyz, rblShadowAxes[3].xyz, position, n, NdotL);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 2\n",
-    "    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);\n",
+    "    if (k == 2) return rblShadowLookup(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11],\n",
+    "                                     rblShadowParams[2], rblShadowBias[2], rblShadowAxes[4].xyz, rblShadowAxes[5].xyz, position, n, NdotL);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 3\n",
-    "    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);\n",
+    "    if (k == 3) return rblShadowLookup(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15],\n",
+    "                                     rblShadowParams[3], rblShadowBias[3], rblShadowAxes[6].xyz, rblShadowAxes[7].xyz, position, n, NdotL);\n",
     "#endif\n",
     "    return 1.0;\n",
     "}\n",
@@ -2330,17 +2446,18 @@ static const char *const rbl__shader_surface[] = {
 static const char *const rbl__shader_volume_vs[] = {
     "// Deferred light volume, vertex stage: a sphere proxy per bounded point/spot light, one instanced\n",
     "// draw; the light's packed values ride along as instance attributes (as the forward uniforms).\n",
+    "#include \"dialect.glsl\"\n",
     "\n",
-    "in vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
     "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
     "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
     "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
     "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
     "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
-    "flat out vec4 volumePosition;\n",
-    "flat out vec4 volumeColor;\n",
-    "flat out vec4 volumeSpot;\n",
-    "flat out vec4 volumeFalloff;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeSpot;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -2357,6 +2474,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "deferred_ambient.fs.glsl", rbl__shader_deferred_ambient_fs },
     { "deferred_resolve.fs.glsl", rbl__shader_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__shader_deferred_volume_fs },
+    { "dialect.glsl", rbl__shader_dialect },
     { "fullscreen.vs.glsl", rbl__shader_fullscreen_vs },
     { "gbuffer.fs.glsl", rbl__shader_gbuffer_fs },
     { "gbuffer_codec.glsl", rbl__shader_gbuffer_codec },
@@ -2373,16 +2491,16 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "volume.vs.glsl", rbl__shader_volume_vs },
 };
 // Each stage with its includes resolved, dependencies first (the loader joins these)
-static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_fullscreen_vs, NULL };
-static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_common, rbl__shader_lit_vs, NULL };
-static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
-static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
-static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_lit_fs, NULL };
-static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
+static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialect, rbl__shader_fullscreen_vs, NULL };
+static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_vs, NULL };
+static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
+static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
+static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
+static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
@@ -3347,6 +3465,7 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     RblInstanceBuffer buffer;
     memset(&buffer, 0, sizeof(buffer));
     if ((capacity < 0) || (capacity > RBL_MAX_INSTANCES)) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: capacity %i outside 0..%i", capacity, RBL_MAX_INSTANCES); return buffer; }
+    if (rbl__needsGlsl3("instanced billboards") != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: %s", rbl__state.problem); return buffer; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
     rbl__InstanceBufferState *b = (rbl__InstanceBufferState *)RBL_CALLOC(1, sizeof(rbl__InstanceBufferState));
     if (b != NULL) b->staging = (RblInstance *)RBL_MALLOC((size_t)capacity*sizeof(RblInstance));
@@ -4629,16 +4748,32 @@ static char *rbl__joinStage(const char *prefix, const char *const *const *parts)
     return text;
 }
 
-// Compile a variant: "#version 330", the variant's defines, then each stage's parts. raylib substitutes
-// its default shader when compilation fails; report that.
+// Compile a variant: the dialect's #version and words (dialect.glsl), the stage, the variant's
+// defines, then each stage's parts. raylib substitutes its default shader when compilation fails;
+// report that.
+// What precedes a stage's sources in dialect glsl: #version, the dialect and stage (dialect.glsl), defines
+static void rbl__stagePrologue(int glsl, bool vertex, const char *defines, char *out, size_t size)
+{
+    const char *version = (glsl == 300)? "#version 300 es\n#define RBL_GLSL_ES\n" : (glsl == 100)? "#version 100\n#define RBL_GLSL_ES\n" :
+                          (glsl == 120)? "#version 120\n" : "#version 330\n";
+    snprintf(out, size, "%s#define RBL_GLSL %i\n#define %s\n%s", version, glsl, vertex? "RBL_VERTEX_STAGE" : "RBL_FRAGMENT_STAGE", defines);
+}
+
 static Shader rbl__loadShaderVariant(const char *const *const *vs, const char *const *const *fs, const char *defines)
 {
-    char prefix[1200];
-    snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
-    char *vsFull = rbl__joinStage(prefix, vs);
-    char *fsFull = rbl__joinStage(prefix, fs);
+    int glsl = rbl__glsl();
+    char vsPrefix[1300], fsPrefix[1300];
+    rbl__stagePrologue(glsl, true, defines, vsPrefix, sizeof(vsPrefix));
+    rbl__stagePrologue(glsl, false, defines, fsPrefix, sizeof(fsPrefix));
     Shader shader;
     memset(&shader, 0, sizeof(shader));
+    if (glsl == 0)
+    {
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "lit shaders need OpenGL 2.1+ or ES 2+; this context is %s", rbl__contextName());
+        return shader;
+    }
+    char *vsFull = rbl__joinStage(vsPrefix, vs);
+    char *fsFull = rbl__joinStage(fsPrefix, fs);
     if ((vsFull != NULL) && (fsFull != NULL)) shader = LoadShaderFromMemory(vsFull, fsFull);
     RBL_FREE(vsFull); RBL_FREE(fsFull);
     if ((shader.id == 0) || (shader.id == rlGetShaderIdDefault()))
@@ -4783,6 +4918,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
+    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) return NULL;
     Shader shader;
     if (key->kind == RBL__KIND_PASS)
     {
@@ -5141,16 +5277,18 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     for (int k = 0; k < n; k++) lightOf[k] = slotOf[k];
     rlSetUniform(loc[RBL__U_SHADOW_LIGHT], lightOf, SHADER_UNIFORM_IVEC4, 1);
     if (n == 0) return;
-    Matrix m[RBL_MAX_SHADOWS];
-    float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
+    float rows[RBL_MAX_SHADOWS*16], params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
     for (int k = 0; k < n; k++)
     {
-        m[k] = rbl__matFromArray(s->shadowUniforms[k]);
+        // Rows as vec4s: rlSetUniformMatrices transposes on desktop GL and not on ES
+        Matrix m = rbl__matFromArray(s->shadowUniforms[k]);
+        float r[16] = { m.m0, m.m4, m.m8, m.m12, m.m1, m.m5, m.m9, m.m13, m.m2, m.m6, m.m10, m.m14, m.m3, m.m7, m.m11, m.m15 };
+        memcpy(&rows[k*16], r, sizeof(r));
         memcpy(&params[k*4], &s->shadowUniforms[k][16], 4*sizeof(float));
         memcpy(&bias[k*4], &s->shadowUniforms[k][20], 4*sizeof(float));
         memcpy(&axes[k*8], &s->shadowUniforms[k][24], 8*sizeof(float));
     }
-    rlSetUniformMatrices(loc[RBL__U_SHADOW_MATRIX], m, n);
+    rlSetUniform(loc[RBL__U_SHADOW_MATRIX], rows, SHADER_UNIFORM_VEC4, 4*n);
     rlSetUniform(loc[RBL__U_SHADOW_PARAMS], params, SHADER_UNIFORM_VEC4, n);
     rlSetUniform(loc[RBL__U_SHADOW_BIAS], bias, SHADER_UNIFORM_VEC4, n);
     rlSetUniform(loc[RBL__U_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*n);
@@ -5540,7 +5678,8 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 {
     g->albedo = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
     g->normal = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
-    g->params = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
+    // RG8 for the 16 parameter bits; ES maps two-channel formats to unrenderable luminance-alpha: RGBA8
+    g->params = rbl__targetTexture(width, height, (rbl__glsl() == 300)? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
@@ -5601,6 +5740,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
     if ((bad == NULL) && ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))) bad = "size outside 1..RBL_MAX_TARGET_SIZE";
+    if (bad == NULL) bad = rbl__needsGlsl3("the G-buffer and deferred passes");
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
     g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
     if ((g.state == NULL) || !rbl__liveAdd(g.state))
@@ -6017,11 +6157,12 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     return NULL;
 }
 
-// The caster programs (vertex buffers, instanced): one more holder each, or none on failure
+// The caster programs (vertex buffers, instanced where the context instances): one more holder
+// each, or none on failure
 static bool rbl__acquireCasters(void)
 {
     rbl__Program *got[2] = { NULL, NULL };
-    for (int instanced = 0; instanced < 2; instanced++)
+    for (int instanced = 0; instanced < ((rbl__glsl() >= 300)? 2 : 1); instanced++)
     {
         RblLitShaderDesc desc, normalised;
         memset(&desc, 0, sizeof(desc));
@@ -6037,7 +6178,7 @@ static bool rbl__acquireCasters(void)
         }
     }
     rbl__state.casterIds[0] = got[0]->shader.id;
-    rbl__state.casterIds[1] = got[1]->shader.id;
+    rbl__state.casterIds[1] = (got[1] != NULL)? got[1]->shader.id : 0;
     return true;
 }
 
@@ -6099,7 +6240,7 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
-    rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+    if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
     rbl__liveRemove(map->state);
     RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));

@@ -37,10 +37,12 @@ int rtFailuresInCurrentTest(void) { return rtTestFailures; }
 int rtRun(const char *suite, const RtTest *tests, int count, int argc, char **argv)
 {
     const char *filter = (argc > 1)? argv[1] : NULL;
-    int passed = 0, failed = 0;
+    int passed = 0, failed = 0, skipped = 0;
+    bool glsl3 = rtGlsl3();
     for (int i = 0; i < count; i++)
     {
         if ((filter != NULL) && (strstr(tests[i].name, filter) == NULL)) continue;
+        if (tests[i].glsl3 && !glsl3) { skipped++; printf("  n/a   %s (needs GLSL 3)\n", tests[i].name); continue; }
         rtTestName = tests[i].name;
         rtTestFailures = 0;
         tests[i].fn();
@@ -48,6 +50,7 @@ int rtRun(const char *suite, const RtTest *tests, int count, int argc, char **ar
         else { failed++; printf("  FAIL  %s (%d failed checks)\n", tests[i].name, rtTestFailures); }
         fflush(stdout);
     }
+    if (skipped > 0) printf("  %d tests need GLSL 3 (GL 3.3 / ES 3) and do not apply to this context; the refusals are tested\n", skipped);
     printf("%s: %d passed, %d failed\n", suite, passed, failed);
     return (failed == 0)? 0 : 1;
 }
@@ -104,7 +107,10 @@ static void *rtFnToPtr(RtFn f) { void *p; memcpy(&p, &f, sizeof(p)); return p; }
 // rlLoadExtensions wants a loader returning void *; wrap the context's own loader
 static void *rtLoader(const char *name) { return rtFnToPtr(rtGetProc(name)); }
 
-static bool rtInitEgl(void)
+// kind: "egl" GL 3.3 core, "gles3" / "gles2" OpenGL ES 3 / 2, "gl21" GL 2.1 (compatibility). Strict
+// versions come from Mesa's overrides, set by tests/run.sh: MESA_GLES_VERSION_OVERRIDE=3.0 (ES 3.0,
+// GLSL ES 3.00), MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120.
+static bool rtInitEgl(const char *kind)
 {
     rtEglLib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_GLOBAL);
     if (rtEglLib == NULL) { printf("    context: egl: libEGL.so.1 not found (%s)\n", dlerror()); return false; }
@@ -119,11 +125,14 @@ static bool rtInitEgl(void)
     rtEglDisplay = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
     EGLint major = 0, minor = 0;
     if ((rtEglDisplay == EGL_NO_DISPLAY) || !initialize(rtEglDisplay, &major, &minor)) { printf("    context: egl: surfaceless display unavailable\n"); return false; }
-    if (!bindApi(EGL_OPENGL_API)) { printf("    context: egl: no desktop GL API\n"); return false; }
-    const EGLint attribs[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
-    rtEglContext = createContext(rtEglDisplay, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
-    if (rtEglContext == EGL_NO_CONTEXT) { printf("    context: egl: 3.3 core context refused\n"); return false; }
+    bool es = (strncmp(kind, "gles", 4) == 0), gl21 = (strcmp(kind, "gl21") == 0);
+    if (!bindApi(es? EGL_OPENGL_ES_API : EGL_OPENGL_API)) { printf("    context: %s: API unavailable\n", kind); return false; }
+    const EGLint core[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
+    const EGLint compat21[] = { EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE };
+    const EGLint gles[] = { EGL_CONTEXT_MAJOR_VERSION, (strcmp(kind, "gles2") == 0)? 2 : 3, EGL_NONE };
+    rtEglContext = createContext(rtEglDisplay, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, es? gles : (gl21? compat21 : core));
+    if (rtEglContext == EGL_NO_CONTEXT) { printf("    context: %s: context refused\n", kind); return false; }
     if (!makeCurrent(rtEglDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, rtEglContext)) { printf("    context: egl: make current failed\n"); return false; }
     rtGetProc = getProc;
     return true;
@@ -151,12 +160,17 @@ const char *rtInitContext(int width, int height)
 {
     const char *force = getenv("RBL_TEST_CONTEXT");
     const char *name = NULL;
-    if ((force == NULL) || (strcmp(force, "egl") == 0)) { if (rtInitEgl()) name = "egl"; }
+    if ((force == NULL) || (strcmp(force, "egl") == 0)) { if (rtInitEgl("egl")) name = "egl"; }
+    else if ((strcmp(force, "gles3") == 0) || (strcmp(force, "gles2") == 0) || (strcmp(force, "gl21") == 0)) { if (rtInitEgl(force)) name = force; }
     if ((name == NULL) && ((force == NULL) || (strcmp(force, "osmesa") == 0))) { if (rtInitOsmesa(width, height)) name = "osmesa"; }
     if (name == NULL) { printf("    context: no headless GL 3.3 core context (RBL_TEST_CONTEXT=%s)\n", force? force : "any"); return NULL; }
     SetTraceLogLevel(LOG_WARNING);     // raylib's INFO lines would bury the test output
     rlLoadExtensions(rtFnToPtr((RtFn)rtLoader));
     rlglInit(width, height);
+    typedef const unsigned char *(*RtGetString)(unsigned int);
+    RtGetString getString; void *p = rtGlProc("glGetString"); memcpy(&getString, &p, sizeof(p));
+    const unsigned char *version = (getString != NULL)? getString(0x1F02 /* GL_VERSION */) : NULL;
+    printf("    context: %s: GL_VERSION %s, rlGetVersion %i\n", name, (version != NULL)? (const char *)version : "?", rlGetVersion());
     return name;
 }
 
@@ -223,4 +237,76 @@ void rtFinish(void)
 void *rtGlProc(const char *name)
 {
     return (rtGetProc != NULL)? rtFnToPtr(rtGetProc(name)) : NULL;
+}
+
+bool rtContextIsEs(void)
+{
+    return (rlGetVersion() == RL_OPENGL_ES_20) || (rlGetVersion() == RL_OPENGL_ES_30);
+}
+
+// Half float (IEEE binary16) to float, exactly
+static float rtHalfToFloat(unsigned short h)
+{
+    int e = (h >> 10) & 31, m = h & 1023;
+    float v = (e == 0)? ldexpf((float)m, -24) : ((e == 31)? ((m == 0)? INFINITY : NAN) : ldexpf((float)(m | 1024), e - 25));
+    return (h & 0x8000)? -v : v;
+}
+
+bool rtGlsl3(void)
+{
+    int v = rlGetVersion();
+    return (v == RL_OPENGL_33) || (v == RL_OPENGL_43) || (v == RL_OPENGL_ES_30);
+}
+
+typedef void (*RtReadPixelsFn)(int, int, int, int, unsigned int, unsigned int, void *);
+
+float *rtReadFloatPixels(unsigned int textureId, int width, int height)
+{
+    RtReadPixelsFn readPixels; void *p = rtGlProc("glReadPixels"); memcpy(&readPixels, &p, sizeof(p));
+    float *out = (float *)malloc(sizeof(float)*4*(size_t)width*height);
+    unsigned int fbo = rlLoadFramebuffer();
+    if ((readPixels == NULL) || (out == NULL) || (fbo == 0)) { free(out); if (fbo != 0) rlUnloadFramebuffer(fbo); return NULL; }
+    rlFramebufferAttach(fbo, textureId, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    rlEnableFramebuffer(fbo);
+    int readType = 0x1406 /* GL_FLOAT */;
+    if (rlGetVersion() == RL_OPENGL_ES_20)
+    {
+        // ES 2 reads a half-float target only in the implementation's own format/type
+        void (*getIntegerv)(unsigned int, int *); void *q = rtGlProc("glGetIntegerv"); memcpy(&getIntegerv, &q, sizeof(q));
+        getIntegerv(0x8B9A /* GL_IMPLEMENTATION_COLOR_READ_TYPE */, &readType);
+    }
+    if ((readType == 0x8D61 /* GL_HALF_FLOAT_OES */) || (readType == 0x140B /* GL_HALF_FLOAT */))
+    {
+        unsigned short *half = (unsigned short *)malloc(sizeof(unsigned short)*4*(size_t)width*height);
+        if (half != NULL)
+        {
+            readPixels(0, 0, width, height, 0x1908 /* GL_RGBA */, (unsigned int)readType, half);
+            for (size_t i = 0; i < 4*(size_t)width*height; i++) out[i] = rtHalfToFloat(half[i]);
+        }
+        free(half);
+    }
+    else readPixels(0, 0, width, height, 0x1908 /* GL_RGBA */, 0x1406 /* GL_FLOAT */, out);
+    rlDisableFramebuffer();
+    // Detach before deleting: rlUnloadFramebuffer would delete the attached texture too
+    rlFramebufferAttach(fbo, 0, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    rlUnloadFramebuffer(fbo);
+    return out;
+}
+
+bool rtReadDepth(unsigned int fbo, int width, int height, float *out)
+{
+    RtReadPixelsFn readPixels; void *p = rtGlProc("glReadPixels"); memcpy(&readPixels, &p, sizeof(p));
+    if (readPixels == NULL) return false;
+    rlEnableFramebuffer(fbo);
+    if (rtContextIsEs())
+    {
+        unsigned int *raw = (unsigned int *)malloc(sizeof(unsigned int)*(size_t)width*height);
+        if (raw == NULL) { rlDisableFramebuffer(); return false; }
+        readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1405 /* GL_UNSIGNED_INT */, raw);
+        for (size_t i = 0; i < (size_t)width*height; i++) out[i] = (float)(raw[i]/4294967295.0);
+        free(raw);
+    }
+    else readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, out);
+    rlDisableFramebuffer();
+    return true;
 }
