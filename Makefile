@@ -26,7 +26,8 @@ ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
 endif
 endif
 
-$(BUILD)/raylib.mk:
+# Remade when get-raylib.sh changes (its build flags are in the stamp: an older build is rebuilt)
+$(BUILD)/raylib.mk: tests/tools/get-raylib.sh
 	@mkdir -p $(BUILD)
 	@bash tests/tools/deps.sh
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib.sh > $@.tmp || { rm -f $@.tmp; exit 1; }
@@ -49,7 +50,7 @@ check-shaders:
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h
-GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h
+GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -69,7 +70,7 @@ $(BUILD)/tests/test_api_san: tests/test_api_main.c tests/test_api.c $(HARNESS) $
 
 # Contract suite: small limits so that they are reached in a few draws (the checks are the same code)
 CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256
-$(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(CONTRACT_LIMITS) $(RAYLIB_CFLAGS) tests/test_contracts.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
@@ -149,6 +150,10 @@ $(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h te
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_shadows.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
+$(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_skinning.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
 # bench_api: one binary from three compilations of bench_api.c (main, the showcase and the deferred example,
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
 # pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
@@ -162,7 +167,7 @@ $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_AP
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -DBENCH_API_PART=2 -c tests/bench/bench_api.c -o $(@D)/bench_api_deferred.o
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -I$(@D) -DBENCH_API_GL tests/bench/bench_api.c $(@D)/bench_api_showcase.o $(@D)/bench_api_deferred.o tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

@@ -67,6 +67,12 @@
 *          raylib's DrawModel is lit; the Material's values need these (they then call DrawMesh):
 *            RblDrawModel(model, position, scale, tint);     // DrawModel's arguments
 *            RblDrawMesh(mesh, material, transform);
+*          GPU-skinned Models (raylib built with SUPPORT_GPU_SKINNING): desc.skinning = true, then
+*          UpdateModelAnimation and RblDrawModel, which uploads model.boneMatrices; shadow passes skin
+*          such a Model's caster by its own data. Sum as raylib's CPU skinning (normals by the inverse
+*          transpose); a vertex with all four weights zero keeps its bind pose. Refused with a log line:
+*          boneMatrices NULL, skeleton.boneCount outside 1..RBL_MAX_BONES, NaN/huge bones, meshes
+*          without GPU bone data, RblDrawMesh and billboards with a skinned program.
 *       6. Shadows (directional and spot lights): before BeginMode3D, draw the casters with the same
 *          calls and materials as the colour pass, then list the maps in the scene.
 *            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shadowMaps = 1
@@ -327,6 +333,11 @@
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
 *           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
+*       #define RBL_MAX_BONES 128
+*           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
+*       #define RBL_GPU_SKINNING 1
+*           raylib was built with SUPPORT_GPU_SKINNING (default: SUPPORT_GPU_SKINNING where defined,
+*           else 0, and desc.skinning is refused: without it Mesh.vboId has no bone buffers).
 *       #define RBL_SHADOW_MAX_FILTER 6
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
@@ -491,6 +502,16 @@
 #endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
+#endif
+#ifndef RBL_MAX_BONES
+    #define RBL_MAX_BONES 128                   // Bone matrices a skinned program holds (4 uniform vectors each; at most 256)
+#endif
+#ifndef RBL_GPU_SKINNING
+    #if defined(SUPPORT_GPU_SKINNING)
+        #define RBL_GPU_SKINNING SUPPORT_GPU_SKINNING   // raylib's build flag, when the build passes it on
+    #else
+        #define RBL_GPU_SKINNING 0              // raylib built without it: Mesh.vboId has no bone buffers
+    #endif
 #endif
 
 //----------------------------------------------------------------------------------
@@ -714,6 +735,7 @@ typedef struct RblLitShaderDesc {
     int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
+    bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
@@ -910,6 +932,8 @@ RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDi
     #define RBL_FREE(ptr)        free(ptr)
 #endif
 
+typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
+
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
@@ -1082,7 +1106,7 @@ typedef struct rbl__State {
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
-    unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
+    unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
@@ -1820,6 +1844,7 @@ static const char *const rbl__shader_lit_vs[] = {
     "// and raylib Models (matModel = the model transform) go through the same code. Pairs with lit.fs.glsl,\n",
     "// gbuffer.fs.glsl and shadow_caster.fs.glsl.\n",
     "#include \"common.glsl\"\n",
+    "#include \"skinning.glsl\"\n",
     "\n",
     "RBL_ATTRIBUTE vec3 vertexPosition;\n",
     "RBL_ATTRIBUTE vec2 vertexTexCoord;\n",
@@ -1845,12 +1870,16 @@ static const char *const rbl__shader_lit_vs[] = {
     "\n",
     "void main()\n",
     "{\n",
-    "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n",
+    "    vec3 position = vertexPosition, normal = vertexNormal, tangent = vertexTangent.xyz;\n",
+    "#ifdef RBL_SKINNING\n",
+    "    rblSkin(position, normal, tangent);     // bind pose -> animated pose, in the model's space\n",
+    "#endif\n",
+    "    fragPosition = vec3(matModel*vec4(position, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
     "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex\n",
-    "    fragNormal = rblMat3(matNormal)*vertexNormal;\n",
+    "    fragNormal = rblMat3(matNormal)*normal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
-    "    fragTangent = vec4(rblMat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
+    "    fragTangent = vec4(rblMat3(matModel)*tangent, vertexTangent.w);\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "    vec3 t = matView[3].xyz;                                // view = [R|t]: eye = -R^T t\n",
     "    fragEye = -vec3(dot(matView[0].xyz, t), dot(matView[1].xyz, t), dot(matView[2].xyz, t));\n",
@@ -1859,7 +1888,7 @@ static const char *const rbl__shader_lit_vs[] = {
     "    bool parallel = (matProjection[0][3] == 0.0) && (matProjection[1][3] == 0.0) && (matProjection[2][3] == 0.0) && (matProjection[3][3] != 0.0);\n",
     "    fragViewAxis = vec4(rblSafeNormalize(vec3(matView[0][2], matView[1][2], matView[2][2]), vec3(0.0, 0.0, 1.0)), parallel? 1.0 : 0.0);\n",
     "#endif\n",
-    "    gl_Position = mvp*vec4(vertexPosition, 1.0);\n",
+    "    gl_Position = mvp*vec4(position, 1.0);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_lit_instanced_vs[] = {
@@ -2425,6 +2454,45 @@ static const char *const rbl__shader_shadows[] = {
     "}\n",
     "#endif\n",
     NULL };
+static const char *const rbl__shader_skinning[] = {
+    "// GPU skinning of raylib Models (RBL_SKINNING: RblLitShaderDesc.skinning, and the skinned caster):\n",
+    "// raylib's bone attributes (DrawMesh binds them by these names when raylib is built with\n",
+    "// SUPPORT_GPU_SKINNING) and the Model's boneMatrices (RblDrawModel uploads them). Same sum as raylib's\n",
+    "// CPU skinning: p' = sum w_k M_k p, n' = sum w_k M_k^-T n (normals with the inverse transpose, so a\n",
+    "// non-uniformly scaled bone keeps them perpendicular); tangents lie in the surface: sum w_k M_k t.\n",
+    "// Weights are used as given (not renormalised, as raylib's CPU path); a vertex whose weights are all\n",
+    "// zero belongs to no bone and keeps its bind pose (raylib's sum would put it at the origin).\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "#ifdef RBL_SKINNING\n",
+    "RBL_ATTRIBUTE vec4 vertexBoneIndices;      // unsigned bytes, not normalised: 0..255 as floats\n",
+    "RBL_ATTRIBUTE vec4 vertexBoneWeights;\n",
+    "uniform mat4 boneMatrices[RBL_MAX_BONES];\n",
+    "\n",
+    "void rblSkin(inout vec3 position, inout vec3 normal, inout vec3 tangent)\n",
+    "{\n",
+    "    vec3 p = vec3(0.0), n = vec3(0.0), t = vec3(0.0);\n",
+    "    float total = 0.0;\n",
+    "    for (int k = 0; k < 4; k++)\n",
+    "    {\n",
+    "        float w = vertexBoneWeights[k];\n",
+    "        // A zero weight adds nothing, even from a bone matrix never uploaded\n",
+    "        if (w == 0.0) continue;\n",
+    "        total += abs(w);\n",
+    "        mat4 m = boneMatrices[int(clamp(vertexBoneIndices[k] + 0.5, 0.0, float(RBL_MAX_BONES) - 0.5))];\n",
+    "        vec3 a = m[0].xyz, b = m[1].xyz, c = m[2].xyz;\n",
+    "        p += w*(a*position.x + b*position.y + c*position.z + m[3].xyz);\n",
+    "        // Inverse transpose = cofactors/det: columns b x c, c x a, a x b (no inverse(), which GLSL ES 1.00\n",
+    "        // lacks); a singular bone keeps its cofactor direction rather than dividing by zero\n",
+    "        vec3 ca = cross(b, c), cb = cross(c, a), cc = cross(a, b);\n",
+    "        float det = dot(a, ca);\n",
+    "        n += w*(ca*normal.x + cb*normal.y + cc*normal.z)/((abs(det) > 1e-30)? det : 1.0);\n",
+    "        t += w*(a*tangent.x + b*tangent.y + c*tangent.z);\n",
+    "    }\n",
+    "    if (total > 0.0) { position = p; normal = n; tangent = t; }\n",
+    "}\n",
+    "#endif\n",
+    NULL };
 static const char *const rbl__shader_surface[] = {
     "// Surface: what a shaded point is, in linear units. Filled by the material decode (material.glsl)\n",
     "// in forward and geometry passes, or from the G-buffer (gbuffer_read.glsl) in the deferred passes;\n",
@@ -2487,12 +2555,13 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "output.glsl", rbl__shader_output },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
     { "shadows.glsl", rbl__shader_shadows },
+    { "skinning.glsl", rbl__shader_skinning },
     { "surface.glsl", rbl__shader_surface },
     { "volume.vs.glsl", rbl__shader_volume_vs },
 };
 // Each stage with its includes resolved, dependencies first (the loader joins these)
 static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialect, rbl__shader_fullscreen_vs, NULL };
-static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_vs, NULL };
+static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_skinning, rbl__shader_lit_vs, NULL };
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
 static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
@@ -3053,11 +3122,14 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
 // Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
 // default and not visible here), so the array is generously larger than any build's
 #define RBL__CASTER_MAPS 32
+// What a draw feeds the vertex stage: billboard quads, instances, a Model's mesh, or a GPU-skinned
+// mesh with its Model's bone matrices (a skinned program needs the last; casters skin for it)
+enum { RBL__PATH_BILLBOARD = 0, RBL__PATH_INSTANCED, RBL__PATH_MESH, RBL__PATH_SKINNED };
 // Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
 // colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblCameraFrame *view);
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program);
-static const char *rbl__materialProblem(const Material *material, bool instanced, rbl__Program **program);
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program);
+static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
@@ -3226,7 +3298,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
     rbl__Program *program = NULL;
-    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, false, &program) : NULL;
+    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
     if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
         bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL)
@@ -3368,7 +3440,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         MaterialMap casterMaps[RBL__CASTER_MAPS];
         Material material = run->material;
         rbl__Program *program = NULL;
-        if (!rbl__prepareDraw(&material, casterMaps, false, fn, &program)) continue;
+        if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) continue;
         bound |= rbl__bindMaterial(&material);
         if (program != NULL) rbl__applyMaterialValues(program, &material);
         for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
@@ -3392,7 +3464,7 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
-                      rbl__materialProblem(&material, false, &program);
+                      rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program);
     if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
     if (immediate->state == NULL)
@@ -3551,7 +3623,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         return 0;
     }
     rbl__Program *checked = NULL;
-    const char *bad = rbl__materialProblem(&material, true, &checked);
+    const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
     if (count > buffer->capacity)
     {
@@ -3601,7 +3673,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, true, "RblDrawInstanced", &program)) return 0;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, "RblDrawInstanced", &program)) return 0;
 
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
@@ -4817,6 +4889,8 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
+    if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
+    if (in.skinning && !RBL_GPU_SKINNING) return "skinning needs raylib built with SUPPORT_GPU_SKINNING (then define RBL_GPU_SKINNING 1 before the header)";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
@@ -4832,6 +4906,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->linearOutput = in.linearOutput;
     out->instanced = in.instanced;
     out->deferred = in.deferred;
+    out->skinning = in.skinning;
     out->debugOutput = in.debugOutput;
     if (in.deferred)
     {
@@ -4858,6 +4933,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
                      m->specular? "#define RBL_SPECULAR\n" : "", m->occlusion? "#define RBL_OCCLUSION\n" : "",
                      view? "#define RBL_VIEW_VECTOR\n" : "", d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
     if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
+    if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -5157,8 +5233,9 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
 // false = refused, with one log line.
 // Why a material cannot draw in the current pass through a path (instanced or not); NULL = it can.
 // No side effect: the draw calls ask before they touch any state.
-static const char *rbl__materialProblem(const Material *material, bool instanced, rbl__Program **program)
+static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program)
 {
+    bool instanced = (path == RBL__PATH_INSTANCED);
     *program = NULL;
     if (material->maps != NULL)
     {
@@ -5180,20 +5257,47 @@ static const char *rbl__materialProblem(const Material *material, bool instanced
     if ((g != NULL) && !p->key.desc.deferred) return "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
     if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
     if ((g == NULL) && p->key.desc.deferred) return "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
+    // Without the bone attributes raylib's DrawMesh would enable them with no buffer (or defaults that
+    // put every vertex on bone 0): a skinned program draws GPU-skinned meshes only
+    if (p->key.desc.skinning && (path == RBL__PATH_BILLBOARD)) return "a skinned program (RblLitShaderDesc.skinning) draws only Models";
+    if (p->key.desc.skinning && (path == RBL__PATH_MESH))
+        return "a skinned program needs a GPU-skinned mesh (bone indices and weights uploaded, no CPU animVertices) of a Model with boneMatrices, drawn by RblDrawModel";
     *program = p;
     return NULL;
 }
 
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program)
+static rbl__Program *rbl__findCaster(unsigned int id)
 {
-    const char *bad = rbl__materialProblem(material, instanced, program);
+    for (int i = 0; (id != 0) && (i < RBL_SHADER_CACHE_SIZE); i++)
+        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == id) && (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) return &rbl__state.programs[i];
+    return NULL;
+}
+
+// The skinned caster, compiled on the first GPU-skinned mesh of a shadow pass and held (one holder)
+// until the last shadow map goes; NULL (problem set) when it cannot compile
+static rbl__Program *rbl__skinnedCaster(void)
+{
+    rbl__Program *caster = rbl__findCaster(rbl__state.casterIds[2]);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc desc, normalised;
+    memset(&desc, 0, sizeof(desc));
+    desc.skinning = true;
+    if (rbl__normaliseLitDesc(desc, &normalised) != NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "GPU skinning is off (RBL_GPU_SKINNING)"); return NULL; }
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
+    caster = rbl__acquireProgram(&key);
+    rbl__state.casterIds[2] = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program)
+{
+    const char *bad = rbl__materialProblem(material, path, program);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
-        rbl__Program *caster = NULL;
-        for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-            if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == rbl__state.casterIds[instanced? 1 : 0]) &&
-                (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) caster = &rbl__state.programs[i];
+        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
@@ -5466,16 +5570,46 @@ static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
     return NULL;
 }
 
-// DrawMesh with the lit values of a checked material
-static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform)
+// Whether raylib skins this mesh on the GPU: bone indices and weights in raylib's bone buffers (only
+// a SUPPORT_GPU_SKINNING build has those vboId slots) and positions not already skinned on the CPU
+static bool rbl__meshGpuSkinned(const Mesh *mesh)
+{
+#if RBL_GPU_SKINNING
+    return (mesh->boneIndices != NULL) && (mesh->boneWeights != NULL) && (mesh->animVertices == NULL) && (mesh->vboId != NULL) &&
+           (mesh->vboId[RL_DEFAULT_SHADER_ATTRIB_LOCATION_BONEINDICES] != 0) && (mesh->vboId[RL_DEFAULT_SHADER_ATTRIB_LOCATION_BONEWEIGHTS] != 0);
+#else
+    (void)mesh;
+    return false;
+#endif
+}
+
+// Why a Model's bone matrices cannot be uploaded; NULL = they can
+static const char *rbl__bonesProblem(const Model *model)
+{
+    if ((model->skeleton.boneCount < 1) || (model->skeleton.boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
+    for (int b = 0; b < model->skeleton.boneCount; b++)
+        if (!rbl__exponentsBelow(&model->boneMatrices[b], 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "a bone matrix with NaN/Inf or |value| >= 2^60";
+    return NULL;
+}
+
+// DrawMesh with the lit values of a checked material; bones: the Model's matrices for a skinned draw
+static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int path, const Model *bones)
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *p = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, false, "RblDrawMesh", &p)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, path, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
     if (p != NULL)
     {
         rlEnableShader(material.shader.id);
         rbl__applyMaterialValues(p, &material);
+        // As raylib's DrawModel does for its own skinning shaders (DrawMesh alone uploads no bones)
+        int loc = p->shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS];
+        if (p->key.desc.skinning && (path == RBL__PATH_SKINNED) && (loc != -1)) rlSetUniformMatrices(loc, bones->boneMatrices, bones->skeleton.boneCount);
+    }
+    else if ((path == RBL__PATH_SKINNED) && (material.shader.locs != NULL) && (material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS] != -1))
+    {
+        rlEnableShader(material.shader.id);     // the user's own skinning shader, as raylib's DrawModel feeds it
+        rlSetUniformMatrices(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones->boneMatrices, bones->skeleton.boneCount);
     }
     DrawMesh(mesh, material, transform);
 }
@@ -5484,9 +5618,9 @@ void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
 {
     rbl__Program *p = NULL;
     const char *bad = rbl__meshProblem(&mesh, &transform);
-    if (bad == NULL) bad = rbl__materialProblem(&material, false, &p);
+    if (bad == NULL) bad = rbl__materialProblem(&material, RBL__PATH_MESH, &p);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawMesh: %s", bad); return; }
-    rbl__drawMesh(mesh, material, transform);
+    rbl__drawMesh(mesh, material, transform, RBL__PATH_MESH, NULL);
 }
 
 void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
@@ -5501,24 +5635,29 @@ void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
     t.m0 = t.m5 = t.m10 = scale;
     t.m12 = position.x; t.m13 = position.y; t.m14 = position.z;
     Matrix transform = rbl__matMul(model.transform, t);
+    // A GPU-skinned mesh of a Model with bone matrices is skinned by a skinned program and by the casters
+    bool bones = (bad == NULL) && (model.boneMatrices != NULL);
     for (int i = 0; (bad == NULL) && (i < model.meshCount); i++)
     {
         rbl__Program *p = NULL;
         int m = model.meshMaterial[i];
+        int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
         at = i;
         if ((m < 0) || (m >= model.materialCount)) bad = "a mesh names a material index outside 0..materialCount-1";
         else if ((bad = rbl__meshProblem(&model.meshes[i], &transform)) != NULL) {}
-        else bad = rbl__materialProblem(&model.materials[m], false, &p);
+        else if ((path == RBL__PATH_SKINNED) && ((bad = rbl__bonesProblem(&model)) != NULL)) {}
+        else bad = rbl__materialProblem(&model.materials[m], path, &p);
     }
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: %s (mesh %i)", bad, at); return; }
     for (int i = 0; i < model.meshCount; i++)
     {
         Material material = model.materials[model.meshMaterial[i]];
-        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform); continue; }
+        int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
+        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform, path, &model); continue; }
         Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
         Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
         material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
-        rbl__drawMesh(model.meshes[i], material, transform);
+        rbl__drawMesh(model.meshes[i], material, transform, path, &model);
         material.maps[MATERIAL_MAP_ALBEDO].color = c;
     }
 }
@@ -6241,6 +6380,11 @@ void RblUnloadShadowMap(RblShadowMap *map)
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+    if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the skinned caster goes too
+    {
+        if (rbl__state.casterIds[2] != 0) rbl__releaseProgram(rbl__state.casterIds[2], RBL__KIND_CASTER);
+        rbl__state.casterIds[2] = 0;
+    }
     rbl__liveRemove(map->state);
     RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));

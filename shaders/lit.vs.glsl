@@ -2,6 +2,7 @@
 // and raylib Models (matModel = the model transform) go through the same code. Pairs with lit.fs.glsl,
 // gbuffer.fs.glsl and shadow_caster.fs.glsl.
 #include "common.glsl"
+#include "skinning.glsl"
 
 RBL_ATTRIBUTE vec3 vertexPosition;
 RBL_ATTRIBUTE vec2 vertexTexCoord;
@@ -27,12 +28,16 @@ RBL_VARYING vec4 fragTangent;
 
 void main()
 {
-    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));
+    vec3 position = vertexPosition, normal = vertexNormal, tangent = vertexTangent.xyz;
+#ifdef RBL_SKINNING
+    rblSkin(position, normal, tangent);     // bind pose -> animated pose, in the model's space
+#endif
+    fragPosition = vec3(matModel*vec4(position, 1.0));
     fragTexCoord = vertexTexCoord;
     fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex
-    fragNormal = rblMat3(matNormal)*vertexNormal;
+    fragNormal = rblMat3(matNormal)*normal;
     // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.
-    fragTangent = vec4(rblMat3(matModel)*vertexTangent.xyz, vertexTangent.w);
+    fragTangent = vec4(rblMat3(matModel)*tangent, vertexTangent.w);
 #ifdef RBL_VIEW_VECTOR
     vec3 t = matView[3].xyz;                                // view = [R|t]: eye = -R^T t
     fragEye = -vec3(dot(matView[0].xyz, t), dot(matView[1].xyz, t), dot(matView[2].xyz, t));
@@ -41,5 +46,5 @@ void main()
     bool parallel = (matProjection[0][3] == 0.0) && (matProjection[1][3] == 0.0) && (matProjection[2][3] == 0.0) && (matProjection[3][3] != 0.0);
     fragViewAxis = vec4(rblSafeNormalize(vec3(matView[0][2], matView[1][2], matView[2][2]), vec3(0.0, 0.0, 1.0)), parallel? 1.0 : 0.0);
 #endif
-    gl_Position = mvp*vec4(vertexPosition, 1.0);
+    gl_Position = mvp*vec4(position, 1.0);
 }

@@ -21,6 +21,7 @@
 #include "test_deferred.c"
 #include "test_view.c"
 #include "test_shadows.c"
+#include "test_skinning.c"
 
 int main(int argc, char **argv)
 {
@@ -94,6 +95,9 @@ int main(int argc, char **argv)
         RT_TEST(test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing),
         RT_TEST(test_shadows_hard_cases_stay_finite),
         RT_TEST(test_shadows_pass_restores_the_callers_target_and_matrices),
+        RT_TEST(test_skinning_lit_model_animates_and_matches_the_cpu_skinned_rendering),
+        RT_TEST(test_skinning_shadow_animates_and_matches_the_cpu_skinned_caster),
+        RT_TEST(test_skinning_bad_input_is_refused_and_draws_nothing),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("gpu: 0 passed, 1 failed\n"); return 1; }
