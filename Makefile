@@ -1,6 +1,6 @@
 # rbillboard_lit.h - build, test, run and benchmark.
 #   make run     the showcase (a window when a display exists, else build/showcase.png)
-#   make test    every test, headless, under EGL and OSMesa; ends with "N passed, N failed"
+#   make test    every test, headless (EGL GL 3.3, OSMesa, strict ES 3.0 / ES 2.0 / GL 2.1); ends with "N passed, N failed"
 #   make bench   benchmarks (-O2) -> build/bench/results.csv and a table
 #   make shaders splice shaders/*.glsl into rbillboard_lit.h
 #   make web     the showcase as a page: build/web/index.html (WebGL2, WebGL1 fallback build)
@@ -28,7 +28,8 @@ ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
 endif
 endif
 
-$(BUILD)/raylib.mk:
+# Remade when get-raylib.sh changes (its build flags are in the stamp: an older build is rebuilt)
+$(BUILD)/raylib.mk: tests/tools/get-raylib.sh
 	@mkdir -p $(BUILD)
 	@bash tests/tools/deps.sh
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib.sh > $@.tmp || { rm -f $@.tmp; exit 1; }
@@ -51,7 +52,7 @@ check-shaders:
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h
-GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h
+GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -71,7 +72,7 @@ $(BUILD)/tests/test_api_san: tests/test_api_main.c tests/test_api.c $(HARNESS) $
 
 # Contract suite: small limits so that they are reached in a few draws (the checks are the same code)
 CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256
-$(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(CONTRACT_LIMITS) $(RAYLIB_CFLAGS) tests/test_contracts.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
@@ -79,7 +80,30 @@ $(BUILD)/tests/test_alloc: tests/test_alloc.c tests/gpu_common.h $(HARNESS) $(HE
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_alloc.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
+# The GPU suite against raylib built for ES 3, ES 2 and GL 2.1 (tests/tools/raylib-variant.sh builds
+# each once from the same source tree; the harness makes the context itself)
+GPU_CONTEXTS := gles3 gles2 gl21
+$(BUILD)/raylib-%/libraylib.a: tests/tools/raylib-variant.sh $(BUILD)/raylib.mk
+	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/raylib-variant.sh $*
+
+$(BUILD)/tests/test_gpu_gles3: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es3/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es3 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+
+$(BUILD)/tests/test_gpu_gles2: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es2/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+
+$(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-gl21/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+
+# Every stage as the loader splices it, in every dialect, for glslangValidator (tests/run.sh)
+$(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
+
+test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
@@ -128,6 +152,10 @@ $(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h te
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_shadows.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
+$(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_skinning.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
 # bench_api: one binary from three compilations of bench_api.c (main, the showcase and the deferred example,
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
 # pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
@@ -141,7 +169,7 @@ $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_AP
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -DBENCH_API_PART=2 -c tests/bench/bench_api.c -o $(@D)/bench_api_deferred.o
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -I$(@D) -DBENCH_API_GL tests/bench/bench_api.c $(@D)/bench_api_showcase.o $(@D)/bench_api_deferred.o tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

@@ -67,6 +67,12 @@
 *          raylib's DrawModel is lit; the Material's values need these (they then call DrawMesh):
 *            RblDrawModel(model, position, scale, tint);     // DrawModel's arguments
 *            RblDrawMesh(mesh, material, transform);
+*          GPU-skinned Models (raylib built with SUPPORT_GPU_SKINNING): desc.skinning = true, then
+*          UpdateModelAnimation and RblDrawModel, which uploads model.boneMatrices; shadow passes skin
+*          such a Model's caster by its own data. Sum as raylib's CPU skinning (normals by the inverse
+*          transpose); a vertex with all four weights zero keeps its bind pose. Refused with a log line:
+*          boneMatrices NULL, skeleton.boneCount outside 1..RBL_MAX_BONES, NaN/huge bones, meshes
+*          without GPU bone data, RblDrawMesh and billboards with a skinned program.
 *       6. Shadows (directional and spot lights): before BeginMode3D, draw the casters with the same
 *          calls and materials as the colour pass, then list the maps in the scene.
 *            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shadowMaps = 1
@@ -274,7 +280,13 @@
 *       linear light), RblGenOcclusionFromHeight (darker the deeper a texel lies below its window mean).
 *
 *   LIMITATIONS:
-*       - OpenGL 3.3 core (GLSL 330) only; GLES2/WebGL variants are not written yet.
+*       - Platforms (the GLSL dialect follows rlGetVersion(): 330, 300 es, 120, 100; see PLATFORMS in
+*         the README): GL 3.3/4.3 and ES 3/WebGL2 run everything (deferred needs a float colour target,
+*         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
+*         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
+*         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
+*         the G-buffer are refused there with one log line. ES 2: raylib 6.0's rlGetActiveFramebuffer
+*         answers 0, so a shadow pass run inside BeginTextureMode returns to the default framebuffer.
 *       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
@@ -321,6 +333,11 @@
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
 *           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
+*       #define RBL_MAX_BONES 128
+*           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
+*       #define RBL_GPU_SKINNING 1
+*           raylib was built with SUPPORT_GPU_SKINNING (default: SUPPORT_GPU_SKINNING where defined,
+*           else 0, and desc.skinning is refused: without it Mesh.vboId has no bone buffers).
 *       #define RBL_SHADOW_MAX_FILTER 6
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
@@ -485,6 +502,16 @@
 #endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
+#endif
+#ifndef RBL_MAX_BONES
+    #define RBL_MAX_BONES 128                   // Bone matrices a skinned program holds (4 uniform vectors each; at most 256)
+#endif
+#ifndef RBL_GPU_SKINNING
+    #if defined(SUPPORT_GPU_SKINNING)
+        #define RBL_GPU_SKINNING SUPPORT_GPU_SKINNING   // raylib's build flag, when the build passes it on
+    #else
+        #define RBL_GPU_SKINNING 0              // raylib built without it: Mesh.vboId has no bone buffers
+    #endif
 #endif
 
 //----------------------------------------------------------------------------------
@@ -708,6 +735,7 @@ typedef struct RblLitShaderDesc {
     int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
+    bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
@@ -904,6 +932,8 @@ RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDi
     #define RBL_FREE(ptr)        free(ptr)
 #endif
 
+typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
+
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
@@ -1076,7 +1106,7 @@ typedef struct rbl__State {
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
-    unsigned int casterIds[2];      // Caster programs (vertex buffers, instanced)
+    unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
@@ -1085,6 +1115,42 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+
+// The GLSL dialect of rlgl's context (shaders/dialect.glsl): 330 desktop GL 3.3/4.3, 300 ES 3 and
+// WebGL2, 120 GL 2.1, 100 ES 2 and WebGL1; 0 for a context this header cannot shade (GL 1.1, software)
+static int rbl__glsl(void)
+{
+    switch (rlGetVersion())
+    {
+        case RL_OPENGL_33: case RL_OPENGL_43: return 330;
+        case RL_OPENGL_ES_30: return 300;
+        case RL_OPENGL_21: return 120;
+        case RL_OPENGL_ES_20: return 100;
+        default: return 0;
+    }
+}
+
+// Names the context for log lines
+static const char *rbl__contextName(void)
+{
+    switch (rbl__glsl())
+    {
+        case 330: return "OpenGL 3.3";
+        case 300: return "OpenGL ES 3";
+        case 120: return "OpenGL 2.1";
+        case 100: return "OpenGL ES 2";
+        default: return "OpenGL 1.1/software";
+    }
+}
+
+// Instanced draws, the G-buffer and its passes need GLSL 3 (integer bits, MRT, instancing): NULL when
+// the context has them, else the reason
+static const char *rbl__needsGlsl3(const char *feature)
+{
+    if (rbl__glsl() >= 300) return NULL;
+    snprintf(rbl__state.problem, sizeof(rbl__state.problem), "%s need OpenGL 3.3 or ES 3 (WebGL2); this context is %s: use the forward path", feature, rbl__contextName());
+    return rbl__state.problem;
+}
 
 // Loaded objects' private states: validity is membership, so a stale copy's pointer (its object
 // unloaded) is recognised without being dereferenced
@@ -1131,11 +1197,18 @@ static bool rbl__unloadable(const void *holder, const void *state, const char *f
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_common[] = {
     "// Common: constants and helpers every stage shares (the one sRGB transfer pair, safe normalise).\n",
-    "// Included first by every stage; includes nothing.\n",
+    "// Included first by every stage (after dialect.glsl, its one include).\n",
+    "#include \"dialect.glsl\"\n",
     "\n",
     "#define RBL_PI 3.14159265358979\n",
     "#define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf\n",
     "#define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)\n",
+    "\n",
+    "// Upper-left 3x3 (GLSL ES 1.00 has no mat3(mat4) constructor)\n",
+    "mat3 rblMat3(mat4 m)\n",
+    "{\n",
+    "    return mat3(m[0].xyz, m[1].xyz, m[2].xyz);\n",
+    "}\n",
     "\n",
     "// normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.\n",
     "vec3 rblSafeNormalize(vec3 v, vec3 fallback)\n",
@@ -1178,7 +1251,7 @@ static const char *const rbl__shader_deferred_ambient_fs[] = {
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"lights.glsl\"\n",
     "\n",
-    "in vec2 fragUv;\n",
+    "RBL_VARYING vec2 fragUv;\n",
     "out vec4 finalColor;\n",
     "\n",
     "void main()\n",
@@ -1200,7 +1273,7 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"output.glsl\"\n",
     "\n",
-    "in vec2 fragUv;\n",
+    "RBL_VARYING vec2 fragUv;\n",
     "uniform int rblOutput;               // RblGBufferOutput\n",
     "uniform float rblOutputScale;            // linear depth / position / light count range of the debug views\n",
     "out vec4 finalColor;\n",
@@ -1247,10 +1320,10 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"lights.glsl\"\n",
     "\n",
-    "flat in vec4 volumePosition;\n",
-    "flat in vec4 volumeColor;\n",
-    "flat in vec4 volumeSpot;\n",
-    "flat in vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
+    "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeSpot;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
     "out vec4 finalColor;\n",
     "\n",
     "void main()\n",
@@ -1279,11 +1352,55 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#endif\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_dialect[] = {
+    "// Dialect: the few words that differ between GLSL 330 (desktop GL 3.3+), GLSL ES 3.00 (ES 3, WebGL2),\n",
+    "// GLSL 1.20 (GL 2.1) and GLSL ES 1.00 (ES 2, WebGL1). The loader writes the #version line and\n",
+    "// RBL_GLSL (330, 300, 120 or 100), RBL_GLSL_ES on ES, and RBL_VERTEX_STAGE or RBL_FRAGMENT_STAGE\n",
+    "// before any source; every other file writes these words instead. Included first (by common.glsl,\n",
+    "// fullscreen.vs.glsl and volume.vs.glsl); includes nothing.\n",
+    "//   RBL_ATTRIBUTE          a vertex input\n",
+    "//   RBL_VARYING            a vertex output / fragment input\n",
+    "//   RBL_FLAT               not interpolated (1.x dialects have no flat: such values are constant anyway)\n",
+    "//   rblFetch(map, at, n)   texel `at` (ivec2) of an n x n texture, unfiltered\n",
+    "// Instanced and deferred stages use GLSL 3 features (integer bits, MRT, layout locations): the loader\n",
+    "// compiles them only for 330 and 300 es.\n",
+    "\n",
+    "#ifdef RBL_GLSL_ES\n",
+    "// Highp everywhere it exists: ES defaults samplers to lowp, which bands depth reads, and ES 2 may\n",
+    "// lack highp in the fragment stage (then mediump, the most it has)\n",
+    "#if (RBL_GLSL < 300) && defined(RBL_FRAGMENT_STAGE) && !defined(GL_FRAGMENT_PRECISION_HIGH)\n",
+    "precision mediump float;\n",
+    "precision mediump int;\n",
+    "#else\n",
+    "precision highp float;\n",
+    "precision highp int;\n",
+    "precision highp sampler2D;\n",
+    "#endif\n",
+    "#endif\n",
+    "\n",
+    "#if RBL_GLSL >= 300\n",
+    "#define RBL_ATTRIBUTE in\n",
+    "#define RBL_FLAT flat\n",
+    "#ifdef RBL_VERTEX_STAGE\n",
+    "#define RBL_VARYING out\n",
+    "#else\n",
+    "#define RBL_VARYING in\n",
+    "#endif\n",
+    "#define rblFetch(map, at, n) texelFetch(map, at, 0)\n",
+    "#else\n",
+    "#define RBL_ATTRIBUTE attribute\n",
+    "#define RBL_VARYING varying\n",
+    "#define RBL_FLAT\n",
+    "#define texture texture2D\n",
+    "#define rblFetch(map, at, n) texture2D(map, (vec2(at) + 0.5)/(n))\n",
+    "#endif\n",
+    NULL };
 static const char *const rbl__shader_fullscreen_vs[] = {
     "// Full-screen triangle from gl_VertexID (deferred ambient/unbounded-light pass and resolve); no\n",
     "// vertex buffer.\n",
+    "#include \"dialect.glsl\"\n",
     "\n",
-    "out vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
+    "RBL_VARYING vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -1323,7 +1440,7 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "#endif\n",
     "    vec2 params;\n",
     "    rblPackWord(sp.normal, field1, field2, rblOutNormal, params);\n",
-    "    rblOutParams = vec4(params, 0.0, 1.0);\n",
+    "    rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)\n",
     "    rblOutAccum = vec4(emission, 1.0);\n",
     "}\n",
     NULL };
@@ -1591,7 +1708,12 @@ static const char *const rbl__shader_lights[] = {
     "float rblShadowOfMap(int k, RblShadingPoint s, int light)\n",
     "{\n",
     "    if ((light < 0) || (light >= rblLightCount)) return 1.0;\n",
+    "#if RBL_GLSL >= 300\n",
     "    vec4 p = rblLightPosition[light];\n",
+    "#else\n",
+    "    vec4 p = vec4(0.0);                             // GLSL ES 1.00: uniform arrays by loop index only\n",
+    "    for (int i = 0; i < RBL_LIGHTS; i++) if (i == light) p = rblLightPosition[i];\n",
+    "#endif\n",
     "    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
     "    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;\n",
@@ -1680,7 +1802,11 @@ static const char *const rbl__shader_lit_fs[] = {
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
     "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
+    "#if RBL_GLSL >= 300\n",
     "out vec4 finalColor;\n",
+    "#else\n",
+    "#define finalColor gl_FragColor   // GLSL 1.x: the one built-in output\n",
+    "#endif\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -1718,12 +1844,13 @@ static const char *const rbl__shader_lit_vs[] = {
     "// and raylib Models (matModel = the model transform) go through the same code. Pairs with lit.fs.glsl,\n",
     "// gbuffer.fs.glsl and shadow_caster.fs.glsl.\n",
     "#include \"common.glsl\"\n",
+    "#include \"skinning.glsl\"\n",
     "\n",
-    "in vec3 vertexPosition;\n",
-    "in vec2 vertexTexCoord;\n",
-    "in vec3 vertexNormal;\n",
-    "in vec4 vertexColor;\n",
-    "in vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;\n",
+    "RBL_ATTRIBUTE vec2 vertexTexCoord;\n",
+    "RBL_ATTRIBUTE vec3 vertexNormal;\n",
+    "RBL_ATTRIBUTE vec4 vertexColor;\n",
+    "RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
     "\n",
     "uniform mat4 mvp;\n",
     "uniform mat4 matModel;\n",
@@ -1731,32 +1858,37 @@ static const char *const rbl__shader_lit_vs[] = {
     "#ifdef RBL_VIEW_VECTOR\n",
     "uniform mat4 matView;       // raylib's DrawMesh and the billboard paths set both: no viewPos glue needed\n",
     "uniform mat4 matProjection;\n",
-    "flat out vec3 fragEye;\n",
-    "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
+    "RBL_FLAT RBL_VARYING vec3 fragEye;\n",
+    "RBL_FLAT RBL_VARYING vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
-    "out vec3 fragPosition;\n",
-    "out vec2 fragTexCoord;\n",
-    "out vec4 fragColor;\n",
-    "out vec3 fragNormal;\n",
-    "out vec4 fragTangent;\n",
+    "RBL_VARYING vec3 fragPosition;\n",
+    "RBL_VARYING vec2 fragTexCoord;\n",
+    "RBL_VARYING vec4 fragColor;\n",
+    "RBL_VARYING vec3 fragNormal;\n",
+    "RBL_VARYING vec4 fragTangent;\n",
     "\n",
     "void main()\n",
     "{\n",
-    "    fragPosition = vec3(matModel*vec4(vertexPosition, 1.0));\n",
+    "    vec3 position = vertexPosition, normal = vertexNormal, tangent = vertexTangent.xyz;\n",
+    "#ifdef RBL_SKINNING\n",
+    "    rblSkin(position, normal, tangent);     // bind pose -> animated pose, in the model's space\n",
+    "#endif\n",
+    "    fragPosition = vec3(matModel*vec4(position, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
     "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex\n",
-    "    fragNormal = mat3(matNormal)*vertexNormal;\n",
+    "    fragNormal = rblMat3(matNormal)*normal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
-    "    fragTangent = vec4(mat3(matModel)*vertexTangent.xyz, vertexTangent.w);\n",
+    "    fragTangent = vec4(rblMat3(matModel)*tangent, vertexTangent.w);\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "    fragEye = -(transpose(mat3(matView))*matView[3].xyz);     // view = [R|t]: eye = -R^T t\n",
+    "    vec3 t = matView[3].xyz;                                // view = [R|t]: eye = -R^T t\n",
+    "    fragEye = -vec3(dot(matView[0].xyz, t), dot(matView[1].xyz, t), dot(matView[2].xyz, t));\n",
     "    // Orthographic: clip w does not depend on the position (the projection's last row is 0 0 0 w);\n",
     "    // an unset matProjection (all zero) counts as perspective, the pre-ortho behaviour\n",
     "    bool parallel = (matProjection[0][3] == 0.0) && (matProjection[1][3] == 0.0) && (matProjection[2][3] == 0.0) && (matProjection[3][3] != 0.0);\n",
     "    fragViewAxis = vec4(rblSafeNormalize(vec3(matView[0][2], matView[1][2], matView[2][2]), vec3(0.0, 0.0, 1.0)), parallel? 1.0 : 0.0);\n",
     "#endif\n",
-    "    gl_Position = mvp*vec4(vertexPosition, 1.0);\n",
+    "    gl_Position = mvp*vec4(position, 1.0);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_lit_instanced_vs[] = {
@@ -1783,14 +1915,14 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes\n",
     "uniform vec4 rblInstancing[7];\n",
     "\n",
-    "out vec3 fragPosition;\n",
-    "out vec2 fragTexCoord;\n",
-    "out vec4 fragColor;\n",
-    "out vec3 fragNormal;\n",
-    "out vec4 fragTangent;\n",
+    "RBL_VARYING vec3 fragPosition;\n",
+    "RBL_VARYING vec2 fragTexCoord;\n",
+    "RBL_VARYING vec4 fragColor;\n",
+    "RBL_VARYING vec3 fragNormal;\n",
+    "RBL_VARYING vec4 fragTangent;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "flat out vec3 fragEye;\n",
-    "flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
+    "RBL_FLAT RBL_VARYING vec3 fragEye;\n",
+    "RBL_FLAT RBL_VARYING vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)\n",
     "#endif\n",
     "\n",
     "// Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)\n",
@@ -2035,14 +2167,14 @@ static const char *const rbl__shader_material[] = {
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
     "#include \"surface.glsl\"\n",
     "\n",
-    "in vec3 fragPosition;\n",
-    "in vec2 fragTexCoord;\n",
-    "in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
-    "in vec3 fragNormal;\n",
-    "in vec4 fragTangent;\n",
+    "RBL_VARYING vec3 fragPosition;\n",
+    "RBL_VARYING vec2 fragTexCoord;\n",
+    "RBL_VARYING vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)\n",
+    "RBL_VARYING vec3 fragNormal;\n",
+    "RBL_VARYING vec4 fragTangent;\n",
     "#ifdef RBL_VIEW_VECTOR\n",
-    "flat in vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
-    "flat in vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
+    "RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
+    "RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
     "#endif\n",
     "\n",
     "uniform sampler2D texture0;     // albedo (sRGB)\n",
@@ -2221,7 +2353,8 @@ static const char *const rbl__shader_shadows[] = {
     "#include \"common.glsl\"\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
-    "uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w\n",
+    "uniform vec4 rblShadowMatrix[4*RBL_SHADOWS]; // rows 4k..4k+3: world -> (u, v, window depth, w) of map k (rows: no\n",
+    "                                            // transpose convention to differ between GL and ES uploads)\n",
     "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far\n",
     "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
     "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
@@ -2255,15 +2388,23 @@ static const char *const rbl__shader_shadows[] = {
     "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
     "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
     "// outside the map or of a texel nothing was drawn into.\n",
-    "float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)\n",
+    "// Map k's uniforms come in as arguments, indexed by constants at the call: GLSL ES 1.00 fragment\n",
+    "// stages may index uniform arrays only by constants and loop indices.\n",
+    "vec4 rblShadowTransform(vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec3 p)\n",
     "{\n",
-    "    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];\n",
-    "    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);\n",
-    "    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);\n",
+    "    vec4 h = vec4(p, 1.0);\n",
+    "    return vec4(dot(r0, h), dot(r1, h), dot(r2, h), dot(r3, h));\n",
+    "}\n",
+    "\n",
+    "float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec3 right, vec3 up,\n",
+    "                      vec3 position, vec3 n, float NdotL)\n",
+    "{\n",
+    "    vec3 along = cross(up, right);\n",
+    "    vec4 c0 = rblShadowTransform(r0, r1, r2, r3, position);\n",
     "    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here\n",
     "    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));\n",
     "    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);\n",
-    "    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);\n",
+    "    vec4 c = rblShadowTransform(r0, r1, r2, r3, position + n*(bias.z*texel*sinI));\n",
     "    if (!(c.w > 0.0)) return 1.0;\n",
     "    vec3 q = c.xyz/c.w;\n",
     "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;\n",
@@ -2285,7 +2426,7 @@ static const char *const rbl__shader_shadows[] = {
     "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
     "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
     "            ivec2 at = b0 + ivec2(i, j);\n",
-    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;\n",
+    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at, size).r : 1.0;\n",
     "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
     "            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
     "        }\n",
@@ -2295,17 +2436,60 @@ static const char *const rbl__shader_shadows[] = {
     "\n",
     "float rblShadow(int k, vec3 position, vec3 n, float NdotL)\n",
     "{\n",
-    "    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);\n",
+    "    if (k == 0) return rblShadowLookup(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3],\n",
+    "                                     rblShadowParams[0], rblShadowBias[0], rblShadowAxes[0].xyz, rblShadowAxes[1].xyz, position, n, NdotL);\n",
     "#if RBL_SHADOWS > 1\n",
-    "    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);\n",
+    "    if (k == 1) return rblShadowLookup(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7],\n",
+    "                                     rblShadowParams[1], rblShadowBias[1], rblShadowAxes[2].xyz, rblShadowAxes[3].xyz, position, n, NdotL);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 2\n",
-    "    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);\n",
+    "    if (k == 2) return rblShadowLookup(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11],\n",
+    "                                     rblShadowParams[2], rblShadowBias[2], rblShadowAxes[4].xyz, rblShadowAxes[5].xyz, position, n, NdotL);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 3\n",
-    "    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);\n",
+    "    if (k == 3) return rblShadowLookup(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15],\n",
+    "                                     rblShadowParams[3], rblShadowBias[3], rblShadowAxes[6].xyz, rblShadowAxes[7].xyz, position, n, NdotL);\n",
     "#endif\n",
     "    return 1.0;\n",
+    "}\n",
+    "#endif\n",
+    NULL };
+static const char *const rbl__shader_skinning[] = {
+    "// GPU skinning of raylib Models (RBL_SKINNING: RblLitShaderDesc.skinning, and the skinned caster):\n",
+    "// raylib's bone attributes (DrawMesh binds them by these names when raylib is built with\n",
+    "// SUPPORT_GPU_SKINNING) and the Model's boneMatrices (RblDrawModel uploads them). Same sum as raylib's\n",
+    "// CPU skinning: p' = sum w_k M_k p, n' = sum w_k M_k^-T n (normals with the inverse transpose, so a\n",
+    "// non-uniformly scaled bone keeps them perpendicular); tangents lie in the surface: sum w_k M_k t.\n",
+    "// Weights are used as given (not renormalised, as raylib's CPU path); a vertex whose weights are all\n",
+    "// zero belongs to no bone and keeps its bind pose (raylib's sum would put it at the origin).\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "#ifdef RBL_SKINNING\n",
+    "RBL_ATTRIBUTE vec4 vertexBoneIndices;      // unsigned bytes, not normalised: 0..255 as floats\n",
+    "RBL_ATTRIBUTE vec4 vertexBoneWeights;\n",
+    "uniform mat4 boneMatrices[RBL_MAX_BONES];\n",
+    "\n",
+    "void rblSkin(inout vec3 position, inout vec3 normal, inout vec3 tangent)\n",
+    "{\n",
+    "    vec3 p = vec3(0.0), n = vec3(0.0), t = vec3(0.0);\n",
+    "    float total = 0.0;\n",
+    "    for (int k = 0; k < 4; k++)\n",
+    "    {\n",
+    "        float w = vertexBoneWeights[k];\n",
+    "        // A zero weight adds nothing, even from a bone matrix never uploaded\n",
+    "        if (w == 0.0) continue;\n",
+    "        total += abs(w);\n",
+    "        mat4 m = boneMatrices[int(clamp(vertexBoneIndices[k] + 0.5, 0.0, float(RBL_MAX_BONES) - 0.5))];\n",
+    "        vec3 a = m[0].xyz, b = m[1].xyz, c = m[2].xyz;\n",
+    "        p += w*(a*position.x + b*position.y + c*position.z + m[3].xyz);\n",
+    "        // Inverse transpose = cofactors/det: columns b x c, c x a, a x b (no inverse(), which GLSL ES 1.00\n",
+    "        // lacks); a singular bone keeps its cofactor direction rather than dividing by zero\n",
+    "        vec3 ca = cross(b, c), cb = cross(c, a), cc = cross(a, b);\n",
+    "        float det = dot(a, ca);\n",
+    "        n += w*(ca*normal.x + cb*normal.y + cc*normal.z)/((abs(det) > 1e-30)? det : 1.0);\n",
+    "        t += w*(a*tangent.x + b*tangent.y + c*tangent.z);\n",
+    "    }\n",
+    "    if (total > 0.0) { position = p; normal = n; tangent = t; }\n",
     "}\n",
     "#endif\n",
     NULL };
@@ -2330,17 +2514,18 @@ static const char *const rbl__shader_surface[] = {
 static const char *const rbl__shader_volume_vs[] = {
     "// Deferred light volume, vertex stage: a sphere proxy per bounded point/spot light, one instanced\n",
     "// draw; the light's packed values ride along as instance attributes (as the forward uniforms).\n",
+    "#include \"dialect.glsl\"\n",
     "\n",
-    "in vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;                         // proxy that encloses the unit sphere\n",
     "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
     "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
     "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
     "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
     "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
-    "flat out vec4 volumePosition;\n",
-    "flat out vec4 volumeColor;\n",
-    "flat out vec4 volumeSpot;\n",
-    "flat out vec4 volumeFalloff;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeSpot;\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -2357,6 +2542,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "deferred_ambient.fs.glsl", rbl__shader_deferred_ambient_fs },
     { "deferred_resolve.fs.glsl", rbl__shader_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__shader_deferred_volume_fs },
+    { "dialect.glsl", rbl__shader_dialect },
     { "fullscreen.vs.glsl", rbl__shader_fullscreen_vs },
     { "gbuffer.fs.glsl", rbl__shader_gbuffer_fs },
     { "gbuffer_codec.glsl", rbl__shader_gbuffer_codec },
@@ -2369,20 +2555,21 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "output.glsl", rbl__shader_output },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
     { "shadows.glsl", rbl__shader_shadows },
+    { "skinning.glsl", rbl__shader_skinning },
     { "surface.glsl", rbl__shader_surface },
     { "volume.vs.glsl", rbl__shader_volume_vs },
 };
 // Each stage with its includes resolved, dependencies first (the loader joins these)
-static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_fullscreen_vs, NULL };
-static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_common, rbl__shader_lit_vs, NULL };
-static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
-static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
-static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_lit_fs, NULL };
-static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
+static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialect, rbl__shader_fullscreen_vs, NULL };
+static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_skinning, rbl__shader_lit_vs, NULL };
+static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
+static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
+static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
+static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
@@ -2935,11 +3122,14 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
 // Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
 // default and not visible here), so the array is generously larger than any build's
 #define RBL__CASTER_MAPS 32
+// What a draw feeds the vertex stage: billboard quads, instances, a Model's mesh, or a GPU-skinned
+// mesh with its Model's bone matrices (a skinned program needs the last; casters skin for it)
+enum { RBL__PATH_BILLBOARD = 0, RBL__PATH_INSTANCED, RBL__PATH_MESH, RBL__PATH_SKINNED };
 // Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
 // colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblCameraFrame *view);
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program);
-static const char *rbl__materialProblem(const Material *material, bool instanced, rbl__Program **program);
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program);
+static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
@@ -3108,7 +3298,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
     rbl__Program *program = NULL;
-    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, false, &program) : NULL;
+    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
     if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
         bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL)
@@ -3250,7 +3440,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         MaterialMap casterMaps[RBL__CASTER_MAPS];
         Material material = run->material;
         rbl__Program *program = NULL;
-        if (!rbl__prepareDraw(&material, casterMaps, false, fn, &program)) continue;
+        if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) continue;
         bound |= rbl__bindMaterial(&material);
         if (program != NULL) rbl__applyMaterialValues(program, &material);
         for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
@@ -3274,7 +3464,7 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
-                      rbl__materialProblem(&material, false, &program);
+                      rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program);
     if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
     if (immediate->state == NULL)
@@ -3347,6 +3537,7 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     RblInstanceBuffer buffer;
     memset(&buffer, 0, sizeof(buffer));
     if ((capacity < 0) || (capacity > RBL_MAX_INSTANCES)) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: capacity %i outside 0..%i", capacity, RBL_MAX_INSTANCES); return buffer; }
+    if (rbl__needsGlsl3("instanced billboards") != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: %s", rbl__state.problem); return buffer; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
     rbl__InstanceBufferState *b = (rbl__InstanceBufferState *)RBL_CALLOC(1, sizeof(rbl__InstanceBufferState));
     if (b != NULL) b->staging = (RblInstance *)RBL_MALLOC((size_t)capacity*sizeof(RblInstance));
@@ -3432,7 +3623,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         return 0;
     }
     rbl__Program *checked = NULL;
-    const char *bad = rbl__materialProblem(&material, true, &checked);
+    const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
     if (count > buffer->capacity)
     {
@@ -3482,7 +3673,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, true, "RblDrawInstanced", &program)) return 0;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, "RblDrawInstanced", &program)) return 0;
 
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
@@ -4629,16 +4820,32 @@ static char *rbl__joinStage(const char *prefix, const char *const *const *parts)
     return text;
 }
 
-// Compile a variant: "#version 330", the variant's defines, then each stage's parts. raylib substitutes
-// its default shader when compilation fails; report that.
+// Compile a variant: the dialect's #version and words (dialect.glsl), the stage, the variant's
+// defines, then each stage's parts. raylib substitutes its default shader when compilation fails;
+// report that.
+// What precedes a stage's sources in dialect glsl: #version, the dialect and stage (dialect.glsl), defines
+static void rbl__stagePrologue(int glsl, bool vertex, const char *defines, char *out, size_t size)
+{
+    const char *version = (glsl == 300)? "#version 300 es\n#define RBL_GLSL_ES\n" : (glsl == 100)? "#version 100\n#define RBL_GLSL_ES\n" :
+                          (glsl == 120)? "#version 120\n" : "#version 330\n";
+    snprintf(out, size, "%s#define RBL_GLSL %i\n#define %s\n%s", version, glsl, vertex? "RBL_VERTEX_STAGE" : "RBL_FRAGMENT_STAGE", defines);
+}
+
 static Shader rbl__loadShaderVariant(const char *const *const *vs, const char *const *const *fs, const char *defines)
 {
-    char prefix[1200];
-    snprintf(prefix, sizeof(prefix), "#version 330\n%s", defines);
-    char *vsFull = rbl__joinStage(prefix, vs);
-    char *fsFull = rbl__joinStage(prefix, fs);
+    int glsl = rbl__glsl();
+    char vsPrefix[1300], fsPrefix[1300];
+    rbl__stagePrologue(glsl, true, defines, vsPrefix, sizeof(vsPrefix));
+    rbl__stagePrologue(glsl, false, defines, fsPrefix, sizeof(fsPrefix));
     Shader shader;
     memset(&shader, 0, sizeof(shader));
+    if (glsl == 0)
+    {
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "lit shaders need OpenGL 2.1+ or ES 2+; this context is %s", rbl__contextName());
+        return shader;
+    }
+    char *vsFull = rbl__joinStage(vsPrefix, vs);
+    char *fsFull = rbl__joinStage(fsPrefix, fs);
     if ((vsFull != NULL) && (fsFull != NULL)) shader = LoadShaderFromMemory(vsFull, fsFull);
     RBL_FREE(vsFull); RBL_FREE(fsFull);
     if ((shader.id == 0) || (shader.id == rlGetShaderIdDefault()))
@@ -4682,6 +4889,8 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
+    if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
+    if (in.skinning && !RBL_GPU_SKINNING) return "skinning needs raylib built with SUPPORT_GPU_SKINNING (then define RBL_GPU_SKINNING 1 before the header)";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
@@ -4697,6 +4906,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->linearOutput = in.linearOutput;
     out->instanced = in.instanced;
     out->deferred = in.deferred;
+    out->skinning = in.skinning;
     out->debugOutput = in.debugOutput;
     if (in.deferred)
     {
@@ -4723,6 +4933,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
                      m->specular? "#define RBL_SPECULAR\n" : "", m->occlusion? "#define RBL_OCCLUSION\n" : "",
                      view? "#define RBL_VIEW_VECTOR\n" : "", d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
     if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
+    if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -4783,6 +4994,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
+    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) return NULL;
     Shader shader;
     if (key->kind == RBL__KIND_PASS)
     {
@@ -5021,8 +5233,9 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
 // false = refused, with one log line.
 // Why a material cannot draw in the current pass through a path (instanced or not); NULL = it can.
 // No side effect: the draw calls ask before they touch any state.
-static const char *rbl__materialProblem(const Material *material, bool instanced, rbl__Program **program)
+static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program)
 {
+    bool instanced = (path == RBL__PATH_INSTANCED);
     *program = NULL;
     if (material->maps != NULL)
     {
@@ -5044,20 +5257,47 @@ static const char *rbl__materialProblem(const Material *material, bool instanced
     if ((g != NULL) && !p->key.desc.deferred) return "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
     if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
     if ((g == NULL) && p->key.desc.deferred) return "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
+    // Without the bone attributes raylib's DrawMesh would enable them with no buffer (or defaults that
+    // put every vertex on bone 0): a skinned program draws GPU-skinned meshes only
+    if (p->key.desc.skinning && (path == RBL__PATH_BILLBOARD)) return "a skinned program (RblLitShaderDesc.skinning) draws only Models";
+    if (p->key.desc.skinning && (path == RBL__PATH_MESH))
+        return "a skinned program needs a GPU-skinned mesh (bone indices and weights uploaded, no CPU animVertices) of a Model with boneMatrices, drawn by RblDrawModel";
     *program = p;
     return NULL;
 }
 
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], bool instanced, const char *fn, rbl__Program **program)
+static rbl__Program *rbl__findCaster(unsigned int id)
 {
-    const char *bad = rbl__materialProblem(material, instanced, program);
+    for (int i = 0; (id != 0) && (i < RBL_SHADER_CACHE_SIZE); i++)
+        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == id) && (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) return &rbl__state.programs[i];
+    return NULL;
+}
+
+// The skinned caster, compiled on the first GPU-skinned mesh of a shadow pass and held (one holder)
+// until the last shadow map goes; NULL (problem set) when it cannot compile
+static rbl__Program *rbl__skinnedCaster(void)
+{
+    rbl__Program *caster = rbl__findCaster(rbl__state.casterIds[2]);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc desc, normalised;
+    memset(&desc, 0, sizeof(desc));
+    desc.skinning = true;
+    if (rbl__normaliseLitDesc(desc, &normalised) != NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "GPU skinning is off (RBL_GPU_SKINNING)"); return NULL; }
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
+    caster = rbl__acquireProgram(&key);
+    rbl__state.casterIds[2] = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program)
+{
+    const char *bad = rbl__materialProblem(material, path, program);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
-        rbl__Program *caster = NULL;
-        for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-            if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == rbl__state.casterIds[instanced? 1 : 0]) &&
-                (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) caster = &rbl__state.programs[i];
+        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
@@ -5141,16 +5381,18 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     for (int k = 0; k < n; k++) lightOf[k] = slotOf[k];
     rlSetUniform(loc[RBL__U_SHADOW_LIGHT], lightOf, SHADER_UNIFORM_IVEC4, 1);
     if (n == 0) return;
-    Matrix m[RBL_MAX_SHADOWS];
-    float params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
+    float rows[RBL_MAX_SHADOWS*16], params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
     for (int k = 0; k < n; k++)
     {
-        m[k] = rbl__matFromArray(s->shadowUniforms[k]);
+        // Rows as vec4s: rlSetUniformMatrices transposes on desktop GL and not on ES
+        Matrix m = rbl__matFromArray(s->shadowUniforms[k]);
+        float r[16] = { m.m0, m.m4, m.m8, m.m12, m.m1, m.m5, m.m9, m.m13, m.m2, m.m6, m.m10, m.m14, m.m3, m.m7, m.m11, m.m15 };
+        memcpy(&rows[k*16], r, sizeof(r));
         memcpy(&params[k*4], &s->shadowUniforms[k][16], 4*sizeof(float));
         memcpy(&bias[k*4], &s->shadowUniforms[k][20], 4*sizeof(float));
         memcpy(&axes[k*8], &s->shadowUniforms[k][24], 8*sizeof(float));
     }
-    rlSetUniformMatrices(loc[RBL__U_SHADOW_MATRIX], m, n);
+    rlSetUniform(loc[RBL__U_SHADOW_MATRIX], rows, SHADER_UNIFORM_VEC4, 4*n);
     rlSetUniform(loc[RBL__U_SHADOW_PARAMS], params, SHADER_UNIFORM_VEC4, n);
     rlSetUniform(loc[RBL__U_SHADOW_BIAS], bias, SHADER_UNIFORM_VEC4, n);
     rlSetUniform(loc[RBL__U_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*n);
@@ -5328,16 +5570,46 @@ static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
     return NULL;
 }
 
-// DrawMesh with the lit values of a checked material
-static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform)
+// Whether raylib skins this mesh on the GPU: bone indices and weights in raylib's bone buffers (only
+// a SUPPORT_GPU_SKINNING build has those vboId slots) and positions not already skinned on the CPU
+static bool rbl__meshGpuSkinned(const Mesh *mesh)
+{
+#if RBL_GPU_SKINNING
+    return (mesh->boneIndices != NULL) && (mesh->boneWeights != NULL) && (mesh->animVertices == NULL) && (mesh->vboId != NULL) &&
+           (mesh->vboId[RL_DEFAULT_SHADER_ATTRIB_LOCATION_BONEINDICES] != 0) && (mesh->vboId[RL_DEFAULT_SHADER_ATTRIB_LOCATION_BONEWEIGHTS] != 0);
+#else
+    (void)mesh;
+    return false;
+#endif
+}
+
+// Why a Model's bone matrices cannot be uploaded; NULL = they can
+static const char *rbl__bonesProblem(const Model *model)
+{
+    if ((model->skeleton.boneCount < 1) || (model->skeleton.boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
+    for (int b = 0; b < model->skeleton.boneCount; b++)
+        if (!rbl__exponentsBelow(&model->boneMatrices[b], 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "a bone matrix with NaN/Inf or |value| >= 2^60";
+    return NULL;
+}
+
+// DrawMesh with the lit values of a checked material; bones: the Model's matrices for a skinned draw
+static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int path, const Model *bones)
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *p = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, false, "RblDrawMesh", &p)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, path, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
     if (p != NULL)
     {
         rlEnableShader(material.shader.id);
         rbl__applyMaterialValues(p, &material);
+        // As raylib's DrawModel does for its own skinning shaders (DrawMesh alone uploads no bones)
+        int loc = p->shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS];
+        if (p->key.desc.skinning && (path == RBL__PATH_SKINNED) && (loc != -1)) rlSetUniformMatrices(loc, bones->boneMatrices, bones->skeleton.boneCount);
+    }
+    else if ((path == RBL__PATH_SKINNED) && (material.shader.locs != NULL) && (material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS] != -1))
+    {
+        rlEnableShader(material.shader.id);     // the user's own skinning shader, as raylib's DrawModel feeds it
+        rlSetUniformMatrices(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones->boneMatrices, bones->skeleton.boneCount);
     }
     DrawMesh(mesh, material, transform);
 }
@@ -5346,9 +5618,9 @@ void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
 {
     rbl__Program *p = NULL;
     const char *bad = rbl__meshProblem(&mesh, &transform);
-    if (bad == NULL) bad = rbl__materialProblem(&material, false, &p);
+    if (bad == NULL) bad = rbl__materialProblem(&material, RBL__PATH_MESH, &p);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawMesh: %s", bad); return; }
-    rbl__drawMesh(mesh, material, transform);
+    rbl__drawMesh(mesh, material, transform, RBL__PATH_MESH, NULL);
 }
 
 void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
@@ -5363,24 +5635,29 @@ void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
     t.m0 = t.m5 = t.m10 = scale;
     t.m12 = position.x; t.m13 = position.y; t.m14 = position.z;
     Matrix transform = rbl__matMul(model.transform, t);
+    // A GPU-skinned mesh of a Model with bone matrices is skinned by a skinned program and by the casters
+    bool bones = (bad == NULL) && (model.boneMatrices != NULL);
     for (int i = 0; (bad == NULL) && (i < model.meshCount); i++)
     {
         rbl__Program *p = NULL;
         int m = model.meshMaterial[i];
+        int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
         at = i;
         if ((m < 0) || (m >= model.materialCount)) bad = "a mesh names a material index outside 0..materialCount-1";
         else if ((bad = rbl__meshProblem(&model.meshes[i], &transform)) != NULL) {}
-        else bad = rbl__materialProblem(&model.materials[m], false, &p);
+        else if ((path == RBL__PATH_SKINNED) && ((bad = rbl__bonesProblem(&model)) != NULL)) {}
+        else bad = rbl__materialProblem(&model.materials[m], path, &p);
     }
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawModel: %s (mesh %i)", bad, at); return; }
     for (int i = 0; i < model.meshCount; i++)
     {
         Material material = model.materials[model.meshMaterial[i]];
-        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform); continue; }
+        int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
+        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform, path, &model); continue; }
         Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
         Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
         material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
-        rbl__drawMesh(model.meshes[i], material, transform);
+        rbl__drawMesh(model.meshes[i], material, transform, path, &model);
         material.maps[MATERIAL_MAP_ALBEDO].color = c;
     }
 }
@@ -5540,7 +5817,8 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 {
     g->albedo = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
     g->normal = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
-    g->params = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
+    // RG8 for the 16 parameter bits; ES maps two-channel formats to unrenderable luminance-alpha: RGBA8
+    g->params = rbl__targetTexture(width, height, (rbl__glsl() == 300)? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
@@ -5601,6 +5879,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
     if ((bad == NULL) && ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))) bad = "size outside 1..RBL_MAX_TARGET_SIZE";
+    if (bad == NULL) bad = rbl__needsGlsl3("the G-buffer and deferred passes");
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
     g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
     if ((g.state == NULL) || !rbl__liveAdd(g.state))
@@ -6017,11 +6296,12 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     return NULL;
 }
 
-// The caster programs (vertex buffers, instanced): one more holder each, or none on failure
+// The caster programs (vertex buffers, instanced where the context instances): one more holder
+// each, or none on failure
 static bool rbl__acquireCasters(void)
 {
     rbl__Program *got[2] = { NULL, NULL };
-    for (int instanced = 0; instanced < 2; instanced++)
+    for (int instanced = 0; instanced < ((rbl__glsl() >= 300)? 2 : 1); instanced++)
     {
         RblLitShaderDesc desc, normalised;
         memset(&desc, 0, sizeof(desc));
@@ -6037,7 +6317,7 @@ static bool rbl__acquireCasters(void)
         }
     }
     rbl__state.casterIds[0] = got[0]->shader.id;
-    rbl__state.casterIds[1] = got[1]->shader.id;
+    rbl__state.casterIds[1] = (got[1] != NULL)? got[1]->shader.id : 0;
     return true;
 }
 
@@ -6099,7 +6379,12 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
-    rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+    if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
+    if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the skinned caster goes too
+    {
+        if (rbl__state.casterIds[2] != 0) rbl__releaseProgram(rbl__state.casterIds[2], RBL__KIND_CASTER);
+        rbl__state.casterIds[2] = 0;
+    }
     rbl__liveRemove(map->state);
     RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));

@@ -1,9 +1,16 @@
 // Common: constants and helpers every stage shares (the one sRGB transfer pair, safe normalise).
-// Included first by every stage; includes nothing.
+// Included first by every stage (after dialect.glsl, its one include).
+#include "dialect.glsl"
 
 #define RBL_PI 3.14159265358979
 #define RBL_HALF_MAX 65504.0        // radiance clamp: a half-float target never receives Inf
 #define RBL_MIN_ROUGHNESS 0.045     // perceptual; alpha = 0.045^2 keeps D finite in fp32 (Filament's limit)
+
+// Upper-left 3x3 (GLSL ES 1.00 has no mat3(mat4) constructor)
+mat3 rblMat3(mat4 m)
+{
+    return mat3(m[0].xyz, m[1].xyz, m[2].xyz);
+}
 
 // normalize() of a zero vector is undefined (NaN on most GPUs): fall back instead.
 vec3 rblSafeNormalize(vec3 v, vec3 fallback)

@@ -4,7 +4,7 @@
 #include "gbuffer_read.glsl"
 #include "lights.glsl"
 
-in vec2 fragUv;
+RBL_VARYING vec2 fragUv;
 out vec4 finalColor;
 
 void main()

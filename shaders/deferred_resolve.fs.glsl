@@ -3,7 +3,7 @@
 #include "gbuffer_read.glsl"
 #include "output.glsl"
 
-in vec2 fragUv;
+RBL_VARYING vec2 fragUv;
 uniform int rblOutput;               // RblGBufferOutput
 uniform float rblOutputScale;            // linear depth / position / light count range of the debug views
 out vec4 finalColor;

@@ -4,10 +4,10 @@
 #include "gbuffer_read.glsl"
 #include "lights.glsl"
 
-flat in vec4 volumePosition;
-flat in vec4 volumeColor;
-flat in vec4 volumeSpot;
-flat in vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)
+RBL_FLAT RBL_VARYING vec4 volumePosition;
+RBL_FLAT RBL_VARYING vec4 volumeColor;
+RBL_FLAT RBL_VARYING vec4 volumeSpot;
+RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)
 out vec4 finalColor;
 
 void main()

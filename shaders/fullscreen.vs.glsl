@@ -1,7 +1,8 @@
 // Full-screen triangle from gl_VertexID (deferred ambient/unbounded-light pass and resolve); no
 // vertex buffer.
+#include "dialect.glsl"
 
-out vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)
+RBL_VARYING vec2 fragUv;                        // G-buffer coordinate of this pixel (0..1)
 
 void main()
 {

@@ -28,6 +28,6 @@ void main()
 #endif
     vec2 params;
     rblPackWord(sp.normal, field1, field2, rblOutNormal, params);
-    rblOutParams = vec4(params, 0.0, 1.0);
+    rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)
     rblOutAccum = vec4(emission, 1.0);
 }

@@ -82,7 +82,12 @@ vec3 rblAmbientLight(RblShadingPoint s)
 float rblShadowOfMap(int k, RblShadingPoint s, int light)
 {
     if ((light < 0) || (light >= rblLightCount)) return 1.0;
+#if RBL_GLSL >= 300
     vec4 p = rblLightPosition[light];
+#else
+    vec4 p = vec4(0.0);                             // GLSL ES 1.00: uniform arrays by loop index only
+    for (int i = 0; i < RBL_LIGHTS; i++) if (i == light) p = rblLightPosition[i];
+#endif
     vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);
     float NdotL = dot(s.normal, l);
     return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;

@@ -6,7 +6,11 @@
 //   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
 //   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 
+#if RBL_GLSL >= 300
 out vec4 finalColor;
+#else
+#define finalColor gl_FragColor   // GLSL 1.x: the one built-in output
+#endif
 
 void main()
 {

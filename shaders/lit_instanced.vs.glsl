@@ -21,14 +21,14 @@ uniform mat4 mvp;
 //   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes
 uniform vec4 rblInstancing[7];
 
-out vec3 fragPosition;
-out vec2 fragTexCoord;
-out vec4 fragColor;
-out vec3 fragNormal;
-out vec4 fragTangent;
+RBL_VARYING vec3 fragPosition;
+RBL_VARYING vec2 fragTexCoord;
+RBL_VARYING vec4 fragColor;
+RBL_VARYING vec3 fragNormal;
+RBL_VARYING vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
-flat out vec3 fragEye;
-flat out vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)
+RBL_FLAT RBL_VARYING vec3 fragEye;
+RBL_FLAT RBL_VARYING vec4 fragViewAxis; // back direction, w 1 orthographic (common.glsl rblViewVector)
 #endif
 
 // Unit v into o, or false with o untouched when v is too short to give a direction (as the CPU's)

@@ -10,14 +10,14 @@
 //   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
 #include "surface.glsl"
 
-in vec3 fragPosition;
-in vec2 fragTexCoord;
-in vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)
-in vec3 fragNormal;
-in vec4 fragTangent;
+RBL_VARYING vec3 fragPosition;
+RBL_VARYING vec2 fragTexCoord;
+RBL_VARYING vec4 fragColor;              // vertex colour, already linear (decoded in the vertex stage)
+RBL_VARYING vec3 fragNormal;
+RBL_VARYING vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
-flat in vec3 fragEye;           // camera position (from matView in the vertex stage)
-flat in vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)
+RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)
+RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)
 #endif
 
 uniform sampler2D texture0;     // albedo (sRGB)

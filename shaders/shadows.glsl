@@ -5,7 +5,8 @@
 #include "common.glsl"
 
 #if RBL_SHADOWS > 0
-uniform mat4 rblShadowMatrix[RBL_SHADOWS];  // world -> (u, v, window depth) of map k, before the divide by w
+uniform vec4 rblShadowMatrix[4*RBL_SHADOWS]; // rows 4k..4k+3: world -> (u, v, window depth, w) of map k (rows: no
+                                            // transpose convention to differ between GL and ES uploads)
 uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far
 uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels
 uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))
@@ -39,15 +40,23 @@ float rblShadowDistance(float d, vec4 prm)
 // fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).
 // Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch
 // outside the map or of a texel nothing was drawn into.
-float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
+// Map k's uniforms come in as arguments, indexed by constants at the call: GLSL ES 1.00 fragment
+// stages may index uniform arrays only by constants and loop indices.
+vec4 rblShadowTransform(vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec3 p)
 {
-    vec4 prm = rblShadowParams[k], bias = rblShadowBias[k];
-    vec3 right = rblShadowAxes[2*k].xyz, up = rblShadowAxes[2*k + 1].xyz, along = cross(up, right);
-    vec4 c0 = rblShadowMatrix[k]*vec4(position, 1.0);
+    vec4 h = vec4(p, 1.0);
+    return vec4(dot(r0, h), dot(r1, h), dot(r2, h), dot(r3, h));
+}
+
+float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec3 right, vec3 up,
+                      vec3 position, vec3 n, float NdotL)
+{
+    vec3 along = cross(up, right);
+    vec4 c0 = rblShadowTransform(r0, r1, r2, r3, position);
     float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here
     float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));
     float tanI = min(sinI/max(NdotL, 1e-4), 10.0);
-    vec4 c = rblShadowMatrix[k]*vec4(position + n*(bias.z*texel*sinI), 1.0);
+    vec4 c = rblShadowTransform(r0, r1, r2, r3, position + n*(bias.z*texel*sinI));
     if (!(c.w > 0.0)) return 1.0;
     vec3 q = c.xyz/c.w;
     if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;
@@ -69,7 +78,7 @@ float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
             float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);
             // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder
             ivec2 at = b0 + ivec2(i, j);
-            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? texelFetch(map, at, 0).r : 1.0;
+            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at, size).r : 1.0;
             float receiver = z + dot(slope, origin + vec2(float(i), float(j)));
             lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;
         }
@@ -79,15 +88,19 @@ float rblShadowLookup(sampler2D map, int k, vec3 position, vec3 n, float NdotL)
 
 float rblShadow(int k, vec3 position, vec3 n, float NdotL)
 {
-    if (k == 0) return rblShadowLookup(rblShadowMap0, 0, position, n, NdotL);
+    if (k == 0) return rblShadowLookup(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3],
+                                     rblShadowParams[0], rblShadowBias[0], rblShadowAxes[0].xyz, rblShadowAxes[1].xyz, position, n, NdotL);
 #if RBL_SHADOWS > 1
-    if (k == 1) return rblShadowLookup(rblShadowMap1, 1, position, n, NdotL);
+    if (k == 1) return rblShadowLookup(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7],
+                                     rblShadowParams[1], rblShadowBias[1], rblShadowAxes[2].xyz, rblShadowAxes[3].xyz, position, n, NdotL);
 #endif
 #if RBL_SHADOWS > 2
-    if (k == 2) return rblShadowLookup(rblShadowMap2, 2, position, n, NdotL);
+    if (k == 2) return rblShadowLookup(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11],
+                                     rblShadowParams[2], rblShadowBias[2], rblShadowAxes[4].xyz, rblShadowAxes[5].xyz, position, n, NdotL);
 #endif
 #if RBL_SHADOWS > 3
-    if (k == 3) return rblShadowLookup(rblShadowMap3, 3, position, n, NdotL);
+    if (k == 3) return rblShadowLookup(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15],
+                                     rblShadowParams[3], rblShadowBias[3], rblShadowAxes[6].xyz, rblShadowAxes[7].xyz, position, n, NdotL);
 #endif
     return 1.0;
 }

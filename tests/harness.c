@@ -1,5 +1,4 @@
 // Test support implementation; see harness.h.
-#define RT_HARNESS_IMPLEMENTATION
 #include "harness.h"
 #include "rlgl.h"
 
@@ -12,7 +11,7 @@
 
 #if defined(__EMSCRIPTEN__)
 #include <emscripten/html5.h>
-#include <GLES3/gl3.h>
+#include <webgl/webgl2.h>
 #else
 #include <dlfcn.h>
 #include <EGL/egl.h>
@@ -43,10 +42,12 @@ int rtFailuresInCurrentTest(void) { return rtTestFailures; }
 int rtRun(const char *suite, const RtTest *tests, int count, int argc, char **argv)
 {
     const char *filter = (argc > 1)? argv[1] : NULL;
-    int passed = 0, failed = 0;
+    int passed = 0, failed = 0, skipped = 0;
+    bool glsl3 = rtGlsl3();
     for (int i = 0; i < count; i++)
     {
         if ((filter != NULL) && (strstr(tests[i].name, filter) == NULL)) continue;
+        if (tests[i].glsl3 && !glsl3) { skipped++; printf("  n/a   %s (needs GLSL 3)\n", tests[i].name); continue; }
         rtTestName = tests[i].name;
         rtTestFailures = 0;
         tests[i].fn();
@@ -54,6 +55,7 @@ int rtRun(const char *suite, const RtTest *tests, int count, int argc, char **ar
         else { failed++; printf("  FAIL  %s (%d failed checks)\n", tests[i].name, rtTestFailures); }
         fflush(stdout);
     }
+    if (skipped > 0) printf("  %d tests need GLSL 3 (GL 3.3 / ES 3) and do not apply to this context; the refusals are tested\n", skipped);
     printf("%s: %d passed, %d failed\n", suite, passed, failed);
     return (failed == 0)? 0 : 1;
 }
@@ -124,77 +126,33 @@ void rtFinish(void)
     if (finish != NULL) finish();
 }
 
-void *rtGlProc(const char *name) { return emscripten_webgl_get_proc_address(name); }
-
-// IEEE half from float, round to nearest even (values read from half targets convert exactly)
-static unsigned short rtHalfFromFloat(float f)
+// WebGL2 cannot map a buffer for reading (emscripten's glMapBufferRange maps for writing only); it
+// reads buffers back with getBufferSubData. A read mapping (what ES 3.0 code does, e.g. tf_capture.h)
+// is emulated with it: glMapBufferRange copies into memory of ours, glUnmapBuffer frees it.
+static void *rtWebMapped = NULL;
+static void *rtWebMapBufferRange(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access)
 {
-    unsigned int x; memcpy(&x, &f, sizeof(x));
-    unsigned int sign = (x >> 16) & 0x8000u, mant = x & 0x7FFFFFu;
-    int e = (int)((x >> 23) & 0xFF);
-    if (e == 0xFF) return (unsigned short)(sign | 0x7C00u | (mant? 0x200u : 0u));   // inf, NaN
-    e = e - 127 + 15;
-    if (e >= 0x1F) return (unsigned short)(sign | 0x7C00u);                          // overflow to inf
-    if (e <= 0)
-    {
-        if (e < -10) return (unsigned short)sign;                                     // below half subnormals
-        mant |= 0x800000u;
-        int shift = 14 - e;
-        unsigned int h = mant >> shift, rest = mant & ((1u << shift) - 1u), halfway = 1u << (shift - 1);
-        if ((rest > halfway) || ((rest == halfway) && (h & 1u))) h++;
-        return (unsigned short)(sign | h);
-    }
-    unsigned int h = ((unsigned int)e << 10) | (mant >> 13), rest = mant & 0x1FFFu;
-    if ((rest > 0x1000u) || ((rest == 0x1000u) && (h & 1u))) h++;                    // may carry into the exponent: correct
-    return (unsigned short)(sign | h);
+    if ((access != GL_MAP_READ_BIT) || (rtWebMapped != NULL) || (length <= 0)) return NULL;
+    rtWebMapped = malloc((size_t)length);
+    if (rtWebMapped != NULL) glGetBufferSubData(target, offset, length, rtWebMapped);
+    return rtWebMapped;
+}
+static GLboolean rtWebUnmapBuffer(GLenum target)
+{
+    (void)target;
+    if (rtWebMapped == NULL) return GL_FALSE;
+    free(rtWebMapped);
+    rtWebMapped = NULL;
+    return GL_TRUE;
 }
 
-void *rtWebReadTexturePixels(unsigned int id, int width, int height, int format)
+void *rtGlProc(const char *name)
 {
-    int channels = 0; bool half = false;
-    switch (format)
-    {
-        case PIXELFORMAT_UNCOMPRESSED_R32: channels = 1; break;
-        case PIXELFORMAT_UNCOMPRESSED_R32G32B32: channels = 3; break;
-        case PIXELFORMAT_UNCOMPRESSED_R32G32B32A32: channels = 4; break;
-        case PIXELFORMAT_UNCOMPRESSED_R16: channels = 1; half = true; break;
-        case PIXELFORMAT_UNCOMPRESSED_R16G16B16: channels = 3; half = true; break;
-        case PIXELFORMAT_UNCOMPRESSED_R16G16B16A16: channels = 4; half = true; break;
-        default: break;
-    }
-    size_t count = (size_t)width*height;
-    if (channels == 0)
-    {
-        // 8-bit formats: raylib's FBO readback gives RGBA8; keep the channels the format names
-        unsigned char *rgba = (unsigned char *)rlReadTexturePixels(id, width, height, format);
-        if ((rgba == NULL) || (format == PIXELFORMAT_UNCOMPRESSED_R8G8B8A8)) return rgba;
-        int keep = (format == PIXELFORMAT_UNCOMPRESSED_GRAYSCALE)? 1 : (format == PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA)? 2 :
-                   (format == PIXELFORMAT_UNCOMPRESSED_R8G8B8)? 3 : 4;
-        for (size_t i = 0; i < count; i++)
-            for (int c = 0; c < keep; c++) rgba[i*keep + c] = rgba[i*4 + ((keep == 2) && (c == 1)? 3 : c)];
-        return rgba;
-    }
-    float *rgba = (float *)malloc(count*4*sizeof(float));
-    if (rgba == NULL) return NULL;
-    GLint previous = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-    GLuint fbo = 0;
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, id, 0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);    // the one float readback WebGL2 guarantees
-    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)previous);
-    glDeleteFramebuffers(1, &fbo);
-    if (!half)
-    {
-        for (size_t i = 0; i < count; i++) for (int c = 0; c < channels; c++) rgba[i*channels + c] = rgba[i*4 + c];
-        return rgba;
-    }
-    unsigned short *out = (unsigned short *)malloc(count*channels*sizeof(unsigned short));
-    if (out != NULL) for (size_t i = 0; i < count; i++) for (int c = 0; c < channels; c++) out[i*channels + c] = rtHalfFromFloat(rgba[i*4 + c]);
-    free(rgba);
-    return out;
+    void *p = NULL;
+    if (strcmp(name, "glMapBufferRange") == 0) { void *(*f)(GLenum, GLintptr, GLsizeiptr, GLbitfield) = rtWebMapBufferRange; memcpy(&p, &f, sizeof(p)); }
+    else if (strcmp(name, "glUnmapBuffer") == 0) { GLboolean (*f)(GLenum) = rtWebUnmapBuffer; memcpy(&p, &f, sizeof(p)); }
+    else p = emscripten_webgl_get_proc_address(name);
+    return p;
 }
 
 #else
@@ -233,7 +191,10 @@ static void *rtFnToPtr(RtFn f) { void *p; memcpy(&p, &f, sizeof(p)); return p; }
 // rlLoadExtensions wants a loader returning void *; wrap the context's own loader
 static void *rtLoader(const char *name) { return rtFnToPtr(rtGetProc(name)); }
 
-static bool rtInitEgl(void)
+// kind: "egl" GL 3.3 core, "gles3" / "gles2" OpenGL ES 3 / 2, "gl21" GL 2.1 (compatibility). Strict
+// versions come from Mesa's overrides, set by tests/run.sh: MESA_GLES_VERSION_OVERRIDE=3.0 (ES 3.0,
+// GLSL ES 3.00), MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120.
+static bool rtInitEgl(const char *kind)
 {
     rtEglLib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_GLOBAL);
     if (rtEglLib == NULL) { printf("    context: egl: libEGL.so.1 not found (%s)\n", dlerror()); return false; }
@@ -248,11 +209,14 @@ static bool rtInitEgl(void)
     rtEglDisplay = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
     EGLint major = 0, minor = 0;
     if ((rtEglDisplay == EGL_NO_DISPLAY) || !initialize(rtEglDisplay, &major, &minor)) { printf("    context: egl: surfaceless display unavailable\n"); return false; }
-    if (!bindApi(EGL_OPENGL_API)) { printf("    context: egl: no desktop GL API\n"); return false; }
-    const EGLint attribs[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
-    rtEglContext = createContext(rtEglDisplay, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
-    if (rtEglContext == EGL_NO_CONTEXT) { printf("    context: egl: 3.3 core context refused\n"); return false; }
+    bool es = (strncmp(kind, "gles", 4) == 0), gl21 = (strcmp(kind, "gl21") == 0);
+    if (!bindApi(es? EGL_OPENGL_ES_API : EGL_OPENGL_API)) { printf("    context: %s: API unavailable\n", kind); return false; }
+    const EGLint core[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
+    const EGLint compat21[] = { EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE };
+    const EGLint gles[] = { EGL_CONTEXT_MAJOR_VERSION, (strcmp(kind, "gles2") == 0)? 2 : 3, EGL_NONE };
+    rtEglContext = createContext(rtEglDisplay, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, es? gles : (gl21? compat21 : core));
+    if (rtEglContext == EGL_NO_CONTEXT) { printf("    context: %s: context refused\n", kind); return false; }
     if (!makeCurrent(rtEglDisplay, EGL_NO_SURFACE, EGL_NO_SURFACE, rtEglContext)) { printf("    context: egl: make current failed\n"); return false; }
     rtGetProc = getProc;
     return true;
@@ -280,12 +244,17 @@ const char *rtInitContext(int width, int height)
 {
     const char *force = getenv("RBL_TEST_CONTEXT");
     const char *name = NULL;
-    if ((force == NULL) || (strcmp(force, "egl") == 0)) { if (rtInitEgl()) name = "egl"; }
+    if ((force == NULL) || (strcmp(force, "egl") == 0)) { if (rtInitEgl("egl")) name = "egl"; }
+    else if ((strcmp(force, "gles3") == 0) || (strcmp(force, "gles2") == 0) || (strcmp(force, "gl21") == 0)) { if (rtInitEgl(force)) name = force; }
     if ((name == NULL) && ((force == NULL) || (strcmp(force, "osmesa") == 0))) { if (rtInitOsmesa(width, height)) name = "osmesa"; }
     if (name == NULL) { printf("    context: no headless GL 3.3 core context (RBL_TEST_CONTEXT=%s)\n", force? force : "any"); return NULL; }
     SetTraceLogLevel(LOG_WARNING);     // raylib's INFO lines would bury the test output
     rlLoadExtensions(rtFnToPtr((RtFn)rtLoader));
     rlglInit(width, height);
+    typedef const unsigned char *(*RtGetString)(unsigned int);
+    RtGetString getString; void *p = rtGlProc("glGetString"); memcpy(&getString, &p, sizeof(p));
+    const unsigned char *version = (getString != NULL)? getString(0x1F02 /* GL_VERSION */) : NULL;
+    printf("    context: %s: GL_VERSION %s, rlGetVersion %i\n", name, (version != NULL)? (const char *)version : "?", rlGetVersion());
     return name;
 }
 
@@ -356,4 +325,81 @@ void *rtGlProc(const char *name)
 {
     return (rtGetProc != NULL)? rtFnToPtr(rtGetProc(name)) : NULL;
 }
+#endif  // !__EMSCRIPTEN__
+
+bool rtContextIsEs(void)
+{
+    return (rlGetVersion() == RL_OPENGL_ES_20) || (rlGetVersion() == RL_OPENGL_ES_30);
+}
+
+// Half float (IEEE binary16) to float, exactly
+static float rtHalfToFloat(unsigned short h)
+{
+    int e = (h >> 10) & 31, m = h & 1023;
+    float v = (e == 0)? ldexpf((float)m, -24) : ((e == 31)? ((m == 0)? INFINITY : NAN) : ldexpf((float)(m | 1024), e - 25));
+    return (h & 0x8000)? -v : v;
+}
+
+bool rtGlsl3(void)
+{
+    int v = rlGetVersion();
+    return (v == RL_OPENGL_33) || (v == RL_OPENGL_43) || (v == RL_OPENGL_ES_30);
+}
+
+typedef void (*RtReadPixelsFn)(int, int, int, int, unsigned int, unsigned int, void *);
+
+float *rtReadFloatPixels(unsigned int textureId, int width, int height)
+{
+    RtReadPixelsFn readPixels; void *p = rtGlProc("glReadPixels"); memcpy(&readPixels, &p, sizeof(p));
+    float *out = (float *)malloc(sizeof(float)*4*(size_t)width*height);
+    unsigned int fbo = rlLoadFramebuffer();
+    if ((readPixels == NULL) || (out == NULL) || (fbo == 0)) { free(out); if (fbo != 0) rlUnloadFramebuffer(fbo); return NULL; }
+    rlFramebufferAttach(fbo, textureId, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    rlEnableFramebuffer(fbo);
+    int readType = 0x1406 /* GL_FLOAT */;
+    if (rlGetVersion() == RL_OPENGL_ES_20)
+    {
+        // ES 2 reads a half-float target only in the implementation's own format/type
+        void (*getIntegerv)(unsigned int, int *); void *q = rtGlProc("glGetIntegerv"); memcpy(&getIntegerv, &q, sizeof(q));
+        getIntegerv(0x8B9A /* GL_IMPLEMENTATION_COLOR_READ_TYPE */, &readType);
+    }
+    if ((readType == 0x8D61 /* GL_HALF_FLOAT_OES */) || (readType == 0x140B /* GL_HALF_FLOAT */))
+    {
+        unsigned short *half = (unsigned short *)malloc(sizeof(unsigned short)*4*(size_t)width*height);
+        if (half != NULL)
+        {
+            readPixels(0, 0, width, height, 0x1908 /* GL_RGBA */, (unsigned int)readType, half);
+            for (size_t i = 0; i < 4*(size_t)width*height; i++) out[i] = rtHalfToFloat(half[i]);
+        }
+        free(half);
+    }
+    else readPixels(0, 0, width, height, 0x1908 /* GL_RGBA */, 0x1406 /* GL_FLOAT */, out);
+    rlDisableFramebuffer();
+    // Detach before deleting: rlUnloadFramebuffer would delete the attached texture too
+    rlFramebufferAttach(fbo, 0, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    rlUnloadFramebuffer(fbo);
+    return out;
+}
+
+bool rtReadDepth(unsigned int fbo, int width, int height, float *out)
+{
+#if defined(__EMSCRIPTEN__)
+    // WebGL2 has no depth readback at all (readPixels takes no DEPTH_COMPONENT format)
+    (void)fbo; (void)width; (void)height; (void)out;
+    return false;
 #endif
+    RtReadPixelsFn readPixels; void *p = rtGlProc("glReadPixels"); memcpy(&readPixels, &p, sizeof(p));
+    if (readPixels == NULL) return false;
+    rlEnableFramebuffer(fbo);
+    if (rtContextIsEs())
+    {
+        unsigned int *raw = (unsigned int *)malloc(sizeof(unsigned int)*(size_t)width*height);
+        if (raw == NULL) { rlDisableFramebuffer(); return false; }
+        readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1405 /* GL_UNSIGNED_INT */, raw);
+        for (size_t i = 0; i < (size_t)width*height; i++) out[i] = (float)(raw[i]/4294967295.0);
+        free(raw);
+    }
+    else readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, out);
+    rlDisableFramebuffer();
+    return true;
+}

@@ -1,5 +1,5 @@
-// Test support: a tiny runner (checks, counts, one closing line), a headless GL 3.3 core context
-// (EGL surfaceless, OSMesa fallback; RBL_TEST_CONTEXT=egl|osmesa forces one) and render/readback
+// Test support: a tiny runner (checks, counts, one closing line), a headless context (GL 3.3 core by
+// EGL surfaceless, OSMesa fallback; RBL_TEST_CONTEXT=egl|osmesa|gles3|gles2|gl21 forces one) and render/readback
 // helpers that save the actual image under build/test-output/ when a check fails.
 #ifndef RBL_TEST_HARNESS_H
 #define RBL_TEST_HARNESS_H
@@ -10,11 +10,14 @@
 // ---- runner ---------------------------------------------------------------------------------
 // A test is a void function; RBL_CHECK records a failure (with file:line and a message) and goes on.
 typedef void (*RtTestFn)(void);
-typedef struct { const char *name; RtTestFn fn; } RtTest;
+typedef struct { const char *name; RtTestFn fn; bool glsl3; } RtTest;
 
 void rtCheck(bool ok, const char *file, int line, const char *fmt, ...);
 #define RT_CHECK(cond, ...) rtCheck((cond), __FILE__, __LINE__, __VA_ARGS__)
-#define RT_TEST(fn) { #fn, fn }
+#define RT_TEST(fn) { #fn, fn, false }
+// A test of what needs GLSL 3 (instanced draws, the G-buffer, transform feedback): run on GL 3.3 and
+// ES 3 contexts; on ES 2 / GL 2.1 the runner lists it as not applicable (the suite tests the refusal)
+#define RT_TEST_GLSL3(fn) { #fn, fn, true }
 // Runs the tests (a filter from argv[1] keeps names containing it), prints one line per test and
 // "<suite>: N passed, N failed"; returns the process exit code.
 int rtRun(const char *suite, const RtTest *tests, int count, int argc, char **argv);
@@ -29,7 +32,8 @@ float rtRandomRange(unsigned int *state, float lo, float hi);
 
 // ---- headless GL ----------------------------------------------------------------------------
 // Creates the context (EGL first unless forced), loads GL through rlLoadExtensions and calls
-// rlglInit(width, height). Returns the backend name ("egl"/"osmesa") or NULL with a reason printed.
+// rlglInit(width, height). Returns the backend name ("egl"/"osmesa"; "webgl2" in the browser build,
+// tests/web/) or NULL with a reason printed.
 const char *rtInitContext(int width, int height);
 void rtCloseContext(void);
 
@@ -45,14 +49,17 @@ void rtFinish(void);
 
 // GL entry point of the current context (for tests that need GL beyond rlgl, e.g. transform feedback)
 void *rtGlProc(const char *name);
-
-#if defined(__EMSCRIPTEN__) && !defined(RT_HARNESS_IMPLEMENTATION)
-// WebGL2 has no glGetTexImage: raylib's ES readback always returns RGBA8 through an FBO, whatever the
-// format asked. This one reads float/half targets as RGBA floats and repacks every uncompressed format
-// into the layout the format names (what the desktop readback returns), so tests read alike on both.
-void *rtWebReadTexturePixels(unsigned int id, int width, int height, int format);
-#define rlReadTexturePixels rtWebReadTexturePixels
-#endif
+// The context is OpenGL ES (gles3 / gles2): float and depth readback differ there
+bool rtContextIsEs(void);
+// The context runs GLSL 3 (GL 3.3 or ES 3): instanced draws and the G-buffer exist
+bool rtGlsl3(void);
+// RGBA float texels of a colour texture (any float or 8-bit format), GL row order (bottom row first),
+// through a framebuffer and glReadPixels(GL_RGBA, GL_FLOAT): rlReadTexturePixels reads RGBA8 only on ES.
+// malloc'ed; NULL on failure
+float *rtReadFloatPixels(unsigned int textureId, int width, int height);
+// Window depths 0..1 of framebuffer fbo, GL row order: GL_FLOAT on desktop, GL_UNSIGNED_INT on ES
+// (ES reads depth only as integers; the 24-bit depth comes back scaled to 32 bits). false on failure
+bool rtReadDepth(unsigned int fbo, int width, int height, float *out);
 
 // ---- lit material values ----------------------------------------------------------------------
 // The values 0.3's RblLitShaderDesc held, written where 1.0 reads them: raylib's Material fields

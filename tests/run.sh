@@ -6,7 +6,8 @@
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
 #   alloc:          RBL_MALLOC family failing at the Nth call, swept over N on every allocating path
-#   gpu:            render tests under EGL surfaceless, then under OSMesa
+#   gpu:            render tests under EGL surfaceless, then under OSMesa (GL 3.3 core), then on
+#                   strict ES 3.0, ES 2.0 and GL 2.1 contexts with raylib built for each
 set -u
 BUILD=${BUILD:-build}
 pass=0; fail=0
@@ -48,6 +49,21 @@ else
   echo "  FAIL  deferred example renders headlessly"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
 fi
 
+# Static check of every spliced stage in every dialect (330, 300 es, 120, 100). glslangValidator
+# checks syntax and types per #version; it does not enforce GLSL ES 1.00's Appendix A indexing limits,
+# which the strict ES 2.0 run below exercises on Mesa.
+echo "== glsl (glslangValidator, every dialect)"
+rm -rf "$BUILD/glsl"
+if ! command -v glslangValidator >/dev/null 2>&1; then echo "  FAIL  glslangValidator not installed (tests/tools/deps.sh installs glslang-tools)"; fail=$((fail + 1))
+elif out=$("$BUILD/tests/splice_shaders" "$BUILD/glsl" 2>&1); then
+  echo "    $out"
+  gp=0; gf=0
+  for f in "$BUILD"/glsl/*/*; do
+    if v=$(glslangValidator "$f" 2>&1); then gp=$((gp + 1)); else gf=$((gf + 1)); echo "  FAIL  $f"; printf '%s\n' "$v" | head -5; fi
+  done
+  echo "glsl: $gp passed, $gf failed"; count "glsl: $gp passed, $gf failed"
+else echo "  FAIL  splice_shaders: $out"; fail=$((fail + 1)); fi
+
 for suite in test_cpu test_cpu_san; do
   echo "== $suite"
   out=$("$BUILD/tests/$suite" 2>&1); printf '%s\n' "$out"; count "$out"
@@ -62,6 +78,18 @@ out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/test_alloc"
 for ctx in egl osmesa; do
   echo "== test_gpu ($ctx)"
   out=$(RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"
+done
+# The same suite on raylib built for each other graphics API, on a strict context of that version
+# (Mesa's overrides): ES 3.0 / GLSL ES 3.00 runs everything; ES 2.0 and GL 2.1 the forward path,
+# with instanced and deferred refused (their GLSL 3 tests listed as n/a, the refusals tested)
+for ctx in gles3 gles2 gl21; do
+  echo "== test_gpu ($ctx)"
+  case $ctx in
+    gles3) env="MESA_GLES_VERSION_OVERRIDE=3.0" ;;
+    gles2) env="MESA_GLES_VERSION_OVERRIDE=2.0" ;;
+    gl21) env="MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120" ;;
+  esac
+  out=$(env $env RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu_$ctx" 2>&1); printf '%s\n' "$out"; count "$out"
 done
 
 echo "$pass passed, $fail failed"

@@ -25,6 +25,7 @@
 #include <unistd.h>
 
 #include "gpu_common.h"
+#include "skin_rig.h"
 
 // ---- checks -------------------------------------------------------------------------------------
 static int caseFailures = 0, caseChecks = 0;
@@ -696,6 +697,8 @@ static void c_load_lit_shader(void)
     }
     RblLitShaderDesc d = descOf(0, false, false); d.gamma = -2.0f;
     EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
+    d = descOf(0, true, false); d.skinning = true;     // skinning is for Models, not instances
+    EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
     d = descOf(0, true, true);      // instanced geometry-pass variant: not a thing
     s = RblLoadLitShader(d);
     ck((s.id == 0) || RblIsLitShaderValid(s), "instanced+deferred gave an invalid non-zero shader");
@@ -817,6 +820,63 @@ static void c_draw_model_and_mesh(void)
     model.meshMaterial = saved;
     model.materials[0].shader = (Shader){ 0 };
     UnloadModel(model);
+}
+
+// GPU-skinned Models: a skinned program refuses what it cannot skin (no bone matrices, a bone count
+// outside 1..RBL_MAX_BONES, a NaN bone, a mesh without bone data, RblDrawMesh, billboards), in the
+// colour pass and in a shadow pass (where the Model's data picks the skinned caster)
+static void c_draw_skinned_model(void)
+{
+    RblLitShaderDesc desc = descOf(RBL_BRDF_LAMBERT, false, false);
+    desc.skinning = true;
+#if !RBL_GPU_SKINNING
+    Shader none;
+    EXPECT_REFUSED((none = RblLoadLitShader(desc), none.id != 0));     // raylib without GPU skinning
+    return;
+#endif
+    Shader skinned = RblLoadLitShader(desc);
+    ck(RblIsLitShaderValid(skinned), "skinned lit program failed to load");
+    SkinRig rig = skinRigLoad();
+    rig.model.materials[0].shader = skinned;
+    UpdateModelAnimation(rig.model, rig.anim, 1.0f);
+    EXPECT_QUIET(V(RblDrawModel(rig.model, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)), false);
+    Model m = rig.model; m.boneMatrices = NULL; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    m = rig.model; m.skeleton.boneCount = RBL_MAX_BONES + 1; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    m = rig.model; m.skeleton.boneCount = 0; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    Matrix bones[SKIN_BONES];
+    for (int b = 0; b < SKIN_BONES; b++)
+        for (int vi = 0; vi < 5; vi++)
+        {
+            memcpy(bones, rig.model.boneMatrices, sizeof(bones));
+            bones[b].m13 = badFloats[vi];
+            m = rig.model; m.boneMatrices = bones; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+        }
+    EXPECT_REFUSED(V(RblDrawMesh(rig.model.meshes[0], rig.model.materials[0], MatrixIdentity())));
+    Model cube = LoadModelFromMesh(GenMeshCube(1, 1, 1));
+    cube.materials[0].shader = skinned;
+    EXPECT_REFUSED(V(RblDrawModel(cube, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), rig.model.materials[0], billboard())));
+    // Inside a shadow pass: the skinned caster compiles on first use and the same refusals hold
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f))
+    {
+        EXPECT_QUIET(V(RblDrawModel(rig.model, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)), false);
+        m = rig.model; m.skeleton.boneCount = RBL_MAX_BONES + 1; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+        m = rig.model; m.boneMatrices = bones; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+        RblEndShadowMap(&map);
+    }
+    else ck(false, "shadow pass refused");
+    ck(rbl__state.casterIds[2] != 0, "no skinned caster after a skinned Model cast");
+    RblUnloadShadowMap(&map);
+    ck(rbl__state.casterIds[2] == 0, "the skinned caster outlived the last shadow map");
+    cube.materials[0].shader = (Shader){ 0 };
+    UnloadModel(cube);
+    rig.model.materials[0].shader = (Shader){ 0 };
+    skinRigUnload(&rig);
+    RblUnloadLitShader(&skinned);
 }
 
 // ---- cases: G-buffer ------------------------------------------------------------------------------
@@ -1063,6 +1123,7 @@ static const Case cases[] = {
     { "RblLightFeatures", "NULL, counts, types", c_light_features },
     { "RblSetScene", "counts, maps, fog, every float of scene and lights", c_set_scene },
     { "RblDrawModel RblDrawMesh", "bad models, transforms, materials, variants", c_draw_model_and_mesh },
+    { "RblDrawModel RblDrawMesh RblDrawBillboard", "skinned programs: bones NULL, counts, NaN bones, meshes without bone data, shadow pass", c_draw_skinned_model },
     { "RblLoadGBuffer", "every desc field out of range", c_gbuffer_load },
     { "RblIsGBufferValid RblGBufferBytesPerPixel RblResizeGBuffer RblUnloadGBuffer", "NULL, zero, sizes, stale, double", c_gbuffer_lifecycle },
     { "RblBeginGBuffer RblEndGBuffer RblDrawDeferredLights RblSetGBufferOutput RblResolveGBuffer", "imbalance, nesting, mismatched variants, bad arguments", c_gbuffer_passes },

@@ -87,6 +87,14 @@ static void test_shaders_every_lit_variant_compiles_and_links(void)
         desc.maxLights = lights[li];
         desc.material.normalEncoding = nm? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
         desc.instanced = inst;
+        if (inst && !rtGlsl3())
+        {
+            // ES 2 / GL 2.1 have no instancing: refused with one line, nothing compiled
+            warnings = 0;
+            Shader refused = RblLoadLitShader(desc);
+            RT_CHECK((refused.id == 0) && (warnings == 1), "instanced variant on a GLSL 1 context: id %u, %d log lines", refused.id, warnings);
+            continue;
+        }
         Shader s = RblLoadLitShader(desc);
         RT_CHECK(RblIsLitShaderValid(s), "variant lights=%d normalMap=%d instanced=%d failed", lights[li], nm, inst);
         RT_CHECK(s.id != 0 && s.locs != NULL, "variant lights=%d normalMap=%d instanced=%d came back empty", lights[li], nm, inst);

@@ -271,7 +271,7 @@ static void test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_ever
     ImageDrawCircle(&img, 32, 32, 14, BLANK);                // hole: radius 14/64 of the card = 0.44 world units
     Texture2D holed = LoadTextureFromImage(img);
     UnloadImage(img);
-    for (int path = 0; path < 3; path++)
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)     // instanced: GLSL 3 contexts
     {
         ShCard card = { { 0.0f, 0.0f, 1.0f }, 2.0f, path };
         Image out = shRender(&s, shCardCasters, &card, holed, false);
@@ -299,7 +299,7 @@ static void test_shadows_no_acne_on_a_floor_lit_at_up_to_80_degrees(void)
         s.filter = f;
         ShSetup ref = s; ref.noShadow = true;
         Image base = shRender(&ref, NULL, NULL, white, false), img = shRender(&s, shFloorCaster, NULL, white, false);
-        for (int deferred = 0; deferred < 2; deferred++)
+        for (int deferred = 0; deferred < (rtGlsl3()? 2 : 1); deferred++)
         {
             Image cmp = deferred? shRender(&s, shFloorCaster, NULL, white, true) : img;
             int worst = 0, acne = 0;
@@ -407,7 +407,7 @@ static void test_shadows_axis_locked_billboard_casts_under_a_light_straight_abov
     Image base = shRender(&ref, NULL, NULL, white, false);
     float pixel = SH_VIEW/SH_TARGET;
     double expected = 1.0*2.0*sin(30.0*PI/180.0)/(pixel*pixel);      // width x height x sin(minimum angle), in pixels
-    for (int path = 0; path < 2; path++)
+    for (int path = 0; path < (rtGlsl3()? 2 : 1); path++)     // instanced: GLSL 3 contexts
     {
         ShTree tree = { path };
         Image img = shRender(&s, shTreeCaster, &tree, white, false);
@@ -567,14 +567,8 @@ static bool shSameColor(Color a, Color b) { return (a.r == b.r) && (a.g == b.g) 
 // Texels of a map's depth below 1 (something drawn into it since its pass cleared it); -1 when unreadable
 static int shMapTexelsWritten(const RblShadowMap *map)
 {
-    void (*readPixels)(int, int, int, int, unsigned int, unsigned int, void *) = NULL;
-    void *proc = rtGlProc("glReadPixels");
     float *d = (float *)malloc((size_t)map->size*map->size*sizeof(float));
-    if ((proc == NULL) || (d == NULL)) { free(d); return -1; }
-    memcpy(&readPixels, &proc, sizeof(proc));
-    rlEnableFramebuffer(map->state->id);
-    readPixels(0, 0, map->size, map->size, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, d);
-    rlDisableFramebuffer();
+    if ((d == NULL) || !rtReadDepth(map->state->id, map->size, map->size, d)) { free(d); return -1; }
     int n = 0;
     for (int i = 0; i < map->size*map->size; i++) n += (d[i] < 1.0f);
     free(d);
@@ -797,11 +791,11 @@ static void test_shadows_hard_cases_stay_finite(void)
         RblDrawBillboard(s.camera, cm, litPlane());
         EndMode3D();
         EndTextureMode();
-        float *px = (float *)rlReadTexturePixels(rt.texture.id, LIT_TARGET, LIT_TARGET, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+        float *px = rtReadFloatPixels(rt.texture.id, LIT_TARGET, LIT_TARGET);
         int bad = 0;
         for (int k = 0; k < LIT_TARGET*LIT_TARGET*4; k++) if (!rtFinite(px[k]) || (px[k] < 0.0f)) bad++;
         RT_CHECK(bad == 0, "%s: %d non-finite or negative values", cases[i].what, bad);
-        RL_FREE(px);
+        free(px);
         litTargetUnload(rt);
         MemFree(cm.maps);
         shClearScene();
@@ -866,13 +860,17 @@ static void test_shadows_pass_restores_the_callers_target_and_matrices(void)
     Matrix view = rlGetMatrixModelview(), proj = rlGetMatrixProjection();
     RT_CHECK(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 2.0f), "pass refused");
     RblEndShadowMap(&map);
-    RT_CHECK(rlGetActiveFramebuffer() == rt.id, "framebuffer %u after the pass, expected the render texture's %u", rlGetActiveFramebuffer(), rt.id);
+    // raylib 6.0's rlGetActiveFramebuffer always answers 0 on ES 2 builds: the pass cannot know the
+    // render texture it interrupts and restores the default framebuffer (README, LIMITATIONS)
+    bool knowsTarget = (rlGetVersion() != RL_OPENGL_ES_20);
+    if (!knowsTarget) printf("    ES 2: rlgl cannot report the bound framebuffer; restoring a render texture is not checked here\n");
+    RT_CHECK(!knowsTarget || (rlGetActiveFramebuffer() == rt.id), "framebuffer %u after the pass, expected the render texture's %u", rlGetActiveFramebuffer(), rt.id);
     Matrix v2 = rlGetMatrixModelview(), p2 = rlGetMatrixProjection();
     RT_CHECK(memcmp(&v2, &view, sizeof(Matrix)) == 0 && memcmp(&p2, &proj, sizeof(Matrix)) == 0, "matrices not restored");
     DrawRectangle(0, 0, 32, 16, RED);                   // must land in the render texture, all of it
     EndTextureMode();
     Image img = rtReadTarget(rt);
-    RT_CHECK(rtPixel(img, 0, 0).r == 230 && rtPixel(img, 31, 15).r == 230, "a draw after the pass missed the render texture (%d, %d)", rtPixel(img, 0, 0).r, rtPixel(img, 31, 15).r);
+    RT_CHECK(!knowsTarget || (rtPixel(img, 0, 0).r == 230 && rtPixel(img, 31, 15).r == 230), "a draw after the pass missed the render texture (%d, %d)", rtPixel(img, 0, 0).r, rtPixel(img, 31, 15).r);
     UnloadImage(img);
     UnloadRenderTexture(rt);
     RblUnloadShadowMap(&map);

@@ -274,6 +274,7 @@ static void test_view_orthographic_plane_on_every_path_matches_the_double_refere
             for (int path = 0; path < 4; path++)
                 for (int mi = 0; mi < 5; mi++)
                     for (int li = 0; li < 3; li++)
+                    if ((path < 2) || rtGlsl3())        // instanced and deferred: GLSL 3 contexts
                     {
                         // Deferred rows: moderate highlights (12+12-bit normals, RGBA16F accumulation; the
                         // perspective control of a tight metal highlight is 3/255 off there too) and no
@@ -306,7 +307,7 @@ static void test_view_orthographic_fog_runs_along_the_view_axis(void)
     const RblFog fogs[3] = { { RBL_FOG_LINEAR, { 120, 130, 150, 255 }, 2.0f, 9.0f, 0.0f }, { RBL_FOG_EXP, { 120, 130, 150, 255 }, 0.0f, 0.0f, 0.2f },
                              { RBL_FOG_EXP2, { 120, 130, 150, 255 }, 0.0f, 0.0f, 0.15f } };
     for (int proj = 0; proj < 2; proj++)
-        for (int deferred = 0; deferred < 2; deferred++)
+        for (int deferred = 0; deferred < (rtGlsl3()? 2 : 1); deferred++)
             for (int f = 0; f < 3; f++)
             {
                 LitScene sc = litScene(RBL_BRDF_GGX);
@@ -343,6 +344,7 @@ static void test_view_orthographic_sphere_model_matches_the_double_reference(voi
             for (int mi = 0; mi < 5; mi++)
             {
                 if ((path == 2) && materials[mi].forwardOnly) continue;     // 12+12-bit G-buffer normals: moderate highlights only
+                if ((path == 2) && !rtGlsl3()) continue;                    // no G-buffer on ES 2 / GL 2.1
                 ViewSphere vs;
                 memset(&vs, 0, sizeof(vs));
                 vs.camera = proj? ortho : viewPerspective(ortho);
@@ -387,7 +389,7 @@ static void test_view_card_seen_from_behind_is_lit_on_the_side_the_viewer_sees(v
     const char *pathNames[5] = { "immediate", "batched", "instanced", "deferred immediate", "deferred instanced" };
     double worst[2] = { 0.0, 0.0 }, worstMean[2] = { 0.0, 0.0 };
     int uncovered = 0;
-    for (int path = 0; path < 5; path++)
+    for (int path = 0; path < (rtGlsl3()? 5 : 2); path++)     // instanced and deferred paths: GLSL 3 contexts
         for (int proj = 0; proj < 2; proj++)
             for (int behind = 0; behind < 2; behind++)
                 for (int far = 0; far < 2; far++)
@@ -446,7 +448,7 @@ static void test_view_card_from_behind_far_light_adds_nothing_and_tilt_keeps_its
         { 4.0f, 2, { -1.0f, 0.0f, -0.5f }, true },                          // 5 front, from +X
         { 4.0f, 2, { 1.0f, 0.0f, -0.5f }, true },                           // 6 front, from -X
     };
-    for (int deferred = 0; deferred < 2; deferred++)
+    for (int deferred = 0; deferred < (rtGlsl3()? 2 : 1); deferred++)
     {
         double level[7];
         for (int k = 0; k < 7; k++)
@@ -506,7 +508,7 @@ static void test_view_culling_is_off_only_for_draws_that_show_a_back_and_restore
     RblBatch batch = RblLoadBatch(4);
     RblInstanceBuffer ib = RblLoadInstanceBuffer(4);
     const char *pathNames[3] = { "immediate", "batched", "instanced" };
-    for (int path = 0; path < 3; path++)
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)     // instanced: GLSL 3 contexts
         for (int behind = 0; behind < 2; behind++)
             for (int callerOn = 0; callerOn < 2; callerOn++)
             {
@@ -646,7 +648,7 @@ static Image viewRenderShadowedCard(const LitScene *sc, bool deferred, bool *ok)
 static void test_view_card_seen_from_behind_receives_shadows_on_its_lit_side(void)
 {
     const Vector3 sunDirection = { 0.3f, 0.2f, 1.0f };         // travels toward +Z: comes from the -Z side
-    for (int deferred = 0; deferred < 2; deferred++)
+    for (int deferred = 0; deferred < (rtGlsl3()? 2 : 1); deferred++)     // G-buffer: GLSL 3 contexts
         for (int proj = 0; proj < 2; proj++)
         {
             LitScene sc = litScene(RBL_BRDF_LAMBERT);
@@ -696,7 +698,7 @@ static void test_view_open_model_seen_from_below_is_lit_on_the_side_seen(void)
 {
     Mesh mesh = GenMeshPlane(6.0f, 6.0f, 1, 1);
     Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
-    for (int deferred = 0; deferred < 2; deferred++)
+    for (int deferred = 0; deferred < (rtGlsl3()? 2 : 1); deferred++)     // G-buffer: GLSL 3 contexts
     {
         double level[3];
         for (int k = 0; k < 3; k++)        // ambient only, light above (far side), light below (viewer's side)

@@ -26,7 +26,8 @@ typedef struct {
     void (*Disable)(GLu);
     void (*BeginTransformFeedback)(GLu);
     void (*EndTransformFeedback)(void);
-    void (*GetBufferSubData)(GLu, ptrdiff_t, ptrdiff_t, void *);
+    void *(*MapBufferRange)(GLu, ptrdiff_t, ptrdiff_t, GLu);
+    unsigned char (*UnmapBuffer)(GLu);
     void (*DeleteBuffers)(int, const GLu *);
     void (*DeleteProgram)(GLu);
     void (*DeleteShader)(GLu);
@@ -37,7 +38,7 @@ static bool tfLoad(TfGl *gl)
     static const char *names[] = { "glCreateShader", "glShaderSource", "glCompileShader", "glGetShaderiv", "glGetShaderInfoLog",
         "glCreateProgram", "glAttachShader", "glTransformFeedbackVaryings", "glLinkProgram", "glGetProgramiv", "glGenBuffers",
         "glBindBuffer", "glBufferData", "glBindBufferBase", "glEnable", "glDisable", "glBeginTransformFeedback",
-        "glEndTransformFeedback", "glGetBufferSubData", "glDeleteBuffers", "glDeleteProgram", "glDeleteShader" };
+        "glEndTransformFeedback", "glMapBufferRange", "glUnmapBuffer", "glDeleteBuffers", "glDeleteProgram", "glDeleteShader" };
     void **slots = (void **)gl;     // TfGl is a sequence of pointers in the order of names[]
     for (size_t i = 0; i < sizeof(names)/sizeof(names[0]); i++)
     {
@@ -50,25 +51,39 @@ static bool tfLoad(TfGl *gl)
 
 #define TF_FLOATS 12    // fragPosition (3), fragTexCoord (2), fragNormal (3), fragTangent (4)
 
-// Program of the instanced vertex stage alone, capturing its outputs
-static GLu tfProgram(TfGl *gl)
+static GLu tfShader(TfGl *gl, GLu type, const char *src)
 {
-    char *vs = rbl__joinStage("#version 330\n#define RBL_LIGHTS 1\n", rbl__pass_lit_instanced_vs);
-    GLu sh = gl->CreateShader(0x8B31 /* GL_VERTEX_SHADER */);
-    const char *src = vs;
+    GLu sh = gl->CreateShader(type);
     gl->ShaderSource(sh, 1, &src, NULL);
     gl->CompileShader(sh);
     int ok = 0;
     gl->GetShaderiv(sh, 0x8B81 /* GL_COMPILE_STATUS */, &ok);
     if (!ok) { char log[1024]; gl->GetShaderInfoLog(sh, sizeof(log), NULL, log); printf("    %s\n", log); }
+    return sh;
+}
+
+// Program of the instanced vertex stage, capturing its outputs, in the context's dialect (as the
+// header's loader writes it). ES 3.0 links no program without a fragment stage: an empty one.
+static GLu tfProgram(TfGl *gl)
+{
+    bool es = (rbl__glsl() == 300);
+    char prologue[256];
+    rbl__stagePrologue(es? 300 : 330, true, "#define RBL_LIGHTS 1\n", prologue, sizeof(prologue));
+    char *vs = rbl__joinStage(prologue, rbl__pass_lit_instanced_vs);
+    GLu vsh = tfShader(gl, 0x8B31 /* GL_VERTEX_SHADER */, vs);
     RBL_FREE(vs);
+    GLu fsh = tfShader(gl, 0x8B30 /* GL_FRAGMENT_SHADER */, es? "#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(0.0); }\n"
+                                                               : "#version 330\nout vec4 c;\nvoid main() { c = vec4(0.0); }\n");
     GLu prog = gl->CreateProgram();
-    gl->AttachShader(prog, sh);
+    gl->AttachShader(prog, vsh);
+    gl->AttachShader(prog, fsh);
     const char *varyings[] = { "fragPosition", "fragTexCoord", "fragNormal", "fragTangent" };
     gl->TransformFeedbackVaryings(prog, 4, varyings, 0x8C8C /* GL_INTERLEAVED_ATTRIBS */);
     gl->LinkProgram(prog);
+    int ok = 0;
     gl->GetProgramiv(prog, 0x8B82 /* GL_LINK_STATUS */, &ok);
-    gl->DeleteShader(sh);
+    gl->DeleteShader(vsh);
+    gl->DeleteShader(fsh);
     if (!ok) { gl->DeleteProgram(prog); return 0; }
     return prog;
 }
@@ -112,7 +127,11 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
     UnloadRenderTexture(scratch);
 
     float *out = (float *)malloc(bytes);
-    gl->GetBufferSubData(0x8C8E, 0, (ptrdiff_t)bytes, out);
+    // Mapped, not glGetBufferSubData: ES 3.0 has no buffer read-back call
+    const void *mapped = gl->MapBufferRange(0x8C8E, 0, (ptrdiff_t)bytes, 0x0001 /* GL_MAP_READ_BIT */);
+    if ((mapped != NULL) && (out != NULL)) memcpy(out, mapped, bytes);
+    else if (out != NULL) for (size_t i = 0; i < bytes/sizeof(float); i++) out[i] = NAN;
+    if (mapped != NULL) gl->UnmapBuffer(0x8C8E);
     gl->DeleteBuffers(1, &tfb);
     return out;
 }

@@ -28,6 +28,10 @@ echo "== bench_shadows"
 BENCH_CSV="$csv" "$BUILD/bench/bench_shadows"
 
 echo
+echo "== bench_skinning"
+BENCH_CSV="$csv" "$BUILD/bench/bench_skinning"
+
+echo
 echo "== bench_api"
 BENCH_CSV="$csv" "$BUILD/bench/bench_api"
 

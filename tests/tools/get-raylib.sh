@@ -4,7 +4,10 @@
 # Order: (1) system raylib via pkg-config, (2) RAYLIB_SRC=<raylib source tree>,
 # (3) Debian's source package `raylib` (unstable) fetched with `apt-get source` through a
 # private apt configuration that reuses this machine's own Debian URI (system sources untouched).
-# (2) and (3) build libraylib.a once (PLATFORM_DESKTOP_RGFW) into $BUILD/raylib and reuse it.
+# (2) and (3) build libraylib.a once (PLATFORM_DESKTOP_RGFW, SUPPORT_GPU_SKINNING=1 for the skinned
+# lit programs) into $BUILD/raylib and reuse it; the stamp records the source and the flags, so a
+# build made with other flags is rebuilt. Their RAYLIB_CFLAGS pass SUPPORT_GPU_SKINNING=1 on to the
+# header (a pkg-config raylib says nothing: the header assumes no GPU skinning).
 set -eu
 BUILD=${BUILD:-build}
 mkdir -p "$BUILD"
@@ -22,18 +25,18 @@ fi
 tried="$tried\n  - pkg-config 'raylib >= 6.0': $(pkg-config --modversion raylib 2>/dev/null || echo 'not found')"
 
 build_from() { # $1 = source tree root (holds src/raylib.h)
-  local src=$1 out=$BUILD/raylib
-  if [ -f "$out/libraylib.a" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$src" ]; then :; else
-    log "building libraylib.a from $src (PLATFORM_DESKTOP_RGFW)"
+  local src=$1 out=$BUILD/raylib flags="-DSUPPORT_GPU_SKINNING=1"
+  if [ -f "$out/libraylib.a" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$src $flags" ]; then :; else
+    log "building libraylib.a from $src (PLATFORM_DESKTOP_RGFW, $flags)"
     rm -rf "$out"; mkdir -p "$out/obj"
-    make -s -C "$src/src" PLATFORM=PLATFORM_DESKTOP_RGFW RAYLIB_RELEASE_PATH="$out" \
+    make -s -C "$src/src" PLATFORM=PLATFORM_DESKTOP_RGFW RAYLIB_RELEASE_PATH="$out" CUSTOM_CFLAGS="$flags" \
          RAYLIB_BUILD_MODE=RELEASE -j"$(nproc)" >"$out/build.log" 2>&1 \
       || { log "raylib build failed, see $out/build.log"; tail -20 "$out/build.log" >&2; return 1; }
     make -s -C "$src/src" clean >/dev/null 2>&1 || true
     cp "$src/src/raylib.h" "$src/src/rlgl.h" "$src/src/raymath.h" "$out/"
-    echo "$src" > "$out/stamp"
+    echo "$src $flags" > "$out/stamp"
   fi
-  echo "RAYLIB_CFLAGS=-I$out"
+  echo "RAYLIB_CFLAGS=-I$out $flags"
   echo "RAYLIB_LIBS=$out/libraylib.a $syslibs"
 }
 
