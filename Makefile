@@ -185,7 +185,7 @@ clean-all:
 # (its -o page.html minifier crashes on Debian's node): the pages are tests/web/*.html.
 WEB_SHOWCASE := examples/billboards_lit_showcase.c
 WEBCC        := NODE_PATH=/usr/share/nodejs emcc
-WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests
+WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests -DSUPPORT_GPU_SKINNING=1
 WEB_LDFLAGS  := -sALLOW_MEMORY_GROWTH=1 -sTOTAL_STACK=16777216 -sINITIAL_MEMORY=67108864
 WEB_ES3      := $(BUILD)/web/raylib-es3/libraylib.web.a
 WEB_ES2      := $(BUILD)/web/raylib-es2/libraylib.web.a
@@ -194,9 +194,11 @@ web-deps:
 	@bash tests/tools/deps.sh web
 
 $(WEB_ES3): tests/tools/get-raylib-web.sh $(BUILD)/raylib.mk | web-deps
+	@rm -f $@
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib-web.sh es3
 
 $(WEB_ES2): tests/tools/get-raylib-web.sh $(BUILD)/raylib.mk | web-deps
+	@rm -f $@
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib-web.sh es2
 
 # The showcase page: WebGL2 build (showcase.js) and WebGL1 build (showcase-gl1.js); index.html loads

@@ -16,15 +16,16 @@ src=${RAYLIB_SRC:-}
 [ -n "$src" ] && [ -f "$src/src/raylib.h" ] || { log "no raylib source tree (make test fetches it into $BUILD/raylib-src)"; exit 1; }
 src=$(cd "$src" && pwd)
 out=$BUILD/web/raylib-$api
-if [ -f "$out/libraylib.web.a" ] && [ "$(cat "$out/stamp" 2>/dev/null)" = "$src $graphics" ]; then exit 0; fi
-log "building raylib for PLATFORM_WEB_RGFW $graphics from $src"
+flags="-DSUPPORT_GPU_SKINNING=1"     # as get-raylib.sh: the skinned-model tests need raylib's GPU bone path
+if [ -f "$out/libraylib.web.a" ] && [ "$(cat "$out/stamp" 2>/dev/null)" = "$src $graphics $flags" ]; then exit 0; fi
+log "building raylib for PLATFORM_WEB_RGFW $graphics ($flags) from $src"
 rm -rf "$out"; mkdir -p "$out"
 cp -r "$src/src" "$out/src"
 # Debian's emscripten finds its JS tools' modules only through NODE_PATH
 export NODE_PATH=${NODE_PATH:-/usr/share/nodejs}
-make -s -C "$out/src" PLATFORM=PLATFORM_WEB_RGFW GRAPHICS=$graphics RAYLIB_BUILD_MODE=RELEASE \
+make -s -C "$out/src" PLATFORM=PLATFORM_WEB_RGFW GRAPHICS=$graphics RAYLIB_BUILD_MODE=RELEASE CUSTOM_CFLAGS="$flags" \
      RAYLIB_RELEASE_PATH="$(cd "$out" && pwd)" RAYLIB_MODULE_AUDIO=FALSE -j2 >"$out/build.log" 2>&1 \
   || { log "raylib web build failed, see $out/build.log"; tail -20 "$out/build.log" >&2; exit 1; }
 cp "$out/src/raylib.h" "$out/src/rlgl.h" "$out/src/raymath.h" "$out/"
 rm -rf "$out/src"
-echo "$src $graphics" > "$out/stamp"
+echo "$src $graphics $flags" > "$out/stamp"

@@ -14,7 +14,10 @@ import http.server, os, re, shutil, socketserver, subprocess, sys, tempfile, thr
 
 CHROMIUM_FLAGS = ['--headless', '--no-sandbox', '--enable-unsafe-swiftshader', '--use-angle=swiftshader',
                   '--ignore-gpu-blocklist', '--disable-dev-shm-usage', '--no-first-run', '--no-default-browser-check',
-                  '--disable-background-networking', '--disable-extensions', '--mute-audio']
+                  '--disable-background-networking', '--disable-extensions', '--mute-audio',
+                  '--enable-logging=stderr', '--v=0']    # the page's console lands in chromium.log
+# WEB_CHROMIUM_FLAGS adds flags, e.g. --disable-webgl2 to see the page's WebGL1 fallback
+CHROMIUM_FLAGS += os.environ.get('WEB_CHROMIUM_FLAGS', '').split()
 TIME_LIMIT = float(os.environ.get('WEB_TEST_TIMEOUT', '900'))
 SUMMARY = re.compile(r'^web: (\d+) passed, (\d+) failed$')
 
@@ -104,7 +107,8 @@ def run_shot(directory, out, width, height, ms):
     cmd = [chromium()] + CHROMIUM_FLAGS + ['--user-data-dir=' + profile, '--hide-scrollbars',
                                            '--window-size=%d,%d' % (width, height), '--virtual-time-budget=%d' % ms,
                                            '--screenshot=' + os.path.abspath(out), 'http://127.0.0.1:%d/index.html' % port]
-    rc = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=300).returncode
+    with open(os.path.join(directory, 'chromium-shot.log'), 'w') as log:
+        rc = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT, timeout=300).returncode
     server.shutdown()
     shutil.rmtree(profile, ignore_errors=True)
     if rc != 0 or not os.path.exists(out):
