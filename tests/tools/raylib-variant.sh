@@ -18,7 +18,7 @@ esac
 out=$BUILD/raylib-$variant
 src=""
 if [ -n "${RAYLIB_SRC:-}" ]; then src=$RAYLIB_SRC
-elif [ -f "$BUILD/raylib/stamp" ]; then src=$(cat "$BUILD/raylib/stamp")
+elif [ -f "$BUILD/raylib/stamp" ]; then src=$(sed "s/ -D.*$//" "$BUILD/raylib/stamp")   # the stamp: source, then build flags
 else src=$(ls -d "$BUILD"/raylib-src/raylib-*/ 2>/dev/null | head -1 || true); fi
 src=${src%/}
 if [ -z "$src" ] || [ ! -f "$src/src/raylib.h" ]; then
