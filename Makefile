@@ -167,7 +167,23 @@ $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_AP
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -DBENCH_API_PART=2 -c tests/bench/bench_api.c -o $(@D)/bench_api_deferred.o
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -I$(@D) -DBENCH_API_GL tests/bench/bench_api.c $(@D)/bench_api_showcase.o $(@D)/bench_api_deferred.o tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
+# Suite `platforms`: one binary per graphics API (the desktop raylib, then the variants), each run on
+# its strict context by tests/bench/run.sh
+PF_DEPS := tests/bench/bench_platforms.c tests/bench/bench.h examples/billboards_lit_showcase.c $(HARNESS) $(HEADER)
+$(BUILD)/bench/bench_platforms_egl: $(PF_DEPS) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+$(BUILD)/bench/bench_platforms_gles3: $(PF_DEPS) $(BUILD)/raylib-es3/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es3 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+$(BUILD)/bench/bench_platforms_gles2: $(PF_DEPS) $(BUILD)/raylib-es2/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es2 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+$(BUILD)/bench/bench_platforms_gl21: $(PF_DEPS) $(BUILD)/raylib-gl21/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-gl21 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+
+bench: $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

@@ -5846,7 +5846,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     }
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (MRT / RGBA16F / depth texture unavailable?): render forward instead", width, height);
+        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (4 render targets, an RGBA16F target (ES 3: EXT_color_buffer_float), a depth texture): render forward instead", width, height);
         rbl__unloadTargets(g);
         return false;
     }
