@@ -86,15 +86,15 @@ $(BUILD)/raylib-%/libraylib.a: tests/tools/raylib-variant.sh $(BUILD)/raylib.mk
 
 $(BUILD)/tests/test_gpu_gles3: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es3/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es3 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es3 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
 
 $(BUILD)/tests/test_gpu_gles2: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es2/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
 
 $(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-gl21/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
 
 # Every stage as the loader splices it, in every dialect, for glslangValidator (tests/run.sh)
 $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/raylib.mk
@@ -175,13 +175,13 @@ $(BUILD)/bench/bench_platforms_egl: $(PF_DEPS) $(BUILD)/raylib.mk
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 $(BUILD)/bench/bench_platforms_gles3: $(PF_DEPS) $(BUILD)/raylib-es3/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es3 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es3 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
 $(BUILD)/bench/bench_platforms_gles2: $(PF_DEPS) $(BUILD)/raylib-es2/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es2 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es2 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
 $(BUILD)/bench/bench_platforms_gl21: $(PF_DEPS) $(BUILD)/raylib-gl21/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-gl21 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
 
 bench: $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh

@@ -1109,6 +1109,7 @@ typedef struct rbl__State {
     unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
+    Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
     int liveCount;
     int liveCapacity;
@@ -5592,6 +5593,22 @@ static const char *rbl__bonesProblem(const Model *model)
     return NULL;
 }
 
+// A Model's bone matrices into a mat4 array uniform. raylib 6.0's rlSetUniformMatrices transposes
+// on desktop GL and not on ES/WebGL: ES gets the matrices transposed first, so both arrive as set
+static void rbl__uploadBones(int loc, const Model *bones)
+{
+    int n = bones->skeleton.boneCount;
+    if ((rbl__glsl() != 300) && (rbl__glsl() != 100)) { rlSetUniformMatrices(loc, bones->boneMatrices, n); return; }
+    for (int b = 0; b < n; b++)
+    {
+        const Matrix *m = &bones->boneMatrices[b];
+        // Positional: Matrix declares m0 m4 m8 m12 m1 ..., so field by field this is the transpose
+        Matrix t = { m->m0, m->m1, m->m2, m->m3, m->m4, m->m5, m->m6, m->m7, m->m8, m->m9, m->m10, m->m11, m->m12, m->m13, m->m14, m->m15 };
+        rbl__state.boneScratch[b] = t;
+    }
+    rlSetUniformMatrices(loc, rbl__state.boneScratch, n);
+}
+
 // DrawMesh with the lit values of a checked material; bones: the Model's matrices for a skinned draw
 static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int path, const Model *bones)
 {
@@ -5604,12 +5621,12 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
         rbl__applyMaterialValues(p, &material);
         // As raylib's DrawModel does for its own skinning shaders (DrawMesh alone uploads no bones)
         int loc = p->shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS];
-        if (p->key.desc.skinning && (path == RBL__PATH_SKINNED) && (loc != -1)) rlSetUniformMatrices(loc, bones->boneMatrices, bones->skeleton.boneCount);
+        if (p->key.desc.skinning && (path == RBL__PATH_SKINNED) && (loc != -1)) rbl__uploadBones(loc, bones);
     }
     else if ((path == RBL__PATH_SKINNED) && (material.shader.locs != NULL) && (material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS] != -1))
     {
         rlEnableShader(material.shader.id);     // the user's own skinning shader, as raylib's DrawModel feeds it
-        rlSetUniformMatrices(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones->boneMatrices, bones->skeleton.boneCount);
+        rbl__uploadBones(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones);
     }
     DrawMesh(mesh, material, transform);
 }
