@@ -564,7 +564,16 @@ typedef struct RblCameraFrame {
 } RblCameraFrame;
 
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
+// How RblEndBatch orders and passes a batch's billboards (RblBatch.sort)
+typedef enum {
+    RBL_SORT_NONE = 0,              // Submission order (opaque and alpha-tested billboards)
+    RBL_SORT_BACK_TO_FRONT,         // Farthest quad centre first along the view axis (blended billboards)
+    RBL_SORT_HYBRID                 // Solid texels first (depth tested and written), then the fringe back to front without depth writes
+} RblSortMode;
+
 typedef struct RblBatch {
+    int sort;                       // RblSortMode, read by RblEndBatch (0 = submission order)
+    float solidAlpha;               // RBL_SORT_HYBRID: alpha from which a texel is solid (0 = 1.0, fully opaque only)
     int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
     int count;                      // Billboards added since RblBeginBatch()
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
@@ -589,6 +598,7 @@ typedef struct RblInstancedDesc {
     Vector3 up;                     // As RblBillboard.up
     Vector3 axis;                   // As RblBillboard.axis
     float roundness;                // As RblBillboard.roundness
+    int sort;                       // RblSortMode by each instance's pivot depth (0 = the array's order); solid alpha 1
 } RblInstancedDesc;
 
 // GPU instance buffer plus a staging copy (validated)
@@ -971,7 +981,7 @@ typedef struct rbl__ProgramKey {
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
 typedef struct rbl__MaterialValues {
     Color specularColor, emissiveColor;
-    float specular, shininess, roughness, metalness, emissive, alphaCutoff;
+    float specular, shininess, roughness, metalness, emissive, alphaCutoff, alphaCeiling;
 } rbl__MaterialValues;
 
 // One entry of the program registry
@@ -991,6 +1001,13 @@ typedef struct rbl__Handle {
 } rbl__Handle;
 
 // A run of billboards sharing one material inside a batch
+// A billboard's place in a sorted batch
+typedef struct rbl__SortKey {
+    float depth;                    // Along the view axis (larger = farther)
+    int index;                      // Billboard in submission order
+    int run;                        // Its material run
+} rbl__SortKey;
+
 typedef struct rbl__BatchRun {
     Material material;              // Material the run draws with
     int first;                      // First billboard
@@ -1010,6 +1027,9 @@ typedef struct rbl__FrameCache {
 // A batch's own data (RblBatch.state); capacity, count and skipped are mirrored into the RblBatch
 typedef struct rbl__BatchState {
     RblVertex *vertices;            // 4 per billboard
+    RblVertex *sorted;              // Sorted copy of vertices (allocated at the first sorted RblEndBatch, grown with capacity)
+    rbl__SortKey *keys;             // Per billboard: view depth, index, run (same lifetime as sorted)
+    int sortCapacity;               // Billboards sorted and keys hold
     int capacity;                   // Billboards reserved (CPU and GPU)
     int count;                      // Billboards added since RblBeginBatch()
     rbl__BatchRun *runs;              // Material runs
@@ -1030,6 +1050,9 @@ typedef struct rbl__BatchState {
 // An instance buffer's own data (RblInstanceBuffer.state)
 typedef struct rbl__InstanceBufferState {
     RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
+    RblInstance *sorted;            // Sorted copy (allocated at the first sorted draw, grown with capacity)
+    rbl__SortKey *keys;             // Sort keys (same lifetime as sorted)
+    int sortCapacity;               // Instances sorted and keys hold
     int capacity;                   // Instances reserved (CPU and GPU)
     unsigned int vaoId;             // Vertex array (instance attributes only)
     unsigned int vboId;             // Instance buffer
@@ -1106,6 +1129,7 @@ typedef struct rbl__State {
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
+    Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
@@ -2194,7 +2218,7 @@ static const char *const rbl__shader_material[] = {
     "uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness\n",
     "#endif\n",
     "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
-    "uniform float rblAlphaCutoff;\n",
+    "uniform vec2 rblAlphaCutoff;   // kept from x (the material's cutoff) up to, not including, y (a hybrid batch's solid alpha; 2 otherwise)\n",
     "\n",
     "// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU\n",
     "// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)\n",
@@ -2225,7 +2249,7 @@ static const char *const rbl__shader_material[] = {
     "{\n",
     "    vec4 texel = texture(texture0, fragTexCoord);\n",
     "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
-    "    if (albedo.a < rblAlphaCutoff) discard;\n",
+    "    if ((albedo.a < rblAlphaCutoff.x) || (albedo.a >= rblAlphaCutoff.y)) discard;\n",
     "\n",
     "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
     "    // Two-sided: a back face (a card seen from behind, an open mesh from inside) is shaded on the\n",
@@ -3182,6 +3206,8 @@ static void rbl__freeBatchState(rbl__BatchState *b)
 {
     rbl__unloadBatchGpu(b);
     RBL_FREE(b->vertices);
+    RBL_FREE(b->sorted);
+    RBL_FREE(b->keys);
     RBL_FREE(b->runs);
     RBL_FREE(b);
 }
@@ -3404,11 +3430,88 @@ static void rbl__endBatch(RblBatch *batch, const char *fn);
 
 void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
 
+// Sort keys: farther first; equal depths keep submission order (a total order: any submission order
+// of distinct depths draws alike)
+static int rbl__compareKeys(const void *a, const void *b)
+{
+    const rbl__SortKey *p = (const rbl__SortKey *)a, *q = (const rbl__SortKey *)b;
+    if (p->depth != q->depth) return (p->depth > q->depth)? -1 : 1;
+    return (p->index > q->index) - (p->index < q->index);
+}
+
+// Orders the batch's quads back to front into batch->sorted (keys: their view depths, indices, runs);
+// false when the scratch cannot be allocated (the caller logs and draws in submission order)
+static bool rbl__sortBatch(rbl__BatchState *batch)
+{
+    if (batch->sortCapacity < batch->capacity)
+    {
+        RblVertex *sorted = (RblVertex *)RBL_MALLOC((size_t)batch->capacity*4*sizeof(RblVertex));
+        rbl__SortKey *keys = (rbl__SortKey *)RBL_MALLOC((size_t)batch->capacity*sizeof(rbl__SortKey));
+        if ((sorted == NULL) || (keys == NULL)) { RBL_FREE(sorted); RBL_FREE(keys); return false; }
+        RBL_FREE(batch->sorted); RBL_FREE(batch->keys);
+        batch->sorted = sorted; batch->keys = keys;
+        batch->sortCapacity = batch->capacity;
+    }
+    // Depth of the quad's centre along the view direction (-back): the same axis for both projections
+    Vector3 back = batch->view.back, eye = batch->view.eye;
+    for (int r = 0; r < batch->runCount; r++)
+        for (int i = batch->runs[r].first; i < batch->runs[r].first + batch->runs[r].count; i++)
+        {
+            const RblVertex *v = batch->vertices + (size_t)i*4;
+            Vector3 c = { 0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
+                          0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
+                          0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]) };
+            batch->keys[i].depth = -rbl__dot(rbl__sub(c, eye), back);
+            batch->keys[i].index = i;
+            batch->keys[i].run = r;
+        }
+    qsort(batch->keys, (size_t)batch->count, sizeof(rbl__SortKey), rbl__compareKeys);
+    for (int i = 0; i < batch->count; i++) memcpy(batch->sorted + (size_t)i*4, batch->vertices + (size_t)batch->keys[i].index*4, 4*sizeof(RblVertex));
+    return true;
+}
+
+// Draws quads [first, first + count) of the bound vertex buffer with run r's material
+static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, int count, const char *fn, unsigned int *bound)
+{
+    MaterialMap casterMaps[RBL__CASTER_MAPS];
+    Material material = batch->runs[r].material;
+    rbl__Program *program = NULL;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) return;
+    *bound |= rbl__bindMaterial(&material);
+    if (program != NULL) rbl__applyMaterialValues(program, &material);
+    for (int q = 0; q < count; q += RBL__QUADS_PER_CHUNK)
+    {
+        int n = count - q;
+        if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
+        rbl__setVertexLayout((size_t)(first + q)*4*sizeof(RblVertex));
+        rlDrawVertexArrayElements(0, n*6, 0);
+    }
+}
+
+// One pass over the uploaded quads: the runs in order, or (sorted) each stretch of consecutive
+// sorted quads that share a run
+static void rbl__drawBatchPass(const rbl__BatchState *batch, bool sorted, const char *fn, unsigned int *bound)
+{
+    if (!sorted) { for (int r = 0; r < batch->runCount; r++) rbl__drawBatchQuads(batch, r, batch->runs[r].first, batch->runs[r].count, fn, bound); return; }
+    for (int i = 0; i < batch->count; )
+    {
+        int j = i + 1;
+        while ((j < batch->count) && (batch->keys[j].run == batch->keys[i].run)) j++;
+        rbl__drawBatchQuads(batch, batch->keys[i].run, i, j - i, fn, bound);
+        i = j;
+    }
+}
+
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
     if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return; }
     batch->begun = false;
+    if ((pub->sort < RBL_SORT_NONE) || (pub->sort > RBL_SORT_HYBRID) || !rbl__finite(pub->solidAlpha) || (pub->solidAlpha < 0.0f) || (pub->solidAlpha > 1.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: sort mode %i unknown or solidAlpha %g outside 0..1; %i billboards not drawn", fn, pub->sort, pub->solidAlpha, batch->count);
+        return;
+    }
     if (batch->count == 0) return;
     if (batch->capacity > batch->gpuCapacity)
     {
@@ -3424,6 +3527,14 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         }
         rbl__unloadBatchGpu(&old);
     }
+    // Order matters only where colour blends: shadow and G-buffer passes draw in submission order
+    int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : pub->sort;
+    if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: out of memory sorting %i billboards; drawn in submission order", fn, batch->count);
+        sort = RBL_SORT_NONE;
+    }
+    bool sorted = (sort != RBL_SORT_NONE);
 
     rlDrawRenderBatchActive();      // keep draw order with raylib's own pending geometry
     // Billboards seen from behind are drawn (two-sided, shaded on the side seen): culling goes off for
@@ -3432,26 +3543,23 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
-    rlUpdateVertexBuffer(batch->vboId, batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
+    rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
     unsigned int bound = 0;
-    for (int r = 0; r < batch->runCount; r++)
+    if (sort == RBL_SORT_HYBRID)
     {
-        const rbl__BatchRun *run = &batch->runs[r];
-        MaterialMap casterMaps[RBL__CASTER_MAPS];
-        Material material = run->material;
-        rbl__Program *program = NULL;
-        if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) continue;
-        bound |= rbl__bindMaterial(&material);
-        if (program != NULL) rbl__applyMaterialValues(program, &material);
-        for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
-        {
-            int n = run->count - q;
-            if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
-            rbl__setVertexLayout((size_t)(run->first + q)*4*sizeof(RblVertex));
-            rlDrawVertexArrayElements(0, n*6, 0);
-        }
+        // Solid texels as opaque geometry (depth written), then the fringe over everything behind it,
+        // back to front, depth tested but not written (depth writes end on: raylib's default)
+        float solid = (pub->solidAlpha == 0.0f)? 1.0f : pub->solidAlpha;
+        rbl__state.alphaBand.x = solid; rbl__state.alphaBand.y = 2.0f;
+        rbl__drawBatchPass(batch, true, fn, &bound);
+        rlDisableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = solid;
+        rbl__drawBatchPass(batch, true, fn, &bound);
+        rlEnableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
+    else rbl__drawBatchPass(batch, sorted, fn, &bound);
     rbl__unbindMaterial(bound);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -3524,6 +3632,8 @@ static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
     RBL_FREE(b->staging);
+    RBL_FREE(b->sorted);
+    RBL_FREE(b->keys);
     RBL_FREE(b);
 }
 
@@ -3611,6 +3721,31 @@ static bool rbl__instancesShowBack(const RblInstancedDesc *desc, const RblCamera
     return false;
 }
 
+// Instances ordered back to front by their pivots' depth along the view axis, in buffer->sorted;
+// NULL when the scratch cannot be allocated
+static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, Camera3D camera, const RblInstance *in, int n)
+{
+    if (buffer->sortCapacity < buffer->capacity)
+    {
+        RblInstance *sorted = (RblInstance *)RBL_MALLOC((size_t)buffer->capacity*sizeof(RblInstance));
+        rbl__SortKey *keys = (rbl__SortKey *)RBL_MALLOC((size_t)buffer->capacity*sizeof(rbl__SortKey));
+        if ((sorted == NULL) || (keys == NULL)) { RBL_FREE(sorted); RBL_FREE(keys); return NULL; }
+        RBL_FREE(buffer->sorted); RBL_FREE(buffer->keys);
+        buffer->sorted = sorted; buffer->keys = keys;
+        buffer->sortCapacity = buffer->capacity;
+    }
+    RblCameraFrame view = rbl__cameraFrame(camera);
+    for (int i = 0; i < n; i++)
+    {
+        buffer->keys[i].depth = -rbl__dot(rbl__sub(in[i].position, view.eye), view.back);
+        buffer->keys[i].index = i;
+        buffer->keys[i].run = 0;
+    }
+    qsort(buffer->keys, (size_t)n, sizeof(rbl__SortKey), rbl__compareKeys);
+    for (int i = 0; i < n; i++) buffer->sorted[i] = in[buffer->keys[i].index];
+    return buffer->sorted;
+}
+
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
@@ -3618,9 +3753,9 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness))
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID))
     {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i or NaN/Inf vectors)", desc.facing);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i or NaN/Inf vectors)", desc.facing, desc.sort);
         return 0;
     }
     rbl__Program *checked = NULL;
@@ -3675,6 +3810,14 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
     if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, "RblDrawInstanced", &program)) return 0;
+    // Back to front by pivot depth where colour blends (not in shadow or G-buffer passes)
+    int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : desc.sort;
+    if (sort != RBL_SORT_NONE)
+    {
+        const RblInstance *ordered = rbl__sortInstances(buffer, camera, upload, n);
+        if (ordered == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: out of memory sorting %i instances; drawn in array order", n); sort = RBL_SORT_NONE; }
+        else upload = ordered;
+    }
 
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
@@ -3701,7 +3844,20 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
-    rlDrawVertexArrayInstanced(0, 6, n);
+    if (sort == RBL_SORT_HYBRID)
+    {
+        // As a hybrid batch: opaque texels with depth writes, then the fringe without them
+        rbl__state.alphaBand.x = 1.0f; rbl__state.alphaBand.y = 2.0f;
+        rbl__applyMaterialValues(program, &material);
+        rlDrawVertexArrayInstanced(0, 6, n);
+        rlDisableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 1.0f;
+        rbl__applyMaterialValues(program, &material);
+        rlDrawVertexArrayInstanced(0, 6, n);
+        rlEnableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
+    }
+    else rlDrawVertexArrayInstanced(0, 6, n);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
@@ -5199,6 +5355,13 @@ static void rbl__materialValues(const rbl__Program *p, const Material *material,
     v->metalness = !rbl__finite(v->metalness)? 0.0f : ((v->metalness < 0.0f)? 0.0f : ((v->metalness > 1.0f)? 1.0f : v->metalness));
     v->emissive = (!rbl__finite(v->emissive) || (v->emissive == 0.0f))? 1.0f : ((v->emissive < 0.0f)? 0.0f : v->emissive);
     v->alphaCutoff = !rbl__finite(v->alphaCutoff)? 0.5f : ((v->alphaCutoff == 0.0f)? 0.5f : v->alphaCutoff);
+    v->alphaCeiling = 2.0f;         // no texel reaches it
+    if (rbl__state.alphaBand.y > 0.0f)
+    {
+        // A hybrid batch's pass: solid texels (at or above the solid alpha), or the fringe below it
+        if (rbl__state.alphaBand.x > 0.0f) v->alphaCutoff = rbl__state.alphaBand.x;
+        v->alphaCeiling = rbl__state.alphaBand.y;
+    }
     v->emissiveColor.a = 0;                         // only rgb matters
 }
 
@@ -5211,7 +5374,7 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     p->values = v;
     p->valuesValid = true;
     const int *loc = p->loc;
-    if (loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(loc[RBL__U_ALPHA_CUTOFF], &v.alphaCutoff, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_ALPHA_CUTOFF] != -1) { float band[2] = { v.alphaCutoff, v.alphaCeiling }; rlSetUniform(loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1); }
     if (loc[RBL__U_SPECULAR] != -1)
     {
         float s[4] = { rbl__colorToLinear(v.specularColor.r)*v.specular, rbl__colorToLinear(v.specularColor.g)*v.specular,
