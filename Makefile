@@ -81,19 +81,19 @@ test: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_ap
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
-$(BUILD)/showcase: examples/billboards_lit_showcase.c $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/showcase: examples/shaders_lit_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/billboards_lit_showcase.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/shaders_lit_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/showcase_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/deferred: examples/billboards_lit_deferred.c $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/deferred: examples/shaders_deferred_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/billboards_lit_deferred.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_deferred_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/deferred_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
@@ -130,7 +130,7 @@ $(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h te
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
 # pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
 BENCH_API_GLAD := $(abspath $(firstword $(wildcard $(RAYLIB_SRC)/src/external/glad.h $(BUILD)/raylib-src/*/src/external/glad.h)))
-BENCH_API_EXAMPLES := examples/billboards_lit_showcase.c examples/billboards_lit_deferred.c
+BENCH_API_EXAMPLES := examples/shaders_lit_billboards.c examples/shaders_deferred_billboards.c
 $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_API_EXAMPLES) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) -DBENCH_API_GEN tests/bench/bench_api.c -o $(@D)/bench_api_gen
