@@ -149,7 +149,8 @@ clean:
 clean-all:
 	rm -rf $(BUILD)
 
-# ---- README pictures (rendered headlessly, committed under examples/resources) -------------
+# ---- README pictures (rendered headlessly, committed under examples/resources) and the examples'
+# screenshots (examples/<name>.png, 800x450, as raylib's examples/<module>/<name>.png) ------------
 $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -159,3 +160,5 @@ pictures: $(BUILD)/pictures $(BUILD)/deferred_headless run
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png
+	@cp examples/resources/rbl_showcase.png examples/shaders_lit_billboards.png && echo "pictures: wrote examples/shaders_lit_billboards.png"
+	@cp examples/resources/rbl_deferred.png examples/shaders_deferred_billboards.png && echo "pictures: wrote examples/shaders_deferred_billboards.png"

@@ -325,6 +325,9 @@
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
+*       RBL_ZERO (defined by the header)
+*           Zero initialiser for any struct, in C99 and C++11 alike: `RblLitShaderDesc desc = RBL_ZERO;`
+*           (`{ 0 }` in C, `{}` in C++, where `{ 0 }` warns under -Wextra and designated fields need C++20).
 *       #define RBLAPI
 *           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
 *           __declspec(dllexport/dllimport) on Windows, as in raylib.
@@ -450,6 +453,13 @@
 //----------------------------------------------------------------------------------
 // Defines and Macros
 //----------------------------------------------------------------------------------
+// Zero initialiser valid in C99 and C++11 alike (`RblBillboard card = RBL_ZERO;`, then set fields):
+// C's universal `{ 0 }` draws -Wmissing-field-initializers in C++, whose `{}` is not C99
+#if defined(__cplusplus)
+    #define RBL_ZERO {}
+#else
+    #define RBL_ZERO { 0 }
+#endif
 #ifndef RBL_MAX_LIGHTS
     #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
 #endif
@@ -5469,7 +5479,7 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
     for (int r = 0; r <= RINGS; r++)
         for (int sl = 0; sl <= SLICES; sl++)
         {
-            double th = PI*r/RINGS, ph = 2.0*PI*sl/SLICES;
+            double th = PI*r/(double)RINGS, ph = 2.0*PI*sl/(double)SLICES;     // (double): C++20 deprecates enum-float arithmetic
             float *p = &v[(r*(SLICES + 1) + sl)*3];
             p[0] = (float)(sin(th)*cos(ph)); p[1] = (float)cos(th); p[2] = (float)(sin(th)*sin(ph));
         }
