@@ -143,7 +143,7 @@ bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/ben
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
-	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
 	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
 
 clean-all:

@@ -2,6 +2,7 @@
 # Runs every test suite and prints one closing line "N passed, N failed" (exit 1 on any failure).
 #   language matrix: the header (with and without the implementation), the README's code and every
 #                   example as C99 (gcc, clang) and C++11/17/20/23 (g++, clang++), -Wall -Wextra -pedantic -Werror
+#   cmake:          tests/cmake_consumer through add_subdirectory and FetchContent, built and run
 #   cpu:            geometry and shader-source tests (plain, then under ASan+UBSan)
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
@@ -43,6 +44,24 @@ for i in $(seq 1 $n); do
   f=$BUILD/tests/matrix/cell$i.txt
   if [ -s "$f" ] && head -1 "$f" | grep -q '^ok '; then pass=$((pass + 1)); sed 's/^/  /' "$f"
   else fail=$((fail + 1)); if [ -s "$f" ]; then sed 's/^/  /' "$f"; else echo "  FAIL  matrix cell $i (no result)"; fi; fi
+done
+
+# CMake: tests/cmake_consumer uses the rbillboard_lit::rbillboard_lit INTERFACE target through
+# add_subdirectory, then FetchContent (local source override), with the raylib build/raylib.mk found;
+# the consumer checks RblGetCameraFrame from a C and a C++ file against raylib's GetCameraMatrix
+cmake_inc=$(for w in $RAYLIB_CFLAGS; do case $w in -I*) printf '%s;' "${w#-I}" ;; esac; done)
+cmake_libs=$(printf '%s' "$RAYLIB_LIBS" | tr -s ' ' ';')
+for via in add_subdirectory FetchContent; do
+  fc="-DCONSUMER_FETCHCONTENT=OFF"; [ $via = FetchContent ] && fc="-DCONSUMER_FETCHCONTENT=ON -DFETCHCONTENT_SOURCE_DIR_RBILLBOARD_LIT=$PWD"
+  dir=$BUILD/cmake_consumer_$via; rm -rf "$dir"
+  if ! command -v cmake >/dev/null 2>&1; then echo "  FAIL  cmake consumer ($via): cmake not installed"; fail=$((fail + 1)); continue; fi
+  if out=$( { cmake -S tests/cmake_consumer -B "$dir" $fc \
+                -DRAYLIB_INCLUDE_DIR="${cmake_inc%;}" -DRAYLIB_LIBRARIES="$cmake_libs" && cmake --build "$dir" -j 2 && "$dir/consumer"; } 2>&1 ) \
+     && printf '%s\n' "$out" | grep -q '^cmake_consumer: .*: ok$'; then
+    echo "  ok    cmake consumer ($via)"; printf '%s\n' "$out" | grep '^cmake_consumer:' | sed 's/^/    /'; pass=$((pass + 1))
+  else
+    echo "  FAIL  cmake consumer ($via)"; printf '%s\n' "$out" | tail -20; fail=$((fail + 1))
+  fi
 done
 
 # The deferred example renders headlessly end to end (G-buffer, 401 lights, resolve, forward glows)
