@@ -42,8 +42,7 @@
 //----------------------------------------------------------------------------------
 static Camera3D showcaseCamera;
 static const Color showcaseBackground = { 18, 20, 28, 255 };
-static Shader cardLit;                      // Blinn-Phong, the packed layout (normal + occlusion)
-static Shader floorLit;                     // GGX, albedo only
+static Shader floorLit;                     // GGX, albedo only (the cards' program goes with their Material)
 static Material cardMaterial;
 static Model floorModel;
 static Texture2D floorAlbedo;
@@ -157,7 +156,8 @@ static void DrawCard(Image *image, int rank, int ox, int oy, int s, Color body, 
     ImageDrawRectangle(image, ox + rad, oy, w - 2*rad, h, body);    // Rounded card: two rectangles, four circles
     ImageDrawRectangle(image, ox, oy + rad, w, h - 2*rad, body);
     for (int c = 0; c < 4; c++) ImageDrawCircle(image, ox + ((c%2)? w - rad - 1 : rad), oy + ((c/2)? h - rad - 1 : rad), rad, body);
-    ImageDrawRectangleLines(image, CLITERAL(Rectangle){ (float)(ox + 44*s), (float)(oy + 40*s), (float)(w - 88*s), (float)(h - 80*s) }, 3*s, frame);
+    ImageDrawRectangle(image, ox + 44*s, oy + 40*s, w - 88*s, h - 80*s, frame);     // Frame around the pips: a filled
+    ImageDrawRectangle(image, ox + 47*s, oy + 43*s, w - 94*s, h - 86*s, body);      // rectangle, hollowed out
     DrawSuit(image, spade, (float)(ox + 22*s), (float)(oy + 30*s), 20.0f*s, false, ink);     // Corner pips
     DrawSuit(image, spade, (float)(ox + w - 22*s), (float)(oy + h - 30*s), 20.0f*s, true, ink);
 
@@ -187,7 +187,6 @@ static void ShowcaseInit(void)
     showcaseCamera.up = CLITERAL(Vector3){ 0.0f, 1.0f, 0.0f };
     showcaseCamera.fovy = 45.0f;
     showcaseCamera.projection = CAMERA_PERSPECTIVE;
-
     // Card atlas (albedo and height mask), drawn at 2x and scaled down (anti-aliasing)
     const int s = 2, atlasW = CARD_COLUMNS*(CARD_W + 2*CARD_GUTTER), atlasH = 2*(CARD_H + 2*CARD_GUTTER);
     const Color paper = { 250, 248, 240, 255 }, clear = { 250, 248, 240, 0 };  // Transparent corners keep the paper colour
@@ -216,7 +215,7 @@ static void ShowcaseInit(void)
     source.mipmaps = true;
     RblPackedMaterial packed = RBL_ZERO;
     if (!RblPackMaterial(&source, &packed)) TraceLog(LOG_WARNING, "SHOWCASE: card maps could not be packed");
-    UnloadImage(albedo);
+    UnloadImage(albedo);                    // The packed copies live on in `packed`
     UnloadImage(height);
     UnloadImage(source.normal);
     UnloadImage(source.occlusion);
@@ -230,17 +229,13 @@ static void ShowcaseInit(void)
     desc.fog = RBL_FOG_EXP2;
     desc.tonemap = RBL_TONEMAP_ACES;
     desc.shadowMaps = 1;                    // Floor and cards receive the moon's shadow
+    desc.brdf = RBL_BRDF_GGX;
+    floorLit = RblLoadLitShader(desc);      // Floor: albedo only (no tangents needed)
     desc.brdf = RBL_BRDF_BLINN_PHONG;
     desc.material = packed.layout;          // Cards: exactly the maps the packing produced
-    cardLit = RblLoadLitShader(desc);
-    RblMaterialLayout albedoOnly = RBL_ZERO;
-    desc.brdf = RBL_BRDF_GGX;
-    desc.material = albedoOnly;             // Floor: albedo only (no tangents needed)
-    floorLit = RblLoadLitShader(desc);
-    if (!RblIsLitShaderValid(cardLit) || !RblIsLitShaderValid(floorLit)) TraceLog(LOG_WARNING, "SHOWCASE: lit shaders failed to compile");
-
     cardMaterial = LoadMaterialDefault();
-    cardMaterial.shader = cardLit;
+    cardMaterial.shader = RblLoadLitShader(desc);
+    if (!RblIsLitShaderValid(cardMaterial.shader) || !RblIsLitShaderValid(floorLit)) TraceLog(LOG_WARNING, "SHOWCASE: lit shaders failed to compile");
     if ((packed.albedo.data != NULL) && !RblLoadPackedTextures(&packed, &cardMaterial)) TraceLog(LOG_WARNING, "SHOWCASE: card textures could not be uploaded");
     RblUnloadPackedMaterial(&packed);
     cardMaterial.params[RBL_PARAM_SPECULAR] = 0.35f;            // Glossy card stock (Blinn-Phong)
@@ -294,8 +289,7 @@ static void ShowcaseUpdate(float time)
     showcaseScene.lights = showcaseLights;
     showcaseScene.lightCount = SCENE_LIGHTS;
     showcaseScene.ambient = CLITERAL(Color){ 52, 58, 84, 255 };         // Sky
-    showcaseScene.ambientGround = CLITERAL(Color){ 34, 28, 26, 255 };   // Ground
-    showcaseScene.ambientUp = CLITERAL(Vector3){ 0.0f, 1.0f, 0.0f };
+    showcaseScene.ambientGround = CLITERAL(Color){ 34, 28, 26, 255 };   // Ground (ambientUp zero: +Y)
     showcaseScene.fog = CLITERAL(RblFog){ RBL_FOG_EXP2, showcaseBackground, 0.0f, 0.0f, 0.055f };
     showcaseScene.exposure = 1.4f;
     showcaseScene.shadowMaps = NULL;                    // ShowcaseDrawShadows() adds this frame's map

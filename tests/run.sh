@@ -3,6 +3,7 @@
 #   language matrix: the header (with and without the implementation), the README's code and every
 #                   example as C99 (gcc, clang) and C++11/17/20/23 (g++, clang++), -Wall -Wextra -pedantic -Werror
 #   cmake:          tests/cmake_consumer through add_subdirectory and FetchContent, built and run
+#   raylib_examples: the examples' raylib conventions, API list, build by raylib 6.0's examples Makefile
 #   cpu:            geometry and shader-source tests (plain, then under ASan+UBSan)
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
@@ -49,6 +50,7 @@ done
 # CMake: tests/cmake_consumer uses the rbillboard_lit::rbillboard_lit INTERFACE target through
 # add_subdirectory, then FetchContent (local source override), with the raylib build/raylib.mk found;
 # the consumer checks RblGetCameraFrame from a C and a C++ file against raylib's GetCameraMatrix
+echo "== cmake consumer (add_subdirectory, FetchContent)"
 cmake_inc=$(for w in $RAYLIB_CFLAGS; do case $w in -I*) printf '%s;' "${w#-I}" ;; esac; done)
 cmake_libs=$(printf '%s' "$RAYLIB_LIBS" | tr -s ' ' ';')
 for via in add_subdirectory FetchContent; do
@@ -63,6 +65,10 @@ for via in add_subdirectory FetchContent; do
     echo "  FAIL  cmake consumer ($via)"; printf '%s\n' "$out" | tail -20; fail=$((fail + 1))
   fi
 done
+
+# The examples as raylib's own: conventions, the raylib API list, raylib 6.0's examples Makefile
+echo "== raylib examples (conventions, API list, raylib's examples Makefile)"
+out=$(BUILD=$BUILD RAYLIB_CFLAGS="$RAYLIB_CFLAGS" RAYLIB_LIBS="$RAYLIB_LIBS" bash tests/tools/raylib_examples.sh 2>&1); printf '%s\n' "$out"; count "$out"
 
 # The deferred example renders headlessly end to end (G-buffer, 401 lights, resolve, forward glows)
 if out=$("$BUILD/deferred_headless" "$BUILD/deferred.png" "$BUILD/deferred_views.png" 2>&1) && [ -s "$BUILD/deferred.png" ]; then
