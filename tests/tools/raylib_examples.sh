@@ -62,6 +62,7 @@ check_api() { # $1 = directory with raylib.h and rlgl.h, $2 = label
   while IFS= read -r d; do
     n=$((n + 1))
     printf '%s\n' "$all" | grep -qxF -- "$d" || why="$why; differs or missing: $d"
+    printf '%s\n' $used | grep -qxF -- "$(printf '%s\n' "$d" | fname)" || why="$why; listed but no longer called: $d"
   done < <(grep '^RLAPI' "$list")
   if [ -z "$why" ]; then ok "api ($label): $(echo $used | wc -w) raylib functions called, $n listed declarations identical in $dir"
   else bad "api ($label):${why#;}"; fi
