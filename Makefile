@@ -105,19 +105,19 @@ test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_C
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
-$(BUILD)/showcase: examples/billboards_lit_showcase.c $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/showcase: examples/shaders_lit_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/billboards_lit_showcase.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/shaders_lit_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/showcase_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/deferred: examples/billboards_lit_deferred.c $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/deferred: examples/shaders_deferred_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/billboards_lit_deferred.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_deferred_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/deferred_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
@@ -158,7 +158,7 @@ $(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h 
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
 # pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
 BENCH_API_GLAD := $(abspath $(firstword $(wildcard $(RAYLIB_SRC)/src/external/glad.h $(BUILD)/raylib-src/*/src/external/glad.h)))
-BENCH_API_EXAMPLES := examples/billboards_lit_showcase.c examples/billboards_lit_deferred.c
+BENCH_API_EXAMPLES := examples/shaders_lit_billboards.c examples/shaders_deferred_billboards.c
 $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_API_EXAMPLES) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) -DBENCH_API_GEN tests/bench/bench_api.c -o $(@D)/bench_api_gen
@@ -169,7 +169,7 @@ $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_AP
 
 # Suite `platforms`: one binary per graphics API (the desktop raylib, then the variants), each run on
 # its strict context by tests/bench/run.sh
-PF_DEPS := tests/bench/bench_platforms.c tests/bench/bench.h examples/billboards_lit_showcase.c $(HARNESS) $(HEADER)
+PF_DEPS := tests/bench/bench_platforms.c tests/bench/bench.h examples/shaders_lit_billboards.c $(HARNESS) $(HEADER)
 $(BUILD)/bench/bench_platforms_egl: $(PF_DEPS) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -187,13 +187,14 @@ bench: $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
-	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
 	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
 
 clean-all:
 	rm -rf $(BUILD)
 
-# ---- README pictures (rendered headlessly, committed under examples/resources) -------------
+# ---- README pictures (rendered headlessly, committed under examples/resources) and the examples'
+# screenshots (examples/<name>.png, 800x450, as raylib's examples/<module>/<name>.png) ------------
 $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -203,3 +204,5 @@ pictures: $(BUILD)/pictures $(BUILD)/deferred_headless run
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png
+	@cp examples/resources/rbl_showcase.png examples/shaders_lit_billboards.png && echo "pictures: wrote examples/shaders_lit_billboards.png"
+	@cp examples/resources/rbl_deferred.png examples/shaders_deferred_billboards.png && echo "pictures: wrote examples/shaders_deferred_billboards.png"

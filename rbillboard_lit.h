@@ -34,14 +34,19 @@
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
 *          one .c file. The lit program is a Shader for a Material, whose maps also carry the values
 *          (MATERIAL VALUES); lights, ambient, fog and exposure are one RblScene set each frame.
+*          Structs start as RBL_ZERO and get their fields assigned (valid C99 and C++11 alike).
 *            Material mat = LoadMaterialDefault();
-*            mat.shader = RblLoadLitShader((RblLitShaderDesc){ 0 });   // 4 point lights, Lambert
+*            RblLitShaderDesc desc = RBL_ZERO;     // zero: 4 point lights, Lambert
+*            mat.shader = RblLoadLitShader(desc);
 *            mat.maps[MATERIAL_MAP_ALBEDO].texture = LoadTexture("sprite.png");
-*            RblLight light = { .position = { 2, 3, 2 }, .color = WHITE, .intensity = 20, .range = 15 };
-*            RblScene scene = { .lights = &light, .lightCount = 1, .ambient = DARKGRAY };
+*            RblLight light = RBL_ZERO;            // a point light
+*            light.position = CLITERAL(Vector3){ 2, 3, 2 }; light.color = WHITE; light.intensity = 20; light.range = 15;
+*            RblScene scene = RBL_ZERO;
+*            scene.lights = &light; scene.lightCount = 1; scene.ambient = DARKGRAY;
 *            RblSetScene(&scene);                  // each frame; false: rejected, previous kept
-*            // in BeginMode3D:
-*            RblDrawBillboard(camera, mat, (RblBillboard){ .position = p, .size = { 1, 2 } });
+*            RblBillboard sprite = RBL_ZERO;
+*            sprite.position = p; sprite.size = CLITERAL(Vector2){ 1, 2 };
+*            RblDrawBillboard(camera, mat, sprite); // in BeginMode3D
 *          At exit: UnloadMaterial(mat), RblClose(), CloseWindow() (see OWNERSHIP).
 *       2. Many billboards: consecutive billboards with the same Material form one run; RblEndBatch
 *          uploads once and draws once per run (and reads the materials' values then).
@@ -51,8 +56,9 @@
 *            RblEndBatch(&batch);
 *       3. Packed maps: albedo + one RGBA8 material texture (+ emissive); the reported layout selects
 *          the program variant, so absent maps are never sampled (MATERIAL LAYOUT).
-*            RblMaterialSource src = { .albedo = albedoImage, .normal = normalImage, .mipmaps = true };
-*            RblPackedMaterial packed = { 0 };
+*            RblMaterialSource src = RBL_ZERO;
+*            src.albedo = albedoImage; src.normal = normalImage; src.mipmaps = true;
+*            RblPackedMaterial packed = RBL_ZERO;
 *            if (RblPackMaterial(&src, &packed) && RblLoadPackedTextures(&packed, &mat))
 *                desc.material = packed.layout;    // then mat.shader = RblLoadLitShader(desc)
 *            RblUnloadPackedMaterial(&packed);     // the CPU Images; the textures stay in mat
@@ -60,7 +66,8 @@
 *          facing, up, axis and roundness are shared by one draw.
 *            desc.instanced = true; instMat.shader = RblLoadLitShader(desc);
 *            RblInstanceBuffer ib = RblLoadInstanceBuffer(0);
-*            RblInstancedDesc idesc = { .facing = RBL_FACING_AXIS };
+*            RblInstancedDesc idesc = RBL_ZERO;
+*            idesc.facing = RBL_FACING_AXIS;
 *            RblDrawInstanced(&ib, camera, instMat, idesc, instances, count);   // inside BeginMode3D
 *       5. raylib Models: a lit program in model.materials[i].shader (GenMeshTangents for normal maps).
 *          RblSetScene uploads the scene to every live lit program (later ones get it at load), so even
@@ -86,7 +93,9 @@
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
-*            RblGBuffer g = RblLoadGBuffer((RblGBufferDesc){ .brdf = RBL_BRDF_GGX });  // size 0: screen
+*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: the render size
+*            gdesc.brdf = RBL_BRDF_GGX;
+*            RblGBuffer g = RblLoadGBuffer(gdesc);
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
 *            if (RblBeginGBuffer(&g, camera)) {    // false: draw this frame forward
 *                ... billboard paths and RblDrawModel with deferred materials ...
@@ -342,6 +351,9 @@
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
+*       RBL_ZERO (defined by the header)
+*           Zero initialiser for any struct, in C99 and C++11 alike: `RblLitShaderDesc desc = RBL_ZERO;`
+*           (`{ 0 }` in C, `{}` in C++, where `{ 0 }` warns under -Wextra and designated fields need C++20).
 *       #define RBLAPI
 *           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
 *           __declspec(dllexport/dllimport) on Windows, as in raylib.
@@ -362,6 +374,7 @@
 *                        values travel with the Material; one RblScene a frame (lights, ambient, fog,
 *                        exposure, shadow maps) for every program and G-buffer; RblDrawModel/Mesh;
 *                        one program registry; raylib's UnloadShader on a lit program is survivable.
+*                        C++11..23 clean (g++, clang++); RBL_ZERO zero-initialises in C and C++.
 *         0.3 -> 0.4 (old -> new):
 *           RblLitShader lit = RblLoadLitShader(d)     Shader lit = RblLoadLitShader(d)
 *           material.shader = lit.shader               material.shader = lit
@@ -467,6 +480,13 @@
 //----------------------------------------------------------------------------------
 // Defines and Macros
 //----------------------------------------------------------------------------------
+// Zero initialiser valid in C99 and C++11 alike (`RblBillboard card = RBL_ZERO;`, then set fields):
+// C's universal `{ 0 }` draws -Wmissing-field-initializers in C++, whose `{}` is not C99
+#if defined(__cplusplus)
+    #define RBL_ZERO {}
+#else
+    #define RBL_ZERO { 0 }
+#endif
 #ifndef RBL_MAX_LIGHTS
     #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
 #endif
@@ -5926,7 +5946,7 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
     for (int r = 0; r <= RINGS; r++)
         for (int sl = 0; sl <= SLICES; sl++)
         {
-            double th = PI*r/RINGS, ph = 2.0*PI*sl/SLICES;
+            double th = PI*r/(double)RINGS, ph = 2.0*PI*sl/(double)SLICES;     // (double): C++20 deprecates enum-float arithmetic
             float *p = &v[(r*(SLICES + 1) + sl)*3];
             p[0] = (float)(sin(th)*cos(ph)); p[1] = (float)cos(th); p[2] = (float)(sin(th)*sin(ph));
         }

@@ -7,7 +7,7 @@
 //                     frames; run.sh adds the ratio ES 3 / GL 3.3 (same machine, same run)
 // Families needing GLSL 3 (instanced, deferred geometry) are measured where the context has it.
 #define RBL_SHOWCASE_NO_MAIN
-#include "../../examples/billboards_lit_showcase.c"
+#include "../../examples/shaders_lit_billboards.c"
 #include "harness.h"
 #include "bench.h"
 
