@@ -5207,6 +5207,10 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
+    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
+    // cut: the alpha band's ceiling is above every alpha
+    float band[2] = { 0.0f, 2.0f };
+    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     // Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed
     // until a scene gives a map (an unbound sampler would read depth 0 and darken everything)
     for (int k = 0; k < d->shadowMaps; k++)
