@@ -52,7 +52,7 @@ check-shaders:
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h
-GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h
+GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_sprites.c
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -88,15 +88,15 @@ $(BUILD)/raylib-%/libraylib.a: tests/tools/raylib-variant.sh $(BUILD)/raylib.mk
 
 $(BUILD)/tests/test_gpu_gles3: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es3/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es3 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es3 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
 
 $(BUILD)/tests/test_gpu_gles2: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es2/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
 
 $(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-gl21/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
 
 # Every stage as the loader splices it, in every dialect, for glslangValidator (tests/run.sh)
 $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/raylib.mk
@@ -107,19 +107,19 @@ test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_C
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
-$(BUILD)/showcase: examples/billboards_lit_showcase.c $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/showcase: examples/shaders_lit_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/billboards_lit_showcase.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/shaders_lit_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/showcase_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/deferred: examples/billboards_lit_deferred.c $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/deferred: examples/shaders_deferred_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/billboards_lit_deferred.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_deferred_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/deferred_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
@@ -160,7 +160,7 @@ $(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h 
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
 # pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
 BENCH_API_GLAD := $(abspath $(firstword $(wildcard $(RAYLIB_SRC)/src/external/glad.h $(BUILD)/raylib-src/*/src/external/glad.h)))
-BENCH_API_EXAMPLES := examples/billboards_lit_showcase.c examples/billboards_lit_deferred.c
+BENCH_API_EXAMPLES := examples/shaders_lit_billboards.c examples/shaders_deferred_billboards.c
 $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_API_EXAMPLES) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) -DBENCH_API_GEN tests/bench/bench_api.c -o $(@D)/bench_api_gen
@@ -169,11 +169,27 @@ $(BUILD)/bench/bench_api: tests/bench/bench_api.c tests/bench/bench.h $(BENCH_AP
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -DBENCH_API_PART=2 -c tests/bench/bench_api.c -o $(@D)/bench_api_deferred.o
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) -I$(@D) -DBENCH_API_GL tests/bench/bench_api.c $(@D)/bench_api_showcase.o $(@D)/bench_api_deferred.o tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
+# Suite `platforms`: one binary per graphics API (the desktop raylib, then the variants), each run on
+# its strict context by tests/bench/run.sh
+PF_DEPS := tests/bench/bench_platforms.c tests/bench/bench.h examples/shaders_lit_billboards.c $(HARNESS) $(HEADER)
+$(BUILD)/bench/bench_platforms_egl: $(PF_DEPS) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+$(BUILD)/bench/bench_platforms_gles3: $(PF_DEPS) $(BUILD)/raylib-es3/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es3 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
+$(BUILD)/bench/bench_platforms_gles2: $(PF_DEPS) $(BUILD)/raylib-es2/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es2 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
+$(BUILD)/bench/bench_platforms_gl21: $(PF_DEPS) $(BUILD)/raylib-gl21/libraylib.a
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+
+bench: $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
-	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
 	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
 
 clean-all:
@@ -183,7 +199,7 @@ clean-all:
 # raylib is built for PLATFORM_WEB_RGFW twice (ES 3 for WebGL2, ES 2 for the WebGL1 fallback) into
 # $(BUILD)/web/raylib-es3|es2 from the source tree get-raylib.sh fetched. emcc writes .js + .wasm only
 # (its -o page.html minifier crashes on Debian's node): the pages are tests/web/*.html.
-WEB_SHOWCASE := examples/billboards_lit_showcase.c
+WEB_SHOWCASE := examples/shaders_lit_billboards.c
 WEBCC        := NODE_PATH=/usr/share/nodejs emcc
 WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests -DSUPPORT_GPU_SKINNING=1
 WEB_LDFLAGS  := -sALLOW_MEMORY_GROWTH=1 -sTOTAL_STACK=16777216 -sINITIAL_MEMORY=67108864
@@ -235,7 +251,8 @@ $(BUILD)/web/test/test_web.js: tests/web/test_web_main.c tests/web/test.html $(G
 test-web: $(BUILD)/web/test/test_web.js
 	@python3 tests/web/run.py test $(BUILD)/web/test $(WEB_FILTER)
 
-# ---- README pictures (rendered headlessly, committed under examples/resources) -------------
+# ---- README pictures (rendered headlessly, committed under examples/resources) and the examples'
+# screenshots (examples/<name>.png, 800x450, as raylib's examples/<module>/<name>.png) ------------
 $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -245,3 +262,5 @@ pictures: $(BUILD)/pictures $(BUILD)/deferred_headless run
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png
+	@cp examples/resources/rbl_showcase.png examples/shaders_lit_billboards.png && echo "pictures: wrote examples/shaders_lit_billboards.png"
+	@cp examples/resources/rbl_deferred.png examples/shaders_deferred_billboards.png && echo "pictures: wrote examples/shaders_deferred_billboards.png"

@@ -34,14 +34,19 @@
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
 *          one .c file. The lit program is a Shader for a Material, whose maps also carry the values
 *          (MATERIAL VALUES); lights, ambient, fog and exposure are one RblScene set each frame.
+*          Structs start as RBL_ZERO and get their fields assigned (valid C99 and C++11 alike).
 *            Material mat = LoadMaterialDefault();
-*            mat.shader = RblLoadLitShader((RblLitShaderDesc){ 0 });   // 4 point lights, Lambert
+*            RblLitShaderDesc desc = RBL_ZERO;     // zero: 4 point lights, Lambert
+*            mat.shader = RblLoadLitShader(desc);
 *            mat.maps[MATERIAL_MAP_ALBEDO].texture = LoadTexture("sprite.png");
-*            RblLight light = { .position = { 2, 3, 2 }, .color = WHITE, .intensity = 20, .range = 15 };
-*            RblScene scene = { .lights = &light, .lightCount = 1, .ambient = DARKGRAY };
+*            RblLight light = RBL_ZERO;            // a point light
+*            light.position = CLITERAL(Vector3){ 2, 3, 2 }; light.color = WHITE; light.intensity = 20; light.range = 15;
+*            RblScene scene = RBL_ZERO;
+*            scene.lights = &light; scene.lightCount = 1; scene.ambient = DARKGRAY;
 *            RblSetScene(&scene);                  // each frame; false: rejected, previous kept
-*            // in BeginMode3D:
-*            RblDrawBillboard(camera, mat, (RblBillboard){ .position = p, .size = { 1, 2 } });
+*            RblBillboard sprite = RBL_ZERO;
+*            sprite.position = p; sprite.size = CLITERAL(Vector2){ 1, 2 };
+*            RblDrawBillboard(camera, mat, sprite); // in BeginMode3D
 *          At exit: UnloadMaterial(mat), RblClose(), CloseWindow() (see OWNERSHIP).
 *       2. Many billboards: consecutive billboards with the same Material form one run; RblEndBatch
 *          uploads once and draws once per run (and reads the materials' values then).
@@ -51,8 +56,9 @@
 *            RblEndBatch(&batch);
 *       3. Packed maps: albedo + one RGBA8 material texture (+ emissive); the reported layout selects
 *          the program variant, so absent maps are never sampled (MATERIAL LAYOUT).
-*            RblMaterialSource src = { .albedo = albedoImage, .normal = normalImage, .mipmaps = true };
-*            RblPackedMaterial packed = { 0 };
+*            RblMaterialSource src = RBL_ZERO;
+*            src.albedo = albedoImage; src.normal = normalImage; src.mipmaps = true;
+*            RblPackedMaterial packed = RBL_ZERO;
 *            if (RblPackMaterial(&src, &packed) && RblLoadPackedTextures(&packed, &mat))
 *                desc.material = packed.layout;    // then mat.shader = RblLoadLitShader(desc)
 *            RblUnloadPackedMaterial(&packed);     // the CPU Images; the textures stay in mat
@@ -60,7 +66,8 @@
 *          facing, up, axis and roundness are shared by one draw.
 *            desc.instanced = true; instMat.shader = RblLoadLitShader(desc);
 *            RblInstanceBuffer ib = RblLoadInstanceBuffer(0);
-*            RblInstancedDesc idesc = { .facing = RBL_FACING_AXIS };
+*            RblInstancedDesc idesc = RBL_ZERO;
+*            idesc.facing = RBL_FACING_AXIS;
 *            RblDrawInstanced(&ib, camera, instMat, idesc, instances, count);   // inside BeginMode3D
 *       5. raylib Models: a lit program in model.materials[i].shader (GenMeshTangents for normal maps).
 *          RblSetScene uploads the scene to every live lit program (later ones get it at load), so even
@@ -86,7 +93,9 @@
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
-*            RblGBuffer g = RblLoadGBuffer((RblGBufferDesc){ .brdf = RBL_BRDF_GGX });  // size 0: screen
+*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: the render size
+*            gdesc.brdf = RBL_BRDF_GGX;
+*            RblGBuffer g = RblLoadGBuffer(gdesc);
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
 *            if (RblBeginGBuffer(&g, camera)) {    // false: draw this frame forward
 *                ... billboard paths and RblDrawModel with deferred materials ...
@@ -342,6 +351,9 @@
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
+*       RBL_ZERO (defined by the header)
+*           Zero initialiser for any struct, in C99 and C++11 alike: `RblLitShaderDesc desc = RBL_ZERO;`
+*           (`{ 0 }` in C, `{}` in C++, where `{ 0 }` warns under -Wextra and designated fields need C++20).
 *       #define RBLAPI
 *           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
 *           __declspec(dllexport/dllimport) on Windows, as in raylib.
@@ -362,6 +374,7 @@
 *                        values travel with the Material; one RblScene a frame (lights, ambient, fog,
 *                        exposure, shadow maps) for every program and G-buffer; RblDrawModel/Mesh;
 *                        one program registry; raylib's UnloadShader on a lit program is survivable.
+*                        C++11..23 clean (g++, clang++); RBL_ZERO zero-initialises in C and C++.
 *         0.3 -> 0.4 (old -> new):
 *           RblLitShader lit = RblLoadLitShader(d)     Shader lit = RblLoadLitShader(d)
 *           material.shader = lit.shader               material.shader = lit
@@ -467,6 +480,13 @@
 //----------------------------------------------------------------------------------
 // Defines and Macros
 //----------------------------------------------------------------------------------
+// Zero initialiser valid in C99 and C++11 alike (`RblBillboard card = RBL_ZERO;`, then set fields):
+// C's universal `{ 0 }` draws -Wmissing-field-initializers in C++, whose `{}` is not C99
+#if defined(__cplusplus)
+    #define RBL_ZERO {}
+#else
+    #define RBL_ZERO { 0 }
+#endif
 #ifndef RBL_MAX_LIGHTS
     #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
 #endif
@@ -564,7 +584,16 @@ typedef struct RblCameraFrame {
 } RblCameraFrame;
 
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
+// How RblEndBatch orders and passes a batch's billboards (RblBatch.sort)
+typedef enum {
+    RBL_SORT_NONE = 0,              // Submission order (opaque and alpha-tested billboards)
+    RBL_SORT_BACK_TO_FRONT,         // Farthest quad centre first along the view axis (blended billboards)
+    RBL_SORT_HYBRID                 // Solid texels first (depth tested and written), then the fringe back to front without depth writes
+} RblSortMode;
+
 typedef struct RblBatch {
+    int sort;                       // RblSortMode, read by RblEndBatch (0 = submission order)
+    float solidAlpha;               // RBL_SORT_HYBRID: alpha from which a texel is solid (0 = 1.0, fully opaque only)
     int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
     int count;                      // Billboards added since RblBeginBatch()
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
@@ -589,6 +618,7 @@ typedef struct RblInstancedDesc {
     Vector3 up;                     // As RblBillboard.up
     Vector3 axis;                   // As RblBillboard.axis
     float roundness;                // As RblBillboard.roundness
+    int sort;                       // RblSortMode by each instance's pivot depth (0 = the array's order); solid alpha 1
 } RblInstancedDesc;
 
 // GPU instance buffer plus a staging copy (validated)
@@ -971,7 +1001,7 @@ typedef struct rbl__ProgramKey {
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
 typedef struct rbl__MaterialValues {
     Color specularColor, emissiveColor;
-    float specular, shininess, roughness, metalness, emissive, alphaCutoff;
+    float specular, shininess, roughness, metalness, emissive, alphaCutoff, alphaCeiling;
 } rbl__MaterialValues;
 
 // One entry of the program registry
@@ -991,6 +1021,13 @@ typedef struct rbl__Handle {
 } rbl__Handle;
 
 // A run of billboards sharing one material inside a batch
+// A billboard's place in a sorted batch
+typedef struct rbl__SortKey {
+    float depth;                    // Along the view axis (larger = farther)
+    int index;                      // Billboard in submission order
+    int run;                        // Its material run
+} rbl__SortKey;
+
 typedef struct rbl__BatchRun {
     Material material;              // Material the run draws with
     int first;                      // First billboard
@@ -1010,6 +1047,9 @@ typedef struct rbl__FrameCache {
 // A batch's own data (RblBatch.state); capacity, count and skipped are mirrored into the RblBatch
 typedef struct rbl__BatchState {
     RblVertex *vertices;            // 4 per billboard
+    RblVertex *sorted;              // Sorted copy of vertices (allocated at the first sorted RblEndBatch, grown with capacity)
+    rbl__SortKey *keys;             // Per billboard: view depth, index, run (same lifetime as sorted)
+    int sortCapacity;               // Billboards sorted and keys hold
     int capacity;                   // Billboards reserved (CPU and GPU)
     int count;                      // Billboards added since RblBeginBatch()
     rbl__BatchRun *runs;              // Material runs
@@ -1030,6 +1070,9 @@ typedef struct rbl__BatchState {
 // An instance buffer's own data (RblInstanceBuffer.state)
 typedef struct rbl__InstanceBufferState {
     RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
+    RblInstance *sorted;            // Sorted copy (allocated at the first sorted draw, grown with capacity)
+    rbl__SortKey *keys;             // Sort keys (same lifetime as sorted)
+    int sortCapacity;               // Instances sorted and keys hold
     int capacity;                   // Instances reserved (CPU and GPU)
     unsigned int vaoId;             // Vertex array (instance attributes only)
     unsigned int vboId;             // Instance buffer
@@ -1106,9 +1149,11 @@ typedef struct rbl__State {
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
+    Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
+    Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
     int liveCount;
     int liveCapacity;
@@ -2193,7 +2238,7 @@ static const char *const rbl__shader_material[] = {
     "uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness\n",
     "#endif\n",
     "uniform vec4 colDiffuse;        // sRGB, as raylib sets it\n",
-    "uniform float rblAlphaCutoff;\n",
+    "uniform vec2 rblAlphaCutoff;   // kept from x (the material's cutoff) up to, not including, y (a hybrid batch's solid alpha; 2 otherwise)\n",
     "\n",
     "// Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU\n",
     "// (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)\n",
@@ -2224,7 +2269,7 @@ static const char *const rbl__shader_material[] = {
     "{\n",
     "    vec4 texel = texture(texture0, fragTexCoord);\n",
     "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
-    "    if (albedo.a < rblAlphaCutoff) discard;\n",
+    "    if ((albedo.a < rblAlphaCutoff.x) || (albedo.a >= rblAlphaCutoff.y)) discard;\n",
     "\n",
     "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
     "    // Two-sided: a back face (a card seen from behind, an open mesh from inside) is shaded on the\n",
@@ -3181,6 +3226,8 @@ static void rbl__freeBatchState(rbl__BatchState *b)
 {
     rbl__unloadBatchGpu(b);
     RBL_FREE(b->vertices);
+    RBL_FREE(b->sorted);
+    RBL_FREE(b->keys);
     RBL_FREE(b->runs);
     RBL_FREE(b);
 }
@@ -3403,11 +3450,88 @@ static void rbl__endBatch(RblBatch *batch, const char *fn);
 
 void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
 
+// Sort keys: farther first; equal depths keep submission order (a total order: any submission order
+// of distinct depths draws alike)
+static int rbl__compareKeys(const void *a, const void *b)
+{
+    const rbl__SortKey *p = (const rbl__SortKey *)a, *q = (const rbl__SortKey *)b;
+    if (p->depth != q->depth) return (p->depth > q->depth)? -1 : 1;
+    return (p->index > q->index) - (p->index < q->index);
+}
+
+// Orders the batch's quads back to front into batch->sorted (keys: their view depths, indices, runs);
+// false when the scratch cannot be allocated (the caller logs and draws in submission order)
+static bool rbl__sortBatch(rbl__BatchState *batch)
+{
+    if (batch->sortCapacity < batch->capacity)
+    {
+        RblVertex *sorted = (RblVertex *)RBL_MALLOC((size_t)batch->capacity*4*sizeof(RblVertex));
+        rbl__SortKey *keys = (rbl__SortKey *)RBL_MALLOC((size_t)batch->capacity*sizeof(rbl__SortKey));
+        if ((sorted == NULL) || (keys == NULL)) { RBL_FREE(sorted); RBL_FREE(keys); return false; }
+        RBL_FREE(batch->sorted); RBL_FREE(batch->keys);
+        batch->sorted = sorted; batch->keys = keys;
+        batch->sortCapacity = batch->capacity;
+    }
+    // Depth of the quad's centre along the view direction (-back): the same axis for both projections
+    Vector3 back = batch->view.back, eye = batch->view.eye;
+    for (int r = 0; r < batch->runCount; r++)
+        for (int i = batch->runs[r].first; i < batch->runs[r].first + batch->runs[r].count; i++)
+        {
+            const RblVertex *v = batch->vertices + (size_t)i*4;
+            Vector3 c = { 0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
+                          0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
+                          0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]) };
+            batch->keys[i].depth = -rbl__dot(rbl__sub(c, eye), back);
+            batch->keys[i].index = i;
+            batch->keys[i].run = r;
+        }
+    qsort(batch->keys, (size_t)batch->count, sizeof(rbl__SortKey), rbl__compareKeys);
+    for (int i = 0; i < batch->count; i++) memcpy(batch->sorted + (size_t)i*4, batch->vertices + (size_t)batch->keys[i].index*4, 4*sizeof(RblVertex));
+    return true;
+}
+
+// Draws quads [first, first + count) of the bound vertex buffer with run r's material
+static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, int count, const char *fn, unsigned int *bound)
+{
+    MaterialMap casterMaps[RBL__CASTER_MAPS];
+    Material material = batch->runs[r].material;
+    rbl__Program *program = NULL;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) return;
+    *bound |= rbl__bindMaterial(&material);
+    if (program != NULL) rbl__applyMaterialValues(program, &material);
+    for (int q = 0; q < count; q += RBL__QUADS_PER_CHUNK)
+    {
+        int n = count - q;
+        if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
+        rbl__setVertexLayout((size_t)(first + q)*4*sizeof(RblVertex));
+        rlDrawVertexArrayElements(0, n*6, 0);
+    }
+}
+
+// One pass over the uploaded quads: the runs in order, or (sorted) each stretch of consecutive
+// sorted quads that share a run
+static void rbl__drawBatchPass(const rbl__BatchState *batch, bool sorted, const char *fn, unsigned int *bound)
+{
+    if (!sorted) { for (int r = 0; r < batch->runCount; r++) rbl__drawBatchQuads(batch, r, batch->runs[r].first, batch->runs[r].count, fn, bound); return; }
+    for (int i = 0; i < batch->count; )
+    {
+        int j = i + 1;
+        while ((j < batch->count) && (batch->keys[j].run == batch->keys[i].run)) j++;
+        rbl__drawBatchQuads(batch, batch->keys[i].run, i, j - i, fn, bound);
+        i = j;
+    }
+}
+
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
     if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return; }
     batch->begun = false;
+    if ((pub->sort < RBL_SORT_NONE) || (pub->sort > RBL_SORT_HYBRID) || !rbl__finite(pub->solidAlpha) || (pub->solidAlpha < 0.0f) || (pub->solidAlpha > 1.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: sort mode %i unknown or solidAlpha %g outside 0..1; %i billboards not drawn", fn, pub->sort, pub->solidAlpha, batch->count);
+        return;
+    }
     if (batch->count == 0) return;
     if (batch->capacity > batch->gpuCapacity)
     {
@@ -3423,6 +3547,14 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         }
         rbl__unloadBatchGpu(&old);
     }
+    // Order matters only where colour blends: shadow and G-buffer passes draw in submission order
+    int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : pub->sort;
+    if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: out of memory sorting %i billboards; drawn in submission order", fn, batch->count);
+        sort = RBL_SORT_NONE;
+    }
+    bool sorted = (sort != RBL_SORT_NONE);
 
     rlDrawRenderBatchActive();      // keep draw order with raylib's own pending geometry
     // Billboards seen from behind are drawn (two-sided, shaded on the side seen): culling goes off for
@@ -3431,26 +3563,23 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
-    rlUpdateVertexBuffer(batch->vboId, batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
+    rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
     unsigned int bound = 0;
-    for (int r = 0; r < batch->runCount; r++)
+    if (sort == RBL_SORT_HYBRID)
     {
-        const rbl__BatchRun *run = &batch->runs[r];
-        MaterialMap casterMaps[RBL__CASTER_MAPS];
-        Material material = run->material;
-        rbl__Program *program = NULL;
-        if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) continue;
-        bound |= rbl__bindMaterial(&material);
-        if (program != NULL) rbl__applyMaterialValues(program, &material);
-        for (int q = 0; q < run->count; q += RBL__QUADS_PER_CHUNK)
-        {
-            int n = run->count - q;
-            if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
-            rbl__setVertexLayout((size_t)(run->first + q)*4*sizeof(RblVertex));
-            rlDrawVertexArrayElements(0, n*6, 0);
-        }
+        // Solid texels as opaque geometry (depth written), then the fringe over everything behind it,
+        // back to front, depth tested but not written (depth writes end on: raylib's default)
+        float solid = (pub->solidAlpha == 0.0f)? 1.0f : pub->solidAlpha;
+        rbl__state.alphaBand.x = solid; rbl__state.alphaBand.y = 2.0f;
+        rbl__drawBatchPass(batch, true, fn, &bound);
+        rlDisableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = solid;
+        rbl__drawBatchPass(batch, true, fn, &bound);
+        rlEnableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
+    else rbl__drawBatchPass(batch, sorted, fn, &bound);
     rbl__unbindMaterial(bound);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -3523,6 +3652,8 @@ static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
     RBL_FREE(b->staging);
+    RBL_FREE(b->sorted);
+    RBL_FREE(b->keys);
     RBL_FREE(b);
 }
 
@@ -3610,6 +3741,31 @@ static bool rbl__instancesShowBack(const RblInstancedDesc *desc, const RblCamera
     return false;
 }
 
+// Instances ordered back to front by their pivots' depth along the view axis, in buffer->sorted;
+// NULL when the scratch cannot be allocated
+static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, Camera3D camera, const RblInstance *in, int n)
+{
+    if (buffer->sortCapacity < buffer->capacity)
+    {
+        RblInstance *sorted = (RblInstance *)RBL_MALLOC((size_t)buffer->capacity*sizeof(RblInstance));
+        rbl__SortKey *keys = (rbl__SortKey *)RBL_MALLOC((size_t)buffer->capacity*sizeof(rbl__SortKey));
+        if ((sorted == NULL) || (keys == NULL)) { RBL_FREE(sorted); RBL_FREE(keys); return NULL; }
+        RBL_FREE(buffer->sorted); RBL_FREE(buffer->keys);
+        buffer->sorted = sorted; buffer->keys = keys;
+        buffer->sortCapacity = buffer->capacity;
+    }
+    RblCameraFrame view = rbl__cameraFrame(camera);
+    for (int i = 0; i < n; i++)
+    {
+        buffer->keys[i].depth = -rbl__dot(rbl__sub(in[i].position, view.eye), view.back);
+        buffer->keys[i].index = i;
+        buffer->keys[i].run = 0;
+    }
+    qsort(buffer->keys, (size_t)n, sizeof(rbl__SortKey), rbl__compareKeys);
+    for (int i = 0; i < n; i++) buffer->sorted[i] = in[buffer->keys[i].index];
+    return buffer->sorted;
+}
+
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
@@ -3617,9 +3773,9 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness))
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID))
     {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i or NaN/Inf vectors)", desc.facing);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i or NaN/Inf vectors)", desc.facing, desc.sort);
         return 0;
     }
     rbl__Program *checked = NULL;
@@ -3674,6 +3830,14 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
     if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, "RblDrawInstanced", &program)) return 0;
+    // Back to front by pivot depth where colour blends (not in shadow or G-buffer passes)
+    int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : desc.sort;
+    if (sort != RBL_SORT_NONE)
+    {
+        const RblInstance *ordered = rbl__sortInstances(buffer, camera, upload, n);
+        if (ordered == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: out of memory sorting %i instances; drawn in array order", n); sort = RBL_SORT_NONE; }
+        else upload = ordered;
+    }
 
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
@@ -3700,7 +3864,20 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
-    rlDrawVertexArrayInstanced(0, 6, n);
+    if (sort == RBL_SORT_HYBRID)
+    {
+        // As a hybrid batch: opaque texels with depth writes, then the fringe without them
+        rbl__state.alphaBand.x = 1.0f; rbl__state.alphaBand.y = 2.0f;
+        rbl__applyMaterialValues(program, &material);
+        rlDrawVertexArrayInstanced(0, 6, n);
+        rlDisableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 1.0f;
+        rbl__applyMaterialValues(program, &material);
+        rlDrawVertexArrayInstanced(0, 6, n);
+        rlEnableDepthMask();
+        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
+    }
+    else rlDrawVertexArrayInstanced(0, 6, n);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
@@ -5030,6 +5207,10 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
+    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
+    // cut: the alpha band's ceiling is above every alpha
+    float band[2] = { 0.0f, 2.0f };
+    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     // Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed
     // until a scene gives a map (an unbound sampler would read depth 0 and darken everything)
     for (int k = 0; k < d->shadowMaps; k++)
@@ -5198,6 +5379,13 @@ static void rbl__materialValues(const rbl__Program *p, const Material *material,
     v->metalness = !rbl__finite(v->metalness)? 0.0f : ((v->metalness < 0.0f)? 0.0f : ((v->metalness > 1.0f)? 1.0f : v->metalness));
     v->emissive = (!rbl__finite(v->emissive) || (v->emissive == 0.0f))? 1.0f : ((v->emissive < 0.0f)? 0.0f : v->emissive);
     v->alphaCutoff = !rbl__finite(v->alphaCutoff)? 0.5f : ((v->alphaCutoff == 0.0f)? 0.5f : v->alphaCutoff);
+    v->alphaCeiling = 2.0f;         // no texel reaches it
+    if (rbl__state.alphaBand.y > 0.0f)
+    {
+        // A hybrid batch's pass: solid texels (at or above the solid alpha), or the fringe below it
+        if (rbl__state.alphaBand.x > 0.0f) v->alphaCutoff = rbl__state.alphaBand.x;
+        v->alphaCeiling = rbl__state.alphaBand.y;
+    }
     v->emissiveColor.a = 0;                         // only rgb matters
 }
 
@@ -5210,7 +5398,7 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     p->values = v;
     p->valuesValid = true;
     const int *loc = p->loc;
-    if (loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(loc[RBL__U_ALPHA_CUTOFF], &v.alphaCutoff, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_ALPHA_CUTOFF] != -1) { float band[2] = { v.alphaCutoff, v.alphaCeiling }; rlSetUniform(loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1); }
     if (loc[RBL__U_SPECULAR] != -1)
     {
         float s[4] = { rbl__colorToLinear(v.specularColor.r)*v.specular, rbl__colorToLinear(v.specularColor.g)*v.specular,
@@ -5592,6 +5780,22 @@ static const char *rbl__bonesProblem(const Model *model)
     return NULL;
 }
 
+// A Model's bone matrices into a mat4 array uniform. raylib 6.0's rlSetUniformMatrices transposes
+// on desktop GL and not on ES/WebGL: ES gets the matrices transposed first, so both arrive as set
+static void rbl__uploadBones(int loc, const Model *bones)
+{
+    int n = bones->skeleton.boneCount;
+    if ((rbl__glsl() != 300) && (rbl__glsl() != 100)) { rlSetUniformMatrices(loc, bones->boneMatrices, n); return; }
+    for (int b = 0; b < n; b++)
+    {
+        const Matrix *m = &bones->boneMatrices[b];
+        // Positional: Matrix declares m0 m4 m8 m12 m1 ..., so field by field this is the transpose
+        Matrix t = { m->m0, m->m1, m->m2, m->m3, m->m4, m->m5, m->m6, m->m7, m->m8, m->m9, m->m10, m->m11, m->m12, m->m13, m->m14, m->m15 };
+        rbl__state.boneScratch[b] = t;
+    }
+    rlSetUniformMatrices(loc, rbl__state.boneScratch, n);
+}
+
 // DrawMesh with the lit values of a checked material; bones: the Model's matrices for a skinned draw
 static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int path, const Model *bones)
 {
@@ -5604,12 +5808,12 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
         rbl__applyMaterialValues(p, &material);
         // As raylib's DrawModel does for its own skinning shaders (DrawMesh alone uploads no bones)
         int loc = p->shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS];
-        if (p->key.desc.skinning && (path == RBL__PATH_SKINNED) && (loc != -1)) rlSetUniformMatrices(loc, bones->boneMatrices, bones->skeleton.boneCount);
+        if (p->key.desc.skinning && (path == RBL__PATH_SKINNED) && (loc != -1)) rbl__uploadBones(loc, bones);
     }
     else if ((path == RBL__PATH_SKINNED) && (material.shader.locs != NULL) && (material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS] != -1))
     {
         rlEnableShader(material.shader.id);     // the user's own skinning shader, as raylib's DrawModel feeds it
-        rlSetUniformMatrices(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones->boneMatrices, bones->skeleton.boneCount);
+        rbl__uploadBones(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones);
     }
     DrawMesh(mesh, material, transform);
 }
@@ -5746,7 +5950,7 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
     for (int r = 0; r <= RINGS; r++)
         for (int sl = 0; sl <= SLICES; sl++)
         {
-            double th = PI*r/RINGS, ph = 2.0*PI*sl/SLICES;
+            double th = PI*r/(double)RINGS, ph = 2.0*PI*sl/(double)SLICES;     // (double): C++20 deprecates enum-float arithmetic
             float *p = &v[(r*(SLICES + 1) + sl)*3];
             p[0] = (float)(sin(th)*cos(ph)); p[1] = (float)cos(th); p[2] = (float)(sin(th)*sin(ph));
         }
@@ -5846,7 +6050,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     }
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (MRT / RGBA16F / depth texture unavailable?): render forward instead", width, height);
+        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (4 render targets, an RGBA16F target (ES 3: EXT_color_buffer_float), a depth texture): render forward instead", width, height);
         rbl__unloadTargets(g);
         return false;
     }

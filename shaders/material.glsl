@@ -36,7 +36,7 @@ uniform vec4 rblSpecularColor;  // rgb linear specular colour x intensity, a shi
 uniform vec2 rblRoughMetal;     // perceptual roughness (when no map), metalness
 #endif
 uniform vec4 colDiffuse;        // sRGB, as raylib sets it
-uniform float rblAlphaCutoff;
+uniform vec2 rblAlphaCutoff;   // kept from x (the material's cutoff) up to, not including, y (a hybrid batch's solid alpha; 2 otherwise)
 
 // Tangent-space normal from the material texture; the exact mirror of RblDecodeNormal() on the CPU
 // (a decoded vector shorter than 1/64 is quantisation noise around zero: the flat normal)
@@ -67,7 +67,7 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
 {
     vec4 texel = texture(texture0, fragTexCoord);
     vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);
-    if (albedo.a < rblAlphaCutoff) discard;
+    if ((albedo.a < rblAlphaCutoff.x) || (albedo.a >= rblAlphaCutoff.y)) discard;
 
     vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));
     // Two-sided: a back face (a card seen from behind, an open mesh from inside) is shaded on the

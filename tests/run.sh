@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test suite and prints one closing line "N passed, N failed" (exit 1 on any failure).
-#   compile checks: the header as C99 (gcc, clang) and C++ (g++, clang++), with and without the
-#                   implementation, -Wall -Wextra -pedantic -Werror
+#   language matrix: the header (with and without the implementation), the README's code and every
+#                   example as C99 (gcc, clang) and C++11/17/20/23 (g++, clang++), -Wall -Wextra -pedantic -Werror
+#   cmake:          tests/cmake_consumer through add_subdirectory and FetchContent, built and run
+#   raylib_examples: the examples' raylib conventions, API list, build by raylib 6.0's examples Makefile
 #   cpu:            geometry and shader-source tests (plain, then under ASan+UBSan)
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
@@ -18,29 +20,56 @@ count() { # $1 = suite output; adds its "suite: N passed, M failed" line
   pass=$((pass + p)); fail=$((fail + f))
 }
 
-echo "== compile checks"
-for c in "gcc -std=c99 -x c" "clang -std=c99 -x c" "g++ -std=c++11 -x c++" "clang++ -std=c++11 -x c++"; do
-  for mode in decl impl; do
-    def=""; [ $mode = impl ] && def=-DCHECK_IMPLEMENTATION
-    name="${c%% *} $mode"
-    if ! command -v "${c%% *}" >/dev/null 2>&1; then echo "  FAIL  $name (compiler not installed)"; fail=$((fail + 1)); continue; fi
-    if out=$($c -Wall -Wextra -pedantic -Werror $def -I. $RAYLIB_CFLAGS -c tests/compile_check.c -o "$BUILD/tests/compile_check.o" 2>&1); then
-      echo "  ok    $name"; pass=$((pass + 1))
-    else
-      echo "  FAIL  $name"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
-    fi
-  done
-done
-
-# The README's code must compile and link as printed: the first ```c block is the drop-in program;
-# every later block is a snippet, compiled as the body of a function given a `Model model` and a `Camera3D camera`
+# The language matrix: the header (declarations; implementation), the README's code and every
+# example compile (and, but for the header checks, link) as C99 with gcc and clang and as C++11, 17,
+# 20 and 23 with g++ and clang++, -Wall -Wextra -pedantic -Werror -O1; two cells at a time
+# (tests/tools/compile_matrix.sh, one cell each).
+# The README's code is extracted as printed: the first ```c block is the drop-in program; every
+# later block is a snippet, compiled as the body of a function given a `Model model` and a `Camera3D camera`
+echo "== language matrix (C99, C++11/17/20/23; gcc, clang, g++, clang++)"
+mkdir -p "$BUILD/tests/matrix"
 awk '/^```c$/{n++; f=1; if (n > 1) print "void readme_snippet_" n "(Model model, Camera3D camera);\nvoid readme_snippet_" n "(Model model, Camera3D camera)\n{\n(void)model; (void)camera;"; next}
      /^```$/{ if (f && n > 1) print "}"; f=0; next } f' README.md > "$BUILD/tests/readme_example.c"
-if out=$(cc -std=c99 -Wall -Wextra -Werror -I. $RAYLIB_CFLAGS "$BUILD/tests/readme_example.c" -o "$BUILD/tests/readme_example" $RAYLIB_LIBS 2>&1); then
-  echo "  ok    README program compiles and links"; pass=$((pass + 1))
-else
-  echo "  FAIL  README program compiles and links"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
-fi
+readme_blocks=$(grep -c '^```c$' README.md)
+if [ "$readme_blocks" -ge 1 ]; then echo "  ok    README: $readme_blocks c blocks extracted"; pass=$((pass + 1))
+else echo "  FAIL  README: no c block extracted"; fail=$((fail + 1)); fi
+jobs=""; n=0
+for unit in header-decl header-impl readme examples/*.c; do
+  for spec in gcc:c99 clang:c99 g++:c++11 g++:c++17 g++:c++20 g++:c++23 clang++:c++11 clang++:c++17 clang++:c++20 clang++:c++23; do
+    n=$((n + 1)); jobs="$jobs$spec $unit $BUILD/tests/matrix/cell$n.txt
+"
+  done
+done
+rm -f "$BUILD"/tests/matrix/cell*.txt
+printf '%s' "$jobs" | BUILD=$BUILD RAYLIB_CFLAGS="$RAYLIB_CFLAGS" RAYLIB_LIBS="$RAYLIB_LIBS" xargs -P 2 -L 1 bash tests/tools/compile_matrix.sh
+for i in $(seq 1 $n); do
+  f=$BUILD/tests/matrix/cell$i.txt
+  if [ -s "$f" ] && head -1 "$f" | grep -q '^ok '; then pass=$((pass + 1)); sed 's/^/  /' "$f"
+  else fail=$((fail + 1)); if [ -s "$f" ]; then sed 's/^/  /' "$f"; else echo "  FAIL  matrix cell $i (no result)"; fi; fi
+done
+
+# CMake: tests/cmake_consumer uses the rbillboard_lit::rbillboard_lit INTERFACE target through
+# add_subdirectory, then FetchContent (local source override), with the raylib build/raylib.mk found;
+# the consumer checks RblGetCameraFrame from a C and a C++ file against raylib's GetCameraMatrix
+echo "== cmake consumer (add_subdirectory, FetchContent)"
+cmake_inc=$(for w in $RAYLIB_CFLAGS; do case $w in -I*) printf '%s;' "${w#-I}" ;; esac; done)
+cmake_libs=$(printf '%s' "$RAYLIB_LIBS" | tr -s ' ' ';')
+for via in add_subdirectory FetchContent; do
+  fc="-DCONSUMER_FETCHCONTENT=OFF"; [ $via = FetchContent ] && fc="-DCONSUMER_FETCHCONTENT=ON -DFETCHCONTENT_SOURCE_DIR_RBILLBOARD_LIT=$PWD"
+  dir=$BUILD/cmake_consumer_$via; rm -rf "$dir"
+  if ! command -v cmake >/dev/null 2>&1; then echo "  FAIL  cmake consumer ($via): cmake not installed"; fail=$((fail + 1)); continue; fi
+  if out=$( { cmake -S tests/cmake_consumer -B "$dir" $fc \
+                -DRAYLIB_INCLUDE_DIR="${cmake_inc%;}" -DRAYLIB_LIBRARIES="$cmake_libs" && cmake --build "$dir" -j 2 && "$dir/consumer"; } 2>&1 ) \
+     && printf '%s\n' "$out" | grep -q '^cmake_consumer: .*: ok$'; then
+    echo "  ok    cmake consumer ($via)"; printf '%s\n' "$out" | grep '^cmake_consumer:' | sed 's/^/    /'; pass=$((pass + 1))
+  else
+    echo "  FAIL  cmake consumer ($via)"; printf '%s\n' "$out" | tail -20; fail=$((fail + 1))
+  fi
+done
+
+# The examples as raylib's own: conventions, the raylib API list, raylib 6.0's examples Makefile
+echo "== raylib examples (conventions, API list, raylib's examples Makefile)"
+out=$(BUILD=$BUILD RAYLIB_CFLAGS="$RAYLIB_CFLAGS" RAYLIB_LIBS="$RAYLIB_LIBS" bash tests/tools/raylib_examples.sh 2>&1); printf '%s\n' "$out"; count "$out"
 
 # The deferred example renders headlessly end to end (G-buffer, 401 lights, resolve, forward glows)
 if out=$("$BUILD/deferred_headless" "$BUILD/deferred.png" "$BUILD/deferred_views.png" 2>&1) && [ -s "$BUILD/deferred.png" ]; then

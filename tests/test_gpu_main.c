@@ -22,6 +22,7 @@
 #include "test_view.c"
 #include "test_shadows.c"
 #include "test_skinning.c"
+#include "test_sprites.c"
 
 int main(int argc, char **argv)
 {
@@ -95,6 +96,10 @@ int main(int argc, char **argv)
         RT_TEST(test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing),
         RT_TEST(test_shadows_hard_cases_stay_finite),
         RT_TEST(test_shadows_pass_restores_the_callers_target_and_matrices),
+        RT_TEST(test_sprites_sorted_translucent_cards_draw_alike_in_any_submission_order),
+        RT_TEST(test_sprites_hybrid_smoke_behind_a_tree_shows_through_its_holes),
+        RT_TEST(test_sprites_bad_sort_settings_are_refused_and_draw_nothing),
+        RT_TEST_GLSL3(test_sprites_instanced_sort_draws_alike_in_any_array_order),
         RT_TEST(test_skinning_lit_model_animates_and_matches_the_cpu_skinned_rendering),
         RT_TEST(test_skinning_shadow_animates_and_matches_the_cpu_skinned_caster),
         RT_TEST(test_skinning_bad_input_is_refused_and_draws_nothing),

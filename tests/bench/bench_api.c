@@ -1,8 +1,8 @@
 // Benchmark suite "api": what the 1.0 API costs in programs, GL calls and public surface (GPU, headless GL).
 //   values_only_materials_16  16 Materials differing only in values (GGX roughness, metalness, albedo
 //                colour) on Shaders from RblLoadLitShader of one desc: registry entries it added.
-//   showcase     examples/billboards_lit_showcase.c (RBL_SHOWCASE_NO_MAIN, as tests/tools/showcase_headless.c)
-//   deferred_example  examples/billboards_lit_deferred.c (RBL_DEFERRED_NO_MAIN, as tests/tools/deferred_headless.c)
+//   showcase     examples/shaders_lit_billboards.c (RBL_SHOWCASE_NO_MAIN, as tests/tools/showcase_headless.c)
+//   deferred_example  examples/shaders_deferred_billboards.c (RBL_DEFERRED_NO_MAIN, as tests/tools/deferred_headless.c)
 //                programs: after init and one frame (frame 0), the live entries (refs > 0) of the header's
 //                program registry rbl__state.programs[], every kind (RBL__KIND_LIT: lit/G-buffer
 //                geometry variants, RBL__KIND_CASTER: shadow casters, RBL__KIND_PASS: G-buffer lighting
@@ -239,10 +239,10 @@ int main(int argc, char **argv)
     #endif
     #if (BENCH_API_PART == 1)
         #define RBL_SHOWCASE_NO_MAIN
-        #include "../../examples/billboards_lit_showcase.c"
+        #include "../../examples/shaders_lit_billboards.c"
     #else
         #define RBL_DEFERRED_NO_MAIN
-        #include "../../examples/billboards_lit_deferred.c"
+        #include "../../examples/shaders_deferred_billboards.c"
     #endif
 #else
     #error "BENCH_API_PART: 1 (showcase) or 2 (deferred)"

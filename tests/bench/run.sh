@@ -32,6 +32,21 @@ echo "== bench_skinning"
 BENCH_CSV="$csv" "$BUILD/bench/bench_skinning"
 
 echo
+echo "== bench_platforms (GL 3.3 core, strict ES 3.0, ES 2.0, GL 2.1)"
+# Cold compilations (what a page or a first run pays): Mesa's on-disk shader cache off
+export MESA_SHADER_CACHE_DISABLE=true
+RBL_TEST_CONTEXT=egl BENCH_CSV="$csv" "$BUILD/bench/bench_platforms_egl"
+MESA_GLES_VERSION_OVERRIDE=3.0 RBL_TEST_CONTEXT=gles3 BENCH_CSV="$csv" "$BUILD/bench/bench_platforms_gles3"
+MESA_GLES_VERSION_OVERRIDE=2.0 RBL_TEST_CONTEXT=gles2 BENCH_CSV="$csv" "$BUILD/bench/bench_platforms_gles2"
+MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120 RBL_TEST_CONTEXT=gl21 BENCH_CSV="$csv" "$BUILD/bench/bench_platforms_gl21"
+# Same machine, same run: the showcase frame time of ES 3 (and the others) over GL 3.3's
+awk -F, '$1 == "platforms" && $3 == "ms_per_frame" { split($2, a, "_"); ms[a[1]] = $4 }
+         END { for (c in ms) if (c != "egl" && ms["egl"] > 0) printf "platforms,showcase_%s_over_gl33,frame_time_ratio,%.3f,x\n", c, ms[c]/ms["egl"] }' "$csv" > "$csv.ratio"
+cat "$csv.ratio" | sed 's/^/  /'
+cat "$csv.ratio" >> "$csv"; rm -f "$csv.ratio"
+unset MESA_SHADER_CACHE_DISABLE
+
+echo
 echo "== bench_api"
 BENCH_CSV="$csv" "$BUILD/bench/bench_api"
 

@@ -1,10 +1,10 @@
-// Headless deferred example: renders examples/billboards_lit_deferred.c offscreen and writes the lit
+// Headless deferred example: renders examples/shaders_deferred_billboards.c offscreen and writes the lit
 // frame and a strip of its debug views as PNGs (README pictures, `make pictures`).
 //   usage: deferred_headless [lit.png] [views.png]
 // Frames are rendered at t = frame/60 s (reproducible); the average frame time covers geometry pass,
 // 401 lights (400 volumes + a full-screen moon) and resolve at 800x450 on this machine's GL.
 #define RBL_DEFERRED_NO_MAIN
-#include "../../examples/billboards_lit_deferred.c"
+#include "../../examples/shaders_deferred_billboards.c"
 #include "harness.h"
 
 #include <stdio.h>

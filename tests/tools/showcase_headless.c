@@ -1,11 +1,11 @@
-// Headless showcase: renders examples/billboards_lit_showcase.c offscreen (EGL surfaceless or
+// Headless showcase: renders examples/shaders_lit_billboards.c offscreen (EGL surfaceless or
 // OSMesa, see tests/harness.h) and writes the last frame as a PNG.
 //   usage: showcase_headless [out.png]      (default build/showcase.png)
 // Frames are rendered at t = frame/60 s, so the picture is reproducible. The first frame is a
 // warm-up (shader compilation happens at first use) and is not timed; the timed frames end with
 // one readback of the target, which waits for the GPU, so the average covers all their work.
 #define RBL_SHOWCASE_NO_MAIN
-#include "../../examples/billboards_lit_showcase.c"
+#include "../../examples/shaders_lit_billboards.c"
 #include "harness.h"
 
 #include <stdio.h>

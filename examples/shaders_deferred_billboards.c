@@ -1,27 +1,19 @@
 /*******************************************************************************************
 *
-*   raylib [models] example - lit billboards, deferred with hundreds of lights
+*   raylib [shaders] example - deferred billboards
 *
 *   Example complexity rating: [★★★☆] 3/4
 *
+*   NOTE: This example requires raylib OpenGL 3.3 and rbillboard_lit.h (single header, beside this file)
+*
 *   Example originally created with raylib 6.0, last time updated with raylib 6.0
 *
-*   Example shows the deferred helper of rbillboard_lit.h: a raylib Model floor, a few sphere
-*   Models and a field of billboard "lanterns" (instanced, rounded normals) go through one
-*   G-buffer (10 bytes per pixel + depth), and 400 small moving coloured point lights are drawn
-*   as light volumes, so each light costs only the pixels it touches. A dim directional
-*   moonlight is a full-screen pass. Glow sprites are drawn forward afterwards, alpha-blended,
-*   and sort against the deferred depth.
-*     - D cycles the debug views (lit, albedo, normal, roughness, occlusion, depth, position,
-*       lights per pixel), N toggles the naive full-screen light loop for comparison,
-*       SPACE pauses the lights.
-*   If the G-buffer cannot be created (no MRT / float targets), the same scene is drawn with
-*   the forward lit shader and the first 63 point lights plus the moon.
-*   Lit programs hold compiled features only: the floor, the spheres and the lanterns differ in
-*   values (roughness, emission) kept in their raylib Materials, so the floor and the spheres share
-*   one program and the lanterns use its instanced twin; lights, ambient and fog are the frame's
-*   RblScene. Only the path in use is compiled: two geometry-pass programs (or, without a
-*   G-buffer, two forward ones).
+*   Example shows the deferred helper of rbillboard_lit.h: a Model floor, sphere Models and 48
+*   instanced billboard "lanterns" (rounded normals) go through one G-buffer (10 bytes per pixel
+*   + depth); 400 moving point lights are drawn as light volumes (each costs only the pixels it
+*   touches) and a moonlight full screen; glow sprites are drawn forward after the resolve.
+*   D cycles the debug views, N toggles the naive full-screen light loop, SPACE pauses the lights.
+*   Without MRT / float targets the scene is drawn forward with 63 point lights and the moon.
 *
 *   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
 *   BSD-like license that allows static linking with closed source software
@@ -49,25 +41,25 @@
 //----------------------------------------------------------------------------------
 // Global Variables Definition
 //----------------------------------------------------------------------------------
-static Camera3D deferredCamera = { 0 };
+static Camera3D deferredCamera;
 static const Color deferredBackground = { 10, 12, 20, 255 };
 static const Color deferredAmbient = { 14, 16, 26, 255 };
 
-static RblGBuffer gbuffer = { 0 };
+static RblGBuffer gbuffer;
 static bool deferredValid = false;
-static RblScene deferredScene = { 0 };          // Lights, ambient and fog of every frame
-static Shader sceneShader = { 0 };              // Floor and spheres: G-buffer variant (desc.deferred), or forward without one
-static Shader lanternShader = { 0 };            // Lanterns: the same variant, instanced
-static Model floorModel = { 0 };
-static Model sphereModel = { 0 };
-static Texture2D floorTexture = { 0 };
-static Texture2D lanternTexture = { 0 };
-static Texture2D glowTexture = { 0 };
-static Material lanternMaterial = { 0 };
-static RblInstanceBuffer lanternBuffer = { 0 };
-static RblInstance lanterns[LANTERN_ROWS*LANTERN_COLUMNS] = { 0 };
-static RblLight deferredLights[DEFERRED_LIGHTS + 1] = { 0 };   // + moonlight
-static float lightPhase[DEFERRED_LIGHTS] = { 0 };
+static RblScene deferredScene;          // Lights, ambient and fog of every frame
+static Shader sceneShader;              // Floor and spheres: G-buffer variant (desc.deferred), or forward without one
+static Shader lanternShader;            // Lanterns: the same variant, instanced
+static Model floorModel;
+static Model sphereModel;
+static Texture2D floorTexture;
+static Texture2D lanternTexture;
+static Texture2D glowTexture;
+static Material lanternMaterial;
+static RblInstanceBuffer lanternBuffer;
+static RblInstance lanterns[LANTERN_ROWS*LANTERN_COLUMNS];
+static RblLight deferredLights[DEFERRED_LIGHTS + 1];   // + moonlight
+static float lightPhase[DEFERRED_LIGHTS];
 
 //----------------------------------------------------------------------------------
 // Module Functions Declaration
@@ -89,7 +81,7 @@ int main(void)
     const int screenWidth = 800;
     const int screenHeight = 450;
 
-    InitWindow(screenWidth, screenHeight, "raylib [models] example - lit billboards, deferred");
+    InitWindow(screenWidth, screenHeight, "raylib [shaders] example - deferred billboards");
 
     DeferredInit(GetRenderWidth(), GetRenderHeight());
 
@@ -146,9 +138,9 @@ int main(void)
 //----------------------------------------------------------------------------------
 static void DeferredInit(int width, int height)
 {
-    deferredCamera.position = (Vector3){ 9.0f, 6.0f, 9.0f };
-    deferredCamera.target = (Vector3){ 0.0f, 0.5f, 0.0f };
-    deferredCamera.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    deferredCamera.position = CLITERAL(Vector3){ 9.0f, 6.0f, 9.0f };
+    deferredCamera.target = CLITERAL(Vector3){ 0.0f, 0.5f, 0.0f };
+    deferredCamera.up = CLITERAL(Vector3){ 0.0f, 1.0f, 0.0f };
     deferredCamera.fovy = 45.0f;
     deferredCamera.projection = CAMERA_PERSPECTIVE;
 
@@ -163,8 +155,8 @@ static void DeferredInit(int width, int height)
     }
     RblLight *moon = &deferredLights[DEFERRED_LIGHTS];
     moon->type = RBL_LIGHT_DIRECTIONAL;
-    moon->direction = (Vector3){ -0.4f, -1.0f, -0.3f };
-    moon->color = (Color){ 120, 140, 255, 255 };
+    moon->direction = CLITERAL(Vector3){ -0.4f, -1.0f, -0.3f };
+    moon->color = CLITERAL(Color){ 120, 140, 255, 255 };
     moon->intensity = 0.15f;
     DeferredUpdate(0.0f);
 
@@ -172,10 +164,10 @@ static void DeferredInit(int width, int height)
     deferredScene.lights = deferredLights;
     deferredScene.lightCount = DEFERRED_LIGHTS + 1;
     deferredScene.ambient = deferredAmbient;
-    deferredScene.fog = (RblFog){ RBL_FOG_EXP2, deferredBackground, 0.0f, 0.0f, 0.03f };
+    deferredScene.fog = CLITERAL(RblFog){ RBL_FOG_EXP2, deferredBackground, 0.0f, 0.0f, 0.03f };
 
     // One shading description for the lighting passes: GGX, ACES, exp2 fog
-    RblGBufferDesc shading = { 0 };
+    RblGBufferDesc shading = RBL_ZERO;
     shading.width = width;
     shading.height = height;
     shading.brdf = RBL_BRDF_GGX;
@@ -186,7 +178,7 @@ static void DeferredInit(int width, int height)
     deferredValid = RblIsGBufferValid(&gbuffer);
 
     // Programs: geometry-pass variants of the G-buffer's BRDF, or forward ones when there is no G-buffer
-    RblLitShaderDesc desc = { 0 };
+    RblLitShaderDesc desc = RBL_ZERO;
     desc.brdf = shading.brdf;
     desc.lightFeatures = shading.lightFeatures;
     desc.tonemap = shading.tonemap;
@@ -197,7 +189,7 @@ static void DeferredInit(int width, int height)
     desc.instanced = true;
     lanternShader = RblLoadLitShader(desc);
 
-    Image checker = GenImageChecked(256, 256, 32, 32, (Color){ 120, 120, 126, 255 }, (Color){ 90, 90, 98, 255 });
+    Image checker = GenImageChecked(256, 256, 32, 32, CLITERAL(Color){ 120, 120, 126, 255 }, CLITERAL(Color){ 90, 90, 98, 255 });
     floorTexture = LoadTextureFromImage(checker);
     UnloadImage(checker);
     GenTextureMipmaps(&floorTexture);
@@ -209,24 +201,24 @@ static void DeferredInit(int width, int height)
 
     // Lantern sprite: a rounded cut-out (alpha-tested in the G-buffer), lit as a ball by rounded normals
     Image lantern = GenImageColor(64, 64, BLANK);
-    ImageDrawCircle(&lantern, 32, 32, 30, (Color){ 230, 210, 170, 255 });
-    ImageDrawCircle(&lantern, 32, 32, 18, (Color){ 250, 240, 220, 255 });
+    ImageDrawCircle(&lantern, 32, 32, 30, CLITERAL(Color){ 230, 210, 170, 255 });
+    ImageDrawCircle(&lantern, 32, 32, 18, CLITERAL(Color){ 250, 240, 220, 255 });
     lanternTexture = LoadTextureFromImage(lantern);
     UnloadImage(lantern);
     lanternMaterial = LoadMaterialDefault();
     lanternMaterial.maps[MATERIAL_MAP_ALBEDO].texture = lanternTexture;
     lanternMaterial.maps[MATERIAL_MAP_ROUGHNESS].value = 0.6f;
-    lanternMaterial.maps[MATERIAL_MAP_EMISSION].color = (Color){ 40, 24, 8, 255 };   // A faint glow of their own
+    lanternMaterial.maps[MATERIAL_MAP_EMISSION].color = CLITERAL(Color){ 40, 24, 8, 255 };   // A faint glow of their own
     for (int i = 0; i < LANTERN_ROWS*LANTERN_COLUMNS; i++)
     {
-        lanterns[i].position = (Vector3){ -7.0f + 2.0f*(float)(i%LANTERN_COLUMNS), 0.0f, -5.0f + 2.0f*(float)(i/LANTERN_COLUMNS) };
-        lanterns[i].size = (Vector2){ 0.8f, 0.8f };
-        lanterns[i].origin = (Vector2){ 0.4f, 0.0f };               // Stands on the floor
+        lanterns[i].position = CLITERAL(Vector3){ -7.0f + 2.0f*(float)(i%LANTERN_COLUMNS), 0.0f, -5.0f + 2.0f*(float)(i/LANTERN_COLUMNS) };
+        lanterns[i].size = CLITERAL(Vector2){ 0.8f, 0.8f };
+        lanterns[i].origin = CLITERAL(Vector2){ 0.4f, 0.0f };               // Stands on the floor
     }
     lanternBuffer = RblLoadInstanceBuffer(LANTERN_ROWS*LANTERN_COLUMNS);
 
     // Glow sprites, drawn forward and alpha-blended after the resolve (they sort against its depth)
-    Image glow = GenImageGradientRadial(32, 32, 0.0f, (Color){ 255, 255, 255, 160 }, BLANK);
+    Image glow = GenImageGradientRadial(32, 32, 0.0f, CLITERAL(Color){ 255, 255, 255, 160 }, BLANK);
     glowTexture = LoadTextureFromImage(glow);
     UnloadImage(glow);
 }
@@ -237,7 +229,7 @@ static void DeferredUpdate(float time)
     for (int i = 0; i < DEFERRED_LIGHTS; i++)
     {
         float p = lightPhase[i], speed = 0.15f + 0.05f*(float)(i%5);
-        deferredLights[i].position = (Vector3){ 10.0f*sinf(speed*time*1.3f + p), 0.25f + 0.2f*(float)(i%3), 10.0f*cosf(speed*time + 1.7f*p) };
+        deferredLights[i].position = CLITERAL(Vector3){ 10.0f*sinf(speed*time*1.3f + p), 0.25f + 0.2f*(float)(i%3), 10.0f*cosf(speed*time + 1.7f*p) };
     }
 }
 
@@ -246,13 +238,13 @@ static void DrawScene(Material floorMaterial, Material sphereMaterial, Material 
 {
     Shader keepShader = floorModel.materials[0].shader;  // raylib's default: UnloadModel leaves it alone
     floorModel.materials[0].shader = floorMaterial.shader;
-    RblDrawModel(floorModel, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    RblDrawModel(floorModel, CLITERAL(Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
     floorModel.materials[0].shader = keepShader;
     Material keep = sphereModel.materials[0];
     sphereModel.materials[0] = sphereMaterial;
-    for (int i = 0; i < SPHERE_COUNT; i++) RblDrawModel(sphereModel, (Vector3){ -6.0f + 3.0f*(float)i, 0.6f, 3.0f }, 1.0f, WHITE);
+    for (int i = 0; i < SPHERE_COUNT; i++) RblDrawModel(sphereModel, CLITERAL(Vector3){ -6.0f + 3.0f*(float)i, 0.6f, 3.0f }, 1.0f, WHITE);
     sphereModel.materials[0] = keep;
-    RblInstancedDesc desc = { 0 };
+    RblInstancedDesc desc = RBL_ZERO;
     desc.facing = RBL_FACING_AXIS;                      // Upright, turning toward the camera
     desc.roundness = 1.0f;                              // Lit like a ball
     RblDrawInstanced(&lanternBuffer, deferredCamera, lanternMat, desc, lanterns, LANTERN_ROWS*LANTERN_COLUMNS);

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# One cell of the language matrix tests/run.sh runs: compile and link one unit as C99 or C++11..23
+# with -Wall -Wextra -pedantic -Werror -O1 (optimised: some warnings, -Wmaybe-uninitialized among them,
+# only exist with the optimiser), writing "ok    <label>" or "FAIL  <label>" + the compiler's first
+# lines to $3.
+#   usage: compile_matrix.sh <compiler>:<std> <unit> <out-file>
+#   unit: header-decl | header-impl | readme | an example .c file
+#   env:  BUILD, RAYLIB_CFLAGS, RAYLIB_LIBS
+set -u
+spec=$1 unit=$2 out=$3
+cc=${spec%%:*} std=${spec#*:}
+BUILD=${BUILD:-build}
+lang=c; case $std in c++*) lang=c++ ;; esac
+label="$cc -std=$std $unit"
+dir=$BUILD/tests/matrix; mkdir -p "$dir"
+obj=$dir/$(echo "$cc-$std-$unit" | tr '/+.' '_px')
+
+if ! command -v "$cc" >/dev/null 2>&1; then printf 'FAIL  %s (compiler not installed)\n' "$label" > "$out"; exit 0; fi
+# clang 14 (Debian 12) knows C++23 as c++2b only
+if [ "$std" = c++23 ] && ! echo 'int x;' | "$cc" -std=c++23 -x c++ -fsyntax-only - >/dev/null 2>&1; then
+  std=c++2b; label="$label (as c++2b)"
+fi
+flags="-std=$std -x $lang -Wall -Wextra -pedantic -Werror -O1 -I. $RAYLIB_CFLAGS"
+[ $lang = c ] && flags="$flags -D_DEFAULT_SOURCE"      # as the Makefile's C builds (clock_gettime etc.)
+case $unit in
+  header-decl) cmd="$cc $flags -c tests/compile_check.c -o $obj.o" ;;
+  header-impl) cmd="$cc $flags -DCHECK_IMPLEMENTATION -c tests/compile_check.c -o $obj.o" ;;
+  readme)      cmd="$cc $flags $BUILD/tests/readme_example.c -x none -o $obj $RAYLIB_LIBS" ;;
+  *)           cmd="$cc $flags $unit -x none -o $obj $RAYLIB_LIBS" ;;
+esac
+if log=$($cmd 2>&1); then printf 'ok    %s\n' "$label" > "$out"
+else { printf 'FAIL  %s\n' "$label"; printf '%s\n' "$log" | head -12 | sed 's/^/        /'; } > "$out"; fi
+rm -f "$obj" "$obj.o"
