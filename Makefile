@@ -103,7 +103,7 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless
+test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/web/test/test_web.js
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------

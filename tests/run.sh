@@ -10,6 +10,7 @@
 #   alloc:          RBL_MALLOC family failing at the Nth call, swept over N on every allocating path
 #   gpu:            render tests under EGL surfaceless, then under OSMesa (GL 3.3 core), then on
 #                   strict ES 3.0, ES 2.0 and GL 2.1 contexts with raylib built for each
+#   web:            the browser subset in headless Chromium (make test-web alone runs just this)
 set -u
 BUILD=${BUILD:-build}
 pass=0; fail=0
@@ -120,6 +121,10 @@ for ctx in gles3 gles2 gl21; do
   esac
   out=$(env $env RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu_$ctx" 2>&1); printf '%s\n' "$out"; count "$out"
 done
+
+# The browser: the GPU subset built with emscripten, in headless Chromium (WebGL2 on SwiftShader)
+echo "== test_web (headless Chromium over 127.0.0.1, WebGL2 on SwiftShader; tests/web/)"
+out=$(python3 tests/web/run.py test "$BUILD/web/test" 2>&1); printf '%s\n' "$out"; count "$out"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
