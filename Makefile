@@ -185,7 +185,11 @@ $(BUILD)/bench/bench_platforms_gl21: $(PF_DEPS) $(BUILD)/raylib-gl21/libraylib.a
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
 
-bench: $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
+$(BUILD)/bench/bench_blend: tests/bench/bench_blend.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_blend.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

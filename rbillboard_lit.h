@@ -517,6 +517,9 @@
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
 #endif
+#ifndef RBL_SCENE_DEPTH_TEXTURE_UNIT
+    #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11     // The scene depth soft particles read (RblScene.depth)
+#endif
 #ifndef RBL_SHADOW_TEXTURE_UNIT
     #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's materials use 0..11)
 #endif
@@ -663,6 +666,7 @@ typedef struct RblMaterialSource {
     const Rectangle *frames;        // Atlas frames whose edge texels are dilated into the gutters (NULL = none)
     int frameCount;                 // Number of frames
     bool mipmaps;                   // Build mip chains (normals renormalised, colour averaged in linear light)
+    float alphaCoverage;            // With mipmaps: keep the share of texels at or above this alpha cutoff on every level (0 = off)
 } RblMaterialSource;
 
 // Packing output (CPU Images; upload with LoadTextureFromImage or RblLoadPackedTextures)
@@ -766,6 +770,7 @@ typedef struct RblLitShaderDesc {
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
+    bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
@@ -783,7 +788,8 @@ typedef struct RblLitShaderDesc {
 // Blinn-Phong intensity has a params slot of its own)
 typedef enum {
     RBL_PARAM_ALPHA_CUTOFF = 0,     // Material.params index of the alpha cutoff
-    RBL_PARAM_SPECULAR = 1          // Material.params index of the Blinn-Phong specular intensity
+    RBL_PARAM_SPECULAR = 1,         // Material.params index of the Blinn-Phong specular intensity
+    RBL_PARAM_SOFT_DISTANCE = 2     // Material.params index of the soft-particle fade distance (world units; 0 = 0.5)
 } RblMaterialParam;
 
 // Deferred debug views (RblSetGBufferOutput)
@@ -861,6 +867,7 @@ typedef struct RblScene {
     float exposure;                 // Radiance scale before the tonemap (0 = 1)
     const RblShadowMap *shadowMaps;  // Maps rendered this frame for lights of this scene (RblBeginShadowMap)
     int shadowMapCount;             // At most RBL_MAX_SHADOWS
+    Texture2D depth;                // Opaque scene depth for soft particles: RblLoadSceneTarget's .depth or a G-buffer's (id 0 = none)
 } RblScene;
 
 #if defined(__cplusplus)
@@ -913,6 +920,7 @@ RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      //
 
 // Deferred G-buffer
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
+RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
 RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
@@ -985,6 +993,7 @@ typedef enum {
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
+    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1136,6 +1145,7 @@ typedef struct rbl__Scene {
     int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
     float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix, params, bias, axes as shadows.glsl reads them
+    Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
@@ -1844,6 +1854,7 @@ static const char *const rbl__shader_lit_fs[] = {
     "#include \"material.glsl\"\n",
     "#include \"lights.glsl\"\n",
     "#include \"output.glsl\"\n",
+    "#include \"soft.glsl\"\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
     "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
@@ -1858,6 +1869,9 @@ static const char *const rbl__shader_lit_fs[] = {
     "    float alpha;\n",
     "    vec3 emission, tangentNormal;\n",
     "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
+    "#ifdef RBL_SOFT_PARTICLES\n",
+    "    alpha *= rblSoftFade();\n",
+    "#endif\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "    vec3 v = rblViewVector(fragEye, fragViewAxis, fragPosition, sp.normal);\n",
     "    float viewDistance = rblViewDistance(fragEye, fragViewAxis, fragPosition);\n",
@@ -2538,6 +2552,35 @@ static const char *const rbl__shader_skinning[] = {
     "}\n",
     "#endif\n",
     NULL };
+static const char *const rbl__shader_soft[] = {
+    "// Soft particles: a blended billboard fades where it meets the opaque scene behind it, by the depth\n",
+    "// distance between the two (RblScene.depth: a RblLoadSceneTarget's or a G-buffer's depth texture,\n",
+    "// the same size as the target drawn into). No depth texture in the scene: no fade.\n",
+    "//   RBL_SOFT_PARTICLES         compiled in (RblLitShaderDesc.softParticles)\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "#ifdef RBL_SOFT_PARTICLES\n",
+    "uniform sampler2D rblSceneDepth;    // texture unit RBL_SCENE_DEPTH_TEXTURE_UNIT\n",
+    "uniform vec4 rblSoftDepth;          // projection m10, m14, orthographic (0/1; -1 = no scene depth), fade distance (world units)\n",
+    "uniform vec2 rblSoftDepthTexel;     // 1/width, 1/height of the scene depth\n",
+    "\n",
+    "// Distance in front of the camera of a window depth d (0..1), from the projection's depth row\n",
+    "float rblViewDepth(float d)\n",
+    "{\n",
+    "    float ndc = d*2.0 - 1.0;\n",
+    "    return (rblSoftDepth.z > 0.5)? (rblSoftDepth.y - ndc)/rblSoftDepth.x : rblSoftDepth.y/(ndc + rblSoftDepth.x);\n",
+    "}\n",
+    "\n",
+    "// 0 where the fragment lies on or behind the scene's surface, 1 a fade distance or more in front\n",
+    "float rblSoftFade()\n",
+    "{\n",
+    "    if (rblSoftDepth.z < -0.5) return 1.0;\n",
+    "    float scene = rblViewDepth(texture(rblSceneDepth, gl_FragCoord.xy*rblSoftDepthTexel).r);\n",
+    "    float self = rblViewDepth(gl_FragCoord.z);\n",
+    "    return clamp((scene - self)/rblSoftDepth.w, 0.0, 1.0);\n",
+    "}\n",
+    "#endif\n",
+    NULL };
 static const char *const rbl__shader_surface[] = {
     "// Surface: what a shaded point is, in linear units. Filled by the material decode (material.glsl)\n",
     "// in forward and geometry passes, or from the G-buffer (gbuffer_read.glsl) in the deferred passes;\n",
@@ -2601,6 +2644,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
     { "shadows.glsl", rbl__shader_shadows },
     { "skinning.glsl", rbl__shader_skinning },
+    { "soft.glsl", rbl__shader_soft },
     { "surface.glsl", rbl__shader_surface },
     { "volume.vs.glsl", rbl__shader_volume_vs },
 };
@@ -2613,7 +2657,7 @@ static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
 static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
 static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
@@ -4376,6 +4420,48 @@ static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char
     }
 }
 
+// Alpha-tested coverage: the 8-bit threshold that passes a cutoff (texels with a/255 >= cutoff)
+static int rbl__alphaThreshold(float cutoff) { int t = (int)ceil(cutoff*255.0 - 1e-9); return (t < 1)? 1 : ((t > 255)? 255 : t); }
+
+// Texels of an RGBA8 level whose alpha passes the cutoff
+static long long rbl__alphaCoverage(const unsigned char *rgba, size_t n, float cutoff)
+{
+    int t = rbl__alphaThreshold(cutoff);
+    long long covered = 0;
+    for (size_t i = 0; i < n; i++) covered += (rgba[i*4 + 3] >= t);
+    return covered;
+}
+
+// Scales a level's alpha so that the share of texels passing the cutoff is level 0's (Castano,
+// "Computing alpha mipmaps", 2010): without it, averaging thins alpha-tested foliage and fences
+// level by level. With a' = min(255, round(a s)), exactly the texels with a >= k pass, for the k whose
+// boundary s maps onto the threshold: the histogram gives every reachable share, the closest to the
+// target is kept, and s puts k - 1/2 on t - 1/2 (between the two roundings). Colour is untouched.
+static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, double share0)
+{
+    size_t hist[256] = { 0 };
+    for (size_t i = 0; i < n; i++) hist[rgba[i*4 + 3]]++;
+    const int t = rbl__alphaThreshold(cutoff);
+    const double want = share0*(double)n;
+    size_t atLeast = 0;             // texels with alpha >= k, k from 255 down
+    int bestK = t;
+    double bestErr = -1.0;
+    for (int k = 255; k >= 1; k--)
+    {
+        atLeast += hist[k];
+        double err = fabs((double)atLeast - want);
+        // Ties: the k nearest the threshold (the smallest change of alpha)
+        if ((bestErr < 0.0) || (err < bestErr) || ((err == bestErr) && (abs(k - t) < abs(bestK - t)))) { bestErr = err; bestK = k; }
+    }
+    if (bestK == t) return;         // already the closest share: alpha unchanged
+    const double scale = ((double)t - 0.5)/((double)bestK - 0.5);
+    for (size_t i = 0; i < n; i++)
+    {
+        double a = floor(rgba[i*4 + 3]*scale + 0.5);
+        rgba[i*4 + 3] = (unsigned char)((a > 255.0)? 255.0 : a);
+    }
+}
+
 // Linear mip level of a one-channel image (emissive mask)
 static void rbl__downsampleLinear1(const unsigned char *src, int sw, unsigned char *dst, int dw, int dh,
                                    const rbl__Taps *tx, const rbl__Taps *ty)
@@ -4551,6 +4637,11 @@ static bool rbl__validateMaterialSource(const RblMaterialSource *s)
         !rbl__checkMap(s->specular, "specular", albedo->width, albedo->height) ||
         !rbl__checkMap(s->occlusion, "occlusion", albedo->width, albedo->height) ||
         !rbl__checkMap(s->emissive, "emissive", albedo->width, albedo->height)) return false;
+    if (!rbl__finite(s->alphaCoverage) || (s->alphaCoverage < 0.0f) || (s->alphaCoverage >= 1.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblPackMaterial: alphaCoverage %g outside 0..1 (0 = off)", s->alphaCoverage);
+        return false;
+    }
     int encoding = (s->normalEncoding == RBL_NORMAL_NONE)? RBL_NORMAL_HEMIOCT : s->normalEncoding;
     if ((encoding != RBL_NORMAL_HEMIOCT) && (encoding != RBL_NORMAL_XY) && (encoding != RBL_NORMAL_RGB))
     {
@@ -4712,6 +4803,7 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
         }
 
         // Levels 1.. from the level above; gutters dilated on every level
+        double coverageTarget = -1.0;       // share of level 0's texels at or above the coverage cutoff (-1 = off)
         rbl__Srgb srgb;
         rbl__initSrgb(&srgb);
         const int emissiveBpp = emissiveMask? 1 : 4;
@@ -4724,6 +4816,8 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
             unsigned char *emissiveLevel = hasEmissive? (unsigned char *)out.emissive.data + offset*(size_t)emissiveBpp : NULL;
             if (l > 0)
             {
+                // The level above is no longer a source once this one is built from it: scale it now
+                if ((l > 1) && coverageTarget >= 0.0) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget);
                 rbl__Taps *tx = taps, *ty = taps + w;
                 rbl__mipTaps(pw, w, tx);
                 rbl__mipTaps(ph, h, ty);
@@ -4743,6 +4837,8 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
                 if (hasMaterial) rbl__applyDilation(materialLevel, 4, nearest, n);
                 if (hasEmissive) rbl__applyDilation(emissiveLevel, emissiveBpp, nearest, n);
             }
+            // Level 0's coverage is every level's target (measured after its gutters are dilated)
+            if ((l == 0) && (source->alphaCoverage > 0.0f) && (levels > 1)) coverageTarget = (double)rbl__alphaCoverage(albedoLevel, (size_t)w*(size_t)h, source->alphaCoverage)/((double)w*(double)h);
             prevOffset = offset;
             offset += (size_t)w*(size_t)h;
             pw = w;
@@ -4750,6 +4846,7 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
             w = (w > 1)? w/2 : 1;
             h = (h > 1)? h/2 : 1;
         }
+        if ((levels > 1) && (coverageTarget >= 0.0)) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget);
 
         out.layout.normalEncoding = hasNormal? encoding : RBL_NORMAL_NONE;
         out.layout.specular = hasSpecular;
@@ -5042,7 +5139,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -5067,6 +5164,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
+    if (in.softParticles && in.deferred) return "soft particles blend: a forward variant, not a G-buffer one";
     if (in.skinning && !RBL_GPU_SKINNING) return "skinning needs raylib built with SUPPORT_GPU_SKINNING (then define RBL_GPU_SKINNING 1 before the header)";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
@@ -5084,6 +5182,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->instanced = in.instanced;
     out->deferred = in.deferred;
     out->skinning = in.skinning;
+    out->softParticles = in.softParticles;
     out->debugOutput = in.debugOutput;
     if (in.deferred)
     {
@@ -5111,6 +5210,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
                      view? "#define RBL_VIEW_VECTOR\n" : "", d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
     if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
     if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
+    if ((n > 0) && ((size_t)n < size) && d->softParticles) n += snprintf(out + n, size - (size_t)n, "#define RBL_SOFT_PARTICLES\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -5211,6 +5311,11 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     // cut: the alpha band's ceiling is above every alpha
     float band[2] = { 0.0f, 2.0f };
     if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
+    if (d->softParticles)
+    {
+        int unit = RBL_SCENE_DEPTH_TEXTURE_UNIT;
+        rlSetUniform(rlGetLocationUniform(shader.id, "rblSceneDepth"), &unit, SHADER_UNIFORM_INT, 1);
+    }
     // Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed
     // until a scene gives a map (an unbound sampler would read depth 0 and darken everything)
     for (int k = 0; k < d->shadowMaps; k++)
@@ -5478,6 +5583,24 @@ static rbl__Program *rbl__skinnedCaster(void)
     return caster;
 }
 
+// A soft-particle program's per-draw depth inputs: the scene's depth texture on its unit, the current
+// projection's depth row (as the fragment's own depth was made), its texel size and the material's
+// fade distance
+static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
+{
+    const rbl__Scene *sc = &rbl__state.scene;
+    Matrix proj = rlGetMatrixProjection();
+    float fade = material->params[RBL_PARAM_SOFT_DISTANCE];
+    if (!rbl__finite(fade) || (fade <= 0.0f)) fade = 0.5f;
+    bool ortho = (proj.m3 == 0.0f) && (proj.m7 == 0.0f) && (proj.m11 == 0.0f) && (proj.m15 != 0.0f);
+    float depth[4] = { proj.m10, proj.m14, (sc->depth.id == 0)? -1.0f : (ortho? 1.0f : 0.0f), fade };
+    float texel[2] = { (sc->depth.width > 0)? 1.0f/(float)sc->depth.width : 1.0f, (sc->depth.height > 0)? 1.0f/(float)sc->depth.height : 1.0f };
+    rlEnableShader(p->shader.id);
+    rlSetUniform(p->loc[RBL__U_SOFT_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
+    rlSetUniform(p->loc[RBL__U_SOFT_TEXEL], texel, SHADER_UNIFORM_VEC2, 1);
+    if (sc->depth.id != 0) { rlActiveTextureSlot(RBL_SCENE_DEPTH_TEXTURE_UNIT); rlEnableTexture(sc->depth.id); rlActiveTextureSlot(0); }
+}
+
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program)
 {
     const char *bad = rbl__materialProblem(material, path, program);
@@ -5494,6 +5617,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         material->shader = caster->shader;
         *program = caster;
     }
+    else if ((*program != NULL) && (*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     return true;
 }
 
@@ -5665,6 +5789,8 @@ bool RblSetScene(const RblScene *scene)
     else if ((scene->fog.mode == RBL_FOG_LINEAR) && !(scene->fog.end > scene->fog.start)) bad = "linear fog needs end > start";
     else if (!rbl__finiteNonNegative(scene->exposure)) bad = "exposure negative or not finite";
     else if (!rbl__finite3(scene->ambientUp) || ((rbl__len2(scene->ambientUp) != 0.0f) && !rbl__normalizeTo(scene->ambientUp, &up))) bad = "ambientUp not a finite direction";
+    else if ((scene->depth.id != 0) && ((scene->depth.width <= 0) || (scene->depth.height <= 0) || (scene->depth.width > RBL_MAX_TARGET_SIZE) || (scene->depth.height > RBL_MAX_TARGET_SIZE)))
+        bad = "depth texture size outside 1..RBL_MAX_TARGET_SIZE";
     else bad = rbl__checkShadowMaps(scene->shadowMaps, scene->shadowMapCount, scene->lightCount);
     rbl__Scene *s = &rbl__state.scene;
     // Packed storage grows to the largest scene (no allocation in a steady frame)
@@ -5725,6 +5851,7 @@ bool RblSetScene(const RblScene *scene)
     s->fog[3] = (fog->mode == RBL_FOG_NONE)? 0.0f : ((fog->mode == RBL_FOG_LINEAR)? 1.0f/(fog->end - fog->start) : fog->density);
     s->fogStart = (fog->mode == RBL_FOG_NONE)? 0.0f : fog->start;
     s->exposure = (scene->exposure == 0.0f)? 1.0f : scene->exposure;
+    s->depth = scene->depth;
     s->shadowCount = scene->shadowMapCount;
     for (int k = 0; k < scene->shadowMapCount; k++)
     {
@@ -6071,6 +6198,44 @@ static void rbl__releasePasses(RblGBuffer *g)
 {
     for (int p = 0; p < RBL__PASS_COUNT; p++) if (g->state->passes[p] != 0) rbl__releaseProgram(g->state->passes[p], RBL__KIND_PASS);
     memset(g->state->passes, 0, sizeof(g->state->passes));
+}
+
+RenderTexture2D RblLoadSceneTarget(int width, int height)
+{
+    RenderTexture2D t;
+    memset(&t, 0, sizeof(t));
+    if ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
+        return t;
+    }
+    unsigned int callerTarget = rlGetActiveFramebuffer();
+    t.id = rlLoadFramebuffer();
+    t.texture.id = rlLoadTexture(NULL, width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
+    t.texture.width = width; t.texture.height = height; t.texture.mipmaps = 1; t.texture.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
+    // A texture, not raylib's renderbuffer, so the depth can be sampled (nearest: one texel per pixel)
+    t.depth.id = rlLoadTextureDepth(width, height, false);
+    t.depth.width = width; t.depth.height = height; t.depth.mipmaps = 1; t.depth.format = 19;   // as raylib marks depth textures
+    bool ok = (t.id != 0) && (t.texture.id != 0) && (t.depth.id != 0), attached = false;
+    if (ok)
+    {
+        attached = true;
+        rlTextureParameters(t.depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlTextureParameters(t.depth.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlFramebufferAttach(t.id, t.texture.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlFramebufferAttach(t.id, t.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        ok = rlFramebufferComplete(t.id);
+    }
+    rbl__restoreTarget(callerTarget);
+    if (!ok)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
+        if (t.id != 0) rlUnloadFramebuffer(t.id);       // deletes an attached depth texture
+        if (!attached && (t.depth.id != 0)) rlUnloadTexture(t.depth.id);
+        if (t.texture.id != 0) rlUnloadTexture(t.texture.id);
+        memset(&t, 0, sizeof(t));
+    }
+    return t;
 }
 
 RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)

@@ -3,6 +3,7 @@
 #include "material.glsl"
 #include "lights.glsl"
 #include "output.glsl"
+#include "soft.glsl"
 //   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
 //   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 
@@ -17,6 +18,9 @@ void main()
     float alpha;
     vec3 emission, tangentNormal;
     RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);
+#ifdef RBL_SOFT_PARTICLES
+    alpha *= rblSoftFade();
+#endif
 #ifdef RBL_VIEW_VECTOR
     vec3 v = rblViewVector(fragEye, fragViewAxis, fragPosition, sp.normal);
     float viewDistance = rblViewDistance(fragEye, fragViewAxis, fragPosition);

@@ -1002,6 +1002,26 @@ static void c_gbuffer_extreme_lights_stay_finite(void)
     RblUnloadGBuffer(&g);
 }
 
+// ---- cases: scene targets (soft particles) --------------------------------------------------------
+static void c_scene_target(void)
+{
+    RenderTexture2D t;
+    int sizes[6][2] = { { 0, 16 }, { 16, 0 }, { -1, 16 }, { RBL_MAX_TARGET_SIZE + 1, 16 }, { 16, 1 << 30 }, { -2147483647 - 1, 16 } };
+    for (int i = 0; i < 6; i++) EXPECT_REFUSED((t = RblLoadSceneTarget(sizes[i][0], sizes[i][1]), t.id != 0));
+    // A good one: a colour texture, a depth texture, complete; raylib's UnloadRenderTexture frees it all
+    warnings = 0;
+    t = RblLoadSceneTarget(32, 16);
+    ck((warnings == 0) && (t.id != 0) && (t.texture.id != 0) && (t.depth.id != 0) && (t.texture.width == 32) && (t.depth.height == 16),
+       "RblLoadSceneTarget(32, 16): id %u, texture %u, depth %u, %d log lines", t.id, t.texture.id, t.depth.id, warnings);
+    UnloadRenderTexture(t);
+    // The scene's depth field: a bad size is refused with one line, the previous scene kept
+    RblScene scene; memset(&scene, 0, sizeof(scene));
+    scene.depth.id = 1; scene.depth.width = -4; scene.depth.height = 4;
+    EXPECT_REFUSED(RblSetScene(&scene));
+    scene.depth.width = RBL_MAX_TARGET_SIZE + 1;
+    EXPECT_REFUSED(RblSetScene(&scene));
+}
+
 // ---- cases: shadows -------------------------------------------------------------------------------
 static void c_shadow_load(void)
 {
@@ -1109,6 +1129,7 @@ static const Case cases[] = {
     { "RblDrawBillboard", "bad camera, materials, variants", c_draw_billboard },
     { "RblClose", "twice", c_close_twice },
     { "RblLoadInstanceBuffer RblIsInstanceBufferValid RblUnloadInstanceBuffer", "counts, zero, stale, double", c_instances_load },
+    { "RblLoadSceneTarget RblSetScene", "sizes; the scene's depth field", c_scene_target },
     { "RblDrawInstanced", "NULL, stale, counts, camera, desc, materials, bad instances", c_instances_draw },
     { "RblDrawInstanced RblDrawBillboard", BARE "zero and raylib-default materials", c_instances_bare },
     { "RblPackMaterial", "NULL, sizes, formats, encodings, frames", c_pack_material },

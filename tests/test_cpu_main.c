@@ -33,6 +33,7 @@ int main(int argc, char **argv)
         RT_TEST(test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboards),
         RT_TEST(test_geometry_rotation_sin_cos_is_exact_at_quadrants_and_within_1_5e_7),
         RT_TEST(test_materials_encodings_round_trip_a_uniform_hemisphere_near_the_reference_errors),
+        RT_TEST(test_materials_alpha_coverage_is_kept_on_every_mip_level),
         RT_TEST(test_materials_default_hemioct_meets_max_0_6_and_mean_0_25_degrees),
         RT_TEST(test_materials_xy_error_is_small_near_the_pole_and_over_3_degrees_at_grazing_angles),
         RT_TEST(test_materials_precise_hemioct_is_never_worse_than_rounding_and_better_on_average),

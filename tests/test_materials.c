@@ -1037,3 +1037,92 @@ static void test_materials_unload_frees_and_zeroes_the_packed_material(void)
     RblUnloadPackedMaterial(NULL);
     UnloadImage(albedo); UnloadImage(grey);
 }
+
+// ---- alpha coverage across mips (RblMaterialSource.alphaCoverage) -------------------------------
+// Share of a level's texels whose alpha passes an 8-bit threshold
+static double covShare(const unsigned char *rgba, int n, int threshold)
+{
+    int c = 0;
+    for (int i = 0; i < n; i++) c += (rgba[i*4 + 3] >= threshold);
+    return (double)c/n;
+}
+
+// Foliage-like cut-out: thin opaque blades (1-2 texels wide) with soft edges on transparent ground.
+// Plain mips average the blades away (coverage falls level by level); preserved mips keep level 0's
+// share to the best the level's alpha histogram allows, which the test finds by brute force over
+// every 8-bit boundary of the plain level (the same chain: preservation scales alpha after a level
+// has served as the next one's source).
+static void test_materials_alpha_coverage_is_kept_on_every_mip_level(void)
+{
+    const int w = 128, h = 128;
+    Image albedo = GenImageColor(w, h, (Color){ 60, 140, 50, 0 });
+    unsigned int seed = 77u;
+    for (int b = 0; b < 60; b++)
+    {
+        float x0 = rtRandomRange(&seed, 0.0f, (float)w), y0 = rtRandomRange(&seed, 0.0f, (float)h);
+        float ang = rtRandomRange(&seed, 0.0f, 6.2831853f), len = rtRandomRange(&seed, 10.0f, 40.0f);
+        for (int s = 0; s < (int)(len*2.0f); s++)
+        {
+            int x = (int)(x0 + cosf(ang)*s*0.5f), y = (int)(y0 + sinf(ang)*s*0.5f);
+            if ((x < 0) || (y < 0) || (x >= w) || (y >= h)) continue;
+            ImageDrawPixel(&albedo, x, y, (Color){ 60, 140, 50, 255 });
+            if (x + 1 < w) { Color c = GetImageColor(albedo, x + 1, y); if (c.a < 160) ImageDrawPixel(&albedo, x + 1, y, (Color){ 60, 140, 50, 160 }); }
+        }
+    }
+    const float cutoff = 0.5f;
+    const int t = 128;              // 8-bit threshold of 0.5: a/255 >= 0.5
+    RblMaterialSource src = sourceOf(albedo);
+    src.mipmaps = true;
+    RblPackedMaterial plain, kept;
+    RT_CHECK(RblPackMaterial(&src, &plain), "plain pack");
+    src.alphaCoverage = cutoff;
+    RT_CHECK(RblPackMaterial(&src, &kept), "coverage pack");
+    if ((plain.albedo.data == NULL) || (kept.albedo.data == NULL)) return;
+    RT_CHECK(plain.albedo.mipmaps == kept.albedo.mipmaps, "mip counts differ");
+    int lw, lh;
+    double share0 = covShare((const unsigned char *)plain.albedo.data, w*h, t);
+    double worstPlain = 0.0, worstKept = 0.0, worstGap = 0.0;
+    int rgbChanged = 0;
+    printf("    level  size     coverage plain  kept   (level 0: %.4f; best reachable)\n", share0);
+    for (int level = 0; level < plain.albedo.mipmaps; level++)
+    {
+        size_t off = mipOffset(w, h, 4, level, &lw, &lh);
+        const unsigned char *pl = (const unsigned char *)plain.albedo.data + off, *kp = (const unsigned char *)kept.albedo.data + off;
+        int n = lw*lh;
+        for (int i = 0; i < n; i++) rgbChanged += (memcmp(pl + i*4, kp + i*4, 3) != 0);
+        double sp = covShare(pl, n, t), sk = covShare(kp, n, t);
+        // Brute force: every boundary k (texels with plain alpha >= k pass), the share nearest level 0's
+        double best = 1e9, bestShare = 0.0;
+        for (int k = 1; k <= 255; k++) { double s = covShare(pl, n, k); if (fabs(s - share0) < best) { best = fabs(s - share0); bestShare = s; } }
+        if (level == 0) RT_CHECK(memcmp(pl, kp, (size_t)n*4) == 0, "level 0 changed");
+        else
+        {
+            worstPlain = fmax(worstPlain, fabs(sp - share0));
+            worstKept = fmax(worstKept, fabs(sk - share0));
+            worstGap = fmax(worstGap, fabs(fabs(sk - share0) - best));
+            RT_CHECK(fabs(fabs(sk - share0) - best) < 1e-12, "level %d: kept coverage %.4f, the best reachable is %.4f (target %.4f)", level, sk, bestShare, share0);
+        }
+        printf("    %5d  %3dx%-3d  %.4f          %.4f (%.4f)\n", level, lw, lh, sp, sk, bestShare);
+    }
+    RT_CHECK(rgbChanged == 0, "%d texels changed colour (only alpha may change)", rgbChanged);
+    RT_CHECK(worstPlain > 0.05, "plain mips kept coverage within %.4f: the case does not exercise the problem", worstPlain);
+    printf("    worst |coverage - level 0| over levels 1..: plain %.4f, kept %.4f (best reachable: gap %.2g)\n", worstPlain, worstKept, worstGap);
+    // Bad values are refused (NaN, negative, 1 or more)
+    const float bad[3] = { NAN, -0.1f, 1.0f };
+    for (int i = 0; i < 3; i++)
+    {
+        src.alphaCoverage = bad[i];
+        RblPackedMaterial untouched;
+        memset(&untouched, 0xA5, sizeof(untouched));
+        matWarnings = 0;
+        SetTraceLogCallback(matCountingLog);
+        bool ok = RblPackMaterial(&src, &untouched);
+        SetTraceLogCallback(NULL);
+        unsigned char probe[sizeof(untouched)];
+        memset(probe, 0xA5, sizeof(probe));
+        RT_CHECK(!ok && (matWarnings == 1) && (memcmp(&untouched, probe, sizeof(probe)) == 0), "alphaCoverage %g accepted or output written (%d warnings)", bad[i], matWarnings);
+    }
+    RblUnloadPackedMaterial(&plain);
+    RblUnloadPackedMaterial(&kept);
+    UnloadImage(albedo);
+}

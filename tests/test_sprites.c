@@ -280,3 +280,85 @@ static void test_sprites_instanced_sort_draws_alike_in_any_array_order(void)
     sprUnloadMaterial(&mi);
     UnloadTexture(glass);
 }
+
+// Soft particles: an opaque wall drawn into a scene target (colour + depth texture); a white card at
+// distance delta in front of it, drawn into another target over black with the wall's depth in the
+// scene, shows 255*clamp(delta/fade, 0, 1) (the fade's definition), for perspective and orthographic
+// cameras; without a scene depth it is not faded; a soft G-buffer variant is refused.
+static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void)
+{
+    Texture2D white = solidTexture(WHITE);
+    Material wall = sprMaterial(white, 0.0f);
+    RblLitShaderDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.softParticles = true;
+    Material puff = LoadMaterialDefault();
+    puff.shader = RblLoadLitShader(sd);
+    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;           // never cut: faded texels blend to nothing
+    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    RT_CHECK(RblIsLitShaderValid(puff.shader), "soft variant did not compile");
+    RenderTexture2D sceneTarget = RblLoadSceneTarget(SPR_TARGET, SPR_TARGET);
+    RT_CHECK(sceneTarget.id != 0 && sceneTarget.depth.id != 0, "scene target refused");
+    const float deltas[7] = { -0.2f, 0.0f, 0.05f, 0.1f, 0.25f, 0.4f, 0.8f };
+    double worst = 0.0;
+    for (int ortho = 0; ortho < 2; ortho++)
+    {
+        Camera3D cam = sprCamera();
+        if (ortho) { cam.projection = CAMERA_ORTHOGRAPHIC; cam.fovy = 3.0f; }
+        RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
+        BeginTextureMode(sceneTarget);
+        ClearBackground(BLACK);
+        BeginMode3D(cam);
+        RblBillboard w = sprCard(0.0f, 0.0f);
+        w.size = (Vector2){ 20.0f, 20.0f }; w.origin = (Vector2){ 10.0f, 10.0f };
+        RblDrawBillboard(cam, wall, w);
+        EndMode3D();
+        EndTextureMode();
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.ambient = WHITE;
+        scene.depth = sceneTarget.depth;
+        RT_CHECK(RblSetScene(&scene), "scene with depth refused");
+        RenderTexture2D out = LoadRenderTexture(SPR_TARGET, SPR_TARGET);
+        for (int k = 0; k < 7; k++)
+        {
+            BeginTextureMode(out);
+            ClearBackground(BLACK);
+            BeginMode3D(cam);
+            RblDrawBillboard(cam, puff, sprCard(deltas[k], 0.0f));
+            EndMode3D();
+            EndTextureMode();
+            Image img = rtReadTarget(out);
+            Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+            double fade = fmin(fmax(deltas[k]/0.5, 0.0), 1.0), want = 255.0*fade;
+            worst = fmax(worst, fabs(c.r - want));
+            RT_CHECK(fabs(c.r - want) <= 2.0, "%s, card %.2f in front of the wall: %d, expected %.1f (fade %.3f)", ortho? "ortho" : "persp", deltas[k], c.r, want, fade);
+            printf("    %-5s card %5.2f in front: centre %3d, expected %5.1f\n", ortho? "ortho" : "persp", deltas[k], c.r, want);
+            UnloadImage(img);
+        }
+        // No scene depth: no fade (a card 0.05 in front shows at full strength)
+        scene.depth.id = 0; scene.depth.width = scene.depth.height = 0;
+        RT_CHECK(RblSetScene(&scene), "scene without depth refused");
+        BeginTextureMode(out);
+        ClearBackground(BLACK);
+        BeginMode3D(cam);
+        RblDrawBillboard(cam, puff, sprCard(0.05f, 0.0f));
+        EndMode3D();
+        EndTextureMode();
+        Image img = rtReadTarget(out);
+        RT_CHECK(rtPixel(img, SPR_TARGET/2, SPR_TARGET/2).r == 255, "no scene depth: centre %d, expected 255 (no fade)", rtPixel(img, SPR_TARGET/2, SPR_TARGET/2).r);
+        UnloadImage(img);
+        UnloadRenderTexture(out);
+    }
+    printf("    soft particles: worst |centre - 255*clamp(delta/0.5)| %.1f/255 over 7 distances x 2 projections\n", worst);
+    RblLitShaderDesc bad = sd;
+    bad.deferred = true;
+    warnings = 0;
+    Shader refused = RblLoadLitShader(bad);
+    RT_CHECK((refused.id == 0) && (warnings == 1), "soft G-buffer variant: id %u, %d log lines", refused.id, warnings);
+    UnloadRenderTexture(sceneTarget);
+    sprUnloadMaterial(&wall);
+    sprUnloadMaterial(&puff);
+    UnloadTexture(white);
+}

@@ -47,6 +47,10 @@ cat "$csv.ratio" >> "$csv"; rm -f "$csv.ratio"
 unset MESA_SHADER_CACHE_DISABLE
 
 echo
+echo "== bench_blend (suite sprites: sorting cost, alpha coverage per mip)"
+RBL_TEST_CONTEXT=egl BENCH_CSV="$csv" "$BUILD/bench/bench_blend"
+
+echo
 echo "== bench_api"
 BENCH_CSV="$csv" "$BUILD/bench/bench_api"
 
