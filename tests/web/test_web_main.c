@@ -250,6 +250,7 @@ int main(int argc, char **argv)
         RT_TEST(test_sprites_hybrid_smoke_behind_a_tree_shows_through_its_holes),
         RT_TEST(test_sprites_bad_sort_settings_are_refused_and_draw_nothing),
         RT_TEST_GLSL3(test_sprites_instanced_sort_draws_alike_in_any_array_order),
+        RT_TEST(test_sprites_soft_particles_fade_by_depth_distance_to_the_scene),
     };
     const char *backend = rtInitContext(256, 256);
     if (backend == NULL) { printf("web: 0 passed, 1 failed\n"); return 1; }
