@@ -2,7 +2,7 @@
 # Installs the Debian packages the build, tests and showcase need, when missing.
 # Usage: tests/tools/deps.sh [xvfb]   (xvfb only for a windowed run)
 set -eu
-pkgs="clang pkg-config dpkg-dev glslang-tools libegl-dev libgles-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev"
+pkgs="clang libclang-rt-dev pkg-config dpkg-dev glslang-tools libegl-dev libgles-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev"
 [ "${1:-}" = xvfb ] && pkgs="$pkgs xvfb"
 missing=""
 for p in $pkgs; do
