@@ -90,6 +90,26 @@ static void test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames
     }
 }
 
+static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
+{
+    // each pack names the other: both load once, in order, each frame on its own sheet
+    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/texturepacker/multi-0.json");
+    RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 2 && a.frameCount == 2, "pages %d frames %d", a.pageCount, a.frameCount);
+    if (a.pageCount == 2 && a.frameCount == 2)
+    {
+        RT_CHECK(strcmp(a.pages[1].image, "tests/fuzz/corpus/texturepacker/multi-1.png") == 0 && a.frames[0].page == 0 && a.frames[1].page == 1, "page of each frame");
+        CHECK_RECT(a.frames[1].block, 4, 0, 12, 4, "two block (rotated 4x12)");
+    }
+    RblUnloadAtlas(&a);
+    // from memory nothing else is read: one sheet
+    int size = 0;
+    unsigned char *text = LoadFileData("tests/fuzz/corpus/texturepacker/multi-0.json", &size);
+    a = RblLoadAtlasFromMemory((const char *)text, size, RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 1 && a.frameCount == 1, "from memory: pages %d", a.pageCount);
+    RblUnloadAtlas(&a);
+    UnloadFileData(text);
+}
+
 static void test_atlas_aseprite_durations_tags_and_slice_pivots(void)
 {
     RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/aseprite/tags.json");

@@ -61,6 +61,7 @@ int main(int argc, char **argv)
         RT_TEST(test_shaders_embedded_copies_equal_the_glsl_files),
         RT_TEST(test_shaders_each_stage_lists_its_include_closure_dependencies_first),
         RT_TEST(test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames),
+        RT_TEST(test_atlas_texturepacker_multipack_follows_related_packs_once),
         RT_TEST(test_atlas_aseprite_durations_tags_and_slice_pivots),
         RT_TEST(test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets_from_the_bottom),
         RT_TEST(test_atlas_player_follows_durations_directions_and_repeats),
