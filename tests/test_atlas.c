@@ -166,6 +166,46 @@ static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets
     RblUnloadAtlas(&a);
 }
 
+// Same-layout maps (TexturePacker's <sheet>_n.png beside <sheet>.png) use the same frame table:
+// packing with the atlas's blocks keeps every frame texel and fills the gutters from frames only
+static void test_atlas_blocks_pack_a_same_layout_normal_sheet_per_frame(void)
+{
+    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/texturepacker/hash.json");
+    if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
+    Rectangle blocks[8];
+    for (int i = 0; i < a.frameCount; i++) blocks[i] = a.frames[i].block;
+    RblMaterialSource src;
+    memset(&src, 0, sizeof(src));
+    src.albedo = GenImageColor(128, 64, (Color){ 10, 20, 30, 255 });
+    src.normal = GenImageColor(128, 64, (Color){ 128, 128, 255, 255 });
+    unsigned int seed = 5u;
+    for (int i = 0; i < a.frameCount; i++)
+    {
+        Color c = { (unsigned char)(rtRandom(&seed) | 1), (unsigned char)rtRandom(&seed), (unsigned char)rtRandom(&seed), 255 };
+        ImageDrawRectangleRec(&src.albedo, blocks[i], c);
+        ImageDrawRectangleRec(&src.normal, blocks[i], (Color){ 200, 128, 200, 255 });
+    }
+    src.frames = blocks; src.frameCount = a.frameCount;
+    RblPackedMaterial packed;
+    memset(&packed, 0, sizeof(packed));
+    RT_CHECK(RblPackMaterial(&src, &packed), "pack with the atlas blocks refused");
+    int inside = 0, gutter = 0;
+    for (int y = 0; y < 64 && packed.albedo.data; y++)
+        for (int x = 0; x < 128; x++)
+        {
+            Color got = GetImageColor(packed.albedo, x, y);
+            bool in = false;
+            for (int i = 0; i < a.frameCount; i++) in = in || CheckCollisionPointRec((Vector2){ x + 0.5f, y + 0.5f }, blocks[i]);
+            Color want = GetImageColor(src.albedo, x, y);
+            if (in) inside += memcmp(&got, &want, sizeof(Color)) != 0;
+            else gutter += (got.r == 10 && got.g == 20 && got.b == 30);     // the sheet's background never leaks in
+        }
+    RT_CHECK(inside == 0 && gutter == 0, "%d frame texels changed, %d gutter texels kept the background", inside, gutter);
+    RblUnloadPackedMaterial(&packed);
+    UnloadImage(src.albedo); UnloadImage(src.normal);
+    RblUnloadAtlas(&a);
+}
+
 // ---- animation: the player against sequences written out by hand ----------------------------
 static int seqFrameAt(const int *seq, int n, bool loop, const float *dur, double t, bool *finished)
 {
