@@ -7730,6 +7730,8 @@ bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt)
     { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: player state not from RblPlaySprite for this atlas (frame, step, time or counts)"); return false; }
     if (p.finished) return true;
     double t = (double)p.time + dt;
+    // Most updates stay inside the current frame: no period, no stepping
+    if (t < rbl__spriteDuration(s, p.frame)) { player->time = (float)t; if (player->time >= (float)rbl__spriteDuration(s, p.frame)) player->time = nextafterf((float)rbl__spriteDuration(s, p.frame), 0.0f); return true; }
     // Whole periods change nothing but the pass count: skip them (a huge dt costs no more than one)
     double period = 0.0;
     for (int i = from; i <= to; i++) period += rbl__spriteDuration(s, i);
