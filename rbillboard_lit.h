@@ -14,7 +14,7 @@
 *   CONTENTS:
 *       This block: INTEGRATION (seven stages, each building on the last), then reference: MATERIAL
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
-*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
+*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
 *       (with the 0.3 -> 0.4 migration), DEPENDENCIES, LICENSE.
 *       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
 *         Types and Structures Definition (private)   registry entry, packed scene, header state
@@ -29,6 +29,7 @@
 *         instanced path                    per-instance data, quads expanded in the vertex shader
 *         shadows                           light cameras, caster passes (before the colour pass)
 *         deferred G-buffer                 geometry pass, light passes, resolve
+*         sprite-sheet atlases and animation   readers (JSON, libGDX), frame table, player, N-way (CPU)
 *
 *   INTEGRATION:
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
@@ -278,6 +279,29 @@
 *       Authoring: RblGenNormalMapFromHeight (heights x strength in texel units: a step of 1.0 between
 *       neighbours at strength 1 is 45 degrees; up = toward row 0), RblGenHeightFromLuminance (Rec.709,
 *       linear light), RblGenOcclusionFromHeight (darker the deeper a texel lies below its window mean).
+*
+*   SPRITE SHEETS (RblLoadAtlas / RblLoadAtlasFromMemory; tests/test_atlas.c, test_atlas_render.c, fuzz/):
+*       - Read: TexturePacker JSON (hash / array; frame, rotated, trimmed, spriteSourceSize, sourceSize,
+*         pivot or Pixi's anchor; related_multi_packs followed by RblLoadAtlas, plain names beside the
+*         file only), Aseprite JSON (duration ms, frameTags from/to inclusive, direction, repeat as a
+*         number or a string, slices keys: the first slice with pivots sets the pivot of the frames
+*         its keys cover), libGDX text (old xy/size/orig/offset, new bounds/offsets, rotate true/90,
+*         index: regions sharing a name with index >= 0 are moved together in index order and form a
+*         tag). Duplicate JSON keys: the last wins (JSON.parse). Nesting <= 64, coordinates <= 65536,
+*         64 sheets, text <= 2^28 bytes; anything else malformed: one line, invalid atlas, nothing kept.
+*       - One convention: rotated = stored turned 90 degrees clockwise in an h x w block (RblAtlasFrame
+*         .block); libGDX's counter-clockwise turn is that plus a half turn, so its .source has both
+*         extents negated (both mirrors); trim and pivot upright, top-left origin (libGDX offsets are
+*         counted from the bottom). RblAtlasBillboard/Instance: size = trim x scale, origin = the
+*         pivot from the trimmed quad's bottom-left (outside it when the pivot is), flags' ROTATED bit.
+*       - Aseprite exports of several sprites count tags per sprite: a tag lands on the frames named
+*         "<tag>:<k>" when the sheet's own indices do not fit those names.
+*       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
+*         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
+*         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
+*         skipped. RblSpriteBlend: next frame and time/duration (the shader cross-fade is not built).
+*       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
+*         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
 *   LIMITATIONS:
 *       - Platforms (the GLSL dialect follows rlGetVersion(): 330, 300 es, 120, 100; see PLATFORMS in
@@ -7485,6 +7509,8 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
             {
                 const char *name = rbl__jsonText(&j, k);
                 if (name == NULL) { rbl__atlasError(s, "related_multi_packs holds a non-string%s", NULL, j.nodes[k].start); ok = false; break; }
+                // plain file names beside the atlas only: a pack never leads the loader elsewhere
+                if ((name[0] == 0) || (name[0] == '.') || (strchr(name, '/') != NULL) || (strchr(name, '\\') != NULL)) { rbl__atlasError(s, "related pack \"%s\" is not a file name beside the atlas", name, j.nodes[k].start); ok = false; break; }
                 if (*relatedCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); ok = false; break; }
                 (*related)[(*relatedCount)++] = (char *)name;
             }

@@ -101,6 +101,13 @@ static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
         CHECK_RECT(a.frames[1].block, 4, 0, 12, 4, "two block (rotated 4x12)");
     }
     RblUnloadAtlas(&a);
+    // a related pack named outside the atlas's folder is refused (one line), nothing else read
+    SaveFileText("build/tests/atlas_related_escape.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"related_multi_packs\": [\"../atlas.json\"]}}");
+    SetTraceLogCallback(atlasCountingLog);
+    atlasWarnings = 0;
+    a = RblLoadAtlas("build/tests/atlas_related_escape.json");
+    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnings == 1, "related pack outside the folder: valid %d, %d lines", RblIsAtlasValid(&a), atlasWarnings);
+    SetTraceLogCallback(NULL);
     // from memory nothing else is read: one sheet
     int size = 0;
     unsigned char *text = LoadFileData("tests/fuzz/corpus/texturepacker/multi-0.json", &size);
