@@ -7761,9 +7761,8 @@ bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt)
     // Whole periods change nothing but the pass count: skip them (a huge dt costs no more than one)
     double period = 0.0;
     for (int i = from; i <= to; i++) period += rbl__spriteDuration(s, i);
-    int perPeriod = 1;
-    if (pingpong && (to - from >= 2)) { for (int i = from + 1; i < to; i++) period += rbl__spriteDuration(s, i); perPeriod = 2; }
-    else if (pingpong) perPeriod = 1;
+    int perPeriod = 1;     // passes per period: a pingpong period is both legs (one frame: each step is a leg)
+    if (pingpong && (to > from)) { for (int i = from + 1; i < to; i++) period += rbl__spriteDuration(s, i); perPeriod = 2; }
     if (t > 2.0*period)
     {
         double whole = floor(t/period) - 1.0;

@@ -231,9 +231,11 @@ static void test_atlas_player_follows_durations_directions_and_repeats(void)
     if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
     const float dur[4] = { 0.125f, 0.25f, 0.5f, 1.0f };
     static const int walk[4] = { 0, 1, 2, 3 }, back[6] = { 3, 2, 1, 3, 2, 1 }, pp[10] = { 0, 1, 2, 3, 2, 1, 0, 1, 2, 3 }, ppr[2] = { 2, 1 }, once[4] = { 0, 1, 2, 3 };
-    struct { const char *tag; int loops; const int *seq; int n; bool loop; } cases[5] = {
-        { "walk", 0, walk, 4, true }, { "back", 0, back, 6, false }, { "pp", 0, pp, 10, false }, { "ppr", 0, ppr, 2, true }, { "walk", 1, once, 4, false } };
-    for (int c = 0; c < 5; c++)
+    static const int ppr5[6] = { 2, 1, 2, 1, 2, 1 }, pp1[4] = { 0, 1, 2, 3 };     // legs 2 1 | 2 | 1 | 2 | 1; one leg
+    struct { const char *tag; int loops; const int *seq; int n; bool loop; } cases[7] = {
+        { "walk", 0, walk, 4, true }, { "back", 0, back, 6, false }, { "pp", 0, pp, 10, false }, { "ppr", 0, ppr, 2, true }, { "walk", 1, once, 4, false },
+        { "ppr", 5, ppr5, 6, false }, { "pp", 1, pp1, 4, false } };
+    for (int c = 0; c < 7; c++)
     {
         RblSpritePlayer p = RblPlaySprite(&a, RblAtlasFindTag(&a, cases[c].tag), cases[c].loops);
         int bad = 0;
