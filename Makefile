@@ -99,9 +99,12 @@ $(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HE
 # Atlas readers under libFuzzer (clang; libclang-rt-dev), one binary per format; tests/run.sh runs
 # each for a bounded time over its hand-written seed corpus (tests/fuzz/corpus/<format>/)
 FUZZ_FORMATS := texturepacker aseprite libgdx
-$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_atlas.c $(HEADER) $(BUILD)/raylib.mk
+FUZZ_CFLAGS := $(CSTD) $(WARN) -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I. $(RAYLIB_CFLAGS)
+$(BUILD)/fuzz/atlas_impl.o: tests/fuzz/fuzz_atlas.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
-	clang $(CSTD) $(WARN) -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I. $(RAYLIB_CFLAGS) -DFUZZ_FORMAT=RBL_ATLAS_$(shell echo $* | tr a-z A-Z) tests/fuzz/fuzz_atlas.c -o $@ $(RAYLIB_LIBS)
+	clang $(FUZZ_CFLAGS) -DFUZZ_IMPL -c tests/fuzz/fuzz_atlas.c -o $@
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_atlas.c $(BUILD)/fuzz/atlas_impl.o
+	clang $(FUZZ_CFLAGS) -DFUZZ_FORMAT=RBL_ATLAS_$(shell echo $* | tr a-z A-Z) tests/fuzz/fuzz_atlas.c $(BUILD)/fuzz/atlas_impl.o -o $@ $(RAYLIB_LIBS)
 
 # Every stage as the loader splices it, in every dialect, for glslangValidator (tests/run.sh)
 $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/raylib.mk

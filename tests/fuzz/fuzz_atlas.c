@@ -4,7 +4,12 @@
 // tests/fuzz/corpus/<format>/ (hand-written seeds). Beyond the sanitizers, it aborts when a refused
 // input does not log exactly one line, or an accepted one yields a frame table whose frames, tags or
 // billboard fields break the documented invariants, or the player leaves its tag.
-#define RBILLBOARD_LIT_IMPLEMENTATION
+// Built in two parts so the header's implementation is instrumented once for the three targets:
+// -DFUZZ_IMPL compiles only the implementation; the targets include the declarations.
+#if defined(FUZZ_IMPL)
+    #define RBILLBOARD_LIT_IMPLEMENTATION
+    #include "rbillboard_lit.h"
+#else
 #include "rbillboard_lit.h"
 #include <math.h>
 #include <stdarg.h>
@@ -82,3 +87,4 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     return 0;
 }
+#endif // FUZZ_IMPL
