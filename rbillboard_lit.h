@@ -1011,6 +1011,7 @@ RBLAPI bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale
 RBLAPI bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance);   // The same for an instance
 RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops); // Start a tag (-1 = all frames); loops: 0 = the tag's repeat, n > 0 = n passes, -1 = forever
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
+RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
 
@@ -7657,19 +7658,23 @@ int RblAtlasFindTag(const RblAtlas *atlas, const char *name)
 
 // Quad of a frame: the trimmed part at its place in the untrimmed frame, pivot as the origin
 // (world units from the drawn quad's bottom-left; may lie outside it)
-static bool rbl__atlasQuad(const RblAtlas *atlas, int frame, float worldScale, const char *fn, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+static void rbl__atlasFrameQuad(const RblAtlasFrame *f, float worldScale, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
 {
-    const rbl__AtlasState *s = rbl__atlasArg(atlas, fn);
-    if (s == NULL) return false;
-    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
-    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
-    const RblAtlasFrame *f = &s->frames[frame];
     double k = worldScale;
     double px = (double)f->pivot.x*f->size.x, py = (double)f->pivot.y*f->size.y;     // pixels, top-left origin
     *source = f->source;
     *size = rbl__v2((float)(f->trim.width*k), (float)(f->trim.height*k));
     *origin = rbl__v2((float)((px - f->trim.x)*k), (float)(((double)f->trim.y + f->trim.height - py)*k));
     *flags = f->flags;
+}
+
+static bool rbl__atlasQuad(const RblAtlas *atlas, int frame, float worldScale, const char *fn, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, fn);
+    if (s == NULL) return false;
+    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
+    rbl__atlasFrameQuad(&s->frames[frame], worldScale, source, size, origin, flags);
     return true;
 }
 
@@ -7741,23 +7746,21 @@ static bool rbl__spriteAdvance(RblSpritePlayer *p, int from, int to, int dir)
     return true;
 }
 
-bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt)
+// One player advanced by dt (validated by the caller): NULL, or why the player is not one of
+// RblPlaySprite's for this atlas (then it is untouched)
+static const char *rbl__spriteStep(const rbl__AtlasState *s, RblSpritePlayer *player, float dt)
 {
-    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSprite");
-    if (s == NULL) return false;
-    if (player == NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: NULL player"); return false; }
-    if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: dt must be finite and >= 0"); return false; }
     RblSpritePlayer p = *player;
     int from, to, dir, repeat;
-    if ((p.tag < -1) || (p.tag >= s->tagCount)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: player's tag %i not in this atlas", p.tag); return false; }
+    if ((p.tag < -1) || (p.tag >= s->tagCount)) return "player's tag not in this atlas";
     rbl__spriteRange(s, p.tag, &from, &to, &dir, &repeat);
     bool pingpong = (dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
     if ((p.frame < from) || (p.frame > to) || ((p.step != 1) && (p.step != -1)) || !rbl__finite(p.time) || (p.time < 0.0f) || (p.loops < 0) || (p.passes < 0))
-    { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: player state not from RblPlaySprite for this atlas (frame, step, time or counts)"); return false; }
-    if (p.finished) return true;
+        return "player state not from RblPlaySprite for this atlas (frame, step, time or counts)";
+    if (p.finished) return NULL;
     double t = (double)p.time + dt;
     // Most updates stay inside the current frame: no period, no stepping
-    if (t < rbl__spriteDuration(s, p.frame)) { player->time = (float)t; if (player->time >= (float)rbl__spriteDuration(s, p.frame)) player->time = nextafterf((float)rbl__spriteDuration(s, p.frame), 0.0f); return true; }
+    if (t < rbl__spriteDuration(s, p.frame)) { player->time = (float)t; if (player->time >= (float)rbl__spriteDuration(s, p.frame)) player->time = nextafterf((float)rbl__spriteDuration(s, p.frame), 0.0f); return NULL; }
     // Whole periods change nothing but the pass count: skip them (a huge dt costs no more than one)
     double period = 0.0;
     for (int i = from; i <= to; i++) period += rbl__spriteDuration(s, i);
@@ -7788,7 +7791,42 @@ bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt)
     p.time = (float)t;
     if (p.time >= (float)rbl__spriteDuration(s, p.frame)) p.time = nextafterf((float)rbl__spriteDuration(s, p.frame), 0.0f);
     *player = p;
+    return NULL;
+}
+
+bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSprite");
+    if (s == NULL) return false;
+    if (player == NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: NULL player"); return false; }
+    if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: dt must be finite and >= 0"); return false; }
+    const char *bad = rbl__spriteStep(s, player, dt);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: %s", bad); return false; }
     return true;
+}
+
+int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSpriteInstances");
+    if (s == NULL) return 0;
+    if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
+    if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
+    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
+    int done = 0, skipped = 0;
+    const char *why = NULL;
+    for (int i = 0; i < count; i++)
+    {
+        const char *bad = rbl__spriteStep(s, &players[i], dt);
+        if (bad != NULL) { skipped++; why = bad; continue; }
+        RblInstance *in = &instances[i];
+        unsigned int flags;
+        rbl__atlasFrameQuad(&s->frames[players[i].frame], worldScale, &in->source, &in->size, &in->origin, &flags);
+        in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+        done++;
+    }
+    if (skipped > 0) TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: %i players skipped (instances untouched): %s", skipped, why);
+    return done;
 }
 
 float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame)

@@ -272,6 +272,50 @@ static void test_atlas_player_follows_durations_directions_and_repeats(void)
     RblUnloadAtlas(&a);
 }
 
+// The bulk update equals RblUpdateSprite + RblAtlasInstance per instance, bit for bit; a bad player
+// is skipped (player and instance untouched) with one line for the call
+static void test_atlas_bulk_instance_update_equals_the_per_sprite_calls(void)
+{
+    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/aseprite/tags.json");
+    if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
+    enum { N = 1000 };
+    static RblSpritePlayer pa[N], pb[N];
+    static RblInstance ia[N], ib[N];
+    unsigned int seed = 3u;
+    for (int i = 0; i < N; i++)
+    {
+        pa[i] = RblPlaySprite(&a, (int)(rtRandom(&seed)%5) - 1, (int)(rtRandom(&seed)%3));
+        pb[i] = pa[i];
+        memset(&ia[i], 0, sizeof(RblInstance));
+        ia[i].position = (Vector3){ (float)i, 0, 0 };
+        ia[i].flags = (i & 1)? RBL_ROUND_CYLINDER : 0;
+        ib[i] = ia[i];
+    }
+    int diff = 0;
+    for (int step = 0; step < 60; step++)
+    {
+        float dt = (step == 30)? 7.3f : rtRandomRange(&seed, 0.0f, 0.3f);
+        RT_CHECK(RblUpdateSpriteInstances(pb, ib, N, &a, dt, 0.05f) == N, "bulk update skipped players");
+        for (int i = 0; i < N; i++) { RblUpdateSprite(&pa[i], &a, dt); RblAtlasInstance(&a, pa[i].frame, 0.05f, &ia[i]); }
+        diff += memcmp(pa, pb, sizeof(pa)) != 0 || memcmp(ia, ib, sizeof(ia)) != 0;
+    }
+    RT_CHECK(diff == 0, "%d of 60 steps differ from the per-sprite calls", diff);
+    SetTraceLogCallback(atlasCountingLog);
+    atlasWarnings = 0;
+    pb[5].frame = 99; pb[9].step = 0;
+    RblSpritePlayer keep5 = pb[5], keep9 = pb[9];
+    RblInstance keepI = ib[5];
+    RT_CHECK(RblUpdateSpriteInstances(pb, ib, N, &a, 0.1f, 0.05f) == N - 2 && atlasWarnings == 1, "bad players: %d lines", atlasWarnings);
+    RT_CHECK(memcmp(&pb[5], &keep5, sizeof(keep5)) == 0 && memcmp(&pb[9], &keep9, sizeof(keep9)) == 0 && memcmp(&ib[5], &keepI, sizeof(keepI)) == 0, "skipped entries changed");
+    atlasWarnings = 0;
+    RT_CHECK(RblUpdateSpriteInstances(pb, ib, -1, &a, 0.1f, 0.05f) == 0 && RblUpdateSpriteInstances(NULL, ib, 3, &a, 0.1f, 0.05f) == 0 &&
+             RblUpdateSpriteInstances(pb, ib, 3, &a, NAN, 0.05f) == 0 && RblUpdateSpriteInstances(pb, ib, 3, &a, 0.1f, 0.0f) == 0 && atlasWarnings == 4, "refusals: %d lines", atlasWarnings);
+    atlasWarnings = 0;
+    RT_CHECK(RblUpdateSpriteInstances(NULL, NULL, 0, &a, 0.1f, 0.05f) == 0 && atlasWarnings == 0, "count 0 is a quiet no-op");
+    SetTraceLogCallback(NULL);
+    RblUnloadAtlas(&a);
+}
+
 // ---- N-way sectors at their boundaries -----------------------------------------------------------
 static void test_atlas_view_sector_boundaries_for_4_8_16_directions(void)
 {

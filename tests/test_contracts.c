@@ -1201,6 +1201,28 @@ static void c_sprites(void)
     EXPECT_REFUSED(RblSpriteBlend(&p, &zero, &next) > 0.0f || next != 77);
     // accepted extremes: the largest finite dt, then the player stays inside its tag with finite time
     ck(RblUpdateSprite(&p, &a, 3.0e38f) && (p.frame >= 0) && (p.frame <= 1) && allFinite(&p.time, 1), "huge dt: frame %d time %g", p.frame, p.time);
+    // bulk: refusals change nothing; bad players are skipped entries (one line for the call)
+    RblSpritePlayer ps[2] = { p0, p0 };
+    RblInstance is[2]; memset(is, 0x5A, sizeof(is));
+    RblInstance is0[2]; memcpy(is0, is, sizeof(is));
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, NULL, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &zero, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(NULL, is, 2, &a, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, NULL, 2, &a, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, -1, &a, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, INT_MIN, &a, 0.1f, 1.0f) > 0);
+    for (int vi = 0; vi < 5; vi++)
+    {
+        if (vi < 3) EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, badFloats[vi], 1.0f) > 0);
+        EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, 0.1f, badFloats[vi]) > 0);
+    }
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, -1.0f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, 0.1f, 0.0f) > 0);
+    ck(memcmp(is, is0, sizeof(is)) == 0 && memcmp(&ps[0], &p0, sizeof(p0)) == 0, "refused bulk updates wrote");
+    ps[1].frame = 9;
+    warnings = 0;
+    ck(RblUpdateSpriteInstances(ps, is, 2, &a, 3.0e38f, 1e15f) == 1 && warnings == 1 && allFinite(&is[0].size.x, 2) && allFinite(&is[0].origin.x, 2) &&
+       memcmp(&is[1], &is0[1], sizeof(RblInstance)) == 0, "bulk with one bad player: %d lines", warnings);
     // N-way sectors
     Vector3 v = { 0, 0, -1 };
     for (int d = -1; d <= 361; d += 362) EXPECT_REFUSED(RblSpriteViewSector(v, 0.0f, d) >= 0);
@@ -1261,7 +1283,7 @@ static const Case cases[] = {
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads },
-    { "RblPlaySprite RblUpdateSprite RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt, corrupt players, directions, NaN/Inf", c_sprites },
+    { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites },
 };
 
 // One case in a child process: its own context and fixture, then the matrix stack depth check

@@ -66,6 +66,7 @@ int main(int argc, char **argv)
         RT_TEST(test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets_from_the_bottom),
         RT_TEST(test_atlas_blocks_pack_a_same_layout_normal_sheet_per_frame),
         RT_TEST(test_atlas_player_follows_durations_directions_and_repeats),
+        RT_TEST(test_atlas_bulk_instance_update_equals_the_per_sprite_calls),
         RT_TEST(test_atlas_view_sector_boundaries_for_4_8_16_directions),
         RT_TEST(test_atlas_malformed_input_fails_with_one_line),
         RT_TEST(test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets),
