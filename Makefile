@@ -51,8 +51,8 @@ check-shaders:
 # ---- tests --------------------------------------------------------------------------------
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
-CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h
-GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_sprites.c
+CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
+GPU_TESTS := tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_sprites.c tests/test_atlas_render.c
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -98,12 +98,22 @@ $(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HE
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
 
+# Atlas readers under libFuzzer (clang; libclang-rt-dev), one binary per format; tests/run.sh runs
+# each for a bounded time over its hand-written seed corpus (tests/fuzz/corpus/<format>/)
+FUZZ_FORMATS := texturepacker aseprite libgdx
+FUZZ_CFLAGS := $(CSTD) $(WARN) -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -I. $(RAYLIB_CFLAGS)
+$(BUILD)/fuzz/atlas_impl.o: tests/fuzz/fuzz_atlas.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	clang $(FUZZ_CFLAGS) -DFUZZ_IMPL -c tests/fuzz/fuzz_atlas.c -o $@
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_atlas.c $(BUILD)/fuzz/atlas_impl.o
+	clang $(FUZZ_CFLAGS) -DFUZZ_FORMAT=RBL_ATLAS_$(shell echo $* | tr a-z A-Z) tests/fuzz/fuzz_atlas.c $(BUILD)/fuzz/atlas_impl.o -o $@ $(RAYLIB_LIBS)
+
 # Every stage as the loader splices it, in every dialect, for glslangValidator (tests/run.sh)
 $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/web/test/test_web.js
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/web/test/test_web.js
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
@@ -156,6 +166,10 @@ $(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h 
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_skinning.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
+$(BUILD)/bench/bench_sprites: tests/bench/bench_sprites.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_sprites.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
 # bench_api: one binary from three compilations of bench_api.c (main, the showcase and the deferred example,
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
 # pointer, generated from raylib's external/glad.h (without one the GL-call rows are skipped)
@@ -189,7 +203,7 @@ $(BUILD)/bench/bench_blend: tests/bench/bench_blend.c tests/bench/bench.h $(HARN
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_blend.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

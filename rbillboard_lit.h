@@ -14,7 +14,7 @@
 *   CONTENTS:
 *       This block: INTEGRATION (seven stages, each building on the last), then reference: MATERIAL
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
-*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
+*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
 *       (with the 0.3 -> 0.4 migration), DEPENDENCIES, LICENSE.
 *       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
 *         Types and Structures Definition (private)   registry entry, packed scene, header state
@@ -29,6 +29,7 @@
 *         instanced path                    per-instance data, quads expanded in the vertex shader
 *         shadows                           light cameras, caster passes (before the colour pass)
 *         deferred G-buffer                 geometry pass, light passes, resolve
+*         sprite-sheet atlases and animation   readers (JSON, libGDX), frame table, player, N-way (CPU)
 *
 *   INTEGRATION:
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
@@ -287,6 +288,29 @@
 *       Authoring: RblGenNormalMapFromHeight (heights x strength in texel units: a step of 1.0 between
 *       neighbours at strength 1 is 45 degrees; up = toward row 0), RblGenHeightFromLuminance (Rec.709,
 *       linear light), RblGenOcclusionFromHeight (darker the deeper a texel lies below its window mean).
+*
+*   SPRITE SHEETS (RblLoadAtlas / RblLoadAtlasFromMemory; tests/test_atlas.c, test_atlas_render.c, fuzz/):
+*       - Read: TexturePacker JSON (hash / array; frame, rotated, trimmed, spriteSourceSize, sourceSize,
+*         pivot or Pixi's anchor; related_multi_packs followed by RblLoadAtlas, plain names beside the
+*         file only), Aseprite JSON (duration ms, frameTags from/to inclusive, direction, repeat as a
+*         number or a string, slices keys: the first slice with pivots sets the pivot of the frames
+*         its keys cover), libGDX text (old xy/size/orig/offset, new bounds/offsets, rotate true/90,
+*         index: regions sharing a name with index >= 0 are moved together in index order and form a
+*         tag). Duplicate JSON keys: the last wins (JSON.parse). Nesting <= 64, coordinates <= 65536,
+*         64 sheets, text <= 2^28 bytes; anything else malformed: one line, invalid atlas, nothing kept.
+*       - One convention: rotated = stored turned 90 degrees clockwise in an h x w block (RblAtlasFrame
+*         .block); libGDX's counter-clockwise turn is that plus a half turn, so its .source has both
+*         extents negated (both mirrors); trim and pivot upright, top-left origin (libGDX offsets are
+*         counted from the bottom). RblAtlasBillboard/Instance: size = trim x scale, origin = the
+*         pivot from the trimmed quad's bottom-left (outside it when the pivot is), flags' ROTATED bit.
+*       - Aseprite exports of several sprites count tags per sprite: a tag lands on the frames named
+*         "<tag>:<k>" when the sheet's own indices do not fit those names.
+*       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
+*         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
+*         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
+*         skipped. RblSpriteBlend: next frame and time/duration (the shader cross-fade is not built).
+*       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
+*         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
 *   LIMITATIONS:
 *       - Platforms (the GLSL dialect follows rlGetVersion(): 330, 300 es, 120, 100; see PLATFORMS in
@@ -870,6 +894,81 @@ typedef struct RblScene {
     Texture2D depth;                // Opaque scene depth for soft particles: RblLoadSceneTarget's .depth or a G-buffer's (id 0 = none)
 } RblScene;
 
+// Sprite-sheet atlas formats (RblLoadAtlasFromMemory; RblLoadAtlas detects by content)
+typedef enum {
+    RBL_ATLAS_AUTO = 0,             // Detect: JSON (Aseprite when meta.app names it, else TexturePacker) or libGDX text
+    RBL_ATLAS_TEXTUREPACKER,        // TexturePacker JSON, hash or array form (multipack through RblLoadAtlas)
+    RBL_ATLAS_ASEPRITE,             // Aseprite JSON, hash or array form: durations, frame tags, slices
+    RBL_ATLAS_LIBGDX                // libGDX .atlas / .pack text, old (xy/size/orig/offset) or new (bounds/offsets) form
+} RblAtlasFormat;
+
+// Playback direction of a tag (Aseprite's names)
+typedef enum {
+    RBL_SPRITE_FORWARD = 0,         // from .. to
+    RBL_SPRITE_REVERSE,             // to .. from
+    RBL_SPRITE_PINGPONG,            // from .. to .. from (each leg is one pass; the turn frame shows once)
+    RBL_SPRITE_PINGPONG_REVERSE     // to .. from .. to
+} RblSpriteDirection;
+
+// One frame of an atlas, every format normalised to one convention (TexturePacker's)
+typedef struct RblAtlasFrame {
+    const char *name;               // Frame name (hash key, "filename", libGDX region name); owned by the atlas
+    int page;                       // Sheet (RblAtlas.pages) the frame lies in
+    Rectangle block;                // Texels it occupies in its sheet (stored turned: the h x w block)
+    Rectangle source;               // As RblBillboard.source takes it with flags (libGDX's counter-clockwise turn: both extents negated)
+    unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above)
+    Rectangle trim;                 // Drawn (trimmed) part of the frame: pixels, top-left origin, upright
+    Vector2 size;                   // Untrimmed frame size in pixels
+    Vector2 pivot;                  // Pivot as fractions of size from the top-left (default 0.5, 0.5)
+    float duration;                 // Seconds (Aseprite's milliseconds / 1000); 0 = none given
+    int index;                      // libGDX animation index (-1 = none)
+} RblAtlasFrame;
+
+// A named run of frames (Aseprite frame tags; libGDX regions sharing a name with index >= 0)
+typedef struct RblAtlasTag {
+    const char *name;               // Tag name (owned by the atlas; names may repeat)
+    int from, to;                   // First and last frame, inclusive (from <= to)
+    int direction;                  // RblSpriteDirection
+    int repeat;                     // Passes to play (0 = forever)
+} RblAtlasTag;
+
+// One sheet image
+typedef struct RblAtlasPage {
+    const char *image;              // Image path as written (RblLoadAtlas: joined to the atlas file's folder)
+    int width, height;              // Size the file states (0 = not stated)
+} RblAtlasPage;
+
+// One key of an Aseprite slice: applies from its frame until the slice's next key
+typedef struct RblAtlasSlice {
+    const char *name;               // Slice name (owned by the atlas)
+    int frame;                      // First frame the key applies to
+    Rectangle bounds;               // Untrimmed-canvas pixels, top-left origin
+    Vector2 pivot;                  // Canvas pixels (bounds origin + the file's pivot)
+    bool hasPivot;                  // The key gives a pivot (then it is the pivot of the frames it covers)
+} RblAtlasSlice;
+
+// A loaded atlas: one frame table every draw path reads (RblAtlasBillboard / RblAtlasInstance)
+typedef struct RblAtlas {
+    int format;                     // RblAtlasFormat it was read as
+    int frameCount, tagCount, pageCount, sliceCount;
+    const RblAtlasFrame *frames;    // The tables (owned by state; valid until RblUnloadAtlas)
+    const RblAtlasTag *tags;
+    const RblAtlasPage *pages;
+    const RblAtlasSlice *slices;
+    struct rbl__AtlasState *state;  // The header's: tables and names (NULL = not loaded)
+} RblAtlas;
+
+// Animation playback: a plain value, advanced by RblUpdateSprite
+typedef struct RblSpritePlayer {
+    int tag;                        // Tag played (-1 = every frame of the atlas, forward, forever)
+    int frame;                      // Frame shown now (index into the atlas frames)
+    float time;                     // Seconds into the current frame
+    int step;                       // +1 or -1: the way through the tag now (a pingpong turn flips it)
+    int passes;                     // Passes completed (a pingpong leg is one pass)
+    int loops;                      // Passes to play (0 = forever)
+    bool finished;                  // The last pass ended: the frame stays on its last frame
+} RblSpritePlayer;
+
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
 #endif
@@ -939,6 +1038,21 @@ RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int ligh
 RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
+// Sprite-sheet atlases and animation (CPU, no GL needed)
+RBLAPI RblAtlas RblLoadAtlas(const char *fileName);                          // Load an atlas file (format detected; TexturePacker multipacks follow related_multi_packs); invalid + log on failure
+RBLAPI RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format); // Parse size bytes of atlas text (RblAtlasFormat, 0 = detect); invalid + log on failure
+RBLAPI bool RblIsAtlasValid(const RblAtlas *atlas);                           // Check it is a loaded atlas (not zero, not unloaded)
+RBLAPI void RblUnloadAtlas(RblAtlas *atlas);                                  // Free the atlas's tables and zero it
+RBLAPI int RblAtlasFindFrame(const RblAtlas *atlas, const char *name);        // First frame of that name; -1 when none
+RBLAPI int RblAtlasFindTag(const RblAtlas *atlas, const char *name);          // First tag of that name; -1 when none
+RBLAPI bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale, RblBillboard *billboard); // Set source, size, origin and flags for a frame (world units per pixel); the rest kept
+RBLAPI bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance);   // The same for an instance
+RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops); // Start a tag (-1 = all frames); loops: 0 = the tag's repeat, n > 0 = n passes, -1 = forever
+RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
+RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
+RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
+RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
+
 #if defined(__cplusplus)
 }
 #endif
@@ -957,6 +1071,7 @@ RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDi
 #include <string.h>     // memcpy, memset, strlen
 #include <stdio.h>      // snprintf
 #include <stddef.h>     // offsetof
+#include <stdlib.h>     // strtod, qsort, abs (atlas parsing)
 
 #if defined(RBL_MALLOC) || defined(RBL_CALLOC) || defined(RBL_REALLOC) || defined(RBL_FREE)
     #if !defined(RBL_MALLOC) || !defined(RBL_CALLOC) || !defined(RBL_REALLOC) || !defined(RBL_FREE)
@@ -6928,6 +7043,1177 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
         for (int j = 0; j < k; j++) if (maps[j].light == maps[k].light) return "two shadow maps shadow the same light";
     }
     return NULL;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: sprite-sheet atlases and animation
+//----------------------------------------------------------------------------------
+// Every format lands in one frame table in TexturePacker's convention: a rotated frame is stored
+// turned 90 degrees clockwise in an h x w block; trim and pivot are upright, top-left origin.
+// libGDX's counter-clockwise turn is the clockwise one plus a half turn, which is both mirrors: its
+// source gets both extents negated (RblBillboardVertices mirrors inside the block). Parsers read
+// only inside [text, text + size), bound nesting and counts, and log one line on the first problem.
+
+#define RBL__ATLAS_MAX_DEPTH 64         // JSON nesting
+#define RBL__ATLAS_MAX_COORD 65536.0    // texel coordinates and sizes
+#define RBL__ATLAS_MAX_PAGES 64         // multipack sheets / libGDX pages
+#define RBL__ATLAS_MAX_REPEAT 65535
+#define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // seconds per frame where the atlas gives no duration
+
+static inline Rectangle rbl__rect(float x, float y, float w, float h) { Rectangle r; r.x = x; r.y = y; r.width = w; r.height = h; return r; }
+static inline Vector2 rbl__v2(float x, float y) { Vector2 v; v.x = x; v.y = y; return v; }
+
+typedef struct rbl__AtlasState {
+    RblAtlasFrame *frames; int frameCount, frameCap;
+    RblAtlasTag *tags; int tagCount, tagCap;
+    RblAtlasPage *pages; int pageCount, pageCap;
+    RblAtlasSlice *slices; int sliceCount, sliceCap;
+    char **pools; int poolCount, poolCap;       // name storage: one block per parsed text, never moved
+    char *pool; size_t poolUsed, poolSize;      // the current block
+    int format;
+    char error[200];
+} rbl__AtlasState;
+
+// Atlases are CPU objects the caller owns past RblClose: their own live list (freed when empty)
+static struct { const void **live; int count, capacity; } rbl__atlases;
+
+static bool rbl__atlasLive(const void *s)
+{
+    if (s == NULL) return false;
+    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == s) return true;
+    return false;
+}
+
+static void rbl__atlasError(rbl__AtlasState *s, const char *fmt, const char *detail, long at)
+{
+    if (s->error[0] != 0) return;           // the first problem is the one reported
+    char what[120];
+    snprintf(what, sizeof(what), fmt, (detail != NULL)? detail : "");
+    if (at >= 0) snprintf(s->error, sizeof(s->error), "%s (byte %ld)", what, at);
+    else snprintf(s->error, sizeof(s->error), "%s", what);
+}
+
+static void rbl__atlasFree(rbl__AtlasState *s)
+{
+    if (s == NULL) return;
+    for (int i = 0; i < s->poolCount; i++) RBL_FREE(s->pools[i]);
+    RBL_FREE(s->pools); RBL_FREE(s->frames); RBL_FREE(s->tags); RBL_FREE(s->pages); RBL_FREE(s->slices);
+    RBL_FREE(s);
+}
+
+// Room for one more element: the array (grown when full), NULL on failure (the old array kept)
+static void *rbl__atlasGrowRaw(rbl__AtlasState *s, void *array, int count, int *cap, size_t elem)
+{
+    if (count < *cap) return array;
+    if (*cap >= (1 << 24)) { rbl__atlasError(s, "too many entries%s", NULL, -1); return NULL; }
+    int n = (*cap > 0)? *cap*2 : 16;
+    void *p = RBL_REALLOC(array, (size_t)n*elem);
+    if (p == NULL) { rbl__atlasError(s, "out of memory%s", NULL, -1); return NULL; }
+    *cap = n;
+    return p;
+}
+#define RBL__ATLAS_GROW(s, arr, count, cap, T, onFail) do { void *g_ = rbl__atlasGrowRaw((s), (void *)(arr), (count), &(cap), sizeof(T)); if (g_ == NULL) { onFail; } (arr) = (T *)g_; } while (0)
+
+// A name block big enough for every string one text can hold (decoded strings never outgrow the text)
+static bool rbl__atlasPoolBegin(rbl__AtlasState *s, size_t bytes)
+{
+    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, return false);
+    char *p = (char *)RBL_MALLOC(bytes);
+    if (p == NULL) { rbl__atlasError(s, "out of memory%s", NULL, -1); return false; }
+    s->pools[s->poolCount++] = p;
+    s->pool = p; s->poolUsed = 0; s->poolSize = bytes;
+    return true;
+}
+
+static char *rbl__atlasPoolTake(rbl__AtlasState *s, size_t bytes)
+{
+    if ((s->pool == NULL) || (bytes > s->poolSize - s->poolUsed)) { rbl__atlasError(s, "internal: name storage exhausted%s", NULL, -1); return NULL; }
+    char *p = s->pool + s->poolUsed;
+    s->poolUsed += bytes;
+    return p;
+}
+
+static char *rbl__atlasPoolCopy(rbl__AtlasState *s, const char *text, size_t len)
+{
+    char *p = rbl__atlasPoolTake(s, len + 1);
+    if (p == NULL) return NULL;
+    memcpy(p, text, len); p[len] = 0;
+    return p;
+}
+
+// ---- JSON: a node array (values in document order, each knowing where its subtree ends) ----
+enum { RBL__J_OBJECT = 1, RBL__J_ARRAY, RBL__J_STRING, RBL__J_NUMBER, RBL__J_TRUE, RBL__J_FALSE, RBL__J_NULL };
+typedef struct rbl__JNode {
+    int type;
+    int start, len;     // string: between the quotes, raw; number: its text; container: the opening byte
+    int next;           // first node after this subtree (objects: key and value alternate as children)
+    int count;          // children (objects: 2 per member)
+} rbl__JNode;
+
+typedef struct rbl__Json {
+    const char *text; int size; int pos;
+    rbl__JNode *nodes; int count, cap;
+    rbl__AtlasState *s;
+} rbl__Json;
+
+static void rbl__jsonSkip(rbl__Json *j)
+{
+    while ((j->pos < j->size) && ((j->text[j->pos] == ' ') || (j->text[j->pos] == '\t') || (j->text[j->pos] == '\n') || (j->text[j->pos] == '\r'))) j->pos++;
+}
+
+static int rbl__jsonNode(rbl__Json *j, int type, int start)
+{
+    RBL__ATLAS_GROW(j->s, j->nodes, j->count, j->cap, rbl__JNode, return -1);
+    rbl__JNode *n = &j->nodes[j->count];
+    n->type = type; n->start = start; n->len = 0; n->next = j->count + 1; n->count = 0;
+    return j->count++;
+}
+
+static bool rbl__jsonHex(char c) { return ((c >= '0') && (c <= '9')) || ((c >= 'a') && (c <= 'f')) || ((c >= 'A') && (c <= 'F')); }
+
+static int rbl__jsonValue(rbl__Json *j, int depth);
+
+static int rbl__jsonString(rbl__Json *j)
+{
+    int start = ++j->pos;   // past the quote
+    while (j->pos < j->size)
+    {
+        unsigned char c = (unsigned char)j->text[j->pos];
+        if (c == '"')
+        {
+            int n = rbl__jsonNode(j, RBL__J_STRING, start);
+            if (n < 0) return -1;
+            j->nodes[n].len = j->pos - start;
+            j->pos++;
+            return n;
+        }
+        if (c < 0x20) { rbl__atlasError(j->s, "JSON: control character in a string%s", NULL, j->pos); return -1; }
+        if (c == '\\')
+        {
+            if (j->pos + 1 >= j->size) break;
+            char e = j->text[j->pos + 1];
+            if (e == 'u')
+            {
+                if (j->pos + 5 >= j->size) break;
+                for (int k = 2; k < 6; k++) if (!rbl__jsonHex(j->text[j->pos + k])) { rbl__atlasError(j->s, "JSON: bad \\u escape%s", NULL, j->pos); return -1; }
+                j->pos += 6; continue;
+            }
+            if (strchr("\"\\/bfnrt", e) == NULL || (e == 0)) { rbl__atlasError(j->s, "JSON: bad escape%s", NULL, j->pos); return -1; }
+            j->pos += 2; continue;
+        }
+        j->pos++;
+    }
+    rbl__atlasError(j->s, "JSON: unterminated string%s", NULL, start - 1);
+    return -1;
+}
+
+static int rbl__jsonNumber(rbl__Json *j)
+{
+    int start = j->pos, p = j->pos;
+    const char *t = j->text;
+    if ((p < j->size) && (t[p] == '-')) p++;
+    if ((p < j->size) && (t[p] == '0')) p++;
+    else if ((p < j->size) && (t[p] >= '1') && (t[p] <= '9')) { while ((p < j->size) && (t[p] >= '0') && (t[p] <= '9')) p++; }
+    else { rbl__atlasError(j->s, "JSON: bad number%s", NULL, start); return -1; }
+    if ((p < j->size) && (t[p] == '.'))
+    {
+        p++;
+        if (!((p < j->size) && (t[p] >= '0') && (t[p] <= '9'))) { rbl__atlasError(j->s, "JSON: bad number%s", NULL, start); return -1; }
+        while ((p < j->size) && (t[p] >= '0') && (t[p] <= '9')) p++;
+    }
+    if ((p < j->size) && ((t[p] == 'e') || (t[p] == 'E')))
+    {
+        p++;
+        if ((p < j->size) && ((t[p] == '+') || (t[p] == '-'))) p++;
+        if (!((p < j->size) && (t[p] >= '0') && (t[p] <= '9'))) { rbl__atlasError(j->s, "JSON: bad number%s", NULL, start); return -1; }
+        while ((p < j->size) && (t[p] >= '0') && (t[p] <= '9')) p++;
+    }
+    int n = rbl__jsonNode(j, RBL__J_NUMBER, start);
+    if (n < 0) return -1;
+    j->nodes[n].len = p - start;
+    j->pos = p;
+    return n;
+}
+
+// Object or array; members are parsed recursively (depth bounded)
+static int rbl__jsonContainer(rbl__Json *j, int depth)
+{
+    bool object = (j->text[j->pos] == '{');
+    char close = object? '}' : ']';
+    int n = rbl__jsonNode(j, object? RBL__J_OBJECT : RBL__J_ARRAY, j->pos);
+    if (n < 0) return -1;
+    j->pos++;
+    rbl__jsonSkip(j);
+    int count = 0;
+    if ((j->pos < j->size) && (j->text[j->pos] == close)) j->pos++;
+    else for (;;)
+    {
+        rbl__jsonSkip(j);
+        if (object)
+        {
+            if ((j->pos >= j->size) || (j->text[j->pos] != '"')) { rbl__atlasError(j->s, "JSON: expected a member name%s", NULL, j->pos); return -1; }
+            if (rbl__jsonString(j) < 0) return -1;
+            rbl__jsonSkip(j);
+            if ((j->pos >= j->size) || (j->text[j->pos] != ':')) { rbl__atlasError(j->s, "JSON: expected ':'%s", NULL, j->pos); return -1; }
+            j->pos++;
+            count++;
+        }
+        if (rbl__jsonValue(j, depth + 1) < 0) return -1;
+        count++;
+        rbl__jsonSkip(j);
+        if (j->pos >= j->size) { rbl__atlasError(j->s, "JSON: truncated%s", NULL, j->pos); return -1; }
+        if (j->text[j->pos] == ',') { j->pos++; continue; }
+        if (j->text[j->pos] == close) { j->pos++; break; }
+        rbl__atlasError(j->s, "JSON: expected ',' or a closing bracket%s", NULL, j->pos);
+        return -1;
+    }
+    j->nodes[n].count = count;
+    j->nodes[n].next = j->count;
+    return n;
+}
+
+static int rbl__jsonValue(rbl__Json *j, int depth)
+{
+    if (depth > RBL__ATLAS_MAX_DEPTH) { rbl__atlasError(j->s, "JSON: nested deeper than 64%s", NULL, j->pos); return -1; }
+    rbl__jsonSkip(j);
+    if (j->pos >= j->size) { rbl__atlasError(j->s, "JSON: truncated%s", NULL, j->pos); return -1; }
+    char c = j->text[j->pos];
+    if ((c == '{') || (c == '[')) return rbl__jsonContainer(j, depth);
+    if (c == '"') return rbl__jsonString(j);
+    if ((c == '-') || ((c >= '0') && (c <= '9'))) return rbl__jsonNumber(j);
+    static const char *words[3] = { "true", "false", "null" };
+    static const int types[3] = { RBL__J_TRUE, RBL__J_FALSE, RBL__J_NULL };
+    for (int k = 0; k < 3; k++)
+    {
+        int len = (int)strlen(words[k]);
+        if ((j->size - j->pos >= len) && (memcmp(j->text + j->pos, words[k], (size_t)len) == 0))
+        {
+            int n = rbl__jsonNode(j, types[k], j->pos);
+            if (n >= 0) { j->nodes[n].len = len; j->pos += len; }
+            return n;
+        }
+    }
+    rbl__atlasError(j->s, "JSON: unexpected character%s", NULL, j->pos);
+    return -1;
+}
+
+// Member of an object by name (raw comparison; the last of duplicate keys wins, as JSON.parse)
+static int rbl__jsonGet(const rbl__Json *j, int object, const char *key)
+{
+    if ((object < 0) || (j->nodes[object].type != RBL__J_OBJECT)) return -1;
+    int found = -1, len = (int)strlen(key);
+    for (int k = object + 1, i = 0; i < j->nodes[object].count; i += 2)
+    {
+        const rbl__JNode *name = &j->nodes[k];
+        int value = name->next;
+        if ((name->len == len) && (memcmp(j->text + name->start, key, (size_t)len) == 0)) found = value;
+        k = j->nodes[value].next;
+    }
+    return found;
+}
+
+// UTF-8 of one code point (at most 4 bytes)
+static int rbl__utf8(unsigned int cp, char *out)
+{
+    if (cp < 0x80) { out[0] = (char)cp; return 1; }
+    if (cp < 0x800) { out[0] = (char)(0xC0 | (cp >> 6)); out[1] = (char)(0x80 | (cp & 0x3F)); return 2; }
+    if (cp < 0x10000) { out[0] = (char)(0xE0 | (cp >> 12)); out[1] = (char)(0x80 | ((cp >> 6) & 0x3F)); out[2] = (char)(0x80 | (cp & 0x3F)); return 3; }
+    out[0] = (char)(0xF0 | (cp >> 18)); out[1] = (char)(0x80 | ((cp >> 12) & 0x3F)); out[2] = (char)(0x80 | ((cp >> 6) & 0x3F)); out[3] = (char)(0x80 | (cp & 0x3F));
+    return 4;
+}
+
+static unsigned int rbl__hex4(const char *p)
+{
+    unsigned int v = 0;
+    for (int k = 0; k < 4; k++) { char c = p[k]; v = v*16u + (unsigned int)((c <= '9')? c - '0' : ((c | 32) - 'a' + 10)); }
+    return v;
+}
+
+// Decoded copy of a string node in the name storage (escapes validated by the tokenizer; \u0000 and
+// lone surrogates become U+FFFD so that names stay C strings). The decoded text never outgrows the raw.
+static const char *rbl__jsonText(rbl__Json *j, int node)
+{
+    if ((node < 0) || (j->nodes[node].type != RBL__J_STRING)) return NULL;
+    const char *p = j->text + j->nodes[node].start, *end = p + j->nodes[node].len;
+    char *out = rbl__atlasPoolTake(j->s, (size_t)j->nodes[node].len + 1), *o = out;
+    if (out == NULL) return NULL;
+    while (p < end)
+    {
+        if (*p != '\\') { *o++ = *p++; continue; }
+        char e = p[1];
+        if (e != 'u')
+        {
+            static const char from[] = "\"\\/bfnrt", to[] = "\"\\/\b\f\n\r\t";
+            *o++ = to[strchr(from, e) - from];
+            p += 2; continue;
+        }
+        unsigned int cp = rbl__hex4(p + 2);
+        p += 6;
+        if ((cp >= 0xD800) && (cp < 0xDC00) && (end - p >= 6) && (p[0] == '\\') && (p[1] == 'u'))
+        {
+            unsigned int lo = rbl__hex4(p + 2);
+            if ((lo >= 0xDC00) && (lo < 0xE000)) { cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00); p += 6; }
+        }
+        if ((cp == 0) || ((cp >= 0xD800) && (cp < 0xE000))) cp = 0xFFFD;   // 3 bytes, from 6 raw
+        o += rbl__utf8(cp, o);                                              // 12 raw bytes give at most 4
+    }
+    *o = 0;
+    return out;
+}
+
+static bool rbl__jsonIsText(const rbl__Json *j, int node, const char *word)
+{
+    int len = (int)strlen(word);
+    return (node >= 0) && (j->nodes[node].type == RBL__J_STRING) && (j->nodes[node].len == len) && (memcmp(j->text + j->nodes[node].start, word, (size_t)len) == 0);
+}
+
+// A finite number from a number node, or a string holding exactly a JSON number ("repeat": "2")
+static bool rbl__jsonNum(const rbl__Json *j, int node, double *out)
+{
+    if (node < 0) return false;
+    const rbl__JNode *n = &j->nodes[node];
+    if ((n->type != RBL__J_NUMBER) && (n->type != RBL__J_STRING)) return false;
+    if ((n->len <= 0) || (n->len > 63)) return false;
+    char buf[64];
+    memcpy(buf, j->text + n->start, (size_t)n->len); buf[n->len] = 0;
+    if (n->type == RBL__J_STRING)
+    {
+        // the same grammar as the tokenizer's numbers
+        if (!((buf[0] == '-') || ((buf[0] >= '0') && (buf[0] <= '9')))) return false;
+        for (const char *q = buf; *q; q++) if (strchr("0123456789+-.eE", *q) == NULL) return false;
+    }
+    char *end = NULL;
+    double v = strtod(buf, &end);
+    if ((end != buf + n->len) || !isfinite(v)) return false;
+    *out = v;
+    return true;
+}
+
+// Number member, with a range; missing: def (when optional) else false
+static bool rbl__jsonMember(rbl__Json *j, int object, const char *key, double lo, double hi, bool optional, double def, double *out)
+{
+    int v = rbl__jsonGet(j, object, key);
+    if (v < 0) { if (optional) { *out = def; return true; } rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
+    double x;
+    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasError(j->s, "\"%s\" is not a number in range", key, j->nodes[v].start); return false; }
+    *out = x;
+    return true;
+}
+
+static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
+{
+    int v = rbl__jsonGet(j, object, key);
+    *out = false;
+    if (v < 0) return true;
+    if (j->nodes[v].type == RBL__J_TRUE) { *out = true; return true; }
+    if (j->nodes[v].type == RBL__J_FALSE) return true;
+    rbl__atlasError(j->s, "\"%s\" is not true or false", key, j->nodes[v].start);
+    return false;
+}
+
+// {x, y, w, h} (any subset named in keys, in order) into out[]
+static bool rbl__jsonRect(rbl__Json *j, int object, const char *key, const char *const *names, int n, bool optional, double *out)
+{
+    int r = rbl__jsonGet(j, object, key);
+    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
+    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
+    for (int k = 0; k < n; k++)
+        if (!rbl__jsonMember(j, r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
+    return true;
+}
+
+static RblAtlasPage *rbl__atlasAddPage(rbl__AtlasState *s, const char *image, int width, int height)
+{
+    if (s->pageCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); return NULL; }
+    RBL__ATLAS_GROW(s, s->pages, s->pageCount, s->pageCap, RblAtlasPage, return NULL);
+    RblAtlasPage *p = &s->pages[s->pageCount++];
+    p->image = image; p->width = width; p->height = height;
+    return p;
+}
+
+// Fills the derived fields of a frame from its upright rectangle and trim; false (logged) when
+// inconsistent. ccw: stored turned counter-clockwise (libGDX).
+static bool rbl__atlasFinishFrame(rbl__AtlasState *s, RblAtlasFrame *f, bool rotated, bool ccw, const RblAtlasPage *page)
+{
+    float x = f->block.x, y = f->block.y, w = f->block.width, h = f->block.height;   // upright size on entry
+    if (!(w > 0.0f) || !(h > 0.0f) || (x < 0.0f) || (y < 0.0f)) { rbl__atlasError(s, "frame \"%s\": empty or negative rectangle", f->name, -1); return false; }
+    if (rotated) { f->block.width = h; f->block.height = w; }
+    if ((page->width > 0) && (page->height > 0) && ((f->block.x + f->block.width > (float)page->width) || (f->block.y + f->block.height > (float)page->height)))
+    { rbl__atlasError(s, "frame \"%s\": outside its sheet", f->name, -1); return false; }
+    f->source = f->block;
+    f->flags = rotated? (unsigned int)RBL_FRAME_ROTATED : 0u;
+    if (rotated && ccw) { f->source.width = -f->source.width; f->source.height = -f->source.height; }
+    if (!(f->size.x > 0.0f) || !(f->size.y > 0.0f) || (f->trim.x < 0.0f) || (f->trim.y < 0.0f) ||
+        (f->trim.x + f->trim.width > f->size.x) || (f->trim.y + f->trim.height > f->size.y))
+    { rbl__atlasError(s, "frame \"%s\": trimmed rectangle outside the untrimmed size", f->name, -1); return false; }
+    if (!isfinite(f->pivot.x) || !isfinite(f->pivot.y) || (fabsf(f->pivot.x) > 1e6f) || (fabsf(f->pivot.y) > 1e6f))
+    { rbl__atlasError(s, "frame \"%s\": pivot out of range", f->name, -1); return false; }
+    return true;
+}
+
+static const char *const rbl__xywh[4] = { "x", "y", "w", "h" };
+
+// One TexturePacker / Aseprite frame object
+static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int page)
+{
+    rbl__AtlasState *s = j->s;
+    if ((obj < 0) || (j->nodes[obj].type != RBL__J_OBJECT)) { rbl__atlasError(s, "frame \"%s\" is not an object", name, -1); return false; }
+    double fr[4], sss[4], src[2], piv[2] = { 0.5, 0.5 }, dur = 0.0;
+    bool rotated = false;
+    if (!rbl__jsonRect(j, obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBool(j, obj, "rotated", &rotated)) return false;
+    sss[0] = 0.0; sss[1] = 0.0; sss[2] = fr[2]; sss[3] = fr[3];
+    src[0] = fr[2]; src[1] = fr[3];
+    if (!rbl__jsonRect(j, obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
+    if (!rbl__jsonRect(j, obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
+    const char *const xy[2] = { "x", "y" };
+    // pivot (TexturePacker), anchor (the Pixi exporter's name for it)
+    if (!rbl__jsonRect(j, obj, "anchor", xy, 2, true, piv) || !rbl__jsonRect(j, obj, "pivot", xy, 2, true, piv)) return false;
+    if (!rbl__jsonMember(j, obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
+    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, return false);
+    RblAtlasFrame *f = &s->frames[s->frameCount];
+    memset(f, 0, sizeof(*f));
+    f->name = name; f->page = page; f->index = -1;
+    f->block = rbl__rect((float)fr[0], (float)fr[1], (float)fr[2], (float)fr[3]);
+    // the drawn part is the frame's rectangle, placed at the trim offset (sss w/h repeat the frame's)
+    f->trim = rbl__rect((float)sss[0], (float)sss[1], (float)fr[2], (float)fr[3]);
+    f->size = rbl__v2((float)src[0], (float)src[1]);
+    f->pivot = rbl__v2((float)piv[0], (float)piv[1]);
+    f->duration = (float)(dur/1000.0);
+    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page])) return false;
+    s->frameCount++;
+    return true;
+}
+
+// Whether a frame name belongs to a tag: the tag's name followed by the end or a separator
+static bool rbl__atlasNameInTag(const char *frame, const char *tag)
+{
+    size_t n = strlen(tag);
+    if ((n == 0) || (strncmp(frame, tag, n) != 0)) return false;
+    char c = frame[n];
+    return (c == 0) || (c == ':') || (c == ' ') || (c == '.') || (c == '#') || (c == '-');
+}
+
+// Aseprite tag frame range. from/to count the sheet's frames, except in an export of several
+// sprites, where they count each sprite's own frames: then the frames named after the tag
+// (default "{tag}:{frame}" names) locate it. Sheet indices are kept when they fit the names, or
+// when no frame is named after the tag.
+static bool rbl__asepriteTagRange(const rbl__AtlasState *s, int first, const char *tag, int from, int to, int *outFrom)
+{
+    int n = s->frameCount - first, len = to - from + 1;
+    bool global = (from >= 0) && (to < n);
+    if (global)
+    {
+        bool named = true;
+        for (int i = from; (i <= to) && named; i++) named = rbl__atlasNameInTag(s->frames[first + i].name, tag);
+        if (named) { *outFrom = first + from; return true; }
+    }
+    for (int i = 0; i + len <= n; i++)
+    {
+        bool run = true;
+        for (int k = 0; (k < len) && run; k++) run = rbl__atlasNameInTag(s->frames[first + i + k].name, tag);
+        if (run) { *outFrom = first + i; return true; }
+    }
+    if (global) { *outFrom = first + from; return true; }
+    return false;
+}
+
+static bool rbl__atlasJsonTags(rbl__Json *j, int meta, int first)
+{
+    rbl__AtlasState *s = j->s;
+    int tags = rbl__jsonGet(j, meta, "frameTags");
+    if (tags < 0) return true;
+    if (j->nodes[tags].type != RBL__J_ARRAY) { rbl__atlasError(s, "meta.frameTags is not an array%s", NULL, j->nodes[tags].start); return false; }
+    for (int t = tags + 1, i = 0; i < j->nodes[tags].count; i++, t = j->nodes[t].next)
+    {
+        if (j->nodes[t].type != RBL__J_OBJECT) { rbl__atlasError(s, "a frame tag is not an object%s", NULL, j->nodes[t].start); return false; }
+        const char *name = rbl__jsonText(j, rbl__jsonGet(j, t, "name"));
+        if (name == NULL) { rbl__atlasError(s, "a frame tag has no name%s", NULL, j->nodes[t].start); return false; }
+        double from, to, repeat;
+        if (!rbl__jsonMember(j, t, "from", 0.0, 1e9, false, 0.0, &from) || !rbl__jsonMember(j, t, "to", 0.0, 1e9, false, 0.0, &to) ||
+            !rbl__jsonMember(j, t, "repeat", 0.0, RBL__ATLAS_MAX_REPEAT, true, 0.0, &repeat)) return false;
+        if ((from > to) || (from != floor(from)) || (to != floor(to)) || (repeat != floor(repeat))) { rbl__atlasError(s, "tag \"%s\": from/to/repeat not whole or from > to", name, j->nodes[t].start); return false; }
+        int dir = RBL_SPRITE_FORWARD, d = rbl__jsonGet(j, t, "direction");
+        if (d >= 0)
+        {
+            if (rbl__jsonIsText(j, d, "forward")) dir = RBL_SPRITE_FORWARD;
+            else if (rbl__jsonIsText(j, d, "reverse")) dir = RBL_SPRITE_REVERSE;
+            else if (rbl__jsonIsText(j, d, "pingpong")) dir = RBL_SPRITE_PINGPONG;
+            else if (rbl__jsonIsText(j, d, "pingpong_reverse")) dir = RBL_SPRITE_PINGPONG_REVERSE;
+            else { rbl__atlasError(s, "tag \"%s\": unknown direction", name, j->nodes[d].start); return false; }
+        }
+        int start;
+        if (!rbl__asepriteTagRange(s, first, name, (int)from, (int)to, &start)) { rbl__atlasError(s, "tag \"%s\": frames outside the sheet", name, j->nodes[t].start); return false; }
+        RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, return false);
+        RblAtlasTag *g = &s->tags[s->tagCount++];
+        g->name = name; g->from = start; g->to = start + (int)(to - from); g->direction = dir; g->repeat = (int)repeat;
+    }
+    return true;
+}
+
+// Aseprite slices: one entry per key; the first slice with pivots sets the pivot of the frames its
+// keys cover (canvas pixels -> fractions of the untrimmed size)
+static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
+{
+    rbl__AtlasState *s = j->s;
+    int slices = rbl__jsonGet(j, meta, "slices");
+    if (slices < 0) return true;
+    if (j->nodes[slices].type != RBL__J_ARRAY) { rbl__atlasError(s, "meta.slices is not an array%s", NULL, j->nodes[slices].start); return false; }
+    bool pivotsSet = false;
+    for (int e = slices + 1, i = 0; i < j->nodes[slices].count; i++, e = j->nodes[e].next)
+    {
+        const char *name = rbl__jsonText(j, rbl__jsonGet(j, e, "name"));
+        int keys = rbl__jsonGet(j, e, "keys");
+        if ((name == NULL) || (keys < 0) || (j->nodes[keys].type != RBL__J_ARRAY)) { rbl__atlasError(s, "a slice lacks a name or keys%s", NULL, j->nodes[e].start); return false; }
+        int firstKey = s->sliceCount;
+        bool anyPivot = false;
+        for (int k = keys + 1, n = 0; n < j->nodes[keys].count; n++, k = j->nodes[k].next)
+        {
+            double fr, b[4], p[2] = { 0.0, 0.0 };
+            const char *const xy[2] = { "x", "y" };
+            if ((j->nodes[k].type != RBL__J_OBJECT) || !rbl__jsonMember(j, k, "frame", 0.0, 1e9, false, 0.0, &fr) || (fr != floor(fr)) ||
+                !rbl__jsonRect(j, k, "bounds", rbl__xywh, 4, false, b) || !rbl__jsonRect(j, k, "pivot", xy, 2, true, p))
+            { rbl__atlasError(s, "slice \"%s\": bad key", name, j->nodes[k].start); return false; }
+            if ((n > 0) && (fr <= s->slices[s->sliceCount - 1].frame - first)) { rbl__atlasError(s, "slice \"%s\": keys out of frame order", name, j->nodes[k].start); return false; }
+            RBL__ATLAS_GROW(s, s->slices, s->sliceCount, s->sliceCap, RblAtlasSlice, return false);
+            RblAtlasSlice *sl = &s->slices[s->sliceCount++];
+            sl->name = name; sl->frame = first + (int)fr;
+            sl->bounds = rbl__rect((float)b[0], (float)b[1], (float)b[2], (float)b[3]);
+            sl->hasPivot = (rbl__jsonGet(j, k, "pivot") >= 0);
+            sl->pivot = rbl__v2((float)(b[0] + p[0]), (float)(b[1] + p[1]));
+            anyPivot = anyPivot || sl->hasPivot;
+        }
+        if (!anyPivot || pivotsSet) continue;
+        pivotsSet = true;
+        for (int f = first; f < s->frameCount; f++)
+        {
+            const RblAtlasSlice *key = NULL;
+            for (int k = firstKey; k < s->sliceCount; k++) if (s->slices[k].frame <= f) key = &s->slices[k];
+            if ((key == NULL) || !key->hasPivot) continue;
+            s->frames[f].pivot.x = key->pivot.x/s->frames[f].size.x;
+            s->frames[f].pivot.y = key->pivot.y/s->frames[f].size.y;
+        }
+    }
+    return true;
+}
+
+// TexturePacker / Aseprite JSON; related (may be NULL) receives meta.related_multi_packs
+static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, const char *dir, int *format, rbl__Json *jOut)
+{
+    rbl__Json j0 = { text, size, 0, NULL, 0, 0, s };
+    *jOut = j0;
+    rbl__Json *j = jOut;
+    if ((size >= 3) && ((unsigned char)text[0] == 0xEF) && ((unsigned char)text[1] == 0xBB) && ((unsigned char)text[2] == 0xBF)) j->pos = 3;
+    int root = rbl__jsonValue(j, 0);
+    if (root < 0) return false;
+    rbl__jsonSkip(j);
+    if (j->pos != j->size) { rbl__atlasError(s, "JSON: text after the document%s", NULL, j->pos); return false; }
+    if (j->nodes[root].type != RBL__J_OBJECT) { rbl__atlasError(s, "JSON: the document is not an object%s", NULL, 0); return false; }
+    int frames = rbl__jsonGet(j, root, "frames"), meta = rbl__jsonGet(j, root, "meta");
+    if ((frames < 0) || ((j->nodes[frames].type != RBL__J_OBJECT) && (j->nodes[frames].type != RBL__J_ARRAY))) { rbl__atlasError(s, "no \"frames\" object or array%s", NULL, 0); return false; }
+    if ((meta >= 0) && (j->nodes[meta].type != RBL__J_OBJECT)) { rbl__atlasError(s, "\"meta\" is not an object%s", NULL, j->nodes[meta].start); return false; }
+    if (*format == RBL_ATLAS_AUTO)
+    {
+        int app = rbl__jsonGet(j, meta, "app");
+        bool aseprite = false;
+        if ((app >= 0) && (j->nodes[app].type == RBL__J_STRING))
+            for (int k = 0; k + 8 <= j->nodes[app].len; k++) if (memcmp(j->text + j->nodes[app].start + k, "aseprite", 8) == 0) aseprite = true;
+        *format = (aseprite || (rbl__jsonGet(j, meta, "frameTags") >= 0))? RBL_ATLAS_ASEPRITE : RBL_ATLAS_TEXTUREPACKER;
+    }
+    // the sheet: meta.image (joined to dir) and meta.size
+    double sz[2] = { 0.0, 0.0 };
+    if ((meta >= 0) && !rbl__jsonRect(j, meta, "size", rbl__xywh + 2, 2, true, sz)) return false;
+    if ((sz[0] < 0.0) || (sz[1] < 0.0)) { rbl__atlasError(s, "meta.size is negative%s", NULL, -1); return false; }
+    int img = rbl__jsonGet(j, meta, "image");
+    const char *image = "";
+    if (img >= 0)
+    {
+        const char *raw = rbl__jsonText(j, img);
+        if (raw == NULL) { rbl__atlasError(s, "meta.image is not a string%s", NULL, j->nodes[img].start); return false; }
+        if ((dir != NULL) && (dir[0] != 0) && (raw[0] != '/'))
+        {
+            size_t dl = strlen(dir), rl = strlen(raw);
+            char *joined = rbl__atlasPoolTake(s, dl + rl + 2);
+            if (joined == NULL) return false;
+            memcpy(joined, dir, dl); joined[dl] = '/'; memcpy(joined + dl + 1, raw, rl + 1);
+            image = joined;
+        }
+        else image = raw;
+    }
+    if (rbl__atlasAddPage(s, image, (int)sz[0], (int)sz[1]) == NULL) return false;
+    int page = s->pageCount - 1, first = s->frameCount;
+    bool hash = (j->nodes[frames].type == RBL__J_OBJECT);
+    for (int k = frames + 1, i = 0; i < j->nodes[frames].count; i += hash? 2 : 1)
+    {
+        int value = hash? j->nodes[k].next : k;
+        const char *name = hash? rbl__jsonText(j, k) : rbl__jsonText(j, rbl__jsonGet(j, value, "filename"));
+        if (name == NULL) { rbl__atlasError(s, "a frame has no name (\"filename\")%s", NULL, j->nodes[value].start); return false; }
+        if (!rbl__atlasJsonFrame(j, value, name, page)) return false;
+        k = j->nodes[value].next;
+    }
+    if (meta >= 0) { if (!rbl__atlasJsonTags(j, meta, first) || !rbl__atlasJsonSlices(j, meta, first)) return false; }
+    return true;
+}
+
+// ---- libGDX text ----------------------------------------------------------------------------
+// Up to n comma-separated integers of a value ("948,118,36,78" or "2, 7"); false unless exactly n
+static bool rbl__gdxInts(const char *v, const char *end, int *out, int n)
+{
+    for (int k = 0; k < n; k++)
+    {
+        while ((v < end) && (*v == ' ')) v++;
+        bool neg = false;
+        if ((v < end) && (*v == '-')) { neg = true; v++; }
+        if (!((v < end) && (*v >= '0') && (*v <= '9'))) return false;
+        long x = 0;
+        while ((v < end) && (*v >= '0') && (*v <= '9')) { x = x*10 + (*v - '0'); if (x > 1000000000L) return false; v++; }
+        out[k] = (int)(neg? -x : x);
+        while ((v < end) && (*v == ' ')) v++;
+        if (k + 1 < n) { if (!((v < end) && (*v == ','))) return false; v++; }
+    }
+    return v == end;
+}
+
+typedef struct rbl__GdxRegion { int xy[2], size[2], orig[2], offset[2], index; bool rotated, hasXY, hasSize, hasOrig; } rbl__GdxRegion;
+
+static bool rbl__gdxFinish(rbl__AtlasState *s, const char *name, const rbl__GdxRegion *r)
+{
+    if (!r->hasXY || !r->hasSize) { rbl__atlasError(s, "region \"%s\": no xy/size or bounds", name, -1); return false; }
+    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, return false);
+    RblAtlasFrame *f = &s->frames[s->frameCount];
+    memset(f, 0, sizeof(*f));
+    f->name = name; f->page = s->pageCount - 1; f->index = r->index;
+    float w = (float)r->size[0], h = (float)r->size[1];
+    f->block = rbl__rect((float)r->xy[0], (float)r->xy[1], w, h);
+    f->size = r->hasOrig? rbl__v2((float)r->orig[0], (float)r->orig[1]) : rbl__v2(w, h);
+    // offset from the bottom-left of the original to the bottom-left of the packed part
+    f->trim = rbl__rect((float)r->offset[0], f->size.y - (float)r->offset[1] - h, w, h);
+    f->pivot = rbl__v2(0.5f, 0.5f);
+    if (!rbl__atlasFinishFrame(s, f, r->rotated, true, &s->pages[s->pageCount - 1])) return false;
+    s->frameCount++;
+    return true;
+}
+
+// Stable order key for grouping: regions sharing a name together (first appearance), by index
+typedef struct rbl__GdxKey { const char *name; int pos, group, index; } rbl__GdxKey;
+static int rbl__gdxByName(const void *a, const void *b)
+{
+    const rbl__GdxKey *x = (const rbl__GdxKey *)a, *y = (const rbl__GdxKey *)b;
+    int c = strcmp(x->name, y->name);
+    return (c != 0)? c : ((x->pos > y->pos) - (x->pos < y->pos));
+}
+static int rbl__gdxByGroup(const void *a, const void *b)
+{
+    const rbl__GdxKey *x = (const rbl__GdxKey *)a, *y = (const rbl__GdxKey *)b;
+    if (x->group != y->group) return (x->group > y->group) - (x->group < y->group);
+    if (x->index != y->index) return (x->index > y->index) - (x->index < y->index);
+    return (x->pos > y->pos) - (x->pos < y->pos);
+}
+
+// libGDX: regions named alike with index >= 0 become one tag in index order (the frames move so
+// that each tag is a contiguous run; everything else keeps file order)
+static bool rbl__gdxGroup(rbl__AtlasState *s)
+{
+    int n = s->frameCount;
+    bool any = false;
+    for (int i = 0; i < n; i++) any = any || (s->frames[i].index >= 0);
+    if (!any) return true;
+    rbl__GdxKey *keys = (rbl__GdxKey *)RBL_MALLOC((size_t)n*sizeof(rbl__GdxKey));
+    RblAtlasFrame *sorted = (RblAtlasFrame *)RBL_MALLOC((size_t)n*sizeof(RblAtlasFrame));
+    if ((keys == NULL) || (sorted == NULL)) { RBL_FREE(keys); RBL_FREE(sorted); rbl__atlasError(s, "out of memory%s", NULL, -1); return false; }
+    for (int i = 0; i < n; i++) { keys[i].name = s->frames[i].name; keys[i].pos = i; keys[i].index = s->frames[i].index; }
+    qsort(keys, (size_t)n, sizeof(rbl__GdxKey), rbl__gdxByName);
+    for (int i = 0; i < n; i++) keys[i].group = ((i > 0) && (strcmp(keys[i].name, keys[i - 1].name) == 0))? keys[i - 1].group : keys[i].pos;
+    qsort(keys, (size_t)n, sizeof(rbl__GdxKey), rbl__gdxByGroup);
+    for (int i = 0; i < n; i++) sorted[i] = s->frames[keys[i].pos];
+    memcpy(s->frames, sorted, (size_t)n*sizeof(RblAtlasFrame));
+    bool ok = true;
+    for (int i = 0; (i < n) && ok; )
+    {
+        int e = i;
+        while ((e + 1 < n) && (keys[e + 1].group == keys[i].group)) e++;
+        int from = i;
+        while ((from <= e) && (s->frames[from].index < 0)) from++;
+        if (from <= e)
+        {
+            ok = true; RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, ok = false; break);
+            if (ok)
+            {
+                RblAtlasTag *t = &s->tags[s->tagCount++];
+                t->name = s->frames[from].name; t->from = from; t->to = e; t->direction = RBL_SPRITE_FORWARD; t->repeat = 0;
+            }
+        }
+        i = e + 1;
+    }
+    RBL_FREE(keys); RBL_FREE(sorted);
+    return ok;
+}
+
+static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, const char *dir)
+{
+    const char *p = text, *end = text + size;
+    bool expectPage = true;
+    const char *region = NULL;
+    rbl__GdxRegion r;
+    memset(&r, 0, sizeof(r));
+    int lineNo = 0;
+    while (p < end)
+    {
+        const char *eol = p;
+        while ((eol < end) && (*eol != '\n')) eol++;
+        const char *a = p, *b = eol;
+        p = (eol < end)? eol + 1 : end;
+        lineNo++;
+        while ((a < b) && ((*a == ' ') || (*a == '\t'))) a++;
+        while ((b > a) && ((b[-1] == ' ') || (b[-1] == '\t') || (b[-1] == '\r'))) b--;
+        for (const char *c = a; c < b; c++) if ((unsigned char)*c < 0x20 && (*c != '\t')) { rbl__atlasError(s, "libGDX: control character on line %s", NULL, -1); return false; }
+        if (a == b)     // blank line: a page ends (its last region with it)
+        {
+            if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; region = NULL; }
+            expectPage = true;
+            continue;
+        }
+        if (expectPage)
+        {
+            size_t dl = (dir != NULL)? strlen(dir) : 0, nl = (size_t)(b - a);
+            char *image = rbl__atlasPoolTake(s, dl + nl + 2);
+            if (image == NULL) return false;
+            if (dl > 0) { memcpy(image, dir, dl); image[dl] = '/'; memcpy(image + dl + 1, a, nl); image[dl + 1 + nl] = 0; }
+            else { memcpy(image, a, nl); image[nl] = 0; }
+            if (rbl__atlasAddPage(s, image, 0, 0) == NULL) return false;
+            expectPage = false;
+            continue;
+        }
+        const char *colon = (const char *)memchr(a, ':', (size_t)(b - a));
+        if (colon == NULL)      // a region name
+        {
+            if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; }
+            region = rbl__atlasPoolCopy(s, a, (size_t)(b - a));
+            if (region == NULL) return false;
+            memset(&r, 0, sizeof(r)); r.index = -1;
+            continue;
+        }
+        const char *k = a, *ke = colon, *v = colon + 1;
+        while ((ke > k) && (ke[-1] == ' ')) ke--;
+        while ((v < b) && (*v == ' ')) v++;
+        size_t kl = (size_t)(ke - k);
+        #define RBL__KEY(word) ((kl == sizeof(word) - 1) && (memcmp(k, word, kl) == 0))
+        bool ok = true;
+        int q[4];
+        if (region == NULL)     // page fields: only the size is read (format, filter, repeat, pma ignored)
+        {
+            if (RBL__KEY("size"))
+            {
+                ok = rbl__gdxInts(v, b, q, 2) && (q[0] > 0) && (q[1] > 0) && (q[0] <= RBL__ATLAS_MAX_COORD) && (q[1] <= RBL__ATLAS_MAX_COORD);
+                if (ok) { s->pages[s->pageCount - 1].width = q[0]; s->pages[s->pageCount - 1].height = q[1]; }
+            }
+        }
+        else if (RBL__KEY("rotate"))
+        {
+            size_t vl = (size_t)(b - v);
+            if (((vl == 4) && (memcmp(v, "true", 4) == 0)) || ((vl == 2) && (memcmp(v, "90", 2) == 0))) r.rotated = true;
+            else if (((vl == 5) && (memcmp(v, "false", 5) == 0)) || ((vl == 1) && (*v == '0'))) r.rotated = false;
+            else ok = false;
+        }
+        else if (RBL__KEY("xy")) { ok = rbl__gdxInts(v, b, r.xy, 2); r.hasXY = true; }
+        else if (RBL__KEY("size")) { ok = rbl__gdxInts(v, b, r.size, 2); r.hasSize = true; }
+        else if (RBL__KEY("orig")) { ok = rbl__gdxInts(v, b, r.orig, 2); r.hasOrig = true; }
+        else if (RBL__KEY("offset")) ok = rbl__gdxInts(v, b, r.offset, 2);
+        else if (RBL__KEY("index")) ok = rbl__gdxInts(v, b, &r.index, 1) && (r.index >= -1);
+        else if (RBL__KEY("bounds"))
+        {
+            ok = rbl__gdxInts(v, b, q, 4);
+            r.xy[0] = q[0]; r.xy[1] = q[1]; r.size[0] = q[2]; r.size[1] = q[3]; r.hasXY = r.hasSize = true;
+        }
+        else if (RBL__KEY("offsets"))
+        {
+            ok = rbl__gdxInts(v, b, q, 4);
+            r.offset[0] = q[0]; r.offset[1] = q[1]; r.orig[0] = q[2]; r.orig[1] = q[3]; r.hasOrig = true;
+        }
+        #undef RBL__KEY
+        for (int c = 0; c < 2; c++) if ((abs(r.xy[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.size[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.orig[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.offset[c]) > RBL__ATLAS_MAX_COORD)) ok = false;
+        if (!ok) { char ln[24]; snprintf(ln, sizeof(ln), "%d", lineNo); rbl__atlasError(s, "libGDX: bad value on line %s", ln, -1); return false; }
+    }
+    if ((region != NULL) && !rbl__gdxFinish(s, region, &r)) return false;
+    if (s->frameCount == 0) { rbl__atlasError(s, "libGDX: no regions%s", NULL, -1); return false; }
+    return rbl__gdxGroup(s);
+}
+
+// Parses one text into s (appending a page and its frames); format in/out
+static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int *format, const char *dir, char ***related, int *relatedCount)
+{
+    // decoded strings never outgrow their raw text; sheet paths add the folder (at most 64 pages)
+    if (!rbl__atlasPoolBegin(s, 2*(size_t)size + (RBL__ATLAS_MAX_PAGES + 2)*(((dir != NULL)? strlen(dir) : 0) + 2) + 64)) return false;
+    int f = *format;     // TexturePacker and Aseprite read alike (the caller's name is kept); AUTO: detected
+    if (f == RBL_ATLAS_AUTO)
+    {
+        int i = 0;
+        if ((size >= 3) && ((unsigned char)text[0] == 0xEF) && ((unsigned char)text[1] == 0xBB) && ((unsigned char)text[2] == 0xBF)) i = 3;
+        while ((i < size) && ((text[i] == ' ') || (text[i] == '\t') || (text[i] == '\n') || (text[i] == '\r'))) i++;
+        f = ((i < size) && (text[i] == '{'))? RBL_ATLAS_AUTO : RBL_ATLAS_LIBGDX;   // JSON: told apart by its meta
+    }
+    if (f == RBL_ATLAS_LIBGDX) { *format = f; return rbl__atlasParseGdx(s, text, size, dir); }
+    rbl__Json j;
+    bool ok = rbl__atlasParseJson(s, text, size, dir, &f, &j);
+    if (ok && (related != NULL))
+    {
+        int packs = rbl__jsonGet(&j, rbl__jsonGet(&j, 0, "meta"), "related_multi_packs");
+        if ((packs >= 0) && (j.nodes[packs].type == RBL__J_ARRAY))
+            for (int k = packs + 1, i = 0; (i < j.nodes[packs].count) && ok; i++, k = j.nodes[k].next)
+            {
+                const char *name = rbl__jsonText(&j, k);
+                if (name == NULL) { rbl__atlasError(s, "related_multi_packs holds a non-string%s", NULL, j.nodes[k].start); ok = false; break; }
+                // plain file names beside the atlas only: a pack never leads the loader elsewhere
+                if ((name[0] == 0) || (name[0] == '.') || (strchr(name, '/') != NULL) || (strchr(name, '\\') != NULL)) { rbl__atlasError(s, "related pack \"%s\" is not a file name beside the atlas", name, j.nodes[k].start); ok = false; break; }
+                if (*relatedCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); ok = false; break; }
+                (*related)[(*relatedCount)++] = (char *)name;
+            }
+    }
+    RBL_FREE(j.nodes);
+    *format = f;
+    return ok;
+}
+
+static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
+{
+    RblAtlas a;
+    memset(&a, 0, sizeof(a));
+    RBL__ATLAS_GROW(s, rbl__atlases.live, rbl__atlases.count, rbl__atlases.capacity, const void *, return a);
+    rbl__atlases.live[rbl__atlases.count++] = s;
+    s->format = format;
+    a.format = format;
+    a.frameCount = s->frameCount; a.tagCount = s->tagCount; a.pageCount = s->pageCount; a.sliceCount = s->sliceCount;
+    a.frames = s->frames; a.tags = s->tags; a.pages = s->pages; a.slices = s->slices;
+    a.state = s;
+    return a;
+}
+
+static RblAtlas rbl__atlasFail(rbl__AtlasState *s, const char *fn, const char *what)
+{
+    RblAtlas a;
+    memset(&a, 0, sizeof(a));
+    TraceLog(LOG_WARNING, "RBL: %s: %s: %s", fn, what, ((s != NULL) && (s->error[0] != 0))? s->error : "out of memory");
+    rbl__atlasFree(s);
+    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    return a;
+}
+
+RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format)
+{
+    RblAtlas none;
+    memset(&none, 0, sizeof(none));
+    if ((text == NULL) || (size <= 0) || (size > (1 << 28))) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasFromMemory: text NULL or size outside 1..2^28"); return none; }
+    if ((format < RBL_ATLAS_AUTO) || (format > RBL_ATLAS_LIBGDX)) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasFromMemory: unknown format %i", format); return none; }
+    rbl__AtlasState *s = (rbl__AtlasState *)RBL_CALLOC(1, sizeof(rbl__AtlasState));
+    if (s == NULL) return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas");
+    int f = format;
+    if (!rbl__atlasParse(s, text, size, &f, NULL, NULL, NULL)) return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas");
+    if (s->frameCount == 0) { rbl__atlasError(s, "no frames%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas"); }
+    RblAtlas a = rbl__atlasPublish(s, f);
+    if (a.state == NULL) return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas");
+    return a;
+}
+
+RblAtlas RblLoadAtlas(const char *fileName)
+{
+    RblAtlas none;
+    memset(&none, 0, sizeof(none));
+    if ((fileName == NULL) || (fileName[0] == 0)) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlas: fileName NULL or empty"); return none; }
+    rbl__AtlasState *s = (rbl__AtlasState *)RBL_CALLOC(1, sizeof(rbl__AtlasState));
+    if (s == NULL) return rbl__atlasFail(s, "RblLoadAtlas", fileName);
+    // the folder of the file: sheets and related packs are named relative to it
+    size_t fl = strlen(fileName), dl = fl;
+    while ((dl > 0) && (fileName[dl - 1] != '/') && (fileName[dl - 1] != '\\')) dl--;
+    char dir[1024], path[2048];
+    if ((dl >= sizeof(dir)) || (fl >= sizeof(path))) { rbl__atlasError(s, "path too long%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+    memcpy(dir, fileName, dl); dir[(dl > 0)? dl - 1 : 0] = 0;
+    char *relatedStore[RBL__ATLAS_MAX_PAGES], **related = relatedStore;
+    int relatedCount = 0, done = 0, format = RBL_ATLAS_AUTO;
+    const char *loaded[RBL__ATLAS_MAX_PAGES + 1];
+    memcpy(path, fileName, fl + 1);
+    const char *next = fileName;
+    for (;;)
+    {
+        int bytes = 0;
+        unsigned char *data = LoadFileData(path, &bytes);
+        if ((data == NULL) || (bytes <= 0)) { if (data != NULL) UnloadFileData(data); rbl__atlasError(s, "cannot read \"%s\"", path, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        int f = (done == 0)? RBL_ATLAS_AUTO : format;
+        bool ok = rbl__atlasParse(s, (const char *)data, bytes, &f, (dl > 0)? dir : NULL, &related, &relatedCount);
+        UnloadFileData(data);
+        if (!ok) return rbl__atlasFail(s, "RblLoadAtlas", path);
+        if (done == 0) format = f;
+        loaded[done++] = next;
+        // next related pack not loaded yet (each pack lists the others)
+        next = NULL;
+        for (int i = 0; (i < relatedCount) && (next == NULL); i++)
+        {
+            bool seen = false;
+            for (int k = 1; k < done; k++) seen = seen || (strcmp(loaded[k], related[i]) == 0);
+            const char *base = fileName + dl;
+            if (!seen && (strcmp(related[i], base) != 0)) next = related[i];
+        }
+        if (next == NULL) break;
+        if (done > RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        if (dl + strlen(next) + 1 >= sizeof(path)) { rbl__atlasError(s, "path too long%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        memcpy(path, fileName, dl); memcpy(path + dl, next, strlen(next) + 1);
+    }
+    if (s->frameCount == 0) { rbl__atlasError(s, "no frames%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+    RblAtlas a = rbl__atlasPublish(s, format);
+    if (a.state == NULL) return rbl__atlasFail(s, "RblLoadAtlas", fileName);
+    return a;
+}
+
+bool RblIsAtlasValid(const RblAtlas *atlas)
+{
+    return (atlas != NULL) && rbl__atlasLive(atlas->state);
+}
+
+void RblUnloadAtlas(RblAtlas *atlas)
+{
+    if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: NULL atlas"); return; }
+    if (!rbl__atlasLive(atlas->state))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", (atlas->state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+        memset(atlas, 0, sizeof(*atlas));
+        return;
+    }
+    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == atlas->state) { rbl__atlases.live[i] = rbl__atlases.live[--rbl__atlases.count]; break; }
+    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__atlasFree(atlas->state);
+    memset(atlas, 0, sizeof(*atlas));
+}
+
+// The live state of an atlas argument, or NULL after one line under fn
+static const rbl__AtlasState *rbl__atlasArg(const RblAtlas *atlas, const char *fn)
+{
+    if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL atlas", fn); return NULL; }
+    if (!rbl__atlasLive(atlas->state)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
+    return atlas->state;
+}
+
+int RblAtlasFindFrame(const RblAtlas *atlas, const char *name)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblAtlasFindFrame");
+    if (s == NULL) return -1;
+    if (name == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasFindFrame: NULL name"); return -1; }
+    for (int i = 0; i < s->frameCount; i++) if (strcmp(s->frames[i].name, name) == 0) return i;
+    return -1;
+}
+
+int RblAtlasFindTag(const RblAtlas *atlas, const char *name)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblAtlasFindTag");
+    if (s == NULL) return -1;
+    if (name == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasFindTag: NULL name"); return -1; }
+    for (int i = 0; i < s->tagCount; i++) if (strcmp(s->tags[i].name, name) == 0) return i;
+    return -1;
+}
+
+// Quad of a frame: the trimmed part at its place in the untrimmed frame, pivot as the origin
+// (world units from the drawn quad's bottom-left; may lie outside it)
+static void rbl__atlasFrameQuad(const RblAtlasFrame *f, float worldScale, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
+    double k = worldScale;
+    double px = (double)f->pivot.x*f->size.x, py = (double)f->pivot.y*f->size.y;     // pixels, top-left origin
+    *source = f->source;
+    *size = rbl__v2((float)(f->trim.width*k), (float)(f->trim.height*k));
+    *origin = rbl__v2((float)((px - f->trim.x)*k), (float)(((double)f->trim.y + f->trim.height - py)*k));
+    *flags = f->flags;
+}
+
+static bool rbl__atlasQuad(const RblAtlas *atlas, int frame, float worldScale, const char *fn, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, fn);
+    if (s == NULL) return false;
+    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
+    rbl__atlasFrameQuad(&s->frames[frame], worldScale, source, size, origin, flags);
+    return true;
+}
+
+bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale, RblBillboard *billboard)
+{
+    if (billboard == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasBillboard: NULL billboard"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags;
+    if (!rbl__atlasQuad(atlas, frame, worldScale, "RblAtlasBillboard", &src, &size, &origin, &flags)) return false;
+    billboard->source = src; billboard->size = size; billboard->origin = origin;
+    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    return true;
+}
+
+bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance)
+{
+    if (instance == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasInstance: NULL instance"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags;
+    if (!rbl__atlasQuad(atlas, frame, worldScale, "RblAtlasInstance", &src, &size, &origin, &flags)) return false;
+    instance->source = src; instance->size = size; instance->origin = origin;
+    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    return true;
+}
+
+// ---- animation ------------------------------------------------------------------------------
+static void rbl__spriteRange(const rbl__AtlasState *s, int tag, int *from, int *to, int *direction, int *repeat)
+{
+    if (tag < 0) { *from = 0; *to = s->frameCount - 1; *direction = RBL_SPRITE_FORWARD; *repeat = 0; return; }
+    *from = s->tags[tag].from; *to = s->tags[tag].to; *direction = s->tags[tag].direction; *repeat = s->tags[tag].repeat;
+}
+
+static double rbl__spriteDuration(const rbl__AtlasState *s, int frame)
+{
+    float d = s->frames[frame].duration;
+    return (d > 0.0f)? (double)d : (double)RBL_SPRITE_DEFAULT_FRAME_TIME;
+}
+
+RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops)
+{
+    RblSpritePlayer p;
+    memset(&p, 0, sizeof(p));
+    p.tag = -1; p.step = 1;
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblPlaySprite");
+    if (s == NULL) return p;
+    if ((tag < -1) || (tag >= s->tagCount)) { TraceLog(LOG_WARNING, "RBL: RblPlaySprite: tag %i outside -1..%i (first frame shown)", tag, s->tagCount - 1); return p; }
+    if (loops < -1) { TraceLog(LOG_WARNING, "RBL: RblPlaySprite: loops %i below -1 (first frame shown)", loops); return p; }
+    int from, to, dir, repeat;
+    rbl__spriteRange(s, tag, &from, &to, &dir, &repeat);
+    p.tag = tag;
+    p.loops = (loops == 0)? repeat : ((loops < 0)? 0 : loops);
+    bool backward = (dir == RBL_SPRITE_REVERSE) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
+    p.frame = backward? to : from;
+    p.step = backward? -1 : 1;
+    return p;
+}
+
+// One frame on: false when the last pass ended (the player stays on its frame, finished)
+static bool rbl__spriteAdvance(RblSpritePlayer *p, int from, int to, int dir)
+{
+    int next = p->frame + p->step;
+    if ((next >= from) && (next <= to)) { p->frame = next; return true; }
+    p->passes++;
+    if ((p->loops > 0) && (p->passes >= p->loops)) { p->finished = true; return false; }
+    if ((dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE))
+    {
+        p->step = -p->step;
+        if (from < to) p->frame += p->step;     // the turn frame shows once
+    }
+    else p->frame = (p->step > 0)? from : to;
+    return true;
+}
+
+// One player advanced by dt (validated by the caller): NULL, or why the player is not one of
+// RblPlaySprite's for this atlas (then it is untouched)
+static const char *rbl__spriteStep(const rbl__AtlasState *s, RblSpritePlayer *player, float dt)
+{
+    RblSpritePlayer p = *player;
+    int from, to, dir, repeat;
+    if ((p.tag < -1) || (p.tag >= s->tagCount)) return "player's tag not in this atlas";
+    rbl__spriteRange(s, p.tag, &from, &to, &dir, &repeat);
+    bool pingpong = (dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
+    if ((p.frame < from) || (p.frame > to) || ((p.step != 1) && (p.step != -1)) || !rbl__finite(p.time) || (p.time < 0.0f) || (p.loops < 0) || (p.passes < 0))
+        return "player state not from RblPlaySprite for this atlas (frame, step, time or counts)";
+    if (p.finished) return NULL;
+    double t = (double)p.time + dt;
+    // Most updates stay inside the current frame: no period, no stepping
+    if (t < rbl__spriteDuration(s, p.frame)) { player->time = (float)t; if (player->time >= (float)rbl__spriteDuration(s, p.frame)) player->time = nextafterf((float)rbl__spriteDuration(s, p.frame), 0.0f); return NULL; }
+    // Whole periods change nothing but the pass count: skip them (a huge dt costs no more than one)
+    double period = 0.0;
+    for (int i = from; i <= to; i++) period += rbl__spriteDuration(s, i);
+    int perPeriod = 1;     // passes per period: a pingpong period is both legs (one frame: each step is a leg)
+    if (pingpong && (to > from)) { for (int i = from + 1; i < to; i++) period += rbl__spriteDuration(s, i); perPeriod = 2; }
+    if (t > 2.0*period)
+    {
+        double whole = floor(t/period) - 1.0;
+        if (p.loops > 0)
+        {
+            double room = floor((double)(p.loops - p.passes - 2)/perPeriod);
+            if (whole > room) whole = room;
+        }
+        if (whole > 0.0)
+        {
+            t -= whole*period;
+            double passes = (double)p.passes + whole*perPeriod;
+            p.passes = (passes > 2e9)? (int)(fmod(passes, 1e9) + 1e9) : (int)passes;
+        }
+    }
+    for (int guard = 0; guard < 1 << 20; guard++)
+    {
+        double d = rbl__spriteDuration(s, p.frame);
+        if (t < d) break;
+        if (!rbl__spriteAdvance(&p, from, to, dir)) { t = 0.0; break; }
+        t -= d;
+    }
+    p.time = (float)t;
+    if (p.time >= (float)rbl__spriteDuration(s, p.frame)) p.time = nextafterf((float)rbl__spriteDuration(s, p.frame), 0.0f);
+    *player = p;
+    return NULL;
+}
+
+bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSprite");
+    if (s == NULL) return false;
+    if (player == NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: NULL player"); return false; }
+    if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: dt must be finite and >= 0"); return false; }
+    const char *bad = rbl__spriteStep(s, player, dt);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprite: %s", bad); return false; }
+    return true;
+}
+
+int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSpriteInstances");
+    if (s == NULL) return 0;
+    if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
+    if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
+    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
+    int done = 0, skipped = 0;
+    const char *why = NULL;
+    for (int i = 0; i < count; i++)
+    {
+        const char *bad = rbl__spriteStep(s, &players[i], dt);
+        if (bad != NULL) { skipped++; why = bad; continue; }
+        RblInstance *in = &instances[i];
+        unsigned int flags;
+        rbl__atlasFrameQuad(&s->frames[players[i].frame], worldScale, &in->source, &in->size, &in->origin, &flags);
+        in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+        done++;
+    }
+    if (skipped > 0) TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: %i players skipped (instances untouched): %s", skipped, why);
+    return done;
+}
+
+float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblSpriteBlend");
+    if (s == NULL) return 0.0f;
+    if ((player == NULL) || (nextFrame == NULL)) { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: NULL player or nextFrame"); return 0.0f; }
+    int from, to, dir, repeat;
+    if ((player->tag < -1) || (player->tag >= s->tagCount)) { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: player's tag %i not in this atlas", player->tag); return 0.0f; }
+    rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
+    if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
+    { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: player state not from RblPlaySprite for this atlas"); return 0.0f; }
+    RblSpritePlayer p = *player;
+    *nextFrame = p.frame;
+    if (p.finished) return 0.0f;
+    double w = (double)p.time/rbl__spriteDuration(s, p.frame);
+    if (!rbl__spriteAdvance(&p, from, to, dir)) return 0.0f;
+    *nextFrame = p.frame;
+    return (float)((w < 0.0)? 0.0 : ((w > 1.0)? 1.0 : w));
+}
+
+int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions)
+{
+    if ((directions < 1) || (directions > 360)) { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: directions %i outside 1..360", directions); return -1; }
+    if (!rbl__finite(viewDirection.x) || !rbl__finite(viewDirection.y) || !rbl__finite(viewDirection.z) || !rbl__finite(facingDegrees) || (fabsf(facingDegrees) > 1e9f))
+    { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: NaN/Inf view direction or facing (|facing| <= 1e9)"); return -1; }
+    // The eye seen from the sprite, on the ground plane: angle about +Y from +Z (the facing's 0)
+    double ex = -(double)viewDirection.x, ez = -(double)viewDirection.z;
+    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up (or zero): the front
+    double eye = atan2(ex, ez)*(180.0/3.14159265358979323846);
+    double rel = fmod(eye - fmod((double)facingDegrees, 360.0), 360.0);
+    if (rel < 0.0) rel += 360.0;
+    double width = 360.0/directions;
+    int k = (int)floor((rel + 0.5*width)/width);
+    return k % directions;
 }
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

@@ -8,6 +8,7 @@
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
 #   alloc:          RBL_MALLOC family failing at the Nth call, swept over N on every allocating path
+#   fuzz:           the atlas readers under libFuzzer (one target per format, bounded time)
 #   gpu:            render tests under EGL surfaceless, then under OSMesa (GL 3.3 core), then on
 #                   strict ES 3.0, ES 2.0 and GL 2.1 contexts with raylib built for each
 #   web:            the browser subset in headless Chromium (make test-web alone runs just this)
@@ -105,6 +106,21 @@ echo "== test_contracts (egl, ASan+UBSan, one process per case)"
 out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=exitcode=66:detect_leaks=0 "$BUILD/tests/test_contracts" rbillboard_lit.h 2>&1); printf '%s\n' "$out"; count "$out"
 echo "== test_alloc (egl, ASan+UBSan, the header's allocator failing at every call)"
 out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/test_alloc" 2>&1); printf '%s\n' "$out"; count "$out"
+# Atlas readers under libFuzzer + ASan + UBSan: FUZZ_SECONDS (default 8) per format from the
+# hand-written seeds; new inputs go to a scratch corpus under $BUILD, never into the repository
+echo "== fuzz (libFuzzer, ASan+UBSan, ${FUZZ_SECONDS:-8} s per format)"
+fp=0; ff=0
+for f in texturepacker aseprite libgdx; do
+  dict=tests/fuzz/json.dict; [ $f = libgdx ] && dict=tests/fuzz/libgdx.dict
+  rm -rf "$BUILD/fuzz/work-$f"; mkdir -p "$BUILD/fuzz/work-$f"
+  root=$(pwd)
+  if out=$(cd "$BUILD/fuzz" && "./fuzz_$f" -max_total_time="${FUZZ_SECONDS:-8}" -dict="$root/$dict" -print_final_stats=1 "work-$f" "$root/tests/fuzz/corpus/$f" 2>&1); then
+    echo "  ok    fuzz_$f: $(printf '%s\n' "$out" | grep -E '^Done [0-9]+ runs' | tail -1)"; fp=$((fp + 1))
+  else
+    echo "  FAIL  fuzz_$f (crash input kept in $BUILD/fuzz)"; printf '%s\n' "$out" | grep -E 'ERROR|invariant|SUMMARY|crash-|Test unit' | head -10; ff=$((ff + 1))
+  fi
+done
+echo "fuzz: $fp passed, $ff failed"; count "fuzz: $fp passed, $ff failed"
 for ctx in egl osmesa; do
   echo "== test_gpu ($ctx)"
   out=$(RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"

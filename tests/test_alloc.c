@@ -139,6 +139,14 @@ static bool runGenHeight(void) { genOut = RblGenHeightFromLuminance(packSource.a
 static bool runGenOcclusion(void) { genOut = RblGenOcclusionFromHeight(heightImage, 3, 1.0f); return genOut.data != NULL; }
 static void cleanGen(void) { UnloadImage(genOut); memset(&genOut, 0, sizeof(genOut)); }
 
+static RblAtlas atlas;
+static const char *atlasFile = NULL;
+static char *atlasText = NULL;
+static int atlasSize = 0;
+static bool runLoadAtlasMemory(void) { atlas = RblLoadAtlasFromMemory(atlasText, atlasSize, RBL_ATLAS_AUTO); return RblIsAtlasValid(&atlas); }
+static bool runLoadAtlasFile(void) { atlas = RblLoadAtlas(atlasFile); return RblIsAtlasValid(&atlas); }
+static void cleanAtlas(void) { RblUnloadAtlas(&atlas); }
+
 // ---- tests --------------------------------------------------------------------------------------
 static void test_alloc_every_loading_path_fails_cleanly_at_every_allocation(void)
 {
@@ -194,6 +202,23 @@ static void test_alloc_every_loading_path_fails_cleanly_at_every_allocation(void
     sweep("RblGenNormalMapFromHeight", runGenNormal, cleanGen);
     sweep("RblGenHeightFromLuminance", runGenHeight, cleanGen);
     sweep("RblGenOcclusionFromHeight", runGenOcclusion, cleanGen);
+    // Atlases: every fixture format from memory (JSON nodes, names, frames, tags, slices, libGDX
+    // grouping) and the multipack file loader (two files, two sheets)
+    static const char *fixtures[5] = { "tests/fuzz/corpus/texturepacker/hash.json", "tests/fuzz/corpus/texturepacker/array.json",
+        "tests/fuzz/corpus/aseprite/tags.json", "tests/fuzz/corpus/libgdx/old.atlas", "tests/fuzz/corpus/libgdx/new.atlas" };
+    for (int i = 0; i < 5; i++)
+    {
+        unsigned char *data = LoadFileData(fixtures[i], &atlasSize);
+        atlasText = (char *)data;
+        RT_CHECK(data != NULL, "%s missing", fixtures[i]);
+        if (data == NULL) continue;
+        char what[96];
+        snprintf(what, sizeof(what), "RblLoadAtlasFromMemory (%s)", strrchr(fixtures[i], '/') + 1);
+        sweep(what, runLoadAtlasMemory, cleanAtlas);
+        UnloadFileData(data);
+    }
+    atlasFile = "tests/fuzz/corpus/texturepacker/multi-0.json";
+    sweep("RblLoadAtlas (multipack)", runLoadAtlasFile, cleanAtlas);
     printf("    %d failing runs in all\n", failuresSwept);
     UnloadImage(packSource.albedo); UnloadImage(packSource.normal); UnloadImage(packSource.specular);
     UnloadImage(packSource.occlusion); UnloadImage(packSource.emissive); UnloadImage(heightImage);

@@ -14,6 +14,7 @@
 #include "harness.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -1110,6 +1111,154 @@ static void c_shadow_focus(void)
     ck(c.x == 7.0f && c.y == 7.0f && c.z == 7.0f && r == 7.0f, "refused calls wrote the outputs");
 }
 
+// ---- atlases and sprites (CPU) ----------------------------------------------------------------------
+static const char atlasText[] = "{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":8}, \"duration\": 100}, "
+    "\"b\": {\"frame\": {\"x\":4,\"y\":0,\"w\":8,\"h\":4}, \"rotated\": true}}, "
+    "\"meta\": {\"app\": \"aseprite\", \"size\": {\"w\":16,\"h\":16}, \"frameTags\": [{\"name\": \"t\", \"from\": 0, \"to\": 1, \"direction\": \"pingpong\"}]}}";
+static RblAtlas goodAtlas(void) { return RblLoadAtlasFromMemory(atlasText, (int)strlen(atlasText), RBL_ATLAS_AUTO); }
+static bool loadedFromMemory(const char *text, int size, int format) { RblAtlas a = RblLoadAtlasFromMemory(text, size, format); bool ok = RblIsAtlasValid(&a); if (ok) RblUnloadAtlas(&a); return ok; }
+static bool loadedFile(const char *name) { RblAtlas a = RblLoadAtlas(name); bool ok = RblIsAtlasValid(&a); if (ok) RblUnloadAtlas(&a); return ok; }
+
+static void c_atlas_load(void)
+{
+    int n = (int)strlen(atlasText);
+    EXPECT_REFUSED(loadedFromMemory(NULL, n, 0));
+    EXPECT_REFUSED(loadedFromMemory(atlasText, 0, 0));
+    EXPECT_REFUSED(loadedFromMemory(atlasText, -5, 0));
+    EXPECT_REFUSED(loadedFromMemory(atlasText, INT_MAX, 0));
+    EXPECT_REFUSED(loadedFromMemory(atlasText, n, -1));
+    EXPECT_REFUSED(loadedFromMemory(atlasText, n, 4));
+    EXPECT_REFUSED(loadedFromMemory(atlasText, n, RBL_ATLAS_LIBGDX));     // JSON read as libGDX text
+    EXPECT_REFUSED(loadedFromMemory(atlasText, n - 1, 0));                // truncated
+    EXPECT_REFUSED(loadedFile(NULL));
+    EXPECT_REFUSED(loadedFile(""));
+    EXPECT_REFUSED(loadedFile("no/such/atlas.json"));
+    ck(loadedFromMemory(atlasText, n, RBL_ATLAS_TEXTUREPACKER) && loadedFromMemory(atlasText, n, RBL_ATLAS_ASEPRITE), "good text refused: %s", lastWarning);
+}
+
+static void c_atlas_lifecycle(void)
+{
+    RblAtlas zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblIsAtlasValid(NULL), false);
+    EXPECT_QUIET(RblIsAtlasValid(&zero), false);
+    RblAtlas a = goodAtlas(), stale = a;
+    EXPECT_QUIET(RblIsAtlasValid(&a), true);
+    EXPECT_QUIET(RblAtlasFindFrame(&a, "b") == 1, true);
+    EXPECT_QUIET(RblAtlasFindTag(&a, "nope") == -1, true);
+    EXPECT_REFUSED(RblAtlasFindFrame(&a, NULL) >= 0);
+    EXPECT_REFUSED(RblAtlasFindTag(&a, NULL) >= 0);
+    EXPECT_REFUSED(RblAtlasFindFrame(NULL, "a") >= 0);
+    EXPECT_REFUSED(RblAtlasFindTag(&zero, "t") >= 0);
+    EXPECT_REFUSED(V(RblUnloadAtlas(NULL)));
+    EXPECT_REFUSED(V(RblUnloadAtlas(&zero)));
+    RblUnloadAtlas(&a);
+    ck(a.state == NULL && a.frames == NULL && a.frameCount == 0, "unload did not zero");
+    EXPECT_REFUSED(V(RblUnloadAtlas(&a)));
+    EXPECT_REFUSED(V(RblUnloadAtlas(&stale)));
+    EXPECT_QUIET(RblIsAtlasValid(&stale), false);
+    EXPECT_REFUSED(RblAtlasFindFrame(&stale, "a") >= 0);
+    EXPECT_REFUSED(RblAtlasFindTag(&stale, "t") >= 0);
+}
+
+static void c_atlas_quads(void)
+{
+    RblAtlas a = goodAtlas(), zero; memset(&zero, 0, sizeof(zero));
+    RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
+    RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
+    EXPECT_REFUSED(RblAtlasBillboard(&a, 0, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasInstance(&a, 0, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasBillboard(NULL, 0, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasInstance(&zero, 0, 1.0f, &in));
+    for (int f = -1; f <= 2; f += 3) { EXPECT_REFUSED(RblAtlasBillboard(&a, f, 1.0f, &b)); EXPECT_REFUSED(RblAtlasInstance(&a, f, 1.0f, &in)); }
+    float scales[4] = { 0.0f, -1.0f, 2e15f, 1e-45f };
+    for (int vi = 0; vi < 9; vi++)
+    {
+        float s = (vi < 5)? badFloats[vi] : scales[vi - 5];
+        if (vi == 8) continue;      // the smallest denormal is a valid (tiny) scale
+        EXPECT_REFUSED(RblAtlasBillboard(&a, 0, s, &b));
+        EXPECT_REFUSED(RblAtlasInstance(&a, 1, s, &in));
+    }
+    ck(memcmp(&b, &b0, sizeof(b)) == 0 && memcmp(&in, &in0, sizeof(in)) == 0, "refused calls wrote their outputs");
+    ck(RblAtlasBillboard(&a, 1, 1e15f, &b) && allFinite(&b.size.x, 2) && allFinite(&b.origin.x, 2), "largest scale: non-finite or refused");
+    ck(RblAtlasInstance(&a, 0, 1e-45f, &in) && allFinite(&in.size.x, 2), "tiny scale refused");
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblAtlasBillboard(&stale, 0, 1.0f, &b));
+}
+
+static bool played(const RblAtlas *a, int tag, int loops) { RblSpritePlayer p = RblPlaySprite(a, tag, loops); return p.tag == tag; }
+static void c_sprites(void)
+{
+    RblAtlas a = goodAtlas(), zero; memset(&zero, 0, sizeof(zero));
+    EXPECT_REFUSED(played(NULL, 0, 0));
+    EXPECT_REFUSED(played(&zero, 0, 0));
+    EXPECT_REFUSED(played(&a, -2, 0));
+    EXPECT_REFUSED(played(&a, 1, 0));
+    EXPECT_REFUSED(played(&a, 0, -2));
+    ck(played(&a, 0, 0) && played(&a, -1, -1), "good play refused: %s", lastWarning);
+    RblSpritePlayer p = RblPlaySprite(&a, 0, 0), p0 = p;
+    EXPECT_REFUSED(RblUpdateSprite(NULL, &a, 0.1f));
+    EXPECT_REFUSED(RblUpdateSprite(&p, NULL, 0.1f));
+    EXPECT_REFUSED(RblUpdateSprite(&p, &zero, 0.1f));
+    for (int vi = 0; vi < 3; vi++) EXPECT_REFUSED(RblUpdateSprite(&p, &a, badFloats[vi]));
+    EXPECT_REFUSED(RblUpdateSprite(&p, &a, -0.5f));
+    ck(memcmp(&p, &p0, sizeof(p)) == 0, "refused updates changed the player");
+    // a player not made by RblPlaySprite for this atlas: refused, untouched
+    RblSpritePlayer bad[7];
+    for (int k = 0; k < 7; k++) bad[k] = p0;
+    bad[0].frame = 5; bad[1].step = 0; bad[2].time = NAN; bad[3].loops = -1; bad[4].passes = -1; bad[5].tag = 3; bad[6].time = -1.0f;
+    for (int k = 0; k < 7; k++)
+    {
+        RblSpritePlayer before = bad[k];
+        int next = 77;
+        EXPECT_REFUSED(RblUpdateSprite(&bad[k], &a, 0.1f));
+        EXPECT_REFUSED(RblSpriteBlend(&bad[k], &a, &next) > 0.0f || next != 77);
+        ck(memcmp(&bad[k], &before, sizeof(before)) == 0 && next == 77, "corrupt player %d changed", k);
+    }
+    int next = 77;
+    EXPECT_REFUSED(RblSpriteBlend(&p, &a, NULL) > 0.0f);
+    EXPECT_REFUSED(RblSpriteBlend(NULL, &a, &next) > 0.0f || next != 77);
+    EXPECT_REFUSED(RblSpriteBlend(&p, &zero, &next) > 0.0f || next != 77);
+    // accepted extremes: the largest finite dt, then the player stays inside its tag with finite time
+    ck(RblUpdateSprite(&p, &a, 3.0e38f) && (p.frame >= 0) && (p.frame <= 1) && allFinite(&p.time, 1), "huge dt: frame %d time %g", p.frame, p.time);
+    // bulk: refusals change nothing; bad players are skipped entries (one line for the call)
+    RblSpritePlayer ps[2] = { p0, p0 };
+    RblInstance is[2]; memset(is, 0x5A, sizeof(is));
+    RblInstance is0[2]; memcpy(is0, is, sizeof(is));
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, NULL, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &zero, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(NULL, is, 2, &a, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, NULL, 2, &a, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, -1, &a, 0.1f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, INT_MIN, &a, 0.1f, 1.0f) > 0);
+    for (int vi = 0; vi < 5; vi++)
+    {
+        if (vi < 3) EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, badFloats[vi], 1.0f) > 0);
+        EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, 0.1f, badFloats[vi]) > 0);
+    }
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, -1.0f, 1.0f) > 0);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(ps, is, 2, &a, 0.1f, 0.0f) > 0);
+    ck(memcmp(is, is0, sizeof(is)) == 0 && memcmp(&ps[0], &p0, sizeof(p0)) == 0, "refused bulk updates wrote");
+    ps[1].frame = 9;
+    warnings = 0;
+    ck(RblUpdateSpriteInstances(ps, is, 2, &a, 3.0e38f, 1e15f) == 1 && warnings == 1 && allFinite(&is[0].size.x, 2) && allFinite(&is[0].origin.x, 2) &&
+       memcmp(&is[1], &is0[1], sizeof(RblInstance)) == 0, "bulk with one bad player: %d lines", warnings);
+    // N-way sectors
+    Vector3 v = { 0, 0, -1 };
+    for (int d = -1; d <= 361; d += 362) EXPECT_REFUSED(RblSpriteViewSector(v, 0.0f, d) >= 0);
+    EXPECT_REFUSED(RblSpriteViewSector(v, 0.0f, 0) >= 0);
+    for (int c = 0; c < 4; c++) for (int vi = 0; vi < 3; vi++)
+    {
+        Vector3 w = v; float facing = 0.0f;
+        if (c < 3) ((float *)&w)[c] = badFloats[vi]; else facing = badFloats[vi];
+        EXPECT_REFUSED(RblSpriteViewSector(w, facing, 8) >= 0);
+    }
+    EXPECT_REFUSED(RblSpriteViewSector(v, 3.0e38f, 8) >= 0);
+    int s = RblSpriteViewSector((Vector3){ 3.0e38f, -3.0e38f, 3.0e38f }, 1e9f, 16);
+    ck(s >= 0 && s < 16, "huge finite view: sector %d", s);
+    RblUnloadAtlas(&a);
+}
+
 // ---- the case table -----------------------------------------------------------------------------
 typedef struct Case { const char *functions; const char *name; void (*run)(void); } Case;
 #define BARE "(no lit program loaded yet) "
@@ -1152,6 +1301,10 @@ static const Case cases[] = {
     { "RblLoadShadowMap RblIsShadowMapValid RblUnloadShadowMap", "sizes, desc floats, zero, stale, double", c_shadow_load },
     { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes },
     { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus },
+    { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load },
+    { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle },
+    { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads },
+    { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites },
 };
 
 // One case in a child process: its own context and fixture, then the matrix stack depth check

@@ -12,6 +12,7 @@
 #include "test_geometry.c"
 #include "test_materials.c"
 #include "test_shaders_source.c"
+#include "test_atlas.c"
 
 int main(int argc, char **argv)
 {
@@ -60,6 +61,16 @@ int main(int argc, char **argv)
         RT_TEST(test_materials_unload_frees_and_zeroes_the_packed_material),
         RT_TEST(test_shaders_embedded_copies_equal_the_glsl_files),
         RT_TEST(test_shaders_each_stage_lists_its_include_closure_dependencies_first),
+        RT_TEST(test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames),
+        RT_TEST(test_atlas_texturepacker_multipack_follows_related_packs_once),
+        RT_TEST(test_atlas_aseprite_durations_tags_and_slice_pivots),
+        RT_TEST(test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets_from_the_bottom),
+        RT_TEST(test_atlas_blocks_pack_a_same_layout_normal_sheet_per_frame),
+        RT_TEST(test_atlas_player_follows_durations_directions_and_repeats),
+        RT_TEST(test_atlas_bulk_instance_update_equals_the_per_sprite_calls),
+        RT_TEST(test_atlas_view_sector_boundaries_for_4_8_16_directions),
+        RT_TEST(test_atlas_malformed_input_fails_with_one_line),
+        RT_TEST(test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets),
     };
     SetTraceLogLevel(LOG_WARNING);
     return rtRun("cpu", tests, (int)(sizeof(tests)/sizeof(tests[0])), argc, argv);

@@ -23,6 +23,7 @@
 #include "test_shadows.c"
 #include "test_skinning.c"
 #include "test_sprites.c"
+#include "test_atlas_render.c"
 
 int main(int argc, char **argv)
 {
@@ -34,6 +35,8 @@ int main(int argc, char **argv)
         RT_TEST(test_lit_flat_normal_map_matches_analytic_lambert_within_2_of_255),
         RT_TEST(test_lit_flips_and_rotated_frames_light_the_plus_u_side),
         RT_TEST(test_lit_bad_lights_are_rejected_and_change_nothing),
+        RT_TEST(test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases),
+        RT_TEST(test_atlas_rotated_frames_light_like_the_upright_frame),
         RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate),
         RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro),
         RT_TEST_GLSL3(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),

@@ -3,7 +3,7 @@
 # Usage: tests/tools/deps.sh [xvfb|web]   (xvfb only for a windowed run; web: emscripten and headless
 #        chromium for make web / make test-web, plus python3 for the loopback runner)
 set -eu
-pkgs="g++ clang cmake pkg-config dpkg-dev glslang-tools libegl-dev libgles-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev libxxf86vm-dev"
+pkgs="g++ clang libclang-rt-dev cmake pkg-config dpkg-dev glslang-tools libegl-dev libgles-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev libxxf86vm-dev"
 [ "${1:-}" = xvfb ] && pkgs="$pkgs xvfb"
 [ "${1:-}" = web ] && pkgs="emscripten chromium python3"
 missing=""

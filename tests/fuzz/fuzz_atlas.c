@@ -1,0 +1,90 @@
+// libFuzzer target for the atlas readers, one binary per format (FUZZ_FORMAT: RBL_ATLAS_TEXTUREPACKER,
+// _ASEPRITE, _LIBGDX; each also auto-detects every other input). Built with
+// clang -fsanitize=fuzzer,address,undefined; `make test` runs each for a bounded time over
+// tests/fuzz/corpus/<format>/ (hand-written seeds). Beyond the sanitizers, it aborts when a refused
+// input does not log exactly one line, or an accepted one yields a frame table whose frames, tags or
+// billboard fields break the documented invariants, or the player leaves its tag.
+// Built in two parts so the header's implementation is instrumented once for the three targets:
+// -DFUZZ_IMPL compiles only the implementation; the targets include the declarations.
+#if defined(FUZZ_IMPL)
+    #define RBILLBOARD_LIT_IMPLEMENTATION
+    #include "rbillboard_lit.h"
+#else
+#include "rbillboard_lit.h"
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef FUZZ_FORMAT
+    #define FUZZ_FORMAT RBL_ATLAS_AUTO
+#endif
+
+static int lines = 0;
+static void countLog(int level, const char *text, va_list args)
+{
+    (void)level; (void)args;
+    if (strncmp(text, "RBL:", 4) == 0) lines++;
+}
+
+static void expect(bool ok, const char *what)
+{
+    if (ok) return;
+    fprintf(stderr, "fuzz_atlas: invariant broken: %s\n", what);
+    abort();
+}
+
+static bool finiteRect(Rectangle r) { return isfinite(r.x) && isfinite(r.y) && isfinite(r.width) && isfinite(r.height); }
+
+static void check(const RblAtlas *a)
+{
+    expect(a->frameCount > 0 && a->pageCount > 0, "empty table accepted");
+    for (int i = 0; i < a->frameCount; i++)
+    {
+        const RblAtlasFrame *f = &a->frames[i];
+        expect(f->name != NULL && f->page >= 0 && f->page < a->pageCount, "frame name/page");
+        expect(finiteRect(f->block) && f->block.width > 0 && f->block.height > 0 && f->block.x >= 0 && f->block.y >= 0, "frame block");
+        const RblAtlasPage *p = &a->pages[f->page];
+        if (p->width > 0) expect(f->block.x + f->block.width <= p->width && f->block.y + f->block.height <= p->height, "block outside the stated sheet");
+        expect(f->trim.x >= 0 && f->trim.y >= 0 && f->trim.x + f->trim.width <= f->size.x && f->trim.y + f->trim.height <= f->size.y, "trim outside the frame");
+        expect(isfinite(f->pivot.x) && isfinite(f->pivot.y) && f->duration >= 0 && isfinite(f->duration), "pivot/duration");
+        RblBillboard b; memset(&b, 0, sizeof(b));
+        expect(RblAtlasBillboard(a, i, 0.01f, &b), "billboard refused");
+        expect(finiteRect(b.source) && isfinite(b.size.x) && isfinite(b.size.y) && isfinite(b.origin.x) && isfinite(b.origin.y) && b.size.x > 0 && b.size.y > 0, "billboard fields");
+        expect(strlen(f->name) < (1u << 20), "name");   // a C string inside the text's bound
+    }
+    for (int t = 0; t < a->tagCount; t++)
+    {
+        const RblAtlasTag *g = &a->tags[t];
+        expect(g->name != NULL && g->from >= 0 && g->from <= g->to && g->to < a->frameCount && g->direction >= 0 && g->direction <= 3 && g->repeat >= 0, "tag range");
+        RblSpritePlayer p = RblPlaySprite(a, t, 0);
+        for (int k = 0; k < 8; k++)
+        {
+            expect(RblUpdateSprite(&p, a, (k == 5)? 1e6f : 0.037f*(float)k), "update refused");
+            expect(p.frame >= g->from && p.frame <= g->to && p.time >= 0 && isfinite(p.time), "player left its tag");
+            int next = -1;
+            float w = RblSpriteBlend(&p, a, &next);
+            expect(w >= 0 && w <= 1 && next >= g->from && next <= g->to, "blend");
+        }
+    }
+    for (int s = 0; s < a->sliceCount; s++) expect(a->slices[s].name != NULL && finiteRect(a->slices[s].bounds), "slice");
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static bool init = false;
+    if (!init) { SetTraceLogCallback(countLog); init = true; }
+    if (size == 0 || size > (1u << 20)) return 0;
+    for (int pass = 0; pass < 2; pass++)
+    {
+        lines = 0;
+        RblAtlas a = RblLoadAtlasFromMemory((const char *)data, (int)size, (pass == 0)? FUZZ_FORMAT : RBL_ATLAS_AUTO);
+        if (RblIsAtlasValid(&a)) { expect(lines == 0, "accepted with log lines"); check(&a); RblUnloadAtlas(&a); expect(!RblIsAtlasValid(&a), "unload"); }
+        else expect(lines == 1 && a.state == NULL && a.frames == NULL, "refused without exactly one line");
+    }
+    return 0;
+}
+#endif // FUZZ_IMPL
