@@ -6135,17 +6135,24 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadPackedTextures: %s", bad); return false; }
     Texture2D textures[3];
     memset(textures, 0, sizeof(textures));
+    // ES 2 / WebGL1 sample a non-power-of-two texture only without mips and with clamped edges
+    // (anything else reads black there): such maps go up as level 0 alone
+    const int w = packed->albedo.width, h = packed->albedo.height;
+    const bool npotLimited = (rbl__glsl() == 100) && (((w & (w - 1)) != 0) || ((h & (h - 1)) != 0));
     for (int i = 0; i < 3; i++)
     {
         if (images[i]->data == NULL) continue;
-        textures[i] = LoadTextureFromImage(*images[i]);
+        Image upload = *images[i];
+        if (npotLimited) upload.mipmaps = 1;
+        textures[i] = LoadTextureFromImage(upload);
+        if (npotLimited && (textures[i].id != 0)) SetTextureWrap(textures[i], TEXTURE_WRAP_CLAMP);
         if (textures[i].id == 0)
         {
             TraceLog(LOG_WARNING, "RBL: RblLoadPackedTextures: upload failed (no GL context?)");
             for (int k = 0; k < i; k++) if (textures[k].id != 0) UnloadTexture(textures[k]);
             return false;
         }
-        SetTextureFilter(textures[i], (images[i]->mipmaps > 1)? TEXTURE_FILTER_TRILINEAR : TEXTURE_FILTER_BILINEAR);
+        SetTextureFilter(textures[i], (textures[i].mipmaps > 1)? TEXTURE_FILTER_TRILINEAR : TEXTURE_FILTER_BILINEAR);
     }
     for (int i = 0; i < 3; i++) if (textures[i].id != 0) material->maps[slots[i]].texture = textures[i];
     return true;
