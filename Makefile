@@ -113,7 +113,7 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/web/test/test_web.js
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------
@@ -132,6 +132,10 @@ $(BUILD)/deferred: examples/shaders_deferred_billboards.c $(HEADER) $(BUILD)/ray
 $(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_deferred_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/deferred_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/sprites_headless: tests/tools/sprites_headless.c examples/shaders_lit_sprite_sheet.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/sprites_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \

@@ -79,6 +79,13 @@ if out=$("$BUILD/deferred_headless" "$BUILD/deferred.png" "$BUILD/deferred_views
 else
   echo "  FAIL  deferred example renders headlessly"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
 fi
+# The sprite-sheet example renders headlessly (atlas from JSON, packed normal sheet, sorted soft smoke);
+# the tool checks the character and the smoke are in the picture
+if out=$("$BUILD/sprites_headless" "$BUILD/sprites.png" 2>&1) && [ -s "$BUILD/sprites.png" ]; then
+  echo "  ok    sprite-sheet example renders headlessly"; printf '%s\n' "$out" | sed 's/^/    /'; pass=$((pass + 1))
+else
+  echo "  FAIL  sprite-sheet example renders headlessly"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
+fi
 
 # Static check of every spliced stage in every dialect (330, 300 es, 120, 100). glslangValidator
 # checks syntax and types per #version; it does not enforce GLSL ES 1.00's Appendix A indexing limits,
