@@ -402,3 +402,60 @@ static void test_sprites_npot_packed_atlas_uploads_what_the_context_can_sample(v
     RblUnloadPackedMaterial(&packed);
     UnloadImage(albedo);
 }
+
+// Soft particles over a G-buffer's depth: the wall goes through the geometry pass, the card reads
+// RblGBuffer.depth through the scene, with the same expectation as over a RblLoadSceneTarget
+static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
+{
+    Texture2D white = solidTexture(WHITE);
+    RblLitShaderDesc geoDesc;
+    memset(&geoDesc, 0, sizeof(geoDesc));
+    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&geoDesc, SPR_TARGET, SPR_TARGET));
+    geoDesc.deferred = true;
+    Material wall = LoadMaterialDefault();
+    wall.shader = RblLoadLitShader(geoDesc);
+    wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RblLitShaderDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.softParticles = true;
+    Material puff = LoadMaterialDefault();
+    puff.shader = RblLoadLitShader(sd);
+    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
+    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
+    Camera3D cam = sprCamera();
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
+    RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass refused");
+    RblBillboard w = sprCard(0.0f, 0.0f);
+    w.size = (Vector2){ 20.0f, 20.0f }; w.origin = (Vector2){ 10.0f, 10.0f };
+    RblDrawBillboard(cam, wall, w);
+    RblEndGBuffer(&g);
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.ambient = WHITE;
+    scene.depth = g.depth;
+    RT_CHECK(RblSetScene(&scene), "scene with the G-buffer depth refused");
+    RenderTexture2D out = LoadRenderTexture(SPR_TARGET, SPR_TARGET);
+    const float deltas[4] = { -0.1f, 0.1f, 0.25f, 0.6f };
+    for (int k = 0; k < 4; k++)
+    {
+        BeginTextureMode(out);
+        ClearBackground(BLACK);
+        BeginMode3D(cam);
+        RblDrawBillboard(cam, puff, sprCard(deltas[k], 0.0f));
+        EndMode3D();
+        EndTextureMode();
+        Image img = rtReadTarget(out);
+        Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+        double want = 255.0*fmin(fmax(deltas[k]/0.5, 0.0), 1.0);
+        RT_CHECK(fabs(c.r - want) <= 2.0, "G-buffer depth, card %.2f in front: %d, expected %.1f", deltas[k], c.r, want);
+        printf("    G-buffer depth: card %5.2f in front: centre %3d, expected %5.1f\n", deltas[k], c.r, want);
+        UnloadImage(img);
+    }
+    UnloadRenderTexture(out);
+    RblUnloadGBuffer(&g);
+    RblUnloadLitShader(&wall.shader); MemFree(wall.maps);
+    RblUnloadLitShader(&puff.shader); MemFree(puff.maps);
+    UnloadTexture(white);
+}
