@@ -1259,7 +1259,7 @@ typedef struct rbl__Scene {
     int shadowCount;
     int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
-    float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix, params, bias, axes as shadows.glsl reads them
+    float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
@@ -3618,19 +3618,28 @@ static int rbl__compareKeys(const void *a, const void *b)
     return (p->index > q->index) - (p->index < q->index);
 }
 
+// Sort scratch of a batch or an instance buffer: a sorted copy (itemSize bytes per item) and keys for
+// capacity items, reallocated only when the capacity grew (never per frame); false when out of memory
+static bool rbl__reserveSort(void **sorted, size_t itemSize, rbl__SortKey **keys, int *have, int capacity)
+{
+    if (*have >= capacity) return true;
+    void *items = RBL_MALLOC((size_t)capacity*itemSize);
+    rbl__SortKey *k = (rbl__SortKey *)RBL_MALLOC((size_t)capacity*sizeof(rbl__SortKey));
+    if ((items == NULL) || (k == NULL)) { RBL_FREE(items); RBL_FREE(k); return false; }
+    RBL_FREE(*sorted); RBL_FREE(*keys);
+    *sorted = items; *keys = k;
+    *have = capacity;
+    return true;
+}
+
 // Orders the batch's quads back to front into batch->sorted (keys: their view depths, indices, runs);
 // false when the scratch cannot be allocated (the caller logs and draws in submission order)
 static bool rbl__sortBatch(rbl__BatchState *batch)
 {
-    if (batch->sortCapacity < batch->capacity)
-    {
-        RblVertex *sorted = (RblVertex *)RBL_MALLOC((size_t)batch->capacity*4*sizeof(RblVertex));
-        rbl__SortKey *keys = (rbl__SortKey *)RBL_MALLOC((size_t)batch->capacity*sizeof(rbl__SortKey));
-        if ((sorted == NULL) || (keys == NULL)) { RBL_FREE(sorted); RBL_FREE(keys); return false; }
-        RBL_FREE(batch->sorted); RBL_FREE(batch->keys);
-        batch->sorted = sorted; batch->keys = keys;
-        batch->sortCapacity = batch->capacity;
-    }
+    void *sorted = batch->sorted;
+    bool reserved = rbl__reserveSort(&sorted, 4*sizeof(RblVertex), &batch->keys, &batch->sortCapacity, batch->capacity);
+    batch->sorted = (RblVertex *)sorted;
+    if (!reserved) return false;
     // Depth of the quad's centre along the view direction (-back): the same axis for both projections
     Vector3 back = batch->view.back, eye = batch->view.eye;
     for (int r = 0; r < batch->runCount; r++)
@@ -3904,15 +3913,10 @@ static bool rbl__instancesShowBack(const RblInstancedDesc *desc, const RblCamera
 // NULL when the scratch cannot be allocated
 static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, Camera3D camera, const RblInstance *in, int n)
 {
-    if (buffer->sortCapacity < buffer->capacity)
-    {
-        RblInstance *sorted = (RblInstance *)RBL_MALLOC((size_t)buffer->capacity*sizeof(RblInstance));
-        rbl__SortKey *keys = (rbl__SortKey *)RBL_MALLOC((size_t)buffer->capacity*sizeof(rbl__SortKey));
-        if ((sorted == NULL) || (keys == NULL)) { RBL_FREE(sorted); RBL_FREE(keys); return NULL; }
-        RBL_FREE(buffer->sorted); RBL_FREE(buffer->keys);
-        buffer->sorted = sorted; buffer->keys = keys;
-        buffer->sortCapacity = buffer->capacity;
-    }
+    void *sorted = buffer->sorted;
+    bool reserved = rbl__reserveSort(&sorted, sizeof(RblInstance), &buffer->keys, &buffer->sortCapacity, buffer->capacity);
+    buffer->sorted = (RblInstance *)sorted;
+    if (!reserved) return NULL;
     RblCameraFrame view = rbl__cameraFrame(camera);
     for (int i = 0; i < n; i++)
     {
@@ -5811,10 +5815,7 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     float rows[RBL_MAX_SHADOWS*16], params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
     for (int k = 0; k < n; k++)
     {
-        // Rows as vec4s: rlSetUniformMatrices transposes on desktop GL and not on ES
-        Matrix m = rbl__matFromArray(s->shadowUniforms[k]);
-        float r[16] = { m.m0, m.m4, m.m8, m.m12, m.m1, m.m5, m.m9, m.m13, m.m2, m.m6, m.m10, m.m14, m.m3, m.m7, m.m11, m.m15 };
-        memcpy(&rows[k*16], r, sizeof(r));
+        memcpy(&rows[k*16], &s->shadowUniforms[k][0], 16*sizeof(float));
         memcpy(&params[k*4], &s->shadowUniforms[k][16], 4*sizeof(float));
         memcpy(&bias[k*4], &s->shadowUniforms[k][20], 4*sizeof(float));
         memcpy(&axes[k*8], &s->shadowUniforms[k][24], 8*sizeof(float));
@@ -7030,7 +7031,10 @@ bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance,
 // What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)
 static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
 {
-    rbl__matToArray(map->state->matrix, out);
+    // The matrix as four rows (vec4s): rlSetUniformMatrices would transpose on desktop GL and not on ES
+    const Matrix *m = &map->state->matrix;
+    const float rows[16] = { m->m0, m->m4, m->m8, m->m12, m->m1, m->m5, m->m9, m->m13, m->m2, m->m6, m->m10, m->m14, m->m3, m->m7, m->m11, m->m15 };
+    memcpy(out, rows, sizeof(rows));
     out[16] = map->state->texelWorld; out[17] = (map->state->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f; out[18] = map->state->nearPlane; out[19] = map->state->farPlane;
     out[20] = map->desc.constantBias; out[21] = map->desc.slopeBias; out[22] = map->desc.normalBias; out[23] = (float)map->size;
     out[24] = map->state->lightView.right.x; out[25] = map->state->lightView.right.y; out[26] = map->state->lightView.right.z; out[27] = 0.0f;

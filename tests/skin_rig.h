@@ -12,6 +12,8 @@
 #include "raylib.h"
 #include <math.h>
 #include <stdbool.h>
+#include <stdlib.h>         // abs
+#include "harness.h"        // rtPixel
 #include <stdio.h>
 #include <string.h>
 
@@ -283,6 +285,22 @@ static inline Model skinCpuModel(const SkinRig *r, int frame)
     skinReference(src, r->model.skeleton.bindPose, r->anim.keyframePoses[frame], SKIN_BONES, m.vertices, m.normals, m.tangents);
     UploadMesh(&m, false);
     return LoadModelFromMesh(m);
+}
+
+// An edge pixel: its 3x3 neighbourhood in a or b holds background, or a colour step above 8/255 (a
+// silhouette or a crease, where a position rounded differently moves which triangle covers it)
+static bool skEdge(Image img, int x, int y)
+{
+    Color c = rtPixel(img, x, y);
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++)
+        {
+            int u = x + dx, v = y + dy;
+            if ((u < 0) || (v < 0) || (u >= img.width) || (v >= img.height)) return true;
+            Color n = rtPixel(img, u, v);
+            if ((n.a != c.a) || (abs(n.r - c.r) > 8) || (abs(n.g - c.g) > 8) || (abs(n.b - c.b) > 8)) return true;
+        }
+    return false;
 }
 
 #endif

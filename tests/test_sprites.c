@@ -281,6 +281,21 @@ static void test_sprites_instanced_sort_draws_alike_in_any_array_order(void)
     UnloadTexture(glass);
 }
 
+// Centre pixel of a white soft card `delta` in front of the plane z = 0, drawn alone over black into out
+static Color sprSoftCentre(Camera3D cam, Material puff, RenderTexture2D out, float delta)
+{
+    BeginTextureMode(out);
+    ClearBackground(BLACK);
+    BeginMode3D(cam);
+    RblDrawBillboard(cam, puff, sprCard(delta, 0.0f));
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(out);
+    Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+    UnloadImage(img);
+    return c;
+}
+
 // Soft particles: an opaque wall drawn into a scene target (colour + depth texture); a white card at
 // distance delta in front of it, drawn into another target over black with the wall's depth in the
 // scene, shows 255*clamp(delta/fade, 0, 1) (the fade's definition), for perspective and orthographic
@@ -323,32 +338,17 @@ static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void
         RenderTexture2D out = LoadRenderTexture(SPR_TARGET, SPR_TARGET);
         for (int k = 0; k < 7; k++)
         {
-            BeginTextureMode(out);
-            ClearBackground(BLACK);
-            BeginMode3D(cam);
-            RblDrawBillboard(cam, puff, sprCard(deltas[k], 0.0f));
-            EndMode3D();
-            EndTextureMode();
-            Image img = rtReadTarget(out);
-            Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+            Color c = sprSoftCentre(cam, puff, out, deltas[k]);
             double fade = fmin(fmax(deltas[k]/0.5, 0.0), 1.0), want = 255.0*fade;
             worst = fmax(worst, fabs(c.r - want));
             RT_CHECK(fabs(c.r - want) <= 2.0, "%s, card %.2f in front of the wall: %d, expected %.1f (fade %.3f)", ortho? "ortho" : "persp", deltas[k], c.r, want, fade);
             printf("    %-5s card %5.2f in front: centre %3d, expected %5.1f\n", ortho? "ortho" : "persp", deltas[k], c.r, want);
-            UnloadImage(img);
         }
         // No scene depth: no fade (a card 0.05 in front shows at full strength)
         scene.depth.id = 0; scene.depth.width = scene.depth.height = 0;
         RT_CHECK(RblSetScene(&scene), "scene without depth refused");
-        BeginTextureMode(out);
-        ClearBackground(BLACK);
-        BeginMode3D(cam);
-        RblDrawBillboard(cam, puff, sprCard(0.05f, 0.0f));
-        EndMode3D();
-        EndTextureMode();
-        Image img = rtReadTarget(out);
-        RT_CHECK(rtPixel(img, SPR_TARGET/2, SPR_TARGET/2).r == 255, "no scene depth: centre %d, expected 255 (no fade)", rtPixel(img, SPR_TARGET/2, SPR_TARGET/2).r);
-        UnloadImage(img);
+        Color full = sprSoftCentre(cam, puff, out, 0.05f);
+        RT_CHECK(full.r == 255, "no scene depth: centre %d, expected 255 (no fade)", full.r);
         UnloadRenderTexture(out);
     }
     printf("    soft particles: worst |centre - 255*clamp(delta/0.5)| %.1f/255 over 7 distances x 2 projections\n", worst);
@@ -440,18 +440,10 @@ static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
     const float deltas[4] = { -0.1f, 0.1f, 0.25f, 0.6f };
     for (int k = 0; k < 4; k++)
     {
-        BeginTextureMode(out);
-        ClearBackground(BLACK);
-        BeginMode3D(cam);
-        RblDrawBillboard(cam, puff, sprCard(deltas[k], 0.0f));
-        EndMode3D();
-        EndTextureMode();
-        Image img = rtReadTarget(out);
-        Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+        Color c = sprSoftCentre(cam, puff, out, deltas[k]);
         double want = 255.0*fmin(fmax(deltas[k]/0.5, 0.0), 1.0);
         RT_CHECK(fabs(c.r - want) <= 2.0, "G-buffer depth, card %.2f in front: %d, expected %.1f", deltas[k], c.r, want);
         printf("    G-buffer depth: card %5.2f in front: centre %3d, expected %5.1f\n", deltas[k], c.r, want);
-        UnloadImage(img);
     }
     UnloadRenderTexture(out);
     RblUnloadGBuffer(&g);

@@ -71,20 +71,6 @@ static void Round(void *ctx, double *out)
     out[2] = out[1]/out[0];
 }
 
-static bool Edge(Image img, int x, int y)
-{
-    Color c = rtPixel(img, x, y);
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++)
-        {
-            int u = x + dx, v = y + dy;
-            if ((u < 0) || (v < 0) || (u >= img.width) || (v >= img.height)) return true;
-            Color n = rtPixel(img, u, v);
-            if ((n.a != c.a) || (abs(n.r - c.r) > 8) || (abs(n.g - c.g) > 8) || (abs(n.b - c.b) > 8)) return true;
-        }
-    return false;
-}
-
 int main(void)
 {
     const char *backend = rtInitContext(SIZE, SIZE);
@@ -137,7 +123,7 @@ int main(void)
             if (abs(p.b - q.b) > d) d = abs(p.b - q.b);
             if (p.a != q.a) d = 255;
             if (d > maxAll) maxAll = d;
-            if (!Edge(img[0], x, y) && !Edge(img[1], x, y) && (d > maxInterior)) maxInterior = d;
+            if (!skEdge(img[0], x, y) && !skEdge(img[1], x, y) && (d > maxInterior)) maxInterior = d;
         }
     UnloadImage(img[0]); UnloadImage(img[1]);
 
