@@ -289,7 +289,7 @@ static inline Model skinCpuModel(const SkinRig *r, int frame)
 
 // An edge pixel: its 3x3 neighbourhood in a or b holds background, or a colour step above 8/255 (a
 // silhouette or a crease, where a position rounded differently moves which triangle covers it)
-static bool skEdge(Image img, int x, int y)
+static inline bool skEdge(Image img, int x, int y)
 {
     Color c = rtPixel(img, x, y);
     for (int dy = -1; dy <= 1; dy++)
