@@ -918,12 +918,16 @@ static DefGBufferBytes defReadGBuffer(const RblGBuffer *g)
 {
     DefGBufferBytes b;
     memset(&b, 0, sizeof(b));
-    const Texture2D t[4] = { g->albedo, g->normal, g->params, g->accum };
-    for (int i = 0; i < 4; i++)
+    const Texture2D t[3] = { g->albedo, g->normal, g->params };
+    for (int i = 0; i < 3; i++)
     {
         b.size[i] = GetPixelDataSize(g->width, g->height, t[i].format);
         b.target[i] = (unsigned char *)rlReadTexturePixels(t[i].id, g->width, g->height, t[i].format);
     }
+    // The RGBA16F accumulation as floats: on ES rlReadTexturePixels reads RGBA8 only (4 bytes a
+    // pixel, where the format's size says 8: comparing that many read past its buffer)
+    b.size[3] = (int)(sizeof(float)*4)*g->width*g->height;
+    b.target[3] = (unsigned char *)rtReadFloatPixels(g->accum.id, g->width, g->height);
     b.depth = (float *)malloc(sizeof(float)*g->width*g->height);
     rtReadDepth(g->state->id, g->width, g->height, b.depth);
     return b;
@@ -931,7 +935,8 @@ static DefGBufferBytes defReadGBuffer(const RblGBuffer *g)
 
 static void defFreeGBufferBytes(DefGBufferBytes *b)
 {
-    for (int i = 0; i < 4; i++) RL_FREE(b->target[i]);
+    for (int i = 0; i < 3; i++) RL_FREE(b->target[i]);
+    free(b->target[3]);                 // rtReadFloatPixels: malloc
     free(b->depth);
     memset(b, 0, sizeof(*b));
 }
