@@ -129,8 +129,9 @@ for f in texturepacker aseprite libgdx; do
 done
 echo "fuzz: $fp passed, $ff failed"; count "fuzz: $fp passed, $ff failed"
 for ctx in egl osmesa; do
-  echo "== test_gpu ($ctx)"
-  out=$(RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"
+  echo "== test_gpu ($ctx, ASan+UBSan)"
+  out=$(RBL_TEST_CONTEXT=$ctx ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/test_gpu" 2>&1); printf '%s\n' "$out"; count "$out"
+  if printf '%s\n' "$out" | grep -q "ERROR: AddressSanitizer\|runtime error:"; then echo "  FAIL  test_gpu ($ctx): sanitizer report"; fail=$((fail + 1)); fi
 done
 # The same suite on raylib built for each other graphics API, on a strict context of that version
 # (Mesa's overrides): ES 3.0 / GLSL ES 3.00 runs everything; ES 2.0 and GL 2.1 the forward path,
@@ -142,7 +143,8 @@ for ctx in gles3 gles2 gl21; do
     gles2) env="MESA_GLES_VERSION_OVERRIDE=2.0" ;;
     gl21) env="MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120" ;;
   esac
-  out=$(env $env RBL_TEST_CONTEXT=$ctx "$BUILD/tests/test_gpu_$ctx" 2>&1); printf '%s\n' "$out"; count "$out"
+  out=$(env $env RBL_TEST_CONTEXT=$ctx ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/test_gpu_$ctx" 2>&1); printf '%s\n' "$out"; count "$out"
+  if printf '%s\n' "$out" | grep -q "ERROR: AddressSanitizer\|runtime error:"; then echo "  FAIL  test_gpu ($ctx): sanitizer report"; fail=$((fail + 1)); fi
 done
 
 # The browser: the GPU subset built with emscripten, in headless Chromium (WebGL2 on SwiftShader)
