@@ -331,7 +331,7 @@
 *         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
 *         BeginTextureMode, resolve inside); resolve into a target of its size. Below GGX roughness
 *         ~0.1 a curved surface's pixel on a highlight's steepest flank can differ from forward by
-*         more than 2/255 (first-order bound 9.5/255 at 0.045; 2/255 everywhere needs ~50 bits).
+*         more than 2/255 (first-order bound 9.5/255 at 0.045; 2/255 everywhere needs > 48 bits, README).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.

@@ -608,7 +608,7 @@ static void test_deferred_matches_forward_for_every_brdf_roughness_and_shininess
 // normal quantised by d radians moves the output by up to 255 sRGB'(1) (2/alpha) d (GGX: d ln D/d theta
 // peaks at 2/alpha, at theta = alpha; a flank at linear 1 is the steepest in sRGB, without a tonemap).
 // With the G-buffer's 30-bit normal that bound is within 2/255 from perceptual roughness ~0.1; below,
-// 2/255 everywhere would need ~50 bits (README, "Deferred"), so those cases are held to the bound and
+// 2/255 everywhere would need more than 48 bits (README, "Deferred"), so those cases are held to the bound and
 // reported, the rest to 2/255 and 0.25/255 in every rig.
 static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255_or_the_10_byte_bound(void)
 {
