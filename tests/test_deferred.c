@@ -459,6 +459,7 @@ typedef struct DefSweepScene {
     RblLight lights[2];
     Color ambient;
     bool sphere;
+    RblBillboard plane;             // the surface when !sphere
 } DefSweepScene;
 
 static DefSweepScene defSweepScene(bool sphere)
@@ -466,6 +467,7 @@ static DefSweepScene defSweepScene(bool sphere)
     DefSweepScene s;
     memset(&s, 0, sizeof(s));
     s.sphere = sphere;
+    s.plane = litPlane();
     s.ambient = (Color){ 20, 22, 28, 255 };
     if (sphere)
     {
@@ -503,7 +505,7 @@ static Image defSweepRender(const DefSweepScene *s, DefSweepCase c, Model *spher
     RblFog noFog;
     memset(&noFog, 0, sizeof(noFog));
     RT_CHECK(defSetLights(s->lights, 2, s->ambient, noFog), "scene rejected");
-    RenderTexture2D rt = LoadRenderTexture(SWEEP_SIZE, SWEEP_SIZE);
+    RenderTexture2D rt = LoadRenderTexture(g->width, g->height);     // the G-buffer's size on both paths
     bool ok = true;
     if (deferred)
     {
@@ -520,7 +522,7 @@ static Image defSweepRender(const DefSweepScene *s, DefSweepCase c, Model *spher
             RblDrawModel(*sphere, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
             sphere->materials[0] = keep;
         }
-        else RblDrawBillboard(s->camera, m, litPlane());
+        else RblDrawBillboard(s->camera, m, s->plane);
     }
     if (!deferred) { EndMode3D(); EndTextureMode(); }
     else if (ok)
@@ -537,17 +539,19 @@ static Image defSweepRender(const DefSweepScene *s, DefSweepCase c, Model *spher
 }
 
 // A G-buffer of the sweep's size for one BRDF, point and directional lights
-static RblGBuffer sweepGBuffer(int brdf)
+static RblGBuffer sweepGBufferSized(int brdf, int size)
 {
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
-    gd.width = SWEEP_SIZE; gd.height = SWEEP_SIZE;
+    gd.width = size; gd.height = size;
     gd.brdf = brdf;
     gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
     RblGBuffer g = RblLoadGBuffer(gd);
     RT_CHECK(RblIsGBufferValid(&g), "G-buffer for brdf %d failed", brdf);
     return g;
 }
+
+static RblGBuffer sweepGBuffer(int brdf) { return sweepGBufferSized(brdf, SWEEP_SIZE); }
 
 static void test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved(void)
 {
@@ -673,6 +677,58 @@ static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within
         RT_CHECK(worstMean <= 0.25, "%s: mean %.3f/255 in some rig (limit 0.25)", name, worstMean);
     }
     for (int b = 1; b < 3; b++) RblUnloadGBuffer(&g[b]);
+    UnloadTexture(albedo);
+    UnloadModel(sphere);
+}
+
+// A flat surface whose normal is not a code: the highlight's flank spreads over many pixels (on a
+// sphere it is one or two), so this is where the 30-bit normal shows most. 12 tilts of the plane up
+// to 0.35 rad, lights x0.2/1/5 in turn, 384x384 (3 times the sweep's side: more pixels on a flank);
+// the same rule as the sphere's rigs: GGX below roughness 0.1 held to the first-order bound, the
+// rest to 2/255 max and 0.25/255 mean.
+static void test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255_or_the_10_byte_bound(void)
+{
+    const float roughness[5] = { 0.02f, 0.05f, 0.07f, 0.1f, 0.3f };
+    Model sphere = LoadModelFromMesh(GenMeshSphere(1.0f, 4, 4));      // unused: planes only
+    Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
+    const int size = 3*SWEEP_SIZE;
+    RblGBuffer g = sweepGBufferSized(RBL_BRDF_GGX, size);
+    const double worstNormal = 8.5e-5;      // the 30-bit code's worst (the 9-rig test measures it: 8.4e-5)
+    printf("    per case over 12 tilts: worst max, worst mean, tilts over 2/255, limit\n");
+    for (int ri = 0; ri < 5; ri++)
+        for (int metal = 0; metal < 2; metal++)
+        {
+            DefSweepCase c = { RBL_BRDF_GGX, roughness[ri], (float)metal, 0.0f, 0.0f };
+            unsigned int seed = 5u;
+            int worst = 0, over = 0;
+            double worstMean = 0.0;
+            for (int t = 0; t < 12; t++)
+            {
+                DefSweepScene s = defSweepScene(false);
+                float ax = rtRandomRange(&seed, -0.35f, 0.35f), ay = rtRandomRange(&seed, -0.35f, 0.35f), k = (t%3 == 0)? 0.2f : ((t%3 == 1)? 1.0f : 5.0f);
+                s.plane.axis = Vector3Normalize((Vector3){ ax, ay, 1.0f });
+                s.plane.up = Vector3Normalize(Vector3CrossProduct(s.plane.axis, (Vector3){ 1.0f, 0.0f, 0.0f }));
+                s.lights[0].intensity *= k; s.lights[1].intensity *= k;
+                Image fwd = defSweepRender(&s, c, &sphere, albedo, &g, false);
+                Image def = defSweepRender(&s, c, &sphere, albedo, &g, true);
+                DefDiff d = defCompare(fwd, def);
+                RT_CHECK(d.covered > size*size/3 && d.coverage == 0, "tilt %d: %d pixels, coverage differs in %d", t, d.covered, d.coverage);
+                if (d.worst > worst) worst = d.worst;
+                if (d.mean > worstMean) worstMean = d.mean;
+                over += (d.worst > 2);
+                UnloadImage(fwd); UnloadImage(def);
+            }
+            double alpha = fmax(c.roughness, 0.045)*fmax(c.roughness, 0.045);
+            double bound = (c.roughness < 0.1f)? 255.0*(1.055/2.4)*(2.0/alpha)*worstNormal : 2.0;
+            char name[64];
+            snprintf(name, sizeof(name), "GGX roughness %.2f %s", c.roughness, metal? "metal" : "dielectric");
+            printf("    %-36s max %2d/255  mean %.3f/255  %2d of 12 tilts over 2/255  held to %.1f/255%s\n", name, worst, worstMean, over, fmax(bound, 2.0),
+                   (bound > 2.0)? " (the bound)" : "");
+            if (bound > 2.0) RT_CHECK(worst <= (int)ceil(bound) + 1, "%s: max %d/255 beyond the codec's bound %.1f/255", name, worst, bound);
+            else RT_CHECK(worst <= 2, "%s: max %d/255 on some tilt (limit 2)", name, worst);
+            RT_CHECK(worstMean <= 0.25, "%s: mean %.3f/255 on some tilt (limit 0.25)", name, worstMean);
+        }
+    RblUnloadGBuffer(&g);
     UnloadTexture(albedo);
     UnloadModel(sphere);
 }
@@ -884,6 +940,129 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
     UnloadTexture(albedo);
     RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
+}
+
+// The same scenes without reading the depth buffer (WebGL2 cannot): the shader's distance to the eye
+// (debug view, float target) against the true plane point behind each pixel centre, in steps of a
+// 24-bit depth buffer at that depth. This is the whole chain a light pass uses: the depth the
+// geometry pass stored and the shader's reconstruction from it.
+static void test_deferred_distance_view_matches_the_true_plane_within_24_bit_depth_steps(void)
+{
+    RblGBufferDesc shading;
+    memset(&shading, 0, sizeof(shading));
+    shading.width = LIT_TARGET; shading.height = LIT_TARGET;
+    shading.linearOutput = true;
+    RblGBuffer g = RblLoadGBuffer(shading);
+    RblFog noFog;
+    memset(&noFog, 0, sizeof(noFog));
+    RT_CHECK(defSetLights(NULL, 0, BLACK, noFog), "empty scene rejected");
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.deferred = true;
+    Shader geo = RblLoadLitShader(d);
+    Texture2D albedo = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = geo;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    const float distances[4] = { 0.5f, 3.0f, 20.0f, 400.0f };
+    for (int k = 0; k < 4; k++)
+    {
+        float z = distances[k];
+        Camera3D cam = litCamera((Vector3){ 0.0f, 0.0f, z }, (Vector3){ 0.3f*z, 0.2f*z, 0.0f });
+        RblBeginGBuffer(&g, cam);
+        RblBillboard plane = litPlane();
+        plane.size = (Vector2){ 40.0f*z, 40.0f*z }; plane.origin = (Vector2){ 20.0f*z, 20.0f*z };
+        RblDrawBillboard(cam, m, plane);
+        RblEndGBuffer(&g);
+        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_DEPTH, 1e4f);
+        RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+        float *pos = rtReadFloatPixels(rt.texture.id, LIT_TARGET, LIT_TARGET);
+        litTargetUnload(rt);
+        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
+        D3 eye = d3f(cam.position), forward = dNorm(dSub(d3f(cam.target), eye));
+        double worst = 0.0;
+        int n = 0;
+        for (int y = 8; y < LIT_TARGET - 8; y += 4)
+            for (int x = 8; x < LIT_TARGET - 8; x += 4)
+            {
+                D3 truth;
+                if (!refPixelOnPlane(cam, LIT_TARGET, LIT_TARGET, x, LIT_TARGET - 1 - y, d3(0, 0, 0), d3(0, 0, 1), &truth)) continue;
+                double zv = dDot(dSub(truth, eye), forward), distance = dLen(dSub(truth, eye));
+                double step = zv*zv/(rlGetCullDistanceNear()*16777216.0)*distance/zv;     // one 24-bit step along the ray
+                worst = fmax(worst, fabs(pos[(y*LIT_TARGET + x)*4]*1e4 - distance)/step);
+                n++;
+            }
+        printf("    eye %5.1f above the plane: shader distance vs the true point: worst %.2f steps of a 24-bit depth (%d pixels)\n", z, worst, n);
+        RT_CHECK(n > 100, "eye %.1f: only %d pixels", z, n);
+        // the depth test's two limits added: the stored depth (< 16 steps) and the float reconstruction (< 4)
+        RT_CHECK(worst < 20.0, "eye %.1f: distance off by %.2f 24-bit depth steps", z, worst);
+        free(pos);
+    }
+    MemFree(m.maps);
+    UnloadTexture(albedo);
+    RblUnloadLitShader(&geo);
+    RblUnloadGBuffer(&g);
+}
+
+// Under both: what the rasterizer hands a fragment stage. A plane drawn by raylib (DrawMesh) with a
+// shader that writes the interpolated world position and gl_FragCoord.z into a float target,
+// against the true plane point behind each pixel centre and its window depth (double). The lit
+// paths build view vectors from exactly these, so a renderer whose interpolation is coarse moves
+// sharp highlights however exact the shading code is.
+static void test_raster_interpolated_position_and_window_depth_match_the_true_plane(void)
+{
+    const char *version = rtContextIsEs()? "#version 300 es\nprecision highp float;\n" : "#version 330\n";
+    char vs[512], fs[512];
+    snprintf(vs, sizeof(vs), "%sin vec3 vertexPosition; uniform mat4 mvp; out vec3 worldPosition;\n"
+             "void main() { worldPosition = vertexPosition; gl_Position = mvp*vec4(vertexPosition, 1.0); }\n", version);
+    snprintf(fs, sizeof(fs), "%sin vec3 worldPosition; out vec4 finalColor;\n"
+             "void main() { finalColor = vec4(worldPosition, gl_FragCoord.z); }\n", version);
+    Shader sh = LoadShaderFromMemory(vs, fs);
+    RT_CHECK(sh.id != rlGetShaderIdDefault(), "probe shader failed");
+    Material m = LoadMaterialDefault();
+    m.shader = sh;
+    const float heights[4] = { 0.5f, 3.0f, 20.0f, 400.0f };
+    const double nearD = rlGetCullDistanceNear(), farD = rlGetCullDistanceFar();
+    for (int k = 0; k < 4; k++)
+    {
+        float h = heights[k];
+        Mesh plane = GenMeshPlane(80.0f*h, 80.0f*h, 1, 1);                 // y = 0, normal +Y
+        Camera3D cam = litCamera((Vector3){ 0.0f, h, 0.0f }, (Vector3){ 0.3f*h, 0.0f, 0.2f*h });
+        RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+        BeginTextureMode(rt); ClearBackground(BLANK);
+        rlDisableColorBlend();                                                 // the values, not blended by their alpha
+        BeginMode3D(cam); DrawMesh(plane, m, MatrixIdentity()); EndMode3D();
+        rlEnableColorBlend();
+        EndTextureMode();
+        float *px = rtReadFloatPixels(rt.texture.id, LIT_TARGET, LIT_TARGET);
+        litTargetUnload(rt);
+        UnloadMesh(plane);
+        D3 eye = d3f(cam.position), forward = dNorm(dSub(d3f(cam.target), eye));
+        double worstPosition = 0.0, worstDepth = 0.0;
+        int n = 0;
+        for (int y = 8; y < LIT_TARGET - 8; y += 4)
+            for (int x = 8; x < LIT_TARGET - 8; x += 4)
+            {
+                D3 truth;
+                const float *p = &px[(y*LIT_TARGET + x)*4];                 // GL rows: y from the bottom
+                if (!refPixelOnPlane(cam, LIT_TARGET, LIT_TARGET, x, LIT_TARGET - 1 - y, d3(0, 0, 0), d3(0, 1, 0), &truth) || (p[3] <= 0.0f)) continue;
+                double zv = dDot(dSub(truth, eye), forward);
+                double window = 0.5*((farD + nearD)/(farD - nearD) - 2.0*farD*nearD/((farD - nearD)*zv)) + 0.5;
+                worstPosition = fmax(worstPosition, dLen(dSub(d3(p[0], p[1], p[2]), truth))/dLen(dSub(truth, eye)));
+                worstDepth = fmax(worstDepth, fabs(p[3] - window)*16777216.0);
+                n++;
+            }
+        printf("    eye %5.1f above the plane: interpolated position off by %.2e of the distance, gl_FragCoord.z by %.2f 24-bit steps (%d pixels)\n",
+               h, worstPosition, worstDepth, n);
+        RT_CHECK(n > 100, "eye %.1f: only %d pixels", h, n);
+        // float interpolation: a few float steps of the distance (2^-23 = 1.2e-7); 16 depth steps as for the depth buffer
+        RT_CHECK(worstPosition < 2e-5, "eye %.1f: interpolated position off by %.2e of the distance", h, worstPosition);
+        RT_CHECK(worstDepth < 16.0, "eye %.1f: window depth off by %.2f 24-bit steps", h, worstDepth);
+        free(px);
+    }
+    MemFree(m.maps);
+    UnloadShader(sh);
 }
 
 // ---- fallback, transparency, debug views ----------------------------------------------------------
