@@ -1298,7 +1298,7 @@ typedef struct rbl__State {
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
-    unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
+    unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
@@ -3529,7 +3529,7 @@ enum { RBL__PATH_BILLBOARD = 0, RBL__PATH_INSTANCED, RBL__PATH_MESH, RBL__PATH_S
 // Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
 // colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblCameraFrame *view);
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program);
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program);
 static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
@@ -3894,7 +3894,7 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     Material material = batch->runs[r].material;
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, batch->fading, fn, &program)) return;
     *bound |= rbl__bindMaterial(&material);
     if (program != NULL) rbl__applyMaterialValues(program, &material);
     if (!batch->fading && (program != NULL) && program->key.desc.crossFade)
@@ -4291,7 +4291,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, "RblDrawInstanced", &program)) return 0;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, fades != NULL, "RblDrawInstanced", &program)) return 0;
     if ((fades != NULL) && (buffer->fadeGpuCapacity < buffer->capacity))
     {
         unsigned int id = rlLoadVertexBuffer(NULL, buffer->capacity*(int)sizeof(RblFade), true);
@@ -6026,6 +6026,25 @@ static rbl__Program *rbl__skinnedCaster(void)
     return caster;
 }
 
+// The cross-fade casters (vertex buffers, instanced), compiled on the first faded billboard of a
+// shadow pass and held (one holder each) until the last shadow map goes; NULL (problem set) on failure
+static rbl__Program *rbl__fadeCaster(bool instanced)
+{
+    unsigned int *id = &rbl__state.casterIds[instanced? 4 : 3];
+    rbl__Program *caster = rbl__findCaster(*id);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc desc, normalised;
+    memset(&desc, 0, sizeof(desc));
+    desc.crossFade = true;
+    desc.instanced = instanced;
+    rbl__normaliseLitDesc(desc, &normalised);
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
+    caster = rbl__acquireProgram(&key);
+    *id = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
 // A soft-particle program's per-draw depth inputs: the scene's depth texture on its unit, the current
 // projection's depth row (as the fragment's own depth was made), its texel size and the material's
 // fade distance
@@ -6044,14 +6063,17 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     if (sc->depth.id != 0) { rlActiveTextureSlot(RBL_SCENE_DEPTH_TEXTURE_UNIT); rlEnableTexture(sc->depth.id); rlActiveTextureSlot(0); }
 }
 
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program)
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
 {
     const char *bad = rbl__materialProblem(material, path, program);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
-        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        // Billboards with fade data cast the mixed cut-out (a crossFade caster); others the plain one
+        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : fade? rbl__fadeCaster(path == RBL__PATH_INSTANCED) :
+                               rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
+        if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
@@ -6368,7 +6390,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *p = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, path, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, path, false, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
     if (p != NULL)
     {
         rlEnableShader(material.shader.id);
@@ -7196,10 +7218,13 @@ void RblUnloadShadowMap(RblShadowMap *map)
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
-    if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the skinned caster goes too
+    if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the on-demand casters go too
     {
-        if (rbl__state.casterIds[2] != 0) rbl__releaseProgram(rbl__state.casterIds[2], RBL__KIND_CASTER);
-        rbl__state.casterIds[2] = 0;
+        for (int k = 2; k < 5; k++)                                          // skinned and cross-fade casters
+        {
+            if (rbl__state.casterIds[k] != 0) rbl__releaseProgram(rbl__state.casterIds[k], RBL__KIND_CASTER);
+            rbl__state.casterIds[k] = 0;
+        }
     }
     rbl__liveRemove(map->state);
     RBL_FREE(map->state);

@@ -450,10 +450,69 @@ static void test_fade_bad_weights_and_sources_are_refused_with_one_line(void)
     fadeRigUnload(&r);
 }
 
+// Shadows: a faded card casts its mixed cut-out. Frame a opaque, frame b transparent: the mixed
+// alpha is 1 - w, against the cutoff 0.5 a card at w 0.3 casts and one at w 0.7 does not (a caster
+// reading frame a alone would cast both); on every billboard path (test_shadows.c's floor and light)
+typedef struct FadeShadowCard { int path; float weight; } FadeShadowCard;
+static void fadeShadowCaster(Material m, Camera3D viewer, void *ctx)
+{
+    const FadeShadowCard *c = (const FadeShadowCard *)ctx;
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.position = (Vector3){ 0.0f, 0.0f, 1.0f }; b.size = (Vector2){ 2.0f, 2.0f }; b.origin = (Vector2){ 1.0f, 1.0f };
+    b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    b.source = (Rectangle){ 0, 0, 32, 32 };
+    b.fade.source = (Rectangle){ 32, 0, 32, 32 }; b.fade.weight = c->weight;
+    if (c->path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    else if (c->path == FADE_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, viewer);
+        RblBatchAdd(&batch, m, &b);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
+        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
+        RblUnloadInstanceBuffer(&buf);
+    }
+}
+
+static void test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path(void)
+{
+    ShSetup s = shSetup((Vector3){ 0.0f, 0.0f, -1.0f });
+    s.lights[0].direction = (Vector3){ 0.4f, 0.0f, -1.0f };
+    Image img = GenImageColor(64, 32, WHITE);
+    ImageDrawRectangle(&img, 32, 0, 32, 32, BLANK);
+    Texture2D sheet = LoadTextureFromImage(img);
+    UnloadImage(img);
+    int cx = (int)((0.4f + SH_VIEW*0.5f)/SH_VIEW*SH_TARGET), cy = SH_TARGET/2;
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)
+        for (int k = 0; k < 2; k++)
+        {
+            FadeShadowCard card = { path, k? 0.7f : 0.3f };
+            Image out = shRender(&s, fadeShadowCaster, &card, sheet, false);
+            int centre = rtPixel(out, cx, cy).r, outside = rtPixel(out, cx + 40, cy).r;
+            printf("    %-9s weight %.1f: footprint centre %3d, unshadowed floor %3d\n", fadePathName[path], card.weight, centre, outside);
+            RT_CHECK(k? (centre > outside - 3) : (centre < outside - 40), "%s weight %.1f: centre %d, unshadowed %d", fadePathName[path], card.weight, centre, outside);
+            UnloadImage(out);
+        }
+    UnloadTexture(sheet);
+}
+
 #define RBL_FADE_TESTS \
         RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
         RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
         RT_TEST(test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes), \
         RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
         RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
+        RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
         RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line)
