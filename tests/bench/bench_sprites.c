@@ -10,7 +10,9 @@
 //   bulk_update_fill_10000      ns_per_instance      RblUpdateSpriteInstances (the same work, checks once)
 //   raylib_billboard_pro_10000  cpu_ns_per_billboard DrawBillboardPro of the same 10000 frames (distinct sources) and the
 //                                                    batch flush, submission CPU time (raylib's draws included, no glFinish)
-//   instanced_10000             animated_over_raylib / plain_over_raylib: the instanced rows over that, same run
+//   instanced_10000             animated_over_raylib / plain_over_raylib: the instanced rows over that, same run;
+//                               excl_draw_*: the same without the time inside glDraw* (llvmpipe's vertex stage);
+//                               excl_draw_bulk_animated_over_raylib: (bulk update + plain draw) over raylib
 //   fade_batch_10000            cpu_ns_per_billboard RblBatchAdd of 10000 billboards with distinct frames: plain (no fade) and
 //                                                    fade (RblSpriteFade each: second frame and weight), and fade_over_plain;
 //                                                    end_ns_per_billboard: RblEndBatch (sort none: upload + draw submission)
@@ -418,6 +420,19 @@ int main(void)
                 BenchCsvRow("sprites", "instanced_10000", "excl_draw_animated_over_raylib", excl[1]/ray[1], "x");
                 BenchCsvRow("sprites", "instanced_10000", "excl_draw_plain_over_raylib", excl[0]/ray[1], "x");
             }
+            free(src); free(pos);
+        }
+        if (wrapped)
+        {
+            // The bulk update (RblUpdateSpriteInstances) + the instanced draw of distinct frames, over raylib
+            double ray[2];
+            Rectangle *src = (Rectangle *)malloc((size_t)n*sizeof(Rectangle));
+            Vector3 *pos = (Vector3 *)malloc((size_t)n*sizeof(Vector3));
+            for (int i = 0; i < n; i++) { src[i] = instances[i].source; src[i].width = fabsf(src[i].width); src[i].height = fabsf(src[i].height); pos[i] = instances[i].position; }
+            RaylibCtx rc = { m.maps[MATERIAL_MAP_ALBEDO].texture, src, pos, n, cam };
+            BenchMedianOfRuns(runRaylib, &rc, 2, timing, ray);
+            printf("  %-34s %8.3f x ((bulk %.1f + draw %.1f) / raylib %.1f ns, excluding draw calls)\n", "instanced_10000 bulk+draw / raylib", (bulkBest + excl[0])/ray[1], bulkBest, excl[0], ray[1]);
+            BenchCsvRow("sprites", "instanced_10000", "excl_draw_bulk_animated_over_raylib", (bulkBest + excl[0])/ray[1], "x");
             free(src); free(pos);
         }
         fadeBench(&anim, players, instances, n, &buf, cam, m, timing);
