@@ -308,7 +308,21 @@
 *       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
 *         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
 *         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
-*         skipped. RblSpriteBlend: next frame and time/duration (the shader cross-fade is not built).
+*         skipped. RblSpriteBlend: next frame and time/duration.
+*       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblSpriteFade(&player, &atlas,
+*         &billboard.fade) after RblAtlasBillboard mixes the next frame in by time/duration. The
+*         program fetches every map at both frames' UVs (a program without the option fetches once):
+*         colour in linear light weighted by coverage (a transparent texel's colour never bleeds in),
+*         alpha linearly with the cutoff on the mix, the normal as a world vector (each fetch decoded
+*         in its own frame's tangent axes: frames stored rotated differently mix correctly), then
+*         renormalised; specular, occlusion and emission by the colour's weight. Weight 0 and 1 are
+*         the single frames exactly. Data only where used: the batch's fade stream (16 floats per
+*         billboard, attribute location 5) exists from its first billboard with a weight, instanced
+*         draws upload RblInstancedDesc.fades (24 bytes an instance, fades[i] with instances[i]) to a
+*         second buffer only when it is non-NULL; without data the weight is a constant 0. Shadow
+*         passes cut faded casters by the mixed alpha; deferred geometry variants take the option.
+*         The second frame is drawn over the first's quad: frames of different trim rectangles (or
+*         sizes) do not line up (export untrimmed, or with one trim per animation, to cross-fade).
 *       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
 *         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
@@ -339,6 +353,7 @@
 *         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
 *         billboards still turn toward camera.position (their shading uses the parallel view).
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
+*       - Cross-fade mixes two frames over the first frame's quad (equal trims line up; see SPRITE SHEETS).
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:

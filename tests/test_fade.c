@@ -508,6 +508,47 @@ static void test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path(void)
     UnloadTexture(sheet);
 }
 
+// The option compiles in only when asked: a plain program declares no fade input; a crossFade
+// program reads raylib's texcoord2 location 5, hidden from raylib's DrawMesh (locs -1), so a Model
+// drawn with it renders exactly as with the plain program (the constant weight 0)
+static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(fadeNoiseTile(8u), fadeNoiseTile(9u), desc);
+    RT_CHECK(rlGetLocationAttrib(r.plain.id, "vertexTexCoord2") == -1, "plain program declares the fade stream");
+    RT_CHECK(rlGetLocationAttrib(r.fade.id, "vertexTexCoord2") == 5, "crossFade program: fade stream at %d, not 5", rlGetLocationAttrib(r.fade.id, "vertexTexCoord2"));
+    RT_CHECK(r.fade.locs[SHADER_LOC_VERTEX_TEXCOORD02] == -1, "raylib's DrawMesh would bind texcoord2 to the fade stream");
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    Mesh plane = GenMeshPlane(2.0f, 2.0f, 1, 1);
+    Model model = LoadModelFromMesh(plane);
+    Camera3D top;
+    memset(&top, 0, sizeof(top));
+    top.position = (Vector3){ 0, 10, 0 }; top.up = (Vector3){ 0, 0, -1 }; top.fovy = 2.5f; top.projection = CAMERA_ORTHOGRAPHIC;
+    Image img[2];
+    for (int k = 0; k < 2; k++)
+    {
+        model.materials[0].shader = k? r.fade : r.plain;
+        model.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+        RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+        BeginTextureMode(rt); ClearBackground(BLANK); BeginMode3D(top);
+        RblDrawModel(model, (Vector3){ 0, 0, 0 }, 1.0f, WHITE);
+        EndMode3D(); EndTextureMode();
+        img[k] = rtReadTarget(rt);
+        UnloadRenderTexture(rt);
+    }
+    int drawn = 0;
+    for (int y = 0; y < FADE_RT; y++) for (int x = 0; x < FADE_RT; x++) drawn += (rtPixel(img[0], x, y).a == 255);
+    RT_CHECK(drawn > 500, "the plane was not drawn (%d pixels)", drawn);      // the sheet's opaque part
+    RT_CHECK(fadeImageDiff(img[0], img[1]) == 0, "a Model drawn with the crossFade program differs by %d/255", fadeImageDiff(img[0], img[1]));
+    UnloadImage(img[0]); UnloadImage(img[1]);
+    model.materials[0].shader = r.plain;        // the rig unloads its programs; the Model keeps none of its own
+    model.materials[0].maps[MATERIAL_MAP_ALBEDO].texture.id = 0;
+    model.materials[0].shader.id = 0; model.materials[0].shader.locs = NULL;
+    UnloadModel(model);
+    fadeRigUnload(&r);
+}
+
 #define RBL_FADE_TESTS \
         RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
         RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
@@ -515,4 +556,5 @@ static void test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path(void)
         RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
         RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
         RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
+        RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
         RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line)
