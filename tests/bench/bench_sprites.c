@@ -13,6 +13,7 @@
 //   instanced_10000             animated_over_raylib / plain_over_raylib: the instanced rows over that, same run;
 //                               excl_draw_*: the same without the time inside glDraw* (llvmpipe's vertex stage);
 //                               excl_draw_bulk_animated_over_raylib: (bulk update + plain draw) over raylib
+//   fade_*                      plain and fade runs interleaved over 15 rounds; fade_over_plain: median of the per-round ratios
 //   fade_batch_10000            cpu_ns_per_billboard RblBatchAdd of 10000 billboards with distinct frames: plain (no fade) and
 //                                                    fade (RblSpriteFade each: second frame and weight), and fade_over_plain;
 //                                                    end_ns_per_billboard: RblEndBatch (sort none: upload + draw submission)
@@ -192,6 +193,27 @@ static void runFadeFragment(void *ctx, double *out)
     out[0] = (BenchNowNs() - t0)/1e6;
 }
 
+// Plain and fade runs interleaved in rounds (the order alternating), so a slow spell of this shared
+// machine hits both alike: medians of each value and of the per-round ratio of value 0
+#define FADE_ROUNDS 15
+static void interleaved(BenchRunFn fn, void *plainCtx, void *fadeCtx, int values, double plain[2], double fade[2], double *ratio)
+{
+    double p[2][FADE_ROUNDS], f[2][FADE_ROUNDS], r[FADE_ROUNDS], out[2];
+    fn(plainCtx, out); fn(fadeCtx, out);        // warm-up
+    for (int k = 0; k < FADE_ROUNDS; k++)
+    {
+        for (int j = 0; j < 2; j++)
+        {
+            bool fadeRun = ((k + j) & 1) != 0;
+            fn(fadeRun? fadeCtx : plainCtx, out);
+            for (int v = 0; v < values; v++) { if (fadeRun) f[v][k] = out[v]; else p[v][k] = out[v]; }
+        }
+        r[k] = f[0][k]/p[0][k];
+    }
+    for (int v = 0; v < values; v++) { plain[v] = BenchMedian(p[v], FADE_ROUNDS); fade[v] = BenchMedian(f[v], FADE_ROUNDS); }
+    *ratio = BenchMedian(r, FADE_ROUNDS);
+}
+
 static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, const RblInstance *instances, int n, RblInstanceBuffer *buf, Camera3D cam, Material instMat, BenchTiming timing)
 {
     // Batch: the same 10000 frames, without and with a fade each (RblSpriteFade from its player)
@@ -213,38 +235,37 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
         if (fades[i].weight <= 0.0f) fades[i].weight = 0.5f;       // every billboard fades
     }
     RblBatch batch = RblLoadBatch(n);
-    double plainNs[2], fadeNs[2];
-    FadeBatchCtx bc = { &batch, cam, plain, cards, n };
-    BenchMedianOfRuns(runFadeBatch, &bc, 2, timing, plainNs);
+    double plainNs[2], fadeNs[2], batchRatio;
     RblBillboard *faded = (RblBillboard *)malloc((size_t)n*sizeof(RblBillboard));
     memcpy(faded, cards, (size_t)n*sizeof(RblBillboard));
     for (int i = 0; i < n; i++) faded[i].fade = fades[i];
-    bc.material = fade; bc.cards = faded;
-    BenchMedianOfRuns(runFadeBatch, &bc, 2, timing, fadeNs);
+    FadeBatchCtx bcPlain = { &batch, cam, plain, cards, n }, bcFade = { &batch, cam, fade, faded, n };
+    interleaved(runFadeBatch, &bcPlain, &bcFade, 2, plainNs, fadeNs, &batchRatio);
+    (void)timing;
     printf("  %-34s %8.1f ns per billboard add, %6.1f end excluding draw calls (CPU)\n", "fade_batch_10000_plain", plainNs[0], plainNs[1]);
     printf("  %-34s %8.1f ns per billboard add, %6.1f end excluding draw calls (CPU)\n", "fade_batch_10000_fade", fadeNs[0], fadeNs[1]);
-    printf("  %-34s %8.3f x add, %.3f x end\n", "fade_batch_10000 fade/plain", fadeNs[0]/plainNs[0], fadeNs[1]/plainNs[1]);
+    printf("  %-34s %8.3f x add (median of %d interleaved rounds), %.3f x end\n", "fade_batch_10000 fade/plain", batchRatio, FADE_ROUNDS, fadeNs[1]/plainNs[1]);
     BenchCsvRow("sprites", "fade_batch_10000_plain", "cpu_ns_per_billboard", plainNs[0], "ns");
     BenchCsvRow("sprites", "fade_batch_10000_fade", "cpu_ns_per_billboard", fadeNs[0], "ns");
-    BenchCsvRow("sprites", "fade_batch_10000", "fade_over_plain", fadeNs[0]/plainNs[0], "x");
+    BenchCsvRow("sprites", "fade_batch_10000", "fade_over_plain", batchRatio, "x");
     BenchCsvRow("sprites", "fade_batch_10000_plain", "end_ns_per_billboard", plainNs[1], "ns");
     BenchCsvRow("sprites", "fade_batch_10000_fade", "end_ns_per_billboard", fadeNs[1], "ns");
     // Instanced: the same draw without and with the fades array (its own buffer, uploaded per draw)
-    double inst[2][2];
-    for (int k = 0; k < 2; k++)
+    double inst[2][2], instRatio, instExclRatio;
     {
-        FadeInstCtx ic = { buf, cam, k? fadeInst : instMat, instances, k? fades : NULL, n, false };
-        BenchMedianOfRuns(runFadeInstanced, &ic, 2, timing, inst[k]);
+        FadeInstCtx icPlain = { buf, cam, instMat, instances, NULL, n, false }, icFade = { buf, cam, fadeInst, instances, fades, n, false };
+        interleaved(runFadeInstanced, &icPlain, &icFade, 2, inst[0], inst[1], &instRatio);
+        instExclRatio = inst[1][1]/inst[0][1];
     }
     printf("  %-34s %8.1f ns per instance (CPU), %6.1f excluding draw calls\n", "fade_instanced_10000_plain", inst[0][0], inst[0][1]);
     printf("  %-34s %8.1f ns per instance (CPU), %6.1f excluding draw calls\n", "fade_instanced_10000_fade", inst[1][0], inst[1][1]);
-    printf("  %-34s %8.3f x, %.3f x excluding draw calls\n", "fade_instanced_10000 fade/plain", inst[1][0]/inst[0][0], inst[1][1]/inst[0][1]);
+    printf("  %-34s %8.3f x (median of %d interleaved rounds), %.3f x excluding draw calls (medians)\n", "fade_instanced_10000 fade/plain", instRatio, FADE_ROUNDS, instExclRatio);
     BenchCsvRow("sprites", "fade_instanced_10000_plain", "cpu_ns_per_instance", inst[0][0], "ns");
     BenchCsvRow("sprites", "fade_instanced_10000_fade", "cpu_ns_per_instance", inst[1][0], "ns");
-    BenchCsvRow("sprites", "fade_instanced_10000", "fade_over_plain", inst[1][0]/inst[0][0], "x");
+    BenchCsvRow("sprites", "fade_instanced_10000", "fade_over_plain", instRatio, "x");
     BenchCsvRow("sprites", "fade_instanced_10000_plain", "excl_draw_ns_per_instance", inst[0][1], "ns");
     BenchCsvRow("sprites", "fade_instanced_10000_fade", "excl_draw_ns_per_instance", inst[1][1], "ns");
-    BenchCsvRow("sprites", "fade_instanced_10000", "excl_draw_fade_over_plain", inst[1][1]/inst[0][1], "x");
+    BenchCsvRow("sprites", "fade_instanced_10000", "excl_draw_fade_over_plain", instExclRatio, "x");
     // Fragment cost on llvmpipe: 16 cards covering a 512x512 target, albedo + RGB normal map, a light
     {
         Image noise = GenImageWhiteNoise(1024, 512, 0.5f), normal = GenImageColor(1024, 512, (Color){ 160, 140, 230, 255 });
@@ -279,18 +300,19 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
                 if (k == 1) { big[k][i].fade.source = (Rectangle){ 512, 0, 512, 512 }; big[k][i].fade.weight = 0.5f; }
             }
         RenderTexture2D target = LoadRenderTexture(512, 512);
-        double ms[2];
-        for (int k = 0; k < 2; k++)
+        double ms[2], msRatio;
         {
-            FadeFragCtx fc = { target, oc, fm[k], big[k], 16 };
-            BenchMedianOfRuns(runFadeFragment, &fc, 1, timing, &ms[k]);
+            FadeFragCtx fcPlain = { target, oc, fm[0], big[0], 16 }, fcFade = { target, oc, fm[1], big[1], 16 };
+            double a[2], b[2];
+            interleaved(runFadeFragment, &fcPlain, &fcFade, 1, a, b, &msRatio);
+            ms[0] = a[0]; ms[1] = b[0];
         }
         printf("  %-34s %8.2f ms per frame (llvmpipe, glFinish)\n", "fade_fragment_512_plain", ms[0]);
         printf("  %-34s %8.2f ms per frame (llvmpipe, glFinish)\n", "fade_fragment_512_fade", ms[1]);
-        printf("  %-34s %8.3f x\n", "fade_fragment_512 fade/plain", ms[1]/ms[0]);
+        printf("  %-34s %8.3f x (median of %d interleaved rounds)\n", "fade_fragment_512 fade/plain", msRatio, FADE_ROUNDS);
         BenchCsvRow("sprites", "fade_fragment_512_plain", "ms_per_frame", ms[0], "ms");
         BenchCsvRow("sprites", "fade_fragment_512_fade", "ms_per_frame", ms[1], "ms");
-        BenchCsvRow("sprites", "fade_fragment_512", "fade_over_plain", ms[1]/ms[0], "x");
+        BenchCsvRow("sprites", "fade_fragment_512", "fade_over_plain", msRatio, "x");
         UnloadRenderTexture(target);
         for (int k = 0; k < 2; k++) { RblUnloadLitShader(&fm[k].shader); MemFree(fm[k].maps); }
         UnloadTexture(albedo); UnloadTexture(ntex);
