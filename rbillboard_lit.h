@@ -308,7 +308,21 @@
 *       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
 *         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
 *         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
-*         skipped. RblSpriteBlend: next frame and time/duration (the shader cross-fade is not built).
+*         skipped. RblSpriteBlend: next frame and time/duration.
+*       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblSpriteFade(&player, &atlas,
+*         &billboard.fade) after RblAtlasBillboard mixes the next frame in by time/duration. The
+*         program fetches every map at both frames' UVs (a program without the option fetches once):
+*         colour in linear light weighted by coverage (a transparent texel's colour never bleeds in),
+*         alpha linearly with the cutoff on the mix, the normal as a world vector (each fetch decoded
+*         in its own frame's tangent axes: frames stored rotated differently mix correctly), then
+*         renormalised; specular, occlusion and emission by the colour's weight. Weight 0 and 1 are
+*         the single frames exactly. Data only where used: the batch's fade stream (16 floats per
+*         billboard, attribute location 5) exists from its first billboard with a weight, instanced
+*         draws upload RblInstancedDesc.fades (24 bytes an instance, fades[i] with instances[i]) to a
+*         second buffer only when it is non-NULL; without data the weight is a constant 0. Shadow
+*         passes cut faded casters by the mixed alpha; deferred geometry variants take the option.
+*         The second frame is drawn over the first's quad: frames of different trim rectangles (or
+*         sizes) do not line up (export untrimmed, or with one trim per animation, to cross-fade).
 *       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
 *         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
@@ -339,6 +353,7 @@
 *         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
 *         billboards still turn toward camera.position (their shading uses the parallel view).
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
+*       - Cross-fade mixes two frames over the first frame's quad (equal trims line up; see SPRITE SHEETS).
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:
@@ -578,6 +593,13 @@ typedef enum {
     RBL_ROUND_CYLINDER = 2          // Rounded normals bend around the up axis only (default: sphere)
 } RblBillboardFlags;
 
+// Cross-fade to a second atlas frame (a program with RblLitShaderDesc.crossFade mixes the two); zero = none
+typedef struct RblFade {
+    Rectangle source;               // Second frame in texels, as RblBillboard.source (zero = whole texture), drawn over the first's quad
+    float weight;                   // Share of the second frame, 0..1 (0 = the first alone; NaN/Inf or outside refused)
+    unsigned int flags;             // The second frame's RBL_FRAME_ROTATED bit (other bits ignored)
+} RblFade;
+
 // One billboard; zero fields take their defaults
 typedef struct RblBillboard {
     Vector3 position;               // World position of the pivot
@@ -591,6 +613,7 @@ typedef struct RblBillboard {
     Vector3 axis;                   // AXIS: locked axis (zero = +Y); FIXED: facing normal (zero = +Z)
     float roundness;                // 0 = flat normal, 1 = fully rounded (see RBL_ROUND_CYLINDER)
     unsigned int flags;             // RblBillboardFlags
+    RblFade fade;                   // Cross-fade (weight 0 = none; a crossFade program draws it, see RblSpriteFade)
 } RblBillboard;
 
 // Vertex layout of the batched path (attribute locations are raylib's defaults)
@@ -646,6 +669,7 @@ typedef struct RblInstancedDesc {
     Vector3 axis;                   // As RblBillboard.axis
     float roundness;                // As RblBillboard.roundness
     int sort;                       // RblSortMode by each instance's pivot depth (0 = the array's order); solid alpha 1
+    const RblFade *fades;           // NULL = no fade; else fades[i] goes with instances[i] (the draw's count of them), uploaded to a second buffer
 } RblInstancedDesc;
 
 // GPU instance buffer plus a staging copy (validated)
@@ -795,6 +819,7 @@ typedef struct RblLitShaderDesc {
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
+    bool crossFade;                 // Mix a second atlas frame (RblBillboard.fade, RblInstancedDesc.fades): every map fetched twice
     int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
@@ -1051,6 +1076,7 @@ RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops);
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
 RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
+RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight; false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
 
 #if defined(__cplusplus)
@@ -1189,11 +1215,23 @@ typedef struct rbl__BatchState {
     bool orthographic;              // The camera's projection (which side of a quad it sees)
     bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
+    // The optional fade stream (16 floats per billboard: rbl__fadeVertices), allocated when the first
+    // billboard with a fade weight arrives; a batch without one uploads and binds nothing more
+    float *fade;                    // Per billboard since RblBeginBatch() while fading (capacity billboards)
+    float *fadeSorted;              // Sorted copy (allocated at the first sorted fading RblEndBatch)
+    int fadeSortCapacity;           // Billboards fadeSorted holds
+    unsigned int fadeVboId;         // GPU copy (attribute location 5), created at the first fading RblEndBatch
+    int fadeGpuCapacity;            // Billboards fadeVboId holds
+    bool fading;                    // A billboard since RblBeginBatch() had a fade weight: fade[0..count) is filled
 } rbl__BatchState;
 
 // An instance buffer's own data (RblInstanceBuffer.state)
 typedef struct rbl__InstanceBufferState {
     RblInstance *staging;           // Compacted copy when a draw skips bad instances (clean sets upload directly)
+    RblFade *fadeStaging;           // RblInstancedDesc.fades compacted [0, capacity) and sorted [capacity, 2 capacity) with the instances (first draw with fades)
+    int fadeStagingCapacity;        // Instances fadeStaging serves (it holds twice as many fades)
+    unsigned int fadeVboId;         // Second instance buffer (locations 15, 6, 7), created at the first draw with fades
+    int fadeGpuCapacity;            // Fades fadeVboId holds
     RblInstance *sorted;            // Sorted copy (allocated at the first sorted draw, grown with capacity)
     rbl__SortKey *keys;             // Sort keys (same lifetime as sorted)
     int sortCapacity;               // Instances sorted and keys hold
@@ -1275,7 +1313,7 @@ typedef struct rbl__State {
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
-    unsigned int casterIds[3];      // Caster programs (vertex buffers, instanced, skinned: compiled on first use)
+    unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
@@ -2025,6 +2063,14 @@ static const char *const rbl__shader_lit_vs[] = {
     "RBL_ATTRIBUTE vec3 vertexNormal;\n",
     "RBL_ATTRIBUTE vec4 vertexColor;\n",
     "RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "// The fade stream (raylib's texcoord2 location 5): xy the second frame's texture coordinate, z the\n",
+    "// weight, w its tangent axes against the first's (material.glsl). Without the stream the attribute\n",
+    "// is constant (weight 0): the first frame alone\n",
+    "RBL_ATTRIBUTE vec4 vertexTexCoord2;\n",
+    "RBL_VARYING vec2 fragTexCoord2;\n",
+    "RBL_FLAT RBL_VARYING vec2 fragFade;\n",
+    "#endif\n",
     "\n",
     "uniform mat4 mvp;\n",
     "uniform mat4 matModel;\n",
@@ -2050,6 +2096,10 @@ static const char *const rbl__shader_lit_vs[] = {
     "#endif\n",
     "    fragPosition = vec3(matModel*vec4(position, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    fragTexCoord2 = vertexTexCoord2.xy;\n",
+    "    fragFade = vertexTexCoord2.zw;\n",
+    "#endif\n",
     "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex\n",
     "    fragNormal = rblMat3(matNormal)*normal;\n",
     "    // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.\n",
@@ -2079,6 +2129,14 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)\n",
     "layout(location = 13) in vec4 rblInstanceTint;      // normalised bytes (all zero = white)\n",
     "layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "// RblInstancedDesc.fades, a second per-instance buffer (without it: constant, weight 0)\n",
+    "layout(location = 15) in vec4 rblInstanceFadeSource; // the second frame, as rblInstanceSource\n",
+    "layout(location = 6) in float rblInstanceFadeWeight; // 0..1\n",
+    "layout(location = 7) in float rblInstanceFadeFlags;  // its RBL_FRAME_ROTATED bit\n",
+    "RBL_VARYING vec2 fragTexCoord2;\n",
+    "RBL_FLAT RBL_VARYING vec2 fragFade;                  // weight, tangent axes code (material.glsl rblFadeAxes)\n",
+    "#endif\n",
     "\n",
     "uniform mat4 mvp;\n",
     "// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):\n",
@@ -2300,6 +2358,32 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    tangent = vec4(tv, w);\n",
     "}\n",
     "\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "// Texture coordinate of the corner at sprite (cs right, ct down) in frame src (all zero = the whole\n",
+    "// texture), as rblBillboardVertex, and the frame's +U (T) and +V (V) in the quad's (right, up) plane\n",
+    "vec2 rblFrameTexCoord(vec4 src, bool rotated, vec2 size, float cs, float ct, vec2 textureSize, out vec2 T, out vec2 V)\n",
+    "{\n",
+    "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);\n",
+    "    bool flipU = (size.x < 0.0) != (src.z < 0.0);\n",
+    "    bool flipV = (size.y < 0.0) != (src.w < 0.0);\n",
+    "    float s = flipU? 1.0 - cs : cs;\n",
+    "    float t = flipV? 1.0 - ct : ct;\n",
+    "    if (!rotated) { T = vec2(flipU? -1.0 : 1.0, 0.0); V = vec2(0.0, flipV? 1.0 : -1.0); }\n",
+    "    else { T = vec2(0.0, flipV? -1.0 : 1.0); V = vec2(flipU? -1.0 : 1.0, 0.0); }\n",
+    "    return (src.xy + (rotated? vec2(1.0 - t, s) : vec2(s, t))*abs(src.zw))/textureSize;\n",
+    "}\n",
+    "\n",
+    "// The second frame's axes against the first's: swap (its +U along the first's V) + 2 negT + 4 negV\n",
+    "float rblFadeCode(vec2 t1, vec2 v1, vec2 t2, vec2 v2)\n",
+    "{\n",
+    "    float x = dot(t2, v1);\n",
+    "    bool swapAxes = x != 0.0;\n",
+    "    float negT = ((swapAxes? x : dot(t2, t1)) < 0.0)? 2.0 : 0.0;\n",
+    "    float negV = ((swapAxes? dot(v2, t1) : dot(v2, v1)) < 0.0)? 4.0 : 0.0;\n",
+    "    return (swapAxes? 1.0 : 0.0) + negT + negV;\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "void main()\n",
     "{\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
@@ -2319,6 +2403,14 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
     "                       p, fragTexCoord, fragNormal, fragTangent);\n",
     "    fragPosition = p;\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    int corner = cornerOf[gl_VertexID % 6];\n",
+    "    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;\n",
+    "    vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;\n",
+    "    rblFrameTexCoord(rblInstanceSource, (int(rblInstanceFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t1, v1);\n",
+    "    fragTexCoord2 = rblFrameTexCoord(rblInstanceFadeSource, (int(rblInstanceFadeFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t2, v2);\n",
+    "    fragFade = vec2(rblInstanceFadeWeight, rblFadeCode(t1, v1, t2, v2));\n",
+    "#endif\n",
     "    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
     "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex\n",
     "#ifdef RBL_VIEW_VECTOR\n",
@@ -2339,6 +2431,12 @@ static const char *const rbl__shader_material[] = {
     "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
     "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
+    "//   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map\n",
+    "//                            is fetched at both texture coordinates. What is mixed: colour in linear\n",
+    "//                            light weighted by coverage (alpha), as the mips average; alpha linearly,\n",
+    "//                            the cutoff applies to the mixed alpha; the normal as a world vector (each\n",
+    "//                            fetch decoded in its own frame's tangent axes), then renormalised;\n",
+    "//                            specular, occlusion and emission with the colour's coverage weight\n",
     "#include \"surface.glsl\"\n",
     "\n",
     "RBL_VARYING vec3 fragPosition;\n",
@@ -2349,6 +2447,13 @@ static const char *const rbl__shader_material[] = {
     "#ifdef RBL_VIEW_VECTOR\n",
     "RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
     "RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
+    "#endif\n",
+    "\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "RBL_VARYING vec2 fragTexCoord2;          // the second frame's texture coordinate\n",
+    "RBL_FLAT RBL_VARYING vec2 fragFade;      // x weight 0..1 of the second frame, y its tangent axes (rblFadeAxes)\n",
+    "// Exact ends: weight 0 is the first frame and 1 the second, bit for bit (no mix rounding)\n",
+    "#define rblFadeMix(a, b, w) (((w) <= 0.0)? (a) : (((w) >= 1.0)? (b) : mix((a), (b), (w))))\n",
     "#endif\n",
     "\n",
     "uniform sampler2D texture0;     // albedo (sRGB)\n",
@@ -2392,12 +2497,43 @@ static const char *const rbl__shader_material[] = {
     "#endif\n",
     "}\n",
     "\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "// The second frame's tangent axes from the first's (t = +U, b = +V, both world): code = swap + 2 negT\n",
+    "// + 4 negV, where swap says its +U runs along the first's V (a frame stored rotated differently)\n",
+    "void rblFadeAxes(float code, vec3 t, vec3 b, out vec3 t2, out vec3 b2)\n",
+    "{\n",
+    "    float c = floor(code + 0.5);                // interpolated (GLSL 1.x has no flat): round\n",
+    "    bool swapAxes = mod(c, 2.0) > 0.5;\n",
+    "    t2 = (swapAxes? b : t)*((mod(floor(c*0.5), 2.0) > 0.5)? -1.0 : 1.0);\n",
+    "    b2 = (swapAxes? t : b)*((c > 3.5)? -1.0 : 1.0);\n",
+    "}\n",
+    "\n",
+    "// Weight of the second frame's surface values: its share of the mixed coverage, so the colour and\n",
+    "// data of a transparent texel (gutter or background) never bleed in\n",
+    "float rblFadeCoverage(float w, float a1, float a2)\n",
+    "{\n",
+    "    if (w <= 0.0) return 0.0;\n",
+    "    if (w >= 1.0) return 1.0;\n",
+    "    float a = mix(a1, a2, w);\n",
+    "    return (a > 0.0)? clamp(w*a2/a, 0.0, 1.0) : w;\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "// The material at this fragment: discards below the alpha cutoff; alpha, emission and the\n",
     "// tangent-space normal (debug views) come back through the out parameters\n",
     "RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)\n",
     "{\n",
     "    vec4 texel = texture(texture0, fragTexCoord);\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample\n",
+    "    vec4 texel2 = texture(texture0, fragTexCoord2);\n",
+    "    float fade = fragFade.x;\n",
+    "    float cover = rblFadeCoverage(fade, texel.a, texel2.a);\n",
+    "    texel = vec4(rblFadeMix(rblSrgbToLinear(texel.rgb), rblSrgbToLinear(texel2.rgb), cover), rblFadeMix(texel.a, texel2.a, fade));\n",
+    "    vec4 albedo = vec4(texel.rgb*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
+    "#else\n",
     "    vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
+    "#endif\n",
     "    if ((albedo.a < rblAlphaCutoff.x) || (albedo.a >= rblAlphaCutoff.y)) discard;\n",
     "\n",
     "    vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
@@ -2409,6 +2545,9 @@ static const char *const rbl__shader_material[] = {
     "    float side = gl_FrontFacing? 1.0 : -1.0;\n",
     "#ifdef RBL_MATERIAL_TEXTURE\n",
     "    vec4 material = texture(texture2, fragTexCoord);\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    vec4 material2 = texture(texture2, fragTexCoord2);\n",
+    "#endif\n",
     "#endif\n",
     "    tangentNormal = vec3(0.0, 0.0, 1.0);\n",
     "#if RBL_NORMAL_ENCODING > 0\n",
@@ -2419,9 +2558,29 @@ static const char *const rbl__shader_material[] = {
     "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
     "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
     "    tangentNormal = rblDecodeNormal(material);\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    // Each fetch in its own frame's axes, mixed as world vectors, renormalised (opposite normals\n",
+    "    // cancel to the geometric one); the debug view gets the mix in the first frame's axes\n",
+    "    vec3 n1 = t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z);\n",
+    "    vec3 t2, b2;\n",
+    "    rblFadeAxes(fragFade.y, t, b, t2, b2);\n",
+    "    vec3 m2 = rblDecodeNormal(material2);\n",
+    "    vec3 n2 = t2*m2.x - b2*m2.y + n*(side*m2.z);\n",
+    "    vec3 nm = rblFadeMix(n1, n2, cover);\n",
+    "    if (cover > 0.0)\n",
+    "    {\n",
+    "        nm = rblSafeNormalize(nm, n*side);\n",
+    "        tangentNormal = vec3(dot(nm, t), -dot(nm, b), side*dot(nm, n));\n",
+    "    }\n",
+    "    n = rblSafeNormalize(nm, n*side);\n",
+    "#else\n",
     "    n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z), n*side);\n",
+    "#endif\n",
     "#else\n",
     "    n *= side;\n",
+    "#endif\n",
+    "#if defined(RBL_CROSS_FADE) && defined(RBL_MATERIAL_TEXTURE)\n",
+    "    material = rblFadeMix(material, material2, cover);       // specular and occlusion (the normal is done)\n",
     "#endif\n",
     "    RblShadingPoint sp;\n",
     "    sp.position = fragPosition;\n",
@@ -2450,7 +2609,11 @@ static const char *const rbl__shader_material[] = {
     "#endif\n",
     "    alpha = albedo.a;\n",
     "    emission = vec3(0.0);\n",
-    "#if RBL_EMISSIVE == 1\n",
+    "#if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)\n",
+    "    emission += albedo.rgb*rblFadeMix(texture(texture5, fragTexCoord).r, texture(texture5, fragTexCoord2).r, cover)*rblEmissiveIntensity;\n",
+    "#elif defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 2)\n",
+    "    emission += rblFadeMix(rblSrgbToLinear(texture(texture5, fragTexCoord).rgb), rblSrgbToLinear(texture(texture5, fragTexCoord2).rgb), cover)*rblEmissiveIntensity;\n",
+    "#elif RBL_EMISSIVE == 1\n",
     "    emission += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;\n",
     "#elif RBL_EMISSIVE == 2\n",
     "    emission += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;\n",
@@ -3194,13 +3357,62 @@ static void rbl__albedoSize(const Material *material, int *width, int *height)
 // (checked at compile time), below 2^60 so that corners (position + size along unit axes), eye
 // distances and texcoords (source edges / texture size) stay finite; a known facing; a texture of
 // 1..65536 texels
+// A cross-fade: weight 0..1, the second frame's rectangle below the bound (limitExponent)
+static bool rbl__fadeOk(const RblFade *f, unsigned int limitExponent)
+{
+    return rbl__finite(f->weight) && (f->weight >= 0.0f) && (f->weight <= 1.0f) && rbl__exponentsBelow(&f->source, 4, limitExponent);
+}
+
 static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
     if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
         !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
-    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED);
+    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__fadeOk(&b->fade, RBL__BILLBOARD_LIMIT_EXPONENT);
+}
+
+// A frame's +U (t) and +V (v) in the quad's (right, up) plane, for its mirrors and rotation (as the
+// tangent and handedness of rbl__billboardVertices)
+static void rbl__frameAxes(bool rotated, bool flipU, bool flipV, float t[2], float v[2])
+{
+    if (!rotated) { t[0] = flipU? -1.0f : 1.0f; t[1] = 0.0f; v[0] = 0.0f; v[1] = flipV? 1.0f : -1.0f; }
+    else { t[0] = 0.0f; t[1] = flipV? -1.0f : 1.0f; v[0] = flipU? -1.0f : 1.0f; v[1] = 0.0f; }
+}
+
+// The fade stream of a billboard (rbl__billboardOk passed): per corner (bottom-left, bottom-right,
+// top-right, top-left) the second frame's texture coordinate, the weight, and its axes against the
+// first frame's as material.glsl's rblFadeAxes reads them (swap + 2 negT + 4 negV)
+static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textureHeight, float out[16])
+{
+    Rectangle src[2] = { b->source, b->fade.source };
+    bool rotated[2] = { (b->flags & RBL_FRAME_ROTATED) != 0, (b->fade.flags & RBL_FRAME_ROTATED) != 0 };
+    float t[2][2], v[2][2];
+    for (int k = 0; k < 2; k++)
+    {
+        if ((src[k].x == 0.0f) && (src[k].y == 0.0f) && (src[k].width == 0.0f) && (src[k].height == 0.0f)) { src[k].width = (float)textureWidth; src[k].height = (float)textureHeight; }
+        rbl__frameAxes(rotated[k], (b->size.x < 0.0f) != (src[k].width < 0.0f), (b->size.y < 0.0f) != (src[k].height < 0.0f), t[k], v[k]);
+    }
+    float x = t[1][0]*v[0][0] + t[1][1]*v[0][1];
+    bool swap = (x != 0.0f);
+    float dt = swap? x : (t[1][0]*t[0][0] + t[1][1]*t[0][1]);
+    float dv = swap? (v[1][0]*t[0][0] + v[1][1]*t[0][1]) : (v[1][0]*v[0][0] + v[1][1]*v[0][1]);
+    float code = (swap? 1.0f : 0.0f) + ((dt < 0.0f)? 2.0f : 0.0f) + ((dv < 0.0f)? 4.0f : 0.0f);
+    // Texture coordinates as rbl__billboardVertices computes the first frame's (same corners, mirrors)
+    const Rectangle f = src[1];
+    bool flipU = (b->size.x < 0.0f) != (f.width < 0.0f), flipV = (b->size.y < 0.0f) != (f.height < 0.0f);
+    float invW = 1.0f/(float)textureWidth, invH = 1.0f/(float)textureHeight;
+    float fu0 = f.x*invW, fu1 = (f.x + fabsf(f.width))*invW, fv0 = f.y*invH, fv1 = (f.y + fabsf(f.height))*invH;
+    static const float cs[4] = { 0.0f, 1.0f, 1.0f, 0.0f }, ct[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
+    for (int i = 0; i < 4; i++)
+    {
+        float sc = flipU? 1.0f - cs[i] : cs[i], tc = flipV? 1.0f - ct[i] : ct[i];
+        float fu = rotated[1]? 1.0f - tc : sc, fv = rotated[1]? sc : tc;     // frame position (a rotated frame: sprite (s,t) at (1-t, s))
+        out[i*4 + 0] = (fu > 0.5f)? fu1 : fu0;
+        out[i*4 + 1] = (fv > 0.5f)? fv1 : fv0;
+        out[i*4 + 2] = b->fade.weight;
+        out[i*4 + 3] = code;
+    }
 }
 
 static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
@@ -3332,7 +3544,7 @@ enum { RBL__PATH_BILLBOARD = 0, RBL__PATH_INSTANCED, RBL__PATH_MESH, RBL__PATH_S
 // Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
 // colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblCameraFrame *view);
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program);
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program);
 static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
@@ -3369,8 +3581,9 @@ static void rbl__unloadBatchGpu(rbl__BatchState *batch)
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
-    batch->vaoId = batch->vboId = batch->eboId = 0;
-    batch->gpuCapacity = 0;
+    if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
+    batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;
+    batch->gpuCapacity = batch->fadeGpuCapacity = 0;
 }
 
 static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
@@ -3388,6 +3601,8 @@ static void rbl__freeBatchState(rbl__BatchState *b)
     RBL_FREE(b->sorted);
     RBL_FREE(b->keys);
     RBL_FREE(b->runs);
+    RBL_FREE(b->fade);
+    RBL_FREE(b->fadeSorted);
     RBL_FREE(b);
 }
 
@@ -3451,6 +3666,7 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     batch->backFacing = false;
     batch->frame.facing = -1;      // the frame depends on the view
+    batch->fading = false;
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
@@ -3474,8 +3690,14 @@ static bool rbl__growBatch(rbl__BatchState *batch)
 {
     if (batch->capacity >= RBL_MAX_BATCH_BILLBOARDS) return false;
     int newCapacity = (batch->capacity > RBL_MAX_BATCH_BILLBOARDS/2)? RBL_MAX_BATCH_BILLBOARDS : batch->capacity*2;
+    if (batch->fade != NULL)
+    {
+        float *fade = (float *)RBL_REALLOC(batch->fade, (size_t)newCapacity*16*sizeof(float));
+        if (fade == NULL) return false;
+        batch->fade = fade;
+    }
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
-    if (vertices == NULL) return false;     // the caller logs the skip
+    if (vertices == NULL) return false;     // the caller logs the skip (a grown fade array is kept: capacity follows later)
     TraceLog(LOG_INFO, "RBL: batch grown from %i to %i billboards (reserve more in RblLoadBatch)", batch->capacity, newCapacity);
     batch->vertices = vertices;
     batch->capacity = newCapacity;
@@ -3511,6 +3733,19 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
         return false;
+    }
+    // The fade stream starts with the first faded billboard (earlier ones get weight 0)
+    if ((billboard->fade.weight > 0.0f) || batch->fading)
+    {
+        if (batch->fade == NULL) batch->fade = (float *)RBL_MALLOC((size_t)batch->capacity*16*sizeof(float));
+        if (batch->fade == NULL)
+        {
+            if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (out of memory for the fade stream); further skips this batch are not logged", fn);
+            return false;
+        }
+        if (!batch->fading) memset(batch->fade, 0, (size_t)batch->count*16*sizeof(float));
+        batch->fading = true;
+        rbl__fadeVertices(billboard, texW, texH, batch->fade + (size_t)batch->count*16);
     }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
@@ -3655,6 +3890,16 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
         }
     qsort(batch->keys, (size_t)batch->count, sizeof(rbl__SortKey), rbl__compareKeys);
     for (int i = 0; i < batch->count; i++) memcpy(batch->sorted + (size_t)i*4, batch->vertices + (size_t)batch->keys[i].index*4, 4*sizeof(RblVertex));
+    if (!batch->fading) return true;
+    if (batch->fadeSortCapacity < batch->capacity)
+    {
+        float *f = (float *)RBL_MALLOC((size_t)batch->capacity*16*sizeof(float));
+        if (f == NULL) return false;
+        RBL_FREE(batch->fadeSorted);
+        batch->fadeSorted = f;
+        batch->fadeSortCapacity = batch->capacity;
+    }
+    for (int i = 0; i < batch->count; i++) memcpy(batch->fadeSorted + (size_t)i*16, batch->fade + (size_t)batch->keys[i].index*16, 16*sizeof(float));
     return true;
 }
 
@@ -3664,14 +3909,28 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     Material material = batch->runs[r].material;
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, fn, &program)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, batch->fading, fn, &program)) return;
     *bound |= rbl__bindMaterial(&material);
     if (program != NULL) rbl__applyMaterialValues(program, &material);
+    if (!batch->fading && (program != NULL) && program->key.desc.crossFade)
+    {
+        // No stream: the attribute is constant, weight 0 (the first frame alone), never stale data
+        const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+        rlDisableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2);
+        rlSetVertexAttributeDefault(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2, none, SHADER_ATTRIB_VEC4, 4);
+    }
     for (int q = 0; q < count; q += RBL__QUADS_PER_CHUNK)
     {
         int n = count - q;
         if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
         rbl__setVertexLayout((size_t)(first + q)*4*sizeof(RblVertex));
+        if (batch->fading)
+        {
+            rlEnableVertexBuffer(batch->fadeVboId);
+            rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2, 4, RL_FLOAT, false, 16, (int)((size_t)(first + q)*16*sizeof(float)));
+            rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2);
+            rlEnableVertexBuffer(batch->vboId);     // the next chunk's layout reads the bound buffer
+        }
         rlDrawVertexArrayElements(0, n*6, 0);
     }
 }
@@ -3713,7 +3972,16 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
             TraceLog(LOG_WARNING, "RBL: %s: GPU buffers for %i billboards could not be created; nothing drawn", fn, batch->capacity);
             return;
         }
+        old.fadeVboId = 0;      // the fade buffer is kept (sized below)
         rbl__unloadBatchGpu(&old);
+    }
+    if (batch->fading && (batch->fadeGpuCapacity < batch->capacity))
+    {
+        unsigned int id = rlLoadVertexBuffer(NULL, batch->capacity*16*(int)sizeof(float), true);
+        if (id == 0) { TraceLog(LOG_WARNING, "RBL: %s: GPU fade buffer for %i billboards could not be created; nothing drawn", fn, batch->capacity); return; }
+        if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
+        batch->fadeVboId = id;
+        batch->fadeGpuCapacity = batch->capacity;
     }
     // Order matters only where colour blends: shadow and G-buffer passes draw in submission order
     int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : pub->sort;
@@ -3731,6 +3999,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
+    if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*16*(int)sizeof(float), 0);
     rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
     unsigned int bound = 0;
@@ -3748,6 +4017,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rbl__drawBatchPass(batch, sorted, fn, &bound);
+    if (batch->fading) rlDisableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2);     // raylib's next draws never see it
     rbl__unbindMaterial(bound);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -3819,6 +4089,8 @@ static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 {
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
+    if (b->fadeVboId != 0) rlUnloadVertexBuffer(b->fadeVboId);
+    RBL_FREE(b->fadeStaging);
     RBL_FREE(b->staging);
     RBL_FREE(b->sorted);
     RBL_FREE(b->keys);
@@ -3929,6 +4201,31 @@ static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, C
     return buffer->sorted;
 }
 
+// Fade attribute locations of lit_instanced.vs.glsl: second source, weight, flags
+static const unsigned int rbl__fadeLocations[3] = { 15, 6, 7 };
+
+// The fade buffer of an instanced draw (its VAO bound): fades uploaded and bound per instance, or
+// without them the attributes off and constant (weight 0) for a program that reads them
+static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__Program *program, const RblFade *fades, int n)
+{
+    if (fades == NULL)
+    {
+        // Off already: a draw with fades turns them off after itself
+        if ((program != NULL) && program->key.desc.crossFade)
+        {
+            const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+            rlSetVertexAttributeDefault((int)rbl__fadeLocations[1], none, SHADER_ATTRIB_FLOAT, 1);
+        }
+        return;
+    }
+    const int stride = (int)sizeof(RblFade);
+    rlUpdateVertexBuffer(buffer->fadeVboId, fades, n*stride, 0);     // binds it for the pointers below
+    rlSetVertexAttribute(rbl__fadeLocations[0], 4, RL_FLOAT, false, stride, (int)offsetof(RblFade, source));
+    rlSetVertexAttribute(rbl__fadeLocations[1], 1, RL_FLOAT, false, stride, (int)offsetof(RblFade, weight));
+    rlSetVertexAttribute(rbl__fadeLocations[2], 1, 0x1405 /* GL_UNSIGNED_INT, converted to float */, false, stride, (int)offsetof(RblFade, flags));
+    for (int i = 0; i < 3; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
+}
+
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
@@ -3973,33 +4270,68 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     // Validate in place, so no NaN reaches the GPU buffer: a clean set is uploaded straight from the
     // caller's array (the per-instance CPU cost is this read), one with bad instances is compacted
     // into the staging copy first
+    // A fade travels with its instance: a bad one skips both (the fades are compacted alongside)
+    const RblFade *fades = desc.fades;
+    if ((fades != NULL) && (buffer->fadeStagingCapacity < buffer->capacity))
+    {
+        RblFade *f = (RblFade *)RBL_MALLOC((size_t)buffer->capacity*2*sizeof(RblFade));     // compacted, then sorted
+        if (f == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: out of memory for %i fades", buffer->capacity); return 0; }
+        RBL_FREE(buffer->fadeStaging);
+        buffer->fadeStaging = f;
+        buffer->fadeStagingCapacity = buffer->capacity;
+    }
     int n = 0;
-    while ((n < count) && rbl__instanceOk(&instances[n])) n++;
+    while ((n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT))) n++;
     const RblInstance *upload = instances;
+    const RblFade *fadeUpload = fades;
     pub->skipped = 0;
     if (n < count)
     {
         memcpy(buffer->staging, instances, (size_t)n*sizeof(RblInstance));
+        if (fades != NULL) memcpy(buffer->fadeStaging, fades, (size_t)n*sizeof(RblFade));
         for (int i = n; i < count; i++)
         {
-            if (rbl__instanceOk(&instances[i])) buffer->staging[n++] = instances[i];
+            if (rbl__instanceOk(&instances[i]) && ((fades == NULL) || rbl__fadeOk(&fades[i], RBL__INSTANCE_LIMIT_EXPONENT)))
+            {
+                if (fades != NULL) buffer->fadeStaging[n] = fades[i];
+                buffer->staging[n++] = instances[i];
+            }
             else pub->skipped++;
         }
         upload = buffer->staging;
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36)", pub->skipped);
+        if (fades != NULL) fadeUpload = buffer->fadeStaging;
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36, or a fade weight outside 0..1)", pub->skipped);
     }
     if (n == 0) return 0;
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, "RblDrawInstanced", &program)) return 0;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, fades != NULL, "RblDrawInstanced", &program)) return 0;
+    if ((fades != NULL) && (buffer->fadeGpuCapacity < buffer->capacity))
+    {
+        unsigned int id = rlLoadVertexBuffer(NULL, buffer->capacity*(int)sizeof(RblFade), true);
+        if (id == 0) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: GPU fade buffer for %i instances could not be created", buffer->capacity); return 0; }
+        if (buffer->fadeVboId != 0) rlUnloadVertexBuffer(buffer->fadeVboId);
+        buffer->fadeVboId = id;
+        buffer->fadeGpuCapacity = buffer->capacity;
+    }
     // Back to front by pivot depth where colour blends (not in shadow or G-buffer passes)
     int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : desc.sort;
     if (sort != RBL_SORT_NONE)
     {
         const RblInstance *ordered = rbl__sortInstances(buffer, camera, upload, n);
         if (ordered == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: out of memory sorting %i instances; drawn in array order", n); sort = RBL_SORT_NONE; }
-        else upload = ordered;
+        else
+        {
+            upload = ordered;
+            if (fadeUpload != NULL)
+            {
+                // The keys index the validated set: its fades in the same order, into the second half
+                RblFade *sortedFades = buffer->fadeStaging + buffer->fadeStagingCapacity;
+                for (int i = 0; i < n; i++) sortedFades[i] = fadeUpload[buffer->keys[i].index];
+                fadeUpload = sortedFades;
+            }
+        }
     }
 
     int texW, texH;
@@ -4026,6 +4358,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
+    rbl__bindInstanceFades(buffer, program, fadeUpload, n);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
     if (sort == RBL_SORT_HYBRID)
     {
@@ -4041,6 +4374,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rlDrawVertexArrayInstanced(0, 6, n);
+    if (fadeUpload != NULL) for (int i = 0; i < 3; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
@@ -5302,6 +5636,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->deferred = in.deferred;
     out->skinning = in.skinning;
     out->softParticles = in.softParticles;
+    out->crossFade = in.crossFade;
     out->debugOutput = in.debugOutput;
     if (in.deferred)
     {
@@ -5330,6 +5665,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
     if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
     if ((n > 0) && ((size_t)n < size) && d->softParticles) n += snprintf(out + n, size - (size_t)n, "#define RBL_SOFT_PARTICLES\n");
+    if ((n > 0) && ((size_t)n < size) && d->crossFade) n += snprintf(out + n, size - (size_t)n, "#define RBL_CROSS_FADE\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -5423,6 +5759,9 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     p->shader.locs[SHADER_LOC_VECTOR_VIEW] = GetShaderLocation(shader, "viewPos");
     p->shader.locs[SHADER_LOC_MAP_NORMAL] = GetShaderLocation(shader, "texture2");
     p->shader.locs[SHADER_LOC_MAP_EMISSION] = GetShaderLocation(shader, "texture5");
+    // The fade stream is the header's own: raylib's DrawMesh must not bind a Model's (perhaps absent)
+    // texcoord2 buffer there; unbound, the attribute is constant and its weight 0
+    p->shader.locs[SHADER_LOC_VERTEX_TEXCOORD02] = -1;
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
@@ -5702,6 +6041,25 @@ static rbl__Program *rbl__skinnedCaster(void)
     return caster;
 }
 
+// The cross-fade casters (vertex buffers, instanced), compiled on the first faded billboard of a
+// shadow pass and held (one holder each) until the last shadow map goes; NULL (problem set) on failure
+static rbl__Program *rbl__fadeCaster(bool instanced)
+{
+    unsigned int *id = &rbl__state.casterIds[instanced? 4 : 3];
+    rbl__Program *caster = rbl__findCaster(*id);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc desc, normalised;
+    memset(&desc, 0, sizeof(desc));
+    desc.crossFade = true;
+    desc.instanced = instanced;
+    rbl__normaliseLitDesc(desc, &normalised);
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
+    caster = rbl__acquireProgram(&key);
+    *id = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
 // A soft-particle program's per-draw depth inputs: the scene's depth texture on its unit, the current
 // projection's depth row (as the fragment's own depth was made), its texel size and the material's
 // fade distance
@@ -5720,14 +6078,17 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     if (sc->depth.id != 0) { rlActiveTextureSlot(RBL_SCENE_DEPTH_TEXTURE_UNIT); rlEnableTexture(sc->depth.id); rlActiveTextureSlot(0); }
 }
 
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, const char *fn, rbl__Program **program)
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
 {
     const char *bad = rbl__materialProblem(material, path, program);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
-        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        // Billboards with fade data cast the mixed cut-out (a crossFade caster); others the plain one
+        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : fade? rbl__fadeCaster(path == RBL__PATH_INSTANCED) :
+                               rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
+        if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
@@ -6044,7 +6405,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *p = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, path, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, path, false, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
     if (p != NULL)
     {
         rlEnableShader(material.shader.id);
@@ -6872,10 +7233,13 @@ void RblUnloadShadowMap(RblShadowMap *map)
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
-    if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the skinned caster goes too
+    if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the on-demand casters go too
     {
-        if (rbl__state.casterIds[2] != 0) rbl__releaseProgram(rbl__state.casterIds[2], RBL__KIND_CASTER);
-        rbl__state.casterIds[2] = 0;
+        for (int k = 2; k < 5; k++)                                          // skinned and cross-fade casters
+        {
+            if (rbl__state.casterIds[k] != 0) rbl__releaseProgram(rbl__state.casterIds[k], RBL__KIND_CASTER);
+            rbl__state.casterIds[k] = 0;
+        }
     }
     rbl__liveRemove(map->state);
     RBL_FREE(map->state);
@@ -8192,23 +8556,53 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
     return done;
 }
 
+// The frame after the player's and the weight time/duration (0 and its own frame when finished);
+// NULL, or why the player is not one of RblPlaySprite's for this atlas
+static const char *rbl__spriteBlend(const rbl__AtlasState *s, const RblSpritePlayer *player, int *nextFrame, float *weight)
+{
+    int from, to, dir, repeat;
+    if ((player->tag < -1) || (player->tag >= s->tagCount)) return "player's tag not in this atlas";
+    rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
+    if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
+        return "player state not from RblPlaySprite for this atlas";
+    RblSpritePlayer p = *player;
+    *nextFrame = p.frame;
+    *weight = 0.0f;
+    if (p.finished) return NULL;
+    double w = (double)p.time/rbl__spriteDuration(s, p.frame);
+    if (!rbl__spriteAdvance(&p, from, to, dir)) return NULL;
+    *nextFrame = p.frame;
+    *weight = (float)((w < 0.0)? 0.0 : ((w > 1.0)? 1.0 : w));
+    return NULL;
+}
+
 float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame)
 {
     const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblSpriteBlend");
     if (s == NULL) return 0.0f;
     if ((player == NULL) || (nextFrame == NULL)) { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: NULL player or nextFrame"); return 0.0f; }
-    int from, to, dir, repeat;
-    if ((player->tag < -1) || (player->tag >= s->tagCount)) { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: player's tag %i not in this atlas", player->tag); return 0.0f; }
-    rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
-    if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
-    { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: player state not from RblPlaySprite for this atlas"); return 0.0f; }
-    RblSpritePlayer p = *player;
-    *nextFrame = p.frame;
-    if (p.finished) return 0.0f;
-    double w = (double)p.time/rbl__spriteDuration(s, p.frame);
-    if (!rbl__spriteAdvance(&p, from, to, dir)) return 0.0f;
-    *nextFrame = p.frame;
-    return (float)((w < 0.0)? 0.0 : ((w > 1.0)? 1.0 : w));
+    int next;
+    float w;
+    const char *bad = rbl__spriteBlend(s, player, &next, &w);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSpriteBlend: %s", bad); return 0.0f; }
+    *nextFrame = next;
+    return w;
+}
+
+bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblSpriteFade");
+    if (s == NULL) return false;
+    if ((player == NULL) || (fade == NULL)) { TraceLog(LOG_WARNING, "RBL: RblSpriteFade: NULL player or fade"); return false; }
+    int next;
+    float w;
+    const char *bad = rbl__spriteBlend(s, player, &next, &w);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSpriteFade: %s", bad); return false; }
+    // The next frame over the current one's quad (frames of equal trim line up; see SPRITE SHEETS)
+    fade->source = s->frames[next].source;
+    fade->flags = s->frames[next].flags & RBL_FRAME_ROTATED;
+    fade->weight = w;
+    return true;
 }
 
 int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions)

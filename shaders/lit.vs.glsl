@@ -9,6 +9,14 @@ RBL_ATTRIBUTE vec2 vertexTexCoord;
 RBL_ATTRIBUTE vec3 vertexNormal;
 RBL_ATTRIBUTE vec4 vertexColor;
 RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)
+#ifdef RBL_CROSS_FADE
+// The fade stream (raylib's texcoord2 location 5): xy the second frame's texture coordinate, z the
+// weight, w its tangent axes against the first's (material.glsl). Without the stream the attribute
+// is constant (weight 0): the first frame alone
+RBL_ATTRIBUTE vec4 vertexTexCoord2;
+RBL_VARYING vec2 fragTexCoord2;
+RBL_FLAT RBL_VARYING vec2 fragFade;
+#endif
 
 uniform mat4 mvp;
 uniform mat4 matModel;
@@ -34,6 +42,10 @@ void main()
 #endif
     fragPosition = vec3(matModel*vec4(position, 1.0));
     fragTexCoord = vertexTexCoord;
+#ifdef RBL_CROSS_FADE
+    fragTexCoord2 = vertexTexCoord2.xy;
+    fragFade = vertexTexCoord2.zw;
+#endif
     fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex
     fragNormal = rblMat3(matNormal)*normal;
     // Tangents transform with the model matrix (they lie in the surface), normals with its inverse transpose.

@@ -11,6 +11,14 @@ layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirror
 layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)
 layout(location = 13) in vec4 rblInstanceTint;      // normalised bytes (all zero = white)
 layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags
+#ifdef RBL_CROSS_FADE
+// RblInstancedDesc.fades, a second per-instance buffer (without it: constant, weight 0)
+layout(location = 15) in vec4 rblInstanceFadeSource; // the second frame, as rblInstanceSource
+layout(location = 6) in float rblInstanceFadeWeight; // 0..1
+layout(location = 7) in float rblInstanceFadeFlags;  // its RBL_FRAME_ROTATED bit
+RBL_VARYING vec2 fragTexCoord2;
+RBL_FLAT RBL_VARYING vec2 fragFade;                  // weight, tangent axes code (material.glsl rblFadeAxes)
+#endif
 
 uniform mat4 mvp;
 // Per-draw frame, one upload (uniform calls cost more than the data in most drivers):
@@ -232,6 +240,32 @@ void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, fl
     tangent = vec4(tv, w);
 }
 
+#ifdef RBL_CROSS_FADE
+// Texture coordinate of the corner at sprite (cs right, ct down) in frame src (all zero = the whole
+// texture), as rblBillboardVertex, and the frame's +U (T) and +V (V) in the quad's (right, up) plane
+vec2 rblFrameTexCoord(vec4 src, bool rotated, vec2 size, float cs, float ct, vec2 textureSize, out vec2 T, out vec2 V)
+{
+    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);
+    bool flipU = (size.x < 0.0) != (src.z < 0.0);
+    bool flipV = (size.y < 0.0) != (src.w < 0.0);
+    float s = flipU? 1.0 - cs : cs;
+    float t = flipV? 1.0 - ct : ct;
+    if (!rotated) { T = vec2(flipU? -1.0 : 1.0, 0.0); V = vec2(0.0, flipV? 1.0 : -1.0); }
+    else { T = vec2(0.0, flipV? -1.0 : 1.0); V = vec2(flipU? -1.0 : 1.0, 0.0); }
+    return (src.xy + (rotated? vec2(1.0 - t, s) : vec2(s, t))*abs(src.zw))/textureSize;
+}
+
+// The second frame's axes against the first's: swap (its +U along the first's V) + 2 negT + 4 negV
+float rblFadeCode(vec2 t1, vec2 v1, vec2 t2, vec2 v2)
+{
+    float x = dot(t2, v1);
+    bool swapAxes = x != 0.0;
+    float negT = ((swapAxes? x : dot(t2, t1)) < 0.0)? 2.0 : 0.0;
+    float negV = ((swapAxes? dot(v2, t1) : dot(v2, v1)) < 0.0)? 4.0 : 0.0;
+    return (swapAxes? 1.0 : 0.0) + negT + negV;
+}
+#endif
+
 void main()
 {
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
@@ -251,6 +285,14 @@ void main()
     rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
                        p, fragTexCoord, fragNormal, fragTangent);
     fragPosition = p;
+#ifdef RBL_CROSS_FADE
+    int corner = cornerOf[gl_VertexID % 6];
+    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;
+    vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;
+    rblFrameTexCoord(rblInstanceSource, (int(rblInstanceFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t1, v1);
+    fragTexCoord2 = rblFrameTexCoord(rblInstanceFadeSource, (int(rblInstanceFadeFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t2, v2);
+    fragFade = vec2(rblInstanceFadeWeight, rblFadeCode(t1, v1, t2, v2));
+#endif
     vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
     fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex
 #ifdef RBL_VIEW_VECTOR

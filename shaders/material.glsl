@@ -8,6 +8,12 @@
 //   RBL_OCCLUSION            material texture A holds ambient occlusion
 //   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)
 //   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
+//   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map
+//                            is fetched at both texture coordinates. What is mixed: colour in linear
+//                            light weighted by coverage (alpha), as the mips average; alpha linearly,
+//                            the cutoff applies to the mixed alpha; the normal as a world vector (each
+//                            fetch decoded in its own frame's tangent axes), then renormalised;
+//                            specular, occlusion and emission with the colour's coverage weight
 #include "surface.glsl"
 
 RBL_VARYING vec3 fragPosition;
@@ -18,6 +24,13 @@ RBL_VARYING vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
 RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)
 RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)
+#endif
+
+#ifdef RBL_CROSS_FADE
+RBL_VARYING vec2 fragTexCoord2;          // the second frame's texture coordinate
+RBL_FLAT RBL_VARYING vec2 fragFade;      // x weight 0..1 of the second frame, y its tangent axes (rblFadeAxes)
+// Exact ends: weight 0 is the first frame and 1 the second, bit for bit (no mix rounding)
+#define rblFadeMix(a, b, w) (((w) <= 0.0)? (a) : (((w) >= 1.0)? (b) : mix((a), (b), (w))))
 #endif
 
 uniform sampler2D texture0;     // albedo (sRGB)
@@ -61,12 +74,43 @@ vec3 rblDecodeNormal(vec4 m)
 #endif
 }
 
+#ifdef RBL_CROSS_FADE
+// The second frame's tangent axes from the first's (t = +U, b = +V, both world): code = swap + 2 negT
+// + 4 negV, where swap says its +U runs along the first's V (a frame stored rotated differently)
+void rblFadeAxes(float code, vec3 t, vec3 b, out vec3 t2, out vec3 b2)
+{
+    float c = floor(code + 0.5);                // interpolated (GLSL 1.x has no flat): round
+    bool swapAxes = mod(c, 2.0) > 0.5;
+    t2 = (swapAxes? b : t)*((mod(floor(c*0.5), 2.0) > 0.5)? -1.0 : 1.0);
+    b2 = (swapAxes? t : b)*((c > 3.5)? -1.0 : 1.0);
+}
+
+// Weight of the second frame's surface values: its share of the mixed coverage, so the colour and
+// data of a transparent texel (gutter or background) never bleed in
+float rblFadeCoverage(float w, float a1, float a2)
+{
+    if (w <= 0.0) return 0.0;
+    if (w >= 1.0) return 1.0;
+    float a = mix(a1, a2, w);
+    return (a > 0.0)? clamp(w*a2/a, 0.0, 1.0) : w;
+}
+#endif
+
 // The material at this fragment: discards below the alpha cutoff; alpha, emission and the
 // tangent-space normal (debug views) come back through the out parameters
 RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)
 {
     vec4 texel = texture(texture0, fragTexCoord);
+#ifdef RBL_CROSS_FADE
+    // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample
+    vec4 texel2 = texture(texture0, fragTexCoord2);
+    float fade = fragFade.x;
+    float cover = rblFadeCoverage(fade, texel.a, texel2.a);
+    texel = vec4(rblFadeMix(rblSrgbToLinear(texel.rgb), rblSrgbToLinear(texel2.rgb), cover), rblFadeMix(texel.a, texel2.a, fade));
+    vec4 albedo = vec4(texel.rgb*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);
+#else
     vec4 albedo = vec4(rblSrgbToLinear(texel.rgb)*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);
+#endif
     if ((albedo.a < rblAlphaCutoff.x) || (albedo.a >= rblAlphaCutoff.y)) discard;
 
     vec3 n = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));
@@ -78,6 +122,9 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     float side = gl_FrontFacing? 1.0 : -1.0;
 #ifdef RBL_MATERIAL_TEXTURE
     vec4 material = texture(texture2, fragTexCoord);
+#ifdef RBL_CROSS_FADE
+    vec4 material2 = texture(texture2, fragTexCoord2);
+#endif
 #endif
     tangentNormal = vec3(0.0, 0.0, 1.0);
 #if RBL_NORMAL_ENCODING > 0
@@ -88,9 +135,29 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);
     tangentNormal = rblDecodeNormal(material);
+#ifdef RBL_CROSS_FADE
+    // Each fetch in its own frame's axes, mixed as world vectors, renormalised (opposite normals
+    // cancel to the geometric one); the debug view gets the mix in the first frame's axes
+    vec3 n1 = t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z);
+    vec3 t2, b2;
+    rblFadeAxes(fragFade.y, t, b, t2, b2);
+    vec3 m2 = rblDecodeNormal(material2);
+    vec3 n2 = t2*m2.x - b2*m2.y + n*(side*m2.z);
+    vec3 nm = rblFadeMix(n1, n2, cover);
+    if (cover > 0.0)
+    {
+        nm = rblSafeNormalize(nm, n*side);
+        tangentNormal = vec3(dot(nm, t), -dot(nm, b), side*dot(nm, n));
+    }
+    n = rblSafeNormalize(nm, n*side);
+#else
     n = rblSafeNormalize(t*tangentNormal.x - b*tangentNormal.y + n*(side*tangentNormal.z), n*side);
+#endif
 #else
     n *= side;
+#endif
+#if defined(RBL_CROSS_FADE) && defined(RBL_MATERIAL_TEXTURE)
+    material = rblFadeMix(material, material2, cover);       // specular and occlusion (the normal is done)
 #endif
     RblShadingPoint sp;
     sp.position = fragPosition;
@@ -119,7 +186,11 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
 #endif
     alpha = albedo.a;
     emission = vec3(0.0);
-#if RBL_EMISSIVE == 1
+#if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)
+    emission += albedo.rgb*rblFadeMix(texture(texture5, fragTexCoord).r, texture(texture5, fragTexCoord2).r, cover)*rblEmissiveIntensity;
+#elif defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 2)
+    emission += rblFadeMix(rblSrgbToLinear(texture(texture5, fragTexCoord).rgb), rblSrgbToLinear(texture(texture5, fragTexCoord2).rgb), cover)*rblEmissiveIntensity;
+#elif RBL_EMISSIVE == 1
     emission += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;
 #elif RBL_EMISSIVE == 2
     emission += rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*rblEmissiveIntensity;

@@ -16,6 +16,7 @@
 #include "test_skinning.c"
 #include "test_sprites.c"
 #include "test_atlas_render.c"
+#include "test_fade.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_API_TESTS,
@@ -102,6 +103,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_skinning_lit_model_animates_and_matches_the_cpu_skinned_rendering),
         RT_TEST(test_skinning_shadow_animates_and_matches_the_cpu_skinned_caster),
         RT_TEST(test_skinning_bad_input_is_refused_and_draws_nothing),
+        RBL_FADE_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

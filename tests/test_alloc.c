@@ -286,6 +286,89 @@ static void test_alloc_growth_failures_keep_objects_valid(void)
     UnloadTexture(white);
 }
 
+// The optional fade streams: a batch's (allocated at its first faded billboard, sorted copy at its
+// first sorted end) and an instance buffer's compacted/sorted fades. A failure skips with one line
+// (batch: the billboard; instanced: the draw), the object stays valid and unloads without a leak
+static void test_alloc_fade_streams_fail_cleanly_and_keep_objects_valid(void)
+{
+    Texture2D white = solidTexture(WHITE);
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc)); desc.crossFade = true;
+    Material m = LoadMaterialDefault();
+    m.shader = RblLoadLitShader(desc);
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    desc.instanced = true;
+    Material mi = m;
+    mi.shader = RblLoadLitShader(desc);
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    BeginTextureMode(rt);
+    BeginMode3D(frontCamera());
+    RblBillboard bb; memset(&bb, 0, sizeof(bb)); bb.size = (Vector2){ 1, 1 };
+    RblBatch warm = RblLoadBatch(1);        // the live-object list exists from here on (freed by RblClose)
+    RblUnloadBatch(&warm);
+    for (int sorted = 0; sorted < 2; sorted++)
+        for (long n = 0; n < 64; n++)
+        {
+            long liveBefore = allocLive;
+            RblBatch b = RblLoadBatch(1);
+            b.sort = sorted? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE;
+            RblBeginBatch(&b, frontCamera());
+            failAfter(n);
+            int added = 0;
+            for (int i = 0; i < 40; i++)
+            {
+                RblBillboard x = bb;
+                x.position.z = -0.01f*i;
+                x.fade.weight = (i >= 3)? 0.5f : 0.0f;       // the stream starts at the fourth billboard
+                added += RblBatchAdd(&b, m, &x);
+            }
+            RblEndBatch(&b);
+            bool hit = injected();
+            allocFailAt = -1;
+            RT_CHECK(RblIsBatchValid(b) && (b.count == added), "fade batch failure %ld: invalid batch or count %d vs %d added", n, b.count, added);
+            if (hit) RT_CHECK(warnings == 1, "fade batch failure %ld: %d lines, %d added (last: %s)", n, warnings, added, lastWarning);
+            RblBeginBatch(&b, frontCamera());
+            bb.fade.weight = 0.5f;
+            RT_CHECK(RblBatchAdd(&b, m, &bb), "fade batch %ld unusable after the failure", n);
+            bb.fade.weight = 0.0f;
+            RblEndBatch(&b);
+            RblUnloadBatch(&b);
+            RT_CHECK(allocLive == liveBefore, "fade batch failure %ld: %ld allocations leaked", n, allocLive - liveBefore);
+            if (!hit) { printf("    fade batch (%s): %ld failing runs swept\n", sorted? "sorted" : "unsorted", n); break; }
+        }
+    RblInstance in[40];
+    RblFade fades[40];
+    memset(in, 0, sizeof(in)); memset(fades, 0, sizeof(fades));
+    for (int i = 0; i < 40; i++) { in[i].size = (Vector2){ 1, 1 }; in[i].position.z = -0.01f*i; fades[i].weight = 0.5f; }
+    fades[7].weight = NAN;          // one bad fade: the compacted copy is made too
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    d.fades = fades;
+    for (int sorted = 0; sorted < 2; sorted++)
+        for (long n = 0; n < 64; n++)
+        {
+            long liveBefore = allocLive;
+            RblInstanceBuffer b = RblLoadInstanceBuffer(1);
+            d.sort = sorted? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE;
+            failAfter(n);
+            int drawn = RblDrawInstanced(&b, frontCamera(), mi, d, in, 40);
+            bool hit = injected();
+            allocFailAt = -1;
+            RT_CHECK(RblIsInstanceBufferValid(b), "fade instance failure %ld: buffer invalid", n);
+            // the skipped instance logs its own line; a failed allocation refuses the draw (or, sorting, draws unsorted) with one more
+            if (hit) RT_CHECK(((drawn == 0) && (warnings == 1)) || (sorted && (drawn == 39) && (warnings == 2)), "fade instance failure %ld: drawn %d, %d lines (last: %s)", n, drawn, warnings, lastWarning);
+            else RT_CHECK(drawn == 39 && warnings == 1, "fade instance draw without failure drew %d, %d lines", drawn, warnings);
+            RT_CHECK(RblDrawInstanced(&b, frontCamera(), mi, d, in, 1) == 1, "fade instance buffer %ld unusable after a failure", n);
+            RblUnloadInstanceBuffer(&b);
+            RT_CHECK(allocLive == liveBefore, "fade instance failure %ld: %ld allocations leaked", n, allocLive - liveBefore);
+            if (!hit) { printf("    fade instances (%s): %ld failing runs swept\n", sorted? "sorted" : "unsorted", n); break; }
+        }
+    EndMode3D();
+    EndTextureMode();
+    UnloadRenderTexture(rt);
+    RblUnloadLitShader(&mi.shader);
+    UnloadMaterial(m);
+    UnloadTexture(white);
+}
+
 // After every object is unloaded, RblClose returns every allocation of the header's
 static void test_alloc_close_releases_everything(void)
 {
@@ -298,6 +381,7 @@ int main(int argc, char **argv)
     static const RtTest tests[] = {
         RT_TEST(test_alloc_every_loading_path_fails_cleanly_at_every_allocation),
         RT_TEST(test_alloc_growth_failures_keep_objects_valid),
+        RT_TEST(test_alloc_fade_streams_fail_cleanly_and_keep_objects_valid),
         RT_TEST(test_alloc_close_releases_everything),
     };
     const char *backend = rtInitContext(256, 256);

@@ -194,7 +194,8 @@ static const Field billboardFloats[] = {
     FIELD(RblBillboard, rotation), FIELD(RblBillboard, source.x), FIELD(RblBillboard, source.y),
     FIELD(RblBillboard, source.width), FIELD(RblBillboard, source.height), FIELD(RblBillboard, up.x), FIELD(RblBillboard, up.y),
     FIELD(RblBillboard, up.z), FIELD(RblBillboard, axis.x), FIELD(RblBillboard, axis.y), FIELD(RblBillboard, axis.z),
-    FIELD(RblBillboard, roundness) };
+    FIELD(RblBillboard, roundness), FIELD(RblBillboard, fade.source.x), FIELD(RblBillboard, fade.source.y),
+    FIELD(RblBillboard, fade.source.width), FIELD(RblBillboard, fade.source.height), FIELD(RblBillboard, fade.weight) };
 static const Field cameraFloats[] = {
     FIELD(Camera3D, position.x), FIELD(Camera3D, position.y), FIELD(Camera3D, position.z), FIELD(Camera3D, target.x),
     FIELD(Camera3D, target.y), FIELD(Camera3D, target.z), FIELD(Camera3D, up.x), FIELD(Camera3D, up.y), FIELD(Camera3D, up.z),
@@ -1259,6 +1260,71 @@ static void c_sprites(void)
     RblUnloadAtlas(&a);
 }
 
+// Cross-fades: RblSpriteFade refuses what RblSpriteBlend refuses (fade untouched) and fills a good
+// one; a fade weight outside 0..1 or NaN/Inf fade floats are refused on every path (one line; an
+// instanced draw skips that instance and draws the rest, its fades still paired)
+static void c_fades(void)
+{
+    RblAtlas a = goodAtlas(), zero; memset(&zero, 0, sizeof(zero));
+    RblSpritePlayer p = RblPlaySprite(&a, 0, 0);
+    RblFade f, f0;
+    memset(&f, 0x5A, sizeof(f)); f0 = f;
+    EXPECT_REFUSED(RblSpriteFade(NULL, &a, &f));
+    EXPECT_REFUSED(RblSpriteFade(&p, NULL, &f));
+    EXPECT_REFUSED(RblSpriteFade(&p, &zero, &f));
+    EXPECT_REFUSED(RblSpriteFade(&p, &a, NULL));
+    RblSpritePlayer bad[7];
+    for (int k = 0; k < 7; k++) bad[k] = p;
+    bad[0].frame = 5; bad[1].step = 0; bad[2].time = NAN; bad[3].loops = -1; bad[4].passes = -1; bad[5].tag = 3; bad[6].time = -1.0f;
+    for (int k = 0; k < 7; k++) EXPECT_REFUSED(RblSpriteFade(&bad[k], &a, &f));
+    ck(memcmp(&f, &f0, sizeof(f)) == 0, "refused fades wrote their output");
+    int next = -1;
+    p.time = 0.05f;
+    float w = RblSpriteBlend(&p, &a, &next);
+    ck(RblSpriteFade(&p, &a, &f) && (f.weight == w) && (memcmp(&f.source, &a.frames[next].source, sizeof(Rectangle)) == 0) && isfinite(f.weight) && (f.weight >= 0.0f) && (f.weight <= 1.0f),
+       "good fade: weight %g (blend %g), frame %d", f.weight, w, next);
+    RblSpritePlayer stalePlayer = p;
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblSpriteFade(&stalePlayer, &stale, &f));
+
+    // Weights outside 0..1 on the billboard paths (NaN/Inf ride with billboardFloats)
+    RblLitShaderDesc fd = descOf(RBL_BRDF_LAMBERT, false, false);
+    fd.crossFade = true;
+    Material m = litMaterial(fd);
+    const float outside[4] = { -1e-7f, -0.5f, 1.0000001f, 2.0f };
+    for (int k = 0; k < 4; k++)
+    {
+        RblBillboard b = billboard();
+        b.fade.weight = outside[k];
+        EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
+        RblBatch batch = RblLoadBatch(2);
+        RblBeginBatch(&batch, camera());
+        EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    // Instanced: every fade float bad, and weights outside 0..1: that instance skipped, one line
+    RblLitShaderDesc id = descOf(RBL_BRDF_LAMBERT, true, false);
+    id.crossFade = true;
+    Material inst = litMaterial(id);
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(2);
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    for (int fi = 0; fi < 5*5 + 4; fi++)       // source x, y, width, height, weight x every bad float; then weights outside 0..1
+    {
+        RblInstance x[2] = { instance(), instance() };
+        RblFade fades[2]; memset(fades, 0, sizeof(fades));
+        fades[0].weight = fades[1].weight = 0.5f;
+        if (fi < 25) ((float *)&fades[1])[fi/5] = badFloats[fi % 5];
+        else fades[1].weight = outside[fi - 25];
+        d.fades = fades;
+        warnings = 0;
+        int n = RblDrawInstanced(&buf, camera(), inst, d, x, 2);
+        ck(n == 1 && warnings == 1 && buf.skipped == 1, "bad fade case %d: drawn %d, %d lines, skipped %d", fi, n, warnings, buf.skipped);
+    }
+    RblUnloadInstanceBuffer(&buf);
+}
+
 // ---- the case table -----------------------------------------------------------------------------
 typedef struct Case { const char *functions; const char *name; void (*run)(void); } Case;
 #define BARE "(no lit program loaded yet) "
@@ -1305,6 +1371,7 @@ static const Case cases[] = {
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads },
     { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites },
+    { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades },
 };
 
 // One case in a child process: its own context and fixture, then the matrix stack depth check

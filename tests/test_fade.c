@@ -1,0 +1,560 @@
+// Cross-fade between two atlas frames (RblLitShaderDesc.crossFade; RblBillboard.fade,
+// RblInstancedDesc.fades): at 1 texel per pixel (orthographic camera), point-sampled sheets.
+// Weight 0 and 1 are the single-frame renderings of the program without the option (0/255); weight
+// 0.5 the double-precision mean of the two texels in linear light; a second frame stored rotated
+// mixes like its upright twin, its normal in its own tangent axes; alpha mixes linearly, colour by
+// coverage, the cutoff reads the mixed alpha. Batch, immediate and instanced paths; the G-buffer's
+// geometry pass. Included by test_gpu_main.c (after test_render.c: normalTexel).
+
+#define FADE_RT 64
+
+// Frames a (0,0 16x8), b (16,0 16x8) upright, c = b stored turned clockwise in the 8x16 block at 32,0
+static const char fadeAtlasJson[] =
+    "{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\":0,\"w\":16,\"h\":8}}, \"b\": {\"frame\": {\"x\":16,\"y\":0,\"w\":16,\"h\":8}},"
+    " \"c\": {\"frame\": {\"x\":32,\"y\":0,\"w\":16,\"h\":8}, \"rotated\": true}}, \"meta\": {\"size\": {\"w\":48,\"h\":16}}}";
+
+// A 48x16 sheet: frames a and b (the two 16x8 tiles) and c, b's tile turned clockwise; texels
+// written as they are (ImageDraw would blend alpha)
+static Image fadeSheetExact(Image a, Image b)
+{
+    Image sheet = GenImageColor(48, 16, BLANK);
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 16; x++)
+        {
+            ImageDrawPixel(&sheet, x, y, GetImageColor(a, x, y));
+            ImageDrawPixel(&sheet, 16 + x, y, GetImageColor(b, x, y));
+            ImageDrawPixel(&sheet, 32 + (7 - y), x, GetImageColor(b, x, y));     // clockwise: (x, y) -> (h-1-y, x)
+        }
+    return sheet;
+}
+
+static Camera3D fadeCamera(void)
+{
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0, 0, 10 }; cam.up = (Vector3){ 0, 1, 0 }; cam.fovy = (float)FADE_RT; cam.projection = CAMERA_ORTHOGRAPHIC;
+    return cam;
+}
+
+// A 16x8 card centred at (x, y): pixel (32 + x - 8 + i, 32 - y - 4 + j) shows frame texel (i, j)
+static RblBillboard fadeCard(const RblAtlas *atlas, int frame, float x, float y)
+{
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    RblAtlasBillboard(atlas, frame, 1.0f, &b);
+    b.position = (Vector3){ x, y, 0.0f };
+    b.origin = (Vector2){ 8.0f, 4.0f };
+    return b;
+}
+
+static void fadeFrom(const RblAtlas *atlas, int frame, float weight, RblBillboard *b)
+{
+    b->fade.source = atlas->frames[frame].source;
+    b->fade.flags = atlas->frames[frame].flags;
+    b->fade.weight = weight;
+}
+
+enum { FADE_BATCH = 0, FADE_IMMEDIATE, FADE_INSTANCED };
+static const char *const fadePathName[3] = { "batch", "immediate", "instanced" };
+
+// n cards drawn by one path (instanced: fades passed only when withFades) into a cleared target
+static Image fadeRender(int path, Material m, const RblBillboard *cards, int n, bool withFades, int sort)
+{
+    Camera3D cam = fadeCamera();
+    RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+    RblBatch batch = RblLoadBatch(n);
+    batch.sort = sort;
+    RblInstanceBuffer buf;
+    memset(&buf, 0, sizeof(buf));
+    RblInstance inst[8];
+    RblFade fades[8];
+    BeginTextureMode(rt); ClearBackground(BLANK); BeginMode3D(cam);
+    if (path == FADE_INSTANCED)
+    {
+        buf = RblLoadInstanceBuffer(n);
+        for (int i = 0; i < n; i++)
+        {
+            memset(&inst[i], 0, sizeof(inst[i]));
+            inst[i].position = cards[i].position; inst[i].size = cards[i].size; inst[i].origin = cards[i].origin;
+            inst[i].source = cards[i].source; inst[i].flags = cards[i].flags;
+            fades[i] = cards[i].fade;
+        }
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.fades = withFades? fades : NULL;
+        d.sort = sort;
+        RT_CHECK(RblDrawInstanced(&buf, cam, m, d, inst, n) == n, "instanced draw");
+    }
+    else if (path == FADE_IMMEDIATE) for (int i = 0; i < n; i++) RblDrawBillboard(cam, m, cards[i]);
+    else
+    {
+        RblBeginBatch(&batch, cam);
+        for (int i = 0; i < n; i++) RT_CHECK(RblBatchAdd(&batch, m, &cards[i]), "card %d refused", i);
+        RblEndBatch(&batch);
+    }
+    EndMode3D(); EndTextureMode();
+    Image out = rtReadTarget(rt);
+    UnloadRenderTexture(rt);
+    RblUnloadBatch(&batch);
+    if (path == FADE_INSTANCED) RblUnloadInstanceBuffer(&buf);
+    return out;
+}
+
+// Largest channel difference (rgb) over the whole image
+static int fadeImageDiff(Image a, Image b)
+{
+    int worst = 0;
+    for (int y = 0; y < FADE_RT; y++)
+        for (int x = 0; x < FADE_RT; x++)
+        {
+            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
+            int d = abs(p.r - q.r);
+            if (abs(p.g - q.g) > d) d = abs(p.g - q.g);
+            if (abs(p.b - q.b) > d) d = abs(p.b - q.b);
+            if (d > worst) worst = d;
+        }
+    return worst;
+}
+
+// Largest difference between the card at (cx, cy) and the double mean of tiles a and b (opaque)
+static int fadeMeanDiff(Image out, Image a, Image b, double w, float cx, float cy)
+{
+    int worst = 0;
+    for (int j = 0; j < 8; j++)
+        for (int i = 0; i < 16; i++)
+        {
+            Color p = GetImageColor(a, i, j), q = GetImageColor(b, i, j), got = rtPixel(out, (int)(32 + cx - 8) + i, (int)(32 - cy - 4) + j);
+            const unsigned char pc[3] = { p.r, p.g, p.b }, qc[3] = { q.r, q.g, q.b }, gc[3] = { got.r, got.g, got.b };
+            for (int k = 0; k < 3; k++)
+            {
+                double want = 255.0*srgbEncode((1.0 - w)*srgbDecode(pc[k]/255.0) + w*srgbDecode(qc[k]/255.0));
+                int d = (int)ceil(fabs(want - gc[k]) - 0.5);
+                if (d > worst) worst = d;
+            }
+        }
+    return worst;
+}
+
+static Image fadeNoiseTile(unsigned int seed)
+{
+    Image img = GenImageColor(16, 8, BLACK);
+    Color *px = (Color *)img.data;
+    for (int i = 0; i < 16*8; i++)
+    {
+        unsigned int r = rtRandom(&seed);
+        px[i] = (Color){ (unsigned char)(r & 255), (unsigned char)((r >> 8) & 255), (unsigned char)((r >> 16) & 255), 255 };
+    }
+    return img;
+}
+
+typedef struct { RblAtlas atlas; Image tileA, tileB; Texture2D sheet; Shader plain, fade, plainInst, fadeInst; Material mPlain, mFade, mPlainInst, mFadeInst; } FadeRig;
+
+static FadeRig fadeRigLoad(Image tileA, Image tileB, RblLitShaderDesc desc)
+{
+    FadeRig r;
+    memset(&r, 0, sizeof(r));
+    r.atlas = RblLoadAtlasFromMemory(fadeAtlasJson, (int)strlen(fadeAtlasJson), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3) && (r.atlas.frames[2].flags & RBL_FRAME_ROTATED), "fixture atlas");
+    r.tileA = tileA; r.tileB = tileB;
+    Image sheet = fadeSheetExact(tileA, tileB);
+    r.sheet = LoadTextureFromImage(sheet);
+    UnloadImage(sheet);
+    Shader *sh[4] = { &r.plain, &r.fade, &r.plainInst, &r.fadeInst };
+    Material *mt[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
+    for (int k = 0; k < 4; k++)
+    {
+        RblLitShaderDesc d = desc;
+        d.crossFade = (k & 1) != 0;
+        d.instanced = (k >= 2);
+        if (d.instanced && !rtGlsl3()) continue;
+        *sh[k] = RblLoadLitShader(d);
+        RT_CHECK(sh[k]->id != 0, "program %d", k);
+        *mt[k] = LoadMaterialDefault();
+        mt[k]->shader = *sh[k];
+        mt[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+    }
+    return r;
+}
+
+static void fadeRigUnload(FadeRig *r)
+{
+    Shader *sh[4] = { &r->plain, &r->fade, &r->plainInst, &r->fadeInst };
+    Material *mt[4] = { &r->mPlain, &r->mFade, &r->mPlainInst, &r->mFadeInst };
+    for (int k = 0; k < 4; k++) { if (sh[k]->id != 0) RblUnloadLitShader(sh[k]); if (mt[k]->maps != NULL) MemFree(mt[k]->maps); }
+    UnloadTexture(r->sheet);
+    UnloadImage(r->tileA); UnloadImage(r->tileB);
+    RblUnloadAtlas(&r->atlas);
+}
+
+static void test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(fadeNoiseTile(11u), fadeNoiseTile(23u), desc);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");      // white ambient: the albedo comes back
+    int checks = 0;
+    for (int path = 0; path < 3; path++)
+    {
+        bool inst = (path == FADE_INSTANCED);
+        if (inst && !rtGlsl3()) continue;
+        Material plain = inst? r.mPlainInst : r.mPlain, fade = inst? r.mFadeInst : r.mFade;
+        RblBillboard a = fadeCard(&r.atlas, 0, 0, 0), b = fadeCard(&r.atlas, 1, 0, 0);
+        Image onlyA = fadeRender(path, plain, &a, 1, false, 0), onlyB = fadeRender(path, plain, &b, 1, false, 0);
+        RT_CHECK(fadeMeanDiff(onlyA, r.tileA, r.tileB, 0.0, 0, 0) <= 1, "%s: frame a is not its texels", fadePathName[path]);
+        // The option compiled in, no fade given: the first frame exactly (a constant weight 0)
+        Image none = fadeRender(path, fade, &a, 1, false, 0);
+        RT_CHECK(fadeImageDiff(none, onlyA) == 0, "%s: crossFade program without a fade differs from the plain program by %d/255", fadePathName[path], fadeImageDiff(none, onlyA));
+        UnloadImage(none);
+        for (int second = 1; second <= 2; second++)       // b upright, then c (b stored rotated)
+        {
+            static const float weights[5] = { 0.0f, 1.0f, 1e-6f, 1.0f - 1e-6f, 0.5f };
+            for (int k = 0; k < 5; k++)
+            {
+                RblBillboard card = a;
+                fadeFrom(&r.atlas, second, weights[k], &card);
+                Image out = fadeRender(path, fade, &card, 1, true, 0);
+                int dA = fadeImageDiff(out, onlyA), dB = fadeImageDiff(out, onlyB), dMean = fadeMeanDiff(out, r.tileA, r.tileB, weights[k], 0, 0);
+                int got = (k == 0 || k == 2)? dA : ((k == 1 || k == 3)? dB : dMean), limit = (k < 2)? 0 : 1;
+                printf("    %-9s second %s  weight %-9.7g  vs a %3d  vs b %3d  vs double mean %3d\n", fadePathName[path], (second == 1)? "upright" : "rotated", weights[k], dA, dB, dMean);
+                RT_CHECK(got <= limit, "%s, %s second frame, weight %g: %d/255 off (limit %d)", fadePathName[path], (second == 1)? "upright" : "rotated", weights[k], got, limit);
+                if (k == 4) RT_CHECK(dA > 20 && dB > 20, "weight 0.5 should be neither frame");
+                if (got > limit) rtSaveImage(out, fadePathName[path]);
+                UnloadImage(out);
+                checks++;
+            }
+        }
+        UnloadImage(onlyA); UnloadImage(onlyB);
+    }
+    printf("    %d renderings compared\n", checks);
+    fadeRigUnload(&r);
+}
+
+// A batch whose fade stream starts at its second card (the first gets weight 0), sorted back to
+// front (the stream follows its quads), and the instanced sort: every card keeps its own pair
+static void test_fade_stream_follows_its_cards_through_late_starts_and_sorting(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(fadeNoiseTile(5u), fadeNoiseTile(77u), desc);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    static const float wts[3] = { 0.0f, 0.5f, 0.25f };
+    for (int path = 0; path < 3; path += 2)
+    {
+        if ((path == FADE_INSTANCED) && !rtGlsl3()) continue;
+        for (int sort = 0; sort < 2; sort++)
+        {
+            RblBillboard cards[3];
+            for (int i = 0; i < 3; i++)
+            {
+                cards[i] = fadeCard(&r.atlas, 0, 0.0f, 20.0f - 20.0f*i);
+                cards[i].position.z = (float)i;       // depths differ: the sort reverses the order
+                if (wts[i] > 0.0f) fadeFrom(&r.atlas, 2, wts[i], &cards[i]);
+            }
+            Image out = fadeRender(path, (path == FADE_INSTANCED)? r.mFadeInst : r.mFade, cards, 3, true, sort? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE);
+            for (int i = 0; i < 3; i++)
+            {
+                int d = fadeMeanDiff(out, r.tileA, r.tileB, wts[i], 0.0f, 20.0f - 20.0f*i);
+                RT_CHECK(d <= 1, "%s %s: card %d (weight %g) %d/255 off its mean", fadePathName[path], sort? "sorted" : "unsorted", i, wts[i], d);
+            }
+            UnloadImage(out);
+        }
+    }
+    fadeRigUnload(&r);
+}
+
+// Lambert, one directional light, black ambient, white albedo: the pixel is encode(max(0, N.L)).
+// Frame a's normal leans toward the sprite's right, b's toward its up, stored upright and, in c,
+// turned clockwise (its texels then hold the vector a holds: read in a's axes it would light as a)
+static double fadeLambert(Color na, Color nb, double w, D3 l)
+{
+    D3 a = dNorm(d3(na.r/255.0*2.0 - 1.0, na.g/255.0*2.0 - 1.0, na.b/255.0*2.0 - 1.0));
+    D3 b = dNorm(d3(nb.r/255.0*2.0 - 1.0, nb.g/255.0*2.0 - 1.0, nb.b/255.0*2.0 - 1.0));
+    D3 n = dNorm(dAdd(dScale(a, 1.0 - w), dScale(b, w)));     // sprite axes = world axes here (right +X, up +Y, out +Z)
+    return 255.0*srgbEncode(fmax(0.0, dDot(n, l)));
+}
+
+static void test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes(void)
+{
+    Color na = normalTexel(0.6f, 0.0f, 0.8f), nb = normalTexel(0.0f, 0.6f, 0.8f);
+    Image tileA = GenImageColor(16, 8, na), tileB = GenImageColor(16, 8, nb);
+    Image normalSheet = fadeSheetExact(tileA, tileB);
+    // c holds b turned clockwise: the texel values are the tile's, the vector turns with the image
+    for (int y = 0; y < 16; y++) for (int x = 32; x < 40; x++) ImageDrawPixel(&normalSheet, x, y, normalTexel(0.6f, 0.0f, 0.8f));
+    Texture2D normalTex = LoadTextureFromImage(normalSheet);
+    UnloadImage(normalSheet);
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.material.normalEncoding = RBL_NORMAL_RGB;
+    FadeRig r = fadeRigLoad(GenImageColor(16, 8, WHITE), GenImageColor(16, 8, WHITE), desc);
+    Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
+    for (int k = 0; k < 4; k++) if (mats[k]->maps != NULL) mats[k]->maps[MATERIAL_MAP_NORMAL].texture = normalTex;
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.color = WHITE; sun.intensity = 1.0f;
+    sun.direction = (Vector3){ -1.0f, -2.0f, -2.0f };            // toward the light: (1, 2, 2)/3
+    RT_CHECK(renderSetLights(&sun, 1, BLACK), "scene");
+    D3 l = d3(1.0/3.0, 2.0/3.0, 2.0/3.0);
+    static const float weights[4] = { 0.0f, 0.25f, 0.5f, 1.0f };
+    for (int path = 0; path < 3; path++)
+    {
+        bool inst = (path == FADE_INSTANCED);
+        if (inst && !rtGlsl3()) continue;
+        for (int second = 1; second <= 2; second++)
+            for (int k = 0; k < 4; k++)
+            {
+                RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
+                fadeFrom(&r.atlas, second, weights[k], &card);
+                Image out = fadeRender(path, inst? r.mFadeInst : r.mFade, &card, 1, true, 0);
+                Color got = rtPixel(out, 32, 32);
+                double want = fadeLambert(na, nb, weights[k], l), asIfA = fadeLambert(na, na, weights[k], l);
+                printf("    %-9s second %s  weight %.2f  got %3d  want %6.2f  (b read in a's axes: %6.2f)\n", fadePathName[path], (second == 1)? "upright" : "rotated", weights[k], got.r, want, asIfA);
+                RT_CHECK(fabs(got.r - want) <= 1.0 && got.r == got.g && got.g == got.b, "%s, %s second frame, weight %g: %d, want %.2f", fadePathName[path], (second == 1)? "upright" : "rotated", weights[k], got.r, want);
+                UnloadImage(out);
+            }
+    }
+    fadeRigUnload(&r);
+    UnloadTexture(normalTex);
+}
+
+// Alpha: a fully transparent green first frame, an opaque blue second. The mixed alpha is linear
+// (w), the colour the covered frame's alone (blue, not a green-blue mean), and the cutoff (0.5)
+// reads the mixed alpha: drawn over black with alpha blending, blue = 255 w above the cutoff, nothing below
+static void test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix(void)
+{
+    FadeRig r;
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    r = fadeRigLoad(GenImageColor(16, 8, (Color){ 0, 255, 0, 0 }), GenImageColor(16, 8, (Color){ 0, 0, 255, 255 }), desc);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    static const float weights[4] = { 0.3f, 0.49f, 0.51f, 0.8f };
+    for (int path = 0; path < 3; path++)
+    {
+        bool inst = (path == FADE_INSTANCED);
+        if (inst && !rtGlsl3()) continue;
+        for (int k = 0; k < 4; k++)
+        {
+            RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
+            fadeFrom(&r.atlas, 2, weights[k], &card);
+            Image out = fadeRender(path, inst? r.mFadeInst : r.mFade, &card, 1, true, 0);
+            Color got = rtPixel(out, 32, 32);
+            double blue = (weights[k] >= 0.5f)? 255.0*weights[k] : 0.0;
+            RT_CHECK(got.r == 0 && got.g == 0 && fabs(got.b - blue) <= 1.0, "%s weight %g: got (%d, %d, %d), want (0, 0, %.1f)", fadePathName[path], weights[k], got.r, got.g, got.b, blue);
+            UnloadImage(out);
+        }
+    }
+    fadeRigUnload(&r);
+}
+
+// The G-buffer's geometry pass shares the material code: a deferred crossFade variant stores the
+// mixed albedo, lit by a white ambient back to the double mean (within the G-buffer's 8-bit albedo)
+static void test_fade_deferred_geometry_pass_stores_the_mixed_frame(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(fadeNoiseTile(31u), fadeNoiseTile(47u), desc);
+    desc.deferred = true;
+    RblGBufferDesc gd;
+    memset(&gd, 0, sizeof(gd));
+    gd.width = FADE_RT; gd.height = FADE_RT;
+    RblGBuffer g = RblLoadGBuffer(gd);
+    RT_CHECK(RblIsGBufferValid(&g), "G-buffer");
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    for (int instanced = 0; instanced < 2; instanced++)
+    {
+        desc.crossFade = true;
+        desc.instanced = (instanced == 1);
+        Shader geo = RblLoadLitShader(desc);
+        Material m = LoadMaterialDefault();
+        m.shader = geo;
+        m.maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+        RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
+        fadeFrom(&r.atlas, 2, 0.5f, &card);
+        Camera3D cam = fadeCamera();
+        RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass");
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(1);
+        if (instanced)
+        {
+            RblInstance in;
+            memset(&in, 0, sizeof(in));
+            in.position = card.position; in.size = card.size; in.origin = card.origin; in.source = card.source; in.flags = card.flags;
+            RblInstancedDesc d;
+            memset(&d, 0, sizeof(d));
+            d.fades = &card.fade;
+            RT_CHECK(RblDrawInstanced(&buf, cam, m, d, &in, 1) == 1, "instanced geometry draw");
+        }
+        else RblDrawBillboard(cam, m, card);
+        RblEndGBuffer(&g);
+        RT_CHECK(RblDrawDeferredLights(&g), "lights");
+        RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+        Image out = rtReadTarget(rt);
+        int d = fadeMeanDiff(out, r.tileA, r.tileB, 0.5, 0, 0);
+        printf("    %s geometry pass, weight 0.5: %d/255 from the double mean\n", instanced? "instanced" : "immediate", d);
+        RT_CHECK(d <= 1, "%s: %d/255 from the double mean", instanced? "instanced" : "immediate", d);
+        UnloadImage(out);
+        UnloadRenderTexture(rt);
+        RblUnloadInstanceBuffer(&buf);
+        RblUnloadLitShader(&geo);
+        MemFree(m.maps);
+    }
+    RblUnloadGBuffer(&g);
+    fadeRigUnload(&r);
+}
+
+// Bad fades: one RBL line each, nothing drawn (immediate), the instance skipped (instanced)
+static void test_fade_bad_weights_and_sources_are_refused_with_one_line(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(fadeNoiseTile(3u), fadeNoiseTile(4u), desc);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    const float inf = INFINITY, nan = NAN;
+    const float bad[5] = { nan, inf, -inf, -0.25f, 1.5f };
+    for (int k = 0; k < 6; k++)
+    {
+        RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
+        fadeFrom(&r.atlas, 1, 0.5f, &card);
+        if (k < 5) card.fade.weight = bad[k];
+        else card.fade.source.width = nan;
+        int before = warnings;
+        Image out = fadeRender(FADE_IMMEDIATE, r.mFade, &card, 1, true, 0);
+        Color c = rtPixel(out, 32, 32);
+        RT_CHECK(warnings == before + 1 && c.r == 0 && c.g == 0 && c.b == 0 && c.a == 0, "bad fade %d: %d lines, pixel (%d, %d, %d, %d)", k, warnings - before, c.r, c.g, c.b, c.a);
+        UnloadImage(out);
+    }
+    if (rtGlsl3())
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(3);
+        RblInstance in[3];
+        RblFade fades[3];
+        memset(in, 0, sizeof(in)); memset(fades, 0, sizeof(fades));
+        for (int i = 0; i < 3; i++) { in[i].position = (Vector3){ 20.0f*(i - 1), 0, 0 }; in[i].size = (Vector2){ 16, 8 }; in[i].origin = (Vector2){ 8, 4 }; in[i].source = r.atlas.frames[0].source; fades[i].weight = 0.5f; fades[i].source = r.atlas.frames[1].source; }
+        fades[1].weight = nan;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.fades = fades;
+        Camera3D cam = fadeCamera();
+        RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+        int before = warnings;
+        BeginTextureMode(rt); ClearBackground(BLANK); BeginMode3D(cam);
+        int drawn = RblDrawInstanced(&buf, cam, r.mFadeInst, d, in, 3);
+        EndMode3D(); EndTextureMode();
+        Image out = rtReadTarget(rt);
+        RT_CHECK(drawn == 2 && buf.skipped == 1 && warnings == before + 1, "NaN fade weight: drawn %d, skipped %d, %d lines", drawn, buf.skipped, warnings - before);
+        RT_CHECK(rtPixel(out, 32, 32).a == 0 && fadeMeanDiff(out, r.tileA, r.tileB, 0.5, -20, 0) <= 1 && fadeMeanDiff(out, r.tileA, r.tileB, 0.5, 20, 0) <= 1,
+                 "the bad instance was drawn or its neighbours lost their fades");
+        UnloadImage(out);
+        UnloadRenderTexture(rt);
+        RblUnloadInstanceBuffer(&buf);
+    }
+    fadeRigUnload(&r);
+}
+
+// Shadows: a faded card casts its mixed cut-out. Frame a opaque, frame b transparent: the mixed
+// alpha is 1 - w, against the cutoff 0.5 a card at w 0.3 casts and one at w 0.7 does not (a caster
+// reading frame a alone would cast both); on every billboard path (test_shadows.c's floor and light)
+typedef struct FadeShadowCard { int path; float weight; } FadeShadowCard;
+static void fadeShadowCaster(Material m, Camera3D viewer, void *ctx)
+{
+    const FadeShadowCard *c = (const FadeShadowCard *)ctx;
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.position = (Vector3){ 0.0f, 0.0f, 1.0f }; b.size = (Vector2){ 2.0f, 2.0f }; b.origin = (Vector2){ 1.0f, 1.0f };
+    b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    b.source = (Rectangle){ 0, 0, 32, 32 };
+    b.fade.source = (Rectangle){ 32, 0, 32, 32 }; b.fade.weight = c->weight;
+    if (c->path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    else if (c->path == FADE_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, viewer);
+        RblBatchAdd(&batch, m, &b);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
+        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
+        RblUnloadInstanceBuffer(&buf);
+    }
+}
+
+static void test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path(void)
+{
+    ShSetup s = shSetup((Vector3){ 0.0f, 0.0f, -1.0f });
+    s.lights[0].direction = (Vector3){ 0.4f, 0.0f, -1.0f };
+    Image img = GenImageColor(64, 32, WHITE);
+    ImageDrawRectangle(&img, 32, 0, 32, 32, BLANK);
+    Texture2D sheet = LoadTextureFromImage(img);
+    UnloadImage(img);
+    int cx = (int)((0.4f + SH_VIEW*0.5f)/SH_VIEW*SH_TARGET), cy = SH_TARGET/2;
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)
+        for (int k = 0; k < 2; k++)
+        {
+            FadeShadowCard card = { path, k? 0.7f : 0.3f };
+            Image out = shRender(&s, fadeShadowCaster, &card, sheet, false);
+            int centre = rtPixel(out, cx, cy).r, outside = rtPixel(out, cx + 40, cy).r;
+            printf("    %-9s weight %.1f: footprint centre %3d, unshadowed floor %3d\n", fadePathName[path], card.weight, centre, outside);
+            RT_CHECK(k? (centre > outside - 3) : (centre < outside - 40), "%s weight %.1f: centre %d, unshadowed %d", fadePathName[path], card.weight, centre, outside);
+            UnloadImage(out);
+        }
+    UnloadTexture(sheet);
+}
+
+// The option compiles in only when asked: a plain program declares no fade input; a crossFade
+// program reads raylib's texcoord2 location 5, hidden from raylib's DrawMesh (locs -1), so a Model
+// drawn with it renders exactly as with the plain program (the constant weight 0)
+static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(fadeNoiseTile(8u), fadeNoiseTile(9u), desc);
+    RT_CHECK(rlGetLocationAttrib(r.plain.id, "vertexTexCoord2") == -1, "plain program declares the fade stream");
+    RT_CHECK(rlGetLocationAttrib(r.fade.id, "vertexTexCoord2") == 5, "crossFade program: fade stream at %d, not 5", rlGetLocationAttrib(r.fade.id, "vertexTexCoord2"));
+    RT_CHECK(r.fade.locs[SHADER_LOC_VERTEX_TEXCOORD02] == -1, "raylib's DrawMesh would bind texcoord2 to the fade stream");
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    Mesh plane = GenMeshPlane(2.0f, 2.0f, 1, 1);
+    Model model = LoadModelFromMesh(plane);
+    Camera3D top;
+    memset(&top, 0, sizeof(top));
+    top.position = (Vector3){ 0, 10, 0 }; top.up = (Vector3){ 0, 0, -1 }; top.fovy = 2.5f; top.projection = CAMERA_ORTHOGRAPHIC;
+    Image img[2];
+    for (int k = 0; k < 2; k++)
+    {
+        model.materials[0].shader = k? r.fade : r.plain;
+        model.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+        RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+        BeginTextureMode(rt); ClearBackground(BLANK); BeginMode3D(top);
+        RblDrawModel(model, (Vector3){ 0, 0, 0 }, 1.0f, WHITE);
+        EndMode3D(); EndTextureMode();
+        img[k] = rtReadTarget(rt);
+        UnloadRenderTexture(rt);
+    }
+    int drawn = 0;
+    for (int y = 0; y < FADE_RT; y++) for (int x = 0; x < FADE_RT; x++) drawn += (rtPixel(img[0], x, y).a == 255);
+    RT_CHECK(drawn > 500, "the plane was not drawn (%d pixels)", drawn);      // the sheet's opaque part
+    RT_CHECK(fadeImageDiff(img[0], img[1]) == 0, "a Model drawn with the crossFade program differs by %d/255", fadeImageDiff(img[0], img[1]));
+    UnloadImage(img[0]); UnloadImage(img[1]);
+    model.materials[0].shader = r.plain;        // the rig unloads its programs; the Model keeps none of its own
+    model.materials[0].maps[MATERIAL_MAP_ALBEDO].texture.id = 0;
+    model.materials[0].shader.id = 0; model.materials[0].shader.locs = NULL;
+    UnloadModel(model);
+    fadeRigUnload(&r);
+}
+
+#define RBL_FADE_TESTS \
+        RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
+        RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
+        RT_TEST(test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes), \
+        RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
+        RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
+        RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
+        RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
+        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line)
