@@ -858,49 +858,77 @@ static void test_deferred_normal_encoding_error_table_against_published_figures(
     RT_CHECK(gpuWorst <= worst[2], "a G-buffer normal is %.5f degrees off, more than the codec's maximum %.5f", gpuWorst, worst[2]);
 }
 
-// Position rebuilt from the 24-bit depth texture vs the true point and vs a double reconstruction
-static void test_deferred_position_from_depth_error_at_near_middle_far(void)
+// The depth tests' scene: a G-buffer of the lit target's size (linear output, empty scene), a
+// deferred geometry program and a white material
+typedef struct DefDepthScene { RblGBuffer g; Shader geo; Texture2D albedo; Material m; } DefDepthScene;
+
+static DefDepthScene defDepthSceneLoad(void)
 {
+    DefDepthScene d;
     RblGBufferDesc shading;
     memset(&shading, 0, sizeof(shading));
     shading.width = LIT_TARGET; shading.height = LIT_TARGET;
     shading.linearOutput = true;
-    RblGBuffer g = RblLoadGBuffer(shading);
+    d.g = RblLoadGBuffer(shading);
     RblFog noFog;
     memset(&noFog, 0, sizeof(noFog));
     RT_CHECK(defSetLights(NULL, 0, BLACK, noFog), "empty scene rejected");   // no exposure or fog left by earlier tests
-    RblLitShaderDesc d;
-    memset(&d, 0, sizeof(d));
-    d.deferred = true;
-    Shader geo = RblLoadLitShader(d);
-    Texture2D albedo = solidTexture(WHITE);
-    Material m = LoadMaterialDefault();
-    m.shader = geo;
-    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.deferred = true;
+    d.geo = RblLoadLitShader(desc);
+    d.albedo = solidTexture(WHITE);
+    d.m = LoadMaterialDefault();
+    d.m.shader = d.geo;
+    d.m.maps[MATERIAL_MAP_ALBEDO].texture = d.albedo;
+    return d;
+}
+
+static void defDepthSceneUnload(DefDepthScene *d)
+{
+    MemFree(d->m.maps);
+    UnloadTexture(d->albedo);
+    RblUnloadLitShader(&d->geo);
+    RblUnloadGBuffer(&d->g);
+}
+
+// The plane z = 0 seen obliquely from z above it; the shader's distance to the eye (debug view,
+// unencoded into a float target, GL rows) is returned, the G-buffer keeps the depth
+static float *defDepthScenePlane(DefDepthScene *d, float z, Camera3D *camera)
+{
+    Camera3D cam = litCamera((Vector3){ 0.0f, 0.0f, z }, (Vector3){ 0.3f*z, 0.2f*z, 0.0f });
+    RblBeginGBuffer(&d->g, cam);
+    RblBillboard plane = litPlane();
+    plane.size = (Vector2){ 40.0f*z, 40.0f*z }; plane.origin = (Vector2){ 20.0f*z, 20.0f*z };
+    RblDrawBillboard(cam, d->m, plane);
+    RblEndGBuffer(&d->g);
+    RblSetGBufferOutput(&d->g, RBL_GBUFFER_OUTPUT_DEPTH, 1e4f);
+    RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
+    BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&d->g); EndTextureMode();
+    float *distance = rtReadFloatPixels(rt.texture.id, LIT_TARGET, LIT_TARGET);
+    litTargetUnload(rt);
+    RblSetGBufferOutput(&d->g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
+    *camera = cam;
+    return distance;
+}
+
+// Position rebuilt from the 24-bit depth texture vs the true point and vs a double reconstruction
+static void test_deferred_position_from_depth_error_at_near_middle_far(void)
+{
+    DefDepthScene scene = defDepthSceneLoad();
     const float distances[3] = { 0.5f, 20.0f, 400.0f };
     const char *names[3] = { "near", "middle", "far" };
     printf("    depth: raylib depth texture (steps counted at 24 bits, the least a driver gives), perspective fovy 45, near %.2f, far %.0f\n", rlGetCullDistanceNear(), rlGetCullDistanceFar());
     for (int k = 0; k < 3; k++)
     {
         float z = distances[k];
-        Camera3D cam = litCamera((Vector3){ 0.0f, 0.0f, z }, (Vector3){ 0.3f*z, 0.2f*z, 0.0f });   // oblique view of the plane z = 0
-        RblBeginGBuffer(&g, cam);
-        RblBillboard plane = litPlane();
-        plane.size = (Vector2){ 40.0f*z, 40.0f*z }; plane.origin = (Vector2){ 20.0f*z, 20.0f*z };
-        RblDrawBillboard(cam, m, plane);
-        RblEndGBuffer(&g);
-        // Shader reconstruction: the distance-to-eye debug view written unencoded into a float target
-        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_DEPTH, 1e4f);
-        RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
-        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
-        float *pos = rtReadFloatPixels(rt.texture.id, LIT_TARGET, LIT_TARGET);
-        litTargetUnload(rt);
-        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
+        Camera3D cam;
+        float *pos = defDepthScenePlane(&scene, z, &cam);
         // Depth values of the geometry pass
         float *depth = (float *)malloc(sizeof(float)*LIT_TARGET*LIT_TARGET);
-        rtReadDepth(g.state->id, LIT_TARGET, LIT_TARGET, depth);
+        rtReadDepth(scene.g.state->id, LIT_TARGET, LIT_TARGET, depth);
         // Double reconstruction from the same depth, and the true plane point behind the pixel centre
-        Matrix P = g.state->projection, V = g.state->view;
+        Matrix P = scene.g.state->projection, V = scene.g.state->view;
         double worstShader = 0.0, worstTrue = 0.0, worstRatio = 0.0;
         int n = 0;
         for (int y = 8; y < LIT_TARGET - 8; y += 4)
@@ -936,10 +964,7 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
         free(depth);
         free(pos);
     }
-    MemFree(m.maps);
-    UnloadTexture(albedo);
-    RblUnloadLitShader(&geo);
-    RblUnloadGBuffer(&g);
+    defDepthSceneUnload(&scene);
 }
 
 // The same scenes without reading the depth buffer (WebGL2 cannot): the shader's distance to the eye
@@ -948,38 +973,13 @@ static void test_deferred_position_from_depth_error_at_near_middle_far(void)
 // geometry pass stored and the shader's reconstruction from it.
 static void test_deferred_distance_view_matches_the_true_plane_within_24_bit_depth_steps(void)
 {
-    RblGBufferDesc shading;
-    memset(&shading, 0, sizeof(shading));
-    shading.width = LIT_TARGET; shading.height = LIT_TARGET;
-    shading.linearOutput = true;
-    RblGBuffer g = RblLoadGBuffer(shading);
-    RblFog noFog;
-    memset(&noFog, 0, sizeof(noFog));
-    RT_CHECK(defSetLights(NULL, 0, BLACK, noFog), "empty scene rejected");
-    RblLitShaderDesc d;
-    memset(&d, 0, sizeof(d));
-    d.deferred = true;
-    Shader geo = RblLoadLitShader(d);
-    Texture2D albedo = solidTexture(WHITE);
-    Material m = LoadMaterialDefault();
-    m.shader = geo;
-    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    DefDepthScene scene = defDepthSceneLoad();
     const float distances[4] = { 0.5f, 3.0f, 20.0f, 400.0f };
     for (int k = 0; k < 4; k++)
     {
         float z = distances[k];
-        Camera3D cam = litCamera((Vector3){ 0.0f, 0.0f, z }, (Vector3){ 0.3f*z, 0.2f*z, 0.0f });
-        RblBeginGBuffer(&g, cam);
-        RblBillboard plane = litPlane();
-        plane.size = (Vector2){ 40.0f*z, 40.0f*z }; plane.origin = (Vector2){ 20.0f*z, 20.0f*z };
-        RblDrawBillboard(cam, m, plane);
-        RblEndGBuffer(&g);
-        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_DEPTH, 1e4f);
-        RenderTexture2D rt = litTarget(PIXELFORMAT_UNCOMPRESSED_R32G32B32A32);
-        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
-        float *pos = rtReadFloatPixels(rt.texture.id, LIT_TARGET, LIT_TARGET);
-        litTargetUnload(rt);
-        RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
+        Camera3D cam;
+        float *pos = defDepthScenePlane(&scene, z, &cam);
         D3 eye = d3f(cam.position), forward = dNorm(dSub(d3f(cam.target), eye));
         double worst = 0.0;
         int n = 0;
@@ -999,10 +999,7 @@ static void test_deferred_distance_view_matches_the_true_plane_within_24_bit_dep
         RT_CHECK(worst < 20.0, "eye %.1f: distance off by %.2f 24-bit depth steps", z, worst);
         free(pos);
     }
-    MemFree(m.maps);
-    UnloadTexture(albedo);
-    RblUnloadLitShader(&geo);
-    RblUnloadGBuffer(&g);
+    defDepthSceneUnload(&scene);
 }
 
 // Under both: what the rasterizer hands a fragment stage. A plane drawn by raylib (DrawMesh) with a
