@@ -607,16 +607,9 @@ static void test_deferred_matches_forward_for_every_brdf_roughness_and_shininess
     UnloadModel(sphere);
 }
 
-// The same comparison on the sphere under 9 light rigs (the scene turned 0.3, 1.1 and 1.9 radians about
-// one axis, lights scaled 0.2, 1 and 5): a pixel can land on the steepest flank of a highlight, where a
-// normal quantised by d radians moves the output by up to 255 sRGB'(1) (2/alpha) d (GGX: d ln D/d theta
-// peaks at 2/alpha, at theta = alpha; a flank at linear 1 is the steepest in sRGB, without a tonemap).
-// With the G-buffer's 30-bit normal that bound is within 2/255 from perceptual roughness ~0.1; below,
-// 2/255 everywhere would need more than 48 bits (README, "Deferred"), so those cases are held to the bound and
-// reported, the rest to 2/255 and 0.25/255 in every rig.
-static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255_or_the_10_byte_bound(void)
+// The 30-bit normal code's worst error over a uniform sphere sample (the double mirror of the codec)
+static double defWorstNormal30(void)
 {
-    // The normal code's worst error (CPU mirror, uniform sphere sample)
     unsigned int seed = 77u;
     double worstNormal = 0.0;
     for (int i = 0; i < 200000; i++)
@@ -627,6 +620,50 @@ static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within
         octEncode(n, 32767, true, &qx, &qy);
         worstNormal = fmax(worstNormal, acos(fmin(1.0, dDot(n, octDecodeCode(qx, qy, 32767)))));
     }
+    return worstNormal;
+}
+
+// Worst case over the views of one sharp-highlight case
+typedef struct DefWorst { int worst, over; double mean; } DefWorst;
+
+// Compares one view's forward and deferred frames (both unloaded here) into w
+static void defAccumulate(DefWorst *w, Image fwd, Image def, int minCovered, const char *view, int index)
+{
+    DefDiff d = defCompare(fwd, def);
+    RT_CHECK(d.covered > minCovered && d.coverage == 0, "%s %d: %d pixels, coverage differs in %d", view, index, d.covered, d.coverage);
+    if (d.worst > w->worst) w->worst = d.worst;
+    if (d.mean > w->mean) w->mean = d.mean;
+    w->over += (d.worst > 2);
+    UnloadImage(fwd); UnloadImage(def);
+}
+
+// Prints and holds a case: GGX to the first-order bound of a normal quantised by worstNormal where
+// that bound passes 2/255 (+1 for the 8-bit rounding of either image), everything else to 2/255;
+// every mean to 0.25/255
+static void defHoldSharp(DefSweepCase c, DefWorst w, int views, const char *view, double worstNormal)
+{
+    double alpha = fmax(c.roughness, 0.045)*fmax(c.roughness, 0.045);
+    double bound = (c.brdf == RBL_BRDF_GGX)? 255.0*(1.055/2.4)*(2.0/alpha)*worstNormal : 2.0;
+    char name[64];
+    if (c.brdf == RBL_BRDF_GGX) snprintf(name, sizeof(name), "GGX roughness %.2f %s", c.roughness, (c.metalness > 0.5f)? "metal" : "dielectric");
+    else snprintf(name, sizeof(name), "Blinn-Phong shininess %.0f, spec %.2f", c.shininess, (c.specular > 0.0f)? c.specular : 0.5f);
+    printf("    %-36s max %2d/255  mean %.3f/255  %2d of %d %s over 2/255  held to %.1f/255%s\n", name, w.worst, w.mean, w.over, views, view,
+           fmax(bound, 2.0), (bound > 2.0)? " (the bound)" : "");
+    if (bound > 2.0) RT_CHECK(w.worst <= (int)ceil(bound) + 1, "%s: max %d/255 beyond the codec's bound %.1f/255", name, w.worst, bound);
+    else RT_CHECK(w.worst <= 2, "%s: max %d/255 in some of the %s (limit 2)", name, w.worst, view);
+    RT_CHECK(w.mean <= 0.25, "%s: mean %.3f/255 in some of the %s (limit 0.25)", name, w.mean, view);
+}
+
+// The same comparison on the sphere under 9 light rigs (the scene turned 0.3, 1.1 and 1.9 radians about
+// one axis, lights scaled 0.2, 1 and 5): a pixel can land on the steepest flank of a highlight, where a
+// normal quantised by d radians moves the output by up to 255 sRGB'(1) (2/alpha) d (GGX: d ln D/d theta
+// peaks at 2/alpha, at theta = alpha; a flank at linear 1 is the steepest in sRGB, without a tonemap).
+// With the G-buffer's 30-bit normal that bound is within 2/255 from perceptual roughness ~0.1; below,
+// 2/255 everywhere would need more than 48 bits (README, "Deferred"), so those cases are held to the bound and
+// reported, the rest to 2/255 and 0.25/255 in every rig.
+static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255_or_the_10_byte_bound(void)
+{
+    double worstNormal = defWorstNormal30();
     DefSweepCase cases[12];
     int n = 0;
     const float roughness[4] = { 0.02f, 0.05f, 0.1f, 0.3f };
@@ -645,8 +682,7 @@ static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within
     for (int i = 0; i < n; i++)
     {
         DefSweepCase c = cases[i];
-        int worst = 0, over = 0;
-        double worstMean = 0.0;
+        DefWorst w = { 0, 0, 0.0 };
         for (int rig = 0; rig < 9; rig++)
         {
             DefSweepScene s = defSweepScene(true);
@@ -655,26 +691,9 @@ static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within
             s.lights[0].position = Vector3RotateByAxisAngle(s.lights[0].position, about, a);
             s.lights[1].direction = Vector3RotateByAxisAngle(s.lights[1].direction, about, a);
             s.lights[0].intensity *= k; s.lights[1].intensity *= k;
-            Image fwd = defSweepRender(&s, c, &sphere, albedo, &g[c.brdf], false);
-            Image def = defSweepRender(&s, c, &sphere, albedo, &g[c.brdf], true);
-            DefDiff d = defCompare(fwd, def);
-            RT_CHECK(d.covered > SWEEP_SIZE*SWEEP_SIZE/4 && d.coverage == 0, "rig %d: %d pixels, coverage differs in %d", rig, d.covered, d.coverage);
-            if (d.worst > worst) worst = d.worst;
-            if (d.mean > worstMean) worstMean = d.mean;
-            over += (d.worst > 2);
-            UnloadImage(fwd); UnloadImage(def);
+            defAccumulate(&w, defSweepRender(&s, c, &sphere, albedo, &g[c.brdf], false), defSweepRender(&s, c, &sphere, albedo, &g[c.brdf], true), SWEEP_SIZE*SWEEP_SIZE/4, "rig", rig);
         }
-        double alpha = fmax(c.roughness, 0.045)*fmax(c.roughness, 0.045);
-        double bound = (c.brdf == RBL_BRDF_GGX)? 255.0*(1.055/2.4)*(2.0/alpha)*worstNormal : 2.0;
-        char name[64];
-        if (c.brdf == RBL_BRDF_GGX) snprintf(name, sizeof(name), "GGX roughness %.2f %s", c.roughness, (c.metalness > 0.5f)? "metal" : "dielectric");
-        else snprintf(name, sizeof(name), "Blinn-Phong shininess %.0f, spec %.2f", c.shininess, (c.specular > 0.0f)? c.specular : 0.5f);
-        printf("    %-36s max %2d/255  mean %.3f/255  %d of 9 rigs over 2/255  held to %.1f/255%s\n", name, worst, worstMean, over, (bound > 2.0)? bound : 2.0,
-               (bound > 2.0)? " (the bound)" : "");
-        // The bound is first order; +1 for the 8-bit rounding of either image
-        if (bound > 2.0) RT_CHECK(worst <= (int)ceil(bound) + 1, "%s: max %d/255 beyond the codec's bound %.1f/255", name, worst, bound);
-        else RT_CHECK(worst <= 2, "%s: max %d/255 in some rig (limit 2)", name, worst);
-        RT_CHECK(worstMean <= 0.25, "%s: mean %.3f/255 in some rig (limit 0.25)", name, worstMean);
+        defHoldSharp(c, w, 9, "rigs", worstNormal);
     }
     for (int b = 1; b < 3; b++) RblUnloadGBuffer(&g[b]);
     UnloadTexture(albedo);
@@ -693,15 +712,14 @@ static void test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255_or_t
     Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
     const int size = 3*SWEEP_SIZE;
     RblGBuffer g = sweepGBufferSized(RBL_BRDF_GGX, size);
-    const double worstNormal = 8.5e-5;      // the 30-bit code's worst (the 9-rig test measures it: 8.4e-5)
+    const double worstNormal = defWorstNormal30();
     printf("    per case over 12 tilts: worst max, worst mean, tilts over 2/255, limit\n");
     for (int ri = 0; ri < 5; ri++)
         for (int metal = 0; metal < 2; metal++)
         {
             DefSweepCase c = { RBL_BRDF_GGX, roughness[ri], (float)metal, 0.0f, 0.0f };
             unsigned int seed = 5u;
-            int worst = 0, over = 0;
-            double worstMean = 0.0;
+            DefWorst w = { 0, 0, 0.0 };
             for (int t = 0; t < 12; t++)
             {
                 DefSweepScene s = defSweepScene(false);
@@ -709,24 +727,9 @@ static void test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255_or_t
                 s.plane.axis = Vector3Normalize((Vector3){ ax, ay, 1.0f });
                 s.plane.up = Vector3Normalize(Vector3CrossProduct(s.plane.axis, (Vector3){ 1.0f, 0.0f, 0.0f }));
                 s.lights[0].intensity *= k; s.lights[1].intensity *= k;
-                Image fwd = defSweepRender(&s, c, &sphere, albedo, &g, false);
-                Image def = defSweepRender(&s, c, &sphere, albedo, &g, true);
-                DefDiff d = defCompare(fwd, def);
-                RT_CHECK(d.covered > size*size/3 && d.coverage == 0, "tilt %d: %d pixels, coverage differs in %d", t, d.covered, d.coverage);
-                if (d.worst > worst) worst = d.worst;
-                if (d.mean > worstMean) worstMean = d.mean;
-                over += (d.worst > 2);
-                UnloadImage(fwd); UnloadImage(def);
+                defAccumulate(&w, defSweepRender(&s, c, &sphere, albedo, &g, false), defSweepRender(&s, c, &sphere, albedo, &g, true), size*size/3, "tilt", t);
             }
-            double alpha = fmax(c.roughness, 0.045)*fmax(c.roughness, 0.045);
-            double bound = (c.roughness < 0.1f)? 255.0*(1.055/2.4)*(2.0/alpha)*worstNormal : 2.0;
-            char name[64];
-            snprintf(name, sizeof(name), "GGX roughness %.2f %s", c.roughness, metal? "metal" : "dielectric");
-            printf("    %-36s max %2d/255  mean %.3f/255  %2d of 12 tilts over 2/255  held to %.1f/255%s\n", name, worst, worstMean, over, fmax(bound, 2.0),
-                   (bound > 2.0)? " (the bound)" : "");
-            if (bound > 2.0) RT_CHECK(worst <= (int)ceil(bound) + 1, "%s: max %d/255 beyond the codec's bound %.1f/255", name, worst, bound);
-            else RT_CHECK(worst <= 2, "%s: max %d/255 on some tilt (limit 2)", name, worst);
-            RT_CHECK(worstMean <= 0.25, "%s: mean %.3f/255 on some tilt (limit 0.25)", name, worstMean);
+            defHoldSharp(c, w, 12, "tilts", worstNormal);
         }
     RblUnloadGBuffer(&g);
     UnloadTexture(albedo);
