@@ -549,6 +549,157 @@ static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_un
     fadeRigUnload(&r);
 }
 
+
+// Frames of different trims (issue #16): p upright, q stored turned clockwise, r = q upright, on
+// 16x12 canvases (pivot at the centre): p's trim (1,2 10x6), q's and r's (5,1 8x9). The fade quad
+// covers the union (1,1 12x9); each frame is fetched only inside its own trim
+static const char fadeTrimJson[] =
+    "{\"frames\": {"
+    "\"p\": {\"frame\": {\"x\":0,\"y\":0,\"w\":10,\"h\":6}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":1,\"y\":2,\"w\":10,\"h\":6}, \"sourceSize\": {\"w\":16,\"h\":12}},"
+    "\"q\": {\"frame\": {\"x\":16,\"y\":0,\"w\":8,\"h\":9}, \"rotated\": true, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}},"
+    "\"r\": {\"frame\": {\"x\":32,\"y\":0,\"w\":8,\"h\":9}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}}},"
+    " \"meta\": {\"size\": {\"w\":48,\"h\":16}}}";
+
+// The untrimmed 16x12 canvas of a frame: its picture at its trim, transparent elsewhere (the
+// reference rebuilds it from the fixture's numbers, not from the atlas)
+static Color fadeTrimCanvas(Image pic, int tx, int ty, int i, int j)
+{
+    if ((i < tx) || (j < ty) || (i >= tx + pic.width) || (j >= ty + pic.height)) return BLANK;
+    return GetImageColor(pic, i - tx, j - ty);
+}
+
+// Largest rgb difference between the target and the double reference of canvases a (weight 1 - w)
+// and b (w) drawn with alpha blending over a cleared target, no cutoff: mixed alpha A = linear, the
+// colour mixed in linear light by coverage (w a_b / A), stored as encode(colour) x A; nothing where
+// neither frame lies. Canvas pixel (i, j) is target pixel (24 + i, 26 + j) (pivot 8,6 at the centre)
+static int fadeTrimDiff(Image out, Image picA, int ax, int ay, Image picB, int bx, int by, double w)
+{
+    int worst = 0;
+    for (int y = 0; y < FADE_RT; y++)
+        for (int x = 0; x < FADE_RT; x++)
+        {
+            int i = x - 24, j = y - 26;
+            Color ca = fadeTrimCanvas(picA, ax, ay, i, j), cb = fadeTrimCanvas(picB, bx, by, i, j), got = rtPixel(out, x, y);
+            double aa = ca.a/255.0, ab = cb.a/255.0, A = (1.0 - w)*aa + w*ab;
+            double cover = (A > 0.0)? w*ab/A : 0.0;
+            const unsigned char pc[3] = { ca.r, ca.g, ca.b }, qc[3] = { cb.r, cb.g, cb.b }, gc[3] = { got.r, got.g, got.b };
+            for (int k = 0; k < 3; k++)
+            {
+                double want = (A > 0.0)? 255.0*srgbEncode((1.0 - cover)*srgbDecode(pc[k]/255.0) + cover*srgbDecode(qc[k]/255.0))*A : 0.0;
+                int d = (int)ceil(fabs(want - gc[k]) - 0.5);
+                if (d > worst) worst = d;
+            }
+            if ((A == 0.0) && (got.a != 0) && (worst < 255)) worst = 255;      // drawn where neither frame lies
+        }
+    return worst;
+}
+
+// Largest rgba difference over the whole target
+static int fadeImageDiffRgba(Image a, Image b)
+{
+    int worst = fadeImageDiff(a, b);
+    for (int y = 0; y < FADE_RT; y++) for (int x = 0; x < FADE_RT; x++) if (abs(rtPixel(a, x, y).a - rtPixel(b, x, y).a) > worst) worst = abs(rtPixel(a, x, y).a - rtPixel(b, x, y).a);
+    return worst;
+}
+
+static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim(void)
+{
+    unsigned int seed = 1234u;
+    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
+    Image *pics[2] = { &picP, &picQ };
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < pics[k]->width*pics[k]->height; i++)
+        {
+            unsigned int v = rtRandom(&seed);
+            ((Color *)pics[k]->data)[i] = (Color){ (unsigned char)(v & 255), (unsigned char)((v >> 8) & 255), (unsigned char)((v >> 16) & 255), 255 };
+        }
+    // Opaque texels around every frame (a packer without padding puts neighbours there): a fetch
+    // that is not clipped to its frame's trim shows them
+    Image sheet = GenImageColor(48, 16, (Color){ 255, 0, 255, 255 });
+    for (int y = 0; y < 6; y++) for (int x = 0; x < 10; x++) ImageDrawPixel(&sheet, x, y, GetImageColor(picP, x, y));
+    for (int y = 0; y < 9; y++)
+        for (int x = 0; x < 8; x++)
+        {
+            ImageDrawPixel(&sheet, 16 + (8 - y), x, GetImageColor(picQ, x, y));     // clockwise in a 9x8 block
+            ImageDrawPixel(&sheet, 32 + x, y, GetImageColor(picQ, x, y));
+        }
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
+    UnloadTexture(r.sheet);
+    r.sheet = LoadTextureFromImage(sheet);
+    UnloadImage(sheet);
+    RblUnloadAtlas(&r.atlas);
+    r.atlas = RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas");
+    int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
+    RT_CHECK((fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].flags & RBL_FRAME_ROTATED) && !(r.atlas.frames[fr].flags & RBL_FRAME_ROTATED), "fixture frames");
+    Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
+    for (int k = 0; k < 4; k++)
+        if (mats[k]->maps != NULL)
+        {
+            mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+            mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;     // no cutoff: every partial alpha shows
+        }
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    // Pairs: upright to rotated, rotated to upright, upright to upright
+    const int pairs[3][2] = { { fp, fq }, { fq, fp }, { fp, fr } };
+    static const float weights[6] = { 0.0f, 1.0f, 1e-6f, 1.0f - 1e-6f, 0.5f, 0.25f };
+    int checks = 0;
+    for (int path = 0; path < 3; path++)
+    {
+        bool inst = (path == FADE_INSTANCED);
+        if (inst && !rtGlsl3()) continue;
+        Material plain = inst? r.mPlainInst : r.mPlain, fade = inst? r.mFadeInst : r.mFade;
+        for (int pr = 0; pr < 3; pr++)
+        {
+            int f0 = pairs[pr][0], f1 = pairs[pr][1];
+            Image pic0 = (f0 == fp)? picP : picQ, pic1 = (f1 == fp)? picP : picQ;
+            int x0 = (f0 == fp)? 1 : 5, y0 = (f0 == fp)? 2 : 1, x1 = (f1 == fp)? 1 : 5, y1 = (f1 == fp)? 2 : 1;
+            RblBillboard single[2];
+            memset(single, 0, sizeof(single));
+            RT_CHECK(RblAtlasBillboard(&r.atlas, f0, 1.0f, &single[0]) && RblAtlasBillboard(&r.atlas, f1, 1.0f, &single[1]), "single frames");
+            Image only0 = fadeRender(path, plain, &single[0], 1, false, 0), only1 = fadeRender(path, plain, &single[1], 1, false, 0);
+            // The single frames sit on their canvases (the reference's placement holds)
+            RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
+            for (int k = 0; k < 6; k++)
+            {
+                RblBillboard card;
+                memset(&card, 0, sizeof(card));
+                RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card), "fade card");
+                Image out = fadeRender(path, fade, &card, 1, true, 0);
+                int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k]);
+                int got = (k == 0)? vs0 : ((k == 1)? vs1 : ref), limit = (k < 2)? 0 : 1;
+                printf("    %-9s pair %d (%s -> %s)  weight %-9.7g  vs first %3d  vs second %3d  vs double reference %3d\n", fadePathName[path], pr,
+                       (f0 == fq)? "rotated" : "upright", (f1 == fq)? "rotated" : "upright", weights[k], vs0, vs1, ref);
+                RT_CHECK(got <= limit, "%s pair %d weight %g: %d/255 off (limit %d)", fadePathName[path], pr, weights[k], got, limit);
+                if (k >= 4) RT_CHECK(vs0 > 20 && vs1 > 20, "%s pair %d weight %g should be neither frame", fadePathName[path], pr, weights[k]);
+                if (got > limit) rtSaveImage(out, fadePathName[path]);
+                UnloadImage(out);
+                checks++;
+            }
+            // The instance pair is the billboard's, field for field
+            RblInstance in; RblFade f;
+            memset(&in, 0, sizeof(in)); memset(&f, 0, sizeof(f));
+            RblBillboard card;
+            memset(&card, 0, sizeof(card));
+            RT_CHECK(RblAtlasInstanceFade(&r.atlas, f0, f1, 0.5f, 1.0f, &in, &f) && RblAtlasBillboardFade(&r.atlas, f0, f1, 0.5f, 1.0f, &card), "fade pair");
+            RT_CHECK(memcmp(&in.source, &card.source, sizeof(Rectangle)) == 0 && memcmp(&in.size, &card.size, sizeof(Vector2)) == 0 &&
+                     memcmp(&in.origin, &card.origin, sizeof(Vector2)) == 0 && in.flags == card.flags && memcmp(&f, &card.fade, sizeof(f)) == 0, "RblAtlasInstanceFade differs from RblAtlasBillboardFade");
+            UnloadImage(only0); UnloadImage(only1);
+        }
+    }
+    // Equal trims: RblAtlasBillboardFade is RblAtlasBillboard plus the fade, unclipped (whole quad)
+    RblBillboard one, two;
+    memset(&one, 0, sizeof(one)); memset(&two, 0, sizeof(two));
+    RT_CHECK(RblAtlasBillboard(&r.atlas, fq, 2.0f, &one) && RblAtlasBillboardFade(&r.atlas, fq, fr, 0.5f, 2.0f, &two), "equal trims");
+    RT_CHECK(memcmp(&one.source, &two.source, sizeof(Rectangle)) == 0 && memcmp(&one.size, &two.size, sizeof(Vector2)) == 0 && memcmp(&one.origin, &two.origin, sizeof(Vector2)) == 0 &&
+             memcmp(&two.fade.source, &r.atlas.frames[fr].source, sizeof(Rectangle)) == 0 && two.fade.clip[0].width == 1.0f && two.fade.clip[1].height == 1.0f, "equal trims: not the single frame's quad");
+    printf("    %d renderings compared\n", checks);
+    UnloadImage(picP); UnloadImage(picQ);
+    fadeRigUnload(&r);
+}
+
 #define RBL_FADE_TESTS \
         RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
         RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
@@ -557,4 +708,5 @@ static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_un
         RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
         RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
         RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
-        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line)
+        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
+        RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim)
