@@ -309,20 +309,26 @@
 *         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
 *         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
 *         skipped. RblSpriteBlend: next frame and time/duration.
-*       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblSpriteFade(&player, &atlas,
-*         &billboard.fade) after RblAtlasBillboard mixes the next frame in by time/duration. The
+*       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblAtlasBillboardFade(&atlas,
+*         player.frame, next, w, scale, &billboard) with next and w from RblSpriteBlend (instances:
+*         RblAtlasInstanceFade, an RblFade beside each) mixes the next frame in by time/duration. The
 *         program fetches every map at both frames' UVs (a program without the option fetches once):
 *         colour in linear light weighted by coverage (a transparent texel's colour never bleeds in),
 *         alpha linearly with the cutoff on the mix, the normal as a world vector (each fetch decoded
 *         in its own frame's tangent axes: frames stored rotated differently mix correctly), then
 *         renormalised; specular, occlusion and emission by the colour's weight. Weight 0 and 1 are
-*         the single frames exactly. Data only where used: the batch's fade stream (16 floats per
-*         billboard, attribute location 5) exists from its first billboard with a weight, instanced
-*         draws upload RblInstancedDesc.fades (24 bytes an instance, fades[i] with instances[i]) to a
+*         the single frames exactly. Data only where used: the batch's fade stream (32 floats per
+*         billboard, attribute location 5 and rblFadeClip) exists from its first billboard with a
+*         weight or clip, instanced draws upload RblInstancedDesc.fades (56 bytes an instance, fades[i] with instances[i]) to a
 *         second buffer only when it is non-NULL; without data the weight is a constant 0. Shadow
 *         passes cut faded casters by the mixed alpha; deferred geometry variants take the option.
-*         The second frame is drawn over the first's quad: frames of different trim rectangles (or
-*         sizes) do not line up (export untrimmed, or with one trim per animation, to cross-fade).
+*         Frames trimmed differently: each stays where its untrimmed canvas and pivot put it (as
+*         RblAtlasBillboard places it alone); the quad covers the union of the two trims, each
+*         frame's source stretched over it, and RblFade.clip[k] is frame k's trim in the quad: a
+*         fetch outside it is transparent (alpha 0, no colour, normal or emission), and where the
+*         frame shown alone (w 0 or 1) or neither lies there is no fragment. Axes a frame covers
+*         whole are never clipped: equal trims draw as unclipped. RblSpriteFade fills the source,
+*         flags and weight only (zero clips: over the first frame's quad).
 *       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
 *         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
@@ -353,7 +359,8 @@
 *         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
 *         billboards still turn toward camera.position (their shading uses the parallel view).
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
-*       - Cross-fade mixes two frames over the first frame's quad (equal trims line up; see SPRITE SHEETS).
+*       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
+*         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:
@@ -8557,7 +8564,8 @@ static bool rbl__atlasFadeQuad(const RblAtlas *atlas, int frame, int nextFrame, 
         src[i].y = (float)(o.y + (forwardY? y0 : 1.0 - y1)*h);
         src[i].width = (float)((x1 - x0)*w*((o.width < 0.0f)? -1.0 : 1.0));
         src[i].height = (float)((y1 - y0)*h*((o.height < 0.0f)? -1.0 : 1.0));
-        clip[i] = (Rectangle){ (float)((r[i][0] - u[0])/uw), (float)((r[i][1] - u[1])/uh), (float)(tw/uw), (float)(th/uh) };
+        clip[i].x = (float)((r[i][0] - u[0])/uw); clip[i].y = (float)((r[i][1] - u[1])/uh);
+        clip[i].width = (float)(tw/uw); clip[i].height = (float)(th/uh);
     }
     *source = src[0];
     *size = rbl__v2((float)(uw*k), (float)(uh*k));

@@ -559,6 +559,13 @@ static const char fadeTrimJson[] =
     "\"q\": {\"frame\": {\"x\":16,\"y\":0,\"w\":8,\"h\":9}, \"rotated\": true, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}},"
     "\"r\": {\"frame\": {\"x\":32,\"y\":0,\"w\":8,\"h\":9}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}}},"
     " \"meta\": {\"size\": {\"w\":48,\"h\":16}}}";
+// The same frames from libGDX (old form): q turned counter-clockwise (both extents negated), offsets
+// counted from the canvas bottom (12 - 2 - 6 = 4 for p, 12 - 1 - 9 = 2 for q and r)
+static const char fadeTrimGdx[] =
+    "s.png\nsize: 48, 16\n"
+    "p\n  rotate: false\n  xy: 0, 0\n  size: 10, 6\n  orig: 16, 12\n  offset: 1, 4\n  index: -1\n"
+    "q\n  rotate: true\n  xy: 16, 0\n  size: 8, 9\n  orig: 16, 12\n  offset: 5, 2\n  index: -1\n"
+    "r\n  rotate: false\n  xy: 32, 0\n  size: 8, 9\n  orig: 16, 12\n  offset: 5, 2\n  index: -1\n";
 
 // The untrimmed 16x12 canvas of a frame: its picture at its trim, transparent elsewhere (the
 // reference rebuilds it from the fixture's numbers, not from the atlas)
@@ -613,83 +620,89 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
             unsigned int v = rtRandom(&seed);
             ((Color *)pics[k]->data)[i] = (Color){ (unsigned char)(v & 255), (unsigned char)((v >> 8) & 255), (unsigned char)((v >> 16) & 255), 255 };
         }
-    // Opaque texels around every frame (a packer without padding puts neighbours there): a fetch
-    // that is not clipped to its frame's trim shows them
-    Image sheet = GenImageColor(48, 16, (Color){ 255, 0, 255, 255 });
-    for (int y = 0; y < 6; y++) for (int x = 0; x < 10; x++) ImageDrawPixel(&sheet, x, y, GetImageColor(picP, x, y));
-    for (int y = 0; y < 9; y++)
-        for (int x = 0; x < 8; x++)
-        {
-            ImageDrawPixel(&sheet, 16 + (8 - y), x, GetImageColor(picQ, x, y));     // clockwise in a 9x8 block
-            ImageDrawPixel(&sheet, 32 + x, y, GetImageColor(picQ, x, y));
-        }
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
-    UnloadTexture(r.sheet);
-    r.sheet = LoadTextureFromImage(sheet);
-    UnloadImage(sheet);
-    RblUnloadAtlas(&r.atlas);
-    r.atlas = RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
-    RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas");
-    int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
-    RT_CHECK((fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].flags & RBL_FRAME_ROTATED) && !(r.atlas.frames[fr].flags & RBL_FRAME_ROTATED), "fixture frames");
-    Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
-    for (int k = 0; k < 4; k++)
-        if (mats[k]->maps != NULL)
-        {
-            mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
-            mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;     // no cutoff: every partial alpha shows
-        }
-    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
-    // Pairs: upright to rotated, rotated to upright, upright to upright
-    const int pairs[3][2] = { { fp, fq }, { fq, fp }, { fp, fr } };
-    static const float weights[6] = { 0.0f, 1.0f, 1e-6f, 1.0f - 1e-6f, 0.5f, 0.25f };
     int checks = 0;
-    for (int path = 0; path < 3; path++)
+    for (int gdx = 0; gdx < 2; gdx++)       // TexturePacker (q turned clockwise), libGDX (counter-clockwise)
     {
-        bool inst = (path == FADE_INSTANCED);
-        if (inst && !rtGlsl3()) continue;
-        Material plain = inst? r.mPlainInst : r.mPlain, fade = inst? r.mFadeInst : r.mFade;
-        for (int pr = 0; pr < 3; pr++)
-        {
-            int f0 = pairs[pr][0], f1 = pairs[pr][1];
-            Image pic0 = (f0 == fp)? picP : picQ, pic1 = (f1 == fp)? picP : picQ;
-            int x0 = (f0 == fp)? 1 : 5, y0 = (f0 == fp)? 2 : 1, x1 = (f1 == fp)? 1 : 5, y1 = (f1 == fp)? 2 : 1;
-            RblBillboard single[2];
-            memset(single, 0, sizeof(single));
-            RT_CHECK(RblAtlasBillboard(&r.atlas, f0, 1.0f, &single[0]) && RblAtlasBillboard(&r.atlas, f1, 1.0f, &single[1]), "single frames");
-            Image only0 = fadeRender(path, plain, &single[0], 1, false, 0), only1 = fadeRender(path, plain, &single[1], 1, false, 0);
-            // The single frames sit on their canvases (the reference's placement holds)
-            RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
-            for (int k = 0; k < 6; k++)
+        // Opaque texels around every frame (a packer without padding puts neighbours there): a fetch
+        // that is not clipped to its frame's trim shows them
+        Image sheet = GenImageColor(48, 16, (Color){ 255, 0, 255, 255 });
+        for (int y = 0; y < 6; y++) for (int x = 0; x < 10; x++) ImageDrawPixel(&sheet, x, y, GetImageColor(picP, x, y));
+        for (int y = 0; y < 9; y++)
+            for (int x = 0; x < 8; x++)
             {
+                if (gdx) ImageDrawPixel(&sheet, 16 + y, 7 - x, GetImageColor(picQ, x, y));      // counter-clockwise in a 9x8 block
+                else ImageDrawPixel(&sheet, 16 + (8 - y), x, GetImageColor(picQ, x, y));   // clockwise
+                ImageDrawPixel(&sheet, 32 + x, y, GetImageColor(picQ, x, y));
+            }
+        UnloadTexture(r.sheet);
+        r.sheet = LoadTextureFromImage(sheet);
+        UnloadImage(sheet);
+        RblUnloadAtlas(&r.atlas);
+        r.atlas = gdx? RblLoadAtlasFromMemory(fadeTrimGdx, (int)strlen(fadeTrimGdx), RBL_ATLAS_AUTO) : RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
+        RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas %d", gdx);
+        int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
+        RT_CHECK((fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].flags & RBL_FRAME_ROTATED) && !(r.atlas.frames[fr].flags & RBL_FRAME_ROTATED), "fixture frames");
+        RT_CHECK(!gdx || ((r.atlas.frames[fq].source.width < 0.0f) && (r.atlas.frames[fq].source.height < 0.0f)), "libGDX's turn: extents not negated");
+        Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
+        for (int k = 0; k < 4; k++)
+            if (mats[k]->maps != NULL)
+            {
+                mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+                mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;     // no cutoff: every partial alpha shows
+            }
+        RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+        // Pairs: upright to rotated, rotated to upright, upright to upright
+        const int pairs[3][2] = { { fp, fq }, { fq, fp }, { fp, fr } };
+        static const float weights[6] = { 0.0f, 1.0f, 1e-6f, 1.0f - 1e-6f, 0.5f, 0.25f };
+        for (int path = 0; path < 3; path++)
+        {
+            bool inst = (path == FADE_INSTANCED);
+            if (inst && !rtGlsl3()) continue;
+            Material plain = inst? r.mPlainInst : r.mPlain, fade = inst? r.mFadeInst : r.mFade;
+            for (int pr = 0; pr < 3; pr++)
+            {
+                int f0 = pairs[pr][0], f1 = pairs[pr][1];
+                Image pic0 = (f0 == fp)? picP : picQ, pic1 = (f1 == fp)? picP : picQ;
+                int x0 = (f0 == fp)? 1 : 5, y0 = (f0 == fp)? 2 : 1, x1 = (f1 == fp)? 1 : 5, y1 = (f1 == fp)? 2 : 1;
+                RblBillboard single[2];
+                memset(single, 0, sizeof(single));
+                RT_CHECK(RblAtlasBillboard(&r.atlas, f0, 1.0f, &single[0]) && RblAtlasBillboard(&r.atlas, f1, 1.0f, &single[1]), "single frames");
+                Image only0 = fadeRender(path, plain, &single[0], 1, false, 0), only1 = fadeRender(path, plain, &single[1], 1, false, 0);
+                // The single frames sit on their canvases (the reference's placement holds)
+                RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
+                for (int k = 0; k < 6; k++)
+                {
+                    RblBillboard card;
+                    memset(&card, 0, sizeof(card));
+                    RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card), "fade card");
+                    Image out = fadeRender(path, fade, &card, 1, true, 0);
+                    int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k]);
+                    int got = (k == 0)? vs0 : ((k == 1)? vs1 : ref), limit = (k < 2)? 0 : 1;
+                    printf("    %-9s %s pair %d (%s -> %s)  weight %-9.7g  vs first %3d  vs second %3d  vs double reference %3d\n", fadePathName[path], gdx? "libGDX" : "TP", pr,
+                           (f0 == fq)? "rotated" : "upright", (f1 == fq)? "rotated" : "upright", weights[k], vs0, vs1, ref);
+                    RT_CHECK(got <= limit, "%s pair %d weight %g: %d/255 off (limit %d)", fadePathName[path], pr, weights[k], got, limit);
+                    if (k >= 4) RT_CHECK(vs0 > 20 && vs1 > 20, "%s pair %d weight %g should be neither frame", fadePathName[path], pr, weights[k]);
+                    if (got > limit) rtSaveImage(out, fadePathName[path]);
+                    UnloadImage(out);
+                    checks++;
+                }
+                // The instance pair is the billboard's, field for field
+                RblInstance in; RblFade f;
+                memset(&in, 0, sizeof(in)); memset(&f, 0, sizeof(f));
                 RblBillboard card;
                 memset(&card, 0, sizeof(card));
-                RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card), "fade card");
-                Image out = fadeRender(path, fade, &card, 1, true, 0);
-                int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k]);
-                int got = (k == 0)? vs0 : ((k == 1)? vs1 : ref), limit = (k < 2)? 0 : 1;
-                printf("    %-9s pair %d (%s -> %s)  weight %-9.7g  vs first %3d  vs second %3d  vs double reference %3d\n", fadePathName[path], pr,
-                       (f0 == fq)? "rotated" : "upright", (f1 == fq)? "rotated" : "upright", weights[k], vs0, vs1, ref);
-                RT_CHECK(got <= limit, "%s pair %d weight %g: %d/255 off (limit %d)", fadePathName[path], pr, weights[k], got, limit);
-                if (k >= 4) RT_CHECK(vs0 > 20 && vs1 > 20, "%s pair %d weight %g should be neither frame", fadePathName[path], pr, weights[k]);
-                if (got > limit) rtSaveImage(out, fadePathName[path]);
-                UnloadImage(out);
-                checks++;
+                RT_CHECK(RblAtlasInstanceFade(&r.atlas, f0, f1, 0.5f, 1.0f, &in, &f) && RblAtlasBillboardFade(&r.atlas, f0, f1, 0.5f, 1.0f, &card), "fade pair");
+                RT_CHECK(memcmp(&in.source, &card.source, sizeof(Rectangle)) == 0 && memcmp(&in.size, &card.size, sizeof(Vector2)) == 0 &&
+                         memcmp(&in.origin, &card.origin, sizeof(Vector2)) == 0 && in.flags == card.flags && memcmp(&f, &card.fade, sizeof(f)) == 0, "RblAtlasInstanceFade differs from RblAtlasBillboardFade");
+                UnloadImage(only0); UnloadImage(only1);
             }
-            // The instance pair is the billboard's, field for field
-            RblInstance in; RblFade f;
-            memset(&in, 0, sizeof(in)); memset(&f, 0, sizeof(f));
-            RblBillboard card;
-            memset(&card, 0, sizeof(card));
-            RT_CHECK(RblAtlasInstanceFade(&r.atlas, f0, f1, 0.5f, 1.0f, &in, &f) && RblAtlasBillboardFade(&r.atlas, f0, f1, 0.5f, 1.0f, &card), "fade pair");
-            RT_CHECK(memcmp(&in.source, &card.source, sizeof(Rectangle)) == 0 && memcmp(&in.size, &card.size, sizeof(Vector2)) == 0 &&
-                     memcmp(&in.origin, &card.origin, sizeof(Vector2)) == 0 && in.flags == card.flags && memcmp(&f, &card.fade, sizeof(f)) == 0, "RblAtlasInstanceFade differs from RblAtlasBillboardFade");
-            UnloadImage(only0); UnloadImage(only1);
         }
     }
     // Equal trims: RblAtlasBillboardFade is RblAtlasBillboard plus the fade, unclipped (whole quad)
+    int fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
     RblBillboard one, two;
     memset(&one, 0, sizeof(one)); memset(&two, 0, sizeof(two));
     RT_CHECK(RblAtlasBillboard(&r.atlas, fq, 2.0f, &one) && RblAtlasBillboardFade(&r.atlas, fq, fr, 0.5f, 2.0f, &two), "equal trims");
