@@ -1086,7 +1086,7 @@ RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops);
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
 RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
-RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight; false = rejected (fade untouched)
+RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
 
 #if defined(__cplusplus)

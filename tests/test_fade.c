@@ -609,6 +609,23 @@ static int fadeImageDiffRgba(Image a, Image b)
     return worst;
 }
 
+// The trimmed fixture's 48x16 sheet for pictures p (10x6) and q (8x9): q turned clockwise
+// (TexturePacker) or counter-clockwise (libGDX), and upright as r. Opaque texels around every frame
+// (a packer without padding puts neighbours there): a fetch not clipped to its frame's trim shows them
+static Image fadeTrimSheet(Image picP, Image picQ, bool gdx)
+{
+    Image sheet = GenImageColor(48, 16, (Color){ 255, 0, 255, 255 });
+    for (int y = 0; y < 6; y++) for (int x = 0; x < 10; x++) ImageDrawPixel(&sheet, x, y, GetImageColor(picP, x, y));
+    for (int y = 0; y < 9; y++)
+        for (int x = 0; x < 8; x++)
+        {
+            if (gdx) ImageDrawPixel(&sheet, 16 + y, 7 - x, GetImageColor(picQ, x, y));      // counter-clockwise in a 9x8 block
+            else ImageDrawPixel(&sheet, 16 + (8 - y), x, GetImageColor(picQ, x, y));   // clockwise
+            ImageDrawPixel(&sheet, 32 + x, y, GetImageColor(picQ, x, y));
+        }
+    return sheet;
+}
+
 static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim(void)
 {
     unsigned int seed = 1234u;
@@ -626,17 +643,7 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
     int checks = 0;
     for (int gdx = 0; gdx < 2; gdx++)       // TexturePacker (q turned clockwise), libGDX (counter-clockwise)
     {
-        // Opaque texels around every frame (a packer without padding puts neighbours there): a fetch
-        // that is not clipped to its frame's trim shows them
-        Image sheet = GenImageColor(48, 16, (Color){ 255, 0, 255, 255 });
-        for (int y = 0; y < 6; y++) for (int x = 0; x < 10; x++) ImageDrawPixel(&sheet, x, y, GetImageColor(picP, x, y));
-        for (int y = 0; y < 9; y++)
-            for (int x = 0; x < 8; x++)
-            {
-                if (gdx) ImageDrawPixel(&sheet, 16 + y, 7 - x, GetImageColor(picQ, x, y));      // counter-clockwise in a 9x8 block
-                else ImageDrawPixel(&sheet, 16 + (8 - y), x, GetImageColor(picQ, x, y));   // clockwise
-                ImageDrawPixel(&sheet, 32 + x, y, GetImageColor(picQ, x, y));
-            }
+        Image sheet = fadeTrimSheet(picP, picQ, gdx);
         UnloadTexture(r.sheet);
         r.sheet = LoadTextureFromImage(sheet);
         UnloadImage(sheet);
@@ -713,6 +720,147 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
     fadeRigUnload(&r);
 }
 
+
+typedef struct FadeTrimShadowCard { int path; RblBillboard card; } FadeTrimShadowCard;
+static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
+{
+    const FadeTrimShadowCard *c = (const FadeTrimShadowCard *)ctx;
+    RblBillboard b = c->card;
+    b.position = (Vector3){ 0.0f, 0.0f, 1.0f };
+    b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    if (c->path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    else if (c->path == FADE_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, viewer);
+        RblBatchAdd(&batch, m, &b);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source; in.flags = b.flags;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
+        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
+        RblUnloadInstanceBuffer(&buf);
+    }
+}
+
+// Largest rgb difference over a shadow render (SH_TARGET square)
+static int fadeShadowDiff(Image a, Image b)
+{
+    int worst = 0;
+    for (int y = 0; y < SH_TARGET; y++)
+        for (int x = 0; x < SH_TARGET; x++)
+        {
+            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
+            int d = abs(p.r - q.r);
+            if (abs(p.g - q.g) > d) d = abs(p.g - q.g);
+            if (abs(p.b - q.b) > d) d = abs(p.b - q.b);
+            if (d > worst) worst = d;
+        }
+    return worst;
+}
+
+// The G-buffer's geometry pass and the shadow casters share the clip: frames of different trims
+// (the fixture above) at weight 0 and 1 store / cast exactly the single frame (0/255; unclipped,
+// the opaque neighbours would show), and at 0.5 the G-buffer holds the double mean where both
+// frames lie and nothing where neither does
+static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(void)
+{
+    unsigned int seed = 99u;
+    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
+    for (int i = 0; i < 60; i++) { unsigned int v = rtRandom(&seed); ((Color *)picP.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    for (int i = 0; i < 72; i++) { unsigned int v = rtRandom(&seed); ((Color *)picQ.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    Image sheetImg = fadeTrimSheet(picP, picQ, false);
+    Texture2D sheet = LoadTextureFromImage(sheetImg);
+    UnloadImage(sheetImg);
+    RblAtlas atlas = RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
+    int fp = RblAtlasFindFrame(&atlas, "p"), fq = RblAtlasFindFrame(&atlas, "q");
+    RT_CHECK(RblIsAtlasValid(&atlas) && fp >= 0 && fq >= 0, "fixture");
+    if (rtGlsl3())
+    {
+        RblLitShaderDesc desc;
+        memset(&desc, 0, sizeof(desc));
+        desc.deferred = true; desc.crossFade = true;
+        RblGBufferDesc gd;
+        memset(&gd, 0, sizeof(gd));
+        gd.width = FADE_RT; gd.height = FADE_RT;
+        RblGBuffer g = RblLoadGBuffer(gd);
+        RT_CHECK(RblIsGBufferValid(&g), "G-buffer");
+        RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+        Shader geo = RblLoadLitShader(desc);
+        Material m = LoadMaterialDefault();
+        m.shader = geo;
+        m.maps[MATERIAL_MAP_ALBEDO].texture = sheet;
+        Camera3D cam = fadeCamera();
+        Image img[5];
+        for (int k = 0; k < 5; k++)     // single p, single q, fades at 0, 1, 0.5
+        {
+            RblBillboard card;
+            memset(&card, 0, sizeof(card));
+            if (k < 2) RblAtlasBillboard(&atlas, k? fq : fp, 1.0f, &card);
+            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : ((k == 3)? 1.0f : 0.5f), 1.0f, &card);
+            RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass");
+            RblDrawBillboard(cam, m, card);
+            RblEndGBuffer(&g);
+            RT_CHECK(RblDrawDeferredLights(&g), "lights");
+            RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+            BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+            img[k] = rtReadTarget(rt);
+            UnloadRenderTexture(rt);
+        }
+        int d0 = fadeImageDiffRgba(img[2], img[0]), d1 = fadeImageDiffRgba(img[3], img[1]), both = 0, none = 0;
+        for (int y = 0; y < FADE_RT; y++)
+            for (int x = 0; x < FADE_RT; x++)
+            {
+                Color ca = fadeTrimCanvas(picP, 1, 2, x - 24, y - 26), cb = fadeTrimCanvas(picQ, 5, 1, x - 24, y - 26), got = rtPixel(img[4], x, y);
+                if ((ca.a == 0) && (cb.a == 0)) { if (got.a != 0 || got.r != 0 || got.g != 0 || got.b != 0) none++; continue; }
+                if ((ca.a == 0) || (cb.a == 0)) continue;
+                const unsigned char pc[3] = { ca.r, ca.g, ca.b }, qc[3] = { cb.r, cb.g, cb.b }, gc[3] = { got.r, got.g, got.b };
+                for (int c = 0; c < 3; c++)
+                {
+                    double want = 255.0*srgbEncode(0.5*srgbDecode(pc[c]/255.0) + 0.5*srgbDecode(qc[c]/255.0));
+                    int d = (int)ceil(fabs(want - gc[c]) - 0.5);
+                    if (d > both) both = d;
+                }
+            }
+        printf("    geometry pass: weight 0 vs p %d, weight 1 vs q %d, weight 0.5 where both lie %d/255 from the double mean, %d pixels drawn where neither lies\n", d0, d1, both, none);
+        RT_CHECK(d0 == 0 && d1 == 0 && both <= 1 && none == 0, "deferred trimmed fade: %d %d %d %d", d0, d1, both, none);
+        for (int k = 0; k < 5; k++) UnloadImage(img[k]);
+        RblUnloadLitShader(&geo);
+        MemFree(m.maps);
+        RblUnloadGBuffer(&g);
+    }
+    // Shadows: a card facing the light's floor, canvas 16x12 at 1/8 world unit a pixel
+    ShSetup s = shSetup((Vector3){ 0.0f, 0.0f, -1.0f });
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)
+    {
+        Image img[4];
+        for (int k = 0; k < 4; k++)     // single p, single q, fades at 0 and 1
+        {
+            FadeTrimShadowCard c;
+            memset(&c, 0, sizeof(c));
+            c.path = path;
+            if (k < 2) RblAtlasBillboard(&atlas, k? fq : fp, 0.125f, &c.card);
+            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : 1.0f, 0.125f, &c.card);
+            img[k] = shRender(&s, fadeTrimShadowCaster, &c, sheet, false);
+        }
+        int d0 = fadeShadowDiff(img[2], img[0]), d1 = fadeShadowDiff(img[3], img[1]), pq = fadeShadowDiff(img[0], img[1]);
+        printf("    %-9s shadow: weight 0 vs p %d, weight 1 vs q %d (p vs q %d)\n", fadePathName[path], d0, d1, pq);
+        RT_CHECK(d0 == 0 && d1 == 0 && pq > 40, "%s trimmed fade casters: %d %d (p vs q %d)", fadePathName[path], d0, d1, pq);
+        for (int k = 0; k < 4; k++) UnloadImage(img[k]);
+    }
+    UnloadTexture(sheet);
+    RblUnloadAtlas(&atlas);
+    UnloadImage(picP); UnloadImage(picQ);
+}
+
 #define RBL_FADE_TESTS \
         RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
         RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
@@ -722,4 +870,5 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
         RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
         RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
         RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
-        RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim)
+        RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
+        RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters)
