@@ -3441,15 +3441,15 @@ static void rbl__frameAxes(bool rotated, bool flipU, bool flipV, float t[2], flo
     else { t[0] = 0.0f; t[1] = flipV? -1.0f : 1.0f; v[0] = flipU? -1.0f : 1.0f; v[1] = 0.0f; }
 }
 
-// Position of picture point (ps, pt) (quad fractions, top-left origin) in clip rectangle c (zero =
-// the whole quad); an axis c covers whole is 0.5, so frames of equal trim are never clipped by
-// rounding (lit_instanced.vs.glsl's rblFadeClipLocal)
-static void rbl__fadeClipLocal(Rectangle c, float ps, float pt, float out[2])
+// Positions of the picture's edges (quad fractions 0 and 1, top-left origin) in clip rectangle c
+// (zero = the whole quad): out = { x at 0, x at 1, y at 0, y at 1 }; an axis c covers whole is 0.5,
+// so frames of equal trim are never clipped by rounding (lit_instanced.vs.glsl's rblFadeClipLocal)
+static void rbl__fadeClipEdges(Rectangle c, float out[4])
 {
-    out[0] = out[1] = 0.5f;
+    out[0] = out[1] = out[2] = out[3] = 0.5f;
     if (!((c.width > 0.0f) && (c.height > 0.0f))) return;
-    if (!((c.x <= 0.0f) && (c.x + c.width >= 1.0f))) out[0] = (ps - c.x)/c.width;
-    if (!((c.y <= 0.0f) && (c.y + c.height >= 1.0f))) out[1] = (pt - c.y)/c.height;
+    if (!((c.x <= 0.0f) && (c.x + c.width >= 1.0f))) { float inv = 1.0f/c.width; out[0] = -c.x*inv; out[1] = (1.0f - c.x)*inv; }
+    if (!((c.y <= 0.0f) && (c.y + c.height >= 1.0f))) { float inv = 1.0f/c.height; out[2] = -c.y*inv; out[3] = (1.0f - c.y)*inv; }
 }
 
 // The fade stream of a billboard (rbl__billboardOk passed): per corner (bottom-left, bottom-right,
@@ -3477,6 +3477,9 @@ static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textu
     float invW = 1.0f/(float)textureWidth, invH = 1.0f/(float)textureHeight;
     float fu0 = f.x*invW, fu1 = (f.x + fabsf(f.width))*invW, fv0 = f.y*invH, fv1 = (f.y + fabsf(f.height))*invH;
     static const float cs[4] = { 0.0f, 1.0f, 1.0f, 0.0f }, ct[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
+    float edges[2][4];
+    rbl__fadeClipEdges(b->fade.clip[0], edges[0]);
+    rbl__fadeClipEdges(b->fade.clip[1], edges[1]);
     for (int i = 0; i < 4; i++)
     {
         float sc = flipU? 1.0f - cs[i] : cs[i], tc = flipV? 1.0f - ct[i] : ct[i];
@@ -3487,9 +3490,9 @@ static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textu
         o[2] = b->fade.weight;
         o[3] = code;
         // Clip rectangles are in the picture: a mirrored quad mirrors them with it
-        float ps = (b->size.x < 0.0f)? 1.0f - cs[i] : cs[i], pt = (b->size.y < 0.0f)? 1.0f - ct[i] : ct[i];
-        rbl__fadeClipLocal(b->fade.clip[0], ps, pt, o + 4);
-        rbl__fadeClipLocal(b->fade.clip[1], ps, pt, o + 6);
+        int ps = ((b->size.x < 0.0f) != (cs[i] > 0.5f))? 1 : 0, pt = ((b->size.y < 0.0f) != (ct[i] > 0.5f))? 1 : 0;
+        o[4] = edges[0][ps]; o[5] = edges[0][2 + pt];
+        o[6] = edges[1][ps]; o[7] = edges[1][2 + pt];
     }
 }
 
