@@ -309,20 +309,26 @@
 *         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
 *         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
 *         skipped. RblSpriteBlend: next frame and time/duration.
-*       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblSpriteFade(&player, &atlas,
-*         &billboard.fade) after RblAtlasBillboard mixes the next frame in by time/duration. The
+*       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblAtlasBillboardFade(&atlas,
+*         player.frame, next, w, scale, &billboard) with next and w from RblSpriteBlend (instances:
+*         RblAtlasInstanceFade, an RblFade beside each) mixes the next frame in by time/duration. The
 *         program fetches every map at both frames' UVs (a program without the option fetches once):
 *         colour in linear light weighted by coverage (a transparent texel's colour never bleeds in),
 *         alpha linearly with the cutoff on the mix, the normal as a world vector (each fetch decoded
 *         in its own frame's tangent axes: frames stored rotated differently mix correctly), then
 *         renormalised; specular, occlusion and emission by the colour's weight. Weight 0 and 1 are
-*         the single frames exactly. Data only where used: the batch's fade stream (16 floats per
-*         billboard, attribute location 5) exists from its first billboard with a weight, instanced
-*         draws upload RblInstancedDesc.fades (24 bytes an instance, fades[i] with instances[i]) to a
+*         the single frames exactly. Data only where used: the batch's fade stream (32 floats per
+*         billboard, attribute location 5 and rblFadeClip) exists from its first billboard with a
+*         weight or clip, instanced draws upload RblInstancedDesc.fades (56 bytes an instance, fades[i] with instances[i]) to a
 *         second buffer only when it is non-NULL; without data the weight is a constant 0. Shadow
 *         passes cut faded casters by the mixed alpha; deferred geometry variants take the option.
-*         The second frame is drawn over the first's quad: frames of different trim rectangles (or
-*         sizes) do not line up (export untrimmed, or with one trim per animation, to cross-fade).
+*         Frames trimmed differently: each stays where its untrimmed canvas and pivot put it (as
+*         RblAtlasBillboard places it alone); the quad covers the union of the two trims, each
+*         frame's source stretched over it, and RblFade.clip[k] is frame k's trim in the quad: a
+*         fetch outside it is transparent (alpha 0, no colour, normal or emission), and where the
+*         frame shown alone (w 0 or 1) or neither lies there is no fragment. Axes a frame covers
+*         whole are never clipped: equal trims draw as unclipped. RblSpriteFade fills the source,
+*         flags and weight only (zero clips: over the first frame's quad).
 *       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
 *         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
@@ -353,7 +359,8 @@
 *         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
 *         billboards still turn toward camera.position (their shading uses the parallel view).
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
-*       - Cross-fade mixes two frames over the first frame's quad (equal trims line up; see SPRITE SHEETS).
+*       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
+*         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:
@@ -598,6 +605,7 @@ typedef struct RblFade {
     Rectangle source;               // Second frame in texels, as RblBillboard.source (zero = whole texture), drawn over the first's quad
     float weight;                   // Share of the second frame, 0..1 (0 = the first alone; NaN/Inf or outside refused)
     unsigned int flags;             // The second frame's RBL_FRAME_ROTATED bit (other bits ignored)
+    Rectangle clip[2];              // Where each frame ([0] first, [1] second) is drawn: its trimmed part of the quad as fractions (x, y from the picture's top-left, width, height); zero = the whole quad (RblAtlasBillboardFade fills these)
 } RblFade;
 
 // One billboard; zero fields take their defaults
@@ -1072,11 +1080,13 @@ RBLAPI int RblAtlasFindFrame(const RblAtlas *atlas, const char *name);        //
 RBLAPI int RblAtlasFindTag(const RblAtlas *atlas, const char *name);          // First tag of that name; -1 when none
 RBLAPI bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale, RblBillboard *billboard); // Set source, size, origin and flags for a frame (world units per pixel); the rest kept
 RBLAPI bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance);   // The same for an instance
+RBLAPI bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard); // Cross-fade frame into nextFrame by weight 0..1: the quad covers both trims (each where its canvas and pivot put it), source, size, origin, flags and fade set; the rest kept
+RBLAPI bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblInstance *instance, RblFade *fade); // The same for an instance and its RblInstancedDesc.fades entry
 RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops); // Start a tag (-1 = all frames); loops: 0 = the tag's repeat, n > 0 = n passes, -1 = forever
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
 RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
-RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight; false = rejected (fade untouched)
+RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
 
 #if defined(__cplusplus)
@@ -1161,6 +1171,7 @@ typedef struct rbl__Program {
     int loc[RBL__U_COUNT];          // Uniform locations
     int refs;                       // Holders: RblLoadLitShader handles, shadow maps, G-buffers
     rbl__MaterialValues values;     // Last per-draw values uploaded
+    int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
     bool valuesValid;
 } rbl__Program;
 
@@ -2070,6 +2081,11 @@ static const char *const rbl__shader_lit_vs[] = {
     "RBL_ATTRIBUTE vec4 vertexTexCoord2;\n",
     "RBL_VARYING vec2 fragTexCoord2;\n",
     "RBL_FLAT RBL_VARYING vec2 fragFade;\n",
+    "// The stream's second half: each frame's position in its trimmed rectangle (material.glsl\n",
+    "// fragFadeClip); its location is the linker's (queried: the 1.x dialects have no layout). Without\n",
+    "// the stream it is constant (0 or 1 components: inside)\n",
+    "RBL_ATTRIBUTE vec4 rblFadeClip;\n",
+    "RBL_VARYING vec4 fragFadeClip;\n",
     "#endif\n",
     "\n",
     "uniform mat4 mvp;\n",
@@ -2099,6 +2115,7 @@ static const char *const rbl__shader_lit_vs[] = {
     "#ifdef RBL_CROSS_FADE\n",
     "    fragTexCoord2 = vertexTexCoord2.xy;\n",
     "    fragFade = vertexTexCoord2.zw;\n",
+    "    fragFadeClip = rblFadeClip;\n",
     "#endif\n",
     "    fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex\n",
     "    fragNormal = rblMat3(matNormal)*normal;\n",
@@ -2134,8 +2151,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "layout(location = 15) in vec4 rblInstanceFadeSource; // the second frame, as rblInstanceSource\n",
     "layout(location = 6) in float rblInstanceFadeWeight; // 0..1\n",
     "layout(location = 7) in float rblInstanceFadeFlags;  // its RBL_FRAME_ROTATED bit\n",
+    "layout(location = 8) in vec4 rblInstanceFadeClip;   // RblFade.clip[0]: the first frame's trimmed part of the quad (zero = all)\n",
+    "layout(location = 9) in vec4 rblInstanceFadeClip2;  // RblFade.clip[1]: the second frame's\n",
     "RBL_VARYING vec2 fragTexCoord2;\n",
     "RBL_FLAT RBL_VARYING vec2 fragFade;                  // weight, tangent axes code (material.glsl rblFadeAxes)\n",
+    "RBL_VARYING vec4 fragFadeClip;                       // both frames' positions in their rectangles\n",
     "#endif\n",
     "\n",
     "uniform mat4 mvp;\n",
@@ -2373,6 +2393,17 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    return (src.xy + (rotated? vec2(1.0 - t, s) : vec2(s, t))*abs(src.zw))/textureSize;\n",
     "}\n",
     "\n",
+    "// Position of picture point p (quad fractions, top-left origin) in clip rectangle c (x, y, width,\n",
+    "// height; zero size = the whole quad); an axis c covers whole is 0.5 (as the CPU's rbl__fadeClipLocal)\n",
+    "vec2 rblFadeClipLocal(vec4 c, vec2 p)\n",
+    "{\n",
+    "    if (!((c.z > 0.0) && (c.w > 0.0))) return vec2(0.5);\n",
+    "    vec2 l = (p - c.xy)/c.zw;\n",
+    "    if ((c.x <= 0.0) && (c.x + c.z >= 1.0)) l.x = 0.5;\n",
+    "    if ((c.y <= 0.0) && (c.y + c.w >= 1.0)) l.y = 0.5;\n",
+    "    return l;\n",
+    "}\n",
+    "\n",
     "// The second frame's axes against the first's: swap (its +U along the first's V) + 2 negT + 4 negV\n",
     "float rblFadeCode(vec2 t1, vec2 v1, vec2 t2, vec2 v2)\n",
     "{\n",
@@ -2410,6 +2441,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblFrameTexCoord(rblInstanceSource, (int(rblInstanceFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t1, v1);\n",
     "    fragTexCoord2 = rblFrameTexCoord(rblInstanceFadeSource, (int(rblInstanceFadeFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t2, v2);\n",
     "    fragFade = vec2(rblInstanceFadeWeight, rblFadeCode(t1, v1, t2, v2));\n",
+    "    // Clip rectangles are in the picture: a mirrored quad mirrors them with it\n",
+    "    vec2 picture = vec2((rblInstanceSize.x < 0.0)? 1.0 - cs : cs, (rblInstanceSize.y < 0.0)? 1.0 - ct : ct);\n",
+    "    fragFadeClip = vec4(rblFadeClipLocal(rblInstanceFadeClip, picture), rblFadeClipLocal(rblInstanceFadeClip2, picture));\n",
     "#endif\n",
     "    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
     "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex\n",
@@ -2452,6 +2486,9 @@ static const char *const rbl__shader_material[] = {
     "#ifdef RBL_CROSS_FADE\n",
     "RBL_VARYING vec2 fragTexCoord2;          // the second frame's texture coordinate\n",
     "RBL_FLAT RBL_VARYING vec2 fragFade;      // x weight 0..1 of the second frame, y its tangent axes (rblFadeAxes)\n",
+    "// Each frame's position within its own trimmed rectangle (xy the first, zw the second): inside is\n",
+    "// 0..1 on both axes; an axis the frame covers whole is a constant 0.5 (never clipped by rounding)\n",
+    "RBL_VARYING vec4 fragFadeClip;\n",
     "// Exact ends: weight 0 is the first frame and 1 the second, bit for bit (no mix rounding)\n",
     "#define rblFadeMix(a, b, w) (((w) <= 0.0)? (a) : (((w) >= 1.0)? (b) : mix((a), (b), (w))))\n",
     "#endif\n",
@@ -2510,6 +2547,12 @@ static const char *const rbl__shader_material[] = {
     "\n",
     "// Weight of the second frame's surface values: its share of the mixed coverage, so the colour and\n",
     "// data of a transparent texel (gutter or background) never bleed in\n",
+    "// 1 inside a frame's trimmed rectangle, 0 outside (there it is transparent: no colour, no normal)\n",
+    "float rblFadeInside(vec2 local)\n",
+    "{\n",
+    "    return ((local.x >= 0.0) && (local.x <= 1.0) && (local.y >= 0.0) && (local.y <= 1.0))? 1.0 : 0.0;\n",
+    "}\n",
+    "\n",
     "float rblFadeCoverage(float w, float a1, float a2)\n",
     "{\n",
     "    if (w <= 0.0) return 0.0;\n",
@@ -2528,6 +2571,11 @@ static const char *const rbl__shader_material[] = {
     "    // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample\n",
     "    vec4 texel2 = texture(texture0, fragTexCoord2);\n",
     "    float fade = fragFade.x;\n",
+    "    float inside1 = rblFadeInside(fragFadeClip.xy), inside2 = rblFadeInside(fragFadeClip.zw);\n",
+    "    // Outside the frame shown alone (or both) there is no fragment, as with that frame's own quad\n",
+    "    if ((inside1 + inside2 == 0.0) || ((fade <= 0.0) && (inside1 == 0.0)) || ((fade >= 1.0) && (inside2 == 0.0))) discard;\n",
+    "    texel *= inside1;\n",
+    "    texel2 *= inside2;\n",
     "    float cover = rblFadeCoverage(fade, texel.a, texel2.a);\n",
     "    texel = vec4(rblFadeMix(rblSrgbToLinear(texel.rgb), rblSrgbToLinear(texel2.rgb), cover), rblFadeMix(texel.a, texel2.a, fade));\n",
     "    vec4 albedo = vec4(texel.rgb*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);\n",
@@ -2610,9 +2658,9 @@ static const char *const rbl__shader_material[] = {
     "    alpha = albedo.a;\n",
     "    emission = vec3(0.0);\n",
     "#if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)\n",
-    "    emission += albedo.rgb*rblFadeMix(texture(texture5, fragTexCoord).r, texture(texture5, fragTexCoord2).r, cover)*rblEmissiveIntensity;\n",
+    "    emission += albedo.rgb*rblFadeMix(texture(texture5, fragTexCoord).r*inside1, texture(texture5, fragTexCoord2).r*inside2, cover)*rblEmissiveIntensity;\n",
     "#elif defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 2)\n",
-    "    emission += rblFadeMix(rblSrgbToLinear(texture(texture5, fragTexCoord).rgb), rblSrgbToLinear(texture(texture5, fragTexCoord2).rgb), cover)*rblEmissiveIntensity;\n",
+    "    emission += rblFadeMix(rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*inside1, rblSrgbToLinear(texture(texture5, fragTexCoord2).rgb)*inside2, cover)*rblEmissiveIntensity;\n",
     "#elif RBL_EMISSIVE == 1\n",
     "    emission += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;\n",
     "#elif RBL_EMISSIVE == 2\n",
@@ -3357,9 +3405,22 @@ static void rbl__albedoSize(const Material *material, int *width, int *height)
 // (checked at compile time), below 2^60 so that corners (position + size along unit axes), eye
 // distances and texcoords (source edges / texture size) stay finite; a known facing; a texture of
 // 1..65536 texels
+// The batch's fade stream: per vertex the second frame's texture coordinate, weight, axes code
+// (location 5) and both frames' clip positions (rblFadeClip); four vertices a billboard
+#define RBL__FADE_VERTEX_FLOATS 8
+#define RBL__FADE_FLOATS (4*RBL__FADE_VERTEX_FLOATS)
 // A cross-fade: weight 0..1, the second frame's rectangle below the bound (limitExponent)
+// and each clip rectangle zero or inside 2^-20 <= width, height <= 2^20, |x|, |y| <= 2^20 (the
+// shaders divide by the extents)
 static bool rbl__fadeOk(const RblFade *f, unsigned int limitExponent)
 {
+    for (int k = 0; k < 2; k++)
+    {
+        const Rectangle c = f->clip[k];
+        if ((c.x == 0.0f) && (c.y == 0.0f) && (c.width == 0.0f) && (c.height == 0.0f)) continue;
+        const float big = 1048576.0f, small = 1.0f/1048576.0f;
+        if (!((fabsf(c.x) <= big) && (fabsf(c.y) <= big) && (c.width >= small) && (c.width <= big) && (c.height >= small) && (c.height <= big))) return false;
+    }
     return rbl__finite(f->weight) && (f->weight >= 0.0f) && (f->weight <= 1.0f) && rbl__exponentsBelow(&f->source, 4, limitExponent);
 }
 
@@ -3380,10 +3441,22 @@ static void rbl__frameAxes(bool rotated, bool flipU, bool flipV, float t[2], flo
     else { t[0] = 0.0f; t[1] = flipV? -1.0f : 1.0f; v[0] = flipU? -1.0f : 1.0f; v[1] = 0.0f; }
 }
 
+// Positions of the picture's edges (quad fractions 0 and 1, top-left origin) in clip rectangle c
+// (zero = the whole quad): out = { x at 0, x at 1, y at 0, y at 1 }; an axis c covers whole is 0.5,
+// so frames of equal trim are never clipped by rounding (lit_instanced.vs.glsl's rblFadeClipLocal)
+static void rbl__fadeClipEdges(Rectangle c, float out[4])
+{
+    out[0] = out[1] = out[2] = out[3] = 0.5f;
+    if (!((c.width > 0.0f) && (c.height > 0.0f))) return;
+    if (!((c.x <= 0.0f) && (c.x + c.width >= 1.0f))) { float inv = 1.0f/c.width; out[0] = -c.x*inv; out[1] = (1.0f - c.x)*inv; }
+    if (!((c.y <= 0.0f) && (c.y + c.height >= 1.0f))) { float inv = 1.0f/c.height; out[2] = -c.y*inv; out[3] = (1.0f - c.y)*inv; }
+}
+
 // The fade stream of a billboard (rbl__billboardOk passed): per corner (bottom-left, bottom-right,
 // top-right, top-left) the second frame's texture coordinate, the weight, and its axes against the
-// first frame's as material.glsl's rblFadeAxes reads them (swap + 2 negT + 4 negV)
-static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textureHeight, float out[16])
+// first frame's as material.glsl's rblFadeAxes reads them (swap + 2 negT + 4 negV); then each
+// frame's position in its clip rectangle (material.glsl fragFadeClip)
+static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textureHeight, float out[RBL__FADE_FLOATS])
 {
     Rectangle src[2] = { b->source, b->fade.source };
     bool rotated[2] = { (b->flags & RBL_FRAME_ROTATED) != 0, (b->fade.flags & RBL_FRAME_ROTATED) != 0 };
@@ -3404,14 +3477,22 @@ static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textu
     float invW = 1.0f/(float)textureWidth, invH = 1.0f/(float)textureHeight;
     float fu0 = f.x*invW, fu1 = (f.x + fabsf(f.width))*invW, fv0 = f.y*invH, fv1 = (f.y + fabsf(f.height))*invH;
     static const float cs[4] = { 0.0f, 1.0f, 1.0f, 0.0f }, ct[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
+    float edges[2][4];
+    rbl__fadeClipEdges(b->fade.clip[0], edges[0]);
+    rbl__fadeClipEdges(b->fade.clip[1], edges[1]);
     for (int i = 0; i < 4; i++)
     {
         float sc = flipU? 1.0f - cs[i] : cs[i], tc = flipV? 1.0f - ct[i] : ct[i];
         float fu = rotated[1]? 1.0f - tc : sc, fv = rotated[1]? sc : tc;     // frame position (a rotated frame: sprite (s,t) at (1-t, s))
-        out[i*4 + 0] = (fu > 0.5f)? fu1 : fu0;
-        out[i*4 + 1] = (fv > 0.5f)? fv1 : fv0;
-        out[i*4 + 2] = b->fade.weight;
-        out[i*4 + 3] = code;
+        float *o = out + i*RBL__FADE_VERTEX_FLOATS;
+        o[0] = (fu > 0.5f)? fu1 : fu0;
+        o[1] = (fv > 0.5f)? fv1 : fv0;
+        o[2] = b->fade.weight;
+        o[3] = code;
+        // Clip rectangles are in the picture: a mirrored quad mirrors them with it
+        int ps = ((b->size.x < 0.0f) != (cs[i] > 0.5f))? 1 : 0, pt = ((b->size.y < 0.0f) != (ct[i] > 0.5f))? 1 : 0;
+        o[4] = edges[0][ps]; o[5] = edges[0][2 + pt];
+        o[6] = edges[1][ps]; o[7] = edges[1][2 + pt];
     }
 }
 
@@ -3692,7 +3773,7 @@ static bool rbl__growBatch(rbl__BatchState *batch)
     int newCapacity = (batch->capacity > RBL_MAX_BATCH_BILLBOARDS/2)? RBL_MAX_BATCH_BILLBOARDS : batch->capacity*2;
     if (batch->fade != NULL)
     {
-        float *fade = (float *)RBL_REALLOC(batch->fade, (size_t)newCapacity*16*sizeof(float));
+        float *fade = (float *)RBL_REALLOC(batch->fade, (size_t)newCapacity*RBL__FADE_FLOATS*sizeof(float));
         if (fade == NULL) return false;
         batch->fade = fade;
     }
@@ -3734,18 +3815,20 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
         return false;
     }
-    // The fade stream starts with the first faded billboard (earlier ones get weight 0)
-    if ((billboard->fade.weight > 0.0f) || batch->fading)
+    // The fade stream starts with the first faded billboard (earlier ones get weight 0); a clipped
+    // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn)
+    const Rectangle *clip = billboard->fade.clip;
+    if ((billboard->fade.weight > 0.0f) || batch->fading || (clip[0].width != 0.0f) || (clip[0].height != 0.0f) || (clip[1].width != 0.0f) || (clip[1].height != 0.0f))
     {
-        if (batch->fade == NULL) batch->fade = (float *)RBL_MALLOC((size_t)batch->capacity*16*sizeof(float));
+        if (batch->fade == NULL) batch->fade = (float *)RBL_MALLOC((size_t)batch->capacity*RBL__FADE_FLOATS*sizeof(float));
         if (batch->fade == NULL)
         {
             if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (out of memory for the fade stream); further skips this batch are not logged", fn);
             return false;
         }
-        if (!batch->fading) memset(batch->fade, 0, (size_t)batch->count*16*sizeof(float));
+        if (!batch->fading) memset(batch->fade, 0, (size_t)batch->count*RBL__FADE_FLOATS*sizeof(float));
         batch->fading = true;
-        rbl__fadeVertices(billboard, texW, texH, batch->fade + (size_t)batch->count*16);
+        rbl__fadeVertices(billboard, texW, texH, batch->fade + (size_t)batch->count*RBL__FADE_FLOATS);
     }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
@@ -3893,13 +3976,13 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
     if (!batch->fading) return true;
     if (batch->fadeSortCapacity < batch->capacity)
     {
-        float *f = (float *)RBL_MALLOC((size_t)batch->capacity*16*sizeof(float));
+        float *f = (float *)RBL_MALLOC((size_t)batch->capacity*RBL__FADE_FLOATS*sizeof(float));
         if (f == NULL) return false;
         RBL_FREE(batch->fadeSorted);
         batch->fadeSorted = f;
         batch->fadeSortCapacity = batch->capacity;
     }
-    for (int i = 0; i < batch->count; i++) memcpy(batch->fadeSorted + (size_t)i*16, batch->fade + (size_t)batch->keys[i].index*16, 16*sizeof(float));
+    for (int i = 0; i < batch->count; i++) memcpy(batch->fadeSorted + (size_t)i*RBL__FADE_FLOATS, batch->fade + (size_t)batch->keys[i].index*RBL__FADE_FLOATS, RBL__FADE_FLOATS*sizeof(float));
     return true;
 }
 
@@ -3918,7 +4001,13 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
         rlDisableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2);
         rlSetVertexAttributeDefault(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2, none, SHADER_ATTRIB_VEC4, 4);
+        if (program->fadeClipLoc >= 0)
+        {
+            rlDisableVertexAttribute((unsigned int)program->fadeClipLoc);      // constant 0: inside both (unclipped)
+            rlSetVertexAttributeDefault(program->fadeClipLoc, none, SHADER_ATTRIB_VEC4, 4);
+        }
     }
+    const int clipLoc = (batch->fading && (program != NULL))? program->fadeClipLoc : -1;
     for (int q = 0; q < count; q += RBL__QUADS_PER_CHUNK)
     {
         int n = count - q;
@@ -3927,8 +4016,15 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         if (batch->fading)
         {
             rlEnableVertexBuffer(batch->fadeVboId);
-            rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2, 4, RL_FLOAT, false, 16, (int)((size_t)(first + q)*16*sizeof(float)));
+            const int stride = RBL__FADE_VERTEX_FLOATS*(int)sizeof(float);
+            const size_t at = (size_t)(first + q)*RBL__FADE_FLOATS*sizeof(float);
+            rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2, 4, RL_FLOAT, false, stride, (int)at);
             rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2);
+            if (clipLoc >= 0)
+            {
+                rlSetVertexAttribute((unsigned int)clipLoc, 4, RL_FLOAT, false, stride, (int)(at + 4*sizeof(float)));
+                rlEnableVertexAttribute((unsigned int)clipLoc);
+            }
             rlEnableVertexBuffer(batch->vboId);     // the next chunk's layout reads the bound buffer
         }
         rlDrawVertexArrayElements(0, n*6, 0);
@@ -3977,7 +4073,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     }
     if (batch->fading && (batch->fadeGpuCapacity < batch->capacity))
     {
-        unsigned int id = rlLoadVertexBuffer(NULL, batch->capacity*16*(int)sizeof(float), true);
+        unsigned int id = rlLoadVertexBuffer(NULL, batch->capacity*RBL__FADE_FLOATS*(int)sizeof(float), true);
         if (id == 0) { TraceLog(LOG_WARNING, "RBL: %s: GPU fade buffer for %i billboards could not be created; nothing drawn", fn, batch->capacity); return; }
         if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
         batch->fadeVboId = id;
@@ -3999,7 +4095,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
-    if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*16*(int)sizeof(float), 0);
+    if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
     rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
     unsigned int bound = 0;
@@ -4201,8 +4297,8 @@ static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, C
     return buffer->sorted;
 }
 
-// Fade attribute locations of lit_instanced.vs.glsl: second source, weight, flags
-static const unsigned int rbl__fadeLocations[3] = { 15, 6, 7 };
+// Fade attribute locations of lit_instanced.vs.glsl: second source, weight, flags, both clips
+static const unsigned int rbl__fadeLocations[5] = { 15, 6, 7, 8, 9 };
 
 // The fade buffer of an instanced draw (its VAO bound): fades uploaded and bound per instance, or
 // without them the attributes off and constant (weight 0) for a program that reads them
@@ -4215,6 +4311,8 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
         {
             const float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
             rlSetVertexAttributeDefault((int)rbl__fadeLocations[1], none, SHADER_ATTRIB_FLOAT, 1);
+            rlSetVertexAttributeDefault((int)rbl__fadeLocations[3], none, SHADER_ATTRIB_VEC4, 4);     // zero clips: whole quads
+            rlSetVertexAttributeDefault((int)rbl__fadeLocations[4], none, SHADER_ATTRIB_VEC4, 4);
         }
         return;
     }
@@ -4223,7 +4321,9 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
     rlSetVertexAttribute(rbl__fadeLocations[0], 4, RL_FLOAT, false, stride, (int)offsetof(RblFade, source));
     rlSetVertexAttribute(rbl__fadeLocations[1], 1, RL_FLOAT, false, stride, (int)offsetof(RblFade, weight));
     rlSetVertexAttribute(rbl__fadeLocations[2], 1, 0x1405 /* GL_UNSIGNED_INT, converted to float */, false, stride, (int)offsetof(RblFade, flags));
-    for (int i = 0; i < 3; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
+    rlSetVertexAttribute(rbl__fadeLocations[3], 4, RL_FLOAT, false, stride, (int)offsetof(RblFade, clip));
+    rlSetVertexAttribute(rbl__fadeLocations[4], 4, RL_FLOAT, false, stride, (int)(offsetof(RblFade, clip) + sizeof(Rectangle)));
+    for (int i = 0; i < 5; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
 }
 
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
@@ -4374,7 +4474,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rlDrawVertexArrayInstanced(0, 6, n);
-    if (fadeUpload != NULL) for (int i = 0; i < 3; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
+    if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
@@ -5762,6 +5862,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     // The fade stream is the header's own: raylib's DrawMesh must not bind a Model's (perhaps absent)
     // texcoord2 buffer there; unbound, the attribute is constant and its weight 0
     p->shader.locs[SHADER_LOC_VERTEX_TEXCOORD02] = -1;
+    p->fadeClipLoc = (d->crossFade && !d->instanced)? rlGetLocationAttrib(shader.id, "rblFadeClip") : -1;
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
@@ -8425,6 +8526,84 @@ bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblIns
     return true;
 }
 
+// Cross-fade quad of two frames: the union of their trimmed rectangles (pixels from each frame's own
+// pivot, y down: the pivots coincide), each frame's source stretched to the union (texture
+// coordinates run on past its trim at the same rate) and its trim as a clip rectangle of the union.
+// Frames of equal trim and pivot give the single frame's quad and source exactly (no clip)
+static bool rbl__atlasFadeQuad(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, const char *fn,
+                               Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags, RblFade *fade)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, fn);
+    if (s == NULL) return false;
+    if ((frame < 0) || (frame >= s->frameCount) || (nextFrame < 0) || (nextFrame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frames %i, %i not both in 0..%i", fn, frame, nextFrame, s->frameCount - 1); return false; }
+    if (!rbl__finite(weight) || (weight < 0.0f) || (weight > 1.0f)) { TraceLog(LOG_WARNING, "RBL: %s: weight must be in 0..1", fn); return false; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
+    const RblAtlasFrame *f[2] = { &s->frames[frame], &s->frames[nextFrame] };
+    if (f[0]->page != f[1]->page) { TraceLog(LOG_WARNING, "RBL: %s: frames %i and %i lie in different sheets (one texture is sampled)", fn, frame, nextFrame); return false; }
+    double r[2][4];                 // left, top, right, bottom
+    for (int k = 0; k < 2; k++)
+    {
+        const Rectangle t = f[k]->trim;
+        if (!((t.width > 0.0f) && (t.height > 0.0f))) { TraceLog(LOG_WARNING, "RBL: %s: frame %i has an empty trim", fn, (k == 0)? frame : nextFrame); return false; }
+        double px = (double)f[k]->pivot.x*f[k]->size.x, py = (double)f[k]->pivot.y*f[k]->size.y;
+        r[k][0] = t.x - px; r[k][1] = t.y - py; r[k][2] = (double)t.x + t.width - px; r[k][3] = (double)t.y + t.height - py;
+    }
+    double u[4] = { fmin(r[0][0], r[1][0]), fmin(r[0][1], r[1][1]), fmax(r[0][2], r[1][2]), fmax(r[0][3], r[1][3]) };
+    double uw = u[2] - u[0], uh = u[3] - u[1], k = worldScale;
+    Rectangle src[2], clip[2];
+    for (int i = 0; i < 2; i++)
+    {
+        const Rectangle o = f[i]->source;
+        double tw = r[i][2] - r[i][0], th = r[i][3] - r[i][1];
+        // The union's edges in the frame's own fractions (0..1 = its trim)
+        double a0 = (u[0] - r[i][0])/tw, a1 = (u[2] - r[i][0])/tw, b0 = (u[1] - r[i][1])/th, b1 = (u[3] - r[i][1])/th;
+        // Texture x follows the picture's x (upright) or y (stored turned clockwise: x runs up the
+        // picture unless the height is negated); growing with it or against it (a negated extent)
+        bool rotated = (f[i]->flags & RBL_FRAME_ROTATED) != 0;
+        double x0 = rotated? b0 : a0, x1 = rotated? b1 : a1, y0 = rotated? a0 : b0, y1 = rotated? a1 : b1;
+        bool forwardX = rotated? (o.height < 0.0f) : (o.width >= 0.0f), forwardY = (rotated? o.width : o.height) >= 0.0f;
+        double w = fabs((double)o.width), h = fabs((double)o.height);
+        src[i].x = (float)(o.x + (forwardX? x0 : 1.0 - x1)*w);
+        src[i].y = (float)(o.y + (forwardY? y0 : 1.0 - y1)*h);
+        src[i].width = (float)((x1 - x0)*w*((o.width < 0.0f)? -1.0 : 1.0));
+        src[i].height = (float)((y1 - y0)*h*((o.height < 0.0f)? -1.0 : 1.0));
+        clip[i].x = (float)((r[i][0] - u[0])/uw); clip[i].y = (float)((r[i][1] - u[1])/uh);
+        clip[i].width = (float)(tw/uw); clip[i].height = (float)(th/uh);
+    }
+    *source = src[0];
+    *size = rbl__v2((float)(uw*k), (float)(uh*k));
+    *origin = rbl__v2((float)(-u[0]*k), (float)(u[3]*k));
+    *flags = f[0]->flags & RBL_FRAME_ROTATED;
+    fade->source = src[1];
+    fade->weight = weight;
+    fade->flags = f[1]->flags & RBL_FRAME_ROTATED;
+    fade->clip[0] = clip[0];
+    fade->clip[1] = clip[1];
+    return true;
+}
+
+bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard)
+{
+    if (billboard == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasBillboardFade: NULL billboard"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags; RblFade fade;
+    if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasBillboardFade", &src, &size, &origin, &flags, &fade)) return false;
+    billboard->source = src; billboard->size = size; billboard->origin = origin;
+    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->fade = fade;
+    return true;
+}
+
+bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblInstance *instance, RblFade *fade)
+{
+    if ((instance == NULL) || (fade == NULL)) { TraceLog(LOG_WARNING, "RBL: RblAtlasInstanceFade: NULL instance or fade"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags; RblFade f;
+    if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasInstanceFade", &src, &size, &origin, &flags, &f)) return false;
+    instance->source = src; instance->size = size; instance->origin = origin;
+    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    *fade = f;
+    return true;
+}
+
 // ---- animation ------------------------------------------------------------------------------
 static void rbl__spriteRange(const rbl__AtlasState *s, int tag, int *from, int *to, int *direction, int *repeat)
 {
@@ -8598,10 +8777,12 @@ bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade
     float w;
     const char *bad = rbl__spriteBlend(s, player, &next, &w);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSpriteFade: %s", bad); return false; }
-    // The next frame over the current one's quad (frames of equal trim line up; see SPRITE SHEETS)
+    // The next frame over the current one's quad, unclipped (frames of equal trim line up; others
+    // take RblAtlasBillboardFade / RblAtlasInstanceFade, see SPRITE SHEETS)
     fade->source = s->frames[next].source;
     fade->flags = s->frames[next].flags & RBL_FRAME_ROTATED;
     fade->weight = w;
+    memset(fade->clip, 0, sizeof(fade->clip));
     return true;
 }
 

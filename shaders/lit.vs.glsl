@@ -16,6 +16,11 @@ RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness
 RBL_ATTRIBUTE vec4 vertexTexCoord2;
 RBL_VARYING vec2 fragTexCoord2;
 RBL_FLAT RBL_VARYING vec2 fragFade;
+// The stream's second half: each frame's position in its trimmed rectangle (material.glsl
+// fragFadeClip); its location is the linker's (queried: the 1.x dialects have no layout). Without
+// the stream it is constant (0 or 1 components: inside)
+RBL_ATTRIBUTE vec4 rblFadeClip;
+RBL_VARYING vec4 fragFadeClip;
 #endif
 
 uniform mat4 mvp;
@@ -45,6 +50,7 @@ void main()
 #ifdef RBL_CROSS_FADE
     fragTexCoord2 = vertexTexCoord2.xy;
     fragFade = vertexTexCoord2.zw;
+    fragFadeClip = rblFadeClip;
 #endif
     fragColor = vec4(rblSrgbToLinear(vertexColor.rgb), vertexColor.a);     // sRGB like every raylib Color: decoded once per vertex
     fragNormal = rblMat3(matNormal)*normal;

@@ -16,8 +16,11 @@ layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags
 layout(location = 15) in vec4 rblInstanceFadeSource; // the second frame, as rblInstanceSource
 layout(location = 6) in float rblInstanceFadeWeight; // 0..1
 layout(location = 7) in float rblInstanceFadeFlags;  // its RBL_FRAME_ROTATED bit
+layout(location = 8) in vec4 rblInstanceFadeClip;   // RblFade.clip[0]: the first frame's trimmed part of the quad (zero = all)
+layout(location = 9) in vec4 rblInstanceFadeClip2;  // RblFade.clip[1]: the second frame's
 RBL_VARYING vec2 fragTexCoord2;
 RBL_FLAT RBL_VARYING vec2 fragFade;                  // weight, tangent axes code (material.glsl rblFadeAxes)
+RBL_VARYING vec4 fragFadeClip;                       // both frames' positions in their rectangles
 #endif
 
 uniform mat4 mvp;
@@ -255,6 +258,17 @@ vec2 rblFrameTexCoord(vec4 src, bool rotated, vec2 size, float cs, float ct, vec
     return (src.xy + (rotated? vec2(1.0 - t, s) : vec2(s, t))*abs(src.zw))/textureSize;
 }
 
+// Position of picture point p (quad fractions, top-left origin) in clip rectangle c (x, y, width,
+// height; zero size = the whole quad); an axis c covers whole is 0.5 (as the CPU's rbl__fadeClipLocal)
+vec2 rblFadeClipLocal(vec4 c, vec2 p)
+{
+    if (!((c.z > 0.0) && (c.w > 0.0))) return vec2(0.5);
+    vec2 l = (p - c.xy)/c.zw;
+    if ((c.x <= 0.0) && (c.x + c.z >= 1.0)) l.x = 0.5;
+    if ((c.y <= 0.0) && (c.y + c.w >= 1.0)) l.y = 0.5;
+    return l;
+}
+
 // The second frame's axes against the first's: swap (its +U along the first's V) + 2 negT + 4 negV
 float rblFadeCode(vec2 t1, vec2 v1, vec2 t2, vec2 v2)
 {
@@ -292,6 +306,9 @@ void main()
     rblFrameTexCoord(rblInstanceSource, (int(rblInstanceFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t1, v1);
     fragTexCoord2 = rblFrameTexCoord(rblInstanceFadeSource, (int(rblInstanceFadeFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t2, v2);
     fragFade = vec2(rblInstanceFadeWeight, rblFadeCode(t1, v1, t2, v2));
+    // Clip rectangles are in the picture: a mirrored quad mirrors them with it
+    vec2 picture = vec2((rblInstanceSize.x < 0.0)? 1.0 - cs : cs, (rblInstanceSize.y < 0.0)? 1.0 - ct : ct);
+    fragFadeClip = vec4(rblFadeClipLocal(rblInstanceFadeClip, picture), rblFadeClipLocal(rblInstanceFadeClip2, picture));
 #endif
     vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
     fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex

@@ -29,6 +29,9 @@ RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 ortho
 #ifdef RBL_CROSS_FADE
 RBL_VARYING vec2 fragTexCoord2;          // the second frame's texture coordinate
 RBL_FLAT RBL_VARYING vec2 fragFade;      // x weight 0..1 of the second frame, y its tangent axes (rblFadeAxes)
+// Each frame's position within its own trimmed rectangle (xy the first, zw the second): inside is
+// 0..1 on both axes; an axis the frame covers whole is a constant 0.5 (never clipped by rounding)
+RBL_VARYING vec4 fragFadeClip;
 // Exact ends: weight 0 is the first frame and 1 the second, bit for bit (no mix rounding)
 #define rblFadeMix(a, b, w) (((w) <= 0.0)? (a) : (((w) >= 1.0)? (b) : mix((a), (b), (w))))
 #endif
@@ -87,6 +90,12 @@ void rblFadeAxes(float code, vec3 t, vec3 b, out vec3 t2, out vec3 b2)
 
 // Weight of the second frame's surface values: its share of the mixed coverage, so the colour and
 // data of a transparent texel (gutter or background) never bleed in
+// 1 inside a frame's trimmed rectangle, 0 outside (there it is transparent: no colour, no normal)
+float rblFadeInside(vec2 local)
+{
+    return ((local.x >= 0.0) && (local.x <= 1.0) && (local.y >= 0.0) && (local.y <= 1.0))? 1.0 : 0.0;
+}
+
 float rblFadeCoverage(float w, float a1, float a2)
 {
     if (w <= 0.0) return 0.0;
@@ -105,6 +114,11 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample
     vec4 texel2 = texture(texture0, fragTexCoord2);
     float fade = fragFade.x;
+    float inside1 = rblFadeInside(fragFadeClip.xy), inside2 = rblFadeInside(fragFadeClip.zw);
+    // Outside the frame shown alone (or both) there is no fragment, as with that frame's own quad
+    if ((inside1 + inside2 == 0.0) || ((fade <= 0.0) && (inside1 == 0.0)) || ((fade >= 1.0) && (inside2 == 0.0))) discard;
+    texel *= inside1;
+    texel2 *= inside2;
     float cover = rblFadeCoverage(fade, texel.a, texel2.a);
     texel = vec4(rblFadeMix(rblSrgbToLinear(texel.rgb), rblSrgbToLinear(texel2.rgb), cover), rblFadeMix(texel.a, texel2.a, fade));
     vec4 albedo = vec4(texel.rgb*rblSrgbToLinear(colDiffuse.rgb)*fragColor.rgb, texel.a*colDiffuse.a*fragColor.a);
@@ -187,9 +201,9 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     alpha = albedo.a;
     emission = vec3(0.0);
 #if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)
-    emission += albedo.rgb*rblFadeMix(texture(texture5, fragTexCoord).r, texture(texture5, fragTexCoord2).r, cover)*rblEmissiveIntensity;
+    emission += albedo.rgb*rblFadeMix(texture(texture5, fragTexCoord).r*inside1, texture(texture5, fragTexCoord2).r*inside2, cover)*rblEmissiveIntensity;
 #elif defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 2)
-    emission += rblFadeMix(rblSrgbToLinear(texture(texture5, fragTexCoord).rgb), rblSrgbToLinear(texture(texture5, fragTexCoord2).rgb), cover)*rblEmissiveIntensity;
+    emission += rblFadeMix(rblSrgbToLinear(texture(texture5, fragTexCoord).rgb)*inside1, rblSrgbToLinear(texture(texture5, fragTexCoord2).rgb)*inside2, cover)*rblEmissiveIntensity;
 #elif RBL_EMISSIVE == 1
     emission += albedo.rgb*texture(texture5, fragTexCoord).r*rblEmissiveIntensity;
 #elif RBL_EMISSIVE == 2

@@ -195,7 +195,9 @@ static const Field billboardFloats[] = {
     FIELD(RblBillboard, source.width), FIELD(RblBillboard, source.height), FIELD(RblBillboard, up.x), FIELD(RblBillboard, up.y),
     FIELD(RblBillboard, up.z), FIELD(RblBillboard, axis.x), FIELD(RblBillboard, axis.y), FIELD(RblBillboard, axis.z),
     FIELD(RblBillboard, roundness), FIELD(RblBillboard, fade.source.x), FIELD(RblBillboard, fade.source.y),
-    FIELD(RblBillboard, fade.source.width), FIELD(RblBillboard, fade.source.height), FIELD(RblBillboard, fade.weight) };
+    FIELD(RblBillboard, fade.source.width), FIELD(RblBillboard, fade.source.height), FIELD(RblBillboard, fade.weight),
+    FIELD(RblBillboard, fade.clip[0].x), FIELD(RblBillboard, fade.clip[0].y), FIELD(RblBillboard, fade.clip[0].width), FIELD(RblBillboard, fade.clip[0].height),
+    FIELD(RblBillboard, fade.clip[1].x), FIELD(RblBillboard, fade.clip[1].y), FIELD(RblBillboard, fade.clip[1].width), FIELD(RblBillboard, fade.clip[1].height) };
 static const Field cameraFloats[] = {
     FIELD(Camera3D, position.x), FIELD(Camera3D, position.y), FIELD(Camera3D, position.z), FIELD(Camera3D, target.x),
     FIELD(Camera3D, target.y), FIELD(Camera3D, target.z), FIELD(Camera3D, up.x), FIELD(Camera3D, up.y), FIELD(Camera3D, up.z),
@@ -1187,6 +1189,53 @@ static void c_atlas_quads(void)
     EXPECT_REFUSED(RblAtlasBillboard(&stale, 0, 1.0f, &b));
 }
 
+// Cross-fade quads: NULL outputs, atlases, frames (either), weights, scales, stale; outputs
+// untouched; a good pair of equal frames is the single frame's quad, unclipped
+static void c_atlas_fade_quads(void)
+{
+    RblAtlas a = goodAtlas(), zero; memset(&zero, 0, sizeof(zero));
+    RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
+    RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
+    RblFade f, f0; memset(&f, 0x5A, sizeof(f)); f0 = f;
+    EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasInstanceFade(&a, 0, 1, 0.5f, 1.0f, NULL, &f));
+    EXPECT_REFUSED(RblAtlasInstanceFade(&a, 0, 1, 0.5f, 1.0f, &in, NULL));
+    EXPECT_REFUSED(RblAtlasBillboardFade(NULL, 0, 1, 0.5f, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasInstanceFade(&zero, 0, 1, 0.5f, 1.0f, &in, &f));
+    const int frames[4] = { -1, 2, INT_MIN, INT_MAX };
+    for (int k = 0; k < 4; k++)
+    {
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, frames[k], 1, 0.5f, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, frames[k], 0.5f, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasInstanceFade(&a, frames[k], 0, 0.5f, 1.0f, &in, &f));
+        EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, frames[k], 0.5f, 1.0f, &in, &f));
+    }
+    const float weights[4] = { -1e-7f, -0.5f, 1.0000001f, 2.0f };
+    for (int vi = 0; vi < 9; vi++)
+    {
+        float w = (vi < 5)? badFloats[vi] : weights[vi - 5];
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, w, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, 0, w, 1.0f, &in, &f));
+    }
+    const float scales[4] = { 0.0f, -1.0f, 2e15f, -1e-45f };
+    for (int vi = 0; vi < 9; vi++)
+    {
+        float sc = (vi < 5)? badFloats[vi] : scales[vi - 5];
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, sc, &b));
+        EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, 0, 0.5f, sc, &in, &f));
+    }
+    ck(memcmp(&b, &b0, sizeof(b)) == 0 && memcmp(&in, &in0, sizeof(in)) == 0 && memcmp(&f, &f0, sizeof(f)) == 0, "refused calls wrote their outputs");
+    RblBillboard one; memset(&one, 0, sizeof(one)); memset(&b, 0, sizeof(b));
+    ck(RblAtlasBillboard(&a, 1, 2.0f, &one) && RblAtlasBillboardFade(&a, 1, 1, 0.25f, 2.0f, &b) && memcmp(&one.source, &b.source, sizeof(Rectangle)) == 0 &&
+       memcmp(&one.size, &b.size, sizeof(Vector2)) == 0 && memcmp(&one.origin, &b.origin, sizeof(Vector2)) == 0 && b.flags == one.flags && b.fade.weight == 0.25f &&
+       b.fade.clip[0].x == 0.0f && b.fade.clip[0].width == 1.0f && b.fade.clip[1].y == 0.0f && b.fade.clip[1].height == 1.0f, "equal frames: not the single frame's quad");
+    ck(RblAtlasInstanceFade(&a, 0, 1, 1.0f, 1e15f, &in, &f) && allFinite(&in.size.x, 2) && allFinite(&in.origin.x, 2) && allFinite(&f.clip[0].x, 8) && allFinite(&f.source.x, 4), "largest scale: non-finite or refused");
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblAtlasBillboardFade(&stale, 0, 1, 0.5f, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasInstanceFade(&stale, 0, 1, 0.5f, 1.0f, &in, &f));
+}
+
 static bool played(const RblAtlas *a, int tag, int loops) { RblSpritePlayer p = RblPlaySprite(a, tag, loops); return p.tag == tag; }
 static void c_sprites(void)
 {
@@ -1310,13 +1359,28 @@ static void c_fades(void)
     Material inst = litMaterial(id);
     RblInstanceBuffer buf = RblLoadInstanceBuffer(2);
     RblInstancedDesc d; memset(&d, 0, sizeof(d));
-    for (int fi = 0; fi < 5*5 + 4; fi++)       // source x, y, width, height, weight x every bad float; then weights outside 0..1
+    // Finite clip rectangles the shaders cannot divide by: negative, zero (with others set), tiny, huge
+    const Rectangle badClips[6] = { { 0, 0, -1, 1 }, { 0.5f, 0, 0, 1 }, { 0, 0, 1, 1e-7f }, { 0, 0, 2e6f, 1 }, { 2e6f, 0, 1, 1 }, { 0, -2e6f, 1, 1 } };
+    for (int k = 0; k < 12; k++)
+    {
+        RblBillboard b = billboard();
+        b.fade.weight = 0.5f;
+        b.fade.clip[k & 1] = badClips[k/2];
+        EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
+        RblBatch batch = RblLoadBatch(2);
+        RblBeginBatch(&batch, camera());
+        EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    for (int fi = 0; fi < 13*5 + 4 + 12; fi++)  // source x, y, width, height, weight, (flags skipped) 8 clip floats x every bad float; weights outside 0..1; bad clips
     {
         RblInstance x[2] = { instance(), instance() };
         RblFade fades[2]; memset(fades, 0, sizeof(fades));
         fades[0].weight = fades[1].weight = 0.5f;
-        if (fi < 25) ((float *)&fades[1])[fi/5] = badFloats[fi % 5];
-        else fades[1].weight = outside[fi - 25];
+        if (fi < 65) ((float *)&fades[1])[(fi/5 < 5)? fi/5 : fi/5 + 1] = badFloats[fi % 5];
+        else if (fi < 69) fades[1].weight = outside[fi - 65];
+        else fades[1].clip[(fi - 69) & 1] = badClips[(fi - 69)/2];
         d.fades = fades;
         warnings = 0;
         int n = RblDrawInstanced(&buf, camera(), inst, d, x, 2);
@@ -1370,6 +1434,7 @@ static const Case cases[] = {
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads },
+    { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale; outputs untouched; equal frames unclipped", c_atlas_fade_quads },
     { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites },
     { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades },
 };

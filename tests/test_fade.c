@@ -549,6 +549,318 @@ static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_un
     fadeRigUnload(&r);
 }
 
+
+// Frames of different trims (issue #16): p upright, q stored turned clockwise, r = q upright, on
+// 16x12 canvases (pivot at the centre): p's trim (1,2 10x6), q's and r's (5,1 8x9). The fade quad
+// covers the union (1,1 12x9); each frame is fetched only inside its own trim
+static const char fadeTrimJson[] =
+    "{\"frames\": {"
+    "\"p\": {\"frame\": {\"x\":0,\"y\":0,\"w\":10,\"h\":6}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":1,\"y\":2,\"w\":10,\"h\":6}, \"sourceSize\": {\"w\":16,\"h\":12}},"
+    "\"q\": {\"frame\": {\"x\":16,\"y\":0,\"w\":8,\"h\":9}, \"rotated\": true, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}},"
+    "\"r\": {\"frame\": {\"x\":32,\"y\":0,\"w\":8,\"h\":9}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}}},"
+    " \"meta\": {\"size\": {\"w\":48,\"h\":16}}}";
+// The same frames from libGDX (old form): q turned counter-clockwise (both extents negated), offsets
+// counted from the canvas bottom (12 - 2 - 6 = 4 for p, 12 - 1 - 9 = 2 for q and r)
+static const char fadeTrimGdx[] =
+    "s.png\nsize: 48, 16\n"
+    "p\n  rotate: false\n  xy: 0, 0\n  size: 10, 6\n  orig: 16, 12\n  offset: 1, 4\n  index: -1\n"
+    "q\n  rotate: true\n  xy: 16, 0\n  size: 8, 9\n  orig: 16, 12\n  offset: 5, 2\n  index: -1\n"
+    "r\n  rotate: false\n  xy: 32, 0\n  size: 8, 9\n  orig: 16, 12\n  offset: 5, 2\n  index: -1\n";
+
+// The untrimmed 16x12 canvas of a frame: its picture at its trim, transparent elsewhere (the
+// reference rebuilds it from the fixture's numbers, not from the atlas)
+static Color fadeTrimCanvas(Image pic, int tx, int ty, int i, int j)
+{
+    if ((i < tx) || (j < ty) || (i >= tx + pic.width) || (j >= ty + pic.height)) return BLANK;
+    return GetImageColor(pic, i - tx, j - ty);
+}
+
+// Largest rgb difference between the target and the double reference of canvases a (weight 1 - w)
+// and b (w) drawn with alpha blending over a cleared target, no cutoff: mixed alpha A = linear, the
+// colour mixed in linear light by coverage (w a_b / A), stored as encode(colour) x A; nothing where
+// neither frame lies. Canvas pixel (i, j) is target pixel (24 + i, 26 + j) (pivot 8,6 at the centre)
+static int fadeTrimDiff(Image out, Image picA, int ax, int ay, Image picB, int bx, int by, double w)
+{
+    int worst = 0;
+    for (int y = 0; y < FADE_RT; y++)
+        for (int x = 0; x < FADE_RT; x++)
+        {
+            int i = x - 24, j = y - 26;
+            Color ca = fadeTrimCanvas(picA, ax, ay, i, j), cb = fadeTrimCanvas(picB, bx, by, i, j), got = rtPixel(out, x, y);
+            double aa = ca.a/255.0, ab = cb.a/255.0, A = (1.0 - w)*aa + w*ab;
+            double cover = (A > 0.0)? w*ab/A : 0.0;
+            const unsigned char pc[3] = { ca.r, ca.g, ca.b }, qc[3] = { cb.r, cb.g, cb.b }, gc[3] = { got.r, got.g, got.b };
+            for (int k = 0; k < 3; k++)
+            {
+                double want = (A > 0.0)? 255.0*srgbEncode((1.0 - cover)*srgbDecode(pc[k]/255.0) + cover*srgbDecode(qc[k]/255.0))*A : 0.0;
+                int d = (int)ceil(fabs(want - gc[k]) - 0.5);
+                if (d > worst) worst = d;
+            }
+            if ((A == 0.0) && (got.a != 0) && (worst < 255)) worst = 255;      // drawn where neither frame lies
+        }
+    return worst;
+}
+
+// Largest rgba difference over the whole target
+static int fadeImageDiffRgba(Image a, Image b)
+{
+    int worst = fadeImageDiff(a, b);
+    for (int y = 0; y < FADE_RT; y++) for (int x = 0; x < FADE_RT; x++) if (abs(rtPixel(a, x, y).a - rtPixel(b, x, y).a) > worst) worst = abs(rtPixel(a, x, y).a - rtPixel(b, x, y).a);
+    return worst;
+}
+
+// The trimmed fixture's 48x16 sheet for pictures p (10x6) and q (8x9): q turned clockwise
+// (TexturePacker) or counter-clockwise (libGDX), and upright as r. Opaque texels around every frame
+// (a packer without padding puts neighbours there): a fetch not clipped to its frame's trim shows them
+static Image fadeTrimSheet(Image picP, Image picQ, bool gdx)
+{
+    Image sheet = GenImageColor(48, 16, (Color){ 255, 0, 255, 255 });
+    for (int y = 0; y < 6; y++) for (int x = 0; x < 10; x++) ImageDrawPixel(&sheet, x, y, GetImageColor(picP, x, y));
+    for (int y = 0; y < 9; y++)
+        for (int x = 0; x < 8; x++)
+        {
+            if (gdx) ImageDrawPixel(&sheet, 16 + y, 7 - x, GetImageColor(picQ, x, y));      // counter-clockwise in a 9x8 block
+            else ImageDrawPixel(&sheet, 16 + (8 - y), x, GetImageColor(picQ, x, y));   // clockwise
+            ImageDrawPixel(&sheet, 32 + x, y, GetImageColor(picQ, x, y));
+        }
+    return sheet;
+}
+
+static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim(void)
+{
+    unsigned int seed = 1234u;
+    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
+    Image *pics[2] = { &picP, &picQ };
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < pics[k]->width*pics[k]->height; i++)
+        {
+            unsigned int v = rtRandom(&seed);
+            ((Color *)pics[k]->data)[i] = (Color){ (unsigned char)(v & 255), (unsigned char)((v >> 8) & 255), (unsigned char)((v >> 16) & 255), 255 };
+        }
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
+    int checks = 0;
+    for (int gdx = 0; gdx < 2; gdx++)       // TexturePacker (q turned clockwise), libGDX (counter-clockwise)
+    {
+        Image sheet = fadeTrimSheet(picP, picQ, gdx);
+        UnloadTexture(r.sheet);
+        r.sheet = LoadTextureFromImage(sheet);
+        UnloadImage(sheet);
+        RblUnloadAtlas(&r.atlas);
+        r.atlas = gdx? RblLoadAtlasFromMemory(fadeTrimGdx, (int)strlen(fadeTrimGdx), RBL_ATLAS_AUTO) : RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
+        RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas %d", gdx);
+        int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
+        RT_CHECK((fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].flags & RBL_FRAME_ROTATED) && !(r.atlas.frames[fr].flags & RBL_FRAME_ROTATED), "fixture frames");
+        RT_CHECK(!gdx || ((r.atlas.frames[fq].source.width < 0.0f) && (r.atlas.frames[fq].source.height < 0.0f)), "libGDX's turn: extents not negated");
+        Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
+        for (int k = 0; k < 4; k++)
+            if (mats[k]->maps != NULL)
+            {
+                mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+                mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;     // no cutoff: every partial alpha shows
+            }
+        RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+        // Pairs: upright to rotated, rotated to upright, upright to upright
+        const int pairs[3][2] = { { fp, fq }, { fq, fp }, { fp, fr } };
+        static const float weights[6] = { 0.0f, 1.0f, 1e-6f, 1.0f - 1e-6f, 0.5f, 0.25f };
+        for (int path = 0; path < 3; path++)
+        {
+            bool inst = (path == FADE_INSTANCED);
+            if (inst && !rtGlsl3()) continue;
+            Material plain = inst? r.mPlainInst : r.mPlain, fade = inst? r.mFadeInst : r.mFade;
+            for (int pr = 0; pr < 3; pr++)
+            {
+                int f0 = pairs[pr][0], f1 = pairs[pr][1];
+                Image pic0 = (f0 == fp)? picP : picQ, pic1 = (f1 == fp)? picP : picQ;
+                int x0 = (f0 == fp)? 1 : 5, y0 = (f0 == fp)? 2 : 1, x1 = (f1 == fp)? 1 : 5, y1 = (f1 == fp)? 2 : 1;
+                RblBillboard single[2];
+                memset(single, 0, sizeof(single));
+                RT_CHECK(RblAtlasBillboard(&r.atlas, f0, 1.0f, &single[0]) && RblAtlasBillboard(&r.atlas, f1, 1.0f, &single[1]), "single frames");
+                Image only0 = fadeRender(path, plain, &single[0], 1, false, 0), only1 = fadeRender(path, plain, &single[1], 1, false, 0);
+                // The single frames sit on their canvases (the reference's placement holds)
+                RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
+                for (int k = 0; k < 6; k++)
+                {
+                    RblBillboard card;
+                    memset(&card, 0, sizeof(card));
+                    RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card), "fade card");
+                    Image out = fadeRender(path, fade, &card, 1, true, 0);
+                    int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k]);
+                    int got = (k == 0)? vs0 : ((k == 1)? vs1 : ref), limit = (k < 2)? 0 : 1;
+                    printf("    %-9s %s pair %d (%s -> %s)  weight %-9.7g  vs first %3d  vs second %3d  vs double reference %3d\n", fadePathName[path], gdx? "libGDX" : "TP", pr,
+                           (f0 == fq)? "rotated" : "upright", (f1 == fq)? "rotated" : "upright", weights[k], vs0, vs1, ref);
+                    RT_CHECK(got <= limit, "%s pair %d weight %g: %d/255 off (limit %d)", fadePathName[path], pr, weights[k], got, limit);
+                    if (k >= 4) RT_CHECK(vs0 > 20 && vs1 > 20, "%s pair %d weight %g should be neither frame", fadePathName[path], pr, weights[k]);
+                    if (got > limit) rtSaveImage(out, fadePathName[path]);
+                    UnloadImage(out);
+                    checks++;
+                }
+                // The instance pair is the billboard's, field for field
+                RblInstance in; RblFade f;
+                memset(&in, 0, sizeof(in)); memset(&f, 0, sizeof(f));
+                RblBillboard card;
+                memset(&card, 0, sizeof(card));
+                RT_CHECK(RblAtlasInstanceFade(&r.atlas, f0, f1, 0.5f, 1.0f, &in, &f) && RblAtlasBillboardFade(&r.atlas, f0, f1, 0.5f, 1.0f, &card), "fade pair");
+                RT_CHECK(memcmp(&in.source, &card.source, sizeof(Rectangle)) == 0 && memcmp(&in.size, &card.size, sizeof(Vector2)) == 0 &&
+                         memcmp(&in.origin, &card.origin, sizeof(Vector2)) == 0 && in.flags == card.flags && memcmp(&f, &card.fade, sizeof(f)) == 0, "RblAtlasInstanceFade differs from RblAtlasBillboardFade");
+                UnloadImage(only0); UnloadImage(only1);
+            }
+        }
+    }
+    // Equal trims: RblAtlasBillboardFade is RblAtlasBillboard plus the fade, unclipped (whole quad)
+    int fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
+    RblBillboard one, two;
+    memset(&one, 0, sizeof(one)); memset(&two, 0, sizeof(two));
+    RT_CHECK(RblAtlasBillboard(&r.atlas, fq, 2.0f, &one) && RblAtlasBillboardFade(&r.atlas, fq, fr, 0.5f, 2.0f, &two), "equal trims");
+    RT_CHECK(memcmp(&one.source, &two.source, sizeof(Rectangle)) == 0 && memcmp(&one.size, &two.size, sizeof(Vector2)) == 0 && memcmp(&one.origin, &two.origin, sizeof(Vector2)) == 0 &&
+             memcmp(&two.fade.source, &r.atlas.frames[fr].source, sizeof(Rectangle)) == 0 && two.fade.clip[0].width == 1.0f && two.fade.clip[1].height == 1.0f, "equal trims: not the single frame's quad");
+    printf("    %d renderings compared\n", checks);
+    UnloadImage(picP); UnloadImage(picQ);
+    fadeRigUnload(&r);
+}
+
+
+typedef struct FadeTrimShadowCard { int path; RblBillboard card; } FadeTrimShadowCard;
+static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
+{
+    const FadeTrimShadowCard *c = (const FadeTrimShadowCard *)ctx;
+    RblBillboard b = c->card;
+    b.position = (Vector3){ 0.0f, 0.0f, 1.0f };
+    b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    if (c->path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    else if (c->path == FADE_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, viewer);
+        RblBatchAdd(&batch, m, &b);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source; in.flags = b.flags;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
+        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
+        RblUnloadInstanceBuffer(&buf);
+    }
+}
+
+// Largest rgb difference over a shadow render (SH_TARGET square)
+static int fadeShadowDiff(Image a, Image b)
+{
+    int worst = 0;
+    for (int y = 0; y < SH_TARGET; y++)
+        for (int x = 0; x < SH_TARGET; x++)
+        {
+            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
+            int d = abs(p.r - q.r);
+            if (abs(p.g - q.g) > d) d = abs(p.g - q.g);
+            if (abs(p.b - q.b) > d) d = abs(p.b - q.b);
+            if (d > worst) worst = d;
+        }
+    return worst;
+}
+
+// The G-buffer's geometry pass and the shadow casters share the clip: frames of different trims
+// (the fixture above) at weight 0 and 1 store / cast exactly the single frame (0/255; unclipped,
+// the opaque neighbours would show), and at 0.5 the G-buffer holds the double mean where both
+// frames lie and nothing where neither does
+static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(void)
+{
+    unsigned int seed = 99u;
+    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
+    for (int i = 0; i < 60; i++) { unsigned int v = rtRandom(&seed); ((Color *)picP.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    for (int i = 0; i < 72; i++) { unsigned int v = rtRandom(&seed); ((Color *)picQ.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    Image sheetImg = fadeTrimSheet(picP, picQ, false);
+    Texture2D sheet = LoadTextureFromImage(sheetImg);
+    UnloadImage(sheetImg);
+    RblAtlas atlas = RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
+    int fp = RblAtlasFindFrame(&atlas, "p"), fq = RblAtlasFindFrame(&atlas, "q");
+    RT_CHECK(RblIsAtlasValid(&atlas) && fp >= 0 && fq >= 0, "fixture");
+    if (rtGlsl3())
+    {
+        RblLitShaderDesc desc;
+        memset(&desc, 0, sizeof(desc));
+        desc.deferred = true; desc.crossFade = true;
+        RblGBufferDesc gd;
+        memset(&gd, 0, sizeof(gd));
+        gd.width = FADE_RT; gd.height = FADE_RT;
+        RblGBuffer g = RblLoadGBuffer(gd);
+        RT_CHECK(RblIsGBufferValid(&g), "G-buffer");
+        RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+        Shader geo = RblLoadLitShader(desc);
+        Material m = LoadMaterialDefault();
+        m.shader = geo;
+        m.maps[MATERIAL_MAP_ALBEDO].texture = sheet;
+        Camera3D cam = fadeCamera();
+        Image img[5];
+        for (int k = 0; k < 5; k++)     // single p, single q, fades at 0, 1, 0.5
+        {
+            RblBillboard card;
+            memset(&card, 0, sizeof(card));
+            if (k < 2) RblAtlasBillboard(&atlas, k? fq : fp, 1.0f, &card);
+            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : ((k == 3)? 1.0f : 0.5f), 1.0f, &card);
+            RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass");
+            RblDrawBillboard(cam, m, card);
+            RblEndGBuffer(&g);
+            RT_CHECK(RblDrawDeferredLights(&g), "lights");
+            RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+            BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g); EndTextureMode();
+            img[k] = rtReadTarget(rt);
+            UnloadRenderTexture(rt);
+        }
+        int d0 = fadeImageDiffRgba(img[2], img[0]), d1 = fadeImageDiffRgba(img[3], img[1]), both = 0, none = 0;
+        for (int y = 0; y < FADE_RT; y++)
+            for (int x = 0; x < FADE_RT; x++)
+            {
+                Color ca = fadeTrimCanvas(picP, 1, 2, x - 24, y - 26), cb = fadeTrimCanvas(picQ, 5, 1, x - 24, y - 26), got = rtPixel(img[4], x, y);
+                if ((ca.a == 0) && (cb.a == 0)) { if (got.a != 0 || got.r != 0 || got.g != 0 || got.b != 0) none++; continue; }
+                if ((ca.a == 0) || (cb.a == 0)) continue;
+                const unsigned char pc[3] = { ca.r, ca.g, ca.b }, qc[3] = { cb.r, cb.g, cb.b }, gc[3] = { got.r, got.g, got.b };
+                for (int c = 0; c < 3; c++)
+                {
+                    double want = 255.0*srgbEncode(0.5*srgbDecode(pc[c]/255.0) + 0.5*srgbDecode(qc[c]/255.0));
+                    int d = (int)ceil(fabs(want - gc[c]) - 0.5);
+                    if (d > both) both = d;
+                }
+            }
+        printf("    geometry pass: weight 0 vs p %d, weight 1 vs q %d, weight 0.5 where both lie %d/255 from the double mean, %d pixels drawn where neither lies\n", d0, d1, both, none);
+        RT_CHECK(d0 == 0 && d1 == 0 && both <= 1 && none == 0, "deferred trimmed fade: %d %d %d %d", d0, d1, both, none);
+        for (int k = 0; k < 5; k++) UnloadImage(img[k]);
+        RblUnloadLitShader(&geo);
+        MemFree(m.maps);
+        RblUnloadGBuffer(&g);
+    }
+    // Shadows: a card facing the light's floor, canvas 16x12 at 1/8 world unit a pixel
+    ShSetup s = shSetup((Vector3){ 0.0f, 0.0f, -1.0f });
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)
+    {
+        Image img[4];
+        for (int k = 0; k < 4; k++)     // single p, single q, fades at 0 and 1
+        {
+            FadeTrimShadowCard c;
+            memset(&c, 0, sizeof(c));
+            c.path = path;
+            if (k < 2) RblAtlasBillboard(&atlas, k? fq : fp, 0.125f, &c.card);
+            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : 1.0f, 0.125f, &c.card);
+            img[k] = shRender(&s, fadeTrimShadowCaster, &c, sheet, false);
+        }
+        int d0 = fadeShadowDiff(img[2], img[0]), d1 = fadeShadowDiff(img[3], img[1]), pq = fadeShadowDiff(img[0], img[1]);
+        printf("    %-9s shadow: weight 0 vs p %d, weight 1 vs q %d (p vs q %d)\n", fadePathName[path], d0, d1, pq);
+        RT_CHECK(d0 == 0 && d1 == 0 && pq > 40, "%s trimmed fade casters: %d %d (p vs q %d)", fadePathName[path], d0, d1, pq);
+        for (int k = 0; k < 4; k++) UnloadImage(img[k]);
+    }
+    UnloadTexture(sheet);
+    RblUnloadAtlas(&atlas);
+    UnloadImage(picP); UnloadImage(picQ);
+}
+
 #define RBL_FADE_TESTS \
         RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
         RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
@@ -557,4 +869,6 @@ static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_un
         RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
         RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
         RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
-        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line)
+        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
+        RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
+        RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters)

@@ -15,7 +15,7 @@
 //                               excl_draw_bulk_animated_over_raylib: (bulk update + plain draw) over raylib
 //   fade_*                      plain and fade runs interleaved over 15 rounds; fade_over_plain: median of the per-round ratios
 //   fade_batch_10000            cpu_ns_per_billboard RblBatchAdd of 10000 billboards with distinct frames: plain (no fade) and
-//                                                    fade (RblSpriteFade each: second frame and weight), and fade_over_plain;
+//                                                    fade (RblAtlasBillboardFade each: union quad, clips, weight), and fade_over_plain;
 //                                                    end_ns_per_billboard: RblEndBatch (sort none: upload + draw submission)
 //   fade_instanced_10000        cpu_ns_per_instance  RblDrawInstanced without / with the fades array (second buffer); ratio
 //   fade_fragment_<W>           ms_per_frame         llvmpipe, glFinish included: 16 overlapping 512x512-pixel cards, albedo +
@@ -238,7 +238,13 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
     double plainNs[2], fadeNs[2], batchRatio;
     RblBillboard *faded = (RblBillboard *)malloc((size_t)n*sizeof(RblBillboard));
     memcpy(faded, cards, (size_t)n*sizeof(RblBillboard));
-    for (int i = 0; i < n; i++) faded[i].fade = fades[i];
+    // Faded cards as an application builds them: the union quad and clips of the two frames
+    for (int i = 0; i < n; i++)
+    {
+        int next = players[i].frame;
+        RblSpriteBlend(&players[i], anim, &next);
+        RblAtlasBillboardFade(anim, players[i].frame, next, fades[i].weight, 0.02f, &faded[i]);
+    }
     FadeBatchCtx bcPlain = { &batch, cam, plain, cards, n }, bcFade = { &batch, cam, fade, faded, n };
     interleaved(runFadeBatch, &bcPlain, &bcFade, 2, plainNs, fadeNs, &batchRatio);
     (void)timing;
