@@ -450,6 +450,32 @@ static void test_fade_bad_weights_and_sources_are_refused_with_one_line(void)
     fadeRigUnload(&r);
 }
 
+// One FIXED faded card drawn by the given path (a shadow pass's caster callback)
+static void fadeDrawCaster(int path, Camera3D viewer, Material m, RblBillboard b)
+{
+    if (path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    else if (path == FADE_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(4);
+        RblBeginBatch(&batch, viewer);
+        RblBatchAdd(&batch, m, &b);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
+        RblInstance in;
+        memset(&in, 0, sizeof(in));
+        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source; in.flags = b.flags;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
+        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
+        RblUnloadInstanceBuffer(&buf);
+    }
+}
+
 // Shadows: a faded card casts its mixed cut-out. Frame a opaque, frame b transparent: the mixed
 // alpha is 1 - w, against the cutoff 0.5 a card at w 0.3 casts and one at w 0.7 does not (a caster
 // reading frame a alone would cast both); on every billboard path (test_shadows.c's floor and light)
@@ -463,27 +489,7 @@ static void fadeShadowCaster(Material m, Camera3D viewer, void *ctx)
     b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
     b.source = (Rectangle){ 0, 0, 32, 32 };
     b.fade.source = (Rectangle){ 32, 0, 32, 32 }; b.fade.weight = c->weight;
-    if (c->path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
-    else if (c->path == FADE_BATCH)
-    {
-        RblBatch batch = RblLoadBatch(4);
-        RblBeginBatch(&batch, viewer);
-        RblBatchAdd(&batch, m, &b);
-        RblEndBatch(&batch);
-        RblUnloadBatch(&batch);
-    }
-    else
-    {
-        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
-        RblInstance in;
-        memset(&in, 0, sizeof(in));
-        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source;
-        RblInstancedDesc d;
-        memset(&d, 0, sizeof(d));
-        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
-        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
-        RblUnloadInstanceBuffer(&buf);
-    }
+    fadeDrawCaster(c->path, viewer, m, b);
 }
 
 static void test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path(void)
@@ -728,27 +734,7 @@ static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
     RblBillboard b = c->card;
     b.position = (Vector3){ 0.0f, 0.0f, 1.0f };
     b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
-    if (c->path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
-    else if (c->path == FADE_BATCH)
-    {
-        RblBatch batch = RblLoadBatch(4);
-        RblBeginBatch(&batch, viewer);
-        RblBatchAdd(&batch, m, &b);
-        RblEndBatch(&batch);
-        RblUnloadBatch(&batch);
-    }
-    else
-    {
-        RblInstanceBuffer buf = RblLoadInstanceBuffer(4);
-        RblInstance in;
-        memset(&in, 0, sizeof(in));
-        in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source; in.flags = b.flags;
-        RblInstancedDesc d;
-        memset(&d, 0, sizeof(d));
-        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
-        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
-        RblUnloadInstanceBuffer(&buf);
-    }
+    fadeDrawCaster(c->path, viewer, m, b);
 }
 
 // Largest rgb difference over a shadow render (SH_TARGET square)
