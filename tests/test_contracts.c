@@ -1309,6 +1309,17 @@ static void c_sprites(void)
     RblUnloadAtlas(&a);
 }
 
+// A billboard refused by the immediate path and by a batch, each with one line and nothing changed
+static void expectBillboardRefused(Material m, RblBillboard b)
+{
+    EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
+    RblBatch batch = RblLoadBatch(2);
+    RblBeginBatch(&batch, camera());
+    EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
+    RblEndBatch(&batch);
+    RblUnloadBatch(&batch);
+}
+
 // Cross-fades: RblSpriteFade refuses what RblSpriteBlend refuses (fade untouched) and fills a good
 // one; a fade weight outside 0..1 or NaN/Inf fade floats are refused on every path (one line; an
 // instanced draw skips that instance and draws the rest, its fades still paired)
@@ -1346,12 +1357,7 @@ static void c_fades(void)
     {
         RblBillboard b = billboard();
         b.fade.weight = outside[k];
-        EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
-        RblBatch batch = RblLoadBatch(2);
-        RblBeginBatch(&batch, camera());
-        EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
-        RblEndBatch(&batch);
-        RblUnloadBatch(&batch);
+        expectBillboardRefused(m, b);
     }
     // Instanced: every fade float bad, and weights outside 0..1: that instance skipped, one line
     RblLitShaderDesc id = descOf(RBL_BRDF_LAMBERT, true, false);
@@ -1366,12 +1372,7 @@ static void c_fades(void)
         RblBillboard b = billboard();
         b.fade.weight = 0.5f;
         b.fade.clip[k & 1] = badClips[k/2];
-        EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
-        RblBatch batch = RblLoadBatch(2);
-        RblBeginBatch(&batch, camera());
-        EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
-        RblEndBatch(&batch);
-        RblUnloadBatch(&batch);
+        expectBillboardRefused(m, b);
     }
     for (int fi = 0; fi < 13*5 + 4 + 12; fi++)  // source x, y, width, height, weight, (flags skipped) 8 clip floats x every bad float; weights outside 0..1; bad clips
     {

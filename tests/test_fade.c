@@ -100,12 +100,12 @@ static Image fadeRender(int path, Material m, const RblBillboard *cards, int n, 
     return out;
 }
 
-// Largest channel difference (rgb) over the whole image
+// Largest channel difference (rgb) over the whole image (a and b of one size)
 static int fadeImageDiff(Image a, Image b)
 {
     int worst = 0;
-    for (int y = 0; y < FADE_RT; y++)
-        for (int x = 0; x < FADE_RT; x++)
+    for (int y = 0; y < a.height; y++)
+        for (int x = 0; x < a.width; x++)
         {
             Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
             int d = abs(p.r - q.r);
@@ -737,22 +737,6 @@ static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
     fadeDrawCaster(c->path, viewer, m, b);
 }
 
-// Largest rgb difference over a shadow render (SH_TARGET square)
-static int fadeShadowDiff(Image a, Image b)
-{
-    int worst = 0;
-    for (int y = 0; y < SH_TARGET; y++)
-        for (int x = 0; x < SH_TARGET; x++)
-        {
-            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
-            int d = abs(p.r - q.r);
-            if (abs(p.g - q.g) > d) d = abs(p.g - q.g);
-            if (abs(p.b - q.b) > d) d = abs(p.b - q.b);
-            if (d > worst) worst = d;
-        }
-    return worst;
-}
-
 // The G-buffer's geometry pass and the shadow casters share the clip: frames of different trims
 // (the fixture above) at weight 0 and 1 store / cast exactly the single frame (0/255; unclipped,
 // the opaque neighbours would show), and at 0.5 the G-buffer holds the double mean where both
@@ -837,7 +821,7 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
             else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : 1.0f, 0.125f, &c.card);
             img[k] = shRender(&s, fadeTrimShadowCaster, &c, sheet, false);
         }
-        int d0 = fadeShadowDiff(img[2], img[0]), d1 = fadeShadowDiff(img[3], img[1]), pq = fadeShadowDiff(img[0], img[1]);
+        int d0 = fadeImageDiff(img[2], img[0]), d1 = fadeImageDiff(img[3], img[1]), pq = fadeImageDiff(img[0], img[1]);
         printf("    %-9s shadow: weight 0 vs p %d, weight 1 vs q %d (p vs q %d)\n", fadePathName[path], d0, d1, pq);
         RT_CHECK(d0 == 0 && d1 == 0 && pq > 40, "%s trimmed fade casters: %d %d (p vs q %d)", fadePathName[path], d0, d1, pq);
         for (int k = 0; k < 4; k++) UnloadImage(img[k]);
