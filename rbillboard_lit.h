@@ -217,21 +217,23 @@
 *         lights of the types it compiled (RblLightFeatures: what a set needs); others are left out.
 *
 *   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
-*       RblBeginGBuffer -> opaque draws -> RblEndGBuffer -> RblDrawDeferredLights (ambient and lights
-*       into the accumulation) -> RblResolveGBuffer (fog, exposure, tonemap, encoding; writes depth).
+*       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
+*       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (fog, exposure,
+*       tonemap, encoding; writes depth). Set the scene before the geometry pass: it adds the ambient.
 *       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
-*         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a occlusion
-*         RT1 RGBA8 + RT2 RG8: one 48-bit word, RT1.r its most significant byte:
-*           GGX        normal 30 bits | roughness 10: log over [0.045, 1] | metalness 8: linear
-*           Blinn-P.   normal 29 bits | shininess 10: log2(n)/11 | intensity 9: log2(1 + 256 s)/9
+*         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a bits 23..16
+*         RT1 RGBA8    bits 55..24 of one 56-bit word (RT1.r its most significant byte); RT2 RG8 bits 15..0
+*           GGX        normal 36 bits | roughness 12: log over [0.045, 1] | metalness 8: linear
+*           Blinn-P.   normal 36 bits | shininess 11: log2(n)/11 | intensity 9: log2(1 + 256 s)/9
 *                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
-*           Lambert    normal 30 bits | 0 | specular map 8 (debug view)
-*         normal       octahedral (Cigolle et al. 2014), L levels per coordinate, L odd (0 and +-1 are
-*                      codes: axis-aligned normals exact), code x L + y, the nearest of the 4 codes
-*                      around the point; L = 32767 (30 bits, max 0.0049 deg) or 23169 (29 bits)
+*           Lambert    normal 36 bits | 0 | specular map 8 (debug view)
+*         normal       octahedral (Cigolle et al. 2014), L = 2^18 - 1 levels per coordinate (odd: 0 and
+*                      +-1 are codes, axis-aligned normals exact), the nearest of the 4 codes around
+*                      the point (max 0.00061 deg)
 *       Steps are fixed relative changes of what the BRDF reads (a highlight's error is relative);
 *       shaders/gbuffer_codec.glsl has the packing, README "Deferred" the measured errors and limits.
-*       plus RT3 RGBA16F accumulation (emission from the geometry pass, then light) and a depth texture
+*       plus RT3 RGBA16F accumulation (emission and ambient from the geometry pass, then light; alpha:
+*       occlusion, for its debug view only) and a depth texture
 *       (rlLoadTextureDepth, at least 24 bits) under raylib's projection (rlgl's cull distances).
 *       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
 *       inverse projection's cancellation; orthographic z = n + d (f - n)), the view vector (the
@@ -349,9 +351,9 @@
 *         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
 *         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
-*         BeginTextureMode, resolve inside); resolve into a target of its size. Below GGX roughness
-*         ~0.1 a curved surface's pixel on a highlight's steepest flank can differ from forward by
-*         more than 2/255 (first-order bound 9.5/255 at 0.045; 2/255 everywhere needs > 48 bits, README).
+*         BeginTextureMode, resolve inside); resolve into a target of its size. The geometry pass
+*         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
+*         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
@@ -883,7 +885,7 @@ typedef struct RblGBuffer {
     Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
     Texture2D normal;               // RGBA8: bits 47..16 of the normal/material word (octahedral normal, ...)
     Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
-    Texture2D accum;                // RGBA16F: emission, ambient and lights (linear)
+    Texture2D accum;                // RGBA16F: emission, ambient and lights (linear); alpha: occlusion
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblGBufferDesc desc;            // Settings, defaults applied
     int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
@@ -1059,7 +1061,7 @@ RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // 
 RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
 RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with deferred variants of the G-buffer's brdf); false = rejected
 RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
-RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's ambient and lights into the accumulation (bounded lights as volumes); false = rejected
+RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's lights into the accumulation (bounded lights as volumes; ambient: geometry pass); false = rejected
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
 
@@ -1149,7 +1151,7 @@ typedef enum {
 } rbl__Uniform;
 
 typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS } rbl__ProgramKind;
-enum { RBL__PASS_AMBIENT = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_AMBIENT_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
+enum { RBL__PASS_FULLSCREEN = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_FULLSCREEN_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
 
 // What a program is compiled from: equal keys share one program
 typedef struct rbl__ProgramKey {
@@ -1266,6 +1268,8 @@ typedef struct rbl__GBufferState {
     Matrix view;                    // Camera of the last geometry pass
     Matrix projection;
     Vector3 eye;
+    float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
+    bool ambientNoted;              // A later scene's other ambient was logged once
     bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
 } rbl__GBufferState;
 
@@ -1414,6 +1418,29 @@ static bool rbl__unloadable(const void *holder, const void *state, const char *f
 // Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
+static const char *const rbl__shader_ambient[] = {
+    "// Ambient: the scene's sky/ground light on a surface. Forward shaders add it per fragment; the\n",
+    "// G-buffer's geometry pass adds it into the accumulation target (so occlusion is not stored).\n",
+    "//   RBL_BRDF b                2 (GGX) adds the specular reflectance of a uniform environment\n",
+    "#include \"surface.glsl\"\n",
+    "\n",
+    "uniform vec3 rblAmbient;                    // linear sky colour (the scene's ambient)\n",
+    "uniform vec3 rblAmbientGround;              // linear ground colour (= rblAmbient for a flat ambient)\n",
+    "uniform vec3 rblAmbientUp;                  // unit\n",
+    "\n",
+    "// Ambient: uniform light from every direction, attenuated by occlusion. GGX adds F0 times it (the\n",
+    "// specular reflectance of a uniform environment, without a split-sum table).\n",
+    "vec3 rblAmbientLight(RblShadingPoint s)\n",
+    "{\n",
+    "    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);\n",
+    "#if RBL_BRDF == 2\n",
+    "    vec3 reflectance = s.albedo*(1.0 - s.metalness) + mix(vec3(0.04), s.albedo, s.metalness);\n",
+    "#else\n",
+    "    vec3 reflectance = s.albedo;\n",
+    "#endif\n",
+    "    return ambient*s.occlusion*reflectance;\n",
+    "}\n",
+    NULL };
 static const char *const rbl__shader_common[] = {
     "// Common: constants and helpers every stage shares (the one sRGB transfer pair, safe normalise).\n",
     "// Included first by every stage (after dialect.glsl, its one include).\n",
@@ -1463,9 +1490,9 @@ static const char *const rbl__shader_common[] = {
     "    return mix(c*12.92, 1.055*pow(c, vec3(1.0/2.4)) - 0.055, step(vec3(0.0031308), c));\n",
     "}\n",
     NULL };
-static const char *const rbl__shader_deferred_ambient_fs[] = {
-    "// Deferred ambient pass, fragment stage, full screen: the scene's ambient (first chunk) and up to\n",
-    "// RBL_LIGHTS unbounded lights (directional, range 0), added into the accumulation target.\n",
+static const char *const rbl__shader_deferred_fullscreen_fs[] = {
+    "// Deferred full-screen light pass, fragment stage: up to RBL_LIGHTS unbounded lights (directional,\n",
+    "// range 0), added into the accumulation target's rgb (alpha 0 keeps the occlusion there).\n",
     "//   RBL_COUNT_LIGHTS    add the number of lights evaluated instead of light (heat-map view)\n",
     "#include \"gbuffer_read.glsl\"\n",
     "#include \"lights.glsl\"\n",
@@ -1479,10 +1506,10 @@ static const char *const rbl__shader_deferred_ambient_fs[] = {
     "    float depth;\n",
     "    if (!rblLightPassTexel(texel, depth)) discard;\n",
     "#ifdef RBL_COUNT_LIGHTS\n",
-    "    finalColor = vec4(vec3(float(rblLightCount)), 1.0);\n",
+    "    finalColor = vec4(vec3(float(rblLightCount)), 0.0);\n",
     "#else\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, rblPositionFromDepth(texel, depth));\n",
-    "    finalColor = vec4(rblAmbientLight(s) + rblDirectLight(s, rblViewVector(rblEye, rblViewAxis, s.position, s.normal)), 1.0);\n",
+    "    finalColor = vec4(rblDirectLight(s, rblViewVector(rblEye, rblViewAxis, s.position, s.normal)), 0.0);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -1517,7 +1544,8 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "    if (depth >= 1.0) discard;                          // background: nothing was drawn here\n",
     "    vec3 position = rblPositionFromDepth(texel, depth);\n",
     "    gl_FragDepth = depth;                               // later forward draws sort against this\n",
-    "    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;\n",
+    "    vec4 accum = texelFetch(rblGAccum, texel, 0);\n",
+    "    vec3 color = accum.rgb;\n",
     "    float viewDistance = rblViewDistance(rblEye, rblViewAxis, position);\n",
     "    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, viewDistance), 1.0); return; }\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
@@ -1525,7 +1553,7 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "    if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);\n",
     "    else if (rblOutput == 2) v = s.normal*0.5 + 0.5;\n",
     "    else if (rblOutput == 3) v = vec3(s.specular);     // the stored channel: intensity or roughness\n",
-    "    else if (rblOutput == 4) v = vec3(s.occlusion);\n",
+    "    else if (rblOutput == 4) v = vec3(accum.a);          // kept by the geometry pass for this view\n",
     "    else if (rblOutput == 5) v = vec3(clamp(viewDistance/rblOutputScale, 0.0, 1.0));\n",
     "    else if (rblOutput == 6) v = fract(position/rblOutputScale);\n",
     "    else if (rblOutput == 7) v = rblHeat(color.r/rblOutputScale);\n",
@@ -1555,7 +1583,7 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "    vec3 toLight = volumePosition.xyz - position;\n",
     "    if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;\n",
     "#ifdef RBL_COUNT_LIGHTS\n",
-    "    finalColor = vec4(1.0);\n",
+    "    finalColor = vec4(1.0, 1.0, 1.0, 0.0);     // alpha 0: the accumulation target's alpha keeps the occlusion\n",
     "#else\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = rblViewVector(rblEye, rblViewAxis, s.position, s.normal);\n",
@@ -1567,7 +1595,7 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#else\n",
     "    float shadow = 1.0;\n",
     "#endif\n",
-    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);\n",
+    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 0.0);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -1630,8 +1658,10 @@ static const char *const rbl__shader_fullscreen_vs[] = {
     NULL };
 static const char *const rbl__shader_gbuffer_fs[] = {
     "// Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the\n",
-    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit.\n",
+    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit; the scene's ambient (it needs the\n",
+    "// occlusion, which is not stored) is added here with the emission, from the unquantised surface.\n",
     "#include \"material.glsl\"\n",
+    "#include \"ambient.glsl\"\n",
     "#include \"gbuffer_codec.glsl\"\n",
     "\n",
     "layout(location = 0) out vec4 rblOutAlbedo;\n",
@@ -1644,7 +1674,6 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    float alpha;\n",
     "    vec3 emission, tangentNormal;\n",
     "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);\n",
-    "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);\n",
     "#if RBL_BRDF == 1\n",
     "    // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)\n",
     "    float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));\n",
@@ -1658,45 +1687,46 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    uint field2 = rblQuantize(sp.specular, RBL_GB_FIELD2_BITS);\n",
     "#endif\n",
     "    vec2 params;\n",
-    "    rblPackWord(sp.normal, field1, field2, rblOutNormal, params);\n",
+    "    float albedoA;\n",
+    "    rblPackWord(sp.normal, field1, field2, rblOutNormal, albedoA, params);\n",
+    "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), albedoA);\n",
     "    rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)\n",
-    "    rblOutAccum = vec4(emission, 1.0);\n",
+    "    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_gbuffer_codec[] = {
     "// G-buffer codec: how the geometry pass packs a surface into 10 bytes per pixel and the lighting\n",
     "// passes unpack it (RblLoadGBuffer; position is never stored, it comes back from depth):\n",
-    "//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a occlusion\n",
-    "//   RT1 RGBA8 + RT2 RG8: one 48-bit word, RT1.r its most significant byte, RT2.g its least:\n",
-    "//     GGX, Lambert   normal 30 bits | perceptual roughness 10 (GGX; Lambert: 0) | metalness 8 (Lambert:\n",
-    "//                    the specular map, for the debug view)\n",
-    "//     Blinn-Phong    normal 29 bits | shininess 10 | specular intensity 9 (colour folded to its luminance)\n",
-    "//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then ambient and lights\n",
+    "//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a bits 23..16 of the word\n",
+    "//   RT1 RGBA8    bits 55..24 of a 56-bit normal/material word, RT1.r its most significant byte\n",
+    "//   RT2 RG8      bits 15..0 of the word\n",
+    "//   RT3 RGBA16F  light accumulation: emission and the scene's ambient from the geometry pass, then\n",
+    "//                the lights; alpha keeps the occlusion (its debug view; light passes add alpha 0)\n",
+    "//   word         normal x 18 bits | normal y 18 | field 1 | field 2 (20 bits together)\n",
+    "//     GGX          roughness 12 | metalness 8\n",
+    "//     Blinn-Phong  shininess 11 | specular intensity 9 (colour folded to its luminance)\n",
+    "//     Lambert      0 12 | the specular map 8 (the debug view)\n",
     "// Every field is stored in the form whose step is the same relative change of what the BRDF reads\n",
     "// (a highlight's error is relative), except metalness (linear in the output). Not stored: the\n",
-    "// normal's third coordinate, roughness below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the\n",
-    "// (n + 8)/8 normalisation.\n",
-    "//   normal       octahedral (Cigolle et al. 2014), L levels per coordinate, L odd so that 0 and +-1\n",
-    "//                are codes (axis-aligned normals exact), code = x L + y; of the 4 neighbouring codes\n",
-    "//                the one decoding nearest the normal. L = 32767 (GGX, Lambert), 23169 (Blinn-Phong).\n",
-    "//   roughness    log over [RBL_MIN_ROUGHNESS, 1], 1023 steps\n",
+    "// normal's third coordinate, occlusion (the ambient it scales is added by the geometry pass), roughness\n",
+    "// below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
+    "//   normal       octahedral (Cigolle et al. 2014), L = 2^18 - 1 levels per coordinate, odd so that 0 and\n",
+    "//                +-1 are codes (axis-aligned normals exact); of the 4 neighbouring codes the one\n",
+    "//                decoding nearest the normal\n",
+    "//   roughness    log over [RBL_MIN_ROUGHNESS, 1], 4095 steps\n",
     "//   metalness    linear, 255 steps (0 and 1 exact)\n",
-    "//   shininess    log2(n)/11, 1023 steps (n in 1..2048)\n",
+    "//   shininess    log2(n)/11, 2047 steps (n in 1..2048)\n",
     "//   intensity    log2(1 + 256 s)/9, 511 steps: relative above 1/256, linear toward 0 (0 exact), s <= 511/256\n",
     "#include \"common.glsl\"\n",
     "\n",
+    "#define RBL_GB_NORMAL_LEVELS 262143u    // per coordinate: 2^18 - 1\n",
     "#if RBL_BRDF == 1\n",
-    "#define RBL_GB_NORMAL_LEVELS 23169u     // 23169^2 < 2^29\n",
-    "#define RBL_GB_NORMAL_BITS 29u\n",
-    "#define RBL_GB_FIELD1_BITS 10u          // shininess\n",
+    "#define RBL_GB_FIELD1_BITS 11u          // shininess\n",
     "#define RBL_GB_FIELD2_BITS 9u           // specular intensity\n",
     "#else\n",
-    "#define RBL_GB_NORMAL_LEVELS 32767u     // 32767^2 < 2^30\n",
-    "#define RBL_GB_NORMAL_BITS 30u\n",
-    "#define RBL_GB_FIELD1_BITS 10u          // roughness\n",
+    "#define RBL_GB_FIELD1_BITS 12u          // roughness (Lambert: 0)\n",
     "#define RBL_GB_FIELD2_BITS 8u           // metalness (Lambert: specular map)\n",
     "#endif\n",
-    "#define RBL_GB_SPLIT (32u - RBL_GB_NORMAL_BITS)     // bits of field 1 in RT1 (the rest in RT2)\n",
     "\n",
     "// Octahedral map of a unit vector onto [-1,1]^2 and back (the lower hemisphere folded over the diagonals)\n",
     "vec2 rblOctahedral(vec3 n)\n",
@@ -1718,7 +1748,7 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "// Normal code: the nearest of the 4 codes around the octahedral point (rounding each coordinate\n",
     "// alone can pick a farther one: the map's cells are sheared). Compared as |d - n|^2, which float\n",
     "// resolves at these angles (1 - cos would not).\n",
-    "uint rblPackNormal(vec3 n)\n",
+    "uvec2 rblPackNormal(vec3 n)\n",
     "{\n",
     "    float centre = float(RBL_GB_NORMAL_LEVELS - 1u)*0.5;\n",
     "    vec2 f = clamp(rblOctahedral(n)*centre + centre, 0.0, 2.0*centre);\n",
@@ -1731,14 +1761,13 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "        float e = dot(d, d);\n",
     "        if (e < best) { best = e; q = c; }\n",
     "    }\n",
-    "    return uint(q.x)*RBL_GB_NORMAL_LEVELS + uint(q.y);\n",
+    "    return uvec2(q);\n",
     "}\n",
     "\n",
-    "vec3 rblUnpackNormal(uint code)\n",
+    "vec3 rblUnpackNormal(uvec2 code)\n",
     "{\n",
     "    float centre = float(RBL_GB_NORMAL_LEVELS - 1u)*0.5;\n",
-    "    uint x = code/RBL_GB_NORMAL_LEVELS;\n",
-    "    return rblOctahedralDecode((vec2(float(x), float(code - x*RBL_GB_NORMAL_LEVELS)) - centre)/centre);\n",
+    "    return rblOctahedralDecode((vec2(code) - centre)/centre);\n",
     "}\n",
     "\n",
     "// Fields in [0,1] <-> codes of b bits\n",
@@ -1752,23 +1781,26 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "float rblEncodeIntensity(float s) { return log2(1.0 + 256.0*max(s, 0.0))/9.0; }\n",
     "float rblDecodeIntensity(float t) { return (exp2(t*9.0) - 1.0)/256.0; }\n",
     "\n",
-    "// The 48-bit word as RT1 (4 bytes) and RT2 (2 bytes), each byte /255 as an 8-bit target stores it\n",
-    "void rblPackWord(vec3 normal, uint field1, uint field2, out vec4 rt1, out vec2 rt2)\n",
+    "// The 56-bit word as RT1 (4 bytes), RT0's alpha and RT2 (2 bytes), each byte /255 as an 8-bit target\n",
+    "// stores it: hi = bits 55..24, lo = bits 23..0\n",
+    "void rblPackWord(vec3 normal, uint field1, uint field2, out vec4 rt1, out float rt0a, out vec2 rt2)\n",
     "{\n",
-    "    uint hi = (rblPackNormal(normal) << RBL_GB_SPLIT) | (field1 >> (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT));\n",
-    "    uint lo = ((field1 & ((1u << (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT)) - 1u)) << RBL_GB_FIELD2_BITS) | field2;\n",
+    "    uvec2 q = rblPackNormal(normal);\n",
+    "    uint hi = (q.x << 14u) | (q.y >> 4u);\n",
+    "    uint lo = ((q.y & 15u) << 20u) | (field1 << RBL_GB_FIELD2_BITS) | field2;\n",
     "    rt1 = vec4(float(hi >> 24u), float((hi >> 16u) & 255u), float((hi >> 8u) & 255u), float(hi & 255u))/255.0;\n",
-    "    rt2 = vec2(float(lo >> 8u), float(lo & 255u))/255.0;\n",
+    "    rt0a = float(lo >> 16u)/255.0;\n",
+    "    rt2 = vec2(float((lo >> 8u) & 255u), float(lo & 255u))/255.0;\n",
     "}\n",
     "\n",
-    "void rblUnpackWord(vec4 rt1, vec2 rt2, out vec3 normal, out uint field1, out uint field2)\n",
+    "void rblUnpackWord(vec4 rt1, float rt0a, vec2 rt2, out vec3 normal, out uint field1, out uint field2)\n",
     "{\n",
     "    uvec4 a = uvec4(floor(rt1*255.0 + 0.5));\n",
-    "    uvec2 b = uvec2(floor(rt2*255.0 + 0.5));\n",
+    "    uvec3 b = uvec3(floor(vec3(rt0a, rt2)*255.0 + 0.5));\n",
     "    uint hi = (a.x << 24u) | (a.y << 16u) | (a.z << 8u) | a.w;\n",
-    "    uint lo = (b.x << 8u) | b.y;\n",
-    "    normal = rblUnpackNormal(hi >> RBL_GB_SPLIT);\n",
-    "    field1 = ((hi & ((1u << RBL_GB_SPLIT) - 1u)) << (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT)) | (lo >> RBL_GB_FIELD2_BITS);\n",
+    "    uint lo = (b.x << 16u) | (b.y << 8u) | b.z;\n",
+    "    normal = rblUnpackNormal(uvec2(hi >> 14u, ((hi & 16383u) << 4u) | (lo >> 20u)));\n",
+    "    field1 = (lo >> RBL_GB_FIELD2_BITS) & ((1u << RBL_GB_FIELD1_BITS) - 1u);\n",
     "    field2 = lo & ((1u << RBL_GB_FIELD2_BITS) - 1u);\n",
     "}\n",
     NULL };
@@ -1778,8 +1810,8 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "#include \"surface.glsl\"\n",
     "#include \"gbuffer_codec.glsl\"\n",
     "\n",
-    "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion\n",
-    "uniform sampler2D rblGNormal;           // RGBA8: bits 47..16 of the normal/material word\n",
+    "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, bits 23..16 of the normal/material word\n",
+    "uniform sampler2D rblGNormal;           // RGBA8: bits 55..24\n",
     "uniform sampler2D rblGParams;           // RG8: bits 15..0\n",
     "uniform sampler2D rblGDepth;            // depth texture of the geometry pass\n",
     "uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)\n",
@@ -1822,9 +1854,9 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    RblShadingPoint s;\n",
     "    s.position = position;\n",
     "    uint field1, field2;\n",
-    "    rblUnpackWord(n, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
+    "    rblUnpackWord(n, a.a, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
     "    s.albedo = rblSrgbToLinear(a.rgb);\n",
-    "    s.occlusion = a.a;\n",
+    "    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
     "    s.metalness = 0.0;\n",
@@ -1843,7 +1875,7 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "}\n",
     NULL };
 static const char *const rbl__shader_lights[] = {
-    "// Lights: light and ambient uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,\n",
+    "// Lights: light uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,\n",
     "// GGX), and the sum over the light slots. Units: a light of linear colour c and intensity I delivers\n",
     "// irradiance E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the\n",
     "// light, so a white Lambert surface lit head-on by E = 1 returns exactly 1.\n",
@@ -1853,6 +1885,7 @@ static const char *const rbl__shader_lights[] = {
     "//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation\n",
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
     "#include \"surface.glsl\"\n",
+    "#include \"ambient.glsl\"\n",
     "#include \"shadows.glsl\"\n",
     "\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
@@ -1869,9 +1902,6 @@ static const char *const rbl__shader_lights[] = {
     "uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (windowed lights: 0, 0, 1)\n",
     "#endif\n",
     "#endif\n",
-    "uniform vec3 rblAmbient;                    // linear sky colour (the scene's ambient)\n",
-    "uniform vec3 rblAmbientGround;              // linear ground colour (= rblAmbient for a flat ambient)\n",
-    "uniform vec3 rblAmbientUp;                  // unit\n",
     "#if RBL_SHADOWS > 0\n",
     "uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)\n",
     "#endif\n",
@@ -1906,19 +1936,6 @@ static const char *const rbl__shader_lights[] = {
     "#else\n",
     "    return s.albedo;\n",
     "#endif\n",
-    "}\n",
-    "\n",
-    "// Ambient: uniform light from every direction, attenuated by occlusion. GGX adds F0 times it (the\n",
-    "// specular reflectance of a uniform environment, without a split-sum table).\n",
-    "vec3 rblAmbientLight(RblShadingPoint s)\n",
-    "{\n",
-    "    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);\n",
-    "#if RBL_BRDF == 2\n",
-    "    vec3 reflectance = s.albedo*(1.0 - s.metalness) + mix(vec3(0.04), s.albedo, s.metalness);\n",
-    "#else\n",
-    "    vec3 reflectance = s.albedo;\n",
-    "#endif\n",
-    "    return ambient*s.occlusion*reflectance;\n",
     "}\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
@@ -2952,8 +2969,9 @@ static const char *const rbl__shader_volume_vs[] = {
     NULL };
 // Every embedded shader by file name (tests compare these with shaders/*.glsl)
 static const struct { const char *file; const char *const *source; } rbl__shaderFiles[] = {
+    { "ambient.glsl", rbl__shader_ambient },
     { "common.glsl", rbl__shader_common },
-    { "deferred_ambient.fs.glsl", rbl__shader_deferred_ambient_fs },
+    { "deferred_fullscreen.fs.glsl", rbl__shader_deferred_fullscreen_fs },
     { "deferred_resolve.fs.glsl", rbl__shader_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__shader_deferred_volume_fs },
     { "dialect.glsl", rbl__shader_dialect },
@@ -2979,18 +2997,18 @@ static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialec
 static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_skinning, rbl__shader_lit_vs, NULL };
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_ambient_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_ambient_fs, NULL };
+static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
     { "lit_instanced.vs.glsl", rbl__pass_lit_instanced_vs },
     { "volume.vs.glsl", rbl__pass_volume_vs },
-    { "deferred_ambient.fs.glsl", rbl__pass_deferred_ambient_fs },
+    { "deferred_fullscreen.fs.glsl", rbl__pass_deferred_fullscreen_fs },
     { "deferred_resolve.fs.glsl", rbl__pass_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__pass_deferred_volume_fs },
     { "gbuffer.fs.glsl", rbl__pass_gbuffer_fs },
@@ -5831,9 +5849,9 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if (key->kind == RBL__KIND_PASS)
     {
         static const char *const *const *const vs[RBL__PASS_COUNT] = { rbl__pass_fullscreen_vs, rbl__pass_volume_vs, rbl__pass_fullscreen_vs, rbl__pass_fullscreen_vs, rbl__pass_volume_vs };
-        static const char *const *const *const fs[RBL__PASS_COUNT] = { rbl__pass_deferred_ambient_fs, rbl__pass_deferred_volume_fs, rbl__pass_deferred_resolve_fs,
-                                                                       rbl__pass_deferred_ambient_fs, rbl__pass_deferred_volume_fs };
-        if ((key->pass == RBL__PASS_AMBIENT_COUNT) || (key->pass == RBL__PASS_VOLUME_COUNT))
+        static const char *const *const *const fs[RBL__PASS_COUNT] = { rbl__pass_deferred_fullscreen_fs, rbl__pass_deferred_volume_fs, rbl__pass_deferred_resolve_fs,
+                                                                       rbl__pass_deferred_fullscreen_fs, rbl__pass_deferred_volume_fs };
+        if ((key->pass == RBL__PASS_FULLSCREEN_COUNT) || (key->pass == RBL__PASS_VOLUME_COUNT))
         {
             size_t l = strlen(defines);
             snprintf(defines + l, sizeof(defines) - l, "#define RBL_COUNT_LIGHTS\n");
@@ -6341,7 +6359,7 @@ static int rbl__uploadSceneLights(const rbl__Program *p)
 // The current scene into program p (every kind reads what it declares); returns lights left out
 static int rbl__uploadSceneInto(rbl__Program *p)
 {
-    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_MATRIX] == -1)) return 0;
+    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_MATRIX] == -1) && (p->loc[RBL__U_AMBIENT] == -1)) return 0;
     int skipped = 0;
     rlEnableShader(p->shader.id);
     bool pass = (p->key.kind == RBL__KIND_PASS);
@@ -6978,6 +6996,10 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     gbuffer->state->view = rlGetMatrixModelview();
     gbuffer->state->projection = rlGetMatrixProjection();
     gbuffer->state->eye = camera.position;
+    const rbl__Scene *sc = &rbl__state.scene;
+    memcpy(&gbuffer->state->ambient[0], sc->ambient, sizeof(sc->ambient));
+    memcpy(&gbuffer->state->ambient[3], sc->ground, sizeof(sc->ground));
+    memcpy(&gbuffer->state->ambient[6], sc->up, sizeof(sc->up));
     gbuffer->state->begun = true;
     rbl__state.gbufferPass = gbuffer;
     return true;
@@ -7044,9 +7066,9 @@ static void rbl__unbindGBufferPass(void)
     rlDisableShader();
 }
 
-// Full-screen pass over unbounded lights (the forward shader's uniform arrays); the first pass of a
-// frame also adds the scene's ambient, later ones none
-static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, bool withAmbient, const int shadowSlot[4])
+// Full-screen pass over unbounded lights (the forward shader's uniform arrays; the ambient was added
+// by the geometry pass)
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const int shadowSlot[4])
 {
     const int *loc = rbl__bindGBufferPass(g, pass);
     const rbl__Scene *s = &rbl__state.scene;
@@ -7058,9 +7080,6 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
         for (int k = 0; k < n; k++) slots[k] = shadowSlot[k];
         rbl__uploadShadows(rbl__passProgram(g, pass), slots);
     }
-    float zero[3] = { 0.0f, 0.0f, 0.0f };
-    if (loc[RBL__U_AMBIENT] != -1) rlSetUniform(loc[RBL__U_AMBIENT], withAmbient? s->ambient : zero, SHADER_UNIFORM_VEC3, 1);
-    if (loc[RBL__U_AMBIENT_GROUND] != -1) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], withAmbient? s->ground : zero, SHADER_UNIFORM_VEC3, 1);
     if (loc[RBL__U_LIGHT_COUNT] != -1) rlSetUniform(loc[RBL__U_LIGHT_COUNT], &count, SHADER_UNIFORM_INT, 1);
     if (count > 0)
     {
@@ -7101,6 +7120,14 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         return false;
     }
     if (uncompiled > 0) TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: %i light(s) of types not in the G-buffer's lightFeatures left out", uncompiled);
+    // The ambient came with the geometry pass: a scene set since then with another one is noted once
+    float now[9];
+    memcpy(&now[0], s->ambient, sizeof(s->ambient)); memcpy(&now[3], s->ground, sizeof(s->ground)); memcpy(&now[6], s->up, sizeof(s->up));
+    if (!g->state->ambientNoted && (memcmp(now, g->state->ambient, sizeof(now)) != 0))
+    {
+        TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: the scene's ambient changed after the geometry pass, which added the earlier one (RblSetScene before RblBeginGBuffer)");
+        g->state->ambientNoted = true;
+    }
     // Volumes need the instance buffer to hold every bounded light (grown with a log line)
     if (count > g->state->instanceCapacity)
     {
@@ -7124,9 +7151,9 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     rlEnableColorBlend();
     if (counting) { rlClearColor(0, 0, 0, 0); rlClearScreenBuffers(); }   // the count replaces the emission
 
-    // Full-screen: the ambient and every unbounded light, in chunks of RBL_MAX_LIGHTS
-    int passAmbient = counting? RBL__PASS_AMBIENT_COUNT : RBL__PASS_AMBIENT;
-    int n = 0, chunks = 0;
+    // Full-screen: every unbounded light, in chunks of RBL_MAX_LIGHTS (none: no pass)
+    int passFullscreen = counting? RBL__PASS_FULLSCREEN_COUNT : RBL__PASS_FULLSCREEN;
+    int n = 0;
     int shadowSlot[4] = { -1, -1, -1, -1 };                 // slot of each shadowed light in this chunk
     for (int i = 0; i <= count; i++)
     {
@@ -7138,12 +7165,11 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
             if (d[15] > 0.0f) shadowSlot[(int)d[15] - 1] = n;
             n++;
         }
-        if ((n == RBL_MAX_LIGHTS) || ((i == count) && ((n > 0) || (chunks == 0))))
+        if ((n == RBL_MAX_LIGHTS) || ((i == count) && (n > 0)))
         {
-            rbl__fullscreenLights(g, passAmbient, pos, col, spot, att, n, chunks == 0, shadowSlot);
+            rbl__fullscreenLights(g, passFullscreen, pos, col, spot, att, n, shadowSlot);
             for (int k = 0; k < 4; k++) shadowSlot[k] = -1;
             n = 0;
-            chunks++;
         }
     }
     g->lightsFullscreen = unbounded;

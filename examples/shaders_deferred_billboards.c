@@ -257,12 +257,12 @@ static void DeferredPasses(void)
     floorMaterial.shader = sceneShader;
     sphereMaterial.shader = sceneShader;
     lanternMat.shader = lanternShader;
-    // 1. Geometry pass: billboards and Models write the G-buffer
+    RblSetScene(&deferredScene);                // This frame's lights and ambient, before the passes read them
+    // 1. Geometry pass: billboards and Models write the G-buffer (and add the ambient)
     RblBeginGBuffer(&gbuffer, deferredCamera);
         DrawScene(floorMaterial, sphereMaterial, lanternMat);
     RblEndGBuffer(&gbuffer);
     // 2. Lights: the scene's moon full screen, every point light as a volume
-    RblSetScene(&deferredScene);                // Where the lights are this frame
     RblDrawDeferredLights(&gbuffer);
 }
 

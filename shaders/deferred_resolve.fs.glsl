@@ -28,7 +28,8 @@ void main()
     if (depth >= 1.0) discard;                          // background: nothing was drawn here
     vec3 position = rblPositionFromDepth(texel, depth);
     gl_FragDepth = depth;                               // later forward draws sort against this
-    vec3 color = texelFetch(rblGAccum, texel, 0).rgb;
+    vec4 accum = texelFetch(rblGAccum, texel, 0);
+    vec3 color = accum.rgb;
     float viewDistance = rblViewDistance(rblEye, rblViewAxis, position);
     if (rblOutput == 0) { finalColor = vec4(rblFinish(color, viewDistance), 1.0); return; }
     RblShadingPoint s = rblGBufferSurface(texel, position);
@@ -36,7 +37,7 @@ void main()
     if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);
     else if (rblOutput == 2) v = s.normal*0.5 + 0.5;
     else if (rblOutput == 3) v = vec3(s.specular);     // the stored channel: intensity or roughness
-    else if (rblOutput == 4) v = vec3(s.occlusion);
+    else if (rblOutput == 4) v = vec3(accum.a);          // kept by the geometry pass for this view
     else if (rblOutput == 5) v = vec3(clamp(viewDistance/rblOutputScale, 0.0, 1.0));
     else if (rblOutput == 6) v = fract(position/rblOutputScale);
     else if (rblOutput == 7) v = rblHeat(color.r/rblOutputScale);

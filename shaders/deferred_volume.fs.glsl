@@ -20,7 +20,7 @@ void main()
     vec3 toLight = volumePosition.xyz - position;
     if (dot(toLight, toLight)*volumeColor.a*volumeColor.a >= 1.0) discard;
 #ifdef RBL_COUNT_LIGHTS
-    finalColor = vec4(1.0);
+    finalColor = vec4(1.0, 1.0, 1.0, 0.0);     // alpha 0: the accumulation target's alpha keeps the occlusion
 #else
     RblShadingPoint s = rblGBufferSurface(texel, position);
     vec3 v = rblViewVector(rblEye, rblViewAxis, s.position, s.normal);
@@ -32,6 +32,6 @@ void main()
 #else
     float shadow = 1.0;
 #endif
-    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 1.0);
+    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 0.0);
 #endif
 }

@@ -1,6 +1,8 @@
 // Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the
-// G-buffer (layout: gbuffer_codec.glsl) instead of being lit.
+// G-buffer (layout: gbuffer_codec.glsl) instead of being lit; the scene's ambient (it needs the
+// occlusion, which is not stored) is added here with the emission, from the unquantised surface.
 #include "material.glsl"
+#include "ambient.glsl"
 #include "gbuffer_codec.glsl"
 
 layout(location = 0) out vec4 rblOutAlbedo;
@@ -13,7 +15,6 @@ void main()
     float alpha;
     vec3 emission, tangentNormal;
     RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);
-    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), sp.occlusion);
 #if RBL_BRDF == 1
     // Blinn-Phong: the specular colour is folded into one intensity (its luminance; white in the G-buffer)
     float specular = sp.specular*dot(sp.specularColor, vec3(0.2126, 0.7152, 0.0722));
@@ -27,7 +28,9 @@ void main()
     uint field2 = rblQuantize(sp.specular, RBL_GB_FIELD2_BITS);
 #endif
     vec2 params;
-    rblPackWord(sp.normal, field1, field2, rblOutNormal, params);
+    float albedoA;
+    rblPackWord(sp.normal, field1, field2, rblOutNormal, albedoA, params);
+    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), albedoA);
     rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)
-    rblOutAccum = vec4(emission, 1.0);
+    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);
 }

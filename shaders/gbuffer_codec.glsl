@@ -1,36 +1,35 @@
 // G-buffer codec: how the geometry pass packs a surface into 10 bytes per pixel and the lighting
 // passes unpack it (RblLoadGBuffer; position is never stored, it comes back from depth):
-//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a occlusion
-//   RT1 RGBA8 + RT2 RG8: one 48-bit word, RT1.r its most significant byte, RT2.g its least:
-//     GGX, Lambert   normal 30 bits | perceptual roughness 10 (GGX; Lambert: 0) | metalness 8 (Lambert:
-//                    the specular map, for the debug view)
-//     Blinn-Phong    normal 29 bits | shininess 10 | specular intensity 9 (colour folded to its luminance)
-//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then ambient and lights
+//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a bits 23..16 of the word
+//   RT1 RGBA8    bits 55..24 of a 56-bit normal/material word, RT1.r its most significant byte
+//   RT2 RG8      bits 15..0 of the word
+//   RT3 RGBA16F  light accumulation: emission and the scene's ambient from the geometry pass, then
+//                the lights; alpha keeps the occlusion (its debug view; light passes add alpha 0)
+//   word         normal x 18 bits | normal y 18 | field 1 | field 2 (20 bits together)
+//     GGX          roughness 12 | metalness 8
+//     Blinn-Phong  shininess 11 | specular intensity 9 (colour folded to its luminance)
+//     Lambert      0 12 | the specular map 8 (the debug view)
 // Every field is stored in the form whose step is the same relative change of what the BRDF reads
 // (a highlight's error is relative), except metalness (linear in the output). Not stored: the
-// normal's third coordinate, roughness below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the
-// (n + 8)/8 normalisation.
-//   normal       octahedral (Cigolle et al. 2014), L levels per coordinate, L odd so that 0 and +-1
-//                are codes (axis-aligned normals exact), code = x L + y; of the 4 neighbouring codes
-//                the one decoding nearest the normal. L = 32767 (GGX, Lambert), 23169 (Blinn-Phong).
-//   roughness    log over [RBL_MIN_ROUGHNESS, 1], 1023 steps
+// normal's third coordinate, occlusion (the ambient it scales is added by the geometry pass), roughness
+// below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the (n + 8)/8 normalisation.
+//   normal       octahedral (Cigolle et al. 2014), L = 2^18 - 1 levels per coordinate, odd so that 0 and
+//                +-1 are codes (axis-aligned normals exact); of the 4 neighbouring codes the one
+//                decoding nearest the normal
+//   roughness    log over [RBL_MIN_ROUGHNESS, 1], 4095 steps
 //   metalness    linear, 255 steps (0 and 1 exact)
-//   shininess    log2(n)/11, 1023 steps (n in 1..2048)
+//   shininess    log2(n)/11, 2047 steps (n in 1..2048)
 //   intensity    log2(1 + 256 s)/9, 511 steps: relative above 1/256, linear toward 0 (0 exact), s <= 511/256
 #include "common.glsl"
 
+#define RBL_GB_NORMAL_LEVELS 262143u    // per coordinate: 2^18 - 1
 #if RBL_BRDF == 1
-#define RBL_GB_NORMAL_LEVELS 23169u     // 23169^2 < 2^29
-#define RBL_GB_NORMAL_BITS 29u
-#define RBL_GB_FIELD1_BITS 10u          // shininess
+#define RBL_GB_FIELD1_BITS 11u          // shininess
 #define RBL_GB_FIELD2_BITS 9u           // specular intensity
 #else
-#define RBL_GB_NORMAL_LEVELS 32767u     // 32767^2 < 2^30
-#define RBL_GB_NORMAL_BITS 30u
-#define RBL_GB_FIELD1_BITS 10u          // roughness
+#define RBL_GB_FIELD1_BITS 12u          // roughness (Lambert: 0)
 #define RBL_GB_FIELD2_BITS 8u           // metalness (Lambert: specular map)
 #endif
-#define RBL_GB_SPLIT (32u - RBL_GB_NORMAL_BITS)     // bits of field 1 in RT1 (the rest in RT2)
 
 // Octahedral map of a unit vector onto [-1,1]^2 and back (the lower hemisphere folded over the diagonals)
 vec2 rblOctahedral(vec3 n)
@@ -52,7 +51,7 @@ vec3 rblOctahedralDecode(vec2 e)
 // Normal code: the nearest of the 4 codes around the octahedral point (rounding each coordinate
 // alone can pick a farther one: the map's cells are sheared). Compared as |d - n|^2, which float
 // resolves at these angles (1 - cos would not).
-uint rblPackNormal(vec3 n)
+uvec2 rblPackNormal(vec3 n)
 {
     float centre = float(RBL_GB_NORMAL_LEVELS - 1u)*0.5;
     vec2 f = clamp(rblOctahedral(n)*centre + centre, 0.0, 2.0*centre);
@@ -65,14 +64,13 @@ uint rblPackNormal(vec3 n)
         float e = dot(d, d);
         if (e < best) { best = e; q = c; }
     }
-    return uint(q.x)*RBL_GB_NORMAL_LEVELS + uint(q.y);
+    return uvec2(q);
 }
 
-vec3 rblUnpackNormal(uint code)
+vec3 rblUnpackNormal(uvec2 code)
 {
     float centre = float(RBL_GB_NORMAL_LEVELS - 1u)*0.5;
-    uint x = code/RBL_GB_NORMAL_LEVELS;
-    return rblOctahedralDecode((vec2(float(x), float(code - x*RBL_GB_NORMAL_LEVELS)) - centre)/centre);
+    return rblOctahedralDecode((vec2(code) - centre)/centre);
 }
 
 // Fields in [0,1] <-> codes of b bits
@@ -86,22 +84,25 @@ float rblDecodeShininess(float t) { return exp2(t*11.0); }
 float rblEncodeIntensity(float s) { return log2(1.0 + 256.0*max(s, 0.0))/9.0; }
 float rblDecodeIntensity(float t) { return (exp2(t*9.0) - 1.0)/256.0; }
 
-// The 48-bit word as RT1 (4 bytes) and RT2 (2 bytes), each byte /255 as an 8-bit target stores it
-void rblPackWord(vec3 normal, uint field1, uint field2, out vec4 rt1, out vec2 rt2)
+// The 56-bit word as RT1 (4 bytes), RT0's alpha and RT2 (2 bytes), each byte /255 as an 8-bit target
+// stores it: hi = bits 55..24, lo = bits 23..0
+void rblPackWord(vec3 normal, uint field1, uint field2, out vec4 rt1, out float rt0a, out vec2 rt2)
 {
-    uint hi = (rblPackNormal(normal) << RBL_GB_SPLIT) | (field1 >> (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT));
-    uint lo = ((field1 & ((1u << (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT)) - 1u)) << RBL_GB_FIELD2_BITS) | field2;
+    uvec2 q = rblPackNormal(normal);
+    uint hi = (q.x << 14u) | (q.y >> 4u);
+    uint lo = ((q.y & 15u) << 20u) | (field1 << RBL_GB_FIELD2_BITS) | field2;
     rt1 = vec4(float(hi >> 24u), float((hi >> 16u) & 255u), float((hi >> 8u) & 255u), float(hi & 255u))/255.0;
-    rt2 = vec2(float(lo >> 8u), float(lo & 255u))/255.0;
+    rt0a = float(lo >> 16u)/255.0;
+    rt2 = vec2(float((lo >> 8u) & 255u), float(lo & 255u))/255.0;
 }
 
-void rblUnpackWord(vec4 rt1, vec2 rt2, out vec3 normal, out uint field1, out uint field2)
+void rblUnpackWord(vec4 rt1, float rt0a, vec2 rt2, out vec3 normal, out uint field1, out uint field2)
 {
     uvec4 a = uvec4(floor(rt1*255.0 + 0.5));
-    uvec2 b = uvec2(floor(rt2*255.0 + 0.5));
+    uvec3 b = uvec3(floor(vec3(rt0a, rt2)*255.0 + 0.5));
     uint hi = (a.x << 24u) | (a.y << 16u) | (a.z << 8u) | a.w;
-    uint lo = (b.x << 8u) | b.y;
-    normal = rblUnpackNormal(hi >> RBL_GB_SPLIT);
-    field1 = ((hi & ((1u << RBL_GB_SPLIT) - 1u)) << (RBL_GB_FIELD1_BITS - RBL_GB_SPLIT)) | (lo >> RBL_GB_FIELD2_BITS);
+    uint lo = (b.x << 16u) | (b.y << 8u) | b.z;
+    normal = rblUnpackNormal(uvec2(hi >> 14u, ((hi & 16383u) << 4u) | (lo >> 20u)));
+    field1 = (lo >> RBL_GB_FIELD2_BITS) & ((1u << RBL_GB_FIELD1_BITS) - 1u);
     field2 = lo & ((1u << RBL_GB_FIELD2_BITS) - 1u);
 }

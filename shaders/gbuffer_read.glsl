@@ -3,8 +3,8 @@
 #include "surface.glsl"
 #include "gbuffer_codec.glsl"
 
-uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, occlusion
-uniform sampler2D rblGNormal;           // RGBA8: bits 47..16 of the normal/material word
+uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, bits 23..16 of the normal/material word
+uniform sampler2D rblGNormal;           // RGBA8: bits 55..24
 uniform sampler2D rblGParams;           // RG8: bits 15..0
 uniform sampler2D rblGDepth;            // depth texture of the geometry pass
 uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)
@@ -47,9 +47,9 @@ RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
     RblShadingPoint s;
     s.position = position;
     uint field1, field2;
-    rblUnpackWord(n, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)
+    rblUnpackWord(n, a.a, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)
     s.albedo = rblSrgbToLinear(a.rgb);
-    s.occlusion = a.a;
+    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales
     s.specularColor = vec3(1.0);
     s.shininess = 1.0;
     s.metalness = 0.0;

@@ -1,4 +1,4 @@
-// Lights: light and ambient uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,
+// Lights: light uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,
 // GGX), and the sum over the light slots. Units: a light of linear colour c and intensity I delivers
 // irradiance E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the
 // light, so a white Lambert surface lit head-on by E = 1 returns exactly 1.
@@ -8,6 +8,7 @@
 //   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation
 //   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)
 #include "surface.glsl"
+#include "ambient.glsl"
 #include "shadows.glsl"
 
 #define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
@@ -24,9 +25,6 @@ uniform vec4 rblLightSpot[RBL_LIGHTS];      // xyz cone axis * scale, w offset; 
 uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (windowed lights: 0, 0, 1)
 #endif
 #endif
-uniform vec3 rblAmbient;                    // linear sky colour (the scene's ambient)
-uniform vec3 rblAmbientGround;              // linear ground colour (= rblAmbient for a flat ambient)
-uniform vec3 rblAmbientUp;                  // unit
 #if RBL_SHADOWS > 0
 uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)
 #endif
@@ -61,19 +59,6 @@ vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)
 #else
     return s.albedo;
 #endif
-}
-
-// Ambient: uniform light from every direction, attenuated by occlusion. GGX adds F0 times it (the
-// specular reflectance of a uniform environment, without a split-sum table).
-vec3 rblAmbientLight(RblShadingPoint s)
-{
-    vec3 ambient = mix(rblAmbientGround, rblAmbient, dot(s.normal, rblAmbientUp)*0.5 + 0.5);
-#if RBL_BRDF == 2
-    vec3 reflectance = s.albedo*(1.0 - s.metalness) + mix(vec3(0.04), s.albedo, s.metalness);
-#else
-    vec3 reflectance = s.albedo;
-#endif
-    return ambient*s.occlusion*reflectance;
 }
 
 #if RBL_SHADOWS > 0

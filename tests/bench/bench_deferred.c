@@ -20,8 +20,8 @@
 //                            so identical geometry drawn by the same program passes it again. The forward
 //                            shader writes sRGB-encoded colour, so adding passes is not physically the
 //                            same as one pass over every light: only the timing of those rows matters.
-//                  volumes   RblLoadGBuffer + geometry pass (desc.deferred material) + RblSetScene (the n
-//                            lights) + RblDrawDeferredLights (bounded lights as instanced sphere volumes) +
+//                  volumes   RblLoadGBuffer + RblSetScene (the n lights) + geometry pass (desc.deferred
+//                            material; it adds the ambient) + RblDrawDeferredLights (bounded lights as instanced sphere volumes) +
 //                            RblResolveGBuffer into the 1280x720 RenderTexture.
 //                  naive     the same with g.naiveFullscreen = true: every light at every pixel, in
 //                            full-screen passes of RBL_MAX_LIGHTS.
@@ -176,12 +176,12 @@ static int DrawForward(Scene *s, int c)
 static void DrawDeferred(Scene *s, int c, bool naive)
 {
     s->g.naiveFullscreen = naive;
-    s->frameOk = RblBeginGBuffer(&s->g, s->camera);
+    s->frameOk = SetLights(s->lights, s->counts[c], s->ambient) && RblBeginGBuffer(&s->g, s->camera);    // the geometry pass adds the ambient
     if (s->frameOk)
     {
         RblDrawBillboard(s->camera, s->geoMat, s->floor);
         RblEndGBuffer(&s->g);
-        s->frameOk = SetLights(s->lights, s->counts[c], s->ambient) && RblDrawDeferredLights(&s->g);
+        s->frameOk = RblDrawDeferredLights(&s->g);
     }
     BeginTextureMode(s->target);
     ClearBackground(BLANK);
@@ -376,9 +376,9 @@ static RefParams StoredParams(RefParams p, Codec c)
     else
     {
         double lo = log2(0.045);
-        q.roughness = (float)exp2(lo*(1.0 - Quantize(1.0 - log2(fmin(fmax(p.roughness, 0.045), 1.0))/lo, 10)));
+        q.roughness = (float)exp2(lo*(1.0 - Quantize(1.0 - log2(fmin(fmax(p.roughness, 0.045), 1.0))/lo, 12)));
         q.metalness = (float)Quantize(p.metalness, 8);
-        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, 10)*11.0);
+        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, 11)*11.0);
         q.specular = (float)((exp2(Quantize(log2(1.0 + 256.0*p.specular)/9.0, 9)*9.0) - 1.0)/256.0);
     }
     return q;
@@ -387,7 +387,8 @@ static RefParams StoredParams(RefParams p, Codec c)
 static D3 StoredNormal(D3 n, int brdf, Codec c)
 {
     if (c == CODEC_OLD) return OctRoundTrip(n, 4096, false);
-    return OctRoundTrip(n, (brdf == RBL_BRDF_BLINN_PHONG)? 23169 : 32767, true);
+    (void)brdf;                                 // every BRDF: 2^18 - 1 levels per coordinate
+    return OctRoundTrip(n, 262143, true);
 }
 
 typedef struct EncError { double max, mean; } EncError;
@@ -476,8 +477,8 @@ static void NormalCodeError(int levels, bool nearest, double *mean, double *wors
 
 static void EncodingRows(void)
 {
-    const char *normalName[3] = { "old_12x12_rounded", "30bit_nearest", "29bit_nearest" };
-    const int normalLevels[3] = { 4096, 32767, 23169 };
+    const char *normalName[3] = { "old_12x12_rounded", "30bit_nearest", "36bit_nearest" };   // 0.3, the 48-bit word's, now
+    const int normalLevels[3] = { 4096, 32767, 262143 };
     double nMean[3], nMax[3];
     printf("\ndeferred: G-buffer encoding error (CPU, double reference; no GL), 0.3's codec -> this one\n");
     printf("  normal codes over 400000 uniform sphere normals (degrees):\n");
@@ -488,7 +489,7 @@ static void EncodingRows(void)
         snprintf(name, sizeof(name), "normal_%s", normalName[k]);
         BenchCsvRow(SUITE, name, "mean_deg", nMean[k], "deg");
         BenchCsvRow(SUITE, name, "max_deg", nMax[k], "deg");
-        printf("    %-22s %d levels per coordinate: mean %.5f  max %.5f\n", normalName[k], normalLevels[k], nMean[k], nMax[k]);
+        printf("    %-22s %6d levels per coordinate: mean %.6f  max %.6f\n", normalName[k], normalLevels[k], nMean[k], nMax[k]);
     }
     printf("  image error from the stored surface alone, 1/255 before 8-bit rounding (the GPU sweep test's scenes):\n");
     printf("    %-40s %21s %21s\n", "", "plane old -> new", "sphere old -> new");
@@ -544,8 +545,9 @@ static void EncodingRows(void)
         char name[64];
         snprintf(name, sizeof(name), "flank_bound_ggx_r%.3f", flank[i]);
         BenchCsvRow(SUITE, name, "old", k*nMax[0], "1/255");
-        BenchCsvRow(SUITE, name, "new", k*nMax[1], "1/255");
-        printf("    roughness %.3f: 0.3's codec %6.1f/255, this one %5.1f/255\n", flank[i], k*nMax[0], k*nMax[1]);
+        BenchCsvRow(SUITE, name, "30bit", k*nMax[1], "1/255");
+        BenchCsvRow(SUITE, name, "new", k*nMax[2], "1/255");
+        printf("    roughness %.3f: 0.3's codec %6.1f/255, a 30-bit normal %5.1f/255, this one (36 bits) %5.2f/255\n", flank[i], k*nMax[0], k*nMax[1], k*nMax[2]);
     }
 }
 

@@ -72,7 +72,7 @@ int main(int argc, char **argv)
                 snprintf(passDefines, sizeof(passDefines), "%s%s", defines, counting? "#define RBL_COUNT_LIGHTS\n" : "");
                 snprintf(name, sizeof(name), "fullscreen-%d-%d", c, counting); writeStage(dir, glsl, name, true, passDefines, rbl__pass_fullscreen_vs);
                 snprintf(name, sizeof(name), "volume-%d-%d", c, counting); writeStage(dir, glsl, name, true, passDefines, rbl__pass_volume_vs);
-                snprintf(name, sizeof(name), "ambient-%d-%d", c, counting); writeStage(dir, glsl, name, false, passDefines, rbl__pass_deferred_ambient_fs);
+                snprintf(name, sizeof(name), "fullscreen-%d-%d", c, counting); writeStage(dir, glsl, name, false, passDefines, rbl__pass_deferred_fullscreen_fs);
                 snprintf(name, sizeof(name), "lights-%d-%d", c, counting); writeStage(dir, glsl, name, false, passDefines, rbl__pass_deferred_volume_fs);
                 snprintf(name, sizeof(name), "resolve-%d-%d", c, counting); writeStage(dir, glsl, name, false, passDefines, rbl__pass_deferred_resolve_fs);
             }
