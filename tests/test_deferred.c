@@ -806,35 +806,43 @@ static void test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within
 
 // A flat surface whose normal is not a code: the highlight's flank spreads over many pixels (on a
 // sphere it is one or two), so this is where normal quantisation shows most. 12 tilts of the plane up
-// to 0.35 rad, lights x0.2/1/5 in turn, 384x384 (3 times the sweep's side: more pixels on a flank);
-// the same rule as the sphere's rigs: 2/255 max and 0.25/255 mean at every roughness.
+// to 0.35 rad, lights x0.2/1/5 in turn, 384x384 (3 times the sweep's side: more pixels on a flank),
+// GGX 0.02-0.3 metal and dielectric, Blinn-Phong n = 256 and 1024 (also at intensity 0.03); the same
+// rule as the sphere's rigs: 2/255 max and 0.25/255 mean in every case.
 static void test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255(void)
 {
+    DefSweepCase cases[13];
+    int n = 0;
     const float roughness[5] = { 0.02f, 0.05f, 0.07f, 0.1f, 0.3f };
+    for (int ri = 0; ri < 5; ri++)
+        for (int metal = 0; metal < 2; metal++) cases[n++] = (DefSweepCase){ RBL_BRDF_GGX, roughness[ri], (float)metal, 0.0f, 0.0f };
+    cases[n++] = (DefSweepCase){ RBL_BRDF_BLINN_PHONG, 0.0f, 0.0f, 256.0f, 0.0f };
+    cases[n++] = (DefSweepCase){ RBL_BRDF_BLINN_PHONG, 0.0f, 0.0f, 1024.0f, 0.0f };
+    cases[n++] = (DefSweepCase){ RBL_BRDF_BLINN_PHONG, 0.0f, 0.0f, 1024.0f, 0.03f };
     Model sphere = LoadModelFromMesh(GenMeshSphere(1.0f, 4, 4));      // unused: planes only
     Texture2D albedo = solidTexture((Color){ 200, 160, 120, 255 });
     const int size = 3*SWEEP_SIZE;
-    RblGBuffer g = sweepGBufferSized(RBL_BRDF_GGX, size);
+    RblGBuffer g[3];
+    for (int b = 1; b < 3; b++) g[b] = sweepGBufferSized(b, size);
     const double worstNormal = defWorstNormal();
     printf("    per case over 12 tilts: worst max, worst mean, tilts over 2/255, limit\n");
-    for (int ri = 0; ri < 5; ri++)
-        for (int metal = 0; metal < 2; metal++)
+    for (int i = 0; i < n; i++)
+    {
+        DefSweepCase c = cases[i];
+        unsigned int seed = 5u;
+        DefWorst w = { 0, 0, 0.0 };
+        for (int t = 0; t < 12; t++)
         {
-            DefSweepCase c = { RBL_BRDF_GGX, roughness[ri], (float)metal, 0.0f, 0.0f };
-            unsigned int seed = 5u;
-            DefWorst w = { 0, 0, 0.0 };
-            for (int t = 0; t < 12; t++)
-            {
-                DefSweepScene s = defSweepScene(false);
-                float ax = rtRandomRange(&seed, -0.35f, 0.35f), ay = rtRandomRange(&seed, -0.35f, 0.35f), k = (t%3 == 0)? 0.2f : ((t%3 == 1)? 1.0f : 5.0f);
-                s.plane.axis = Vector3Normalize((Vector3){ ax, ay, 1.0f });
-                s.plane.up = Vector3Normalize(Vector3CrossProduct(s.plane.axis, (Vector3){ 1.0f, 0.0f, 0.0f }));
-                s.lights[0].intensity *= k; s.lights[1].intensity *= k;
-                defAccumulate(&w, defSweepRender(&s, c, &sphere, albedo, &g, false), defSweepRender(&s, c, &sphere, albedo, &g, true), size*size/3, "tilt", t);
-            }
-            defHoldSharp(c, w, 12, "tilts", worstNormal);
+            DefSweepScene s = defSweepScene(false);
+            float ax = rtRandomRange(&seed, -0.35f, 0.35f), ay = rtRandomRange(&seed, -0.35f, 0.35f), k = (t%3 == 0)? 0.2f : ((t%3 == 1)? 1.0f : 5.0f);
+            s.plane.axis = Vector3Normalize((Vector3){ ax, ay, 1.0f });
+            s.plane.up = Vector3Normalize(Vector3CrossProduct(s.plane.axis, (Vector3){ 1.0f, 0.0f, 0.0f }));
+            s.lights[0].intensity *= k; s.lights[1].intensity *= k;
+            defAccumulate(&w, defSweepRender(&s, c, &sphere, albedo, &g[c.brdf], false), defSweepRender(&s, c, &sphere, albedo, &g[c.brdf], true), size*size/3, "tilt", t);
         }
-    RblUnloadGBuffer(&g);
+        defHoldSharp(c, w, 12, "tilts", worstNormal);
+    }
+    for (int b = 1; b < 3; b++) RblUnloadGBuffer(&g[b]);
     UnloadTexture(albedo);
     UnloadModel(sphere);
 }
