@@ -438,7 +438,9 @@
 *           RblLoadGBuffer(w, h, shadingDesc)          RblLoadGBuffer(gdesc), an RblGBufferDesc
 *           RblIsGBufferValid(g)                       RblIsGBufferValid(&g)
 *           RblGBufferBytesPerPixel(g)                 RblGBufferBytesPerPixel(&g)
-*           RblDrawDeferredLights(&g, l, n, ambient)   RblSetScene(&scene); RblDrawDeferredLights(&g)
+*           RblDrawDeferredLights(&g, l, n, ambient)   RblSetScene(&scene) before RblBeginGBuffer (the
+*                                                        geometry pass adds the ambient); then
+*                                                        RblDrawDeferredLights(&g)
 *           RblBeginShadowMap(&map, lights, i, c, r)   RblBeginShadowMap(&map, &scene, i, c, r)
 *           RblDrawModelShadow(model, p, s, tint)      RblDrawModel(model, p, s, tint) inside the pass
 *           desc.specular                              params[RBL_PARAM_SPECULAR]
