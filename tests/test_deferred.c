@@ -242,6 +242,30 @@ static DefDiff defCompare(Image a, Image b)
     return d;
 }
 
+// One scene rendered forward and deferred (into a G-buffer of its own) and compared
+typedef struct DefFrames { RblGBuffer g; Image fwd, def; bool ok; DefDiff d; } DefFrames;
+
+static DefFrames defFramesRender(DefScene *s)
+{
+    DefFrames f;
+    memset(&f, 0, sizeof(f));
+    f.g = RblLoadGBuffer(defGBufferDesc(&s->desc, DEF_W, DEF_H));
+    RT_CHECK(RblIsGBufferValid(&f.g), "G-buffer failed");
+    f.fwd = defRenderForward(s);
+    f.def = defRenderDeferred(s, &f.g, &f.ok);
+    RT_CHECK(f.ok, "deferred frame refused");
+    f.d = defCompare(f.fwd, f.def);
+    return f;
+}
+
+// Keeps both frames under build/test-output/ when the test has failed, then frees them and the G-buffer
+static void defFramesRelease(DefFrames *f)
+{
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(f->fwd, "forward"); rtSaveImage(f->def, "deferred"); }
+    UnloadImage(f->fwd); UnloadImage(f->def);
+    RblUnloadGBuffer(&f->g);
+}
+
 // ---- layout and lifetime ------------------------------------------------------------------------
 static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing(void)
 {
@@ -279,22 +303,15 @@ static void test_deferred_matches_forward_within_2_of_255_for_billboards_and_mod
     for (int brdf = RBL_BRDF_LAMBERT; brdf <= RBL_BRDF_GGX; brdf++)
     {
         DefScene s = defSceneLoad(brdf);
-        RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
-        RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed");
-        Image fwd = defRenderForward(&s);
-        bool ok = false;
-        Image def = defRenderDeferred(&s, &g, &ok);
-        RT_CHECK(ok, "deferred frame refused");
-        DefDiff d = defCompare(fwd, def);
+        DefFrames f = defFramesRender(&s);
+        DefDiff d = f.d;
         printf("    brdf %d: %d pixels, worst %d/255, mean %.3f/255, %d over 2/255, coverage differs in %d; %d volumes + %d full-screen lights\n",
-               brdf, d.covered, d.worst, d.mean, d.over2, d.coverage, g.lightsInVolumes, g.lightsFullscreen);
+               brdf, d.covered, d.worst, d.mean, d.over2, d.coverage, f.g.lightsInVolumes, f.g.lightsFullscreen);
         RT_CHECK(d.covered > DEF_W*DEF_H/2, "scene covers only %d pixels", d.covered);
         RT_CHECK(d.worst <= 2, "deferred differs from forward by %d/255 (%d pixels over 2)", d.worst, d.over2);
         RT_CHECK(d.coverage == 0, "coverage differs in %d pixels", d.coverage);
-        RT_CHECK(g.lightsInVolumes == 3 && g.lightsFullscreen == 2, "volumes %d, full screen %d", g.lightsInVolumes, g.lightsFullscreen);
-        if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
-        UnloadImage(fwd); UnloadImage(def);
-        RblUnloadGBuffer(&g);
+        RT_CHECK(f.g.lightsInVolumes == 3 && f.g.lightsFullscreen == 2, "volumes %d, full screen %d", f.g.lightsInVolumes, f.g.lightsFullscreen);
+        defFramesRelease(&f);
         defSceneUnload(&s);
     }
 }
@@ -331,27 +348,22 @@ static void test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_for
             if (brdf == RBL_BRDF_GGX) s.values.metalness = 0.7f;       // the ambient's F0 term
             Texture2D keep = s.normal;
             s.normal = packed;
-            RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
-            RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed");
-            Image fwd = defRenderForward(&s);
+            DefFrames f = defFramesRender(&s);
+            RblGBuffer *g = &f.g;
+            DefDiff d = f.d;
             bool ok = false;
-            Image def = defRenderDeferred(&s, &g, &ok);
-            RT_CHECK(ok, "deferred frame refused");
-            DefDiff d = defCompare(fwd, def);
             printf("    brdf %d, %s: %d pixels, worst %d/255, mean %.3f/255, coverage differs in %d; light passes: %d volumes + %d full-screen lights\n",
-                   brdf, lit? "5 lights" : "ambient only", d.covered, d.worst, d.mean, d.coverage, g.lightsInVolumes, g.lightsFullscreen);
+                   brdf, lit? "5 lights" : "ambient only", d.covered, d.worst, d.mean, d.coverage, g->lightsInVolumes, g->lightsFullscreen);
             RT_CHECK(d.covered > DEF_W*DEF_H/2 && d.coverage == 0, "%d pixels covered, coverage differs in %d", d.covered, d.coverage);
             RT_CHECK(d.worst <= 1 && d.mean <= 0.25, "brdf %d %s: deferred differs from forward by max %d/255, mean %.3f/255 (limits 1, 0.25)",
                      brdf, lit? "lit" : "ambient only", d.worst, d.mean);
-            RT_CHECK(lit || (g.lightsInVolumes == 0 && g.lightsFullscreen == 0), "no lights, yet %d volumes + %d full-screen", g.lightsInVolumes, g.lightsFullscreen);
-            if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
-            UnloadImage(fwd); UnloadImage(def);
+            RT_CHECK(lit || (g->lightsInVolumes == 0 && g->lightsFullscreen == 0), "no lights, yet %d volumes + %d full-screen", g->lightsInVolumes, g->lightsFullscreen);
             if (lit && (brdf == RBL_BRDF_GGX))
             {
                 // The occlusion view: a uniform map of 100/255 reads back as 100 at every covered pixel
                 s.normal = flat;
-                RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_OCCLUSION, 1.0f);
-                Image view = defRenderDeferred(&s, &g, &ok);
+                RblSetGBufferOutput(g, RBL_GBUFFER_OUTPUT_OCCLUSION, 1.0f);
+                Image view = defRenderDeferred(&s, g, &ok);
                 int covered = 0, off = 0;
                 for (int y = 0; y < view.height; y++)
                     for (int x = 0; x < view.width; x++)
@@ -369,23 +381,23 @@ static void test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_for
                 int lines[2];
                 for (int frame = 0; frame < 2; frame++)
                 {
-                    RT_CHECK(defSetScene(&s) && RblBeginGBuffer(&g, s.camera), "geometry pass refused");
-                    RblEndGBuffer(&g);
+                    RT_CHECK(defSetScene(&s) && RblBeginGBuffer(g, s.camera), "geometry pass refused");
+                    RblEndGBuffer(g);
                     DefScene later = s;
                     later.ambient = (Color){ 10, 10, 10, 255 };
                     RT_CHECK(defSetScene(&later), "later scene refused");
                     SetTraceLogLevel(LOG_INFO);
                     warnings = 0;
-                    RT_CHECK(RblDrawDeferredLights(&g), "lights refused");
+                    RT_CHECK(RblDrawDeferredLights(g), "lights refused");
                     SetTraceLogLevel(LOG_WARNING);
                     lines[frame] = warnings;
                     if (frame == 0) RT_CHECK(strstr(lastWarning, "ambient changed after the geometry pass") != NULL, "logged: %s", lastWarning);
                 }
                 RT_CHECK(lines[0] == 1 && lines[1] == 0, "ambient set after the geometry pass: %d then %d log lines, want 1 then 0", lines[0], lines[1]);
-                RblSetGBufferOutput(&g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
+                RblSetGBufferOutput(g, RBL_GBUFFER_OUTPUT_LIT, 1.0f);
             }
             s.normal = keep;
-            RblUnloadGBuffer(&g);
+            defFramesRelease(&f);
             defSceneUnload(&s);
         }
     UnloadTexture(packed); UnloadTexture(flat);
@@ -397,17 +409,12 @@ static void test_deferred_matches_forward_with_an_orthographic_camera(void)
     DefScene s = defSceneLoad(RBL_BRDF_GGX);
     s.camera.projection = CAMERA_ORTHOGRAPHIC;
     s.camera.fovy = 5.0f;                          // view height in world units
-    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
-    Image fwd = defRenderForward(&s);
-    bool ok = false;
-    Image def = defRenderDeferred(&s, &g, &ok);
-    DefDiff d = defCompare(fwd, def);
+    DefFrames f = defFramesRender(&s);
+    DefDiff d = f.d;
     printf("    orthographic: %d pixels, worst %d/255, mean %.3f/255, coverage differs in %d\n", d.covered, d.worst, d.mean, d.coverage);
-    RT_CHECK(ok && d.covered > DEF_W*DEF_H/2, "orthographic frame: ok %d, %d pixels", ok, d.covered);
+    RT_CHECK(f.ok && d.covered > DEF_W*DEF_H/2, "orthographic frame: ok %d, %d pixels", f.ok, d.covered);
     RT_CHECK(d.worst <= 2 && d.coverage == 0, "orthographic: deferred differs from forward by %d/255", d.worst);
-    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
-    UnloadImage(fwd); UnloadImage(def);
-    RblUnloadGBuffer(&g);
+    defFramesRelease(&f);
     defSceneUnload(&s);
 }
 
@@ -417,17 +424,12 @@ static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
     s.lights[0] = litPoint((Vector3){ 0.4f, -3.0f, 2.6f }, 4.0f, 5.0f);       // the eye is 0.6 from it, range 5
     s.count = 1;
     s.desc.lightFeatures = RBL_LIGHT_FEATURE_POINT;
-    RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
-    Image fwd = defRenderForward(&s);
-    bool ok = false;
-    Image def = defRenderDeferred(&s, &g, &ok);
-    DefDiff d = defCompare(fwd, def);
+    DefFrames f = defFramesRender(&s);
+    DefDiff d = f.d;
     printf("    eye inside the volume: worst %d/255 over %d pixels\n", d.worst, d.covered);
-    RT_CHECK(ok && g.lightsInVolumes == 1, "light not drawn as a volume");
+    RT_CHECK(f.ok && f.g.lightsInVolumes == 1, "light not drawn as a volume");
     RT_CHECK(d.worst <= 2 && d.covered > DEF_W*DEF_H/2, "eye inside a volume: worst %d/255", d.worst);
-    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(fwd, "forward"); rtSaveImage(def, "deferred"); }
-    UnloadImage(fwd); UnloadImage(def);
-    RblUnloadGBuffer(&g);
+    defFramesRelease(&f);
     defSceneUnload(&s);
 }
 
