@@ -98,30 +98,27 @@ static RblGBufferDesc defGBufferDesc(const RblLitShaderDesc *d, int width, int h
     return g;
 }
 
-// The frame's scene: count lights, a flat ambient and fog (no exposure, no shadows); RblSetScene's verdict
-static bool defSetLights(const RblLight *lights, int count, Color ambient, RblFog fog)
+// The frame's scene: count lights, an ambient (ground 0: flat) and fog (no exposure, no shadows);
+// RblSetScene's verdict
+static bool defSetSky(const RblLight *lights, int count, Color ambient, Color ground, Vector3 up, RblFog fog)
 {
     RblScene scene;
     memset(&scene, 0, sizeof(scene));
     scene.lights = lights;
     scene.lightCount = count;
     scene.ambient = ambient;
+    scene.ambientGround = ground;
+    scene.ambientUp = up;
     scene.fog = fog;
     return RblSetScene(&scene);
 }
 
-static bool defSetScene(const DefScene *s)
+static bool defSetLights(const RblLight *lights, int count, Color ambient, RblFog fog)
 {
-    RblScene scene;
-    memset(&scene, 0, sizeof(scene));
-    scene.lights = s->lights;
-    scene.lightCount = s->count;
-    scene.ambient = s->ambient;
-    scene.ambientGround = s->ambientGround;
-    scene.ambientUp = s->ambientUp;
-    scene.fog = s->fog;
-    return RblSetScene(&scene);
+    return defSetSky(lights, count, ambient, (Color){ 0, 0, 0, 0 }, (Vector3){ 0.0f, 0.0f, 0.0f }, fog);
 }
+
+static bool defSetScene(const DefScene *s) { return defSetSky(s->lights, s->count, s->ambient, s->ambientGround, s->ambientUp, s->fog); }
 
 // Draws the scene's geometry with materials built on `lit` (forward) or `geo`/`geoInstanced` (deferred)
 static void defSceneDraw(DefScene *s, Shader plain, Shader instanced)
