@@ -6957,6 +6957,15 @@ static Matrix rbl__viewMatrix(const RblCameraFrame *v)
     return m;
 }
 
+// The scene's ambient as the geometry pass adds it: sky, ground, up
+static void rbl__sceneAmbient(float out[9])
+{
+    const rbl__Scene *s = &rbl__state.scene;
+    memcpy(&out[0], s->ambient, sizeof(s->ambient));
+    memcpy(&out[3], s->ground, sizeof(s->ground));
+    memcpy(&out[6], s->up, sizeof(s->up));
+}
+
 bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
 {
     const char *bad = NULL;
@@ -6998,10 +7007,7 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     gbuffer->state->view = rlGetMatrixModelview();
     gbuffer->state->projection = rlGetMatrixProjection();
     gbuffer->state->eye = camera.position;
-    const rbl__Scene *sc = &rbl__state.scene;
-    memcpy(&gbuffer->state->ambient[0], sc->ambient, sizeof(sc->ambient));
-    memcpy(&gbuffer->state->ambient[3], sc->ground, sizeof(sc->ground));
-    memcpy(&gbuffer->state->ambient[6], sc->up, sizeof(sc->up));
+    rbl__sceneAmbient(gbuffer->state->ambient);
     gbuffer->state->begun = true;
     rbl__state.gbufferPass = gbuffer;
     return true;
@@ -7124,7 +7130,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     if (uncompiled > 0) TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: %i light(s) of types not in the G-buffer's lightFeatures left out", uncompiled);
     // The ambient came with the geometry pass: a scene set since then with another one is noted once
     float now[9];
-    memcpy(&now[0], s->ambient, sizeof(s->ambient)); memcpy(&now[3], s->ground, sizeof(s->ground)); memcpy(&now[6], s->up, sizeof(s->up));
+    rbl__sceneAmbient(now);
     if (!g->state->ambientNoted && (memcmp(now, g->state->ambient, sizeof(now)) != 0))
     {
         TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: the scene's ambient changed after the geometry pass, which added the earlier one (RblSetScene before RblBeginGBuffer)");
