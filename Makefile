@@ -273,7 +273,7 @@ $(BUILD)/web/test/test_web.js: tests/web/test_web_main.c tests/web/test.html $(G
 	cp tests/web/test.html $(@D)/index.html
 
 test-web: $(BUILD)/web/test/test_web.js
-	@python3 tests/web/run.py test $(BUILD)/web/test $(WEB_FILTER)
+	@python3 tests/web/run.py test $(BUILD)/web/test "$(WEB_FILTER)"
 
 # ---- README pictures (rendered headlessly, committed under examples/resources) and the examples'
 # screenshots (examples/<name>.png, 800x450, as raylib's examples/<module>/<name>.png) ------------

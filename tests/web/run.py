@@ -10,7 +10,7 @@
 Chromium runs headless with SwiftShader (software WebGL2), its own throw-away profile, no network
 beyond the loopback server.
 """
-import http.server, os, re, shutil, socketserver, subprocess, sys, tempfile, threading, time
+import http.server, os, re, shutil, socketserver, subprocess, sys, tempfile, threading, time, urllib.parse
 
 CHROMIUM_FLAGS = ['--headless', '--no-sandbox', '--enable-unsafe-swiftshader', '--use-angle=swiftshader',
                   '--ignore-gpu-blocklist', '--disable-dev-shm-usage', '--no-first-run', '--no-default-browser-check',
@@ -70,7 +70,7 @@ def run_test(directory, filt):
 
     server = serve(directory, on_line)
     port = server.server_address[1]
-    url = 'http://127.0.0.1:%d/index.html' % port + ('?filter=' + filt if filt else '')
+    url = 'http://127.0.0.1:%d/index.html' % port + ('?filter=' + urllib.parse.quote(filt) if filt else '')
     profile = tempfile.mkdtemp(prefix='rbl-web-')
     log = open(os.path.join(directory, 'chromium.log'), 'w')
     start = time.time()

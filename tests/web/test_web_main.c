@@ -146,7 +146,7 @@ static void test_web_transcendentals_are_within_the_glsl_es_3_bounds(void)
 }
 
 // Left out in the browser, each with its reason (printed at the start of the run, not counted);
-// `make test-web WEB_FILTER=--left-out` runs just these, to measure them again
+// `make test-web WEB_FILTER=--left-out` runs just these, to measure them again (a name filter may follow)
 static const struct { const char *name; RtTestFn fn; const char *why; } webLeftOut[] = {
     { "test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases", test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases,
       "loads its atlas fixtures from files: the page has no file system (they are not preloaded)" },
@@ -157,7 +157,7 @@ static const struct { const char *name; RtTestFn fn; const char *why; } webLeftO
     { "test_deferred_matches_forward_within_2_of_255_for_billboards_and_models", test_deferred_matches_forward_within_2_of_255_for_billboards_and_models,
       "SwiftShader precision: 2 pixels at 3/255 vs the 2/255 bound" },
     { "test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_forward", test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_forward,
-      "SwiftShader precision: with 5 lights max 5-7/255 (as the billboards-and-models scene it extends), ambient only 1/255 (Lambert, Blinn-Phong) and 2/255 (GGX) vs the 1/255 bound; the occlusion view exact" },
+      "SwiftShader: single pixels where two surfaces meet (the sphere resting on the floor) take the other surface: with 5 lights max 5-7/255, ambient only 2/255 (GGX) vs the 1/255 bound; the occlusion view exact" },
     { "test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved", test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved,
       "SwiftShader precision: GGX roughness 0.02-0.1 max 27/255, Blinn-Phong n=1024 max 15/255 (sharp highlights, plane)" },
     { "test_view_orthographic_plane_on_every_path_matches_the_double_reference", test_view_orthographic_plane_on_every_path_matches_the_double_reference,
@@ -206,7 +206,7 @@ int main(int argc, char **argv)
     {
         RtTest leftOut[LEFT_OUT];
         for (int i = 0; i < LEFT_OUT; i++) { leftOut[i].name = webLeftOut[i].name; leftOut[i].fn = webLeftOut[i].fn; leftOut[i].glsl3 = false; }
-        rc = rtRun("web", leftOut, LEFT_OUT, 1, argv);
+        rc = rtRun("web", leftOut, LEFT_OUT, argc - 1, argv + 1);     // --left-out [name filter]
     }
     else
     {
