@@ -1197,6 +1197,7 @@ static void c_atlas_fade_quads(void)
     RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
     RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
     RblFade f, f0; memset(&f, 0x5A, sizeof(f)); f0 = f;
+    RblBillboard one0; RblInstance in1; RblFade f1;         // outputs of accepted calls
     EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, 1.0f, NULL));
     EXPECT_REFUSED(RblAtlasInstanceFade(&a, 0, 1, 0.5f, 1.0f, NULL, &f));
     EXPECT_REFUSED(RblAtlasInstanceFade(&a, 0, 1, 0.5f, 1.0f, &in, NULL));
@@ -1224,6 +1225,21 @@ static void c_atlas_fade_quads(void)
         EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, sc, &b));
         EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, 0, 0.5f, sc, &in, &f));
     }
+    // Frames on different sheets (one texture is sampled); a frame with an empty trim cannot reach the
+    // fade: the importer refuses the atlas
+    static const char twoSheets[] = "sheet.png\nsize:64,32\na\nbounds:1,2,10,6\nb\nbounds:20,0,4,4\n\nsecond.png\nsize:8,8\nc\nbounds:0,0,8,8\n";
+    static const char emptyTrim[] = "sheet.png\nsize:64,32\na\nbounds:1,2,10,6\nb\nbounds:20,0,0,0\n";
+    RblAtlas p = RblLoadAtlasFromMemory(twoSheets, (int)strlen(twoSheets), RBL_ATLAS_LIBGDX);
+    ck(RblIsAtlasValid(&p) && (p.pageCount == 2) && (p.frameCount == 3) && (p.frames[2].page == 1), "two-sheet atlas: valid %d, %d pages, %d frames",
+       RblIsAtlasValid(&p), p.pageCount, p.frameCount);
+    if (RblIsAtlasValid(&p) && (p.frameCount == 3))
+    {
+        EXPECT_REFUSED(RblAtlasBillboardFade(&p, 0, 2, 0.5f, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasInstanceFade(&p, 2, 1, 0.5f, 1.0f, &in, &f));
+        ck(RblAtlasBillboardFade(&p, 0, 1, 0.5f, 1.0f, &one0) && RblAtlasInstanceFade(&p, 1, 0, 0.5f, 1.0f, &in1, &f1), "frames of one sheet refused: %s", lastWarning);
+    }
+    RblUnloadAtlas(&p);
+    EXPECT_REFUSED(loadedFromMemory(emptyTrim, (int)strlen(emptyTrim), RBL_ATLAS_LIBGDX));
     ck(memcmp(&b, &b0, sizeof(b)) == 0 && memcmp(&in, &in0, sizeof(in)) == 0 && memcmp(&f, &f0, sizeof(f)) == 0, "refused calls wrote their outputs");
     RblBillboard one; memset(&one, 0, sizeof(one)); memset(&b, 0, sizeof(b));
     ck(RblAtlasBillboard(&a, 1, 2.0f, &one) && RblAtlasBillboardFade(&a, 1, 1, 0.25f, 2.0f, &b) && memcmp(&one.source, &b.source, sizeof(Rectangle)) == 0 &&
@@ -1435,7 +1451,7 @@ static const Case cases[] = {
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads },
-    { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale; outputs untouched; equal frames unclipped", c_atlas_fade_quads },
+    { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale, different sheets, empty trims; outputs untouched; equal frames unclipped", c_atlas_fade_quads },
     { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites },
     { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades },
 };
