@@ -727,6 +727,114 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
 }
 
 
+// The trimmed fixture with pivots that differ: p's at the canvas centre, q's a quarter across
+// (4 pixels left of p's), r's a quarter down (3 pixels above p's)
+static const char fadePivotJson[] =
+    "{\"frames\": {"
+    "\"p\": {\"frame\": {\"x\":0,\"y\":0,\"w\":10,\"h\":6}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":1,\"y\":2,\"w\":10,\"h\":6}, \"sourceSize\": {\"w\":16,\"h\":12}, \"pivot\": {\"x\":0.5,\"y\":0.5}},"
+    "\"q\": {\"frame\": {\"x\":16,\"y\":0,\"w\":8,\"h\":9}, \"rotated\": true, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}, \"pivot\": {\"x\":0.25,\"y\":0.5}},"
+    "\"r\": {\"frame\": {\"x\":32,\"y\":0,\"w\":8,\"h\":9}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":5,\"y\":1,\"w\":8,\"h\":9}, \"sourceSize\": {\"w\":16,\"h\":12}, \"pivot\": {\"x\":0.5,\"y\":0.25}}},"
+    " \"meta\": {\"size\": {\"w\":48,\"h\":16}}}";
+
+// Largest rgba difference between a mirrored card's frame and the unmirrored frame flipped left to
+// right inside the footprint's columns [left, right) (outside them both must match as they are)
+static int fadeMirrorDiff(Image mirrored, Image out, int left, int right)
+{
+    int worst = 0;
+    for (int y = 0; y < FADE_RT; y++)
+        for (int x = 0; x < FADE_RT; x++)
+        {
+            int sx = ((x >= left) && (x < right))? left + right - 1 - x : x;
+            Color a = rtPixel(mirrored, x, y), b = rtPixel(out, sx, y);
+            int d = abs(a.r - b.r);
+            if (abs(a.g - b.g) > d) d = abs(a.g - b.g);
+            if (abs(a.b - b.b) > d) d = abs(a.b - b.b);
+            if (abs(a.a - b.a) > d) d = abs(a.a - b.a);
+            if (d > worst) worst = d;
+        }
+    return worst;
+}
+
+// Frames whose pivots differ meet at their pivots (each frame on its own canvas, placed by its own
+// pivot, clipped to its trim: the double reference with the canvases shifted by the pivots'
+// difference), and a mirrored card (negative width) is the card's mirror image inside the same
+// footprint; on every path, upright and rotated frames, weights 0, 1, 0.5 and 0.25
+static void test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror(void)
+{
+    unsigned int seed = 4321u;
+    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
+    for (int i = 0; i < 60; i++) { unsigned int v = rtRandom(&seed); ((Color *)picP.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    for (int i = 0; i < 72; i++) { unsigned int v = rtRandom(&seed); ((Color *)picQ.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
+    Image sheet = fadeTrimSheet(picP, picQ, false);
+    UnloadTexture(r.sheet);
+    r.sheet = LoadTextureFromImage(sheet);
+    UnloadImage(sheet);
+    RblUnloadAtlas(&r.atlas);
+    r.atlas = RblLoadAtlasFromMemory(fadePivotJson, (int)strlen(fadePivotJson), RBL_ATLAS_AUTO);
+    int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
+    RT_CHECK(RblIsAtlasValid(&r.atlas) && (fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].pivot.x == 0.25f) && (r.atlas.frames[fr].pivot.y == 0.25f), "pivot fixture");
+    Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
+    for (int k = 0; k < 4; k++)
+        if (mats[k]->maps != NULL)
+        {
+            mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
+            mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
+        }
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    // Each frame's trim in the reference's canvas coordinates (the card's pivot at canvas 8, 6, where
+    // every frame's pivot lands): p (1, 2); q (5, 1) shifted 4 right (its pivot is 4 pixels into its
+    // canvas, not 8); r (5, 1) shifted 3 down (its pivot 3 pixels down, not 6)
+    const int pairs[3][2] = { { fp, fq }, { fq, fr }, { fr, fp } };
+    static const float weights[4] = { 0.0f, 1.0f, 0.5f, 0.25f };
+    int worstRef = 0, worstMirror = 0, renders = 0;
+    for (int path = 0; path < 3; path++)
+    {
+        bool inst = (path == FADE_INSTANCED);
+        if (inst && !rtGlsl3()) continue;
+        Material fade = inst? r.mFadeInst : r.mFade;
+        for (int pr = 0; pr < 3; pr++)
+        {
+            int f[2] = { pairs[pr][0], pairs[pr][1] }, x[2], y[2];
+            Image pic[2];
+            for (int k = 0; k < 2; k++)
+            {
+                pic[k] = (f[k] == fp)? picP : picQ;
+                x[k] = (f[k] == fp)? 1 : ((f[k] == fq)? 9 : 5);
+                y[k] = (f[k] == fp)? 2 : ((f[k] == fq)? 1 : 4);
+            }
+            for (int wi = 0; wi < 4; wi++)
+            {
+                RblBillboard card;
+                memset(&card, 0, sizeof(card));
+                RT_CHECK(RblAtlasBillboardFade(&r.atlas, f[0], f[1], weights[wi], 1.0f, &card), "fade card");
+                Image out = fadeRender(path, fade, &card, 1, true, 0);
+                // fadeTrimDiff places canvas pixel (i, j) at target (24 + i, 26 + j): the pivots at the centre
+                int ref = fadeTrimDiff(out, pic[0], x[0], y[0], pic[1], x[1], y[1], weights[wi]);
+                int left = (int)lroundf(FADE_RT/2 - card.origin.x), right = left + (int)lroundf(card.size.x);
+                card.size.x = -card.size.x;
+                Image mirrored = fadeRender(path, fade, &card, 1, true, 0);
+                int mir = fadeMirrorDiff(mirrored, out, left, right);
+                int limit = (wi < 2)? 0 : 1;
+                printf("    %-9s %s -> %s  weight %-4g  vs double reference %3d  mirrored vs flipped %3d\n", fadePathName[path],
+                       (f[0] == fp)? "p" : ((f[0] == fq)? "q (pivot 0.25 across, rotated)" : "r (pivot 0.25 down)"), (f[1] == fp)? "p" : ((f[1] == fq)? "q" : "r"), weights[wi], ref, mir);
+                RT_CHECK(ref <= limit && mir <= limit, "%s pair %d weight %g: %d/255 off the reference, mirrored %d/255 off the flipped frame (limit %d)",
+                         fadePathName[path], pr, weights[wi], ref, mir, limit);
+                if (ref > worstRef) worstRef = ref;
+                if (mir > worstMirror) worstMirror = mir;
+                if ((ref > limit) || (mir > limit)) { rtSaveImage(out, "pivots"); rtSaveImage(mirrored, "mirrored"); }
+                UnloadImage(out); UnloadImage(mirrored);
+                renders += 2;
+            }
+        }
+    }
+    printf("    %d renderings: worst %d/255 from the reference, %d/255 mirrored vs flipped\n", renders, worstRef, worstMirror);
+    UnloadImage(picP); UnloadImage(picQ);
+    fadeRigUnload(&r);
+}
+
 typedef struct FadeTrimShadowCard { int path; RblBillboard card; } FadeTrimShadowCard;
 static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
 {
@@ -841,4 +949,5 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
         RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
         RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
         RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
-        RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters)
+        RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters), \
+        RT_TEST(test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror)
