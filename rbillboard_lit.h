@@ -6308,14 +6308,14 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     rlSetUniform(loc[RBL__U_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*n);
 }
 
-// Ambient, fog and exposure of the scene (G-buffer passes: fog and exposure only; their ambient and
-// lights go per draw)
-static void rbl__uploadSceneConstants(const rbl__Program *p, bool ambient)
+// Ambient, fog and exposure of the scene, where the program declares them (the G-buffer's light
+// passes: none of the ambient, which its geometry pass adds; lights go per draw there)
+static void rbl__uploadSceneConstants(const rbl__Program *p)
 {
     const rbl__Scene *s = &rbl__state.scene;
     const int *loc = p->loc;
-    if (ambient && (loc[RBL__U_AMBIENT] != -1)) rlSetUniform(loc[RBL__U_AMBIENT], s->ambient, SHADER_UNIFORM_VEC3, 1);
-    if (ambient && (loc[RBL__U_AMBIENT_GROUND] != -1)) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], s->ground, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT] != -1) rlSetUniform(loc[RBL__U_AMBIENT], s->ambient, SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_GROUND] != -1) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], s->ground, SHADER_UNIFORM_VEC3, 1);
     if (loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(loc[RBL__U_AMBIENT_UP], s->up, SHADER_UNIFORM_VEC3, 1);
     if (loc[RBL__U_FOG] != -1)
     {
@@ -6365,7 +6365,7 @@ static int rbl__uploadSceneInto(rbl__Program *p)
     int skipped = 0;
     rlEnableShader(p->shader.id);
     bool pass = (p->key.kind == RBL__KIND_PASS);
-    rbl__uploadSceneConstants(p, !pass);
+    rbl__uploadSceneConstants(p);
     if (!pass && (p->loc[RBL__U_LIGHT_COUNT] != -1)) skipped = rbl__uploadSceneLights(p);
     rlDisableShader();
     return skipped;

@@ -632,40 +632,53 @@ static Image fadeTrimSheet(Image picP, Image picQ, bool gdx)
     return sheet;
 }
 
-static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim(void)
+// The trimmed fixture's pictures p (10x6) and q (8x9): random opaque texels from seed
+static void fadeTrimPictures(unsigned int seed, Image *picP, Image *picQ)
 {
-    unsigned int seed = 1234u;
-    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
-    Image *pics[2] = { &picP, &picQ };
+    *picP = GenImageColor(10, 6, BLACK); *picQ = GenImageColor(8, 9, BLACK);
+    Image *pics[2] = { picP, picQ };
     for (int k = 0; k < 2; k++)
         for (int i = 0; i < pics[k]->width*pics[k]->height; i++)
         {
             unsigned int v = rtRandom(&seed);
             ((Color *)pics[k]->data)[i] = (Color){ (unsigned char)(v & 255), (unsigned char)((v >> 8) & 255), (unsigned char)((v >> 16) & 255), 255 };
         }
+}
+
+// The rig on a trimmed fixture: its sheet (fadeTrimSheet), the atlas read from text, every material
+// on the sheet without a cutoff (every partial alpha shows)
+static void fadeRigUseTrimSheet(FadeRig *r, Image picP, Image picQ, bool gdx, const char *text)
+{
+    Image sheet = fadeTrimSheet(picP, picQ, gdx);
+    UnloadTexture(r->sheet);
+    r->sheet = LoadTextureFromImage(sheet);
+    UnloadImage(sheet);
+    RblUnloadAtlas(&r->atlas);
+    r->atlas = RblLoadAtlasFromMemory(text, (int)strlen(text), RBL_ATLAS_AUTO);
+    Material *mats[4] = { &r->mPlain, &r->mFade, &r->mPlainInst, &r->mFadeInst };
+    for (int k = 0; k < 4; k++)
+        if (mats[k]->maps != NULL)
+        {
+            mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r->sheet;
+            mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
+        }
+}
+
+static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim(void)
+{
+    Image picP, picQ;
+    fadeTrimPictures(1234u, &picP, &picQ);
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
     int checks = 0;
     for (int gdx = 0; gdx < 2; gdx++)       // TexturePacker (q turned clockwise), libGDX (counter-clockwise)
     {
-        Image sheet = fadeTrimSheet(picP, picQ, gdx);
-        UnloadTexture(r.sheet);
-        r.sheet = LoadTextureFromImage(sheet);
-        UnloadImage(sheet);
-        RblUnloadAtlas(&r.atlas);
-        r.atlas = gdx? RblLoadAtlasFromMemory(fadeTrimGdx, (int)strlen(fadeTrimGdx), RBL_ATLAS_AUTO) : RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
+        fadeRigUseTrimSheet(&r, picP, picQ, gdx, gdx? fadeTrimGdx : fadeTrimJson);
         RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas %d", gdx);
         int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
         RT_CHECK((fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].flags & RBL_FRAME_ROTATED) && !(r.atlas.frames[fr].flags & RBL_FRAME_ROTATED), "fixture frames");
         RT_CHECK(!gdx || ((r.atlas.frames[fq].source.width < 0.0f) && (r.atlas.frames[fq].source.height < 0.0f)), "libGDX's turn: extents not negated");
-        Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
-        for (int k = 0; k < 4; k++)
-            if (mats[k]->maps != NULL)
-            {
-                mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
-                mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;     // no cutoff: every partial alpha shows
-            }
         RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
         // Pairs: upright to rotated, rotated to upright, upright to upright
         const int pairs[3][2] = { { fp, fq }, { fq, fp }, { fp, fr } };
@@ -761,28 +774,14 @@ static int fadeMirrorDiff(Image mirrored, Image out, int left, int right)
 // footprint; on every path, upright and rotated frames, weights 0, 1, 0.5 and 0.25
 static void test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror(void)
 {
-    unsigned int seed = 4321u;
-    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
-    for (int i = 0; i < 60; i++) { unsigned int v = rtRandom(&seed); ((Color *)picP.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
-    for (int i = 0; i < 72; i++) { unsigned int v = rtRandom(&seed); ((Color *)picQ.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    Image picP, picQ;
+    fadeTrimPictures(4321u, &picP, &picQ);
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
-    Image sheet = fadeTrimSheet(picP, picQ, false);
-    UnloadTexture(r.sheet);
-    r.sheet = LoadTextureFromImage(sheet);
-    UnloadImage(sheet);
-    RblUnloadAtlas(&r.atlas);
-    r.atlas = RblLoadAtlasFromMemory(fadePivotJson, (int)strlen(fadePivotJson), RBL_ATLAS_AUTO);
+    fadeRigUseTrimSheet(&r, picP, picQ, false, fadePivotJson);
     int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
     RT_CHECK(RblIsAtlasValid(&r.atlas) && (fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].pivot.x == 0.25f) && (r.atlas.frames[fr].pivot.y == 0.25f), "pivot fixture");
-    Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
-    for (int k = 0; k < 4; k++)
-        if (mats[k]->maps != NULL)
-        {
-            mats[k]->maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
-            mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
-        }
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
     // Each frame's trim in the reference's canvas coordinates (the card's pivot at canvas 8, 6, where
     // every frame's pivot lands): p (1, 2); q (5, 1) shifted 4 right (its pivot is 4 pixels into its
@@ -851,10 +850,8 @@ static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
 // frames lie and nothing where neither does
 static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(void)
 {
-    unsigned int seed = 99u;
-    Image picP = GenImageColor(10, 6, BLACK), picQ = GenImageColor(8, 9, BLACK);
-    for (int i = 0; i < 60; i++) { unsigned int v = rtRandom(&seed); ((Color *)picP.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
-    for (int i = 0; i < 72; i++) { unsigned int v = rtRandom(&seed); ((Color *)picQ.data)[i] = (Color){ (unsigned char)v, (unsigned char)(v >> 8), (unsigned char)(v >> 16), 255 }; }
+    Image picP, picQ;
+    fadeTrimPictures(99u, &picP, &picQ);
     Image sheetImg = fadeTrimSheet(picP, picQ, false);
     Texture2D sheet = LoadTextureFromImage(sheetImg);
     UnloadImage(sheetImg);
