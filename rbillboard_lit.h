@@ -1183,6 +1183,7 @@ typedef struct rbl__Program {
     rbl__MaterialValues values;     // Last per-draw values uploaded
     int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
     bool valuesValid;
+    bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -1280,6 +1281,7 @@ typedef struct rbl__GBufferState {
     Vector3 eye;
     float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
     bool ambientNoted;              // A later scene's other ambient was logged once
+    bool geometryDone;              // A geometry pass filled the targets (since load or the last resize)
     bool follow;                    // Loaded with size 0: takes its target's size at each RblBeginGBuffer
     bool sizeNoted;                 // A resolve into a target of another size was logged (until sizes match again)
     unsigned int savedFramebuffer;  // The caller's target at RblBeginGBuffer, restored by RblEndGBuffer
@@ -1324,6 +1326,10 @@ typedef struct rbl__Scene {
     float exposure;
     int shadowCount;
     int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
+    unsigned int shadowId[RBL_MAX_SHADOWS];         // Each map's object id (an unload drops it from the scene)
+    bool shadowDropped;                             // A map was unloaded after RblSetScene: its light draws unshadowed
+    bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
+    bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
     float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
@@ -1346,7 +1352,8 @@ typedef struct rbl__State {
     int **quarantine;               // Locations arrays of handles RblUnloadLitShader released: kept allocated so no later
     int quarantineCount;            // allocation takes their address while a stale copy may hold it (freed by RblClose)
     int quarantineCapacity;
-    void *glIs[2];                  // glIsProgram, glIsTexture through raylib's loader (NULL: not looked up, or none)
+    void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
+    void *glGetUniformfv;           // ... and glGetUniformfv
     bool glLooked;
     bool closed;                    // RblClose ran: the tables go with the last object the caller holds
     rbl__Scene scene;
@@ -3121,6 +3128,8 @@ static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsB
 // Instance floats and any rotation: values of 2^120 (1.3e36, exponent field 127 + 120) or more could
 // overflow float once the GPU combines them: rejected like NaN
 #define RBL__INSTANCE_LIMIT_EXPONENT 247u
+// CAMERA_PLANE's caller up, whose length scales the quad's height (as raylib's): below 2^30
+#define RBL__UP_LIMIT_EXPONENT 157u
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
@@ -3367,6 +3376,18 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
     memcpy(cosOut, &rc, sizeof(rc));
 }
 
+// A caller's direction (FIXED up and normal, AXIS axis) from any finite vector: a long one is scaled
+// by a power of two (exact) so its squared length cannot overflow; short ones are left (shorter than
+// 1e-12 counts as zero)
+static inline Vector3 rbl__tame(Vector3 v)
+{
+    float m = fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
+    if (!(m > 1e12f)) return v;
+    int e;
+    frexpf(m, &e);
+    return rbl__v3(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
+}
+
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
 // takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
 // (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
@@ -3387,7 +3408,8 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         // up off the axis where the view looks along it (up and back are never both near it)
         case RBL_FACING_AXIS:
         {
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);    // shorter counts as zero (a GPU may flush it)
+            Vector3 given = rbl__tame(b->axis);
+            if (rbl__len2(given) > 1e-24f) rbl__normalizeTo(given, &a);    // shorter counts as zero (a GPU may flush it)
             Vector3 q;
             float wb = rbl__offAxis(view->back, a, &q);
             axis = a; v = toEye; f = rbl__blendOffAxis(q, wb, view->up, a);
@@ -3395,9 +3417,10 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         // up off the normal, toward the normal's fallback up
         case RBL_FACING_FIXED:
         {
+            Vector3 normal = rbl__tame(b->axis), up = rbl__tame(b->up);
             axis = rbl__v3(0.0f, 0.0f, 1.0f);
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &axis);
-            v = (rbl__len2(b->up) > 1e-24f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
+            if (rbl__len2(normal) > 1e-24f) rbl__normalizeTo(normal, &axis);
+            v = (rbl__len2(up) > 1e-24f)? up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
         } break;
         default: own = false; break;
     }
@@ -3521,6 +3544,8 @@ static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textur
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
     if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
         !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
+    if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
     return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__fadeOk(&b->fade, RBL__BILLBOARD_LIMIT_EXPONENT);
 }
 
@@ -3722,6 +3747,8 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
 static void rbl__removeProgram(rbl__Program *p);
+static void rbl__noteDroppedShadow(void);
+static void rbl__markDrawn(const rbl__Program *p);
 
 static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
@@ -4135,6 +4162,7 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         }
         rlDrawVertexArrayElements(0, n*6, 0);
     }
+    if (program != NULL) rbl__markDrawn(program);
 }
 
 // One pass over the uploaded quads: the runs in order, or (sorted) each stretch of consecutive
@@ -4463,11 +4491,15 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID))
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID) ||
+        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
     {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i or NaN/Inf vectors)", desc.facing, desc.sort);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i, NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
         return 0;
     }
+    // Directions only (FIXED up and normal, AXIS axis): long ones scaled, as the CPU does
+    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
+    desc.axis = rbl__tame(desc.axis);
     rbl__Program *checked = NULL;
     const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
@@ -4604,6 +4636,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rlDrawVertexArrayInstanced(0, 6, n);
+    rbl__markDrawn(program);
     if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -5915,7 +5948,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     #define RBL__GLAPI
 #endif
 typedef unsigned char (RBL__GLAPI *rbl__GlIsName)(unsigned int name);
-enum { RBL__GL_PROGRAM = 0, RBL__GL_TEXTURE };
+enum { RBL__GL_PROGRAM = 0, RBL__GL_TEXTURE, RBL__GL_VERTEX_ARRAY, RBL__GL_QUERIES };
 
 // Whether name is a live GL object of that kind; true where the loader gives no query (cannot tell)
 static bool rbl__glIsLive(int which, unsigned int name)
@@ -5927,6 +5960,8 @@ static bool rbl__glIsLive(int which, unsigned int name)
     {
         rbl__state.glIs[RBL__GL_PROGRAM] = rlGetProcAddress("glIsProgram");
         rbl__state.glIs[RBL__GL_TEXTURE] = rlGetProcAddress("glIsTexture");
+        rbl__state.glIs[RBL__GL_VERTEX_ARRAY] = (rbl__glsl() >= 300)? rlGetProcAddress("glIsVertexArray") : NULL;
+        rbl__state.glGetUniformfv = rlGetProcAddress("glGetUniformfv");
         rbl__state.glLooked = true;
     }
     if (rbl__state.glIs[which] == NULL) return true;
@@ -5943,6 +5978,43 @@ static bool rbl__programAlive(const rbl__Program *p)
     if ((p->key.kind != RBL__KIND_LIT) || !rbl__glUsable()) return true;     // no context: nothing to ask
     return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && rbl__glIsLive(RBL__GL_PROGRAM, p->shader.id) &&
            (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
+}
+
+// raylib's DrawModel/DrawMesh upload a lit program's colDiffuse, matrices and textures, none of the
+// header's material values. Each header draw leaves a sentinel in the program's mvp (raylib's draws
+// always overwrite it) and the next header use reads it back: anything else means raylib drew with
+// the program since, with the values the last header draw left (said once a program)
+typedef void (RBL__GLAPI *rbl__GlGetUniformfv)(unsigned int program, int location, float *params);
+static Matrix rbl__mvpSentinel(void)
+{
+    Matrix m;
+    memset(&m, 0, sizeof(m));
+    m.m15 = -8.125f;
+    return m;
+}
+
+// After a header draw with p (bound): the sentinel
+static void rbl__markDrawn(const rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind == RBL__KIND_LIT) && !p->raylibNoted && (loc != -1)) rlSetUniformMatrix(loc, rbl__mvpSentinel());
+}
+
+// Before a header use of p: whether raylib drew with it since the last header draw
+static void rbl__checkRaylibDrew(rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind != RBL__KIND_LIT) || p->raylibNoted || (loc == -1) || (rbl__state.glGetUniformfv == NULL) || !rbl__glUsable()) return;
+    rbl__GlGetUniformfv get;
+    memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
+    float m[16];
+    get(p->shader.id, loc, m);
+    bool sentinel = (m[15] == -8.125f);
+    for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
+    if (sentinel) return;
+    TraceLog(LOG_WARNING, "RBL: lit program %u was drawn by raylib's DrawModel/DrawMesh, which uploads colDiffuse, matrices and textures only: "
+                          "roughness, metalness, shininess, specular, emission and alpha cutoff were the last header draw's (draw Models with RblDrawModel/RblDrawMesh)", p->shader.id);
+    p->raylibNoted = true;
 }
 
 static bool rbl__buried(unsigned int id, const int *locs)
@@ -6100,6 +6172,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     }
     int none[4] = { -1, -1, -1, -1 };
     if (p->loc[RBL__U_SHADOW_LIGHT] != -1) rlSetUniform(p->loc[RBL__U_SHADOW_LIGHT], none, SHADER_UNIFORM_IVEC4, 1);
+    rbl__markDrawn(p);
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
@@ -6241,7 +6314,11 @@ static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 int RblLightFeatures(const RblLight *lights, int count)
 {
     int features = 0;
-    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i with lights %p", count, (const void *)lights); return 0; }
+    if ((count < 0) || (count > RBL_MAX_SCENE_LIGHTS) || ((count > 0) && (lights == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i outside 0..RBL_MAX_SCENE_LIGHTS (%i) or lights NULL", count, RBL_MAX_SCENE_LIGHTS);
+        return 0;
+    }
     for (int i = 0; i < count; i++)
         if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: light %i has an unknown type or falloff", i); return 0; }
     return features;
@@ -6404,7 +6481,13 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
 // fade distance
 static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
 {
-    const rbl__Scene *sc = &rbl__state.scene;
+    rbl__Scene *sc = &rbl__state.scene;
+    if ((sc->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, sc->depth.id))
+    {
+        if (!sc->depthNoted) TraceLog(LOG_WARNING, "RBL: the scene's depth texture %u was unloaded after RblSetScene: soft particles draw unsoftened until the next RblSetScene", sc->depth.id);
+        sc->depthNoted = true;
+        memset(&sc->depth, 0, sizeof(sc->depth));
+    }
     Matrix proj = rlGetMatrixProjection();
     float fade = material->params[RBL_PARAM_SOFT_DISTANCE];
     if (!rbl__finite(fade) || (fade <= 0.0f)) fade = 0.5f;
@@ -6437,7 +6520,9 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         return true;
     }
     if (*program == NULL) return true;
+    rbl__checkRaylibDrew(*program);
     material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
+    if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     return true;
 }
@@ -6502,6 +6587,44 @@ static void rbl__bindSceneShadows(void)
 {
     for (int k = 0; k < rbl__state.scene.shadowCount; k++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k); rlEnableTexture(rbl__state.scene.shadowTexture[k]); }
     rlActiveTextureSlot(0);
+}
+
+// A map the scene lists was unloaded: said once, at the first draw that would have sampled it
+static void rbl__noteDroppedShadow(void)
+{
+    if (rbl__state.scene.shadowDroppedNoted) return;
+    TraceLog(LOG_WARNING, "RBL: a shadow map of the scene was unloaded after RblSetScene: its light draws unshadowed until the next RblSetScene");
+    rbl__state.scene.shadowDroppedNoted = true;
+}
+
+static int rbl__uploadSceneInto(rbl__Program *p);
+
+// An unloaded shadow map leaves the scene at once, so no program samples its deleted texture; its
+// light draws unshadowed (noted at the next draw that would have used it)
+static void rbl__dropSceneShadow(unsigned int id)
+{
+    rbl__Scene *s = &rbl__state.scene;
+    int k = 0;
+    while ((k < s->shadowCount) && (s->shadowId[k] != id)) k++;
+    if (k == s->shadowCount) return;
+    for (int j = k; j + 1 < s->shadowCount; j++)
+    {
+        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1];
+        memcpy(s->shadowUniforms[j], s->shadowUniforms[j + 1], sizeof(s->shadowUniforms[j]));
+    }
+    s->shadowCount--;
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        float *map = &s->lights[i*RBL__LIGHT_FLOATS + 15];      // shadow map index + 1
+        if (*map == (float)(k + 1)) *map = 0.0f;
+        else if (*map > (float)(k + 1)) *map -= 1.0f;
+    }
+    s->shadowDropped = true;
+    s->shadowDroppedNoted = false;
+    if (!rbl__glUsable()) return;
+    rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + s->shadowCount); rlDisableTexture();
+    rbl__bindSceneShadows();
+    for (int i = 0; i < rbl__state.programCount; i++) rbl__uploadSceneInto(rbl__state.programs[i]);
 }
 
 // Shadow uniforms of program p: map k shadows light slot slotOf[k] (-1 = none)
@@ -6609,6 +6732,7 @@ bool RblSetScene(const RblScene *scene)
     else if (!rbl__finite3(scene->ambientUp) || ((rbl__len2(scene->ambientUp) != 0.0f) && !rbl__normalizeTo(scene->ambientUp, &up))) bad = "ambientUp not a finite direction";
     else if ((scene->depth.id != 0) && ((scene->depth.width <= 0) || (scene->depth.height <= 0) || (scene->depth.width > RBL_MAX_TARGET_SIZE) || (scene->depth.height > RBL_MAX_TARGET_SIZE)))
         bad = "depth texture size outside 1..RBL_MAX_TARGET_SIZE";
+    else if ((scene->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, scene->depth.id)) bad = "the depth texture does not exist (unloaded?)";
     else bad = rbl__checkShadowMaps(scene->shadowMaps, scene->shadowMapCount, scene->lightCount);
     rbl__Scene *s = &rbl__state.scene;
     // Packed storage grows to the largest scene (no allocation in a steady frame)
@@ -6670,12 +6794,15 @@ bool RblSetScene(const RblScene *scene)
     s->fogStart = (fog->mode == RBL_FOG_NONE)? 0.0f : fog->start;
     s->exposure = (scene->exposure == 0.0f)? 1.0f : scene->exposure;
     s->depth = scene->depth;
+    s->depthNoted = false;
     s->shadowCount = scene->shadowMapCount;
+    s->shadowDropped = s->shadowDroppedNoted = false;
     for (int k = 0; k < scene->shadowMapCount; k++)
     {
         const RblShadowMap *map = &scene->shadowMaps[k];
         rbl__shadowUniformData(map, s->shadowUniforms[k]);
         s->shadowLight[k] = map->light;
+        s->shadowId[k] = map->id;
         s->shadowTexture[k] = map->depth.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
@@ -6685,6 +6812,7 @@ bool RblSetScene(const RblScene *scene)
     {
         rbl__Program *p = rbl__state.programs[i];
         if (!rbl__programAlive(p)) { rbl__forgetProgram(p); i--; continue; }
+        rbl__checkRaylibDrew(p);
         int skipped = rbl__uploadSceneInto(p);
         if (skipped > 0)
             TraceLog(LOG_INFO, "RBL: RblSetScene: lit program %u lights %i of %i lights (maxLights %i, or types not in lightFeatures)",
@@ -6697,6 +6825,13 @@ bool RblSetScene(const RblScene *scene)
 // Why a mesh cannot be drawn with this transform; NULL = it can
 static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
 {
+    // GL 3 / ES 3 draw through the mesh's vertex array (a core context has no other way): it must be
+    // a live one (UnloadMesh deletes it), which also vouches for the mesh's arrays read next
+    if (rbl__glsl() >= 300)
+    {
+        if (mesh->vaoId == 0) return "mesh has no vertex array (vaoId 0: not uploaded, or unloaded)";
+        if (!rbl__glIsLive(RBL__GL_VERTEX_ARRAY, mesh->vaoId)) return "mesh's vertex array does not exist (unloaded?)";
+    }
     if ((mesh->vertexCount <= 0) || ((mesh->vaoId == 0) && ((mesh->vboId == NULL) || (mesh->vboId[0] == 0)))) return "mesh not uploaded (no vertices, vaoId and vboId 0)";
     if (!rbl__exponentsBelow(transform, 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "transform with NaN/Inf or |value| >= 2^60";
     return NULL;
@@ -6760,6 +6895,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
         rbl__uploadBones(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones);
     }
     DrawMesh(mesh, material, transform);
+    if (p != NULL) { rlEnableShader(p->shader.id); rbl__markDrawn(p); rlDisableShader(); }
 }
 
 void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
@@ -7144,6 +7280,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
     gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
     gbuffer->width = width; gbuffer->height = height;
     gbuffer->desc.width = width; gbuffer->desc.height = height;
+    gbuffer->state->geometryDone = false;       // new targets hold nothing yet
     return true;
 }
 
@@ -7266,6 +7403,7 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
 {
     if ((gbuffer == NULL) || !rbl__isLive(gbuffer->id, gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
     gbuffer->state->begun = false;
+    gbuffer->state->geometryDone = true;
     rbl__state.gbufferPass = NULL;
     rlDrawRenderBatchActive();
     rlMatrixMode(RL_PROJECTION);
@@ -7357,7 +7495,10 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
+    else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
+    else if (!gbuffer->state->geometryDone) bad = "no geometry pass ran since the G-buffer was loaded or resized (RblBeginGBuffer/RblEndGBuffer first)";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
+    if (rbl__state.scene.shadowDropped && (gbuffer->desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     RblGBuffer *g = gbuffer;
     const rbl__Scene *s = &rbl__state.scene;
     int count = s->lightCount, unbounded = 0, uncompiled = 0;
@@ -7615,6 +7756,7 @@ void RblUnloadShadowMap(RblShadowMap *map)
 {
     if (!rbl__unloadable(map, (map != NULL)? map->id : 0, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
     if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
+    rbl__dropSceneShadow(map->id);
     if (!rbl__glUsable()) {}                                                // gone with the context
     else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
@@ -8952,6 +9094,7 @@ static const char *rbl__spriteStep(const rbl__AtlasState *s, RblSpritePlayer *pl
     bool pingpong = (dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
     if ((p.frame < from) || (p.frame > to) || ((p.step != 1) && (p.step != -1)) || !rbl__finite(p.time) || (p.time < 0.0f) || (p.loops < 0) || (p.passes < 0))
         return "player state not from RblPlaySprite for this atlas (frame, step, time or counts)";
+    if ((double)p.time > rbl__spriteDuration(s, p.frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     if (p.finished) return NULL;
     double t = (double)p.time + dt;
     // Most updates stay inside the current frame: no period, no stepping
@@ -9004,7 +9147,11 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
 {
     const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSpriteInstances");
     if (s == NULL) return 0;
-    if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
+    if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && ((players == NULL) || (instances == NULL))))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count %i outside 0..RBL_MAX_INSTANCES (%i), or players/instances NULL", count, RBL_MAX_INSTANCES);
+        return 0;
+    }
     if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
     // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
@@ -9033,6 +9180,8 @@ static const char *rbl__spriteBlend(const rbl__AtlasState *s, const RblSpritePla
     rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
     if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
         return "player state not from RblPlaySprite for this atlas";
+    // RblUpdateSprite keeps time inside the frame; more is not a state it makes
+    if ((double)player->time > rbl__spriteDuration(s, player->frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     RblSpritePlayer p = *player;
     *nextFrame = p.frame;
     *weight = 0.0f;
@@ -9082,7 +9231,8 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: NaN/Inf view direction or facing (|facing| <= 1e9)"); return -1; }
     // The eye seen from the sprite, on the ground plane: angle about +Y from +Z (the facing's 0)
     double ex = -(double)viewDirection.x, ez = -(double)viewDirection.z;
-    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up (or zero): the front
+    if ((ex == 0.0) && (ez == 0.0) && (viewDirection.y == 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: zero view direction"); return -1; }
+    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up: the front
     double eye = atan2(ex, ez)*(180.0/3.14159265358979323846);
     double rel = fmod(eye - fmod((double)facingDegrees, 360.0), 360.0);
     if (rel < 0.0) rel += 360.0;
