@@ -1132,6 +1132,8 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
+// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
+#define RBL__RAYLIB_MATERIAL_MAPS 12
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
@@ -6152,10 +6154,6 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
-    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
-    // cut: the alpha band's ceiling is above every alpha
-    float band[2] = { 0.0f, 2.0f };
-    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     if (d->softParticles)
     {
         int unit = RBL_SCENE_DEPTH_TEXTURE_UNIT;
@@ -6176,6 +6174,17 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
+    // A default Material's values (its zero fields), so raylib's DrawModel of such materials draws as
+    // the header's own draws would
+    if (key->kind != RBL__KIND_PASS)
+    {
+        MaterialMap defaults[RBL__RAYLIB_MATERIAL_MAPS];
+        Material none;
+        memset(defaults, 0, sizeof(defaults));
+        memset(&none, 0, sizeof(none));
+        none.maps = defaults;
+        rbl__applyMaterialValues(p, &none);
+    }
     rlDisableShader();
     rbl__uploadScene(p);            // a program loaded mid-frame draws with the current scene
     return p;
@@ -6386,8 +6395,6 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
 }
 
-// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
-#define RBL__RAYLIB_MATERIAL_MAPS 12
 
 // Why a material cannot draw in the current pass through a path; NULL = it can, with *program its
 // lit program (NULL: the caller's own shader, drawn as raylib would). The shader is resolved before
