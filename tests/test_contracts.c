@@ -950,9 +950,12 @@ static void c_gbuffer_passes(void)
     EXPECT_REFUSED(V(RblResolveGBuffer(&g)));
     EXPECT_REFUSED(RblResizeGBuffer(&g, 16, 16));
     EXPECT_REFUSED(V(RblEndGBuffer(&h)));                      // ending the other one
-    // Mismatched variants inside the pass: forward, other BRDF, instanced forward
+    // Mismatched variants inside the pass: forward, other BRDF, instanced forward (a refused first
+    // immediate draw creates nothing)
     RblBillboard bb = billboard();
+    ck(rbl__state.immediate.state == NULL, "the immediate path exists before any immediate draw");
     EXPECT_REFUSED(V(RblDrawBillboard(camera(), material, bb)));
+    ck(rbl__state.immediate.state == NULL, "a refused immediate draw created the immediate path's buffers");
     Material lam = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
     EXPECT_REFUSED(V(RblDrawBillboard(camera(), lam, bb)));
     RblShadowMap map = RblLoadShadowMap((RblShadowDesc){ 0 });
