@@ -395,8 +395,11 @@
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
+*       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
+*           Texture unit soft particles read the scene depth from (RblScene.depth, RblEndSceneDepth).
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
-*           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
+*           Scene shadow map k goes to texture unit 12 + k (raylib's material maps use 0..10, the
+*           scene depth 11; GL 3.3 promises 16).
 *       #define RBL_MAX_BONES 128
 *           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
 *       #define RBL_GPU_SKINNING 1
@@ -1025,6 +1028,9 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module Functions Declaration
 //----------------------------------------------------------------------------------
+// Module lifetime
+RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+
 // Geometry (CPU, no GL needed)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
@@ -1037,7 +1043,6 @@ RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  //
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
-RBLAPI void RblClose(void);                                                   // Release the immediate path's buffers (before CloseWindow)
 
 // Instanced path (GL): per-instance data only, quads expanded in the vertex shader
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
