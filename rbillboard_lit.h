@@ -94,7 +94,7 @@
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
-*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: the render size
+*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
 *            gdesc.brdf = RBL_BRDF_GGX;
 *            RblGBuffer g = RblLoadGBuffer(gdesc);
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
@@ -124,20 +124,25 @@
 *       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
 *
 *   OWNERSHIP:
-*       - RblLoadLitShader returns a raylib Shader whose locs array is that holder's; copies of it
-*         (material.shader) are the same holder: release it once. Equal descs share one program;
-*         each call is its own holder, and the program goes with its last holder.
-*       - Release with RblUnloadLitShader(&shader) (zeroes it) or raylib's UnloadMaterial/UnloadShader:
-*         the header notices the deleted program at the next load, scene or validity check, forgets
-*         it and compiles anew on the next load (draws skip the check: a GL query each).
+*       - RblLoadLitShader returns a raylib Shader that is its own GL program (as LoadShader); copies
+*         of it (material.shader) are the same holder: release it once, with RblUnloadLitShader(&shader)
+*         (zeroes it) or raylib's UnloadShader/UnloadMaterial. Materials that differ only in values
+*         share one Shader; equal descs loaded twice are two programs.
+*       - Draws recognise a Material's shader by its (id, locs) pair and ask GL that the program still
+*         exists before reading anything else of the Material: a stale copy is refused with one line.
+*         Draws use the header's own locations, never a Material's.
+*       - Batches, instance buffers, G-buffers and shadow maps carry an id: a copy of an unloaded one
+*         is refused even when a newer object took its memory.
 *       - Shadow maps and G-buffers hold their programs until RblUnloadShadowMap / RblUnloadGBuffer.
-*       - RblClose frees the immediate path, the scene and every program still held: call it after
-*         your own Unload calls (a Shader unloaded afterwards would be freed twice), before CloseWindow.
+*       - RblClose frees what the header owns (immediate path, scene, registry); lit programs become
+*         their holders' plain Shaders. Unload your objects before or after it; after CloseWindow the
+*         header makes no GL call (unloads free memory only).
 *
 *   FACING MODES (RblBillboard.facing, or RblInstancedDesc.facing for an instanced draw):
 *       CAMERA_PLANE: parallel to the view plane, as DrawBillboard (optional up, as DrawBillboardPro);
 *       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
-*       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
+*       default); FIXED: a world orientation (axis = normal, up). Under an orthographic camera the eye
+*       is at infinity along the view's back direction (RblCameraFrame.orthographic). roundness bends the corner normals
 *       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
 *       Two-sided: a quad seen from behind (FIXED, or CAMERA_PLANE with an up against the view's) is
 *       drawn and shaded on the side seen (gl_FrontFacing): the normal flips, the normal map's tangent
@@ -381,9 +386,11 @@
 *         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
 *         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
 *         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
-*         the G-buffer are refused there with one log line. ES 2: raylib 6.0's rlGetActiveFramebuffer
-*         answers 0, so a shadow pass run inside BeginTextureMode returns to the default framebuffer.
-*       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
+*         the G-buffer are refused there with one log line.
+*       - raylib's own DrawModel/DrawMesh upload colDiffuse, matrices and textures, none of the header's
+*         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
+*         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
+*         use of it and logged once per program.
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
 *         the target, viewport and matrices it found but leaves the depth test off, culling on and
@@ -400,16 +407,16 @@
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
 *         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
-*         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
-*         BeginTextureMode, resolve inside); resolve into a target of its size. The geometry pass
+*         (directional, range 0); a G-buffer loaded with size 0 takes its target's size at each
+*         RblBeginGBuffer (the screen, or the render texture of BeginTextureMode) and RblEndGBuffer
+*         returns to that target; a fixed size resolved into another size is scaled (logged). The geometry pass
 *         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
-*         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
-*         billboards still turn toward camera.position (their shading uses the parallel view).
+*         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
@@ -421,9 +428,9 @@
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
-*       #define RBL_SHADER_CACHE_SIZE 32
-*           Programs the registry holds: lit variants (equal descs share one), 2 casters while a shadow
-*           map is loaded, 5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
+*       #define RBL_SHADER_CACHE_SIZE 1024
+*           Programs the registry holds: one per lit Shader loaded, casters while a shadow map is loaded,
+*           5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch, or instances an instance buffer, reserves when loaded with 0.
 *       #define RBL_MAX_BATCH_BILLBOARDS 2097152, RBL_MAX_INSTANCES 2097152
@@ -438,8 +445,11 @@
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
+*       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
+*           Texture unit soft particles read the scene depth from (RblScene.depth, RblEndSceneDepth).
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
-*           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
+*           Scene shadow map k goes to texture unit 12 + k (raylib's material maps use 0..10, the
+*           scene depth 11; GL 3.3 promises 16).
 *       #define RBL_MAX_BONES 128
 *           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
 *       #define RBL_GPU_SKINNING 1
@@ -594,7 +604,7 @@
     #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
 #endif
 #ifndef RBL_SHADER_CACHE_SIZE
-    #define RBL_SHADER_CACHE_SIZE 32            // Lit shader variants reused instead of recompiled
+    #define RBL_SHADER_CACHE_SIZE 1024          // Programs the registry may hold (lit programs, casters, G-buffer passes)
 #endif
 #ifndef RBL_BATCH_DEFAULT_CAPACITY
     #define RBL_BATCH_DEFAULT_CAPACITY 1024     // Billboards reserved by RblLoadBatch(0)
@@ -696,6 +706,7 @@ typedef struct RblCameraFrame {
     Vector3 right;                  // View matrix row 0 (unit)
     Vector3 up;                     // View matrix row 1 (unit)
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
+    bool orthographic;              // Parallel view (CAMERA_ORTHOGRAPHIC): the eye is at infinity along back, facing modes turn toward back
 } RblCameraFrame;
 
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
@@ -712,6 +723,7 @@ typedef struct RblBatch {
     int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
     int count;                      // Billboards added since RblBeginBatch()
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__BatchState *state;  // The header's: vertices, material runs, GL buffers, camera frame (NULL = not loaded)
 } RblBatch;
 
@@ -741,6 +753,7 @@ typedef struct RblInstancedDesc {
 typedef struct RblInstanceBuffer {
     int capacity;                   // Instances reserved (doubles with a log line when a draw needs more)
     int skipped;                    // Instances skipped for bad input in the last draw
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__InstanceBufferState *state; // The header's: GPU buffers, staging copy (NULL = not loaded)
 } RblInstanceBuffer;
 
@@ -948,6 +961,7 @@ typedef struct RblGBuffer {
     bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__GBufferState *state; // The header's: framebuffers, pass programs, light volumes, camera (NULL = not loaded)
 } RblGBuffer;
 
@@ -969,6 +983,7 @@ typedef struct RblShadowMap {
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__ShadowMapState *state; // The header's: framebuffer, light camera and matrices, pass state (NULL = not loaded)
 } RblShadowMap;
 
@@ -1068,6 +1083,9 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module Functions Declaration
 //----------------------------------------------------------------------------------
+// Module lifetime
+RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+
 // Geometry (CPU, no GL needed)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
@@ -1080,7 +1098,6 @@ RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  //
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
-RBLAPI void RblClose(void);                                                   // Release the immediate path's buffers (before CloseWindow)
 
 // Instanced path (GL): per-instance data only, quads expanded in the vertex shader
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
@@ -1112,6 +1129,8 @@ RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      //
 // Deferred G-buffer
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
+RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
+RBLAPI void RblEndSceneDepth(void);                                            // Show that world on the current target with its depth; soft particles read it (unless RblScene.depth is given)
 RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
@@ -1182,6 +1201,15 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
+// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
+#define RBL__RAYLIB_MATERIAL_MAPS 12
+// GL entry points the header asks raylib's loader for (rlGetProcAddress): the platform's calling convention
+#if defined(_WIN32)
+    #define RBL__GLAPI __stdcall
+#else
+    #define RBL__GLAPI
+#endif
+
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
@@ -1207,7 +1235,7 @@ typedef enum {
     RBL__U_COUNT
 } rbl__Uniform;
 
-typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS } rbl__ProgramKind;
+typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS, RBL__KIND_COMPOSITE } rbl__ProgramKind;
 enum { RBL__PASS_FULLSCREEN = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_FULLSCREEN_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
 
 // What a program is compiled from: equal keys share one program
@@ -1226,20 +1254,23 @@ typedef struct rbl__MaterialValues {
 // One entry of the program registry
 typedef struct rbl__Program {
     rbl__ProgramKey key;
-    Shader shader;                  // Program and the registry's own raylib locs (handles get copies)
+    Shader shader;                  // Program and the registry's own raylib locs (every draw reads these, never a Material's)
+    const int *handleLocs;          // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
     int loc[RBL__U_COUNT];          // Uniform locations
-    int refs;                       // Holders: RblLoadLitShader handles, shadow maps, G-buffers
+    int refs;                       // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
     rbl__MaterialValues values;     // Last per-draw values uploaded
     int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
     int casterIdLoc;                // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
     bool valuesValid;
+    bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
 } rbl__Program;
 
-// A Shader handed out by RblLoadLitShader: its locs array is that holder's (raylib's UnloadShader frees it)
-typedef struct rbl__Handle {
-    int *locs;
+// A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
+// by the pair (stale Shader copies)
+typedef struct rbl__DeadHandle {
     unsigned int id;
-} rbl__Handle;
+    const int *locs;
+} rbl__DeadHandle;
 
 // A run of billboards sharing one material inside a batch
 // A billboard's place in a sorted batch
@@ -1286,6 +1317,7 @@ typedef struct rbl__BatchState {
     bool orthographic;              // The camera's projection (which side of a quad it sees)
     bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
+    unsigned int pass;              // The pass it began in (rbl__passNow): added to and ended in that one only
     // The optional fade stream (16 floats per billboard: rbl__fadeVertices), allocated when the first
     // billboard with a fade weight arrives; a batch without one uploads and binds nothing more
     float *fade;                    // Per billboard since RblBeginBatch() while fading (capacity billboards)
@@ -1336,6 +1368,10 @@ typedef struct rbl__GBufferState {
     Vector3 eye;
     float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
     bool ambientNoted;              // A later scene's other ambient was logged once
+    bool geometryDone;              // A geometry pass filled the targets (since load or the last resize)
+    bool follow;                    // Loaded with size 0: takes its target's size at each RblBeginGBuffer
+    bool sizeNoted;                 // A resolve into a target of another size was logged (until sizes match again)
+    unsigned int savedFramebuffer;  // The caller's target at RblBeginGBuffer, restored by RblEndGBuffer
     bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
 } rbl__GBufferState;
 
@@ -1361,8 +1397,7 @@ typedef struct rbl__ShadowMapState {
 typedef struct rbl__Cast {
     Vector4 light;                  // xyz toward the light (w 0) or its position (w 1)
     float minSin;
-    bool faceLight;                 // Casters face the light (the pass's frame is the light's): AXIS tilts turn the front face to it
-    bool parallel;                  // ... of a directional light: CAMERA_POSITION and AXIS face along it, not toward the light camera's eye
+    bool faceLight;                 // Casters face the light (the pass's frame is the light's: orthographic for a directional light, so CAMERA_POSITION and AXIS face along it): AXIS tilts turn the front face to it
 } rbl__Cast;
 
 // The frame's scene, validated and packed once by RblSetScene
@@ -1379,29 +1414,62 @@ typedef struct rbl__Scene {
     float exposure;
     int shadowCount;
     int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
+    unsigned int shadowId[RBL_MAX_SHADOWS];         // Each map's object id (an unload drops it from the scene)
+    bool shadowDropped;                             // A map was unloaded after RblSetScene: its light draws unshadowed
+    bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
+    bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
     float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
+// The scene target of a plain raylib frame (RblBeginSceneDepth .. RblEndSceneDepth): the opaque world
+// drawn where its depth is a texture, then shown on the caller's target with that depth
+typedef struct rbl__SceneCapture {
+    RenderTexture2D target;         // Follows the size of the target it is shown on (0 = not made yet)
+    unsigned int composite;         // The composite program (registry, RBL__KIND_COMPOSITE)
+    unsigned int vao, vbo;          // Full-screen triangle (vao 0 where the context has none)
+    unsigned int savedFramebuffer;  // The caller's target at RblBeginSceneDepth
+    bool begun;                     // Between RblBeginSceneDepth and RblEndSceneDepth
+    bool shown;                     // RblEndSceneDepth ran: soft particles read its depth (RblScene.depth given: that one)
+} rbl__SceneCapture;
+
+// One slot of the loaded-object table (rbl__liveAdd)
+typedef struct rbl__Live {
+    unsigned int id;                // The object's id (0 = free slot)
+    const void *state;              // Its private state
+} rbl__Live;
+
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
 typedef struct rbl__State {
-    rbl__Program programs[RBL_SHADER_CACHE_SIZE];   // The one program registry (refs == 0: free slot)
-    rbl__Handle *handles;           // Live RblLoadLitShader handles
-    int handleCount;
-    int handleCapacity;
+    rbl__Program **programs;        // The one program registry (each entry allocated: pointers stay valid as it grows)
+    int programCount;
+    int programCapacity;
+    rbl__DeadHandle *dead;          // Lit handles that died, so their copies are refused (freed by RblClose)
+    int deadCount;
+    int deadCapacity;
+    int **quarantine;               // Locations arrays of handles RblUnloadLitShader released: kept allocated so no later
+    int quarantineCount;            // allocation takes their address while a stale copy may hold it (freed by RblClose)
+    int quarantineCapacity;
+    void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
+    void *glGetUniformfv;           // ... and glGetUniformfv
+    bool glLooked;
+    bool closed;
+    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target                    // RblClose ran: the tables go with the last object the caller holds
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
-    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
+    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
+    RblShadowMap shadowPassMap;     // ... the map as it began (the caller's struct is never held)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
-    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
+    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
+    RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
-    const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
-    int liveCount;
+    rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
+    int liveCount;                  // Slots used (free ones are reused)
     int liveCapacity;
 } rbl__State;
 
@@ -1443,42 +1511,77 @@ static const char *rbl__needsGlsl3(const char *feature)
     return rbl__state.problem;
 }
 
-// Loaded objects' private states: validity is membership, so a stale copy's pointer (its object
-// unloaded) is recognised without being dereferenced
-static bool rbl__liveAdd(void *object)
+// Objects handed out (batches, instance buffers, G-buffers, shadow maps) are named by id: slot + 1 in
+// the low 16 bits, a serial above. A stale copy (its object unloaded, its slot or its state's
+// address perhaps taken by another since) carries an id no live object has, so it is recognised
+// without dereferencing anything it holds. The serial outlives RblClose: no id repeats across it.
+static unsigned int rbl__serial = 0;
+
+// Whether GL may be called: raylib's window is open, or the header never saw one (a context made
+// another way, e.g. rlglInit on a headless context). After CloseWindow the context is gone: unloads
+// and RblClose then free memory only (both survive RblClose, as the serial)
+static bool rbl__sawWindow = false;
+static bool rbl__glUsable(void)
 {
-    if (rbl__state.liveCount == rbl__state.liveCapacity)
+    if (IsWindowReady()) { rbl__sawWindow = true; return true; }
+    return !rbl__sawWindow;
+}
+
+// Registers a loaded object's state; its id, or 0 when out of memory or slots
+static unsigned int rbl__liveAdd(const void *state)
+{
+    int slot = -1;
+    for (int i = 0; (i < rbl__state.liveCount) && (slot < 0); i++) if (rbl__state.live[i].id == 0) slot = i;
+    if (slot < 0)
     {
-        int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
-        const void **live = (const void **)RBL_REALLOC((void *)rbl__state.live, (size_t)capacity*sizeof(void *));
-        if (live == NULL) return false;
-        rbl__state.live = live;
-        rbl__state.liveCapacity = capacity;
+        if (rbl__state.liveCount >= 0xFFFF) return 0;
+        if (rbl__state.liveCount == rbl__state.liveCapacity)
+        {
+            int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
+            rbl__Live *live = (rbl__Live *)RBL_REALLOC(rbl__state.live, (size_t)capacity*sizeof(rbl__Live));
+            if (live == NULL) return 0;
+            rbl__state.live = live;
+            rbl__state.liveCapacity = capacity;
+        }
+        slot = rbl__state.liveCount++;
     }
-    rbl__state.live[rbl__state.liveCount++] = object;
-    return true;
+    rbl__serial = (rbl__serial + 1u) & 0xFFFFu;
+    if (rbl__serial == 0u) rbl__serial = 1u;
+    rbl__state.closed = false;      // used again after RblClose
+    rbl__state.live[slot].id = (rbl__serial << 16) | (unsigned int)(slot + 1);
+    rbl__state.live[slot].state = state;
+    return rbl__state.live[slot].id;
 }
 
-static void rbl__liveRemove(const void *object)
+// The slot id names, or -1 (id 0 and ids of empty or reused slots included)
+static int rbl__liveSlot(unsigned int id)
 {
-    for (int i = 0; i < rbl__state.liveCount; i++)
-        if (rbl__state.live[i] == object) { rbl__state.live[i] = rbl__state.live[--rbl__state.liveCount]; return; }
+    unsigned int slot = (id & 0xFFFFu) - 1u;
+    return ((id != 0u) && (slot < (unsigned int)rbl__state.liveCount) && (rbl__state.live[slot].id == id))? (int)slot : -1;
 }
 
-static bool rbl__isLive(const void *object)
+static void rbl__liveRemove(unsigned int id)
 {
-    if (object == NULL) return false;
-    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i] == object) return true;
-    return false;
+    int slot = rbl__liveSlot(id);
+    if (slot >= 0) { rbl__state.live[slot].id = 0; rbl__state.live[slot].state = NULL; }
 }
 
-// An unload's holder check: true when holder's state is live; otherwise one line under fn (NULL
+// Whether (id, state) is a loaded object: the id first, then its state pointer compared (not read)
+static bool rbl__isLive(unsigned int id, const void *state)
+{
+    int slot = rbl__liveSlot(id);
+    return (slot >= 0) && (state != NULL) && (rbl__state.live[slot].state == state);
+}
+
+// An unload's holder check: true when holder's object is live; otherwise one line under fn (NULL
 // holder, zero holder, stale copy) and false
-static bool rbl__unloadable(const void *holder, const void *state, const char *fn, const char *what)
+static void rbl__tidyAfterClose(void);
+
+static bool rbl__unloadable(const void *holder, unsigned int id, const void *state, const char *fn, const char *what)
 {
     if (holder == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL %s", fn, what); return false; }
-    if (rbl__isLive(state)) return true;
-    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, (state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+    if (rbl__isLive(id, state)) return true;
+    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, ((id != 0) || (state != NULL))? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
     return false;
 }
 
@@ -2303,8 +2406,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "\n",
     "uniform mat4 mvp;\n",
     "// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):\n",
-    "//   [0] eye, facing code: RblFacing + 4 (shadow pass, directional light-facing casters: CAMERA_POSITION\n",
-    "//       and AXIS face along the light) + 8 (light-facing casters: AXIS tilts turn the front face)\n",
+    "//   [0] eye, facing code: RblFacing + 8 in a shadow pass with light-facing casters (AXIS tilts turn\n",
+    "//       the front face to the light)\n",
     "//   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
     "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass\n",
     "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
@@ -2417,13 +2520,13 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// for facing code (rblInstancing[0].w), from the view frame and the draw's up and axis; a shadow pass\n",
     "// tilts AXIS billboards until the light sees them at the minimum angle. As on the CPU: each mode picks\n",
     "// an axis, a vector v and a fallback f, one blend follows, then the frame is built.\n",
-    "void rblFacingBasis(int code, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
+    "void rblFacingBasis(int code, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
     "                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)\n",
     "{\n",
     "    int facing = code & 3;\n",
     "    bool faceLight = (code & 8) != 0;\n",
-    "    vec3 toEye = ((code & 4) != 0)? viewBack : eye - position;\n",
     "    r = viewRight; u = viewUp; n = viewBack;\n",
+    "    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity (a directional light's too)\n",
     "    vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);\n",
     "    bool own = true;\n",
     "    if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }\n",
@@ -2591,7 +2694,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    vec3 eye = rblInstancing[0].xyz;\n",
     "    int code = int(rblInstancing[0].w + 0.5);\n",
     "    vec3 r, u, n;\n",
-    "    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
+    "    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
     "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
     "    // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the\n",
     "    // axis (rbl__billboardVertices)\n",
@@ -2931,6 +3034,48 @@ static const char *const rbl__shader_output[] = {
     "#endif\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_scene_composite_fs[] = {
+    "// The opaque world drawn between RblBeginSceneDepth and RblEndSceneDepth, shown on the caller's target\n",
+    "// with its depth, so later draws are depth tested against it (soft particles also read that depth as a\n",
+    "// texture). Where nothing was drawn the caller's target shows through. GLSL ES 1.00 writes depth only\n",
+    "// with EXT_frag_depth (the loader enables it where it exists).\n",
+    "#include \"dialect.glsl\"\n",
+    "\n",
+    "uniform sampler2D texture0;             // the scene target's colour\n",
+    "uniform sampler2D rblSceneDepthMap;     // its depth\n",
+    "RBL_VARYING vec2 fragUv;\n",
+    "#if RBL_GLSL >= 300\n",
+    "out vec4 finalColor;\n",
+    "#else\n",
+    "#define finalColor gl_FragColor\n",
+    "#endif\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    float depth = texture(rblSceneDepthMap, fragUv).r;\n",
+    "    if (depth >= 1.0) discard;\n",
+    "    finalColor = vec4(texture(texture0, fragUv).rgb, 1.0);\n",
+    "#if RBL_GLSL >= 120\n",
+    "    gl_FragDepth = depth;\n",
+    "#elif defined(GL_EXT_frag_depth)\n",
+    "    gl_FragDepthEXT = depth;\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_scene_composite_vs[] = {
+    "// Full-screen triangle from a vertex buffer (GLSL 1 has no gl_VertexID): RblEndSceneDepth shows the\n",
+    "// scene target on the caller's target. Pairs with scene_composite.fs.glsl.\n",
+    "#include \"dialect.glsl\"\n",
+    "\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;      // (-1,-1) (3,-1) (-1,3)\n",
+    "RBL_VARYING vec2 fragUv;                // scene target coordinate of this pixel (0..1)\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    fragUv = vertexPosition.xy*0.5 + 0.5;\n",
+    "    gl_Position = vec4(vertexPosition.xy, 0.0, 1.0);\n",
+    "}\n",
+    NULL };
 static const char *const rbl__shader_shadow_caster_fs[] = {
     "// Shadow pass, fragment stage. The alpha test is the colour pass's own (albedo x colDiffuse x vertex\n",
     "// colour against the material's cutoff): a sprite's silhouette casts the shadow, not its quad.\n",
@@ -3234,6 +3379,8 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
     { "output.glsl", rbl__shader_output },
+    { "scene_composite.fs.glsl", rbl__shader_scene_composite_fs },
+    { "scene_composite.vs.glsl", rbl__shader_scene_composite_vs },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
     { "shadows.glsl", rbl__shader_shadows },
     { "skinning.glsl", rbl__shader_skinning },
@@ -3245,23 +3392,27 @@ static const struct { const char *file; const char *const *source; } rbl__shader
 static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialect, rbl__shader_fullscreen_vs, NULL };
 static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_skinning, rbl__shader_lit_vs, NULL };
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
+static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
 static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
 static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
 static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
 static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
     { "lit_instanced.vs.glsl", rbl__pass_lit_instanced_vs },
+    { "scene_composite.vs.glsl", rbl__pass_scene_composite_vs },
     { "volume.vs.glsl", rbl__pass_volume_vs },
     { "deferred_fullscreen.fs.glsl", rbl__pass_deferred_fullscreen_fs },
     { "deferred_resolve.fs.glsl", rbl__pass_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__pass_deferred_volume_fs },
     { "gbuffer.fs.glsl", rbl__pass_gbuffer_fs },
     { "lit.fs.glsl", rbl__pass_lit_fs },
+    { "scene_composite.fs.glsl", rbl__pass_scene_composite_fs },
     { "shadow_caster.fs.glsl", rbl__pass_shadow_caster_fs },
 };
 // RBL-SHADERS-END
@@ -3305,6 +3456,8 @@ static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsB
 // Instance floats and any rotation: values of 2^120 (1.3e36, exponent field 127 + 120) or more could
 // overflow float once the GPU combines them: rejected like NaN
 #define RBL__INSTANCE_LIMIT_EXPONENT 247u
+// CAMERA_PLANE's caller up, whose length scales the quad's height (as raylib's): below 2^30
+#define RBL__UP_LIMIT_EXPONENT 157u
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
@@ -3351,15 +3504,36 @@ static Matrix rbl__identity(void)
 // Back to framebuffer fbo with a viewport covering it. rlgl's framebuffer size is the last render
 // texture's after EndTextureMode (raylib does not reset it), so the screen's size comes from the
 // window when there is one (headless rlglInit contexts have none: rlgl's size is the screen's there)
+// The framebuffer draws go to now. raylib 6.0's rlGetActiveFramebuffer asks for the ES 3 name of
+// the binding and answers 0 on ES 2 / WebGL1: there GL is asked for the ES 2 one
+typedef void (RBL__GLAPI *rbl__GlGetIntegerv)(unsigned int pname, int *data);
+static unsigned int rbl__activeFramebuffer(void)
+{
+    if ((rbl__glsl() != 100) || (rlGetTextureIdDefault() == 0)) return rlGetActiveFramebuffer();
+    void *proc = rlGetProcAddress("glGetIntegerv");
+    if (proc == NULL) return 0;
+    rbl__GlGetIntegerv get;
+    memcpy(&get, &proc, sizeof(get));
+    int fbo = 0;
+    get(0x8CA6 /* GL_FRAMEBUFFER_BINDING */, &fbo);
+    return (fbo > 0)? (unsigned int)fbo : 0u;
+}
+
+// Size of the target draws go to now: inside BeginTextureMode rlgl's framebuffer size (the
+// texture's); on the screen raylib's render size (rlgl keeps the last texture's after EndTextureMode
+// and never hears of window resizes), or rlgl's where there is no raylib window (headless contexts)
+static void rbl__targetSize(unsigned int fbo, int *w, int *h)
+{
+    *w = rlGetFramebufferWidth(); *h = rlGetFramebufferHeight();
+    if ((fbo == 0) && (GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { *w = GetRenderWidth(); *h = GetRenderHeight(); }
+}
+
 static void rbl__restoreTarget(unsigned int fbo)
 {
-    int w = rlGetFramebufferWidth(), h = rlGetFramebufferHeight();
-    if (fbo != 0) rlEnableFramebuffer(fbo);     // inside BeginTextureMode: rlgl's size is that texture's
-    else
-    {
-        rlDisableFramebuffer();
-        if ((GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { w = GetRenderWidth(); h = GetRenderHeight(); }
-    }
+    int w, h;
+    rbl__targetSize(fbo, &w, &h);
+    if (fbo != 0) rlEnableFramebuffer(fbo);
+    else rlDisableFramebuffer();
     rlViewport(0, 0, w, h);
 }
 
@@ -3508,6 +3682,7 @@ static RblCameraFrame rbl__cameraFrame(Camera3D camera)
     view.right = rbl__v3((float)r[0], (float)r[1], (float)r[2]);
     view.up = rbl__v3((float)(b[1]*r[2] - b[2]*r[1]), (float)(b[2]*r[0] - b[0]*r[2]), (float)(b[0]*r[1] - b[1]*r[0]));
     view.back = rbl__v3((float)b[0], (float)b[1], (float)b[2]);
+    view.orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     return view;
 }
 
@@ -3516,7 +3691,7 @@ RblCameraFrame RblGetCameraFrame(Camera3D camera)
     if (!rbl__cameraOk(camera))
     {
         TraceLog(LOG_WARNING, "RBL: RblGetCameraFrame: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection; identity frame returned");
-        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f } };
+        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f }, false };
         return view;
     }
     return rbl__cameraFrame(camera);
@@ -3544,6 +3719,18 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
     memcpy(cosOut, &rc, sizeof(rc));
 }
 
+// A caller's direction (FIXED up and normal, AXIS axis) from any finite vector: a long one is scaled
+// by a power of two (exact) so its squared length cannot overflow; short ones are left (shorter than
+// 1e-12 counts as zero)
+static inline Vector3 rbl__tame(Vector3 v)
+{
+    float m = fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
+    if (!(m > 1e12f)) return v;
+    int e;
+    frexpf(m, &e);
+    return rbl__v3(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
+}
+
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
 // takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
 // (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
@@ -3552,8 +3739,7 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 {
     Vector3 r = view->right, u = view->up, n = view->back;
     Vector3 axis = r, v = u, f = u, a = rbl__v3(0.0f, 1.0f, 0.0f);
-    // Toward the eye; a directional light's light-facing casters look along the light (its camera's eye is a point)
-    Vector3 toEye = ((cast != NULL) && cast->parallel)? view->back : rbl__sub(view->eye, b->position);
+    Vector3 toEye = view->orthographic? view->back : rbl__sub(view->eye, b->position);     // a parallel view's eye is at infinity (a directional light's too)
     bool own = true;        // false: CAMERA_PLANE without an up, CAMERA_POSITION at the eye (the view's frame)
     switch (b->facing)
     {
@@ -3565,7 +3751,8 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         // up off the axis where the view looks along it (up and back are never both near it)
         case RBL_FACING_AXIS:
         {
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);    // shorter counts as zero (a GPU may flush it)
+            Vector3 given = rbl__tame(b->axis);
+            if (rbl__len2(given) > 1e-24f) rbl__normalizeTo(given, &a);    // shorter counts as zero (a GPU may flush it)
             Vector3 q;
             float wb = rbl__offAxis(view->back, a, &q);
             axis = a; v = toEye; f = rbl__blendOffAxis(q, wb, view->up, a);
@@ -3573,9 +3760,10 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         // up off the normal, toward the normal's fallback up
         case RBL_FACING_FIXED:
         {
+            Vector3 normal = rbl__tame(b->axis), up = rbl__tame(b->up);
             axis = rbl__v3(0.0f, 0.0f, 1.0f);
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &axis);
-            v = (rbl__len2(b->up) > 1e-24f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
+            if (rbl__len2(normal) > 1e-24f) rbl__normalizeTo(normal, &axis);
+            v = (rbl__len2(up) > 1e-24f)? up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
         } break;
         default: own = false; break;
     }
@@ -3702,6 +3890,8 @@ static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textur
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
     if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
         !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
+    if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
     return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__fadeOk(&b->fade, RBL__BILLBOARD_LIMIT_EXPONENT);
 }
 
@@ -3927,6 +4117,10 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
+static void rbl__removeProgram(rbl__Program *p);
+static void rbl__noteDroppedShadow(void);
+static void rbl__markDrawn(const rbl__Program *p);
+static void rbl__releaseCapture(void);
 
 static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
@@ -3956,6 +4150,7 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
+    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
@@ -3997,10 +4192,19 @@ static unsigned int rbl__casterId(Vector3 pivot, Vector2 size, Vector2 origin)
 
 static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
 
+// The pass in progress: the shadow map's or G-buffer's id, 0 for a colour pass. A batch collects for
+// one pass (its frame and programs are that pass's)
+static unsigned int rbl__passNow(void)
+{
+    if (rbl__state.shadowPass != NULL) return rbl__state.shadowPass->id;
+    if (rbl__state.gbufferPass != NULL) return rbl__state.gbufferPass->id;
+    return 0;
+}
+
 // The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
 static rbl__BatchState *rbl__batchState(const RblBatch *batch)
 {
-    return ((batch != NULL) && rbl__isLive(batch->state))? batch->state : NULL;
+    return ((batch != NULL) && rbl__isLive(batch->id, batch->state))? batch->state : NULL;
 }
 
 static void rbl__freeBatchState(rbl__BatchState *b)
@@ -4038,7 +4242,8 @@ RblBatch RblLoadBatch(int capacity)
     }
     b->capacity = capacity;
     rbl__loadBatchGpu(b);
-    if ((b->vaoId == 0) || (b->vboId == 0) || (b->eboId == 0) || !rbl__liveAdd(b))
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0) && (b->eboId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadBatch: GPU buffers could not be created (no GL context?)");
         rbl__freeBatchState(b);
@@ -4046,6 +4251,7 @@ RblBatch RblLoadBatch(int capacity)
     }
     batch.capacity = capacity;
     batch.state = b;
+    batch.id = id;
     return batch;
 }
 
@@ -4056,10 +4262,11 @@ bool RblIsBatchValid(RblBatch batch)
 
 void RblUnloadBatch(RblBatch *batch)
 {
-    if (!rbl__unloadable(batch, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
-    rbl__liveRemove(batch->state);
+    if (!rbl__unloadable(batch, (batch != NULL)? batch->id : 0, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
+    rbl__liveRemove(batch->id);
     rbl__freeBatchState(batch->state);
     memset(batch, 0, sizeof(*batch));
+    if (batch != &rbl__state.immediate) rbl__tidyAfterClose();
 }
 
 bool RblBeginBatch(RblBatch *pub, Camera3D camera)
@@ -4083,14 +4290,15 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->runCount = 0;
     batch->skipped = 0;
     batch->begun = true;
+    batch->pass = rbl__passNow();
     pub->count = 0; pub->skipped = 0;
     return true;
 }
 
+// Whether b continues a's run: compares pointers before reading a's maps (b's are the same array)
 static bool rbl__sameMaterial(const Material *a, const Material *b)
 {
-    if ((a->shader.id != b->shader.id) || (a->maps != b->maps)) return false;
-    if (a->maps == NULL) return true;
+    if ((a->shader.id != b->shader.id) || (a->shader.locs != b->shader.locs) || (a->maps != b->maps) || (a->maps == NULL)) return false;
     return (a->maps[MATERIAL_MAP_ALBEDO].texture.id == b->maps[MATERIAL_MAP_ALBEDO].texture.id) &&
            (a->maps[MATERIAL_MAP_METALNESS].texture.id == b->maps[MATERIAL_MAP_METALNESS].texture.id) &&
            (a->maps[MATERIAL_MAP_NORMAL].texture.id == b->maps[MATERIAL_MAP_NORMAL].texture.id) &&
@@ -4125,7 +4333,12 @@ static bool rbl__growBatch(rbl__BatchState *batch)
 bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return false; }
+    if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+                 "the batch began in another pass (shadow map, G-buffer or colour): add and end it in the pass it began in");
+        return false;
+    }
     bool added = rbl__batchAdd(batch, material, billboard, "RblBatchAdd");
     pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
     return added;
@@ -4139,12 +4352,12 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         return false;
     }
 
-    int texW, texH;
-    rbl__albedoSize(&material, &texW, &texH);
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
     rbl__Program *program = NULL;
     const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
+    int texW = 1, texH = 1;
+    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);       // the maps are read once the shader is known live
     if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
         bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL)
@@ -4224,11 +4437,6 @@ static unsigned int rbl__bindMaterial(const Material *material)
     if (sh.locs[SHADER_LOC_MATRIX_NORMAL] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_NORMAL], rbl__identity());
     if (sh.locs[SHADER_LOC_MATRIX_VIEW] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_VIEW], view);
     if (sh.locs[SHADER_LOC_MATRIX_PROJECTION] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_PROJECTION], proj);
-    if (material->maps == NULL)
-    {
-        rlActiveTextureSlot(0); rlEnableTexture(rlGetTextureIdDefault());
-        return 1u;
-    }
     if (sh.locs[SHADER_LOC_COLOR_DIFFUSE] != -1)
     {
         Color c = material->maps[MATERIAL_MAP_ALBEDO].color;
@@ -4421,6 +4629,7 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         rlSetUniform(program->loc[RBL__U_CASTER_ID_ON], &off, SHADER_UNIFORM_FLOAT, 1);
         if (idLoc >= 0) rlDisableVertexAttribute((unsigned int)idLoc);
     }
+    if (program != NULL) rbl__markDrawn(program);
 }
 
 // One pass over the uploaded quads: the runs in order, or (sorted) each stretch of consecutive
@@ -4440,7 +4649,12 @@ static void rbl__drawBatchPass(const rbl__BatchState *batch, bool sorted, const 
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return; }
+    if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+                 "the batch began in another pass (shadow map, G-buffer or colour): end it in the pass it began in");
+        return;
+    }
     batch->begun = false;
     if ((pub->sort < RBL_SORT_NONE) || (pub->sort > RBL_SORT_HYBRID) || !rbl__finite(pub->solidAlpha) || (pub->solidAlpha < 0.0f) || (pub->solidAlpha > 1.0f))
     {
@@ -4526,10 +4740,10 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     RblBatch *immediate = &rbl__state.immediate;
     // Everything is checked before the one-quad batch is touched (or created on first use)
     rbl__Program *program = NULL;
-    int texW, texH;
-    rbl__albedoSize(&material, &texW, &texH);
+    int texW = 1, texH = 1;
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
                       rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program);
+    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);
     if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
     if (immediate->state == NULL)
@@ -4542,23 +4756,39 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     rbl__endBatch(immediate, "RblDrawBillboard");
 }
 
+// After RblClose, the module's tables go with the last object the caller still holds (nothing loaded
+// and no lit program left): the next load starts afresh
+static void rbl__tidyAfterClose(void)
+{
+    if (!rbl__state.closed || (rbl__state.programCount > 0)) return;
+    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i].id != 0) return;
+    for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
+    RBL_FREE(rbl__state.quarantine);
+    RBL_FREE(rbl__state.dead);
+    RBL_FREE(rbl__state.programs);
+    RBL_FREE(rbl__state.live);
+    memset(&rbl__state, 0, sizeof(rbl__state));
+}
+
 void RblClose(void)
 {
+    // The header's own resources go now (GL objects only while a context exists); what the caller
+    // holds (batches, instance buffers, G-buffers, shadow maps) stays valid until its own unload, before
+    // or after this, before or after CloseWindow
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
-    // Programs still held: deleted with their holders' locations (call RblClose after your own
-    // UnloadMaterial/RblUnloadLitShader calls: a Shader unloaded afterwards would be freed twice)
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-    {
-        rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs == 0) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
-        UnloadShader(p->shader);
-    }
-    for (int i = 0; i < rbl__state.handleCount; i++) MemFree(rbl__state.handles[i].locs);
-    RBL_FREE(rbl__state.handles);
-    RBL_FREE((void *)rbl__state.live);
+    rbl__releaseCapture();
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
-    memset(&rbl__state, 0, sizeof(rbl__state));
+    memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
+    // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
+    // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
+    for (int i = rbl__state.programCount - 1; i >= 0; i--)
+        if (rbl__state.programs[i]->key.kind == RBL__KIND_LIT) rbl__removeProgram(rbl__state.programs[i]);
+    for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
+    RBL_FREE(rbl__state.quarantine); RBL_FREE(rbl__state.dead);
+    rbl__state.quarantine = NULL; rbl__state.dead = NULL;
+    rbl__state.quarantineCount = rbl__state.quarantineCapacity = rbl__state.deadCount = rbl__state.deadCapacity = 0;
+    rbl__state.closed = true;
+    rbl__tidyAfterClose();
 }
 
 //----------------------------------------------------------------------------------
@@ -4585,6 +4815,7 @@ static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
 
 static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 {
+    if (!rbl__glUsable()) b->vaoId = b->vboId = b->fadeVboId = 0;        // gone with the context
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
     if (b->fadeVboId != 0) rlUnloadVertexBuffer(b->fadeVboId);
@@ -4598,7 +4829,7 @@ static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 // The state of a loaded instance buffer, or NULL (never dereferences a stale copy's pointer)
 static rbl__InstanceBufferState *rbl__instanceState(const RblInstanceBuffer *buffer)
 {
-    return ((buffer != NULL) && rbl__isLive(buffer->state))? buffer->state : NULL;
+    return ((buffer != NULL) && rbl__isLive(buffer->id, buffer->state))? buffer->state : NULL;
 }
 
 RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
@@ -4618,7 +4849,8 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     }
     b->capacity = capacity;
     rbl__loadInstanceGpu(b);
-    if ((b->vaoId == 0) || (b->vboId == 0) || !rbl__liveAdd(b))
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: GPU buffers could not be created (no GL context?)");
         rbl__freeInstanceState(b);
@@ -4626,6 +4858,7 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     }
     buffer.capacity = capacity;
     buffer.state = b;
+    buffer.id = id;
     return buffer;
 }
 
@@ -4636,10 +4869,11 @@ bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
 
 void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
 {
-    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
-    rbl__liveRemove(buffer->state);
+    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->id : 0, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
+    rbl__liveRemove(buffer->id);
     rbl__freeInstanceState(buffer->state);
     memset(buffer, 0, sizeof(*buffer));
+    rbl__tidyAfterClose();
 }
 
 // The 12 floats (position .. source) hold no NaN, Inf or |value| >= 2^120
@@ -4735,11 +4969,15 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID))
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID) ||
+        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
     {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i or NaN/Inf vectors)", desc.facing, desc.sort);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i, NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
         return 0;
     }
+    // Directions only (FIXED up and normal, AXIS axis): long ones scaled, as the CPU does
+    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
+    desc.axis = rbl__tame(desc.axis);
     rbl__Program *checked = NULL;
     const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
@@ -4844,12 +5082,12 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     RblCameraFrame view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     const float frame[28] = {
-        view.eye.x, view.eye.y, view.eye.z, (float)(desc.facing + (rbl__state.cast.parallel? 4 : 0) + (rbl__state.cast.faceLight? 8 : 0)),
+        view.eye.x, view.eye.y, view.eye.z, (float)(desc.facing + (rbl__state.cast.faceLight? 8 : 0)),
         view.right.x, view.right.y, view.right.z, desc.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
         desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
-        desc.axis.x, desc.axis.y, desc.axis.z, (camera.projection == CAMERA_ORTHOGRAPHIC)? 1.0f : 0.0f,
+        desc.axis.x, desc.axis.y, desc.axis.z, view.orthographic? 1.0f : 0.0f,
         rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
     // Quads seen from behind are drawn, as in the batch: culling off for this draw only
     bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
@@ -4876,6 +5114,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rlDrawVertexArrayInstanced(0, 6, n);
+    rbl__markDrawn(program);
     if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -6176,57 +6415,175 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 //----------------------------------------------------------------------------------
 // Module Internal Functions: the program registry
 //----------------------------------------------------------------------------------
-// Every program the header compiles is one registry entry, keyed by what changes the code; raylib's
-// UnloadShader (as UnloadMaterial calls it) may delete a lit program behind the registry's back, so
-// entries handed to users are checked before use (a deleted or reused id no longer answers with the
-// registry's location of rblAlphaCutoff, which every lit and caster variant declares)
+// Every program the header compiles is one registry entry, keyed by what changes the code. Lit
+// programs go out one per RblLoadLitShader call, each its own GL program, so raylib's UnloadShader
+// or UnloadMaterial on one copy deletes that program alone (as with raylib's LoadShader); casters
+// and G-buffer passes are the header's own, shared by key among their holders. raylib may delete a
+// lit program behind the registry's back: an entry is checked against GL before a draw uses it.
+
+// GL name queries rlgl does not wrap, through raylib's loader (desktop, ES and WebGL all have them)
+typedef unsigned char (RBL__GLAPI *rbl__GlIsName)(unsigned int name);
+enum { RBL__GL_PROGRAM = 0, RBL__GL_TEXTURE, RBL__GL_VERTEX_ARRAY, RBL__GL_QUERIES };
+
+// Whether name is a live GL object of that kind; true where the loader gives no query (cannot tell)
+static bool rbl__glIsLive(int which, unsigned int name)
+{
+    if (name == 0) return false;
+    if (!rbl__glUsable()) return true;          // no context to ask
+    // rlGetProcAddress calls raylib's loader, which exists once rlgl is up (its default texture made)
+    if (!rbl__state.glLooked && (rbl__glsl() != 0) && (rlGetTextureIdDefault() != 0))
+    {
+        rbl__state.glIs[RBL__GL_PROGRAM] = rlGetProcAddress("glIsProgram");
+        rbl__state.glIs[RBL__GL_TEXTURE] = rlGetProcAddress("glIsTexture");
+        rbl__state.glIs[RBL__GL_VERTEX_ARRAY] = (rbl__glsl() >= 300)? rlGetProcAddress("glIsVertexArray") : NULL;
+        rbl__state.glGetUniformfv = rlGetProcAddress("glGetUniformfv");
+        rbl__state.glLooked = true;
+    }
+    if (rbl__state.glIs[which] == NULL) return true;
+    rbl__GlIsName is;
+    memcpy(&is, &rbl__state.glIs[which], sizeof(is));       // ISO C: no cast between object and function pointers
+    return is(name) != 0;
+}
+
+// A lit program is live while GL still has it as the header compiled it: a deleted id, or one GL
+// gave to another program since, no longer answers with the registry's location of rblAlphaCutoff
+// (every lit and caster variant declares it). Casters and passes never leave the header.
 static bool rbl__programAlive(const rbl__Program *p)
 {
-    if (p->key.kind == RBL__KIND_PASS) return true;         // never handed out
-    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
+    if ((p->key.kind != RBL__KIND_LIT) || !rbl__glUsable()) return true;     // no context: nothing to ask
+    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && rbl__glIsLive(RBL__GL_PROGRAM, p->shader.id) &&
+           (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
 }
 
-// Forget handles of program id (their locs were freed with it, or belong to holders who unload them)
-static void rbl__dropHandles(unsigned int id)
+// raylib's DrawModel/DrawMesh upload a lit program's colDiffuse, matrices and textures, none of the
+// header's material values. Each header draw leaves a sentinel in the program's mvp (raylib's draws
+// always overwrite it) and the next header use reads it back: anything else means raylib drew with
+// the program since, with the values the last header draw left (said once a program)
+typedef void (RBL__GLAPI *rbl__GlGetUniformfv)(unsigned int program, int location, float *params);
+static Matrix rbl__mvpSentinel(void)
 {
-    int n = 0;
-    for (int i = 0; i < rbl__state.handleCount; i++) if (rbl__state.handles[i].id != id) rbl__state.handles[n++] = rbl__state.handles[i];
-    rbl__state.handleCount = n;
+    Matrix m;
+    memset(&m, 0, sizeof(m));
+    m.m15 = -8.125f;
+    return m;
 }
 
-// A program deleted outside the header: its entry goes (the GL name is not deleted again)
+// After a header draw with p (bound): the sentinel
+static void rbl__markDrawn(const rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind == RBL__KIND_LIT) && !p->raylibNoted && (loc != -1)) rlSetUniformMatrix(loc, rbl__mvpSentinel());
+}
+
+// Before a header use of p: whether raylib drew with it since the last header draw
+static void rbl__checkRaylibDrew(rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind != RBL__KIND_LIT) || p->raylibNoted || (loc == -1) || (rbl__state.glGetUniformfv == NULL) || !rbl__glUsable()) return;
+    rbl__GlGetUniformfv get;
+    memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
+    float m[16];
+    get(p->shader.id, loc, m);
+    bool sentinel = (m[15] == -8.125f);
+    for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
+    if (sentinel) return;
+    TraceLog(LOG_WARNING, "RBL: lit program %u was drawn by raylib's DrawModel/DrawMesh, which uploads colDiffuse, matrices and textures only: "
+                          "roughness, metalness, shininess, specular, emission and alpha cutoff were the last header draw's (draw Models with RblDrawModel/RblDrawMesh)", p->shader.id);
+    p->raylibNoted = true;
+}
+
+static bool rbl__buried(unsigned int id, const int *locs)
+{
+    for (int i = 0; i < rbl__state.deadCount; i++) if ((rbl__state.dead[i].id == id) && (rbl__state.dead[i].locs == locs)) return true;
+    return false;
+}
+
+// Remembers a dead handle so its copies are refused (out of memory: forgotten, the GL probe remains)
+static void rbl__bury(unsigned int id, const int *locs)
+{
+    if (rbl__buried(id, locs)) return;
+    if (rbl__state.deadCount == rbl__state.deadCapacity)
+    {
+        int capacity = (rbl__state.deadCapacity > 0)? rbl__state.deadCapacity*2 : 16;
+        rbl__DeadHandle *dead = (rbl__DeadHandle *)RBL_REALLOC(rbl__state.dead, (size_t)capacity*sizeof(rbl__DeadHandle));
+        if (dead == NULL) return;
+        rbl__state.dead = dead;
+        rbl__state.deadCapacity = capacity;
+    }
+    rbl__state.dead[rbl__state.deadCount].id = id;
+    rbl__state.dead[rbl__state.deadCount].locs = locs;
+    rbl__state.deadCount++;
+}
+
+// Takes entry p (allocated) out of the registry and frees it and its registry locs
+static void rbl__removeProgram(rbl__Program *p)
+{
+    for (int i = 0; i < rbl__state.programCount; i++)
+    {
+        if (rbl__state.programs[i] != p) continue;
+        rbl__state.programs[i] = rbl__state.programs[--rbl__state.programCount];
+        break;
+    }
+    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
+    RBL_FREE(p);
+}
+
+// A lit program deleted outside the header (raylib's UnloadShader or UnloadMaterial: allowed): its
+// entry goes, its handle is remembered as dead, the GL name is not deleted again
 static void rbl__forgetProgram(rbl__Program *p)
 {
-    TraceLog(LOG_INFO, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
-    rbl__dropHandles(p->shader.id);
-    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
-    memset(p, 0, sizeof(*p));
+    TraceLog(LOG_DEBUG, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
+    if (p->key.kind == RBL__KIND_LIT) rbl__bury(p->shader.id, p->handleLocs);
+    rbl__removeProgram(p);
 }
 
-// Registered lit program id (kind LIT), or NULL. probe: also ask GL that it is still the header's
-// program (loads, scenes and validity checks; draws skip the query, a GL round trip each: a program
-// deleted by raylib's UnloadMaterial went with that Material, and the next load or scene notices)
-static rbl__Program *rbl__findLit(unsigned int id, bool probe)
+// Registered lit program id, or NULL (not checked against GL: rbl__resolveShader does that)
+static rbl__Program *rbl__findLit(unsigned int id)
 {
-    if (id == 0) return NULL;
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; (id != 0) && (i < rbl__state.programCount); i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != RBL__KIND_LIT)) continue;
-        if (probe && !rbl__programAlive(p)) { rbl__forgetProgram(p); return NULL; }
-        return p;
+        rbl__Program *p = rbl__state.programs[i];
+        if ((p->shader.id == id) && (p->key.kind == RBL__KIND_LIT)) return p;
     }
+    return NULL;
+}
+
+// What a Material's shader is to the header: one of its live lit programs (*program), another live
+// program (the caller's own, drawn as raylib would: *program NULL), or not drawable (the reason).
+// Only the Shader's id and locs pointer are compared: a lit program's locs are the registry's.
+static const char *rbl__resolveShader(Shader shader, rbl__Program **program)
+{
+    *program = NULL;
+    if (shader.id == 0) return "the material has no shader (id 0: a zero Material, or a lit program that failed to load or was unloaded)";
+    rbl__Program *p = rbl__findLit(shader.id);
+    if ((p != NULL) && !rbl__programAlive(p)) { rbl__forgetProgram(p); p = NULL; }
+    if (p != NULL)
+    {
+        if (p->handleLocs == shader.locs) { *program = p; return NULL; }
+        return "the shader carries a live lit program's id but not its handle (a stale copy, or a Shader assembled by hand)";
+    }
+    if (rbl__buried(shader.id, shader.locs)) return "a stale copy of a lit shader unloaded earlier (RblUnloadLitShader, UnloadShader or UnloadMaterial)";
+    if (!rbl__glIsLive(RBL__GL_PROGRAM, shader.id)) return "the shader's program does not exist (unloaded?)";
+    if (shader.locs == NULL) return "the shader has no locations (locs NULL)";
     return NULL;
 }
 
 static void rbl__uploadScene(rbl__Program *p);
 
-// Compile a program for key into a free registry slot; NULL (logged) on failure
+// Compile a program for key into a new registry entry; NULL (problem set) on failure
 static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
 {
-    int slot = -1;
-    for (int i = 0; (i < RBL_SHADER_CACHE_SIZE) && (slot < 0); i++) if (rbl__state.programs[i].refs == 0) slot = i;
-    if (slot < 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (rbl__state.programCount >= RBL_SHADER_CACHE_SIZE) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (rbl__state.programCount == rbl__state.programCapacity)
+    {
+        int capacity = (rbl__state.programCapacity > 0)? rbl__state.programCapacity*2 : 16;
+        rbl__Program **programs = (rbl__Program **)RBL_REALLOC(rbl__state.programs, (size_t)capacity*sizeof(rbl__Program *));
+        if (programs == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
+        rbl__state.programs = programs;
+        rbl__state.programCapacity = capacity;
+    }
+    rbl__Program *p = (rbl__Program *)RBL_CALLOC(1, sizeof(rbl__Program));
+    if (p == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
@@ -6234,9 +6591,11 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
-    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) return NULL;
+    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
-    if (key->kind == RBL__KIND_PASS)
+    if (key->kind == RBL__KIND_COMPOSITE)
+        shader = rbl__loadShaderVariant(rbl__pass_scene_composite_vs, rbl__pass_scene_composite_fs, (rbl__glsl() == 100)? "#extension GL_EXT_frag_depth : enable\n" : "");
+    else if (key->kind == RBL__KIND_PASS)
     {
         static const char *const *const *const vs[RBL__PASS_COUNT] = { rbl__pass_fullscreen_vs, rbl__pass_volume_vs, rbl__pass_fullscreen_vs, rbl__pass_fullscreen_vs, rbl__pass_volume_vs };
         static const char *const *const *const fs[RBL__PASS_COUNT] = { rbl__pass_deferred_fullscreen_fs, rbl__pass_deferred_volume_fs, rbl__pass_deferred_resolve_fs,
@@ -6253,14 +6612,14 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
         const char *const *const *fs = (key->kind == RBL__KIND_CASTER)? rbl__pass_shadow_caster_fs : (d->deferred? rbl__pass_gbuffer_fs : rbl__pass_lit_fs);
         shader = rbl__loadShaderVariant(d->instanced? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs, fs, defines);
     }
-    if (shader.id == 0) return NULL;
+    if (shader.id == 0) { RBL_FREE(p); return NULL; }
     // GL hands out the names of deleted programs again: an entry still holding this id was deleted
     // outside the header
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == shader.id)) rbl__forgetProgram(&rbl__state.programs[i]);
+    for (int i = 0; i < rbl__state.programCount; i++)
+        if (rbl__state.programs[i]->shader.id == shader.id) { rbl__forgetProgram(rbl__state.programs[i]); i--; }
 
-    rbl__Program *p = &rbl__state.programs[slot];
-    memset(p, 0, sizeof(*p));
+    rbl__state.programs[rbl__state.programCount++] = p;
+    rbl__state.closed = false;      // used again after RblClose
     p->key = *key;
     p->shader = shader;
     // Samplers exist only where the layout uses them (-1 otherwise), so nothing absent is bound
@@ -6276,10 +6635,6 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
-    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
-    // cut: the alpha band's ceiling is above every alpha
-    float band[2] = { 0.0f, 2.0f };
-    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     if (d->softParticles)
     {
         int unit = RBL_SCENE_DEPTH_TEXTURE_UNIT;
@@ -6296,39 +6651,51 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     }
     int none[4] = { -1, -1, -1, -1 };
     if (p->loc[RBL__U_SHADOW_LIGHT] != -1) rlSetUniform(p->loc[RBL__U_SHADOW_LIGHT], none, SHADER_UNIFORM_IVEC4, 1);
+    rbl__markDrawn(p);
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
+    // A default Material's values (its zero fields), so raylib's DrawModel of such materials draws as
+    // the header's own draws would
+    if ((key->kind == RBL__KIND_LIT) || (key->kind == RBL__KIND_CASTER))
+    {
+        MaterialMap defaults[RBL__RAYLIB_MATERIAL_MAPS];
+        Material none;
+        memset(defaults, 0, sizeof(defaults));
+        memset(&none, 0, sizeof(none));
+        none.maps = defaults;
+        rbl__applyMaterialValues(p, &none);
+    }
     rlDisableShader();
     rbl__uploadScene(p);            // a program loaded mid-frame draws with the current scene
     return p;
 }
 
-// Entry for key: the registry's (one more holder) or a new compile; NULL (logged) on failure
+// The header's own program for key (casters, passes): the registry's (one more holder) or a new
+// compile; NULL (problem set) on failure
 static rbl__Program *rbl__acquireProgram(const rbl__ProgramKey *key)
 {
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (memcmp(&p->key, key, sizeof(*key)) != 0)) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); break; }
+        rbl__Program *p = rbl__state.programs[i];
+        if (memcmp(&p->key, key, sizeof(*key)) != 0) continue;
         p->refs++;
         return p;
     }
     return rbl__compileProgram(key);
 }
 
-// One holder fewer; the last one deletes the program
+// One holder fewer of a caster or pass; the last one deletes the program
 static void rbl__releaseProgram(unsigned int id, int kind)
 {
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != kind)) continue;
+        rbl__Program *p = rbl__state.programs[i];
+        if ((p->shader.id != id) || (p->key.kind != kind)) continue;
         if (--p->refs == 0)
         {
-            UnloadShader(p->shader);
-            memset(p, 0, sizeof(*p));
+            if (rbl__glUsable()) rlUnloadShaderProgram(p->shader.id);
+            rbl__removeProgram(p);
         }
         return;
     }
@@ -6352,61 +6719,78 @@ Shader RblLoadLitShader(RblLitShaderDesc desc)
     RblLitShaderDesc normalised;
     const char *bad = rbl__normaliseLitDesc(desc, &normalised);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad); return none; }
-    if (rbl__state.handleCount == rbl__state.handleCapacity)
-    {
-        int capacity = (rbl__state.handleCapacity > 0)? rbl__state.handleCapacity*2 : 16;
-        rbl__Handle *handles = (rbl__Handle *)RBL_REALLOC(rbl__state.handles, (size_t)capacity*sizeof(rbl__Handle));
-        if (handles == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
-        rbl__state.handles = handles;
-        rbl__state.handleCapacity = capacity;
-    }
-    // The holder's own copy of the locations: raylib's UnloadShader frees a Shader's locs, so no two
-    // holders may share one array (raylib's allocator, since raylib frees it)
-    int *locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
-    if (locs == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
     rbl__ProgramKey key;
     rbl__keyFromDesc(&normalised, RBL__KIND_LIT, 0, &key);
-    rbl__Program *p = rbl__acquireProgram(&key);
-    if (p == NULL) { MemFree(locs); TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
+    rbl__Program *p = rbl__compileProgram(&key);
+    if (p == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
+    // The holder's own copy of the locations (raylib's UnloadShader frees a Shader's locs: raylib's
+    // allocator). An address a dead handle of this id had is skipped, so its stale copies stay stale.
+    int *locs = NULL, *spare[8];
+    int spares = 0;
+    while (spares < 8)
+    {
+        locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
+        if ((locs == NULL) || !rbl__buried(p->shader.id, locs)) break;
+        spare[spares++] = locs;
+        locs = NULL;
+    }
+    for (int i = 0; i < spares; i++) MemFree(spare[i]);
+    if (locs == NULL)
+    {
+        rlUnloadShaderProgram(p->shader.id);
+        rbl__removeProgram(p);
+        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory");
+        return none;
+    }
     memcpy(locs, p->shader.locs, RL_MAX_SHADER_LOCATIONS*sizeof(int));
-    rbl__state.handles[rbl__state.handleCount].locs = locs;
-    rbl__state.handles[rbl__state.handleCount].id = p->shader.id;
-    rbl__state.handleCount++;
+    p->handleLocs = locs;
     Shader shader;
     shader.id = p->shader.id;
     shader.locs = locs;
     return shader;
 }
 
-// Index of the live handle shader is, or -1
-static int rbl__findHandle(Shader shader)
-{
-    if ((shader.id == 0) || (shader.locs == NULL)) return -1;
-    for (int i = 0; i < rbl__state.handleCount; i++)
-        if ((rbl__state.handles[i].locs == shader.locs) && (rbl__state.handles[i].id == shader.id)) return i;
-    return -1;
-}
-
 bool RblIsLitShaderValid(Shader shader)
 {
-    if (rbl__findLit(shader.id, true) == NULL) return false;     // forgets a deleted program and its handles
-    return rbl__findHandle(shader) >= 0;
+    rbl__Program *p = NULL;
+    return (rbl__findLit(shader.id) != NULL) && (rbl__resolveShader(shader, &p) == NULL) && (p != NULL);
 }
 
 void RblUnloadLitShader(Shader *shader)
 {
     if (shader == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: NULL shader"); return; }
-    rbl__findLit(shader->id, true);             // forgets the program (and its handles) if it was deleted outside
-    int h = rbl__findHandle(*shader);
-    if (h < 0)
+    rbl__Program *p = NULL;
+    const char *bad = rbl__resolveShader(*shader, &p);
+    if ((bad == NULL) && (p == NULL))
     {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u is not a live lit program handle (already unloaded, or a stale copy)", shader->id);
-        return;
+        // A lit program RblClose handed to its holder is a plain raylib Shader: released as
+        // UnloadShader would (after CloseWindow its program went with the context)
+        bool gl = rbl__glUsable();
+        if (gl && (rlGetLocationUniform(shader->id, "rblAlphaCutoff") == -1)) bad = "not a lit program of this header";
+        else
+        {
+            if (gl) rlUnloadShaderProgram(shader->id);
+            MemFree(shader->locs);
+            memset(shader, 0, sizeof(*shader));
+            return;
+        }
     }
-    rbl__releaseProgram(shader->id, RBL__KIND_LIT);
-    MemFree(rbl__state.handles[h].locs);
-    rbl__state.handles[h] = rbl__state.handles[--rbl__state.handleCount];
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u: %s", shader->id, bad); return; }
+    // The locations array stays allocated (quarantine) until RblClose: no later allocation can take
+    // its address while a stale copy holds it
+    if (rbl__state.quarantineCount == rbl__state.quarantineCapacity)
+    {
+        int capacity = (rbl__state.quarantineCapacity > 0)? rbl__state.quarantineCapacity*2 : 16;
+        int **q = (int **)RBL_REALLOC(rbl__state.quarantine, (size_t)capacity*sizeof(int *));
+        if (q != NULL) { rbl__state.quarantine = q; rbl__state.quarantineCapacity = capacity; }
+    }
+    if (rbl__state.quarantineCount < rbl__state.quarantineCapacity) rbl__state.quarantine[rbl__state.quarantineCount++] = shader->locs;
+    else MemFree(shader->locs);
+    rbl__bury(p->shader.id, p->handleLocs);
+    if (rbl__glUsable()) rlUnloadShaderProgram(p->shader.id);
+    rbl__removeProgram(p);
     memset(shader, 0, sizeof(*shader));
+    rbl__tidyAfterClose();
 }
 
 static bool rbl__lightFeatureOf(const RblLight *l, int *features)
@@ -6420,7 +6804,11 @@ static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 int RblLightFeatures(const RblLight *lights, int count)
 {
     int features = 0;
-    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i with lights %p", count, (const void *)lights); return 0; }
+    if ((count < 0) || (count > RBL_MAX_SCENE_LIGHTS) || ((count > 0) && (lights == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i outside 0..RBL_MAX_SCENE_LIGHTS (%i) or lights NULL", count, RBL_MAX_SCENE_LIGHTS);
+        return 0;
+    }
     for (int i = 0; i < count; i++)
         if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: light %i has an unknown type or falloff", i); return 0; }
     return features;
@@ -6488,26 +6876,28 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
 }
 
-// The program of a header draw: inside a shadow pass the caster (the material keeps only its albedo
-// map, never another slot that could hold the very depth texture being written, and its alpha
-// cutoff, so a sprite's silhouette casts); elsewhere the material's own program, checked against the
-// pass in progress. *program = NULL for a shader that is not the header's (drawn as raylib would).
-// false = refused, with one log line.
-// Why a material cannot draw in the current pass through a path (instanced or not); NULL = it can.
-// No side effect: the draw calls ask before they touch any state.
+
+// Why a material cannot draw in the current pass through a path; NULL = it can, with *program its
+// lit program (NULL: the caller's own shader, drawn as raylib would). The shader is resolved before
+// anything else of the Material is read (a stale copy's maps went with its program), then the maps:
+// present, and every texture a draw binds still alive. No side effect: draws ask before touching state.
 static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program)
 {
     bool instanced = (path == RBL__PATH_INSTANCED);
+    rbl__Program *p = NULL;
     *program = NULL;
-    if (material->maps != NULL)
-    {
-        Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
-        if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
-            return "the albedo texture's size is outside 1..65536";
-    }
+    const char *bad = rbl__resolveShader(material->shader, &p);
+    if (bad != NULL) return bad;
+    if (material->maps == NULL) return "the material's maps are NULL (a zero Material?)";
+    Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
+    if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
+        return "the albedo texture's size is outside 1..65536";
+    // Billboard paths bind albedo .. emission; raylib's DrawMesh every map with a texture
+    int slots = ((path == RBL__PATH_MESH) || (path == RBL__PATH_SKINNED))? RBL__RAYLIB_MATERIAL_MAPS : MATERIAL_MAP_EMISSION + 1;
+    for (int i = 0; i < slots; i++)
+        if ((material->maps[i].texture.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, material->maps[i].texture.id))
+            return "a texture in the material's maps does not exist (unloaded?)";
     if (rbl__state.shadowPass != NULL) return NULL;        // every material casts through the header's casters
-    if ((material->shader.id == 0) || (material->shader.locs == NULL)) return "the material has no shader (a zero Material, or a lit program that failed to load or was unloaded)";
-    rbl__Program *p = rbl__findLit(material->shader.id, false);
     const RblGBuffer *g = rbl__state.gbufferPass;
     if (p == NULL)
     {
@@ -6528,12 +6918,15 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
     return NULL;
 }
 
-static rbl__Program *rbl__findCaster(unsigned int id)
+// Registry entry of the header's own program id of that kind (caster or pass), or NULL
+static rbl__Program *rbl__findOwn(unsigned int id, int kind)
 {
-    for (int i = 0; (id != 0) && (i < RBL_SHADER_CACHE_SIZE); i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == id) && (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) return &rbl__state.programs[i];
+    for (int i = 0; (id != 0) && (i < rbl__state.programCount); i++)
+        if ((rbl__state.programs[i]->shader.id == id) && (rbl__state.programs[i]->key.kind == kind)) return rbl__state.programs[i];
     return NULL;
 }
+
+static rbl__Program *rbl__findCaster(unsigned int id) { return rbl__findOwn(id, RBL__KIND_CASTER); }
 
 // The skinned caster, compiled on the first GPU-skinned mesh of a shadow pass and held (one holder)
 // until the last shadow map goes; NULL (problem set) when it cannot compile
@@ -6576,7 +6969,16 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
 // fade distance
 static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
 {
-    const rbl__Scene *sc = &rbl__state.scene;
+    rbl__Scene *sc = &rbl__state.scene;
+    // No depth in the scene: the last RblEndSceneDepth's (the same size as the target drawn into)
+    const bool captured = (sc->depth.id == 0) && rbl__state.capture.shown;
+    if (captured) sc->depth = rbl__state.capture.target.depth;
+    if ((sc->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, sc->depth.id))
+    {
+        if (!sc->depthNoted) TraceLog(LOG_WARNING, "RBL: the scene's depth texture %u was unloaded after RblSetScene: soft particles draw unsoftened until the next RblSetScene", sc->depth.id);
+        sc->depthNoted = true;
+        memset(&sc->depth, 0, sizeof(sc->depth));
+    }
     Matrix proj = rlGetMatrixProjection();
     float fade = material->params[RBL_PARAM_SOFT_DISTANCE];
     if (!rbl__finite(fade) || (fade <= 0.0f)) fade = 0.5f;
@@ -6587,6 +6989,7 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     rlSetUniform(p->loc[RBL__U_SOFT_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
     rlSetUniform(p->loc[RBL__U_SOFT_TEXEL], texel, SHADER_UNIFORM_VEC2, 1);
     if (sc->depth.id != 0) { rlActiveTextureSlot(RBL_SCENE_DEPTH_TEXTURE_UNIT); rlEnableTexture(sc->depth.id); rlActiveTextureSlot(0); }
+    if (captured) memset(&sc->depth, 0, sizeof(sc->depth));
 }
 
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
@@ -6608,13 +7011,17 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         rlEnableShader(caster->shader.id);
         rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
-        if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
-        else casterMaps[MATERIAL_MAP_ALBEDO].color = WHITE;
+        casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
         material->shader = caster->shader;
         *program = caster;
+        return true;
     }
-    else if ((*program != NULL) && (*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
+    if (*program == NULL) return true;
+    rbl__checkRaylibDrew(*program);
+    material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
+    if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
+    if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     return true;
 }
 
@@ -6678,6 +7085,44 @@ static void rbl__bindSceneShadows(void)
 {
     for (int k = 0; k < rbl__state.scene.shadowCount; k++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k); rlEnableTexture(rbl__state.scene.shadowTexture[k]); }
     rlActiveTextureSlot(0);
+}
+
+// A map the scene lists was unloaded: said once, at the first draw that would have sampled it
+static void rbl__noteDroppedShadow(void)
+{
+    if (rbl__state.scene.shadowDroppedNoted) return;
+    TraceLog(LOG_WARNING, "RBL: a shadow map of the scene was unloaded after RblSetScene: its light draws unshadowed until the next RblSetScene");
+    rbl__state.scene.shadowDroppedNoted = true;
+}
+
+static int rbl__uploadSceneInto(rbl__Program *p);
+
+// An unloaded shadow map leaves the scene at once, so no program samples its deleted texture; its
+// light draws unshadowed (noted at the next draw that would have used it)
+static void rbl__dropSceneShadow(unsigned int id)
+{
+    rbl__Scene *s = &rbl__state.scene;
+    int k = 0;
+    while ((k < s->shadowCount) && (s->shadowId[k] != id)) k++;
+    if (k == s->shadowCount) return;
+    for (int j = k; j + 1 < s->shadowCount; j++)
+    {
+        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1];
+        memcpy(s->shadowUniforms[j], s->shadowUniforms[j + 1], sizeof(s->shadowUniforms[j]));
+    }
+    s->shadowCount--;
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        float *map = &s->lights[i*RBL__LIGHT_FLOATS + 15];      // shadow map index + 1
+        if (*map == (float)(k + 1)) *map = 0.0f;
+        else if (*map > (float)(k + 1)) *map -= 1.0f;
+    }
+    s->shadowDropped = true;
+    s->shadowDroppedNoted = false;
+    if (!rbl__glUsable()) return;
+    rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + s->shadowCount); rlDisableTexture();
+    rbl__bindSceneShadows();
+    for (int i = 0; i < rbl__state.programCount; i++) rbl__uploadSceneInto(rbl__state.programs[i]);
 }
 
 // Shadow uniforms of program p: map k shadows light slot slotOf[k] (-1 = none)
@@ -6785,6 +7230,7 @@ bool RblSetScene(const RblScene *scene)
     else if (!rbl__finite3(scene->ambientUp) || ((rbl__len2(scene->ambientUp) != 0.0f) && !rbl__normalizeTo(scene->ambientUp, &up))) bad = "ambientUp not a finite direction";
     else if ((scene->depth.id != 0) && ((scene->depth.width <= 0) || (scene->depth.height <= 0) || (scene->depth.width > RBL_MAX_TARGET_SIZE) || (scene->depth.height > RBL_MAX_TARGET_SIZE)))
         bad = "depth texture size outside 1..RBL_MAX_TARGET_SIZE";
+    else if ((scene->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, scene->depth.id)) bad = "the depth texture does not exist (unloaded?)";
     else bad = rbl__checkShadowMaps(scene->shadowMaps, scene->shadowMapCount, scene->lightCount);
     rbl__Scene *s = &rbl__state.scene;
     // Packed storage grows to the largest scene (no allocation in a steady frame)
@@ -6846,22 +7292,25 @@ bool RblSetScene(const RblScene *scene)
     s->fogStart = (fog->mode == RBL_FOG_NONE)? 0.0f : fog->start;
     s->exposure = (scene->exposure == 0.0f)? 1.0f : scene->exposure;
     s->depth = scene->depth;
+    s->depthNoted = false;
     s->shadowCount = scene->shadowMapCount;
+    s->shadowDropped = s->shadowDroppedNoted = false;
     for (int k = 0; k < scene->shadowMapCount; k++)
     {
         const RblShadowMap *map = &scene->shadowMaps[k];
         rbl__shadowUniformData(map, s->shadowUniforms[k]);
         s->shadowLight[k] = map->light;
+        s->shadowId[k] = map->id;
         s->shadowTexture[k] = (map->casters.id != 0)? map->casters.id : map->depth.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
     // Every live program now, so raylib's DrawModel/DrawMesh (which bind programs themselves) see it too
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs == 0) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
+        rbl__Program *p = rbl__state.programs[i];
+        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); i--; continue; }
+        rbl__checkRaylibDrew(p);
         int skipped = rbl__uploadSceneInto(p);
         if (skipped > 0)
             TraceLog(LOG_INFO, "RBL: RblSetScene: lit program %u lights %i of %i lights (maxLights %i, or types not in lightFeatures)",
@@ -6874,6 +7323,13 @@ bool RblSetScene(const RblScene *scene)
 // Why a mesh cannot be drawn with this transform; NULL = it can
 static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
 {
+    // GL 3 / ES 3 draw through the mesh's vertex array (a core context has no other way): it must be
+    // a live one (UnloadMesh deletes it), which also vouches for the mesh's arrays read next
+    if (rbl__glsl() >= 300)
+    {
+        if (mesh->vaoId == 0) return "mesh has no vertex array (vaoId 0: not uploaded, or unloaded)";
+        if (!rbl__glIsLive(RBL__GL_VERTEX_ARRAY, mesh->vaoId)) return "mesh's vertex array does not exist (unloaded?)";
+    }
     if ((mesh->vertexCount <= 0) || ((mesh->vaoId == 0) && ((mesh->vboId == NULL) || (mesh->vboId[0] == 0)))) return "mesh not uploaded (no vertices, vaoId and vboId 0)";
     if (!rbl__exponentsBelow(transform, 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "transform with NaN/Inf or |value| >= 2^60";
     return NULL;
@@ -6937,6 +7393,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
         rbl__uploadBones(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones);
     }
     DrawMesh(mesh, material, transform);
+    if (p != NULL) { rlEnableShader(p->shader.id); rbl__markDrawn(p); rlDisableShader(); }
 }
 
 void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
@@ -6978,7 +7435,6 @@ void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
     {
         Material material = model.materials[model.meshMaterial[i]];
         int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
-        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform, path, &model); continue; }
         Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
         Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
         material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
@@ -7120,6 +7576,13 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
 
 static void rbl__unloadTargets(RblGBuffer *g)
 {
+    if (!rbl__glUsable())       // gone with the context
+    {
+        Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
+        for (int i = 0; i < 5; i++) memset(t[i], 0, sizeof(Texture2D));
+        g->state->id = 0; g->state->lightId = 0;
+        return;
+    }
     // rlUnloadFramebuffer deletes the depth texture attached to it (not the colour ones)
     if (g->state->id != 0) { rlUnloadFramebuffer(g->state->id); g->depth.id = 0; }
     if (g->state->lightId != 0) rlUnloadFramebuffer(g->state->lightId);
@@ -7203,16 +7666,17 @@ static void rbl__releasePasses(RblGBuffer *g)
     memset(g->state->passes, 0, sizeof(g->state->passes));
 }
 
-RenderTexture2D RblLoadSceneTarget(int width, int height)
+// A colour + depth texture target; id 0 (problem set) when the context has no such target
+static RenderTexture2D rbl__loadSceneTarget(int width, int height)
 {
     RenderTexture2D t;
     memset(&t, 0, sizeof(t));
     if ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
         return t;
     }
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     t.id = rlLoadFramebuffer();
     t.texture.id = rlLoadTexture(NULL, width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
     t.texture.width = width; t.texture.height = height; t.texture.mipmaps = 1; t.texture.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
@@ -7232,7 +7696,7 @@ RenderTexture2D RblLoadSceneTarget(int width, int height)
     rbl__restoreTarget(callerTarget);
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "%ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
         if (t.id != 0) rlUnloadFramebuffer(t.id);       // deletes an attached depth texture
         if (!attached && (t.depth.id != 0)) rlUnloadTexture(t.depth.id);
         if (t.texture.id != 0) rlUnloadTexture(t.texture.id);
@@ -7241,12 +7705,127 @@ RenderTexture2D RblLoadSceneTarget(int width, int height)
     return t;
 }
 
+RenderTexture2D RblLoadSceneTarget(int width, int height)
+{
+    RenderTexture2D t = rbl__loadSceneTarget(width, height);
+    if (t.id == 0) TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %s", rbl__state.problem);
+    return t;
+}
+
+static void rbl__unloadSceneTarget(RenderTexture2D *t)
+{
+    if (rbl__glUsable() && (t->id != 0))
+    {
+        rlUnloadFramebuffer(t->id);                     // deletes the attached depth texture
+        rlUnloadTexture(t->texture.id);
+    }
+    memset(t, 0, sizeof(*t));
+}
+
+// The header's scene target, its composite program and triangle released (RblClose)
+static void rbl__releaseCapture(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    rbl__unloadSceneTarget(&c->target);
+    if (c->composite != 0) rbl__releaseProgram(c->composite, RBL__KIND_COMPOSITE);
+    if (rbl__glUsable() && (c->vao != 0)) rlUnloadVertexArray(c->vao);
+    if (rbl__glUsable() && (c->vbo != 0)) rlUnloadVertexBuffer(c->vbo);
+    memset(c, 0, sizeof(*c));
+}
+
+bool RblBeginSceneDepth(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    const char *bad = c->begun? "already in progress (RblEndSceneDepth first)" : (rbl__state.shadowPass != NULL)? "inside a shadow pass" :
+                      (rbl__state.gbufferPass != NULL)? "inside a G-buffer's geometry pass" : NULL;
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    int w = 0, h = 0;
+    rbl__targetSize(callerTarget, &w, &h);
+    if ((bad == NULL) && (c->composite == 0))
+    {
+        // First use: the composite program and a full-screen triangle (kept until RblClose)
+        rbl__ProgramKey key;
+        memset(&key, 0, sizeof(key));
+        key.kind = RBL__KIND_COMPOSITE;
+        rbl__Program *p = rbl__acquireProgram(&key);
+        if (p == NULL) bad = rbl__state.problem;
+        else
+        {
+            c->composite = p->shader.id;
+            const float triangle[9] = { -1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f };
+            c->vao = rlLoadVertexArray();          // 0 where the context has none: attributes set per draw
+            if (c->vao != 0) rlEnableVertexArray(c->vao);
+            c->vbo = rlLoadVertexBuffer(triangle, (int)sizeof(triangle), false);
+            if (c->vao != 0)
+            {
+                rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION, 3, RL_FLOAT, false, 0, 0);
+                rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION);
+                rlDisableVertexArray();
+            }
+            if (c->vbo == 0) bad = "the full-screen triangle's buffer could not be created";
+        }
+    }
+    // The target follows the size of the one it is shown on (a resized window never stretches it)
+    if ((bad == NULL) && ((c->target.id == 0) || (c->target.texture.width != w) || (c->target.texture.height != h)))
+    {
+        RenderTexture2D t = rbl__loadSceneTarget(w, h);
+        if (t.id == 0) bad = rbl__state.problem;
+        else { rbl__unloadSceneTarget(&c->target); c->target = t; }
+    }
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginSceneDepth: %s", bad); return false; }
+    rlDrawRenderBatchActive();
+    c->savedFramebuffer = callerTarget;
+    rlEnableFramebuffer(c->target.id);
+    rlViewport(0, 0, w, h);
+    rlClearColor(0, 0, 0, 0);
+    rlClearScreenBuffers();
+    c->begun = true;
+    return true;
+}
+
+void RblEndSceneDepth(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    if (!c->begun) { TraceLog(LOG_WARNING, "RBL: RblEndSceneDepth: no RblBeginSceneDepth in progress"); return; }
+    rlDrawRenderBatchActive();
+    rbl__restoreTarget(c->savedFramebuffer);
+    const rbl__Program *p = rbl__findOwn(c->composite, RBL__KIND_COMPOSITE);
+    rlEnableShader(p->shader.id);
+    int units[2] = { 0, 1 };
+    rlSetUniform(rlGetLocationUniform(p->shader.id, "texture0"), &units[0], SHADER_UNIFORM_INT, 1);
+    rlSetUniform(rlGetLocationUniform(p->shader.id, "rblSceneDepthMap"), &units[1], SHADER_UNIFORM_INT, 1);
+    rlActiveTextureSlot(0); rlEnableTexture(c->target.texture.id);
+    rlActiveTextureSlot(1); rlEnableTexture(c->target.depth.id);
+    rlDisableColorBlend();                          // the world is opaque: its colour and depth replace the target's
+    rlEnableDepthTest();
+    rlEnableDepthMask();
+    rlDisableBackfaceCulling();
+    if ((c->vao == 0) || !rlEnableVertexArray(c->vao))
+    {
+        rlEnableVertexBuffer(c->vbo);
+        rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION, 3, RL_FLOAT, false, 0, 0);
+        rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION);
+    }
+    rlDrawVertexArray(0, 3);
+    rlDisableVertexArray();
+    rlDisableVertexBuffer();
+    rlEnableBackfaceCulling();
+    rlDisableDepthTest();                           // raylib's 2D state (BeginMode3D turns it on again)
+    rlEnableColorBlend();
+    rlActiveTextureSlot(1); rlDisableTexture();
+    rlActiveTextureSlot(0); rlDisableTexture();
+    rlDisableShader();
+    c->begun = false;
+    c->shown = true;
+}
+
 RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 {
     RblGBuffer g;
     memset(&g, 0, sizeof(g));
-    int width = (desc.width == 0)? rlGetFramebufferWidth() : desc.width;
-    int height = (desc.height == 0)? rlGetFramebufferHeight() : desc.height;
+    int width = desc.width, height = desc.height;
+    const bool follow = (width == 0) && (height == 0);
+    if (follow) rbl__targetSize(rbl__activeFramebuffer(), &width, &height);
     RblLitShaderDesc lit, normalised;
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
@@ -7254,14 +7833,14 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     if (bad == NULL) bad = rbl__needsGlsl3("the G-buffer and deferred passes");
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
     g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
-    if ((g.state == NULL) || !rbl__liveAdd(g.state))
+    if ((g.state == NULL) || ((g.id = rbl__liveAdd(g.state)) == 0))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: out of memory");
         RBL_FREE(g.state);
         memset(&g, 0, sizeof(g));
         return g;
     }
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     g.desc = desc;                  // rbl__loadTargets reads shadowMaps
     if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); RblUnloadGBuffer(&g); return g; }
     rbl__restoreTarget(callerTarget);
@@ -7286,6 +7865,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
         return g;
     }
     g.state->instanceCapacity = 256;
+    g.state->follow = follow;
     rbl__loadVolumeMesh(&g);
     g.outputScale = 1.0f;
     g.state->view = rbl__identity(); g.state->projection = rbl__identity();
@@ -7296,7 +7876,28 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 bool RblIsGBufferValid(const RblGBuffer *gbuffer)
 {
     // Membership first: a stale copy's state (its G-buffer unloaded) is never read
-    return (gbuffer != NULL) && rbl__isLive(gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
+    return (gbuffer != NULL) && rbl__isLive(gbuffer->id, gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
+}
+
+// New targets at width x height (passes kept); false (logged by rbl__loadTargets) keeps the old ones
+static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
+{
+    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
+    rbl__GBufferState freshState = *gbuffer->state;
+    RblGBuffer fresh = *gbuffer;
+    fresh.state = &freshState;
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    bool ok = rbl__loadTargets(&fresh, width, height);
+    rbl__restoreTarget(callerTarget);
+    if (!ok) return false;
+    rbl__unloadTargets(gbuffer);
+    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
+    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
+    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
+    gbuffer->width = width; gbuffer->height = height;
+    gbuffer->desc.width = width; gbuffer->desc.height = height;
+    gbuffer->state->geometryDone = false;       // new targets hold nothing yet
+    return true;
 }
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
@@ -7306,37 +7907,27 @@ bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
     }
-    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
-    rbl__GBufferState freshState = *gbuffer->state;
-    RblGBuffer fresh = *gbuffer;
-    fresh.state = &freshState;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
-    bool ok = rbl__loadTargets(&fresh, width, height);
-    rbl__restoreTarget(callerTarget);
-    if (!ok) return false;      // the old targets stay
-    rbl__unloadTargets(gbuffer);
-    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
-    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
-    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
-    gbuffer->width = width; gbuffer->height = height;
-    gbuffer->desc.width = width; gbuffer->desc.height = height;
+    if (!rbl__resizeTargets(gbuffer, width, height)) return false;
+    gbuffer->state->follow = false;         // sized by the caller from now on
     return true;
 }
 
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
-    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
-    if (gbuffer->state->begun) RblEndGBuffer(gbuffer);
+    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->id : 0, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
+    if (gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: its geometry pass is in progress (RblEndGBuffer first)"); return; }
     rbl__unloadTargets(gbuffer);
     rbl__releasePasses(gbuffer);
+    if (!rbl__glUsable()) gbuffer->state->volumeVao = gbuffer->state->emptyVao = gbuffer->state->volumeVbo = gbuffer->state->volumeIbo = gbuffer->state->instanceVbo = 0;
     if (gbuffer->state->volumeVao != 0) rlUnloadVertexArray(gbuffer->state->volumeVao);
     if (gbuffer->state->emptyVao != 0) rlUnloadVertexArray(gbuffer->state->emptyVao);
     if (gbuffer->state->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeVbo);
     if (gbuffer->state->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeIbo);
     if (gbuffer->state->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->state->instanceVbo);
-    rbl__liveRemove(gbuffer->state);
+    rbl__liveRemove(gbuffer->id);
     RBL_FREE(gbuffer->state);
     memset(gbuffer, 0, sizeof(*gbuffer));
+    rbl__tidyAfterClose();
 }
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
@@ -7372,7 +7963,18 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    int w = 0, h = 0;
+    if ((bad == NULL) && gbuffer->state->follow)
+    {
+        // Loaded with size 0: the size of what it renders for (the screen, or the render texture of
+        // BeginTextureMode), taken here so a resized window never stretches it
+        rbl__targetSize(callerTarget, &w, &h);
+        if ((w <= 0) || (h <= 0) || (w > RBL_MAX_TARGET_SIZE) || (h > RBL_MAX_TARGET_SIZE)) bad = "the target's size is outside 1..RBL_MAX_TARGET_SIZE";
+        else if (((w != gbuffer->width) || (h != gbuffer->height)) && !rbl__resizeTargets(gbuffer, w, h)) bad = "the G-buffer could not take its target's new size (the old targets are kept)";
+    }
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginGBuffer: %s", bad); return false; }
+    gbuffer->state->savedFramebuffer = callerTarget;
     rlDrawRenderBatchActive();
     rlEnableFramebuffer(gbuffer->state->id);
     rlViewport(0, 0, gbuffer->width, gbuffer->height);
@@ -7408,14 +8010,16 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     gbuffer->state->eye = camera.position;
     rbl__sceneAmbient(gbuffer->state->ambient);
     gbuffer->state->begun = true;
-    rbl__state.gbufferPass = gbuffer;
+    rbl__state.gbufferPassBuffer = *gbuffer;
+    rbl__state.gbufferPass = &rbl__state.gbufferPassBuffer;
     return true;
 }
 
 void RblEndGBuffer(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
+    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->id, gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
     gbuffer->state->begun = false;
+    gbuffer->state->geometryDone = true;
     rbl__state.gbufferPass = NULL;
     rlDrawRenderBatchActive();
     rlMatrixMode(RL_PROJECTION);
@@ -7424,16 +8028,11 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
     rlLoadIdentity();
     rlEnableColorBlend();
     rlDisableDepthTest();
-    rbl__restoreTarget(0);
+    rbl__restoreTarget(gbuffer->state->savedFramebuffer);     // the caller's target (e.g. inside BeginTextureMode)
 }
 
 // Registry entry of one of the G-buffer's pass programs
-static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass)
-{
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == g->state->passes[pass]) && (rbl__state.programs[i].key.kind == RBL__KIND_PASS)) return &rbl__state.programs[i];
-    return NULL;
-}
+static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass) { return rbl__findOwn(g->state->passes[pass], RBL__KIND_PASS); }
 
 // Binds the G-buffer textures, camera and shadow uniforms of one pass; returns its locations
 static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
@@ -7512,7 +8111,10 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
+    else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
+    else if (!gbuffer->state->geometryDone) bad = "no geometry pass ran since the G-buffer was loaded or resized (RblBeginGBuffer/RblEndGBuffer first)";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
+    if (rbl__state.scene.shadowDropped && (gbuffer->desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     RblGBuffer *g = gbuffer;
     const rbl__Scene *s = &rbl__state.scene;
     int count = s->lightCount, unbounded = 0, uncompiled = 0;
@@ -7549,7 +8151,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     bool counting = (g->output == RBL_GBUFFER_OUTPUT_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     rlEnableFramebuffer(g->state->lightId);
     rlViewport(0, 0, g->width, g->height);
     rlDisableDepthTest();
@@ -7629,8 +8231,15 @@ void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer) || gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer, or inside its geometry pass"); return; }
+    const char *bad = !RblIsGBufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
+                      (rbl__state.shadowPass != NULL)? "inside a shadow pass" : (rbl__state.gbufferPass != NULL)? "inside another G-buffer's geometry pass" : NULL;
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
+    int w, h;
+    rbl__targetSize(rbl__activeFramebuffer(), &w, &h);
+    if (((w != g->width) || (h != g->height)) && !g->state->sizeNoted)
+        TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: the G-buffer is %ix%i and its target %ix%i: the image is scaled (load it with size 0 to follow its target)", g->width, g->height, w, h);
+    g->state->sizeNoted = (w != g->width) || (h != g->height);
     rlDrawRenderBatchActive();
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
     if (loc[RBL__U_OUTPUT] != -1) rlSetUniform(loc[RBL__U_OUTPUT], &g->output, SHADER_UNIFORM_INT, 1);
@@ -7666,7 +8275,6 @@ static rbl__Cast rbl__castOf(const RblShadowMap *map)
     else { cast.light.x = toLight.x; cast.light.y = toLight.y; cast.light.z = toLight.z; cast.light.w = 0.0f; }
     cast.minSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
     cast.faceLight = !map->desc.faceCamera;
-    cast.parallel = cast.faceLight && (map->state->lightType == RBL_LIGHT_DIRECTIONAL);
     return cast;
 }
 
@@ -7719,7 +8327,7 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     const char *bad = rbl__normaliseShadowDesc(desc, &map.desc);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %s", bad); memset(&map, 0, sizeof(map)); return map; }
     map.state = (rbl__ShadowMapState *)RBL_CALLOC(1, sizeof(rbl__ShadowMapState));
-    if ((map.state == NULL) || !rbl__liveAdd(map.state))
+    if ((map.state == NULL) || ((map.id = rbl__liveAdd(map.state)) == 0))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: out of memory");
         RBL_FREE(map.state);
@@ -7729,14 +8337,14 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     if (!rbl__acquireCasters())
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable (%s)", rbl__state.problem);
-        rbl__liveRemove(map.state);
+        rbl__liveRemove(map.id);
         RBL_FREE(map.state);
         memset(&map, 0, sizeof(map));
         return map;
     }
     map.size = map.desc.size;
     map.light = -1;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
     map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
     bool ok = (map.depth.id != 0);
@@ -7775,14 +8383,16 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
 bool RblIsShadowMapValid(RblShadowMap map)
 {
     // Membership first: a stale copy's state (its map unloaded) is never read
-    return rbl__isLive(map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow);
+    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
-    if (!rbl__unloadable(map, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
-    if (map->state->begun) RblEndShadowMap(map);
-    if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture (and casters target) too
+    if (!rbl__unloadable(map, (map != NULL)? map->id : 0, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
+    if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
+    rbl__dropSceneShadow(map->id);
+    if (!rbl__glUsable()) {}                                                // gone with the context
+    else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture (and casters target) too
     else
     {
         if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
@@ -7798,9 +8408,10 @@ void RblUnloadShadowMap(RblShadowMap *map)
             rbl__state.casterIds[k] = 0;
         }
     }
-    rbl__liveRemove(map->state);
+    rbl__liveRemove(map->id);
     RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));
+    rbl__tidyAfterClose();
 }
 
 // raymath's MatrixOrtho / MatrixFrustum, in raylib's layout
@@ -7855,6 +8466,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double r = focusRadius, texel = 2.0*r/(size - 1.0);
         cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
         cam.target = focusCenter;
+        cam.projection = CAMERA_ORTHOGRAPHIC;          // parallel rays: light-facing casters face the direction
         map->state->lightView = rbl__cameraFrame(cam);
         double ex = rbl__dot(map->state->lightView.right, cam.position), ey = rbl__dot(map->state->lightView.up, cam.position);
         double cx = rbl__dot(map->state->lightView.right, focusCenter), cy = rbl__dot(map->state->lightView.up, focusCenter);
@@ -7889,7 +8501,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlActiveTextureSlot(0);
     map->state->savedView = rlGetMatrixModelview();
     map->state->savedProjection = rlGetMatrixProjection();
-    map->state->savedFramebuffer = rlGetActiveFramebuffer();
+    map->state->savedFramebuffer = rbl__activeFramebuffer();
     rlEnableFramebuffer(map->state->id);
     rlViewport(0, 0, map->size, map->size);
     rlEnableDepthTest();
@@ -7901,14 +8513,15 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlSetMatrixProjection(projection);
     rlSetMatrixModelview(map->state->view);
     map->state->begun = true;
-    rbl__state.shadowPass = map;
+    rbl__state.shadowPassMap = *map;
+    rbl__state.shadowPass = &rbl__state.shadowPassMap;
     rbl__state.cast = rbl__castOf(map);
     return true;
 }
 
 void RblEndShadowMap(RblShadowMap *map)
 {
-    if ((map == NULL) || !rbl__isLive(map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
+    if ((map == NULL) || !rbl__isLive(map->id, map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
     rlDrawRenderBatchActive();
     rbl__restoreTarget(map->state->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->state->savedProjection);
@@ -9124,6 +9737,7 @@ static const char *rbl__spriteStep(const rbl__AtlasState *s, RblSpritePlayer *pl
     bool pingpong = (dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
     if ((p.frame < from) || (p.frame > to) || ((p.step != 1) && (p.step != -1)) || !rbl__finite(p.time) || (p.time < 0.0f) || (p.loops < 0) || (p.passes < 0))
         return "player state not from RblPlaySprite for this atlas (frame, step, time or counts)";
+    if ((double)p.time > rbl__spriteDuration(s, p.frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     if (p.finished) return NULL;
     double t = (double)p.time + dt;
     // Most updates stay inside the current frame: no period, no stepping
@@ -9176,7 +9790,11 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
 {
     const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSpriteInstances");
     if (s == NULL) return 0;
-    if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
+    if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && ((players == NULL) || (instances == NULL))))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count %i outside 0..RBL_MAX_INSTANCES (%i), or players/instances NULL", count, RBL_MAX_INSTANCES);
+        return 0;
+    }
     if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
     // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
@@ -9205,6 +9823,8 @@ static const char *rbl__spriteBlend(const rbl__AtlasState *s, const RblSpritePla
     rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
     if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
         return "player state not from RblPlaySprite for this atlas";
+    // RblUpdateSprite keeps time inside the frame; more is not a state it makes
+    if ((double)player->time > rbl__spriteDuration(s, player->frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     RblSpritePlayer p = *player;
     *nextFrame = p.frame;
     *weight = 0.0f;
@@ -9254,7 +9874,8 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: NaN/Inf view direction or facing (|facing| <= 1e9)"); return -1; }
     // The eye seen from the sprite, on the ground plane: angle about +Y from +Z (the facing's 0)
     double ex = -(double)viewDirection.x, ez = -(double)viewDirection.z;
-    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up (or zero): the front
+    if ((ex == 0.0) && (ez == 0.0) && (viewDirection.y == 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: zero view direction"); return -1; }
+    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up: the front
     double eye = atan2(ex, ez)*(180.0/3.14159265358979323846);
     double rel = fmod(eye - fmod((double)facingDegrees, 360.0), 360.0);
     if (rel < 0.0) rel += 360.0;

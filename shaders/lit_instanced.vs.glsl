@@ -29,8 +29,8 @@ RBL_FLAT RBL_VARYING vec2 fragCasterId;              // the instance's caster id
 
 uniform mat4 mvp;
 // Per-draw frame, one upload (uniform calls cost more than the data in most drivers):
-//   [0] eye, facing code: RblFacing + 4 (shadow pass, directional light-facing casters: CAMERA_POSITION
-//       and AXIS face along the light) + 8 (light-facing casters: AXIS tilts turn the front face)
+//   [0] eye, facing code: RblFacing + 8 in a shadow pass with light-facing casters (AXIS tilts turn
+//       the front face to the light)
 //   [1] right, roundness   [2] up, texture width   [3] back, texture height
 //   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass
 //       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
@@ -143,13 +143,13 @@ vec2 rblSinCosDeg(float degrees)
 // for facing code (rblInstancing[0].w), from the view frame and the draw's up and axis; a shadow pass
 // tilts AXIS billboards until the light sees them at the minimum angle. As on the CPU: each mode picks
 // an axis, a vector v and a fallback f, one blend follows, then the frame is built.
-void rblFacingBasis(int code, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,
+void rblFacingBasis(int code, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,
                     vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)
 {
     int facing = code & 3;
     bool faceLight = (code & 8) != 0;
-    vec3 toEye = ((code & 4) != 0)? viewBack : eye - position;
     r = viewRight; u = viewUp; n = viewBack;
+    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity (a directional light's too)
     vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);
     bool own = true;
     if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }
@@ -317,7 +317,7 @@ void main()
     vec3 eye = rblInstancing[0].xyz;
     int code = int(rblInstancing[0].w + 0.5);
     vec3 r, u, n;
-    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,
+    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
                    rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);
     // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the
     // axis (rbl__billboardVertices)
