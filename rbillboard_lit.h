@@ -4150,7 +4150,7 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
-    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;      // gone with the context
+    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
