@@ -293,18 +293,56 @@
 *
 *   SPRITE SHEETS (RblLoadAtlas / RblLoadAtlasFromMemory; tests/test_atlas.c, test_atlas_render.c, fuzz/):
 *       - Read: TexturePacker JSON (hash / array; frame, rotated, trimmed, spriteSourceSize, sourceSize,
-*         pivot or Pixi's anchor; related_multi_packs followed by RblLoadAtlas, plain names beside the
-*         file only), Aseprite JSON (duration ms, frameTags from/to inclusive, direction, repeat as a
-*         number or a string, slices keys: the first slice with pivots sets the pivot of the frames
-*         its keys cover), libGDX text (old xy/size/orig/offset, new bounds/offsets, rotate true/90,
-*         index: regions sharing a name with index >= 0 are moved together in index order and form a
-*         tag). Duplicate JSON keys: the last wins (JSON.parse). Nesting <= 64, coordinates <= 65536,
-*         64 sheets, text <= 2^28 bytes; anything else malformed: one line, invalid atlas, nothing kept.
+*         pivot or Pixi's anchor, scale9Borders, polygon vertices/verticesUV/triangles; meta.image,
+*         size, scale; related_multi_packs followed by RblLoadAtlas, plain names beside the file
+*         only; the multi-texture (Phaser 3) form: one page per textures[] entry, its normalMap and
+*         scale), Aseprite JSON (the same frames; duration ms, frameTags from/to inclusive, direction,
+*         repeat as a number or a string, slices: keys with bounds, pivot, center), libGDX text (old
+*         xy/size/orig/offset, new bounds/offsets, rotate true/false/any multiple of 90, index: regions
+*         sharing a name with index >= 0 are moved together in index order and form a tag; split;
+*         page size and pma). Not read: Pixi "animations" lists, TexturePacker's smartupdate and
+*         format, libGDX format/filter/repeat (the texture's own settings); libGDX pad is reported
+*         once per load (LOG_INFO). Duplicate JSON keys: the last wins (JSON.parse). A libGDX line
+*         with a colon is a field when its key is one libGDX writes or the line is indented (old
+*         form), else a region name ("ui:button"). Limits, each named in its refusal: nesting 64,
+*         coordinates 65536, 64 sheets, text 2^28 bytes, RBL_MAX_ATLAS_ENTRIES JSON values and rows
+*         per table, 65535 vertices per polygon; page sizes whole texels 1..65536, scale
+*         1/65536..65536; anything else malformed: one line, invalid atlas, nothing kept.
+*       - Sheets (RblLoadAtlas): each image is looked for as written (joined to the atlas file's
+*         folder unless absolute), then by its base name beside the atlas file, then by the atlas
+*         file's own base name with the image's extension; found nowhere, refused with one line
+*         naming every path tried. A normal sheet: the file's normalMap (as written, beside by base
+*         name, then <sheet>_n), else <sheet>_n.<ext> when it exists (TexturePacker, SpriteIlluminator,
+*         Paper2D): RblAtlasPage.normalImage. From memory nothing is looked for: names as written.
+*         RblLoadAtlasTextures(&atlas, page, suffix, &material, &desc.material) loads a page into
+*         maps[ALBEDO] and its normal sheet (suffix NULL: normalImage; "_x": <sheet>_x.<ext>, which
+*         must exist; "": none) into maps[NORMAL], same size required, and fills the layout (RGB
+*         normals, premultiplied alpha) the program needs.
 *       - One convention: rotated = stored turned 90 degrees clockwise in an h x w block (RblAtlasFrame
 *         .block); libGDX's counter-clockwise turn is that plus a half turn, so its .source has both
-*         extents negated (both mirrors); trim and pivot upright, top-left origin (libGDX offsets are
-*         counted from the bottom). RblAtlasBillboard/Instance: size = trim x scale, origin = the
-*         pivot from the trimmed quad's bottom-left (outside it when the pivot is), flags' ROTATED bit.
+*         extents negated (both mirrors; a libGDX half turn is both mirrors alone, 270 the clockwise
+*         turn); trim and pivot upright, top-left origin (libGDX offsets are counted from the bottom).
+*         A frame whose file states no pivot (libGDX never does) stands on its bottom centre (0.5, 1):
+*         placed at y = 0 it stands on the floor. RblAtlasBillboard/Instance: size = trim x worldScale
+*         / page scale (worldScale: world units per pixel of the art at scale 1, so exports at any
+*         meta.scale draw at one size), origin = the pivot from the trimmed quad's bottom-left
+*         (outside it when the pivot is), flags' ROTATED bit.
+*       - Slices (Aseprite): each key is a sub-frame from its frame to lastFrame. RblAtlasFindSlice
+*         (name, frame) finds the key; RblAtlasSliceBillboard/Instance draw it alone: its bounds
+*         clipped to the frame's trim, about its pivot (none: its bottom centre). When exactly one
+*         slice of an export has pivots, they are also the pivots of the frames its keys cover.
+*       - Polygons (TexturePacker): RblAtlasFrame.polygon holds the vertices (untrimmed-frame pixels),
+*         their sheet texels (inside the block) and triangles (indices < vertexCount), validated on
+*         load. The draw paths still draw the trimmed quad (the polygon's bounds and more).
+*       - 9-slice: RblAtlasFrame.center (scale9Borders, libGDX split) and RblAtlasSlice.center, in
+*         canvas pixels (for raylib's DrawTextureNPatch and the like); billboards draw the frame whole.
+*       - Premultiplied pages (libGDX pma: RblAtlasPage.premultiplied): RblMaterialLayout
+*         .premultipliedAlpha makes the program divide each filtered texel by its alpha before the
+*         sRGB decode (the alpha-weighted mean of its neighbours: no dark fringe), light the straight
+*         colour and write straight alpha: raylib's default BLEND_ALPHA then composites exactly as
+*         premultiplied blending of the lit colour would (do not switch to BLEND_ALPHA_PREMULTIPLY).
+*         RblMaterialSource.premultipliedAlpha packs such a sheet: mips averaged as straight colour,
+*         stored premultiplied again.
 *       - Aseprite exports of several sprites count tags per sprite: a tag lands on the frames named
 *         "<tag>:<k>" when the sheet's own indices do not fit those names.
 *       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
@@ -357,6 +395,9 @@
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
+*       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
+*         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
+*         packer that interlocks polygons may leave another frame's texels inside a quad.
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
 *         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
 *         billboards still turn toward camera.position (their shading uses the parallel view).
@@ -384,6 +425,10 @@
 *           Largest G-buffer side and shadow-map size (the driver's own maximum applies too).
 *       #define RBL_MAX_OCCLUSION_RADIUS 256
 *           Largest RblGenOcclusionFromHeight radius, in texels.
+*       #define RBL_MAX_ATLAS_ENTRIES 16777216
+*           JSON values one atlas text may hold (32 to 38 per TexturePacker frame: 440k-520k frames),
+*           and rows of every atlas table (frames, tags, slice keys, polygon points and indices);
+*           1..2^26. The reader holds the text's values at once (20 bytes each).
 *           Input beyond any limit is refused with one log line; world positions and camera vectors
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
@@ -7986,6 +8031,32 @@ static bool rbl__jsonNum(const rbl__Json *j, int node, double *out)
 }
 
 // Number member, with a range; missing: def (when optional) else false
+// Members of an object found in one pass, the last of duplicate keys winning (as rbl__jsonGet):
+// out[k] = the value of keys[k], -1 when absent
+static void rbl__jsonPick(const rbl__Json *j, int object, const char *const *keys, int n, int *out)
+{
+    for (int k = 0; k < n; k++) out[k] = -1;
+    if ((object < 0) || (j->nodes[object].type != RBL__J_OBJECT)) return;
+    for (int c = object + 1, i = 0; i < j->nodes[object].count; i += 2)
+    {
+        const rbl__JNode *name = &j->nodes[c];
+        const char *t = j->text + name->start;
+        for (int k = 0; k < n; k++)      // strncmp stops at the key's end; then the lengths must agree
+            if ((name->len > 0) && (keys[k][0] == t[0]) && (strncmp(keys[k], t, (size_t)name->len) == 0) && (keys[k][name->len] == 0)) out[k] = name->next;
+        c = j->nodes[name->next].next;
+    }
+}
+
+// Number value v (the member key of owner), with a range; absent (v < 0): def when optional, else false
+static bool rbl__jsonNumberAt(rbl__Json *j, int v, int owner, const char *key, double lo, double hi, bool optional, double def, double *out)
+{
+    if (v < 0) { if (optional) { *out = def; return true; } rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[owner].start); return false; }
+    double x;
+    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasErrorf(j->s, j->nodes[v].start, "\"%s\" is not a number in %g..%g", key, lo, hi); return false; }
+    *out = x;
+    return true;
+}
+
 static bool rbl__jsonMember(rbl__Json *j, int object, const char *key, double lo, double hi, bool optional, double def, double *out)
 {
     int v = rbl__jsonGet(j, object, key);
@@ -7996,9 +8067,8 @@ static bool rbl__jsonMember(rbl__Json *j, int object, const char *key, double lo
     return true;
 }
 
-static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
+static bool rbl__jsonBoolAt(rbl__Json *j, int v, const char *key, bool *out)
 {
-    int v = rbl__jsonGet(j, object, key);
     *out = false;
     if (v < 0) return true;
     if (j->nodes[v].type == RBL__J_TRUE) { *out = true; return true; }
@@ -8007,15 +8077,21 @@ static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
     return false;
 }
 
-// {x, y, w, h} (any subset named in keys, in order) into out[]
+// {x, y, w, h} (any subset named in names, in order, at most 4) of value r (the member key of owner) into out[]
+static bool rbl__jsonRectAt(rbl__Json *j, int r, int owner, const char *key, const char *const *names, int n, bool optional, double *out)
+{
+    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[owner].start); return false; }
+    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
+    int at[4];
+    rbl__jsonPick(j, r, names, n, at);
+    for (int k = 0; k < n; k++)
+        if (!rbl__jsonNumberAt(j, at[k], r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
+    return true;
+}
+
 static bool rbl__jsonRect(rbl__Json *j, int object, const char *key, const char *const *names, int n, bool optional, double *out)
 {
-    int r = rbl__jsonGet(j, object, key);
-    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
-    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
-    for (int k = 0; k < n; k++)
-        if (!rbl__jsonMember(j, r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
-    return true;
+    return rbl__jsonRectAt(j, rbl__jsonGet(j, object, key), object, key, names, n, optional, out);
 }
 
 static RblAtlasPage *rbl__atlasAddPage(rbl__AtlasState *s, const char *image, int width, int height)
@@ -8206,10 +8282,9 @@ static bool rbl__atlasJsonTriangles(rbl__Json *j, int node, const char *frame, i
 
 // A polygon frame (TexturePacker's polygon packing): vertices in the untrimmed frame, their sheet
 // texels inside the frame's block, triangles over them; the rows are published with the atlas
-static bool rbl__atlasJsonPolygon(rbl__Json *j, int obj, const RblAtlasFrame *f)
+static bool rbl__atlasJsonPolygon(rbl__Json *j, int obj, int v, int uv, int tri, const RblAtlasFrame *f)
 {
     rbl__AtlasState *s = j->s;
-    int v = rbl__jsonGet(j, obj, "vertices"), uv = rbl__jsonGet(j, obj, "verticesUV"), tri = rbl__jsonGet(j, obj, "triangles");
     if ((v < 0) && (uv < 0) && (tri < 0)) return true;
     if ((v < 0) || (uv < 0) || (tri < 0)) { rbl__atlasErrorf(s, j->nodes[obj].start, "frame \"%s\": a polygon needs \"vertices\", \"verticesUV\" and \"triangles\"", f->name); return false; }
     RBL__ATLAS_GROW(s, s->polygons, s->polygonCount, s->polygonCap, RblAtlasPolygon, "polygons", return false);
@@ -8225,23 +8300,28 @@ static bool rbl__atlasJsonPolygon(rbl__Json *j, int obj, const RblAtlasFrame *f)
     return true;
 }
 
-// One TexturePacker / Aseprite frame object
+// One TexturePacker / Aseprite frame object: its members in one pass
+#define RBL__FRAME_KEYS 11
+static const char *const rbl__frameKeys[RBL__FRAME_KEYS] = { "frame", "rotated", "spriteSourceSize", "sourceSize", "anchor", "pivot", "duration",
+                                                              "scale9Borders", "vertices", "verticesUV", "triangles" };
 static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int page)
 {
     rbl__AtlasState *s = j->s;
     if ((obj < 0) || (j->nodes[obj].type != RBL__J_OBJECT)) { rbl__atlasError(s, "frame \"%s\" is not an object", name, -1); return false; }
     double fr[4], sss[4], src[2], piv[2] = { 0.5, 1.0 }, dur = 0.0, nine[4] = { 0.0, 0.0, 0.0, 0.0 };
     bool rotated = false;
-    if (!rbl__jsonRect(j, obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBool(j, obj, "rotated", &rotated)) return false;
+    int m[RBL__FRAME_KEYS];
+    rbl__jsonPick(j, obj, rbl__frameKeys, RBL__FRAME_KEYS, m);
+    if (!rbl__jsonRectAt(j, m[0], obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBoolAt(j, m[1], "rotated", &rotated)) return false;
     sss[0] = 0.0; sss[1] = 0.0; sss[2] = fr[2]; sss[3] = fr[3];
     src[0] = fr[2]; src[1] = fr[3];
-    if (!rbl__jsonRect(j, obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
-    if (!rbl__jsonRect(j, obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
+    if (!rbl__jsonRectAt(j, m[2], obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
+    if (!rbl__jsonRectAt(j, m[3], obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
     const char *const xy[2] = { "x", "y" };
     // pivot (TexturePacker), anchor (the Pixi exporter's name for it); none: the bottom centre
-    if (!rbl__jsonRect(j, obj, "anchor", xy, 2, true, piv) || !rbl__jsonRect(j, obj, "pivot", xy, 2, true, piv)) return false;
-    if (!rbl__jsonMember(j, obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
-    if (!rbl__jsonRect(j, obj, "scale9Borders", rbl__xywh, 4, true, nine)) return false;     // Phaser 3's 9-slice centre
+    if (!rbl__jsonRectAt(j, m[4], obj, "anchor", xy, 2, true, piv) || !rbl__jsonRectAt(j, m[5], obj, "pivot", xy, 2, true, piv)) return false;
+    if (!rbl__jsonNumberAt(j, m[6], obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
+    if (!rbl__jsonRectAt(j, m[7], obj, "scale9Borders", rbl__xywh, 4, true, nine)) return false;     // Phaser 3's 9-slice centre
     RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, "frames", return false);
     RblAtlasFrame *f = &s->frames[s->frameCount];
     memset(f, 0, sizeof(*f));
@@ -8253,7 +8333,7 @@ static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int pag
     f->pivot = rbl__v2((float)piv[0], (float)piv[1]);
     f->duration = (float)(dur/1000.0);
     f->center = rbl__rect((float)nine[0], (float)nine[1], (float)nine[2], (float)nine[3]);
-    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page]) || !rbl__atlasJsonPolygon(j, obj, f)) return false;
+    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page]) || !rbl__atlasJsonPolygon(j, obj, m[8], m[9], m[10], f)) return false;
     s->frameCount++;
     return true;
 }
@@ -8584,9 +8664,10 @@ static bool rbl__gdxGroup(rbl__AtlasState *s)
     return ok;
 }
 
-// Field names libGDX writes (page fields before the first region, region fields after): a line is
-// a field when its key is one of these, or when it is indented (the old form indents every region
-// field); any other line names a region, colons and all ("ui:button")
+// Field names libGDX writes (page fields before the first region, region fields after). A line
+// with a colon is a field when it is indented (the old form indents every region field), when its
+// key is one of these, or when the next line is not a region field; otherwise it names a region,
+// colons and all ("ui:button" followed by "bounds:...")
 static bool rbl__gdxKnownKey(const char *k, size_t kl, bool page)
 {
     static const char *const pageKeys[] = { "size", "format", "filter", "repeat", "pma" };
@@ -8594,6 +8675,28 @@ static bool rbl__gdxKnownKey(const char *k, size_t kl, bool page)
     const char *const *keys = page? pageKeys : regionKeys;
     int n = page? 5 : 10;
     for (int i = 0; i < n; i++) if ((strlen(keys[i]) == kl) && (memcmp(keys[i], k, kl) == 0)) return true;
+    return false;
+}
+
+// Whether the first non-blank line from p on is a region field (indented, or a region key and a colon)
+static bool rbl__gdxRegionFieldNext(const char *p, const char *end)
+{
+    while (p < end)
+    {
+        const char *a = p;
+        while ((a < end) && ((*a == ' ') || (*a == '\t'))) a++;
+        const char *eol = a;
+        while ((eol < end) && (*eol != '\n')) eol++;
+        const char *b = eol;
+        while ((b > a) && ((b[-1] == ' ') || (b[-1] == '\t') || (b[-1] == '\r'))) b--;
+        if (a == b) return false;        // a blank line ends the page
+        const char *colon = (const char *)memchr(a, ':', (size_t)(b - a));
+        if (colon == NULL) return false;
+        if (a > p) return true;
+        const char *ke = colon;
+        while ((ke > a) && ((ke[-1] == ' ') || (ke[-1] == '\t'))) ke--;
+        return rbl__gdxKnownKey(a, (size_t)(ke - a), false);
+    }
     return false;
 }
 
@@ -8636,7 +8739,7 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
         const char *k = a, *ke = colon;
         if (colon != NULL) { while ((ke > k) && ((ke[-1] == ' ') || (ke[-1] == '\t'))) ke--; }
         size_t kl = (colon != NULL)? (size_t)(ke - k) : 0;
-        if ((colon == NULL) || !(indented || rbl__gdxKnownKey(k, kl, region == NULL)))      // a region name
+        if ((colon == NULL) || !(indented || rbl__gdxKnownKey(k, kl, region == NULL) || !rbl__gdxRegionFieldNext(p, end)))      // a region name
         {
             if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; }
             region = rbl__atlasPoolCopy(s, a, (size_t)(b - a));
@@ -9240,7 +9343,10 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
     if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
     if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
-    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
+    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance,
+    // with each page's world units per texel divided out once)
+    double unit[RBL__ATLAS_MAX_PAGES];
+    for (int p = 0; p < s->pageCount; p++) unit[p] = (double)worldScale/(double)s->pages[p].scale;
     int done = 0, skipped = 0;
     const char *why = NULL;
     for (int i = 0; i < count; i++)
@@ -9250,7 +9356,7 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
         RblInstance *in = &instances[i];
         unsigned int flags;
         const RblAtlasFrame *f = &s->frames[players[i].frame];
-        rbl__atlasFrameQuad(f, rbl__atlasUnit(s, f, worldScale), &in->source, &in->size, &in->origin, &flags);
+        rbl__atlasFrameQuad(f, unit[f->page], &in->source, &in->size, &in->origin, &flags);
         in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
         done++;
     }

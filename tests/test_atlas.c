@@ -830,6 +830,14 @@ static void test_atlas_libgdx_any_quarter_turn_colon_names_pma_split_and_pad(voi
     RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 1 && strcmp(a.frames[0].name, "hud:icon") == 0 && a.frames[0].source.width == -4.0f && a.frames[0].source.height == -2.0f && atlasWarnLines == 0,
              "old form with a colon name: valid %d (%s)", RblIsAtlasValid(&a), atlasLastLine);
     RblUnloadAtlas(&a);
+    // fields libGDX does not write are still fields when no region field follows them (a page's
+    // "scale: 1", a region's "custom:7"); a colon line followed by a region's field is a name
+    a = atlasFromText("p.png\nsize: 8, 8\nscale: 1\nrun\n  xy: 0, 0\n  size: 4, 4\n");
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 1 && strcmp(a.frames[0].name, "run") == 0, "unknown page field read as a field");
+    RblUnloadAtlas(&a);
+    a = atlasFromText("p.png\nsize:8,8\na\nbounds:0,0,4,4\ncustom:7\nb:c\nbounds:4,0,4,4\n");
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 2 && strcmp(a.frames[1].name, "b:c") == 0 && a.frames[1].block.x == 4.0f, "unknown region field and a colon name");
+    RblUnloadAtlas(&a);
     atlasLogEnd();
 }
 
