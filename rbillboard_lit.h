@@ -94,7 +94,7 @@
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
-*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: the render size
+*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
 *            gdesc.brdf = RBL_BRDF_GGX;
 *            RblGBuffer g = RblLoadGBuffer(gdesc);
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
@@ -124,20 +124,25 @@
 *       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
 *
 *   OWNERSHIP:
-*       - RblLoadLitShader returns a raylib Shader whose locs array is that holder's; copies of it
-*         (material.shader) are the same holder: release it once. Equal descs share one program;
-*         each call is its own holder, and the program goes with its last holder.
-*       - Release with RblUnloadLitShader(&shader) (zeroes it) or raylib's UnloadMaterial/UnloadShader:
-*         the header notices the deleted program at the next load, scene or validity check, forgets
-*         it and compiles anew on the next load (draws skip the check: a GL query each).
+*       - RblLoadLitShader returns a raylib Shader that is its own GL program (as LoadShader); copies
+*         of it (material.shader) are the same holder: release it once, with RblUnloadLitShader(&shader)
+*         (zeroes it) or raylib's UnloadShader/UnloadMaterial. Materials that differ only in values
+*         share one Shader; equal descs loaded twice are two programs.
+*       - Draws recognise a Material's shader by its (id, locs) pair and ask GL that the program still
+*         exists before reading anything else of the Material: a stale copy is refused with one line.
+*         Draws use the header's own locations, never a Material's.
+*       - Batches, instance buffers, G-buffers and shadow maps carry an id: a copy of an unloaded one
+*         is refused even when a newer object took its memory.
 *       - Shadow maps and G-buffers hold their programs until RblUnloadShadowMap / RblUnloadGBuffer.
-*       - RblClose frees the immediate path, the scene and every program still held: call it after
-*         your own Unload calls (a Shader unloaded afterwards would be freed twice), before CloseWindow.
+*       - RblClose frees what the header owns (immediate path, scene, registry); lit programs become
+*         their holders' plain Shaders. Unload your objects before or after it; after CloseWindow the
+*         header makes no GL call (unloads free memory only).
 *
 *   FACING MODES (RblBillboard.facing, or RblInstancedDesc.facing for an instanced draw):
 *       CAMERA_PLANE: parallel to the view plane, as DrawBillboard (optional up, as DrawBillboardPro);
 *       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
-*       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
+*       default); FIXED: a world orientation (axis = normal, up). Under an orthographic camera the eye
+*       is at infinity along the view's back direction (RblCameraFrame.orthographic). roundness bends the corner normals
 *       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
 *       Two-sided: a quad seen from behind (FIXED, or CAMERA_PLANE with an up against the view's) is
 *       drawn and shaded on the side seen (gl_FrontFacing): the normal flips, the normal map's tangent
@@ -380,7 +385,10 @@
 *         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
 *         the G-buffer are refused there with one log line. ES 2: raylib 6.0's rlGetActiveFramebuffer
 *         answers 0, so a shadow pass run inside BeginTextureMode returns to the default framebuffer.
-*       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
+*       - raylib's own DrawModel/DrawMesh upload colDiffuse, matrices and textures, none of the header's
+*         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
+*         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
+*         use of it and logged once per program.
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
 *         the target, viewport and matrices it found but leaves the depth test off and culling on (as
@@ -388,8 +396,9 @@
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
 *         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
-*         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
-*         BeginTextureMode, resolve inside); resolve into a target of its size. The geometry pass
+*         (directional, range 0); a G-buffer loaded with size 0 takes its target's size at each
+*         RblBeginGBuffer (the screen, or the render texture of BeginTextureMode) and RblEndGBuffer
+*         returns to that target; a fixed size resolved into another size is scaled (logged). The geometry pass
 *         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
@@ -399,8 +408,7 @@
 *         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
 *         packer that interlocks polygons may leave another frame's texels inside a quad.
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
-*         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
-*         billboards still turn toward camera.position (their shading uses the parallel view).
+*         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
@@ -412,9 +420,9 @@
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
-*       #define RBL_SHADER_CACHE_SIZE 32
-*           Programs the registry holds: lit variants (equal descs share one), 2 casters while a shadow
-*           map is loaded, 5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
+*       #define RBL_SHADER_CACHE_SIZE 1024
+*           Programs the registry holds: one per lit Shader loaded, casters while a shadow map is loaded,
+*           5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch, or instances an instance buffer, reserves when loaded with 0.
 *       #define RBL_MAX_BATCH_BILLBOARDS 2097152, RBL_MAX_INSTANCES 2097152
@@ -1203,6 +1211,8 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
+// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
+#define RBL__RAYLIB_MATERIAL_MAPS 12
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
@@ -6253,10 +6263,6 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
-    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
-    // cut: the alpha band's ceiling is above every alpha
-    float band[2] = { 0.0f, 2.0f };
-    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     if (d->softParticles)
     {
         int unit = RBL_SCENE_DEPTH_TEXTURE_UNIT;
@@ -6277,6 +6283,17 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
+    // A default Material's values (its zero fields), so raylib's DrawModel of such materials draws as
+    // the header's own draws would
+    if (key->kind != RBL__KIND_PASS)
+    {
+        MaterialMap defaults[RBL__RAYLIB_MATERIAL_MAPS];
+        Material none;
+        memset(defaults, 0, sizeof(defaults));
+        memset(&none, 0, sizeof(none));
+        none.maps = defaults;
+        rbl__applyMaterialValues(p, &none);
+    }
     rlDisableShader();
     rbl__uploadScene(p);            // a program loaded mid-frame draws with the current scene
     return p;
@@ -6487,8 +6504,6 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
 }
 
-// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
-#define RBL__RAYLIB_MATERIAL_MAPS 12
 
 // Why a material cannot draw in the current pass through a path; NULL = it can, with *program its
 // lit program (NULL: the caller's own shader, drawn as raylib would). The shader is resolved before
