@@ -749,7 +749,7 @@ static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_vali
 // billboardMismatch), against the expected upright picture
 static int quadMismatch(const RblBillboard *b, Image sheet, Image expected)
 {
-    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, false };
     RblVertex v[4];
     if (!RblBillboardVertices(&view, sheet.width, sheet.height, b, v)) return -1;
     float uv[4][2];
