@@ -1423,12 +1423,7 @@ static void expectEveryDrawRefused(Material m, const char *what)
 {
     RblBillboard b = billboard();
     printf("      %s\n", what);
-    EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
-    RblBatch batch = RblLoadBatch(2);
-    RblBeginBatch(&batch, camera());
-    EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
-    RblEndBatch(&batch);
-    RblUnloadBatch(&batch);
+    expectBillboardRefused(m, b);
     Mesh cube = GenMeshCube(1, 1, 1);
     EXPECT_REFUSED(V(RblDrawMesh(cube, m, MatrixIdentity())));
     Model model = LoadModelFromMesh(cube);
