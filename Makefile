@@ -16,11 +16,11 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot api-index
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
-NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps
+NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps api-index
 ifeq ($(filter $(NO_RAYLIB_GOALS),$(MAKECMDGOALS)),)
 include $(BUILD)/raylib.mk
 ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
@@ -38,6 +38,11 @@ $(BUILD)/raylib.mk: tests/tools/get-raylib.sh
 
 deps:
 	@bash tests/tools/deps.sh
+
+# The README's API index, regenerated from the header's declarations (make test checks it)
+api-index:
+	@bash tests/tools/api_index.sh write rbillboard_lit.h README.md
+	@echo "api-index: README.md rewritten from rbillboard_lit.h"
 
 # ---- shaders ------------------------------------------------------------------------------
 shaders:

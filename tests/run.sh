@@ -51,6 +51,10 @@ for i in $(seq 1 $n); do
   else fail=$((fail + 1)); if [ -s "$f" ]; then sed 's/^/  /' "$f"; else echo "  FAIL  matrix cell $i (no result)"; fi; fi
 done
 
+# The README's API index and the doc block's CONFIGURATION list against the header
+echo "== api (README index, CONFIGURATION)"
+out=$(bash tests/tools/api_index.sh check rbillboard_lit.h README.md 2>&1); printf '%s\n' "$out"; count "$out"
+
 # CMake: tests/cmake_consumer uses the rbillboard_lit::rbillboard_lit INTERFACE target through
 # add_subdirectory, then FetchContent (local source override), with the raylib build/raylib.mk found;
 # the consumer checks RblGetCameraFrame from a C and a C++ file against raylib's GetCameraMatrix

@@ -950,9 +950,12 @@ static void c_gbuffer_passes(void)
     EXPECT_REFUSED(V(RblResolveGBuffer(&g)));
     EXPECT_REFUSED(RblResizeGBuffer(&g, 16, 16));
     EXPECT_REFUSED(V(RblEndGBuffer(&h)));                      // ending the other one
-    // Mismatched variants inside the pass: forward, other BRDF, instanced forward
+    // Mismatched variants inside the pass: forward, other BRDF, instanced forward (a refused first
+    // immediate draw creates nothing)
     RblBillboard bb = billboard();
+    ck(rbl__state.immediate.state == NULL, "the immediate path exists before any immediate draw");
     EXPECT_REFUSED(V(RblDrawBillboard(camera(), material, bb)));
+    ck(rbl__state.immediate.state == NULL, "a refused immediate draw created the immediate path's buffers");
     Material lam = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
     EXPECT_REFUSED(V(RblDrawBillboard(camera(), lam, bb)));
     RblShadowMap map = RblLoadShadowMap((RblShadowDesc){ 0 });
@@ -1535,12 +1538,7 @@ static void expectEveryDrawRefused(Material m, const char *what)
 {
     RblBillboard b = billboard();
     printf("      %s\n", what);
-    EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
-    RblBatch batch = RblLoadBatch(2);
-    RblBeginBatch(&batch, camera());
-    EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
-    RblEndBatch(&batch);
-    RblUnloadBatch(&batch);
+    expectBillboardRefused(m, b);
     Mesh cube = GenMeshCube(1, 1, 1);
     EXPECT_REFUSED(V(RblDrawMesh(cube, m, MatrixIdentity())));
     Model model = LoadModelFromMesh(cube);
@@ -1960,6 +1958,29 @@ static void c_scene_references_die(void)
     RblUnloadLitShader(&smoke.shader); MemFree(smoke.maps);
 }
 
+// The header's scene target of a plain frame: nested, unbalanced, inside other passes
+static void c_scene_depth(void)
+{
+    EXPECT_REFUSED(V(RblEndSceneDepth()));                       // never begun
+    ck(RblBeginSceneDepth(), "good scene-depth pass refused: %s", lastWarning);
+    EXPECT_REFUSED(RblBeginSceneDepth());                        // nested
+    RblEndSceneDepth();
+    EXPECT_REFUSED(V(RblEndSceneDepth()));                       // twice
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    EXPECT_REFUSED(RblBeginSceneDepth());
+    RblEndShadowMap(&map);
+    RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_LAMBERT));
+    ck(RblBeginGBuffer(&g, camera()), "geometry pass refused");
+    EXPECT_REFUSED(RblBeginSceneDepth());
+    RblEndGBuffer(&g);
+    RblUnloadGBuffer(&g);
+    RblUnloadShadowMap(&map);
+}
+
 // ---- the case table -----------------------------------------------------------------------------
 typedef struct Case { const char *functions; const char *name; void (*run)(void); const char *classes; } Case;
 
@@ -2034,6 +2055,7 @@ static const Case cases[] = {
     { "RblBillboardVertices", "FIXED/AXIS directions of any finite length; CAMERA_PLANE up overflowing", c_vertices_long_directions, "floats" },
     { "RblBeginBatch RblBatchAdd RblEndBatch RblBeginShadowMap RblEndShadowMap RblBeginGBuffer RblEndGBuffer RblResolveGBuffer RblUnloadShadowMap RblUnloadGBuffer", "every pass against every other, both orders; inside BeginTextureMode", c_passes_against_passes, "nesting" },
     { "RblSetScene RblDrawDeferredLights RblDrawBillboard", "shadow map and depth texture unloaded after RblSetScene; lights before a geometry pass", c_scene_references_die, "scene-refs stale-raylib" },
+    { "RblBeginSceneDepth RblEndSceneDepth", "nested, unbalanced, inside shadow and geometry passes", c_scene_depth, "nesting null" },
 };
 
 // One case in a child process: its own context and fixture, then the matrix stack depth check
