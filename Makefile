@@ -78,7 +78,7 @@ $(BUILD)/tests/test_api_san: tests/test_api_main.c tests/test_api.c $(HARNESS) $
 	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_api_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 # Contract suite: small limits so that they are reached in a few draws (the checks are the same code)
-CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256
+CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256 -DRBL_MAX_ATLAS_ENTRIES=4096
 $(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(CONTRACT_LIMITS) $(RAYLIB_CFLAGS) tests/test_contracts.c tests/harness.c -o $@ $(RAYLIB_LIBS)
