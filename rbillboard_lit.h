@@ -1073,6 +1073,7 @@ typedef struct RblAtlas {
     const RblAtlasTag *tags;
     const RblAtlasPage *pages;
     const RblAtlasSlice *slices;
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__AtlasState *state;  // The header's: tables and names (NULL = not loaded)
 } RblAtlas;
 
@@ -8317,15 +8318,8 @@ typedef struct rbl__AtlasState {
     char error[3*RBL__ATLAS_PATH + 256];
 } rbl__AtlasState;
 
-// Atlases are CPU objects the caller owns past RblClose: their own live list (freed when empty)
-static struct { const void **live; int count, capacity; } rbl__atlases;
-
-static bool rbl__atlasLive(const void *s)
-{
-    if (s == NULL) return false;
-    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == s) return true;
-    return false;
-}
+// Atlases are CPU objects the caller owns past RblClose, named by id like the header's other objects
+static bool rbl__atlasLive(const RblAtlas *atlas) { return rbl__isLive(atlas->id, atlas->state); }
 
 static void rbl__atlasError(rbl__AtlasState *s, const char *fmt, const char *detail, long at)
 {
@@ -9462,8 +9456,8 @@ static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
 {
     RblAtlas a;
     memset(&a, 0, sizeof(a));
-    RBL__ATLAS_GROW(s, rbl__atlases.live, rbl__atlases.count, rbl__atlases.capacity, const void *, "live atlases", return a);
-    rbl__atlases.live[rbl__atlases.count++] = s;
+    a.id = rbl__liveAdd(s);
+    if (a.id == 0) return a;            // out of memory: the caller fails the load
     s->format = format;
     // the tables stopped moving: polygons point into their rows, frames at their polygons
     for (int i = 0; i < s->polygonCount; i++)
@@ -9494,7 +9488,7 @@ static RblAtlas rbl__atlasFail(rbl__AtlasState *s, const char *fn, const char *w
     memset(&a, 0, sizeof(a));
     TraceLog(LOG_WARNING, "RBL: %s: %s: %s", fn, what, ((s != NULL) && (s->error[0] != 0))? s->error : "out of memory");
     rbl__atlasFree(s);
-    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__tidyAfterClose();
     return a;
 }
 
@@ -9566,29 +9560,29 @@ RblAtlas RblLoadAtlas(const char *fileName)
 
 bool RblIsAtlasValid(const RblAtlas *atlas)
 {
-    return (atlas != NULL) && rbl__atlasLive(atlas->state);
+    return (atlas != NULL) && rbl__atlasLive(atlas);
 }
 
 void RblUnloadAtlas(RblAtlas *atlas)
 {
     if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: NULL atlas"); return; }
-    if (!rbl__atlasLive(atlas->state))
+    if (!rbl__atlasLive(atlas))
     {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", (atlas->state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", ((atlas->id != 0) || (atlas->state != NULL))? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
         memset(atlas, 0, sizeof(*atlas));
         return;
     }
-    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == atlas->state) { rbl__atlases.live[i] = rbl__atlases.live[--rbl__atlases.count]; break; }
-    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__liveRemove(atlas->id);
     rbl__atlasFree(atlas->state);
     memset(atlas, 0, sizeof(*atlas));
+    rbl__tidyAfterClose();
 }
 
 // The live state of an atlas argument, or NULL after one line under fn
 static const rbl__AtlasState *rbl__atlasArg(const RblAtlas *atlas, const char *fn)
 {
     if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL atlas", fn); return NULL; }
-    if (!rbl__atlasLive(atlas->state)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
+    if (!rbl__atlasLive(atlas)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
     return atlas->state;
 }
 
