@@ -5,6 +5,8 @@
 #   make shaders splice shaders/*.glsl into rbillboard_lit.h
 #   make web     the showcase as a page: build/web/index.html (WebGL2, WebGL1 fallback build)
 #   make test-web  the browser GPU suite in headless Chromium; ends with "web: N passed, N failed"
+#   make raylib-master  clone raylib master into build/raylib-master: make test then also compiles the
+#                header, README code and examples against its headers (or RAYLIB_MASTER=<tree>)
 # raylib >= 6.0 is found by tests/tools/get-raylib.sh: pkg-config, then RAYLIB_SRC=<tree>, then
 # Debian's source package (built once into build/raylib).
 
@@ -16,20 +18,26 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot raylib-master
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
-NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps
+NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps raylib-master
 ifeq ($(filter $(NO_RAYLIB_GOALS),$(MAKECMDGOALS)),)
 include $(BUILD)/raylib.mk
+endif
+# raylib.mk records the RAYLIB_SRC it was made for; another one remakes it. Through a phony
+# prerequisite, never by declaring raylib.mk itself phony: make does not re-read a phony makefile
+# it remade, so the recipes ran without raylib's flags (a fresh clone's first
+# `make run RAYLIB_SRC=...` failed with raylib.h not found)
 ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
-.PHONY: $(BUILD)/raylib.mk
+RAYLIB_MK_AGAIN := raylib-mk-again
 endif
-endif
+.PHONY: raylib-mk-again
+raylib-mk-again:
 
 # Remade when get-raylib.sh changes (its build flags are in the stamp: an older build is rebuilt)
-$(BUILD)/raylib.mk: tests/tools/get-raylib.sh
+$(BUILD)/raylib.mk: tests/tools/get-raylib.sh $(RAYLIB_MK_AGAIN)
 	@mkdir -p $(BUILD)
 	@bash tests/tools/deps.sh
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib.sh > $@.tmp || { rm -f $@.tmp; exit 1; }
@@ -116,7 +124,14 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
 test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js
-	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
+	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" RAYLIB_MASTER="$(RAYLIB_MASTER)" bash tests/run.sh
+
+# raylib master's source for make test's optional check against its headers (needs the network;
+# under $(BUILD), so never committed). RAYLIB_MASTER=<tree> names one already on disk instead.
+raylib-master:
+	@if [ -d $(BUILD)/raylib-master/.git ]; then git -C $(BUILD)/raylib-master pull -q --ff-only; \
+	 else git clone -q --depth 1 https://github.com/raysan5/raylib $(BUILD)/raylib-master; fi
+	@echo "raylib-master: $(BUILD)/raylib-master at $$(git -C $(BUILD)/raylib-master log -1 --format='%h %cs')"
 
 # ---- showcase -----------------------------------------------------------------------------
 $(BUILD)/showcase: examples/shaders_lit_billboards.c $(HEADER) $(BUILD)/raylib.mk
@@ -213,7 +228,7 @@ bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,eg
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
-	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/cmake_readme_* $(BUILD)/setup_check $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
 	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
 
 clean-all:
