@@ -5,6 +5,7 @@
 #   make shaders splice shaders/*.glsl into rbillboard_lit.h
 #   make web     the showcase as a page: build/web/index.html (WebGL2, WebGL1 fallback build)
 #   make test-web  the browser GPU suite in headless Chromium; ends with "web: N passed, N failed"
+#   make test-page the showcase page's checks in headless Chromium (sizes, input, context loss, no WebGL)
 #   make raylib-master  clone raylib master into build/raylib-master: make test then also compiles the
 #                header, README code and examples against its headers (or RAYLIB_MASTER=<tree>)
 # raylib >= 6.0 is found by tests/tools/get-raylib.sh: pkg-config, then RAYLIB_SRC=<tree>, then
@@ -18,7 +19,7 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot raylib-master
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot raylib-master
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
@@ -123,7 +124,7 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" RAYLIB_MASTER="$(RAYLIB_MASTER)" bash tests/run.sh
 
 # raylib master's source for make test's optional check against its headers (needs the network;
@@ -275,9 +276,27 @@ $(BUILD)/web/index.html: tests/web/index.html
 web: $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html
 	@echo "web: open build/web/index.html through a web server (python3 -m http.server -d $(BUILD)/web)"
 
-# Headless screenshot of the page for the README (SwiftShader WebGL2)
+# The page's checks (tests/web/page_check.html; make test runs them): the showcase page in every
+# mode, and the README's minimal shell as printed (shell.html) with the showcase build as game.js
+WEB_PAGE_FILES := $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html $(BUILD)/web/page_check.html $(BUILD)/web/shell.html $(BUILD)/web/game.js
+WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2" "nowebgl --disable-webgl" shell "shellnowebgl --disable-webgl"
+$(BUILD)/web/page_check.html: tests/web/page_check.html
+	@mkdir -p $(@D)
+	cp $< $@
+$(BUILD)/web/shell.html: README.md
+	@mkdir -p $(@D)
+	@awk '/^<!-- tested by tests\/web\/page_check.html \(shell\) -->$$/ {m=1; next} m && /^```html$$/ {f=1; next} f && /^```$$/ {exit} f' README.md > $@
+	@test -s $@ || { echo "shell.html: README has no html block after its 'tested by' marker"; rm -f $@; exit 1; }
+$(BUILD)/web/game.js: $(BUILD)/web/showcase.js
+	cp $(BUILD)/web/showcase.js $@
+	cp $(BUILD)/web/showcase.wasm $(BUILD)/web/game.wasm
+test-page: $(WEB_PAGE_FILES)
+	@for m in $(WEB_PAGE_MODES); do python3 tests/web/run.py page $(BUILD)/web $$m || exit 1; done
+
+# Headless screenshots of the page for the README (SwiftShader WebGL2; and with no WebGL at all)
 web-shot: web
 	@python3 tests/web/run.py shot $(BUILD)/web examples/resources/rbl_web.png 800 450 6000
+	@WEB_CHROMIUM_FLAGS=--disable-webgl python3 tests/web/run.py shot $(BUILD)/web examples/resources/rbl_web_nowebgl.png 640 360 2000
 
 # The browser GPU suite: tests/web/test_web_main.c (tests/test_*.c are included whole: the ones not
 # run in the browser are unused there, hence -Wno-unused-function)

@@ -15,6 +15,7 @@
 #   gpu:            render tests under EGL surfaceless, then under OSMesa (GL 3.3 core), then on
 #                   strict ES 3.0, ES 2.0 and GL 2.1 contexts with raylib built for each
 #   web:            the browser subset in headless Chromium (make test-web alone runs just this)
+#   page:           the showcase page and the README's web shell in headless Chromium (make test-page)
 set -u
 BUILD=${BUILD:-build}
 pass=0; fail=0
@@ -209,6 +210,14 @@ done
 # The browser: the GPU subset built with emscripten, in headless Chromium (WebGL2 on SwiftShader)
 echo "== test_web (headless Chromium over 127.0.0.1, WebGL2 on SwiftShader; tests/web/)"
 out=$(python3 tests/web/run.py test "$BUILD/web/test" 2>&1); printf '%s\n' "$out"; count "$out"
+
+# The showcase page as a web developer would take it (tests/web/page_check.html): sizes and
+# devicePixelRatio, opaque and not blank, input, context loss and restore, the WebGL1 build, no WebGL;
+# then the README's minimal shell as printed. Pictures in $BUILD/web/shots/
+echo "== showcase page (headless Chromium: fills and follows, opaque, input, context loss, no WebGL; README shell)"
+for m in main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2" "nowebgl --disable-webgl" shell "shellnowebgl --disable-webgl"; do
+  out=$(python3 tests/web/run.py page "$BUILD/web" $m 2>&1); printf '%s\n' "$out"; count "$out"
+done
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
