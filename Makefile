@@ -124,7 +124,7 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" RAYLIB_MASTER="$(RAYLIB_MASTER)" bash tests/run.sh
 
 # raylib master's source for make test's optional check against its headers (needs the network;
@@ -154,6 +154,10 @@ $(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_def
 $(BUILD)/sprites_headless: tests/tools/sprites_headless.c examples/shaders_lit_sprite_sheet.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/sprites_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/game_headless: tests/tools/game_headless.c examples/shaders_lit_sprite_game.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/game_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
@@ -230,7 +234,8 @@ bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,eg
 
 clean:
 	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/cmake_readme_* $(BUILD)/setup_check $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
-	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
+	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png \
+	  $(BUILD)/sprites_headless $(BUILD)/sprites.png $(BUILD)/game_headless $(BUILD)/game.png
 
 clean-all:
 	rm -rf $(BUILD)
@@ -315,10 +320,13 @@ $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.m
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-pictures: $(BUILD)/pictures $(BUILD)/deferred_headless run
+pictures: $(BUILD)/pictures $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless run
 	@mkdir -p examples/resources
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png
 	@cp examples/resources/rbl_showcase.png examples/shaders_lit_billboards.png && echo "pictures: wrote examples/shaders_lit_billboards.png"
 	@cp examples/resources/rbl_deferred.png examples/shaders_deferred_billboards.png && echo "pictures: wrote examples/shaders_deferred_billboards.png"
+	@$(BUILD)/sprites_headless examples/shaders_lit_sprite_sheet.png | sed 's/^/pictures: /'
+	@$(BUILD)/game_headless examples/shaders_lit_sprite_game.png examples | sed 's/^/pictures: /'
+	@cp examples/shaders_lit_sprite_game.png examples/resources/rbl_game.png && echo "pictures: wrote examples/resources/rbl_game.png"

@@ -147,6 +147,15 @@ else
   echo "  FAIL  sprite-sheet example renders headlessly"; printf '%s\n' "$out" | head -20; fail=$((fail + 1))
 fi
 
+# The lit sprite game (Kenney's CC0 sheets from examples/resources) renders headlessly; the tool checks
+# both atlases read as exported, the walk cycle advances, and the robot, the moon's shadows and the
+# smoke each change the picture
+if out=$("$BUILD/game_headless" "$BUILD/game.png" examples 2>&1) && [ -s "$BUILD/game.png" ]; then
+  echo "  ok    lit sprite game example renders headlessly"; printf '%s\n' "$out" | grep -v '^INFO' | sed 's/^/    /'; pass=$((pass + 1))
+else
+  echo "  FAIL  lit sprite game example renders headlessly"; printf '%s\n' "$out" | grep -v '^INFO' | head -20; fail=$((fail + 1))
+fi
+
 # Static check of every spliced stage in every dialect (330, 300 es, 120, 100). glslangValidator
 # checks syntax and types per #version; it does not enforce GLSL ES 1.00's Appendix A indexing limits,
 # which the strict ES 2.0 run below exercises on Mesa.
