@@ -554,7 +554,7 @@
     #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
 #endif
 #ifndef RBL_SHADER_CACHE_SIZE
-    #define RBL_SHADER_CACHE_SIZE 32            // Lit shader variants reused instead of recompiled
+    #define RBL_SHADER_CACHE_SIZE 1024          // Programs the registry may hold (lit programs, casters, G-buffer passes)
 #endif
 #ifndef RBL_BATCH_DEFAULT_CAPACITY
     #define RBL_BATCH_DEFAULT_CAPACITY 1024     // Billboards reserved by RblLoadBatch(0)
@@ -656,6 +656,7 @@ typedef struct RblCameraFrame {
     Vector3 right;                  // View matrix row 0 (unit)
     Vector3 up;                     // View matrix row 1 (unit)
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
+    bool orthographic;              // Parallel view (CAMERA_ORTHOGRAPHIC): the eye is at infinity along back, facing modes turn toward back
 } RblCameraFrame;
 
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
@@ -672,6 +673,7 @@ typedef struct RblBatch {
     int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
     int count;                      // Billboards added since RblBeginBatch()
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__BatchState *state;  // The header's: vertices, material runs, GL buffers, camera frame (NULL = not loaded)
 } RblBatch;
 
@@ -701,6 +703,7 @@ typedef struct RblInstancedDesc {
 typedef struct RblInstanceBuffer {
     int capacity;                   // Instances reserved (doubles with a log line when a draw needs more)
     int skipped;                    // Instances skipped for bad input in the last draw
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__InstanceBufferState *state; // The header's: GPU buffers, staging copy (NULL = not loaded)
 } RblInstanceBuffer;
 
@@ -908,6 +911,7 @@ typedef struct RblGBuffer {
     bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__GBufferState *state; // The header's: framebuffers, pass programs, light volumes, camera (NULL = not loaded)
 } RblGBuffer;
 
@@ -927,6 +931,7 @@ typedef struct RblShadowMap {
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__ShadowMapState *state; // The header's: framebuffer, light camera and matrices, pass state (NULL = not loaded)
 } RblShadowMap;
 
@@ -1184,19 +1189,22 @@ typedef struct rbl__MaterialValues {
 // One entry of the program registry
 typedef struct rbl__Program {
     rbl__ProgramKey key;
-    Shader shader;                  // Program and the registry's own raylib locs (handles get copies)
+    Shader shader;                  // Program and the registry's own raylib locs (every draw reads these, never a Material's)
+    const int *handleLocs;          // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
     int loc[RBL__U_COUNT];          // Uniform locations
-    int refs;                       // Holders: RblLoadLitShader handles, shadow maps, G-buffers
+    int refs;                       // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
     rbl__MaterialValues values;     // Last per-draw values uploaded
     int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
     bool valuesValid;
+    bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
 } rbl__Program;
 
-// A Shader handed out by RblLoadLitShader: its locs array is that holder's (raylib's UnloadShader frees it)
-typedef struct rbl__Handle {
-    int *locs;
+// A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
+// by the pair (stale Shader copies)
+typedef struct rbl__DeadHandle {
     unsigned int id;
-} rbl__Handle;
+    const int *locs;
+} rbl__DeadHandle;
 
 // A run of billboards sharing one material inside a batch
 // A billboard's place in a sorted batch
@@ -1243,6 +1251,7 @@ typedef struct rbl__BatchState {
     bool orthographic;              // The camera's projection (which side of a quad it sees)
     bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
+    unsigned int pass;              // The pass it began in (rbl__passNow): added to and ended in that one only
     // The optional fade stream (16 floats per billboard: rbl__fadeVertices), allocated when the first
     // billboard with a fade weight arrives; a batch without one uploads and binds nothing more
     float *fade;                    // Per billboard since RblBeginBatch() while fading (capacity billboards)
@@ -1285,6 +1294,10 @@ typedef struct rbl__GBufferState {
     Vector3 eye;
     float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
     bool ambientNoted;              // A later scene's other ambient was logged once
+    bool geometryDone;              // A geometry pass filled the targets (since load or the last resize)
+    bool follow;                    // Loaded with size 0: takes its target's size at each RblBeginGBuffer
+    bool sizeNoted;                 // A resolve into a target of another size was logged (until sizes match again)
+    unsigned int savedFramebuffer;  // The caller's target at RblBeginGBuffer, restored by RblEndGBuffer
     bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
 } rbl__GBufferState;
 
@@ -1326,29 +1339,50 @@ typedef struct rbl__Scene {
     float exposure;
     int shadowCount;
     int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
+    unsigned int shadowId[RBL_MAX_SHADOWS];         // Each map's object id (an unload drops it from the scene)
+    bool shadowDropped;                             // A map was unloaded after RblSetScene: its light draws unshadowed
+    bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
+    bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
     float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
+// One slot of the loaded-object table (rbl__liveAdd)
+typedef struct rbl__Live {
+    unsigned int id;                // The object's id (0 = free slot)
+    const void *state;              // Its private state
+} rbl__Live;
+
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
 typedef struct rbl__State {
-    rbl__Program programs[RBL_SHADER_CACHE_SIZE];   // The one program registry (refs == 0: free slot)
-    rbl__Handle *handles;           // Live RblLoadLitShader handles
-    int handleCount;
-    int handleCapacity;
+    rbl__Program **programs;        // The one program registry (each entry allocated: pointers stay valid as it grows)
+    int programCount;
+    int programCapacity;
+    rbl__DeadHandle *dead;          // Lit handles that died, so their copies are refused (freed by RblClose)
+    int deadCount;
+    int deadCapacity;
+    int **quarantine;               // Locations arrays of handles RblUnloadLitShader released: kept allocated so no later
+    int quarantineCount;            // allocation takes their address while a stale copy may hold it (freed by RblClose)
+    int quarantineCapacity;
+    void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
+    void *glGetUniformfv;           // ... and glGetUniformfv
+    bool glLooked;
+    bool closed;                    // RblClose ran: the tables go with the last object the caller holds
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
-    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
+    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
+    RblShadowMap shadowPassMap;     // ... the map as it began (the caller's struct is never held)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
-    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
+    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
+    RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
-    const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
-    int liveCount;
+    rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
+    int liveCount;                  // Slots used (free ones are reused)
     int liveCapacity;
 } rbl__State;
 
@@ -1390,42 +1424,77 @@ static const char *rbl__needsGlsl3(const char *feature)
     return rbl__state.problem;
 }
 
-// Loaded objects' private states: validity is membership, so a stale copy's pointer (its object
-// unloaded) is recognised without being dereferenced
-static bool rbl__liveAdd(void *object)
+// Objects handed out (batches, instance buffers, G-buffers, shadow maps) are named by id: slot + 1 in
+// the low 16 bits, a serial above. A stale copy (its object unloaded, its slot or its state's
+// address perhaps taken by another since) carries an id no live object has, so it is recognised
+// without dereferencing anything it holds. The serial outlives RblClose: no id repeats across it.
+static unsigned int rbl__serial = 0;
+
+// Whether GL may be called: raylib's window is open, or the header never saw one (a context made
+// another way, e.g. rlglInit on a headless context). After CloseWindow the context is gone: unloads
+// and RblClose then free memory only (both survive RblClose, as the serial)
+static bool rbl__sawWindow = false;
+static bool rbl__glUsable(void)
 {
-    if (rbl__state.liveCount == rbl__state.liveCapacity)
+    if (IsWindowReady()) { rbl__sawWindow = true; return true; }
+    return !rbl__sawWindow;
+}
+
+// Registers a loaded object's state; its id, or 0 when out of memory or slots
+static unsigned int rbl__liveAdd(const void *state)
+{
+    int slot = -1;
+    for (int i = 0; (i < rbl__state.liveCount) && (slot < 0); i++) if (rbl__state.live[i].id == 0) slot = i;
+    if (slot < 0)
     {
-        int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
-        const void **live = (const void **)RBL_REALLOC((void *)rbl__state.live, (size_t)capacity*sizeof(void *));
-        if (live == NULL) return false;
-        rbl__state.live = live;
-        rbl__state.liveCapacity = capacity;
+        if (rbl__state.liveCount >= 0xFFFF) return 0;
+        if (rbl__state.liveCount == rbl__state.liveCapacity)
+        {
+            int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
+            rbl__Live *live = (rbl__Live *)RBL_REALLOC(rbl__state.live, (size_t)capacity*sizeof(rbl__Live));
+            if (live == NULL) return 0;
+            rbl__state.live = live;
+            rbl__state.liveCapacity = capacity;
+        }
+        slot = rbl__state.liveCount++;
     }
-    rbl__state.live[rbl__state.liveCount++] = object;
-    return true;
+    rbl__serial = (rbl__serial + 1u) & 0xFFFFu;
+    if (rbl__serial == 0u) rbl__serial = 1u;
+    rbl__state.closed = false;      // used again after RblClose
+    rbl__state.live[slot].id = (rbl__serial << 16) | (unsigned int)(slot + 1);
+    rbl__state.live[slot].state = state;
+    return rbl__state.live[slot].id;
 }
 
-static void rbl__liveRemove(const void *object)
+// The slot id names, or -1 (id 0 and ids of empty or reused slots included)
+static int rbl__liveSlot(unsigned int id)
 {
-    for (int i = 0; i < rbl__state.liveCount; i++)
-        if (rbl__state.live[i] == object) { rbl__state.live[i] = rbl__state.live[--rbl__state.liveCount]; return; }
+    unsigned int slot = (id & 0xFFFFu) - 1u;
+    return ((id != 0u) && (slot < (unsigned int)rbl__state.liveCount) && (rbl__state.live[slot].id == id))? (int)slot : -1;
 }
 
-static bool rbl__isLive(const void *object)
+static void rbl__liveRemove(unsigned int id)
 {
-    if (object == NULL) return false;
-    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i] == object) return true;
-    return false;
+    int slot = rbl__liveSlot(id);
+    if (slot >= 0) { rbl__state.live[slot].id = 0; rbl__state.live[slot].state = NULL; }
 }
 
-// An unload's holder check: true when holder's state is live; otherwise one line under fn (NULL
+// Whether (id, state) is a loaded object: the id first, then its state pointer compared (not read)
+static bool rbl__isLive(unsigned int id, const void *state)
+{
+    int slot = rbl__liveSlot(id);
+    return (slot >= 0) && (state != NULL) && (rbl__state.live[slot].state == state);
+}
+
+// An unload's holder check: true when holder's object is live; otherwise one line under fn (NULL
 // holder, zero holder, stale copy) and false
-static bool rbl__unloadable(const void *holder, const void *state, const char *fn, const char *what)
+static void rbl__tidyAfterClose(void);
+
+static bool rbl__unloadable(const void *holder, unsigned int id, const void *state, const char *fn, const char *what)
 {
     if (holder == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL %s", fn, what); return false; }
-    if (rbl__isLive(state)) return true;
-    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, (state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+    if (rbl__isLive(id, state)) return true;
+    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, ((id != 0) || (state != NULL))? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
     return false;
 }
 
@@ -2304,20 +2373,21 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS\n",
     "// billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,\n",
     "// a vector v and a fallback f, one blend follows, then the frame is built.\n",
-    "void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
+    "void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
     "                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)\n",
     "{\n",
     "    r = viewRight; u = viewUp; n = viewBack;\n",
+    "    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity\n",
     "    vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);\n",
     "    bool own = true;\n",
     "    if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }\n",
-    "    else if (facing == 1) { own = rblNormalizeTo(eye - position, axis); f = cross(axis, r); }\n",
+    "    else if (facing == 1) { own = rblNormalizeTo(toEye, axis); f = cross(axis, r); }\n",
     "    else if (facing == 2)\n",
     "    {\n",
     "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);\n",
     "        vec3 q;\n",
     "        float wb = rblOffAxis(viewBack, a, q);\n",
-    "        axis = a; v = eye - position; f = rblBlendOffAxis(q, wb, viewUp, a);\n",
+    "        axis = a; v = toEye; f = rblBlendOffAxis(q, wb, viewUp, a);\n",
     "    }\n",
     "    else\n",
     "    {\n",
@@ -2452,7 +2522,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
     "    vec3 r, u, n;\n",
-    "    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
+    "    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
     "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
     "    // Rotate the frame around the normal (raylib rotates the corners; same result)\n",
     "    if (rblInstancePosition.w != 0.0)\n",
@@ -3071,6 +3141,8 @@ static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsB
 // Instance floats and any rotation: values of 2^120 (1.3e36, exponent field 127 + 120) or more could
 // overflow float once the GPU combines them: rejected like NaN
 #define RBL__INSTANCE_LIMIT_EXPONENT 247u
+// CAMERA_PLANE's caller up, whose length scales the quad's height (as raylib's): below 2^30
+#define RBL__UP_LIMIT_EXPONENT 157u
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
@@ -3117,15 +3189,21 @@ static Matrix rbl__identity(void)
 // Back to framebuffer fbo with a viewport covering it. rlgl's framebuffer size is the last render
 // texture's after EndTextureMode (raylib does not reset it), so the screen's size comes from the
 // window when there is one (headless rlglInit contexts have none: rlgl's size is the screen's there)
+// Size of the target draws go to now: inside BeginTextureMode rlgl's framebuffer size (the
+// texture's); on the screen raylib's render size (rlgl keeps the last texture's after EndTextureMode
+// and never hears of window resizes), or rlgl's where there is no raylib window (headless contexts)
+static void rbl__targetSize(unsigned int fbo, int *w, int *h)
+{
+    *w = rlGetFramebufferWidth(); *h = rlGetFramebufferHeight();
+    if ((fbo == 0) && (GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { *w = GetRenderWidth(); *h = GetRenderHeight(); }
+}
+
 static void rbl__restoreTarget(unsigned int fbo)
 {
-    int w = rlGetFramebufferWidth(), h = rlGetFramebufferHeight();
-    if (fbo != 0) rlEnableFramebuffer(fbo);     // inside BeginTextureMode: rlgl's size is that texture's
-    else
-    {
-        rlDisableFramebuffer();
-        if ((GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { w = GetRenderWidth(); h = GetRenderHeight(); }
-    }
+    int w, h;
+    rbl__targetSize(fbo, &w, &h);
+    if (fbo != 0) rlEnableFramebuffer(fbo);
+    else rlDisableFramebuffer();
     rlViewport(0, 0, w, h);
 }
 
@@ -3274,6 +3352,7 @@ static RblCameraFrame rbl__cameraFrame(Camera3D camera)
     view.right = rbl__v3((float)r[0], (float)r[1], (float)r[2]);
     view.up = rbl__v3((float)(b[1]*r[2] - b[2]*r[1]), (float)(b[2]*r[0] - b[0]*r[2]), (float)(b[0]*r[1] - b[1]*r[0]));
     view.back = rbl__v3((float)b[0], (float)b[1], (float)b[2]);
+    view.orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     return view;
 }
 
@@ -3282,7 +3361,7 @@ RblCameraFrame RblGetCameraFrame(Camera3D camera)
     if (!rbl__cameraOk(camera))
     {
         TraceLog(LOG_WARNING, "RBL: RblGetCameraFrame: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection; identity frame returned");
-        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f } };
+        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f }, false };
         return view;
     }
     return rbl__cameraFrame(camera);
@@ -3310,6 +3389,18 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
     memcpy(cosOut, &rc, sizeof(rc));
 }
 
+// A caller's direction (FIXED up and normal, AXIS axis) from any finite vector: a long one is scaled
+// by a power of two (exact) so its squared length cannot overflow; short ones are left (shorter than
+// 1e-12 counts as zero)
+static inline Vector3 rbl__tame(Vector3 v)
+{
+    float m = fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
+    if (!(m > 1e12f)) return v;
+    int e;
+    frexpf(m, &e);
+    return rbl__v3(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
+}
+
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
 // takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
 // (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
@@ -3318,28 +3409,31 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 {
     Vector3 r = view->right, u = view->up, n = view->back;
     Vector3 axis = r, v = u, f = u, a = rbl__v3(0.0f, 1.0f, 0.0f);
+    Vector3 toEye = view->orthographic? view->back : rbl__sub(view->eye, b->position);     // a parallel view's eye is at infinity
     bool own = true;        // false: CAMERA_PLANE without an up, CAMERA_POSITION at the eye (the view's frame)
     switch (b->facing)
     {
         // normal = right x (the caller's up off right), toward the camera's up
         case RBL_FACING_CAMERA_PLANE: own = rbl__len2(b->up) > 1e-24f; v = b->up; break;
         // n toward the eye; up = the camera's up off n, toward n x right (the centre on the camera's up line)
-        case RBL_FACING_CAMERA_POSITION: own = rbl__normalizeTo(rbl__sub(view->eye, b->position), &axis); f = rbl__cross(axis, r); break;
+        case RBL_FACING_CAMERA_POSITION: own = rbl__normalizeTo(toEye, &axis); f = rbl__cross(axis, r); break;
         // n = toward the eye off the axis, toward the view's back off the axis, itself toward the view's
         // up off the axis where the view looks along it (up and back are never both near it)
         case RBL_FACING_AXIS:
         {
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);    // shorter counts as zero (a GPU may flush it)
+            Vector3 given = rbl__tame(b->axis);
+            if (rbl__len2(given) > 1e-24f) rbl__normalizeTo(given, &a);    // shorter counts as zero (a GPU may flush it)
             Vector3 q;
             float wb = rbl__offAxis(view->back, a, &q);
-            axis = a; v = rbl__sub(view->eye, b->position); f = rbl__blendOffAxis(q, wb, view->up, a);
+            axis = a; v = toEye; f = rbl__blendOffAxis(q, wb, view->up, a);
         } break;
         // up off the normal, toward the normal's fallback up
         case RBL_FACING_FIXED:
         {
+            Vector3 normal = rbl__tame(b->axis), up = rbl__tame(b->up);
             axis = rbl__v3(0.0f, 0.0f, 1.0f);
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &axis);
-            v = (rbl__len2(b->up) > 1e-24f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
+            if (rbl__len2(normal) > 1e-24f) rbl__normalizeTo(normal, &axis);
+            v = (rbl__len2(up) > 1e-24f)? up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
         } break;
         default: own = false; break;
     }
@@ -3463,6 +3557,8 @@ static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textur
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
     if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
         !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
+    if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
     return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__fadeOk(&b->fade, RBL__BILLBOARD_LIMIT_EXPONENT);
 }
 
@@ -3663,6 +3759,9 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
+static void rbl__removeProgram(rbl__Program *p);
+static void rbl__noteDroppedShadow(void);
+static void rbl__markDrawn(const rbl__Program *p);
 
 static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
@@ -3692,6 +3791,7 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
+    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
@@ -3702,10 +3802,19 @@ static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 
 static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
 
+// The pass in progress: the shadow map's or G-buffer's id, 0 for a colour pass. A batch collects for
+// one pass (its frame and programs are that pass's)
+static unsigned int rbl__passNow(void)
+{
+    if (rbl__state.shadowPass != NULL) return rbl__state.shadowPass->id;
+    if (rbl__state.gbufferPass != NULL) return rbl__state.gbufferPass->id;
+    return 0;
+}
+
 // The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
 static rbl__BatchState *rbl__batchState(const RblBatch *batch)
 {
-    return ((batch != NULL) && rbl__isLive(batch->state))? batch->state : NULL;
+    return ((batch != NULL) && rbl__isLive(batch->id, batch->state))? batch->state : NULL;
 }
 
 static void rbl__freeBatchState(rbl__BatchState *b)
@@ -3741,7 +3850,8 @@ RblBatch RblLoadBatch(int capacity)
     }
     b->capacity = capacity;
     rbl__loadBatchGpu(b);
-    if ((b->vaoId == 0) || (b->vboId == 0) || (b->eboId == 0) || !rbl__liveAdd(b))
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0) && (b->eboId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadBatch: GPU buffers could not be created (no GL context?)");
         rbl__freeBatchState(b);
@@ -3749,6 +3859,7 @@ RblBatch RblLoadBatch(int capacity)
     }
     batch.capacity = capacity;
     batch.state = b;
+    batch.id = id;
     return batch;
 }
 
@@ -3759,10 +3870,11 @@ bool RblIsBatchValid(RblBatch batch)
 
 void RblUnloadBatch(RblBatch *batch)
 {
-    if (!rbl__unloadable(batch, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
-    rbl__liveRemove(batch->state);
+    if (!rbl__unloadable(batch, (batch != NULL)? batch->id : 0, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
+    rbl__liveRemove(batch->id);
     rbl__freeBatchState(batch->state);
     memset(batch, 0, sizeof(*batch));
+    if (batch != &rbl__state.immediate) rbl__tidyAfterClose();
 }
 
 bool RblBeginBatch(RblBatch *pub, Camera3D camera)
@@ -3785,14 +3897,15 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->runCount = 0;
     batch->skipped = 0;
     batch->begun = true;
+    batch->pass = rbl__passNow();
     pub->count = 0; pub->skipped = 0;
     return true;
 }
 
+// Whether b continues a's run: compares pointers before reading a's maps (b's are the same array)
 static bool rbl__sameMaterial(const Material *a, const Material *b)
 {
-    if ((a->shader.id != b->shader.id) || (a->maps != b->maps)) return false;
-    if (a->maps == NULL) return true;
+    if ((a->shader.id != b->shader.id) || (a->shader.locs != b->shader.locs) || (a->maps != b->maps) || (a->maps == NULL)) return false;
     return (a->maps[MATERIAL_MAP_ALBEDO].texture.id == b->maps[MATERIAL_MAP_ALBEDO].texture.id) &&
            (a->maps[MATERIAL_MAP_METALNESS].texture.id == b->maps[MATERIAL_MAP_METALNESS].texture.id) &&
            (a->maps[MATERIAL_MAP_NORMAL].texture.id == b->maps[MATERIAL_MAP_NORMAL].texture.id) &&
@@ -3821,7 +3934,12 @@ static bool rbl__growBatch(rbl__BatchState *batch)
 bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return false; }
+    if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+                 "the batch began in another pass (shadow map, G-buffer or colour): add and end it in the pass it began in");
+        return false;
+    }
     bool added = rbl__batchAdd(batch, material, billboard, "RblBatchAdd");
     pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
     return added;
@@ -3835,12 +3953,12 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         return false;
     }
 
-    int texW, texH;
-    rbl__albedoSize(&material, &texW, &texH);
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
     rbl__Program *program = NULL;
     const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
+    int texW = 1, texH = 1;
+    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);       // the maps are read once the shader is known live
     if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
         bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL)
@@ -3900,11 +4018,6 @@ static unsigned int rbl__bindMaterial(const Material *material)
     if (sh.locs[SHADER_LOC_MATRIX_NORMAL] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_NORMAL], rbl__identity());
     if (sh.locs[SHADER_LOC_MATRIX_VIEW] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_VIEW], view);
     if (sh.locs[SHADER_LOC_MATRIX_PROJECTION] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_PROJECTION], proj);
-    if (material->maps == NULL)
-    {
-        rlActiveTextureSlot(0); rlEnableTexture(rlGetTextureIdDefault());
-        return 1u;
-    }
     if (sh.locs[SHADER_LOC_COLOR_DIFFUSE] != -1)
     {
         Color c = material->maps[MATERIAL_MAP_ALBEDO].color;
@@ -4062,6 +4175,7 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         }
         rlDrawVertexArrayElements(0, n*6, 0);
     }
+    if (program != NULL) rbl__markDrawn(program);
 }
 
 // One pass over the uploaded quads: the runs in order, or (sorted) each stretch of consecutive
@@ -4081,7 +4195,12 @@ static void rbl__drawBatchPass(const rbl__BatchState *batch, bool sorted, const 
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return; }
+    if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+                 "the batch began in another pass (shadow map, G-buffer or colour): end it in the pass it began in");
+        return;
+    }
     batch->begun = false;
     if ((pub->sort < RBL_SORT_NONE) || (pub->sort > RBL_SORT_HYBRID) || !rbl__finite(pub->solidAlpha) || (pub->solidAlpha < 0.0f) || (pub->solidAlpha > 1.0f))
     {
@@ -4157,10 +4276,10 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     RblBatch *immediate = &rbl__state.immediate;
     // Everything is checked before the one-quad batch is touched (or created on first use)
     rbl__Program *program = NULL;
-    int texW, texH;
-    rbl__albedoSize(&material, &texW, &texH);
+    int texW = 1, texH = 1;
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
                       rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program);
+    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);
     if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
     if (immediate->state == NULL)
@@ -4173,23 +4292,38 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     rbl__endBatch(immediate, "RblDrawBillboard");
 }
 
+// After RblClose, the module's tables go with the last object the caller still holds (nothing loaded
+// and no lit program left): the next load starts afresh
+static void rbl__tidyAfterClose(void)
+{
+    if (!rbl__state.closed || (rbl__state.programCount > 0)) return;
+    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i].id != 0) return;
+    for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
+    RBL_FREE(rbl__state.quarantine);
+    RBL_FREE(rbl__state.dead);
+    RBL_FREE(rbl__state.programs);
+    RBL_FREE(rbl__state.live);
+    memset(&rbl__state, 0, sizeof(rbl__state));
+}
+
 void RblClose(void)
 {
+    // The header's own resources go now (GL objects only while a context exists); what the caller
+    // holds (batches, instance buffers, G-buffers, shadow maps) stays valid until its own unload, before
+    // or after this, before or after CloseWindow
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
-    // Programs still held: deleted with their holders' locations (call RblClose after your own
-    // UnloadMaterial/RblUnloadLitShader calls: a Shader unloaded afterwards would be freed twice)
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-    {
-        rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs == 0) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
-        UnloadShader(p->shader);
-    }
-    for (int i = 0; i < rbl__state.handleCount; i++) MemFree(rbl__state.handles[i].locs);
-    RBL_FREE(rbl__state.handles);
-    RBL_FREE((void *)rbl__state.live);
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
-    memset(&rbl__state, 0, sizeof(rbl__state));
+    memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
+    // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
+    // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
+    for (int i = rbl__state.programCount - 1; i >= 0; i--)
+        if (rbl__state.programs[i]->key.kind == RBL__KIND_LIT) rbl__removeProgram(rbl__state.programs[i]);
+    for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
+    RBL_FREE(rbl__state.quarantine); RBL_FREE(rbl__state.dead);
+    rbl__state.quarantine = NULL; rbl__state.dead = NULL;
+    rbl__state.quarantineCount = rbl__state.quarantineCapacity = rbl__state.deadCount = rbl__state.deadCapacity = 0;
+    rbl__state.closed = true;
+    rbl__tidyAfterClose();
 }
 
 //----------------------------------------------------------------------------------
@@ -4216,6 +4350,7 @@ static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
 
 static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 {
+    if (!rbl__glUsable()) b->vaoId = b->vboId = b->fadeVboId = 0;        // gone with the context
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
     if (b->fadeVboId != 0) rlUnloadVertexBuffer(b->fadeVboId);
@@ -4229,7 +4364,7 @@ static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 // The state of a loaded instance buffer, or NULL (never dereferences a stale copy's pointer)
 static rbl__InstanceBufferState *rbl__instanceState(const RblInstanceBuffer *buffer)
 {
-    return ((buffer != NULL) && rbl__isLive(buffer->state))? buffer->state : NULL;
+    return ((buffer != NULL) && rbl__isLive(buffer->id, buffer->state))? buffer->state : NULL;
 }
 
 RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
@@ -4249,7 +4384,8 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     }
     b->capacity = capacity;
     rbl__loadInstanceGpu(b);
-    if ((b->vaoId == 0) || (b->vboId == 0) || !rbl__liveAdd(b))
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: GPU buffers could not be created (no GL context?)");
         rbl__freeInstanceState(b);
@@ -4257,6 +4393,7 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     }
     buffer.capacity = capacity;
     buffer.state = b;
+    buffer.id = id;
     return buffer;
 }
 
@@ -4267,10 +4404,11 @@ bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
 
 void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
 {
-    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
-    rbl__liveRemove(buffer->state);
+    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->id : 0, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
+    rbl__liveRemove(buffer->id);
     rbl__freeInstanceState(buffer->state);
     memset(buffer, 0, sizeof(*buffer));
+    rbl__tidyAfterClose();
 }
 
 // The 12 floats (position .. source) hold no NaN, Inf or |value| >= 2^120
@@ -4366,11 +4504,15 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID))
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID) ||
+        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
     {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i or NaN/Inf vectors)", desc.facing, desc.sort);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i, NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
         return 0;
     }
+    // Directions only (FIXED up and normal, AXIS axis): long ones scaled, as the CPU does
+    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
+    desc.axis = rbl__tame(desc.axis);
     rbl__Program *checked = NULL;
     const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
@@ -4480,7 +4622,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
         desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
-        desc.axis.x, desc.axis.y, desc.axis.z, (camera.projection == CAMERA_ORTHOGRAPHIC)? 1.0f : 0.0f,
+        desc.axis.x, desc.axis.y, desc.axis.z, view.orthographic? 1.0f : 0.0f,
         rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
     // Quads seen from behind are drawn, as in the batch: culling off for this draw only
     bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
@@ -4507,6 +4649,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rlDrawVertexArrayInstanced(0, 6, n);
+    rbl__markDrawn(program);
     if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -5805,61 +5948,184 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 //----------------------------------------------------------------------------------
 // Module Internal Functions: the program registry
 //----------------------------------------------------------------------------------
-// Every program the header compiles is one registry entry, keyed by what changes the code; raylib's
-// UnloadShader (as UnloadMaterial calls it) may delete a lit program behind the registry's back, so
-// entries handed to users are checked before use (a deleted or reused id no longer answers with the
-// registry's location of rblAlphaCutoff, which every lit and caster variant declares)
+// Every program the header compiles is one registry entry, keyed by what changes the code. Lit
+// programs go out one per RblLoadLitShader call, each its own GL program, so raylib's UnloadShader
+// or UnloadMaterial on one copy deletes that program alone (as with raylib's LoadShader); casters
+// and G-buffer passes are the header's own, shared by key among their holders. raylib may delete a
+// lit program behind the registry's back: an entry is checked against GL before a draw uses it.
+
+// GL name queries rlgl does not wrap, through raylib's loader (desktop, ES and WebGL all have them)
+#if defined(_WIN32)
+    #define RBL__GLAPI __stdcall
+#else
+    #define RBL__GLAPI
+#endif
+typedef unsigned char (RBL__GLAPI *rbl__GlIsName)(unsigned int name);
+enum { RBL__GL_PROGRAM = 0, RBL__GL_TEXTURE, RBL__GL_VERTEX_ARRAY, RBL__GL_QUERIES };
+
+// Whether name is a live GL object of that kind; true where the loader gives no query (cannot tell)
+static bool rbl__glIsLive(int which, unsigned int name)
+{
+    if (name == 0) return false;
+    if (!rbl__glUsable()) return true;          // no context to ask
+    // rlGetProcAddress calls raylib's loader, which exists once rlgl is up (its default texture made)
+    if (!rbl__state.glLooked && (rbl__glsl() != 0) && (rlGetTextureIdDefault() != 0))
+    {
+        rbl__state.glIs[RBL__GL_PROGRAM] = rlGetProcAddress("glIsProgram");
+        rbl__state.glIs[RBL__GL_TEXTURE] = rlGetProcAddress("glIsTexture");
+        rbl__state.glIs[RBL__GL_VERTEX_ARRAY] = (rbl__glsl() >= 300)? rlGetProcAddress("glIsVertexArray") : NULL;
+        rbl__state.glGetUniformfv = rlGetProcAddress("glGetUniformfv");
+        rbl__state.glLooked = true;
+    }
+    if (rbl__state.glIs[which] == NULL) return true;
+    rbl__GlIsName is;
+    memcpy(&is, &rbl__state.glIs[which], sizeof(is));       // ISO C: no cast between object and function pointers
+    return is(name) != 0;
+}
+
+// A lit program is live while GL still has it as the header compiled it: a deleted id, or one GL
+// gave to another program since, no longer answers with the registry's location of rblAlphaCutoff
+// (every lit and caster variant declares it). Casters and passes never leave the header.
 static bool rbl__programAlive(const rbl__Program *p)
 {
-    if (p->key.kind == RBL__KIND_PASS) return true;         // never handed out
-    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
+    if ((p->key.kind != RBL__KIND_LIT) || !rbl__glUsable()) return true;     // no context: nothing to ask
+    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && rbl__glIsLive(RBL__GL_PROGRAM, p->shader.id) &&
+           (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
 }
 
-// Forget handles of program id (their locs were freed with it, or belong to holders who unload them)
-static void rbl__dropHandles(unsigned int id)
+// raylib's DrawModel/DrawMesh upload a lit program's colDiffuse, matrices and textures, none of the
+// header's material values. Each header draw leaves a sentinel in the program's mvp (raylib's draws
+// always overwrite it) and the next header use reads it back: anything else means raylib drew with
+// the program since, with the values the last header draw left (said once a program)
+typedef void (RBL__GLAPI *rbl__GlGetUniformfv)(unsigned int program, int location, float *params);
+static Matrix rbl__mvpSentinel(void)
 {
-    int n = 0;
-    for (int i = 0; i < rbl__state.handleCount; i++) if (rbl__state.handles[i].id != id) rbl__state.handles[n++] = rbl__state.handles[i];
-    rbl__state.handleCount = n;
+    Matrix m;
+    memset(&m, 0, sizeof(m));
+    m.m15 = -8.125f;
+    return m;
 }
 
-// A program deleted outside the header: its entry goes (the GL name is not deleted again)
+// After a header draw with p (bound): the sentinel
+static void rbl__markDrawn(const rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind == RBL__KIND_LIT) && !p->raylibNoted && (loc != -1)) rlSetUniformMatrix(loc, rbl__mvpSentinel());
+}
+
+// Before a header use of p: whether raylib drew with it since the last header draw
+static void rbl__checkRaylibDrew(rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind != RBL__KIND_LIT) || p->raylibNoted || (loc == -1) || (rbl__state.glGetUniformfv == NULL) || !rbl__glUsable()) return;
+    rbl__GlGetUniformfv get;
+    memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
+    float m[16];
+    get(p->shader.id, loc, m);
+    bool sentinel = (m[15] == -8.125f);
+    for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
+    if (sentinel) return;
+    TraceLog(LOG_WARNING, "RBL: lit program %u was drawn by raylib's DrawModel/DrawMesh, which uploads colDiffuse, matrices and textures only: "
+                          "roughness, metalness, shininess, specular, emission and alpha cutoff were the last header draw's (draw Models with RblDrawModel/RblDrawMesh)", p->shader.id);
+    p->raylibNoted = true;
+}
+
+static bool rbl__buried(unsigned int id, const int *locs)
+{
+    for (int i = 0; i < rbl__state.deadCount; i++) if ((rbl__state.dead[i].id == id) && (rbl__state.dead[i].locs == locs)) return true;
+    return false;
+}
+
+// Remembers a dead handle so its copies are refused (out of memory: forgotten, the GL probe remains)
+static void rbl__bury(unsigned int id, const int *locs)
+{
+    if (rbl__buried(id, locs)) return;
+    if (rbl__state.deadCount == rbl__state.deadCapacity)
+    {
+        int capacity = (rbl__state.deadCapacity > 0)? rbl__state.deadCapacity*2 : 16;
+        rbl__DeadHandle *dead = (rbl__DeadHandle *)RBL_REALLOC(rbl__state.dead, (size_t)capacity*sizeof(rbl__DeadHandle));
+        if (dead == NULL) return;
+        rbl__state.dead = dead;
+        rbl__state.deadCapacity = capacity;
+    }
+    rbl__state.dead[rbl__state.deadCount].id = id;
+    rbl__state.dead[rbl__state.deadCount].locs = locs;
+    rbl__state.deadCount++;
+}
+
+// Takes entry p (allocated) out of the registry and frees it and its registry locs
+static void rbl__removeProgram(rbl__Program *p)
+{
+    for (int i = 0; i < rbl__state.programCount; i++)
+    {
+        if (rbl__state.programs[i] != p) continue;
+        rbl__state.programs[i] = rbl__state.programs[--rbl__state.programCount];
+        break;
+    }
+    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
+    RBL_FREE(p);
+}
+
+// A lit program deleted outside the header (raylib's UnloadShader or UnloadMaterial: allowed): its
+// entry goes, its handle is remembered as dead, the GL name is not deleted again
 static void rbl__forgetProgram(rbl__Program *p)
 {
-    TraceLog(LOG_INFO, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
-    rbl__dropHandles(p->shader.id);
-    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
-    memset(p, 0, sizeof(*p));
+    TraceLog(LOG_DEBUG, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
+    if (p->key.kind == RBL__KIND_LIT) rbl__bury(p->shader.id, p->handleLocs);
+    rbl__removeProgram(p);
 }
 
-// Registered lit program id (kind LIT), or NULL. probe: also ask GL that it is still the header's
-// program (loads, scenes and validity checks; draws skip the query, a GL round trip each: a program
-// deleted by raylib's UnloadMaterial went with that Material, and the next load or scene notices)
-static rbl__Program *rbl__findLit(unsigned int id, bool probe)
+// Registered lit program id, or NULL (not checked against GL: rbl__resolveShader does that)
+static rbl__Program *rbl__findLit(unsigned int id)
 {
-    if (id == 0) return NULL;
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; (id != 0) && (i < rbl__state.programCount); i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != RBL__KIND_LIT)) continue;
-        if (probe && !rbl__programAlive(p)) { rbl__forgetProgram(p); return NULL; }
-        return p;
+        rbl__Program *p = rbl__state.programs[i];
+        if ((p->shader.id == id) && (p->key.kind == RBL__KIND_LIT)) return p;
     }
+    return NULL;
+}
+
+// What a Material's shader is to the header: one of its live lit programs (*program), another live
+// program (the caller's own, drawn as raylib would: *program NULL), or not drawable (the reason).
+// Only the Shader's id and locs pointer are compared: a lit program's locs are the registry's.
+static const char *rbl__resolveShader(Shader shader, rbl__Program **program)
+{
+    *program = NULL;
+    if (shader.id == 0) return "the material has no shader (id 0: a zero Material, or a lit program that failed to load or was unloaded)";
+    rbl__Program *p = rbl__findLit(shader.id);
+    if ((p != NULL) && !rbl__programAlive(p)) { rbl__forgetProgram(p); p = NULL; }
+    if (p != NULL)
+    {
+        if (p->handleLocs == shader.locs) { *program = p; return NULL; }
+        return "the shader carries a live lit program's id but not its handle (a stale copy, or a Shader assembled by hand)";
+    }
+    if (rbl__buried(shader.id, shader.locs)) return "a stale copy of a lit shader unloaded earlier (RblUnloadLitShader, UnloadShader or UnloadMaterial)";
+    if (!rbl__glIsLive(RBL__GL_PROGRAM, shader.id)) return "the shader's program does not exist (unloaded?)";
+    if (shader.locs == NULL) return "the shader has no locations (locs NULL)";
     return NULL;
 }
 
 static void rbl__uploadScene(rbl__Program *p);
 
-// Compile a program for key into a free registry slot; NULL (logged) on failure
+// Compile a program for key into a new registry entry; NULL (problem set) on failure
 static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
 {
-    int slot = -1;
-    for (int i = 0; (i < RBL_SHADER_CACHE_SIZE) && (slot < 0); i++) if (rbl__state.programs[i].refs == 0) slot = i;
-    if (slot < 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (rbl__state.programCount >= RBL_SHADER_CACHE_SIZE) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (rbl__state.programCount == rbl__state.programCapacity)
+    {
+        int capacity = (rbl__state.programCapacity > 0)? rbl__state.programCapacity*2 : 16;
+        rbl__Program **programs = (rbl__Program **)RBL_REALLOC(rbl__state.programs, (size_t)capacity*sizeof(rbl__Program *));
+        if (programs == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
+        rbl__state.programs = programs;
+        rbl__state.programCapacity = capacity;
+    }
+    rbl__Program *p = (rbl__Program *)RBL_CALLOC(1, sizeof(rbl__Program));
+    if (p == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
-    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) return NULL;
+    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_PASS)
     {
@@ -5878,14 +6144,14 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
         const char *const *const *fs = (key->kind == RBL__KIND_CASTER)? rbl__pass_shadow_caster_fs : (d->deferred? rbl__pass_gbuffer_fs : rbl__pass_lit_fs);
         shader = rbl__loadShaderVariant(d->instanced? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs, fs, defines);
     }
-    if (shader.id == 0) return NULL;
+    if (shader.id == 0) { RBL_FREE(p); return NULL; }
     // GL hands out the names of deleted programs again: an entry still holding this id was deleted
     // outside the header
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == shader.id)) rbl__forgetProgram(&rbl__state.programs[i]);
+    for (int i = 0; i < rbl__state.programCount; i++)
+        if (rbl__state.programs[i]->shader.id == shader.id) { rbl__forgetProgram(rbl__state.programs[i]); i--; }
 
-    rbl__Program *p = &rbl__state.programs[slot];
-    memset(p, 0, sizeof(*p));
+    rbl__state.programs[rbl__state.programCount++] = p;
+    rbl__state.closed = false;      // used again after RblClose
     p->key = *key;
     p->shader = shader;
     // Samplers exist only where the layout uses them (-1 otherwise), so nothing absent is bound
@@ -5919,6 +6185,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     }
     int none[4] = { -1, -1, -1, -1 };
     if (p->loc[RBL__U_SHADOW_LIGHT] != -1) rlSetUniform(p->loc[RBL__U_SHADOW_LIGHT], none, SHADER_UNIFORM_IVEC4, 1);
+    rbl__markDrawn(p);
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
@@ -5927,31 +6194,31 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     return p;
 }
 
-// Entry for key: the registry's (one more holder) or a new compile; NULL (logged) on failure
+// The header's own program for key (casters, passes): the registry's (one more holder) or a new
+// compile; NULL (problem set) on failure
 static rbl__Program *rbl__acquireProgram(const rbl__ProgramKey *key)
 {
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (memcmp(&p->key, key, sizeof(*key)) != 0)) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); break; }
+        rbl__Program *p = rbl__state.programs[i];
+        if (memcmp(&p->key, key, sizeof(*key)) != 0) continue;
         p->refs++;
         return p;
     }
     return rbl__compileProgram(key);
 }
 
-// One holder fewer; the last one deletes the program
+// One holder fewer of a caster or pass; the last one deletes the program
 static void rbl__releaseProgram(unsigned int id, int kind)
 {
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != kind)) continue;
+        rbl__Program *p = rbl__state.programs[i];
+        if ((p->shader.id != id) || (p->key.kind != kind)) continue;
         if (--p->refs == 0)
         {
-            UnloadShader(p->shader);
-            memset(p, 0, sizeof(*p));
+            if (rbl__glUsable()) rlUnloadShaderProgram(p->shader.id);
+            rbl__removeProgram(p);
         }
         return;
     }
@@ -5975,61 +6242,78 @@ Shader RblLoadLitShader(RblLitShaderDesc desc)
     RblLitShaderDesc normalised;
     const char *bad = rbl__normaliseLitDesc(desc, &normalised);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad); return none; }
-    if (rbl__state.handleCount == rbl__state.handleCapacity)
-    {
-        int capacity = (rbl__state.handleCapacity > 0)? rbl__state.handleCapacity*2 : 16;
-        rbl__Handle *handles = (rbl__Handle *)RBL_REALLOC(rbl__state.handles, (size_t)capacity*sizeof(rbl__Handle));
-        if (handles == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
-        rbl__state.handles = handles;
-        rbl__state.handleCapacity = capacity;
-    }
-    // The holder's own copy of the locations: raylib's UnloadShader frees a Shader's locs, so no two
-    // holders may share one array (raylib's allocator, since raylib frees it)
-    int *locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
-    if (locs == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
     rbl__ProgramKey key;
     rbl__keyFromDesc(&normalised, RBL__KIND_LIT, 0, &key);
-    rbl__Program *p = rbl__acquireProgram(&key);
-    if (p == NULL) { MemFree(locs); TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
+    rbl__Program *p = rbl__compileProgram(&key);
+    if (p == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
+    // The holder's own copy of the locations (raylib's UnloadShader frees a Shader's locs: raylib's
+    // allocator). An address a dead handle of this id had is skipped, so its stale copies stay stale.
+    int *locs = NULL, *spare[8];
+    int spares = 0;
+    while (spares < 8)
+    {
+        locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
+        if ((locs == NULL) || !rbl__buried(p->shader.id, locs)) break;
+        spare[spares++] = locs;
+        locs = NULL;
+    }
+    for (int i = 0; i < spares; i++) MemFree(spare[i]);
+    if (locs == NULL)
+    {
+        rlUnloadShaderProgram(p->shader.id);
+        rbl__removeProgram(p);
+        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory");
+        return none;
+    }
     memcpy(locs, p->shader.locs, RL_MAX_SHADER_LOCATIONS*sizeof(int));
-    rbl__state.handles[rbl__state.handleCount].locs = locs;
-    rbl__state.handles[rbl__state.handleCount].id = p->shader.id;
-    rbl__state.handleCount++;
+    p->handleLocs = locs;
     Shader shader;
     shader.id = p->shader.id;
     shader.locs = locs;
     return shader;
 }
 
-// Index of the live handle shader is, or -1
-static int rbl__findHandle(Shader shader)
-{
-    if ((shader.id == 0) || (shader.locs == NULL)) return -1;
-    for (int i = 0; i < rbl__state.handleCount; i++)
-        if ((rbl__state.handles[i].locs == shader.locs) && (rbl__state.handles[i].id == shader.id)) return i;
-    return -1;
-}
-
 bool RblIsLitShaderValid(Shader shader)
 {
-    if (rbl__findLit(shader.id, true) == NULL) return false;     // forgets a deleted program and its handles
-    return rbl__findHandle(shader) >= 0;
+    rbl__Program *p = NULL;
+    return (rbl__findLit(shader.id) != NULL) && (rbl__resolveShader(shader, &p) == NULL) && (p != NULL);
 }
 
 void RblUnloadLitShader(Shader *shader)
 {
     if (shader == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: NULL shader"); return; }
-    rbl__findLit(shader->id, true);             // forgets the program (and its handles) if it was deleted outside
-    int h = rbl__findHandle(*shader);
-    if (h < 0)
+    rbl__Program *p = NULL;
+    const char *bad = rbl__resolveShader(*shader, &p);
+    if ((bad == NULL) && (p == NULL))
     {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u is not a live lit program handle (already unloaded, or a stale copy)", shader->id);
-        return;
+        // A lit program RblClose handed to its holder is a plain raylib Shader: released as
+        // UnloadShader would (after CloseWindow its program went with the context)
+        bool gl = rbl__glUsable();
+        if (gl && (rlGetLocationUniform(shader->id, "rblAlphaCutoff") == -1)) bad = "not a lit program of this header";
+        else
+        {
+            if (gl) rlUnloadShaderProgram(shader->id);
+            MemFree(shader->locs);
+            memset(shader, 0, sizeof(*shader));
+            return;
+        }
     }
-    rbl__releaseProgram(shader->id, RBL__KIND_LIT);
-    MemFree(rbl__state.handles[h].locs);
-    rbl__state.handles[h] = rbl__state.handles[--rbl__state.handleCount];
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u: %s", shader->id, bad); return; }
+    // The locations array stays allocated (quarantine) until RblClose: no later allocation can take
+    // its address while a stale copy holds it
+    if (rbl__state.quarantineCount == rbl__state.quarantineCapacity)
+    {
+        int capacity = (rbl__state.quarantineCapacity > 0)? rbl__state.quarantineCapacity*2 : 16;
+        int **q = (int **)RBL_REALLOC(rbl__state.quarantine, (size_t)capacity*sizeof(int *));
+        if (q != NULL) { rbl__state.quarantine = q; rbl__state.quarantineCapacity = capacity; }
+    }
+    if (rbl__state.quarantineCount < rbl__state.quarantineCapacity) rbl__state.quarantine[rbl__state.quarantineCount++] = shader->locs;
+    else MemFree(shader->locs);
+    rbl__bury(p->shader.id, p->handleLocs);
+    if (rbl__glUsable()) rlUnloadShaderProgram(p->shader.id);
+    rbl__removeProgram(p);
     memset(shader, 0, sizeof(*shader));
+    rbl__tidyAfterClose();
 }
 
 static bool rbl__lightFeatureOf(const RblLight *l, int *features)
@@ -6043,7 +6327,11 @@ static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 int RblLightFeatures(const RblLight *lights, int count)
 {
     int features = 0;
-    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i with lights %p", count, (const void *)lights); return 0; }
+    if ((count < 0) || (count > RBL_MAX_SCENE_LIGHTS) || ((count > 0) && (lights == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i outside 0..RBL_MAX_SCENE_LIGHTS (%i) or lights NULL", count, RBL_MAX_SCENE_LIGHTS);
+        return 0;
+    }
     for (int i = 0; i < count; i++)
         if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: light %i has an unknown type or falloff", i); return 0; }
     return features;
@@ -6111,26 +6399,30 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
 }
 
-// The program of a header draw: inside a shadow pass the caster (the material keeps only its albedo
-// map, never another slot that could hold the very depth texture being written, and its alpha
-// cutoff, so a sprite's silhouette casts); elsewhere the material's own program, checked against the
-// pass in progress. *program = NULL for a shader that is not the header's (drawn as raylib would).
-// false = refused, with one log line.
-// Why a material cannot draw in the current pass through a path (instanced or not); NULL = it can.
-// No side effect: the draw calls ask before they touch any state.
+// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
+#define RBL__RAYLIB_MATERIAL_MAPS 12
+
+// Why a material cannot draw in the current pass through a path; NULL = it can, with *program its
+// lit program (NULL: the caller's own shader, drawn as raylib would). The shader is resolved before
+// anything else of the Material is read (a stale copy's maps went with its program), then the maps:
+// present, and every texture a draw binds still alive. No side effect: draws ask before touching state.
 static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program)
 {
     bool instanced = (path == RBL__PATH_INSTANCED);
+    rbl__Program *p = NULL;
     *program = NULL;
-    if (material->maps != NULL)
-    {
-        Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
-        if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
-            return "the albedo texture's size is outside 1..65536";
-    }
+    const char *bad = rbl__resolveShader(material->shader, &p);
+    if (bad != NULL) return bad;
+    if (material->maps == NULL) return "the material's maps are NULL (a zero Material?)";
+    Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
+    if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
+        return "the albedo texture's size is outside 1..65536";
+    // Billboard paths bind albedo .. emission; raylib's DrawMesh every map with a texture
+    int slots = ((path == RBL__PATH_MESH) || (path == RBL__PATH_SKINNED))? RBL__RAYLIB_MATERIAL_MAPS : MATERIAL_MAP_EMISSION + 1;
+    for (int i = 0; i < slots; i++)
+        if ((material->maps[i].texture.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, material->maps[i].texture.id))
+            return "a texture in the material's maps does not exist (unloaded?)";
     if (rbl__state.shadowPass != NULL) return NULL;        // every material casts through the header's casters
-    if ((material->shader.id == 0) || (material->shader.locs == NULL)) return "the material has no shader (a zero Material, or a lit program that failed to load or was unloaded)";
-    rbl__Program *p = rbl__findLit(material->shader.id, false);
     const RblGBuffer *g = rbl__state.gbufferPass;
     if (p == NULL)
     {
@@ -6151,12 +6443,15 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
     return NULL;
 }
 
-static rbl__Program *rbl__findCaster(unsigned int id)
+// Registry entry of the header's own program id of that kind (caster or pass), or NULL
+static rbl__Program *rbl__findOwn(unsigned int id, int kind)
 {
-    for (int i = 0; (id != 0) && (i < RBL_SHADER_CACHE_SIZE); i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == id) && (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) return &rbl__state.programs[i];
+    for (int i = 0; (id != 0) && (i < rbl__state.programCount); i++)
+        if ((rbl__state.programs[i]->shader.id == id) && (rbl__state.programs[i]->key.kind == kind)) return rbl__state.programs[i];
     return NULL;
 }
+
+static rbl__Program *rbl__findCaster(unsigned int id) { return rbl__findOwn(id, RBL__KIND_CASTER); }
 
 // The skinned caster, compiled on the first GPU-skinned mesh of a shadow pass and held (one holder)
 // until the last shadow map goes; NULL (problem set) when it cannot compile
@@ -6199,7 +6494,13 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
 // fade distance
 static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
 {
-    const rbl__Scene *sc = &rbl__state.scene;
+    rbl__Scene *sc = &rbl__state.scene;
+    if ((sc->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, sc->depth.id))
+    {
+        if (!sc->depthNoted) TraceLog(LOG_WARNING, "RBL: the scene's depth texture %u was unloaded after RblSetScene: soft particles draw unsoftened until the next RblSetScene", sc->depth.id);
+        sc->depthNoted = true;
+        memset(&sc->depth, 0, sizeof(sc->depth));
+    }
     Matrix proj = rlGetMatrixProjection();
     float fade = material->params[RBL_PARAM_SOFT_DISTANCE];
     if (!rbl__finite(fade) || (fade <= 0.0f)) fade = 0.5f;
@@ -6225,13 +6526,17 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
-        if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
-        else casterMaps[MATERIAL_MAP_ALBEDO].color = WHITE;
+        casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
         material->shader = caster->shader;
         *program = caster;
+        return true;
     }
-    else if ((*program != NULL) && (*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
+    if (*program == NULL) return true;
+    rbl__checkRaylibDrew(*program);
+    material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
+    if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
+    if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     return true;
 }
 
@@ -6295,6 +6600,44 @@ static void rbl__bindSceneShadows(void)
 {
     for (int k = 0; k < rbl__state.scene.shadowCount; k++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k); rlEnableTexture(rbl__state.scene.shadowTexture[k]); }
     rlActiveTextureSlot(0);
+}
+
+// A map the scene lists was unloaded: said once, at the first draw that would have sampled it
+static void rbl__noteDroppedShadow(void)
+{
+    if (rbl__state.scene.shadowDroppedNoted) return;
+    TraceLog(LOG_WARNING, "RBL: a shadow map of the scene was unloaded after RblSetScene: its light draws unshadowed until the next RblSetScene");
+    rbl__state.scene.shadowDroppedNoted = true;
+}
+
+static int rbl__uploadSceneInto(rbl__Program *p);
+
+// An unloaded shadow map leaves the scene at once, so no program samples its deleted texture; its
+// light draws unshadowed (noted at the next draw that would have used it)
+static void rbl__dropSceneShadow(unsigned int id)
+{
+    rbl__Scene *s = &rbl__state.scene;
+    int k = 0;
+    while ((k < s->shadowCount) && (s->shadowId[k] != id)) k++;
+    if (k == s->shadowCount) return;
+    for (int j = k; j + 1 < s->shadowCount; j++)
+    {
+        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1];
+        memcpy(s->shadowUniforms[j], s->shadowUniforms[j + 1], sizeof(s->shadowUniforms[j]));
+    }
+    s->shadowCount--;
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        float *map = &s->lights[i*RBL__LIGHT_FLOATS + 15];      // shadow map index + 1
+        if (*map == (float)(k + 1)) *map = 0.0f;
+        else if (*map > (float)(k + 1)) *map -= 1.0f;
+    }
+    s->shadowDropped = true;
+    s->shadowDroppedNoted = false;
+    if (!rbl__glUsable()) return;
+    rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + s->shadowCount); rlDisableTexture();
+    rbl__bindSceneShadows();
+    for (int i = 0; i < rbl__state.programCount; i++) rbl__uploadSceneInto(rbl__state.programs[i]);
 }
 
 // Shadow uniforms of program p: map k shadows light slot slotOf[k] (-1 = none)
@@ -6402,6 +6745,7 @@ bool RblSetScene(const RblScene *scene)
     else if (!rbl__finite3(scene->ambientUp) || ((rbl__len2(scene->ambientUp) != 0.0f) && !rbl__normalizeTo(scene->ambientUp, &up))) bad = "ambientUp not a finite direction";
     else if ((scene->depth.id != 0) && ((scene->depth.width <= 0) || (scene->depth.height <= 0) || (scene->depth.width > RBL_MAX_TARGET_SIZE) || (scene->depth.height > RBL_MAX_TARGET_SIZE)))
         bad = "depth texture size outside 1..RBL_MAX_TARGET_SIZE";
+    else if ((scene->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, scene->depth.id)) bad = "the depth texture does not exist (unloaded?)";
     else bad = rbl__checkShadowMaps(scene->shadowMaps, scene->shadowMapCount, scene->lightCount);
     rbl__Scene *s = &rbl__state.scene;
     // Packed storage grows to the largest scene (no allocation in a steady frame)
@@ -6463,22 +6807,25 @@ bool RblSetScene(const RblScene *scene)
     s->fogStart = (fog->mode == RBL_FOG_NONE)? 0.0f : fog->start;
     s->exposure = (scene->exposure == 0.0f)? 1.0f : scene->exposure;
     s->depth = scene->depth;
+    s->depthNoted = false;
     s->shadowCount = scene->shadowMapCount;
+    s->shadowDropped = s->shadowDroppedNoted = false;
     for (int k = 0; k < scene->shadowMapCount; k++)
     {
         const RblShadowMap *map = &scene->shadowMaps[k];
         rbl__shadowUniformData(map, s->shadowUniforms[k]);
         s->shadowLight[k] = map->light;
+        s->shadowId[k] = map->id;
         s->shadowTexture[k] = map->depth.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
     // Every live program now, so raylib's DrawModel/DrawMesh (which bind programs themselves) see it too
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs == 0) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
+        rbl__Program *p = rbl__state.programs[i];
+        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); i--; continue; }
+        rbl__checkRaylibDrew(p);
         int skipped = rbl__uploadSceneInto(p);
         if (skipped > 0)
             TraceLog(LOG_INFO, "RBL: RblSetScene: lit program %u lights %i of %i lights (maxLights %i, or types not in lightFeatures)",
@@ -6491,6 +6838,13 @@ bool RblSetScene(const RblScene *scene)
 // Why a mesh cannot be drawn with this transform; NULL = it can
 static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
 {
+    // GL 3 / ES 3 draw through the mesh's vertex array (a core context has no other way): it must be
+    // a live one (UnloadMesh deletes it), which also vouches for the mesh's arrays read next
+    if (rbl__glsl() >= 300)
+    {
+        if (mesh->vaoId == 0) return "mesh has no vertex array (vaoId 0: not uploaded, or unloaded)";
+        if (!rbl__glIsLive(RBL__GL_VERTEX_ARRAY, mesh->vaoId)) return "mesh's vertex array does not exist (unloaded?)";
+    }
     if ((mesh->vertexCount <= 0) || ((mesh->vaoId == 0) && ((mesh->vboId == NULL) || (mesh->vboId[0] == 0)))) return "mesh not uploaded (no vertices, vaoId and vboId 0)";
     if (!rbl__exponentsBelow(transform, 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "transform with NaN/Inf or |value| >= 2^60";
     return NULL;
@@ -6555,6 +6909,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
         rbl__uploadBones(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones);
     }
     DrawMesh(mesh, material, transform);
+    if (p != NULL) { rlEnableShader(p->shader.id); rbl__markDrawn(p); rlDisableShader(); }
 }
 
 void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
@@ -6596,7 +6951,6 @@ void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
     {
         Material material = model.materials[model.meshMaterial[i]];
         int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
-        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform, path, &model); continue; }
         Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
         Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
         material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
@@ -6738,6 +7092,13 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
 
 static void rbl__unloadTargets(RblGBuffer *g)
 {
+    if (!rbl__glUsable())       // gone with the context
+    {
+        Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
+        for (int i = 0; i < 5; i++) memset(t[i], 0, sizeof(Texture2D));
+        g->state->id = 0; g->state->lightId = 0;
+        return;
+    }
     // rlUnloadFramebuffer deletes the depth texture attached to it (not the colour ones)
     if (g->state->id != 0) { rlUnloadFramebuffer(g->state->id); g->depth.id = 0; }
     if (g->state->lightId != 0) rlUnloadFramebuffer(g->state->lightId);
@@ -6861,8 +7222,9 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 {
     RblGBuffer g;
     memset(&g, 0, sizeof(g));
-    int width = (desc.width == 0)? rlGetFramebufferWidth() : desc.width;
-    int height = (desc.height == 0)? rlGetFramebufferHeight() : desc.height;
+    int width = desc.width, height = desc.height;
+    const bool follow = (width == 0) && (height == 0);
+    if (follow) rbl__targetSize(rlGetActiveFramebuffer(), &width, &height);
     RblLitShaderDesc lit, normalised;
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
@@ -6870,7 +7232,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     if (bad == NULL) bad = rbl__needsGlsl3("the G-buffer and deferred passes");
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
     g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
-    if ((g.state == NULL) || !rbl__liveAdd(g.state))
+    if ((g.state == NULL) || ((g.id = rbl__liveAdd(g.state)) == 0))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: out of memory");
         RBL_FREE(g.state);
@@ -6901,6 +7263,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
         return g;
     }
     g.state->instanceCapacity = 256;
+    g.state->follow = follow;
     rbl__loadVolumeMesh(&g);
     g.outputScale = 1.0f;
     g.state->view = rbl__identity(); g.state->projection = rbl__identity();
@@ -6911,7 +7274,28 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 bool RblIsGBufferValid(const RblGBuffer *gbuffer)
 {
     // Membership first: a stale copy's state (its G-buffer unloaded) is never read
-    return (gbuffer != NULL) && rbl__isLive(gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
+    return (gbuffer != NULL) && rbl__isLive(gbuffer->id, gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
+}
+
+// New targets at width x height (passes kept); false (logged by rbl__loadTargets) keeps the old ones
+static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
+{
+    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
+    rbl__GBufferState freshState = *gbuffer->state;
+    RblGBuffer fresh = *gbuffer;
+    fresh.state = &freshState;
+    unsigned int callerTarget = rlGetActiveFramebuffer();
+    bool ok = rbl__loadTargets(&fresh, width, height);
+    rbl__restoreTarget(callerTarget);
+    if (!ok) return false;
+    rbl__unloadTargets(gbuffer);
+    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
+    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
+    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
+    gbuffer->width = width; gbuffer->height = height;
+    gbuffer->desc.width = width; gbuffer->desc.height = height;
+    gbuffer->state->geometryDone = false;       // new targets hold nothing yet
+    return true;
 }
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
@@ -6921,37 +7305,27 @@ bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
     }
-    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
-    rbl__GBufferState freshState = *gbuffer->state;
-    RblGBuffer fresh = *gbuffer;
-    fresh.state = &freshState;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
-    bool ok = rbl__loadTargets(&fresh, width, height);
-    rbl__restoreTarget(callerTarget);
-    if (!ok) return false;      // the old targets stay
-    rbl__unloadTargets(gbuffer);
-    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
-    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
-    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
-    gbuffer->width = width; gbuffer->height = height;
-    gbuffer->desc.width = width; gbuffer->desc.height = height;
+    if (!rbl__resizeTargets(gbuffer, width, height)) return false;
+    gbuffer->state->follow = false;         // sized by the caller from now on
     return true;
 }
 
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
-    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
-    if (gbuffer->state->begun) RblEndGBuffer(gbuffer);
+    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->id : 0, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
+    if (gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: its geometry pass is in progress (RblEndGBuffer first)"); return; }
     rbl__unloadTargets(gbuffer);
     rbl__releasePasses(gbuffer);
+    if (!rbl__glUsable()) gbuffer->state->volumeVao = gbuffer->state->emptyVao = gbuffer->state->volumeVbo = gbuffer->state->volumeIbo = gbuffer->state->instanceVbo = 0;
     if (gbuffer->state->volumeVao != 0) rlUnloadVertexArray(gbuffer->state->volumeVao);
     if (gbuffer->state->emptyVao != 0) rlUnloadVertexArray(gbuffer->state->emptyVao);
     if (gbuffer->state->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeVbo);
     if (gbuffer->state->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeIbo);
     if (gbuffer->state->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->state->instanceVbo);
-    rbl__liveRemove(gbuffer->state);
+    rbl__liveRemove(gbuffer->id);
     RBL_FREE(gbuffer->state);
     memset(gbuffer, 0, sizeof(*gbuffer));
+    rbl__tidyAfterClose();
 }
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
@@ -6987,7 +7361,18 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
+    unsigned int callerTarget = rlGetActiveFramebuffer();
+    int w = 0, h = 0;
+    if ((bad == NULL) && gbuffer->state->follow)
+    {
+        // Loaded with size 0: the size of what it renders for (the screen, or the render texture of
+        // BeginTextureMode), taken here so a resized window never stretches it
+        rbl__targetSize(callerTarget, &w, &h);
+        if ((w <= 0) || (h <= 0) || (w > RBL_MAX_TARGET_SIZE) || (h > RBL_MAX_TARGET_SIZE)) bad = "the target's size is outside 1..RBL_MAX_TARGET_SIZE";
+        else if (((w != gbuffer->width) || (h != gbuffer->height)) && !rbl__resizeTargets(gbuffer, w, h)) bad = "the G-buffer could not take its target's new size (the old targets are kept)";
+    }
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginGBuffer: %s", bad); return false; }
+    gbuffer->state->savedFramebuffer = callerTarget;
     rlDrawRenderBatchActive();
     rlEnableFramebuffer(gbuffer->state->id);
     rlViewport(0, 0, gbuffer->width, gbuffer->height);
@@ -7023,14 +7408,16 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     gbuffer->state->eye = camera.position;
     rbl__sceneAmbient(gbuffer->state->ambient);
     gbuffer->state->begun = true;
-    rbl__state.gbufferPass = gbuffer;
+    rbl__state.gbufferPassBuffer = *gbuffer;
+    rbl__state.gbufferPass = &rbl__state.gbufferPassBuffer;
     return true;
 }
 
 void RblEndGBuffer(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
+    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->id, gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
     gbuffer->state->begun = false;
+    gbuffer->state->geometryDone = true;
     rbl__state.gbufferPass = NULL;
     rlDrawRenderBatchActive();
     rlMatrixMode(RL_PROJECTION);
@@ -7039,16 +7426,11 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
     rlLoadIdentity();
     rlEnableColorBlend();
     rlDisableDepthTest();
-    rbl__restoreTarget(0);
+    rbl__restoreTarget(gbuffer->state->savedFramebuffer);     // the caller's target (e.g. inside BeginTextureMode)
 }
 
 // Registry entry of one of the G-buffer's pass programs
-static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass)
-{
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == g->state->passes[pass]) && (rbl__state.programs[i].key.kind == RBL__KIND_PASS)) return &rbl__state.programs[i];
-    return NULL;
-}
+static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass) { return rbl__findOwn(g->state->passes[pass], RBL__KIND_PASS); }
 
 // Binds the G-buffer textures, camera and shadow uniforms of one pass; returns its locations
 static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
@@ -7127,7 +7509,10 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
+    else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
+    else if (!gbuffer->state->geometryDone) bad = "no geometry pass ran since the G-buffer was loaded or resized (RblBeginGBuffer/RblEndGBuffer first)";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
+    if (rbl__state.scene.shadowDropped && (gbuffer->desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     RblGBuffer *g = gbuffer;
     const rbl__Scene *s = &rbl__state.scene;
     int count = s->lightCount, unbounded = 0, uncompiled = 0;
@@ -7244,8 +7629,15 @@ void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer) || gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer, or inside its geometry pass"); return; }
+    const char *bad = !RblIsGBufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
+                      (rbl__state.shadowPass != NULL)? "inside a shadow pass" : (rbl__state.gbufferPass != NULL)? "inside another G-buffer's geometry pass" : NULL;
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
+    int w, h;
+    rbl__targetSize(rlGetActiveFramebuffer(), &w, &h);
+    if (((w != g->width) || (h != g->height)) && !g->state->sizeNoted)
+        TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: the G-buffer is %ix%i and its target %ix%i: the image is scaled (load it with size 0 to follow its target)", g->width, g->height, w, h);
+    g->state->sizeNoted = (w != g->width) || (h != g->height);
     rlDrawRenderBatchActive();
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
     if (loc[RBL__U_OUTPUT] != -1) rlSetUniform(loc[RBL__U_OUTPUT], &g->output, SHADER_UNIFORM_INT, 1);
@@ -7330,7 +7722,7 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     const char *bad = rbl__normaliseShadowDesc(desc, &map.desc);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %s", bad); memset(&map, 0, sizeof(map)); return map; }
     map.state = (rbl__ShadowMapState *)RBL_CALLOC(1, sizeof(rbl__ShadowMapState));
-    if ((map.state == NULL) || !rbl__liveAdd(map.state))
+    if ((map.state == NULL) || ((map.id = rbl__liveAdd(map.state)) == 0))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: out of memory");
         RBL_FREE(map.state);
@@ -7340,7 +7732,7 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     if (!rbl__acquireCasters())
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable (%s)", rbl__state.problem);
-        rbl__liveRemove(map.state);
+        rbl__liveRemove(map.id);
         RBL_FREE(map.state);
         memset(&map, 0, sizeof(map));
         return map;
@@ -7371,14 +7763,16 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
 bool RblIsShadowMapValid(RblShadowMap map)
 {
     // Membership first: a stale copy's state (its map unloaded) is never read
-    return rbl__isLive(map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0);
+    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
-    if (!rbl__unloadable(map, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
-    if (map->state->begun) RblEndShadowMap(map);
-    if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture too
+    if (!rbl__unloadable(map, (map != NULL)? map->id : 0, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
+    if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
+    rbl__dropSceneShadow(map->id);
+    if (!rbl__glUsable()) {}                                                // gone with the context
+    else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
@@ -7390,9 +7784,10 @@ void RblUnloadShadowMap(RblShadowMap *map)
             rbl__state.casterIds[k] = 0;
         }
     }
-    rbl__liveRemove(map->state);
+    rbl__liveRemove(map->id);
     RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));
+    rbl__tidyAfterClose();
 }
 
 // raymath's MatrixOrtho / MatrixFrustum, in raylib's layout
@@ -7447,6 +7842,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double r = focusRadius, texel = 2.0*r/(size - 1.0);
         cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
         cam.target = focusCenter;
+        cam.projection = CAMERA_ORTHOGRAPHIC;          // parallel rays: light-facing casters face the direction
         map->state->lightView = rbl__cameraFrame(cam);
         double ex = rbl__dot(map->state->lightView.right, cam.position), ey = rbl__dot(map->state->lightView.up, cam.position);
         double cx = rbl__dot(map->state->lightView.right, focusCenter), cy = rbl__dot(map->state->lightView.up, focusCenter);
@@ -7491,14 +7887,15 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlSetMatrixProjection(projection);
     rlSetMatrixModelview(map->state->view);
     map->state->begun = true;
-    rbl__state.shadowPass = map;
+    rbl__state.shadowPassMap = *map;
+    rbl__state.shadowPass = &rbl__state.shadowPassMap;
     rbl__state.cast = rbl__castOf(map);
     return true;
 }
 
 void RblEndShadowMap(RblShadowMap *map)
 {
-    if ((map == NULL) || !rbl__isLive(map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
+    if ((map == NULL) || !rbl__isLive(map->id, map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
     rlDrawRenderBatchActive();
     rbl__restoreTarget(map->state->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->state->savedProjection);
@@ -8711,6 +9108,7 @@ static const char *rbl__spriteStep(const rbl__AtlasState *s, RblSpritePlayer *pl
     bool pingpong = (dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
     if ((p.frame < from) || (p.frame > to) || ((p.step != 1) && (p.step != -1)) || !rbl__finite(p.time) || (p.time < 0.0f) || (p.loops < 0) || (p.passes < 0))
         return "player state not from RblPlaySprite for this atlas (frame, step, time or counts)";
+    if ((double)p.time > rbl__spriteDuration(s, p.frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     if (p.finished) return NULL;
     double t = (double)p.time + dt;
     // Most updates stay inside the current frame: no period, no stepping
@@ -8763,7 +9161,11 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
 {
     const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSpriteInstances");
     if (s == NULL) return 0;
-    if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
+    if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && ((players == NULL) || (instances == NULL))))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count %i outside 0..RBL_MAX_INSTANCES (%i), or players/instances NULL", count, RBL_MAX_INSTANCES);
+        return 0;
+    }
     if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
     // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
@@ -8792,6 +9194,8 @@ static const char *rbl__spriteBlend(const rbl__AtlasState *s, const RblSpritePla
     rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
     if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
         return "player state not from RblPlaySprite for this atlas";
+    // RblUpdateSprite keeps time inside the frame; more is not a state it makes
+    if ((double)player->time > rbl__spriteDuration(s, player->frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     RblSpritePlayer p = *player;
     *nextFrame = p.frame;
     *weight = 0.0f;
@@ -8841,7 +9245,8 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: NaN/Inf view direction or facing (|facing| <= 1e9)"); return -1; }
     // The eye seen from the sprite, on the ground plane: angle about +Y from +Z (the facing's 0)
     double ex = -(double)viewDirection.x, ez = -(double)viewDirection.z;
-    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up (or zero): the front
+    if ((ex == 0.0) && (ez == 0.0) && (viewDirection.y == 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: zero view direction"); return -1; }
+    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up: the front
     double eye = atan2(ex, ez)*(180.0/3.14159265358979323846);
     double rel = fmod(eye - fmod((double)facingDegrees, 360.0), 360.0);
     if (rel < 0.0) rel += 360.0;

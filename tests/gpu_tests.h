@@ -44,7 +44,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_materials_occlusion_dims_ambient_only),
         RT_TEST(test_materials_emission_adds_after_lighting),
         RT_TEST(test_materials_packed_atlas_renders_like_its_separate_maps),
-        RT_TEST(test_lighting_every_variant_in_the_matrix_compiles_links_and_compiles_once),
+        RT_TEST(test_lighting_every_variant_compiles_and_each_handle_owns_its_program),
         RT_TEST(test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line),
         RT_TEST(test_lighting_matrix_matches_the_double_reference_within_2_of_255),
         RT_TEST(test_lighting_optional_stages_match_the_reference),

@@ -19,7 +19,7 @@ static bool rectIs(Rectangle r, float x, float y, float w, float h) { return (r.
 // Texture coordinates of a billboard's corners (BL, BR, TR, TL) for a frame, in texels
 static void frameCornerTexels(const RblAtlas *a, int frame, int sheetW, int sheetH, float uv[4][2])
 {
-    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, false };
     RblBillboard b;
     memset(&b, 0, sizeof(b));
     RT_CHECK(RblAtlasBillboard(a, frame, 1.0f, &b), "frame %d: RblAtlasBillboard refused", frame);
