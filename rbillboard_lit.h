@@ -6021,7 +6021,9 @@ static void rbl__checkRaylibDrew(rbl__Program *p)
     rbl__GlGetUniformfv get;
     memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
     float m[16];
+    rlEnableShader(p->shader.id);           // WebGL (emscripten) resolves the location in the bound program only
     get(p->shader.id, loc, m);
+    rlDisableShader();
     bool sentinel = (m[15] == -8.125f);
     for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
     if (sentinel) return;
