@@ -58,6 +58,9 @@ check-shaders:
 	  || { echo "check-shaders: rbillboard_lit.h differs from shaders/ (run make shaders)"; exit 1; }
 
 # ---- tests --------------------------------------------------------------------------------
+# The showcase page's files (built in the browser section below; named here, before `test` reads them)
+WEB_PAGE_FILES := $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html $(BUILD)/web/page_check.html $(BUILD)/web/shell.html $(BUILD)/web/game.js
+WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2" "nowebgl --disable-webgl" shell "shellnowebgl --disable-webgl"
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
@@ -283,8 +286,6 @@ web: $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.ht
 
 # The page's checks (tests/web/page_check.html; make test runs them): the showcase page in every
 # mode, and the README's minimal shell as printed (shell.html) with the showcase build as game.js
-WEB_PAGE_FILES := $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html $(BUILD)/web/page_check.html $(BUILD)/web/shell.html $(BUILD)/web/game.js
-WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2" "nowebgl --disable-webgl" shell "shellnowebgl --disable-webgl"
 $(BUILD)/web/page_check.html: tests/web/page_check.html
 	@mkdir -p $(@D)
 	cp $< $@

@@ -79,6 +79,11 @@ def run_test(directory, filt, page='index.html', query='', summary_re=SUMMARY, f
         with open(os.path.join(directory, 'shots', os.path.basename(shot) + '.png'), 'wb') as f:
             f.write(base64.b64decode(data_url.split(',', 1)[1]))
 
+    missing = [f for f in (page,) if not os.path.exists(os.path.join(directory, f))]
+    if missing:     # a page that is not there would only time out
+        print('  FAIL  %s not in %s (not built?)' % (', '.join(missing), directory))
+        print('%s: 0 passed, 1 failed' % name)
+        return 1
     server = serve(directory, on_line, on_shot)
     port = server.server_address[1]
     url = 'http://127.0.0.1:%d/%s' % (port, page) + (query or ('?filter=' + urllib.parse.quote(filt) if filt else ''))
