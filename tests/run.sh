@@ -20,7 +20,7 @@ set -u
 BUILD=${BUILD:-build}
 pass=0; fail=0
 count() { # $1 = suite output; adds its "suite: N passed, M failed" line
-  local line; line=$(printf '%s\n' "$1" | grep -E '^[a-z_-]+: [0-9]+ passed, [0-9]+ failed$' | tail -1)
+  local line; line=$(printf '%s\n' "$1" | grep -E '^[a-z][a-z0-9_-]*: [0-9]+ passed, [0-9]+ failed$' | tail -1)
   if [ -z "$line" ]; then echo "  FAIL  suite did not finish (no summary line)"; fail=$((fail + 1)); return; fi
   local p f; p=$(echo "$line" | sed -E 's/.*: ([0-9]+) passed.*/\1/'); f=$(echo "$line" | sed -E 's/.* ([0-9]+) failed$/\1/')
   pass=$((pass + p)); fail=$((fail + f))
