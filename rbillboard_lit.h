@@ -94,7 +94,7 @@
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
-*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: the render size
+*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
 *            gdesc.brdf = RBL_BRDF_GGX;
 *            RblGBuffer g = RblLoadGBuffer(gdesc);
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
@@ -124,20 +124,25 @@
 *       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
 *
 *   OWNERSHIP:
-*       - RblLoadLitShader returns a raylib Shader whose locs array is that holder's; copies of it
-*         (material.shader) are the same holder: release it once. Equal descs share one program;
-*         each call is its own holder, and the program goes with its last holder.
-*       - Release with RblUnloadLitShader(&shader) (zeroes it) or raylib's UnloadMaterial/UnloadShader:
-*         the header notices the deleted program at the next load, scene or validity check, forgets
-*         it and compiles anew on the next load (draws skip the check: a GL query each).
+*       - RblLoadLitShader returns a raylib Shader that is its own GL program (as LoadShader); copies
+*         of it (material.shader) are the same holder: release it once, with RblUnloadLitShader(&shader)
+*         (zeroes it) or raylib's UnloadShader/UnloadMaterial. Materials that differ only in values
+*         share one Shader; equal descs loaded twice are two programs.
+*       - Draws recognise a Material's shader by its (id, locs) pair and ask GL that the program still
+*         exists before reading anything else of the Material: a stale copy is refused with one line.
+*         Draws use the header's own locations, never a Material's.
+*       - Batches, instance buffers, G-buffers and shadow maps carry an id: a copy of an unloaded one
+*         is refused even when a newer object took its memory.
 *       - Shadow maps and G-buffers hold their programs until RblUnloadShadowMap / RblUnloadGBuffer.
-*       - RblClose frees the immediate path, the scene and every program still held: call it after
-*         your own Unload calls (a Shader unloaded afterwards would be freed twice), before CloseWindow.
+*       - RblClose frees what the header owns (immediate path, scene, registry); lit programs become
+*         their holders' plain Shaders. Unload your objects before or after it; after CloseWindow the
+*         header makes no GL call (unloads free memory only).
 *
 *   FACING MODES (RblBillboard.facing, or RblInstancedDesc.facing for an instanced draw):
 *       CAMERA_PLANE: parallel to the view plane, as DrawBillboard (optional up, as DrawBillboardPro);
 *       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
-*       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
+*       default); FIXED: a world orientation (axis = normal, up). Under an orthographic camera the eye
+*       is at infinity along the view's back direction (RblCameraFrame.orthographic). roundness bends the corner normals
 *       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
 *       Two-sided: a quad seen from behind (FIXED, or CAMERA_PLANE with an up against the view's) is
 *       drawn and shaded on the side seen (gl_FrontFacing): the normal flips, the normal map's tangent
@@ -340,9 +345,11 @@
 *         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
 *         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
 *         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
-*         the G-buffer are refused there with one log line. ES 2: raylib 6.0's rlGetActiveFramebuffer
-*         answers 0, so a shadow pass run inside BeginTextureMode returns to the default framebuffer.
-*       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
+*         the G-buffer are refused there with one log line.
+*       - raylib's own DrawModel/DrawMesh upload colDiffuse, matrices and textures, none of the header's
+*         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
+*         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
+*         use of it and logged once per program.
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
 *         the target, viewport and matrices it found but leaves the depth test off and culling on (as
@@ -350,16 +357,16 @@
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
 *         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
-*         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
-*         BeginTextureMode, resolve inside); resolve into a target of its size. The geometry pass
+*         (directional, range 0); a G-buffer loaded with size 0 takes its target's size at each
+*         RblBeginGBuffer (the screen, or the render texture of BeginTextureMode) and RblEndGBuffer
+*         returns to that target; a fixed size resolved into another size is scaled (logged). The geometry pass
 *         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
-*         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
-*         billboards still turn toward camera.position (their shading uses the parallel view).
+*         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
@@ -371,9 +378,9 @@
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
-*       #define RBL_SHADER_CACHE_SIZE 32
-*           Programs the registry holds: lit variants (equal descs share one), 2 casters while a shadow
-*           map is loaded, 5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
+*       #define RBL_SHADER_CACHE_SIZE 1024
+*           Programs the registry holds: one per lit Shader loaded, casters while a shadow map is loaded,
+*           5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch, or instances an instance buffer, reserves when loaded with 0.
 *       #define RBL_MAX_BATCH_BILLBOARDS 2097152, RBL_MAX_INSTANCES 2097152
@@ -388,8 +395,11 @@
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
+*       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
+*           Texture unit soft particles read the scene depth from (RblScene.depth, RblEndSceneDepth).
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
-*           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
+*           Scene shadow map k goes to texture unit 12 + k (raylib's material maps use 0..10, the
+*           scene depth 11; GL 3.3 promises 16).
 *       #define RBL_MAX_BONES 128
 *           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
 *       #define RBL_GPU_SKINNING 1
@@ -1031,6 +1041,9 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module Functions Declaration
 //----------------------------------------------------------------------------------
+// Module lifetime
+RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+
 // Geometry (CPU, no GL needed)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
@@ -1043,7 +1056,6 @@ RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  //
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
-RBLAPI void RblClose(void);                                                   // Release the immediate path's buffers (before CloseWindow)
 
 // Instanced path (GL): per-instance data only, quads expanded in the vertex shader
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
@@ -1075,6 +1087,8 @@ RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      //
 // Deferred G-buffer
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
+RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
+RBLAPI void RblEndSceneDepth(void);                                            // Show that world on the current target with its depth; soft particles read it (unless RblScene.depth is given)
 RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
@@ -1145,6 +1159,15 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
+// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
+#define RBL__RAYLIB_MATERIAL_MAPS 12
+// GL entry points the header asks raylib's loader for (rlGetProcAddress): the platform's calling convention
+#if defined(_WIN32)
+    #define RBL__GLAPI __stdcall
+#else
+    #define RBL__GLAPI
+#endif
+
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
@@ -1170,7 +1193,7 @@ typedef enum {
     RBL__U_COUNT
 } rbl__Uniform;
 
-typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS } rbl__ProgramKind;
+typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS, RBL__KIND_COMPOSITE } rbl__ProgramKind;
 enum { RBL__PASS_FULLSCREEN = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_FULLSCREEN_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
 
 // What a program is compiled from: equal keys share one program
@@ -1348,6 +1371,17 @@ typedef struct rbl__Scene {
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
+// The scene target of a plain raylib frame (RblBeginSceneDepth .. RblEndSceneDepth): the opaque world
+// drawn where its depth is a texture, then shown on the caller's target with that depth
+typedef struct rbl__SceneCapture {
+    RenderTexture2D target;         // Follows the size of the target it is shown on (0 = not made yet)
+    unsigned int composite;         // The composite program (registry, RBL__KIND_COMPOSITE)
+    unsigned int vao, vbo;          // Full-screen triangle (vao 0 where the context has none)
+    unsigned int savedFramebuffer;  // The caller's target at RblBeginSceneDepth
+    bool begun;                     // Between RblBeginSceneDepth and RblEndSceneDepth
+    bool shown;                     // RblEndSceneDepth ran: soft particles read its depth (RblScene.depth given: that one)
+} rbl__SceneCapture;
+
 // One slot of the loaded-object table (rbl__liveAdd)
 typedef struct rbl__Live {
     unsigned int id;                // The object's id (0 = free slot)
@@ -1368,7 +1402,8 @@ typedef struct rbl__State {
     void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
     void *glGetUniformfv;           // ... and glGetUniformfv
     bool glLooked;
-    bool closed;                    // RblClose ran: the tables go with the last object the caller holds
+    bool closed;
+    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target                    // RblClose ran: the tables go with the last object the caller holds
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
@@ -2819,6 +2854,48 @@ static const char *const rbl__shader_output[] = {
     "#endif\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_scene_composite_fs[] = {
+    "// The opaque world drawn between RblBeginSceneDepth and RblEndSceneDepth, shown on the caller's target\n",
+    "// with its depth, so later draws are depth tested against it (soft particles also read that depth as a\n",
+    "// texture). Where nothing was drawn the caller's target shows through. GLSL ES 1.00 writes depth only\n",
+    "// with EXT_frag_depth (the loader enables it where it exists).\n",
+    "#include \"dialect.glsl\"\n",
+    "\n",
+    "uniform sampler2D texture0;             // the scene target's colour\n",
+    "uniform sampler2D rblSceneDepthMap;     // its depth\n",
+    "RBL_VARYING vec2 fragUv;\n",
+    "#if RBL_GLSL >= 300\n",
+    "out vec4 finalColor;\n",
+    "#else\n",
+    "#define finalColor gl_FragColor\n",
+    "#endif\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    float depth = texture(rblSceneDepthMap, fragUv).r;\n",
+    "    if (depth >= 1.0) discard;\n",
+    "    finalColor = vec4(texture(texture0, fragUv).rgb, 1.0);\n",
+    "#if RBL_GLSL >= 120\n",
+    "    gl_FragDepth = depth;\n",
+    "#elif defined(GL_EXT_frag_depth)\n",
+    "    gl_FragDepthEXT = depth;\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_scene_composite_vs[] = {
+    "// Full-screen triangle from a vertex buffer (GLSL 1 has no gl_VertexID): RblEndSceneDepth shows the\n",
+    "// scene target on the caller's target. Pairs with scene_composite.fs.glsl.\n",
+    "#include \"dialect.glsl\"\n",
+    "\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;      // (-1,-1) (3,-1) (-1,3)\n",
+    "RBL_VARYING vec2 fragUv;                // scene target coordinate of this pixel (0..1)\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    fragUv = vertexPosition.xy*0.5 + 0.5;\n",
+    "    gl_Position = vec4(vertexPosition.xy, 0.0, 1.0);\n",
+    "}\n",
+    NULL };
 static const char *const rbl__shader_shadow_caster_fs[] = {
     "// Shadow pass, fragment stage: depth only. The alpha test is the colour pass's own (albedo x\n",
     "// colDiffuse x vertex colour against the material's cutoff): a sprite's silhouette casts the shadow,\n",
@@ -3070,6 +3147,8 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
     { "output.glsl", rbl__shader_output },
+    { "scene_composite.fs.glsl", rbl__shader_scene_composite_fs },
+    { "scene_composite.vs.glsl", rbl__shader_scene_composite_vs },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
     { "shadows.glsl", rbl__shader_shadows },
     { "skinning.glsl", rbl__shader_skinning },
@@ -3081,23 +3160,27 @@ static const struct { const char *file; const char *const *source; } rbl__shader
 static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialect, rbl__shader_fullscreen_vs, NULL };
 static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_skinning, rbl__shader_lit_vs, NULL };
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
+static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
 static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
 static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
 static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
 static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
     { "lit_instanced.vs.glsl", rbl__pass_lit_instanced_vs },
+    { "scene_composite.vs.glsl", rbl__pass_scene_composite_vs },
     { "volume.vs.glsl", rbl__pass_volume_vs },
     { "deferred_fullscreen.fs.glsl", rbl__pass_deferred_fullscreen_fs },
     { "deferred_resolve.fs.glsl", rbl__pass_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__pass_deferred_volume_fs },
     { "gbuffer.fs.glsl", rbl__pass_gbuffer_fs },
     { "lit.fs.glsl", rbl__pass_lit_fs },
+    { "scene_composite.fs.glsl", rbl__pass_scene_composite_fs },
     { "shadow_caster.fs.glsl", rbl__pass_shadow_caster_fs },
 };
 // RBL-SHADERS-END
@@ -3189,6 +3272,21 @@ static Matrix rbl__identity(void)
 // Back to framebuffer fbo with a viewport covering it. rlgl's framebuffer size is the last render
 // texture's after EndTextureMode (raylib does not reset it), so the screen's size comes from the
 // window when there is one (headless rlglInit contexts have none: rlgl's size is the screen's there)
+// The framebuffer draws go to now. raylib 6.0's rlGetActiveFramebuffer asks for the ES 3 name of
+// the binding and answers 0 on ES 2 / WebGL1: there GL is asked for the ES 2 one
+typedef void (RBL__GLAPI *rbl__GlGetIntegerv)(unsigned int pname, int *data);
+static unsigned int rbl__activeFramebuffer(void)
+{
+    if ((rbl__glsl() != 100) || (rlGetTextureIdDefault() == 0)) return rlGetActiveFramebuffer();
+    void *proc = rlGetProcAddress("glGetIntegerv");
+    if (proc == NULL) return 0;
+    rbl__GlGetIntegerv get;
+    memcpy(&get, &proc, sizeof(get));
+    int fbo = 0;
+    get(0x8CA6 /* GL_FRAMEBUFFER_BINDING */, &fbo);
+    return (fbo > 0)? (unsigned int)fbo : 0u;
+}
+
 // Size of the target draws go to now: inside BeginTextureMode rlgl's framebuffer size (the
 // texture's); on the screen raylib's render size (rlgl keeps the last texture's after EndTextureMode
 // and never hears of window resizes), or rlgl's where there is no raylib window (headless contexts)
@@ -3762,6 +3860,7 @@ static void rbl__forgetProgram(rbl__Program *p);
 static void rbl__removeProgram(rbl__Program *p);
 static void rbl__noteDroppedShadow(void);
 static void rbl__markDrawn(const rbl__Program *p);
+static void rbl__releaseCapture(void);
 
 static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
@@ -4312,6 +4411,7 @@ void RblClose(void)
     // holds (batches, instance buffers, G-buffers, shadow maps) stays valid until its own unload, before
     // or after this, before or after CloseWindow
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
+    rbl__releaseCapture();
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
     memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
     // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
@@ -5955,11 +6055,6 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 // lit program behind the registry's back: an entry is checked against GL before a draw uses it.
 
 // GL name queries rlgl does not wrap, through raylib's loader (desktop, ES and WebGL all have them)
-#if defined(_WIN32)
-    #define RBL__GLAPI __stdcall
-#else
-    #define RBL__GLAPI
-#endif
 typedef unsigned char (RBL__GLAPI *rbl__GlIsName)(unsigned int name);
 enum { RBL__GL_PROGRAM = 0, RBL__GL_TEXTURE, RBL__GL_VERTEX_ARRAY, RBL__GL_QUERIES };
 
@@ -6129,7 +6224,9 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     rbl__litDefines(d, defines, sizeof(defines));
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
-    if (key->kind == RBL__KIND_PASS)
+    if (key->kind == RBL__KIND_COMPOSITE)
+        shader = rbl__loadShaderVariant(rbl__pass_scene_composite_vs, rbl__pass_scene_composite_fs, (rbl__glsl() == 100)? "#extension GL_EXT_frag_depth : enable\n" : "");
+    else if (key->kind == RBL__KIND_PASS)
     {
         static const char *const *const *const vs[RBL__PASS_COUNT] = { rbl__pass_fullscreen_vs, rbl__pass_volume_vs, rbl__pass_fullscreen_vs, rbl__pass_fullscreen_vs, rbl__pass_volume_vs };
         static const char *const *const *const fs[RBL__PASS_COUNT] = { rbl__pass_deferred_fullscreen_fs, rbl__pass_deferred_volume_fs, rbl__pass_deferred_resolve_fs,
@@ -6167,10 +6264,6 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
-    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
-    // cut: the alpha band's ceiling is above every alpha
-    float band[2] = { 0.0f, 2.0f };
-    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     if (d->softParticles)
     {
         int unit = RBL_SCENE_DEPTH_TEXTURE_UNIT;
@@ -6191,6 +6284,17 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
+    // A default Material's values (its zero fields), so raylib's DrawModel of such materials draws as
+    // the header's own draws would
+    if ((key->kind == RBL__KIND_LIT) || (key->kind == RBL__KIND_CASTER))
+    {
+        MaterialMap defaults[RBL__RAYLIB_MATERIAL_MAPS];
+        Material none;
+        memset(defaults, 0, sizeof(defaults));
+        memset(&none, 0, sizeof(none));
+        none.maps = defaults;
+        rbl__applyMaterialValues(p, &none);
+    }
     rlDisableShader();
     rbl__uploadScene(p);            // a program loaded mid-frame draws with the current scene
     return p;
@@ -6401,8 +6505,6 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
 }
 
-// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
-#define RBL__RAYLIB_MATERIAL_MAPS 12
 
 // Why a material cannot draw in the current pass through a path; NULL = it can, with *program its
 // lit program (NULL: the caller's own shader, drawn as raylib would). The shader is resolved before
@@ -6497,6 +6599,9 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
 static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
 {
     rbl__Scene *sc = &rbl__state.scene;
+    // No depth in the scene: the last RblEndSceneDepth's (the same size as the target drawn into)
+    const bool captured = (sc->depth.id == 0) && rbl__state.capture.shown;
+    if (captured) sc->depth = rbl__state.capture.target.depth;
     if ((sc->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, sc->depth.id))
     {
         if (!sc->depthNoted) TraceLog(LOG_WARNING, "RBL: the scene's depth texture %u was unloaded after RblSetScene: soft particles draw unsoftened until the next RblSetScene", sc->depth.id);
@@ -6513,6 +6618,7 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     rlSetUniform(p->loc[RBL__U_SOFT_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
     rlSetUniform(p->loc[RBL__U_SOFT_TEXEL], texel, SHADER_UNIFORM_VEC2, 1);
     if (sc->depth.id != 0) { rlActiveTextureSlot(RBL_SCENE_DEPTH_TEXTURE_UNIT); rlEnableTexture(sc->depth.id); rlActiveTextureSlot(0); }
+    if (captured) memset(&sc->depth, 0, sizeof(sc->depth));
 }
 
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
@@ -7182,16 +7288,17 @@ static void rbl__releasePasses(RblGBuffer *g)
     memset(g->state->passes, 0, sizeof(g->state->passes));
 }
 
-RenderTexture2D RblLoadSceneTarget(int width, int height)
+// A colour + depth texture target; id 0 (problem set) when the context has no such target
+static RenderTexture2D rbl__loadSceneTarget(int width, int height)
 {
     RenderTexture2D t;
     memset(&t, 0, sizeof(t));
     if ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
         return t;
     }
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     t.id = rlLoadFramebuffer();
     t.texture.id = rlLoadTexture(NULL, width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
     t.texture.width = width; t.texture.height = height; t.texture.mipmaps = 1; t.texture.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
@@ -7211,7 +7318,7 @@ RenderTexture2D RblLoadSceneTarget(int width, int height)
     rbl__restoreTarget(callerTarget);
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "%ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
         if (t.id != 0) rlUnloadFramebuffer(t.id);       // deletes an attached depth texture
         if (!attached && (t.depth.id != 0)) rlUnloadTexture(t.depth.id);
         if (t.texture.id != 0) rlUnloadTexture(t.texture.id);
@@ -7220,13 +7327,127 @@ RenderTexture2D RblLoadSceneTarget(int width, int height)
     return t;
 }
 
+RenderTexture2D RblLoadSceneTarget(int width, int height)
+{
+    RenderTexture2D t = rbl__loadSceneTarget(width, height);
+    if (t.id == 0) TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %s", rbl__state.problem);
+    return t;
+}
+
+static void rbl__unloadSceneTarget(RenderTexture2D *t)
+{
+    if (rbl__glUsable() && (t->id != 0))
+    {
+        rlUnloadFramebuffer(t->id);                     // deletes the attached depth texture
+        rlUnloadTexture(t->texture.id);
+    }
+    memset(t, 0, sizeof(*t));
+}
+
+// The header's scene target, its composite program and triangle released (RblClose)
+static void rbl__releaseCapture(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    rbl__unloadSceneTarget(&c->target);
+    if (c->composite != 0) rbl__releaseProgram(c->composite, RBL__KIND_COMPOSITE);
+    if (rbl__glUsable() && (c->vao != 0)) rlUnloadVertexArray(c->vao);
+    if (rbl__glUsable() && (c->vbo != 0)) rlUnloadVertexBuffer(c->vbo);
+    memset(c, 0, sizeof(*c));
+}
+
+bool RblBeginSceneDepth(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    const char *bad = c->begun? "already in progress (RblEndSceneDepth first)" : (rbl__state.shadowPass != NULL)? "inside a shadow pass" :
+                      (rbl__state.gbufferPass != NULL)? "inside a G-buffer's geometry pass" : NULL;
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    int w = 0, h = 0;
+    rbl__targetSize(callerTarget, &w, &h);
+    if ((bad == NULL) && (c->composite == 0))
+    {
+        // First use: the composite program and a full-screen triangle (kept until RblClose)
+        rbl__ProgramKey key;
+        memset(&key, 0, sizeof(key));
+        key.kind = RBL__KIND_COMPOSITE;
+        rbl__Program *p = rbl__acquireProgram(&key);
+        if (p == NULL) bad = rbl__state.problem;
+        else
+        {
+            c->composite = p->shader.id;
+            const float triangle[9] = { -1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f };
+            c->vao = rlLoadVertexArray();          // 0 where the context has none: attributes set per draw
+            if (c->vao != 0) rlEnableVertexArray(c->vao);
+            c->vbo = rlLoadVertexBuffer(triangle, (int)sizeof(triangle), false);
+            if (c->vao != 0)
+            {
+                rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION, 3, RL_FLOAT, false, 0, 0);
+                rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION);
+                rlDisableVertexArray();
+            }
+            if (c->vbo == 0) bad = "the full-screen triangle's buffer could not be created";
+        }
+    }
+    // The target follows the size of the one it is shown on (a resized window never stretches it)
+    if ((bad == NULL) && ((c->target.id == 0) || (c->target.texture.width != w) || (c->target.texture.height != h)))
+    {
+        RenderTexture2D t = rbl__loadSceneTarget(w, h);
+        if (t.id == 0) bad = rbl__state.problem;
+        else { rbl__unloadSceneTarget(&c->target); c->target = t; }
+    }
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginSceneDepth: %s", bad); return false; }
+    rlDrawRenderBatchActive();
+    c->savedFramebuffer = callerTarget;
+    rlEnableFramebuffer(c->target.id);
+    rlViewport(0, 0, w, h);
+    rlClearColor(0, 0, 0, 0);
+    rlClearScreenBuffers();
+    c->begun = true;
+    return true;
+}
+
+void RblEndSceneDepth(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    if (!c->begun) { TraceLog(LOG_WARNING, "RBL: RblEndSceneDepth: no RblBeginSceneDepth in progress"); return; }
+    rlDrawRenderBatchActive();
+    rbl__restoreTarget(c->savedFramebuffer);
+    const rbl__Program *p = rbl__findOwn(c->composite, RBL__KIND_COMPOSITE);
+    rlEnableShader(p->shader.id);
+    int units[2] = { 0, 1 };
+    rlSetUniform(rlGetLocationUniform(p->shader.id, "texture0"), &units[0], SHADER_UNIFORM_INT, 1);
+    rlSetUniform(rlGetLocationUniform(p->shader.id, "rblSceneDepthMap"), &units[1], SHADER_UNIFORM_INT, 1);
+    rlActiveTextureSlot(0); rlEnableTexture(c->target.texture.id);
+    rlActiveTextureSlot(1); rlEnableTexture(c->target.depth.id);
+    rlDisableColorBlend();                          // the world is opaque: its colour and depth replace the target's
+    rlEnableDepthTest();
+    rlEnableDepthMask();
+    rlDisableBackfaceCulling();
+    if ((c->vao == 0) || !rlEnableVertexArray(c->vao))
+    {
+        rlEnableVertexBuffer(c->vbo);
+        rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION, 3, RL_FLOAT, false, 0, 0);
+        rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION);
+    }
+    rlDrawVertexArray(0, 3);
+    rlDisableVertexArray();
+    rlDisableVertexBuffer();
+    rlEnableBackfaceCulling();
+    rlDisableDepthTest();                           // raylib's 2D state (BeginMode3D turns it on again)
+    rlEnableColorBlend();
+    rlActiveTextureSlot(1); rlDisableTexture();
+    rlActiveTextureSlot(0); rlDisableTexture();
+    rlDisableShader();
+    c->begun = false;
+    c->shown = true;
+}
+
 RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 {
     RblGBuffer g;
     memset(&g, 0, sizeof(g));
     int width = desc.width, height = desc.height;
     const bool follow = (width == 0) && (height == 0);
-    if (follow) rbl__targetSize(rlGetActiveFramebuffer(), &width, &height);
+    if (follow) rbl__targetSize(rbl__activeFramebuffer(), &width, &height);
     RblLitShaderDesc lit, normalised;
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
@@ -7241,7 +7462,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
         memset(&g, 0, sizeof(g));
         return g;
     }
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); RblUnloadGBuffer(&g); return g; }
     rbl__restoreTarget(callerTarget);
     g.desc = desc;
@@ -7286,7 +7507,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
     rbl__GBufferState freshState = *gbuffer->state;
     RblGBuffer fresh = *gbuffer;
     fresh.state = &freshState;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     bool ok = rbl__loadTargets(&fresh, width, height);
     rbl__restoreTarget(callerTarget);
     if (!ok) return false;
@@ -7363,7 +7584,7 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     int w = 0, h = 0;
     if ((bad == NULL) && gbuffer->state->follow)
     {
@@ -7551,7 +7772,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     bool counting = (g->output == RBL_GBUFFER_OUTPUT_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     rlEnableFramebuffer(g->state->lightId);
     rlViewport(0, 0, g->width, g->height);
     rlDisableDepthTest();
@@ -7636,7 +7857,7 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
     int w, h;
-    rbl__targetSize(rlGetActiveFramebuffer(), &w, &h);
+    rbl__targetSize(rbl__activeFramebuffer(), &w, &h);
     if (((w != g->width) || (h != g->height)) && !g->state->sizeNoted)
         TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: the G-buffer is %ix%i and its target %ix%i: the image is scaled (load it with size 0 to follow its target)", g->width, g->height, w, h);
     g->state->sizeNoted = (w != g->width) || (h != g->height);
@@ -7741,7 +7962,7 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     }
     map.size = map.desc.size;
     map.light = -1;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
     map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
     bool ok = (map.depth.id != 0);
@@ -7879,7 +8100,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlActiveTextureSlot(0);
     map->state->savedView = rlGetMatrixModelview();
     map->state->savedProjection = rlGetMatrixProjection();
-    map->state->savedFramebuffer = rlGetActiveFramebuffer();
+    map->state->savedFramebuffer = rbl__activeFramebuffer();
     rlEnableFramebuffer(map->state->id);
     rlViewport(0, 0, map->size, map->size);
     rlEnableDepthTest();

@@ -17,9 +17,11 @@
 #include "test_sprites.c"
 #include "test_atlas_render.c"
 #include "test_fade.c"
+#include "test_held.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_API_TESTS,
+        RBL_HELD_TESTS,
         RT_TEST(test_shaders_every_lit_variant_compiles_and_links),
         RT_TEST(test_shaders_compile_failure_is_reported_not_replaced_by_the_default),
         RT_TEST(test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u),
@@ -99,6 +101,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_sprites_bad_sort_settings_are_refused_and_draw_nothing),
         RT_TEST_GLSL3(test_sprites_instanced_sort_draws_alike_in_any_array_order),
         RT_TEST(test_sprites_soft_particles_fade_by_depth_distance_to_the_scene),
+        RT_TEST(test_sprites_soft_particles_in_a_plain_frame_with_two_added_lines),
         RT_TEST(test_sprites_npot_packed_atlas_uploads_what_the_context_can_sample),
         RT_TEST_GLSL3(test_sprites_soft_particles_read_a_gbuffer_depth),
         RT_TEST(test_skinning_lit_model_animates_and_matches_the_cpu_skinned_rendering),
