@@ -6116,9 +6116,13 @@ static void rbl__checkRaylibDrew(rbl__Program *p)
     rbl__GlGetUniformfv get;
     memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
     float m[16];
-    rlEnableShader(p->shader.id);           // WebGL (emscripten) resolves the location in the bound program only
+#if defined(__EMSCRIPTEN__)
+    rlEnableShader(p->shader.id);           // emscripten's WebGL layer resolves the location in the bound program only
     get(p->shader.id, loc, m);
     rlDisableShader();
+#else
+    get(p->shader.id, loc, m);
+#endif
     bool sentinel = (m[15] == -8.125f);
     for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
     if (sentinel) return;
