@@ -1,6 +1,6 @@
 /**********************************************************************************************
 *
-*   rbillboard_lit v0.4 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
+*   rbillboard_lit v0.5 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
 *
 *   DESCRIPTION:
 *       A raylib billboard (DrawBillboardPro) is two triangles with a colour and texture coordinates:
@@ -536,6 +536,11 @@
 *         all public functions, one process per case); limits RBL_MAX_BATCH_BILLBOARDS,
 *         RBL_MAX_INSTANCES, RBL_MAX_SCENE_LIGHTS, RBL_MAX_LIGHT_INTENSITY, RBL_MAX_TARGET_SIZE,
 *         RBL_MAX_OCCLUSION_RADIUS; allocation failures swept on every allocating path.
+*       0.5 (unreleased) Sprite sheets (TexturePacker, Aseprite, libGDX atlases; player, N-way,
+*                        cross-fades), GPU-skinned Models, translucent sorting and soft particles,
+*                        run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL), a 56-bit
+*                        G-buffer word, RBL_VERSION* (RBILLBOARD_LIT_VERSION* kept); no API removed.
+*                        Details: CHANGELOG.md.
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
@@ -566,10 +571,18 @@
 
 #include "raylib.h"
 
-#define RBILLBOARD_LIT_VERSION_MAJOR 0
-#define RBILLBOARD_LIT_VERSION_MINOR 4
-#define RBILLBOARD_LIT_VERSION_PATCH 0
-#define RBILLBOARD_LIT_VERSION "0.4.0"
+#if !defined(RAYLIB_VERSION_MAJOR) || (RAYLIB_VERSION_MAJOR < 6)
+    #error "rbillboard_lit.h needs raylib 6.0 or later, and the raylib.h included is older: update raylib (or put raylib 6's include directory first)"
+#endif
+
+#define RBL_VERSION_MAJOR 0
+#define RBL_VERSION_MINOR 5
+#define RBL_VERSION_PATCH 0
+#define RBL_VERSION "0.5.0"                     // CHANGELOG.md lists what each version changed
+#define RBILLBOARD_LIT_VERSION_MAJOR RBL_VERSION_MAJOR     // The same under the header's name (0.1..0.4 spelling)
+#define RBILLBOARD_LIT_VERSION_MINOR RBL_VERSION_MINOR
+#define RBILLBOARD_LIT_VERSION_PATCH RBL_VERSION_PATCH
+#define RBILLBOARD_LIT_VERSION RBL_VERSION
 
 // Function specifiers for a shared library build on Windows (as raylib's BUILD_LIBTYPE_SHARED)
 #ifndef RBLAPI
@@ -6205,7 +6218,13 @@ static void rbl__checkRaylibDrew(rbl__Program *p)
     rbl__GlGetUniformfv get;
     memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
     float m[16];
+#if defined(__EMSCRIPTEN__)
+    rlEnableShader(p->shader.id);           // emscripten's WebGL layer resolves the location in the bound program only
     get(p->shader.id, loc, m);
+    rlDisableShader();
+#else
+    get(p->shader.id, loc, m);
+#endif
     bool sentinel = (m[15] == -8.125f);
     for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
     if (sentinel) return;
@@ -7061,8 +7080,9 @@ static bool rbl__meshGpuSkinned(const Mesh *mesh)
 // Why a Model's bone matrices cannot be uploaded; NULL = they can
 static const char *rbl__bonesProblem(const Model *model)
 {
-    if ((model->skeleton.boneCount < 1) || (model->skeleton.boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
-    for (int b = 0; b < model->skeleton.boneCount; b++)
+    const long long boneCount = (long long)model->skeleton.boneCount;   // int in raylib 6.0, unsigned int in 6.1
+    if ((boneCount < 1) || (boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
+    for (int b = 0; b < (int)boneCount; b++)
         if (!rbl__exponentsBelow(&model->boneMatrices[b], 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "a bone matrix with NaN/Inf or |value| >= 2^60";
     return NULL;
 }
@@ -7071,7 +7091,7 @@ static const char *rbl__bonesProblem(const Model *model)
 // on desktop GL and not on ES/WebGL: ES gets the matrices transposed first, so both arrive as set
 static void rbl__uploadBones(int loc, const Model *bones)
 {
-    int n = bones->skeleton.boneCount;
+    int n = (int)bones->skeleton.boneCount;                 // checked to 1..RBL_MAX_BONES
     if ((rbl__glsl() != 300) && (rbl__glsl() != 100)) { rlSetUniformMatrices(loc, bones->boneMatrices, n); return; }
     for (int b = 0; b < n; b++)
     {
