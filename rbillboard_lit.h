@@ -1,6 +1,6 @@
 /**********************************************************************************************
 *
-*   rbillboard_lit v0.4 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
+*   rbillboard_lit v0.5 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
 *
 *   DESCRIPTION:
 *       A raylib billboard (DrawBillboardPro) is two triangles with a colour and texture coordinates:
@@ -339,18 +339,56 @@
 *
 *   SPRITE SHEETS (RblLoadAtlas / RblLoadAtlasFromMemory; tests/test_atlas.c, test_atlas_render.c, fuzz/):
 *       - Read: TexturePacker JSON (hash / array; frame, rotated, trimmed, spriteSourceSize, sourceSize,
-*         pivot or Pixi's anchor; related_multi_packs followed by RblLoadAtlas, plain names beside the
-*         file only), Aseprite JSON (duration ms, frameTags from/to inclusive, direction, repeat as a
-*         number or a string, slices keys: the first slice with pivots sets the pivot of the frames
-*         its keys cover), libGDX text (old xy/size/orig/offset, new bounds/offsets, rotate true/90,
-*         index: regions sharing a name with index >= 0 are moved together in index order and form a
-*         tag). Duplicate JSON keys: the last wins (JSON.parse). Nesting <= 64, coordinates <= 65536,
-*         64 sheets, text <= 2^28 bytes; anything else malformed: one line, invalid atlas, nothing kept.
+*         pivot or Pixi's anchor, scale9Borders, polygon vertices/verticesUV/triangles; meta.image,
+*         size, scale; related_multi_packs followed by RblLoadAtlas, plain names beside the file
+*         only; the multi-texture (Phaser 3) form: one page per textures[] entry, its normalMap and
+*         scale), Aseprite JSON (the same frames; duration ms, frameTags from/to inclusive, direction,
+*         repeat as a number or a string, slices: keys with bounds, pivot, center), libGDX text (old
+*         xy/size/orig/offset, new bounds/offsets, rotate true/false/any multiple of 90, index: regions
+*         sharing a name with index >= 0 are moved together in index order and form a tag; split;
+*         page size and pma). Not read: Pixi "animations" lists, TexturePacker's smartupdate and
+*         format, libGDX format/filter/repeat (the texture's own settings); libGDX pad is reported
+*         once per load (LOG_INFO). Duplicate JSON keys: the last wins (JSON.parse). A libGDX line
+*         with a colon is a field when its key is one libGDX writes or the line is indented (old
+*         form), else a region name ("ui:button"). Limits, each named in its refusal: nesting 64,
+*         coordinates 65536, 64 sheets, text 2^28 bytes, RBL_MAX_ATLAS_ENTRIES JSON values and rows
+*         per table, 65535 vertices per polygon; page sizes whole texels 1..65536, scale
+*         1/65536..65536; anything else malformed: one line, invalid atlas, nothing kept.
+*       - Sheets (RblLoadAtlas): each image is looked for as written (joined to the atlas file's
+*         folder unless absolute), then by its base name beside the atlas file, then by the atlas
+*         file's own base name with the image's extension; found nowhere, refused with one line
+*         naming every path tried. A normal sheet: the file's normalMap (as written, beside by base
+*         name, then <sheet>_n), else <sheet>_n.<ext> when it exists (TexturePacker, SpriteIlluminator,
+*         Paper2D): RblAtlasPage.normalImage. From memory nothing is looked for: names as written.
+*         RblLoadAtlasTextures(&atlas, page, suffix, &material, &desc.material) loads a page into
+*         maps[ALBEDO] and its normal sheet (suffix NULL: normalImage; "_x": <sheet>_x.<ext>, which
+*         must exist; "": none) into maps[NORMAL], same size required, and fills the layout (RGB
+*         normals, premultiplied alpha) the program needs.
 *       - One convention: rotated = stored turned 90 degrees clockwise in an h x w block (RblAtlasFrame
 *         .block); libGDX's counter-clockwise turn is that plus a half turn, so its .source has both
-*         extents negated (both mirrors); trim and pivot upright, top-left origin (libGDX offsets are
-*         counted from the bottom). RblAtlasBillboard/Instance: size = trim x scale, origin = the
-*         pivot from the trimmed quad's bottom-left (outside it when the pivot is), flags' ROTATED bit.
+*         extents negated (both mirrors; a libGDX half turn is both mirrors alone, 270 the clockwise
+*         turn); trim and pivot upright, top-left origin (libGDX offsets are counted from the bottom).
+*         A frame whose file states no pivot (libGDX never does) stands on its bottom centre (0.5, 1):
+*         placed at y = 0 it stands on the floor. RblAtlasBillboard/Instance: size = trim x worldScale
+*         / page scale (worldScale: world units per pixel of the art at scale 1, so exports at any
+*         meta.scale draw at one size), origin = the pivot from the trimmed quad's bottom-left
+*         (outside it when the pivot is), flags' ROTATED bit.
+*       - Slices (Aseprite): each key is a sub-frame from its frame to lastFrame. RblAtlasFindSlice
+*         (name, frame) finds the key; RblAtlasSliceBillboard/Instance draw it alone: its bounds
+*         clipped to the frame's trim, about its pivot (none: its bottom centre). When exactly one
+*         slice of an export has pivots, they are also the pivots of the frames its keys cover.
+*       - Polygons (TexturePacker): RblAtlasFrame.polygon holds the vertices (untrimmed-frame pixels),
+*         their sheet texels (inside the block) and triangles (indices < vertexCount), validated on
+*         load. The draw paths still draw the trimmed quad (the polygon's bounds and more).
+*       - 9-slice: RblAtlasFrame.center (scale9Borders, libGDX split) and RblAtlasSlice.center, in
+*         canvas pixels (for raylib's DrawTextureNPatch and the like); billboards draw the frame whole.
+*       - Premultiplied pages (libGDX pma: RblAtlasPage.premultiplied): RblMaterialLayout
+*         .premultipliedAlpha makes the program divide each filtered texel by its alpha before the
+*         sRGB decode (the alpha-weighted mean of its neighbours: no dark fringe), light the straight
+*         colour and write straight alpha: raylib's default BLEND_ALPHA then composites exactly as
+*         premultiplied blending of the lit colour would (do not switch to BLEND_ALPHA_PREMULTIPLY).
+*         RblMaterialSource.premultipliedAlpha packs such a sheet: mips averaged as straight colour,
+*         stored premultiplied again.
 *       - Aseprite exports of several sprites count tags per sprite: a tag lands on the frames named
 *         "<tag>:<k>" when the sheet's own indices do not fit those names.
 *       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
@@ -415,6 +453,9 @@
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
+*       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
+*         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
+*         packer that interlocks polygons may leave another frame's texels inside a quad.
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
 *         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
@@ -441,6 +482,10 @@
 *           Largest G-buffer side and shadow-map size (the driver's own maximum applies too).
 *       #define RBL_MAX_OCCLUSION_RADIUS 256
 *           Largest RblGenOcclusionFromHeight radius, in texels.
+*       #define RBL_MAX_ATLAS_ENTRIES 16777216
+*           JSON values one atlas text may hold (32 to 38 per TexturePacker frame: 440k-520k frames),
+*           and rows of every atlas table (frames, tags, slice keys, polygon points and indices);
+*           1..2^26. The reader holds the text's values at once (20 bytes each).
 *           Input beyond any limit is refused with one log line; world positions and camera vectors
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
@@ -544,6 +589,11 @@
 *         all public functions, one process per case); limits RBL_MAX_BATCH_BILLBOARDS,
 *         RBL_MAX_INSTANCES, RBL_MAX_SCENE_LIGHTS, RBL_MAX_LIGHT_INTENSITY, RBL_MAX_TARGET_SIZE,
 *         RBL_MAX_OCCLUSION_RADIUS; allocation failures swept on every allocating path.
+*       0.5 (unreleased) Sprite sheets (TexturePacker, Aseprite, libGDX atlases; player, N-way,
+*                        cross-fades), GPU-skinned Models, translucent sorting and soft particles,
+*                        run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL), a 56-bit
+*                        G-buffer word, RBL_VERSION* (RBILLBOARD_LIT_VERSION* kept); no API removed.
+*                        Details: CHANGELOG.md.
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
@@ -574,10 +624,18 @@
 
 #include "raylib.h"
 
-#define RBILLBOARD_LIT_VERSION_MAJOR 0
-#define RBILLBOARD_LIT_VERSION_MINOR 4
-#define RBILLBOARD_LIT_VERSION_PATCH 0
-#define RBILLBOARD_LIT_VERSION "0.4.0"
+#if !defined(RAYLIB_VERSION_MAJOR) || (RAYLIB_VERSION_MAJOR < 6)
+    #error "rbillboard_lit.h needs raylib 6.0 or later, and the raylib.h included is older: update raylib (or put raylib 6's include directory first)"
+#endif
+
+#define RBL_VERSION_MAJOR 0
+#define RBL_VERSION_MINOR 5
+#define RBL_VERSION_PATCH 0
+#define RBL_VERSION "0.5.0"                     // CHANGELOG.md lists what each version changed
+#define RBILLBOARD_LIT_VERSION_MAJOR RBL_VERSION_MAJOR     // The same under the header's name (0.1..0.4 spelling)
+#define RBILLBOARD_LIT_VERSION_MINOR RBL_VERSION_MINOR
+#define RBILLBOARD_LIT_VERSION_PATCH RBL_VERSION_PATCH
+#define RBILLBOARD_LIT_VERSION RBL_VERSION
 
 // Function specifiers for a shared library build on Windows (as raylib's BUILD_LIBTYPE_SHARED)
 #ifndef RBLAPI
@@ -626,6 +684,9 @@
 #endif
 #ifndef RBL_MAX_OCCLUSION_RADIUS
     #define RBL_MAX_OCCLUSION_RADIUS 256        // Largest RblGenOcclusionFromHeight radius in texels
+#endif
+#ifndef RBL_MAX_ATLAS_ENTRIES
+    #define RBL_MAX_ATLAS_ENTRIES 16777216      // JSON values one atlas text may hold, and rows of each atlas table (2^24; at most 2^26)
 #endif
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
@@ -778,6 +839,7 @@ typedef struct RblMaterialLayout {
     bool specular;                  // Material texture B: specular intensity (or roughness), linear
     bool occlusion;                 // Material texture A: ambient occlusion, linear
     int emissive;                   // RblEmissiveLayout of the emissive texture
+    bool premultipliedAlpha;        // Albedo texels hold colour x alpha (libGDX pma): divided back after filtering, before lighting
 } RblMaterialLayout;
 
 // Packing input: raylib Images of one size (any format raylib converts); data == NULL = absent
@@ -793,6 +855,7 @@ typedef struct RblMaterialSource {
     int frameCount;                 // Number of frames
     bool mipmaps;                   // Build mip chains (normals renormalised, colour averaged in linear light)
     float alphaCoverage;            // With mipmaps: keep the share of texels at or above this alpha cutoff on every level (0 = off)
+    bool premultipliedAlpha;        // The albedo holds colour x alpha (libGDX pma); kept so (mips too), layout.premultipliedAlpha set
 } RblMaterialSource;
 
 // Packing output (CPU Images; upload with LoadTextureFromImage or RblLoadPackedTextures)
@@ -1017,6 +1080,15 @@ typedef enum {
     RBL_SPRITE_PINGPONG_REVERSE     // to .. from .. to
 } RblSpriteDirection;
 
+// A frame's polygon mesh (TexturePacker polygon packing): the opaque part as triangles; read-only
+typedef struct RblAtlasPolygon {
+    int vertexCount;                // Vertices (3..65535)
+    const Vector2 *vertices;        // Untrimmed-frame pixels, top-left origin, upright (the file's "vertices"; inside size)
+    const Vector2 *uvs;             // Sheet texels of each vertex (the file's "verticesUV"; inside the frame's block)
+    int indexCount;                 // Indices, 3 per triangle (the file's "triangles", winding as written)
+    const unsigned short *indices;  // Vertex of each triangle corner (each < vertexCount), as raylib's Mesh.indices
+} RblAtlasPolygon;
+
 // One frame of an atlas, every format normalised to one convention (TexturePacker's)
 typedef struct RblAtlasFrame {
     const char *name;               // Frame name (hash key, "filename", libGDX region name); owned by the atlas
@@ -1026,9 +1098,11 @@ typedef struct RblAtlasFrame {
     unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above)
     Rectangle trim;                 // Drawn (trimmed) part of the frame: pixels, top-left origin, upright
     Vector2 size;                   // Untrimmed frame size in pixels
-    Vector2 pivot;                  // Pivot as fractions of size from the top-left (default 0.5, 0.5)
+    Vector2 pivot;                  // Pivot as fractions of size from the top-left (none given: 0.5, 1, the bottom centre)
     float duration;                 // Seconds (Aseprite's milliseconds / 1000); 0 = none given
     int index;                      // libGDX animation index (-1 = none)
+    Rectangle center;               // 9-slice centre in untrimmed-frame pixels (TexturePacker scale9Borders, libGDX split); zero = none
+    const RblAtlasPolygon *polygon; // Polygon mesh (TexturePacker vertices/verticesUV/triangles); NULL = the trimmed quad
 } RblAtlasFrame;
 
 // A named run of frames (Aseprite frame tags; libGDX regions sharing a name with index >= 0)
@@ -1041,17 +1115,22 @@ typedef struct RblAtlasTag {
 
 // One sheet image
 typedef struct RblAtlasPage {
-    const char *image;              // Image path as written (RblLoadAtlas: joined to the atlas file's folder)
+    const char *image;              // Sheet path (RblLoadAtlas: the file found, see SPRITE SHEETS; from memory: as written)
     int width, height;              // Size the file states (0 = not stated)
+    const char *normalImage;        // Same-layout normal sheet: the file's normalMap, else <image>_n.<ext> found beside it (RblLoadAtlas); NULL = none
+    float scale;                    // Exporter scale (meta.scale, textures[].scale; 1 = none): frames are drawn at pixels / scale
+    bool premultiplied;             // Texels hold colour x alpha (libGDX pma: true); RblLoadAtlasTextures reports it in the layout
 } RblAtlasPage;
 
-// One key of an Aseprite slice: applies from its frame until the slice's next key
+// One key of an Aseprite slice: applies from its frame until the slice's next key (a sub-frame a billboard can draw)
 typedef struct RblAtlasSlice {
     const char *name;               // Slice name (owned by the atlas)
     int frame;                      // First frame the key applies to
+    int lastFrame;                  // Last frame it applies to (before the slice's next key, or its sprite's last frame)
     Rectangle bounds;               // Untrimmed-canvas pixels, top-left origin
-    Vector2 pivot;                  // Canvas pixels (bounds origin + the file's pivot)
-    bool hasPivot;                  // The key gives a pivot (then it is the pivot of the frames it covers)
+    Vector2 pivot;                  // Canvas pixels: bounds origin + the file's pivot (none given: the bounds' bottom centre)
+    bool hasPivot;                  // The key gives a pivot (the one pivoted slice of an export also sets its frames' pivots)
+    Rectangle center;               // 9-slice centre, canvas pixels (the key's center + bounds origin); zero = none
 } RblAtlasSlice;
 
 // A loaded atlas: one frame table every draw path reads (RblAtlasBillboard / RblAtlasInstance)
@@ -1062,6 +1141,7 @@ typedef struct RblAtlas {
     const RblAtlasTag *tags;
     const RblAtlasPage *pages;
     const RblAtlasSlice *slices;
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__AtlasState *state;  // The header's: tables and names (NULL = not loaded)
 } RblAtlas;
 
@@ -1160,6 +1240,10 @@ RBLAPI bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale
 RBLAPI bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance);   // The same for an instance
 RBLAPI bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard); // Cross-fade frame into nextFrame by weight 0..1: the quad covers both trims (each where its canvas and pivot put it), source, size, origin, flags and fade set; the rest kept
 RBLAPI bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblInstance *instance, RblFade *fade); // The same for an instance and its RblInstancedDesc.fades entry
+RBLAPI int RblAtlasFindSlice(const RblAtlas *atlas, const char *name, int frame); // Key (RblAtlas.slices) of the named slice that applies at frame; -1 when none
+RBLAPI bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float worldScale, RblBillboard *billboard); // Draw slice key slice of frame alone: source, size, origin, flags for its part of the trim about its own pivot; the rest kept
+RBLAPI bool RblAtlasSliceInstance(const RblAtlas *atlas, int slice, int frame, float worldScale, RblInstance *instance); // The same for an instance
+RBLAPI bool RblLoadAtlasTextures(const RblAtlas *atlas, int page, const char *normalSuffix, Material *material, RblMaterialLayout *layout); // Load a page's sheet into material maps[ALBEDO] and its same-layout normal sheet (page.normalImage, else <image><normalSuffix>.<ext>, NULL = "_n") into maps[NORMAL]; layout (NULL = none) gets RGB normals if found and pma; false + log: nothing changed
 RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops); // Start a tag (-1 = all frames); loops: 0 = the tag's repeat, n > 0 = n passes, -1 = forever
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
 RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
@@ -1183,7 +1267,8 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 #include "rlgl.h"
 #include <math.h>       // sqrtf, sinf, cosf, fabsf
 #include <string.h>     // memcpy, memset, strlen
-#include <stdio.h>      // snprintf
+#include <stdio.h>      // snprintf, vsnprintf
+#include <stdarg.h>     // va_list (atlas errors)
 #include <stddef.h>     // offsetof
 #include <stdlib.h>     // strtod, qsort, abs (atlas parsing)
 
@@ -2762,6 +2847,9 @@ static const char *const rbl__shader_material[] = {
     "//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness\n",
     "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
     "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
+    "//   RBL_PREMULTIPLIED_ALPHA  albedo texels hold colour x alpha (libGDX pma): the filtered texel is\n",
+    "//                            divided by its alpha before decoding (the alpha-weighted mean of its\n",
+    "//                            neighbours' colours, no dark fringe); lit and written as straight alpha\n",
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
     "//   RBL_CASTER_ID            the billboard's caster identity arrives (receivers, casters, G-buffer)\n",
     "//   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map\n",
@@ -2865,6 +2953,16 @@ static const char *const rbl__shader_material[] = {
     "}\n",
     "#endif\n",
     "\n",
+    "// A filtered albedo texel as straight (not premultiplied) sRGB colour and alpha\n",
+    "vec4 rblStraightAlpha(vec4 texel)\n",
+    "{\n",
+    "#ifdef RBL_PREMULTIPLIED_ALPHA\n",
+    "    return vec4((texel.a > 0.0)? min(texel.rgb/texel.a, vec3(1.0)) : vec3(0.0), texel.a);\n",
+    "#else\n",
+    "    return texel;\n",
+    "#endif\n",
+    "}\n",
+    "\n",
     "// The material at this fragment: discards below the alpha cutoff; alpha, emission and the\n",
     "// tangent-space normal (debug views) come back through the out parameters\n",
     "RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)\n",
@@ -2877,10 +2975,10 @@ static const char *const rbl__shader_material[] = {
     "#else\n",
     "    vec3 face = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
     "#endif\n",
-    "    vec4 texel = texture(texture0, fragTexCoord);\n",
+    "    vec4 texel = rblStraightAlpha(texture(texture0, fragTexCoord));\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample\n",
-    "    vec4 texel2 = texture(texture0, fragTexCoord2);\n",
+    "    vec4 texel2 = rblStraightAlpha(texture(texture0, fragTexCoord2));\n",
     "    float fade = fragFade.x;\n",
     "    float inside1 = rblFadeInside(fragFadeClip.xy), inside2 = rblFadeInside(fragFadeClip.zw);\n",
     "    // Outside the frame shown alone (or both) there is no fragment, as with that frame's own quad\n",
@@ -5517,6 +5615,11 @@ static double rbl__srgbToLinear(double s)
     return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4);
 }
 
+static double rbl__linearToSrgb(double l)
+{
+    return (l <= 0.0031308)? 12.92*l : 1.055*pow(l, 1.0/2.4) - 0.055;
+}
+
 // Exact 8-bit sRGB: decode table, and the linear values halfway between consecutive codes
 // (encoding = how many midpoints lie below the value: round-to-nearest in the sRGB domain)
 typedef struct rbl__Srgb {
@@ -5581,9 +5684,11 @@ static void rbl__mipTaps(int srcSize, int dstSize, rbl__Taps *taps)
 }
 
 // Colour mip level (RGBA8 sRGB): RGB averaged in linear light, weighted by alpha when alphaWeighted
-// (transparent texels' colour does not darken or tint the edges of cut-outs), alpha averaged linearly
+// (transparent texels' colour does not darken or tint the edges of cut-outs), alpha averaged linearly.
+// premultiplied: texels hold sRGB colour x alpha; each is divided back, averaged as above, and the
+// level stored premultiplied again (the same weighted mean as straight texels give)
 static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char *dst, int dw, int dh,
-                                 const rbl__Taps *tx, const rbl__Taps *ty, const rbl__Srgb *srgb, bool alphaWeighted)
+                                 const rbl__Taps *tx, const rbl__Taps *ty, const rbl__Srgb *srgb, bool alphaWeighted, bool premultiplied)
 {
     for (int y = 0; y < dh; y++)
     {
@@ -5599,7 +5704,7 @@ static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char
                     float w = ty[y].w[j]*tx[x].w[i], a = p[3]/255.0f;
                     for (int k = 0; k < 3; k++)
                     {
-                        float l = srgb->toLinear[p[k]];
+                        float l = !premultiplied? srgb->toLinear[p[k]] : ((p[3] > 0)? (float)rbl__srgbToLinear(fmin((double)p[k]/p[3], 1.0)) : 0.0f);
                         sum[k] += w*l;
                         sumA[k] += w*a*l;
                     }
@@ -5607,9 +5712,12 @@ static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char
                 }
             }
             unsigned char *out = dst + ((size_t)y*(size_t)dw + (size_t)x)*4;
-            for (int k = 0; k < 3; k++)
-                out[k] = rbl__linearToSrgb8(srgb, (alphaWeighted && (alpha > 0.0f))? sumA[k]/alpha : sum[k]);
             out[3] = rbl__unorm8(alpha);
+            for (int k = 0; k < 3; k++)
+            {
+                if (premultiplied) out[k] = (out[3] > 0)? rbl__unorm8(rbl__linearToSrgb(sumA[k]/alpha)*out[3]/255.0) : 0;
+                else out[k] = rbl__linearToSrgb8(srgb, (alphaWeighted && (alpha > 0.0f))? sumA[k]/alpha : sum[k]);
+            }
         }
     }
 }
@@ -5630,8 +5738,9 @@ static long long rbl__alphaCoverage(const unsigned char *rgba, size_t n, float c
 // "Computing alpha mipmaps", 2010): without it, averaging thins alpha-tested foliage and fences
 // level by level. With a' = min(255, round(a s)), exactly the texels with a >= k pass, for the k whose
 // boundary s maps onto the threshold: the histogram gives every reachable share, the closest to the
-// target is kept, and s puts k - 1/2 on t - 1/2 (between the two roundings). Colour is untouched.
-static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, double share0)
+// target is kept, and s puts k - 1/2 on t - 1/2 (between the two roundings). Colour is untouched
+// (premultiplied texels are scaled with their alpha, which keeps the colour they hold).
+static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, double share0, bool premultiplied)
 {
     size_t hist[256] = { 0 };
     for (size_t i = 0; i < n; i++) hist[rgba[i*4 + 3]]++;
@@ -5652,7 +5761,10 @@ static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, 
     for (size_t i = 0; i < n; i++)
     {
         double a = floor(rgba[i*4 + 3]*scale + 0.5);
-        rgba[i*4 + 3] = (unsigned char)((a > 255.0)? 255.0 : a);
+        if (a > 255.0) a = 255.0;
+        if (premultiplied && (rgba[i*4 + 3] > 0))
+            for (int k = 0; k < 3; k++) { double c = floor(rgba[i*4 + k]*a/rgba[i*4 + 3] + 0.5); rgba[i*4 + k] = (unsigned char)((c > a)? a : c); }
+        rgba[i*4 + 3] = (unsigned char)a;
     }
 }
 
@@ -6011,17 +6123,17 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
             if (l > 0)
             {
                 // The level above is no longer a source once this one is built from it: scale it now
-                if ((l > 1) && coverageTarget >= 0.0) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget);
+                if ((l > 1) && coverageTarget >= 0.0) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget, source->premultipliedAlpha);
                 rbl__Taps *tx = taps, *ty = taps + w;
                 rbl__mipTaps(pw, w, tx);
                 rbl__mipTaps(ph, h, ty);
-                rbl__downsampleColor((unsigned char *)out.albedo.data + prevOffset*4, pw, albedoLevel, w, h, tx, ty, &srgb, true);
+                rbl__downsampleColor((unsigned char *)out.albedo.data + prevOffset*4, pw, albedoLevel, w, h, tx, ty, &srgb, true, source->premultipliedAlpha);
                 if (hasMaterial)
                     rbl__downsampleMaterial((unsigned char *)out.material.data + prevOffset*4, pw, materialLevel, w, h, tx, ty, encoding, hasNormal);
                 if (hasEmissive && emissiveMask)
                     rbl__downsampleLinear1((unsigned char *)out.emissive.data + prevOffset, pw, emissiveLevel, w, h, tx, ty);
                 else if (hasEmissive)
-                    rbl__downsampleColor((unsigned char *)out.emissive.data + prevOffset*4, pw, emissiveLevel, w, h, tx, ty, &srgb, false);
+                    rbl__downsampleColor((unsigned char *)out.emissive.data + prevOffset*4, pw, emissiveLevel, w, h, tx, ty, &srgb, false, false);
             }
             if (hasFrames)
             {
@@ -6040,12 +6152,13 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
             w = (w > 1)? w/2 : 1;
             h = (h > 1)? h/2 : 1;
         }
-        if ((levels > 1) && (coverageTarget >= 0.0)) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget);
+        if ((levels > 1) && (coverageTarget >= 0.0)) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget, source->premultipliedAlpha);
 
         out.layout.normalEncoding = hasNormal? encoding : RBL_NORMAL_NONE;
         out.layout.specular = hasSpecular;
         out.layout.occlusion = hasOcclusion;
         out.layout.emissive = !hasEmissive? RBL_EMISSIVE_NONE : (emissiveMask? RBL_EMISSIVE_MASK : RBL_EMISSIVE_RGB);
+        out.layout.premultipliedAlpha = source->premultipliedAlpha;
     }
     else
     {
@@ -6366,6 +6479,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->material.normalEncoding = m.normalEncoding;
     out->material.emissive = m.emissive;
     out->material.occlusion = m.occlusion;
+    out->material.premultipliedAlpha = m.premultipliedAlpha;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
     out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == 3));
     out->brdf = in.brdf;
@@ -6409,6 +6523,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     if ((n > 0) && ((size_t)n < size) && d->crossFade) n += snprintf(out + n, size - (size_t)n, "#define RBL_CROSS_FADE\n");
     // The caster identity: shadow receivers and G-buffer geometry variants (rbl__compileProgram adds it to casters)
     if ((n > 0) && ((size_t)n < size) && ((d->shadowMaps > 0) || d->deferred)) n += snprintf(out + n, size - (size_t)n, "#define RBL_CASTER_ID\n");
+    if ((n > 0) && ((size_t)n < size) && m->premultipliedAlpha) n += snprintf(out + n, size - (size_t)n, "#define RBL_PREMULTIPLIED_ALPHA\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -6483,7 +6598,13 @@ static void rbl__checkRaylibDrew(rbl__Program *p)
     rbl__GlGetUniformfv get;
     memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
     float m[16];
+#if defined(__EMSCRIPTEN__)
+    rlEnableShader(p->shader.id);           // emscripten's WebGL layer resolves the location in the bound program only
     get(p->shader.id, loc, m);
+    rlDisableShader();
+#else
+    get(p->shader.id, loc, m);
+#endif
     bool sentinel = (m[15] == -8.125f);
     for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
     if (sentinel) return;
@@ -7351,8 +7472,9 @@ static bool rbl__meshGpuSkinned(const Mesh *mesh)
 // Why a Model's bone matrices cannot be uploaded; NULL = they can
 static const char *rbl__bonesProblem(const Model *model)
 {
-    if ((model->skeleton.boneCount < 1) || (model->skeleton.boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
-    for (int b = 0; b < model->skeleton.boneCount; b++)
+    const long long boneCount = (long long)model->skeleton.boneCount;   // int in raylib 6.0, unsigned int in 6.1
+    if ((boneCount < 1) || (boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
+    for (int b = 0; b < (int)boneCount; b++)
         if (!rbl__exponentsBelow(&model->boneMatrices[b], 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "a bone matrix with NaN/Inf or |value| >= 2^60";
     return NULL;
 }
@@ -7361,7 +7483,7 @@ static const char *rbl__bonesProblem(const Model *model)
 // on desktop GL and not on ES/WebGL: ES gets the matrices transposed first, so both arrive as set
 static void rbl__uploadBones(int loc, const Model *bones)
 {
-    int n = bones->skeleton.boneCount;
+    int n = (int)bones->skeleton.boneCount;                 // checked to 1..RBL_MAX_BONES
     if ((rbl__glsl() != 300) && (rbl__glsl() != 100)) { rlSetUniformMatrices(loc, bones->boneMatrices, n); return; }
     for (int b = 0; b < n; b++)
     {
@@ -8606,33 +8728,40 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
 
 #define RBL__ATLAS_MAX_DEPTH 64         // JSON nesting
 #define RBL__ATLAS_MAX_COORD 65536.0    // texel coordinates and sizes
-#define RBL__ATLAS_MAX_PAGES 64         // multipack sheets / libGDX pages
+#define RBL__ATLAS_MAX_PAGES 64         // multipack sheets / libGDX pages / textures[] entries
 #define RBL__ATLAS_MAX_REPEAT 65535
+#define RBL__ATLAS_MAX_SCALE 65536.0    // meta.scale in 1/65536..65536
+#define RBL__ATLAS_MAX_POLYGON 65535    // vertices of one polygon frame (16-bit indices)
+#define RBL__ATLAS_PATH 4096            // longest sheet path tried
+#if (RBL_MAX_ATLAS_ENTRIES < 1) || (RBL_MAX_ATLAS_ENTRIES > 67108864)
+    #error "RBL_MAX_ATLAS_ENTRIES must be in 1..2^26"
+#endif
 #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // seconds per frame where the atlas gives no duration
 
 static inline Rectangle rbl__rect(float x, float y, float w, float h) { Rectangle r; r.x = x; r.y = y; r.width = w; r.height = h; return r; }
 static inline Vector2 rbl__v2(float x, float y) { Vector2 v; v.x = x; v.y = y; return v; }
+
+// Where a polygon's rows start while the tables grow (its public pointers are set at publication)
+typedef struct rbl__AtlasPolyRef { int frame, vertex, index; } rbl__AtlasPolyRef;
 
 typedef struct rbl__AtlasState {
     RblAtlasFrame *frames; int frameCount, frameCap;
     RblAtlasTag *tags; int tagCount, tagCap;
     RblAtlasPage *pages; int pageCount, pageCap;
     RblAtlasSlice *slices; int sliceCount, sliceCap;
-    char **pools; int poolCount, poolCap;       // name storage: one block per parsed text, never moved
+    RblAtlasPolygon *polygons; int polygonCount, polygonCap;
+    rbl__AtlasPolyRef *polygonRefs; int polygonRefCap;
+    Vector2 *polyPoints; int polyPointCount, polyPointCap;          // each polygon's vertices, then its uvs
+    unsigned short *polyIndices; int polyIndexCount, polyIndexCap;
+    char **pools; int poolCount, poolCap;       // name storage: one block per parsed text (and per path), never moved
     char *pool; size_t poolUsed, poolSize;      // the current block
     int format;
-    char error[200];
+    int ignoredPads;                            // libGDX pad entries (reported once per load, LOG_INFO)
+    char error[3*RBL__ATLAS_PATH + 256];
 } rbl__AtlasState;
 
-// Atlases are CPU objects the caller owns past RblClose: their own live list (freed when empty)
-static struct { const void **live; int count, capacity; } rbl__atlases;
-
-static bool rbl__atlasLive(const void *s)
-{
-    if (s == NULL) return false;
-    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == s) return true;
-    return false;
-}
+// Atlases are CPU objects the caller owns past RblClose, named by id like the header's other objects
+static bool rbl__atlasLive(const RblAtlas *atlas) { return rbl__isLive(atlas->id, atlas->state); }
 
 static void rbl__atlasError(rbl__AtlasState *s, const char *fmt, const char *detail, long at)
 {
@@ -8643,31 +8772,47 @@ static void rbl__atlasError(rbl__AtlasState *s, const char *fmt, const char *det
     else snprintf(s->error, sizeof(s->error), "%s", what);
 }
 
+// The first problem, formatted (at >= 0: the byte it was found at)
+static void rbl__atlasErrorf(rbl__AtlasState *s, long at, const char *fmt, ...)
+{
+    if (s->error[0] != 0) return;
+    va_list args;
+    va_start(args, fmt);
+    int n = vsnprintf(s->error, sizeof(s->error), fmt, args);
+    va_end(args);
+    if ((at >= 0) && (n >= 0) && ((size_t)n < sizeof(s->error))) snprintf(s->error + n, sizeof(s->error) - (size_t)n, " (byte %ld)", at);
+}
+
 static void rbl__atlasFree(rbl__AtlasState *s)
 {
     if (s == NULL) return;
     for (int i = 0; i < s->poolCount; i++) RBL_FREE(s->pools[i]);
     RBL_FREE(s->pools); RBL_FREE(s->frames); RBL_FREE(s->tags); RBL_FREE(s->pages); RBL_FREE(s->slices);
+    RBL_FREE(s->polygons); RBL_FREE(s->polygonRefs); RBL_FREE(s->polyPoints); RBL_FREE(s->polyIndices);
     RBL_FREE(s);
 }
 
-// Room for one more element: the array (grown when full), NULL on failure (the old array kept)
-static void *rbl__atlasGrowRaw(rbl__AtlasState *s, void *array, int count, int *cap, size_t elem)
+// Room for `more` elements: the array (grown when short), NULL on failure (the old array kept).
+// Every table and the JSON reader's values stop at RBL_MAX_ATLAS_ENTRIES, named in the refusal.
+static void *rbl__atlasGrowRaw(rbl__AtlasState *s, void *array, int count, int more, int *cap, size_t elem, const char *what)
 {
-    if (count < *cap) return array;
-    if (*cap >= (1 << 24)) { rbl__atlasError(s, "too many entries%s", NULL, -1); return NULL; }
-    int n = (*cap > 0)? *cap*2 : 16;
+    if ((more <= *cap - count) && (count <= *cap)) return array;
+    if (more > RBL_MAX_ATLAS_ENTRIES - count) { rbl__atlasErrorf(s, -1, "more than %d %s (RBL_MAX_ATLAS_ENTRIES)", RBL_MAX_ATLAS_ENTRIES, what); return NULL; }
+    int n = (*cap > 0)? *cap : 16;
+    while (n - count < more) n = (n > RBL_MAX_ATLAS_ENTRIES/2)? RBL_MAX_ATLAS_ENTRIES : n*2;
+    if (n > RBL_MAX_ATLAS_ENTRIES) n = RBL_MAX_ATLAS_ENTRIES;
     void *p = RBL_REALLOC(array, (size_t)n*elem);
-    if (p == NULL) { rbl__atlasError(s, "out of memory%s", NULL, -1); return NULL; }
+    if (p == NULL) { rbl__atlasErrorf(s, -1, "out of memory"); return NULL; }
     *cap = n;
     return p;
 }
-#define RBL__ATLAS_GROW(s, arr, count, cap, T, onFail) do { void *g_ = rbl__atlasGrowRaw((s), (void *)(arr), (count), &(cap), sizeof(T)); if (g_ == NULL) { onFail; } (arr) = (T *)g_; } while (0)
+#define RBL__ATLAS_GROWN(s, arr, count, more, cap, T, what, onFail) do { void *g_ = rbl__atlasGrowRaw((s), (void *)(arr), (count), (more), &(cap), sizeof(T), (what)); if (g_ == NULL) { onFail; } (arr) = (T *)g_; } while (0)
+#define RBL__ATLAS_GROW(s, arr, count, cap, T, what, onFail) RBL__ATLAS_GROWN(s, arr, count, 1, cap, T, what, onFail)
 
 // A name block big enough for every string one text can hold (decoded strings never outgrow the text)
 static bool rbl__atlasPoolBegin(rbl__AtlasState *s, size_t bytes)
 {
-    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, return false);
+    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, "name blocks", return false);
     char *p = (char *)RBL_MALLOC(bytes);
     if (p == NULL) { rbl__atlasError(s, "out of memory%s", NULL, -1); return false; }
     s->pools[s->poolCount++] = p;
@@ -8713,7 +8858,7 @@ static void rbl__jsonSkip(rbl__Json *j)
 
 static int rbl__jsonNode(rbl__Json *j, int type, int start)
 {
-    RBL__ATLAS_GROW(j->s, j->nodes, j->count, j->cap, rbl__JNode, return -1);
+    RBL__ATLAS_GROW(j->s, j->nodes, j->count, j->cap, rbl__JNode, "JSON values", return -1);
     rbl__JNode *n = &j->nodes[j->count];
     n->type = type; n->start = start; n->len = 0; n->next = j->count + 1; n->count = 0;
     return j->count++;
@@ -8940,19 +9085,44 @@ static bool rbl__jsonNum(const rbl__Json *j, int node, double *out)
 }
 
 // Number member, with a range; missing: def (when optional) else false
+// Members of an object found in one pass, the last of duplicate keys winning (as rbl__jsonGet):
+// out[k] = the value of keys[k], -1 when absent
+static void rbl__jsonPick(const rbl__Json *j, int object, const char *const *keys, int n, int *out)
+{
+    for (int k = 0; k < n; k++) out[k] = -1;
+    if ((object < 0) || (j->nodes[object].type != RBL__J_OBJECT)) return;
+    for (int c = object + 1, i = 0; i < j->nodes[object].count; i += 2)
+    {
+        const rbl__JNode *name = &j->nodes[c];
+        const char *t = j->text + name->start;
+        for (int k = 0; k < n; k++)      // strncmp stops at the key's end; then the lengths must agree
+            if ((name->len > 0) && (keys[k][0] == t[0]) && (strncmp(keys[k], t, (size_t)name->len) == 0) && (keys[k][name->len] == 0)) out[k] = name->next;
+        c = j->nodes[name->next].next;
+    }
+}
+
+// Number value v (the member key of owner), with a range; absent (v < 0): def when optional, else false
+static bool rbl__jsonNumberAt(rbl__Json *j, int v, int owner, const char *key, double lo, double hi, bool optional, double def, double *out)
+{
+    if (v < 0) { if (optional) { *out = def; return true; } rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[owner].start); return false; }
+    double x;
+    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasErrorf(j->s, j->nodes[v].start, "\"%s\" is not a number in %g..%g", key, lo, hi); return false; }
+    *out = x;
+    return true;
+}
+
 static bool rbl__jsonMember(rbl__Json *j, int object, const char *key, double lo, double hi, bool optional, double def, double *out)
 {
     int v = rbl__jsonGet(j, object, key);
     if (v < 0) { if (optional) { *out = def; return true; } rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
     double x;
-    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasError(j->s, "\"%s\" is not a number in range", key, j->nodes[v].start); return false; }
+    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasErrorf(j->s, j->nodes[v].start, "\"%s\" is not a number in %g..%g", key, lo, hi); return false; }
     *out = x;
     return true;
 }
 
-static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
+static bool rbl__jsonBoolAt(rbl__Json *j, int v, const char *key, bool *out)
 {
-    int v = rbl__jsonGet(j, object, key);
     *out = false;
     if (v < 0) return true;
     if (j->nodes[v].type == RBL__J_TRUE) { *out = true; return true; }
@@ -8961,65 +9131,252 @@ static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
     return false;
 }
 
-// {x, y, w, h} (any subset named in keys, in order) into out[]
+// {x, y, w, h} (any subset named in names, in order, at most 4) of value r (the member key of owner) into out[]
+static bool rbl__jsonRectAt(rbl__Json *j, int r, int owner, const char *key, const char *const *names, int n, bool optional, double *out)
+{
+    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[owner].start); return false; }
+    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
+    int at[4];
+    rbl__jsonPick(j, r, names, n, at);
+    for (int k = 0; k < n; k++)
+        if (!rbl__jsonNumberAt(j, at[k], r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
+    return true;
+}
+
 static bool rbl__jsonRect(rbl__Json *j, int object, const char *key, const char *const *names, int n, bool optional, double *out)
 {
-    int r = rbl__jsonGet(j, object, key);
-    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
-    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
-    for (int k = 0; k < n; k++)
-        if (!rbl__jsonMember(j, r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
-    return true;
+    return rbl__jsonRectAt(j, rbl__jsonGet(j, object, key), object, key, names, n, optional, out);
 }
 
 static RblAtlasPage *rbl__atlasAddPage(rbl__AtlasState *s, const char *image, int width, int height)
 {
-    if (s->pageCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); return NULL; }
-    RBL__ATLAS_GROW(s, s->pages, s->pageCount, s->pageCap, RblAtlasPage, return NULL);
+    if (s->pageCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasErrorf(s, -1, "more than %d sheets", RBL__ATLAS_MAX_PAGES); return NULL; }
+    RBL__ATLAS_GROW(s, s->pages, s->pageCount, s->pageCap, RblAtlasPage, "sheets", return NULL);
     RblAtlasPage *p = &s->pages[s->pageCount++];
-    p->image = image; p->width = width; p->height = height;
+    memset(p, 0, sizeof(*p));
+    p->image = image; p->width = width; p->height = height; p->scale = 1.0f;
     return p;
 }
 
+// ---- sheet files (RblLoadAtlas) -----------------------------------------------------------------
+// A copy in a block of its own (the text's name block keeps its room for the names)
+static const char *rbl__atlasKeep(rbl__AtlasState *s, const char *text)
+{
+    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, "name blocks", return NULL);
+    size_t n = strlen(text);
+    char *p = (char *)RBL_MALLOC(n + 1);
+    if (p == NULL) { rbl__atlasErrorf(s, -1, "out of memory"); return NULL; }
+    memcpy(p, text, n + 1);
+    s->pools[s->poolCount++] = p;
+    return p;
+}
+
+// File name part of a path (either separator: exporters on Windows write backslashes)
+static const char *rbl__pathBase(const char *path)
+{
+    const char *b = path;
+    for (const char *c = path; *c != 0; c++) if ((*c == '/') || (*c == '\\')) b = c + 1;
+    return b;
+}
+
+// Length of a file name without its extension (a leading dot belongs to the name)
+static size_t rbl__pathStem(const char *base)
+{
+    const char *dot = strrchr(base, '.');
+    return ((dot != NULL) && (dot != base))? (size_t)(dot - base) : strlen(base);
+}
+
+static bool rbl__pathAbsolute(const char *p)
+{
+    bool drive = ((p[0] | 32) >= 'a') && ((p[0] | 32) <= 'z') && (p[1] == ':') && ((p[2] == '/') || (p[2] == '\\'));
+    return (p[0] == '/') || (p[0] == '\\') || drive;
+}
+
+// <stem><suffix><extension> of a sheet path (its normal sheet by a naming convention); false if too long
+static bool rbl__pathWithSuffix(const char *image, const char *suffix, char *out, size_t size)
+{
+    const char *base = rbl__pathBase(image);
+    size_t stem = (size_t)(base - image) + rbl__pathStem(base);
+    int n = snprintf(out, size, "%.*s%s%s", (int)stem, image, suffix, image + stem);
+    return (n >= 0) && ((size_t)n < size);
+}
+
+// The file a sheet name finds, kept; NULL with one error naming every path tried. Tried in order:
+// the path as written (joined to the atlas file's folder unless absolute), its base name beside
+// the atlas file, then the base name of `stemOf` (the atlas file, or the colour sheet for its
+// normal sheet) + suffix + the written extension (".png" when none).
+static const char *rbl__atlasFindFile(rbl__AtlasState *s, const char *file, const char *written, const char *stemOf, const char *suffix, const char *what)
+{
+    char tried[3][RBL__ATLAS_PATH];
+    int n = 0;
+    int dl = (int)(rbl__pathBase(file) - file);    // the folder with its separator ("" = current)
+    const char *base = rbl__pathBase(written), *stemBase = rbl__pathBase(stemOf);
+    const char *ext = strrchr(base, '.');
+    if ((ext == NULL) || (ext == base)) ext = ".png";
+    for (int k = 0; k < 3; k++)
+    {
+        char *c = tried[n];
+        int len = 0;
+        if ((k < 2) && (written[0] == 0)) continue;
+        if (k == 0) len = rbl__pathAbsolute(written)? snprintf(c, RBL__ATLAS_PATH, "%s", written) : snprintf(c, RBL__ATLAS_PATH, "%.*s%s", dl, file, written);
+        else if (k == 1) len = snprintf(c, RBL__ATLAS_PATH, "%.*s%s", dl, file, base);
+        else len = snprintf(c, RBL__ATLAS_PATH, "%.*s%.*s%s%s", dl, file, (int)rbl__pathStem(stemBase), stemBase, suffix, ext);
+        if ((len < 0) || (len >= RBL__ATLAS_PATH)) { rbl__atlasErrorf(s, -1, "%s path longer than %d bytes", what, RBL__ATLAS_PATH - 1); return NULL; }
+        bool again = false;
+        for (int i = 0; i < n; i++) again = again || (strcmp(tried[i], c) == 0);
+        if (again) continue;
+        if (FileExists(c)) return rbl__atlasKeep(s, c);
+        n++;
+    }
+    rbl__atlasErrorf(s, -1, "%s \"%s\" not found: tried \"%s\"%s%s%s%s%s%s", what, written, tried[0], (n > 1)? ", \"" : "", (n > 1)? tried[1] : "", (n > 1)? "\"" : "",
+                     (n > 2)? ", \"" : "", (n > 2)? tried[2] : "", (n > 2)? "\"" : "");
+    return NULL;
+}
+
+// The same-layout normal sheet by the "_n" convention (TexturePacker, SpriteIlluminator, Paper2D), or NULL
+static bool rbl__atlasProbeNormal(rbl__AtlasState *s, RblAtlasPage *page)
+{
+    char path[RBL__ATLAS_PATH];
+    if (!rbl__pathWithSuffix(page->image, "_n", path, sizeof(path)) || !FileExists(path)) return true;
+    page->normalImage = rbl__atlasKeep(s, path);
+    return page->normalImage != NULL;
+}
+
 // Fills the derived fields of a frame from its upright rectangle and trim; false (logged) when
-// inconsistent. ccw: stored turned counter-clockwise (libGDX).
-static bool rbl__atlasFinishFrame(rbl__AtlasState *s, RblAtlasFrame *f, bool rotated, bool ccw, const RblAtlasPage *page)
+// inconsistent. swap: stored in an h x w block (a quarter turn); mirror: both extents negated (a
+// half turn more: libGDX's counter-clockwise quarter, or its half turn).
+static bool rbl__atlasFinishFrame(rbl__AtlasState *s, RblAtlasFrame *f, bool swap, bool mirror, const RblAtlasPage *page)
 {
     float x = f->block.x, y = f->block.y, w = f->block.width, h = f->block.height;   // upright size on entry
     if (!(w > 0.0f) || !(h > 0.0f) || (x < 0.0f) || (y < 0.0f)) { rbl__atlasError(s, "frame \"%s\": empty or negative rectangle", f->name, -1); return false; }
-    if (rotated) { f->block.width = h; f->block.height = w; }
+    if (swap) { f->block.width = h; f->block.height = w; }
     if ((page->width > 0) && (page->height > 0) && ((f->block.x + f->block.width > (float)page->width) || (f->block.y + f->block.height > (float)page->height)))
     { rbl__atlasError(s, "frame \"%s\": outside its sheet", f->name, -1); return false; }
     f->source = f->block;
-    f->flags = rotated? (unsigned int)RBL_FRAME_ROTATED : 0u;
-    if (rotated && ccw) { f->source.width = -f->source.width; f->source.height = -f->source.height; }
+    f->flags = swap? (unsigned int)RBL_FRAME_ROTATED : 0u;
+    if (mirror) { f->source.width = -f->source.width; f->source.height = -f->source.height; }
     if (!(f->size.x > 0.0f) || !(f->size.y > 0.0f) || (f->trim.x < 0.0f) || (f->trim.y < 0.0f) ||
         (f->trim.x + f->trim.width > f->size.x) || (f->trim.y + f->trim.height > f->size.y))
     { rbl__atlasError(s, "frame \"%s\": trimmed rectangle outside the untrimmed size", f->name, -1); return false; }
     if (!isfinite(f->pivot.x) || !isfinite(f->pivot.y) || (fabsf(f->pivot.x) > 1e6f) || (fabsf(f->pivot.y) > 1e6f))
     { rbl__atlasError(s, "frame \"%s\": pivot out of range", f->name, -1); return false; }
+    const Rectangle c = f->center;
+    if ((c.x < 0.0f) || (c.y < 0.0f) || (c.width < 0.0f) || (c.height < 0.0f) || (c.x + c.width > f->size.x) || (c.y + c.height > f->size.y))
+    { rbl__atlasError(s, "frame \"%s\": 9-slice centre outside the frame", f->name, -1); return false; }
     return true;
 }
 
 static const char *const rbl__xywh[4] = { "x", "y", "w", "h" };
 
-// One TexturePacker / Aseprite frame object
+// Polygon points, [[x, y], ...] or [x, y, x, y, ...], each inside box, appended to the point table;
+// *count: in, the number required (-1 = any 3..65535); out, the number read
+static bool rbl__atlasJsonPoints(rbl__Json *j, int node, const char *key, const char *frame, Rectangle box, int *count)
+{
+    rbl__AtlasState *s = j->s;
+    if ((j->nodes[node].type != RBL__J_ARRAY) || (j->nodes[node].count == 0)) { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"%s\" is not an array of points", frame, key); return false; }
+    bool pairs = (j->nodes[node + 1].type == RBL__J_ARRAY);
+    int n = pairs? j->nodes[node].count : j->nodes[node].count/2;
+    if ((!pairs && (j->nodes[node].count%2 != 0)) || (n < 3) || (n > RBL__ATLAS_MAX_POLYGON) || ((*count >= 0) && (n != *count)))
+    { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"%s\" holds %d points (3..%d, as many as \"vertices\")", frame, key, n, RBL__ATLAS_MAX_POLYGON); return false; }
+    RBL__ATLAS_GROWN(s, s->polyPoints, s->polyPointCount, n, s->polyPointCap, Vector2, "polygon points", return false);
+    Vector2 *out = s->polyPoints + s->polyPointCount;
+    for (int i = 0, c = node + 1; i < n; i++)
+    {
+        int xn = c, yn;
+        if (pairs)
+        {
+            if ((j->nodes[c].type != RBL__J_ARRAY) || (j->nodes[c].count != 2)) { rbl__atlasErrorf(s, j->nodes[c].start, "frame \"%s\": \"%s\" point %d is not [x, y]", frame, key, i); return false; }
+            xn = c + 1; yn = j->nodes[xn].next; c = j->nodes[c].next;
+        }
+        else { yn = j->nodes[c].next; c = j->nodes[yn].next; }
+        double x, y;
+        if (!rbl__jsonNum(j, xn, &x) || !rbl__jsonNum(j, yn, &y) || (x < box.x) || (y < box.y) || (x > (double)box.x + box.width) || (y > (double)box.y + box.height))
+        { rbl__atlasErrorf(s, j->nodes[xn].start, "frame \"%s\": \"%s\" point %d not a number pair inside %g,%g %gx%g", frame, key, i, box.x, box.y, box.width, box.height); return false; }
+        out[i] = rbl__v2((float)x, (float)y);
+    }
+    s->polyPointCount += n;
+    *count = n;
+    return true;
+}
+
+// Triangle corners, [[a, b, c], ...] or [a, b, c, ...], each a vertex index, appended to the index table
+static bool rbl__atlasJsonTriangles(rbl__Json *j, int node, const char *frame, int vertexCount, int *count)
+{
+    rbl__AtlasState *s = j->s;
+    if ((j->nodes[node].type != RBL__J_ARRAY) || (j->nodes[node].count == 0)) { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"triangles\" is not an array", frame); return false; }
+    bool nested = (j->nodes[node + 1].type == RBL__J_ARRAY);
+    int n = nested? j->nodes[node].count : j->nodes[node].count/3;
+    if (!nested && (j->nodes[node].count%3 != 0)) { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"triangles\" holds %d indices, not a multiple of 3", frame, j->nodes[node].count); return false; }
+    if (n > RBL_MAX_ATLAS_ENTRIES/3) { rbl__atlasErrorf(s, -1, "more than %d polygon indices (RBL_MAX_ATLAS_ENTRIES)", RBL_MAX_ATLAS_ENTRIES); return false; }
+    RBL__ATLAS_GROWN(s, s->polyIndices, s->polyIndexCount, 3*n, s->polyIndexCap, unsigned short, "polygon indices", return false);
+    unsigned short *out = s->polyIndices + s->polyIndexCount;
+    for (int t = 0, c = node + 1; t < n; t++)
+    {
+        int corner = c;
+        if (nested)
+        {
+            if ((j->nodes[c].type != RBL__J_ARRAY) || (j->nodes[c].count != 3)) { rbl__atlasErrorf(s, j->nodes[c].start, "frame \"%s\": triangle %d is not [a, b, c]", frame, t); return false; }
+            corner = c + 1;
+            c = j->nodes[c].next;
+        }
+        for (int k = 0; k < 3; k++)
+        {
+            double v;
+            if (!rbl__jsonNum(j, corner, &v) || (v < 0.0) || (v >= vertexCount) || (v != floor(v)))
+            { rbl__atlasErrorf(s, j->nodes[corner].start, "frame \"%s\": triangle %d corner %d is not a vertex index 0..%d", frame, t, k, vertexCount - 1); return false; }
+            out[3*t + k] = (unsigned short)v;
+            corner = j->nodes[corner].next;
+        }
+        if (!nested) c = corner;
+    }
+    s->polyIndexCount += 3*n;
+    *count = 3*n;
+    return true;
+}
+
+// A polygon frame (TexturePacker's polygon packing): vertices in the untrimmed frame, their sheet
+// texels inside the frame's block, triangles over them; the rows are published with the atlas
+static bool rbl__atlasJsonPolygon(rbl__Json *j, int obj, int v, int uv, int tri, const RblAtlasFrame *f)
+{
+    rbl__AtlasState *s = j->s;
+    if ((v < 0) && (uv < 0) && (tri < 0)) return true;
+    if ((v < 0) || (uv < 0) || (tri < 0)) { rbl__atlasErrorf(s, j->nodes[obj].start, "frame \"%s\": a polygon needs \"vertices\", \"verticesUV\" and \"triangles\"", f->name); return false; }
+    RBL__ATLAS_GROW(s, s->polygons, s->polygonCount, s->polygonCap, RblAtlasPolygon, "polygons", return false);
+    RBL__ATLAS_GROW(s, s->polygonRefs, s->polygonCount, s->polygonRefCap, rbl__AtlasPolyRef, "polygons", return false);
+    rbl__AtlasPolyRef ref = { s->frameCount, s->polyPointCount, s->polyIndexCount };
+    int n = -1, indices = 0;
+    if (!rbl__atlasJsonPoints(j, v, "vertices", f->name, rbl__rect(0.0f, 0.0f, f->size.x, f->size.y), &n) ||
+        !rbl__atlasJsonPoints(j, uv, "verticesUV", f->name, f->block, &n) || !rbl__atlasJsonTriangles(j, tri, f->name, n, &indices)) return false;
+    RblAtlasPolygon *p = &s->polygons[s->polygonCount];
+    memset(p, 0, sizeof(*p));
+    p->vertexCount = n; p->indexCount = indices;
+    s->polygonRefs[s->polygonCount++] = ref;
+    return true;
+}
+
+// One TexturePacker / Aseprite frame object: its members in one pass
+#define RBL__FRAME_KEYS 11
+static const char *const rbl__frameKeys[RBL__FRAME_KEYS] = { "frame", "rotated", "spriteSourceSize", "sourceSize", "anchor", "pivot", "duration",
+                                                              "scale9Borders", "vertices", "verticesUV", "triangles" };
 static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int page)
 {
     rbl__AtlasState *s = j->s;
     if ((obj < 0) || (j->nodes[obj].type != RBL__J_OBJECT)) { rbl__atlasError(s, "frame \"%s\" is not an object", name, -1); return false; }
-    double fr[4], sss[4], src[2], piv[2] = { 0.5, 0.5 }, dur = 0.0;
+    double fr[4], sss[4], src[2], piv[2] = { 0.5, 1.0 }, dur = 0.0, nine[4] = { 0.0, 0.0, 0.0, 0.0 };
     bool rotated = false;
-    if (!rbl__jsonRect(j, obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBool(j, obj, "rotated", &rotated)) return false;
+    int m[RBL__FRAME_KEYS];
+    rbl__jsonPick(j, obj, rbl__frameKeys, RBL__FRAME_KEYS, m);
+    if (!rbl__jsonRectAt(j, m[0], obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBoolAt(j, m[1], "rotated", &rotated)) return false;
     sss[0] = 0.0; sss[1] = 0.0; sss[2] = fr[2]; sss[3] = fr[3];
     src[0] = fr[2]; src[1] = fr[3];
-    if (!rbl__jsonRect(j, obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
-    if (!rbl__jsonRect(j, obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
+    if (!rbl__jsonRectAt(j, m[2], obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
+    if (!rbl__jsonRectAt(j, m[3], obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
     const char *const xy[2] = { "x", "y" };
-    // pivot (TexturePacker), anchor (the Pixi exporter's name for it)
-    if (!rbl__jsonRect(j, obj, "anchor", xy, 2, true, piv) || !rbl__jsonRect(j, obj, "pivot", xy, 2, true, piv)) return false;
-    if (!rbl__jsonMember(j, obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
-    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, return false);
+    // pivot (TexturePacker), anchor (the Pixi exporter's name for it); none: the bottom centre
+    if (!rbl__jsonRectAt(j, m[4], obj, "anchor", xy, 2, true, piv) || !rbl__jsonRectAt(j, m[5], obj, "pivot", xy, 2, true, piv)) return false;
+    if (!rbl__jsonNumberAt(j, m[6], obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
+    if (!rbl__jsonRectAt(j, m[7], obj, "scale9Borders", rbl__xywh, 4, true, nine)) return false;     // Phaser 3's 9-slice centre
+    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, "frames", return false);
     RblAtlasFrame *f = &s->frames[s->frameCount];
     memset(f, 0, sizeof(*f));
     f->name = name; f->page = page; f->index = -1;
@@ -9029,8 +9386,24 @@ static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int pag
     f->size = rbl__v2((float)src[0], (float)src[1]);
     f->pivot = rbl__v2((float)piv[0], (float)piv[1]);
     f->duration = (float)(dur/1000.0);
-    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page])) return false;
+    f->center = rbl__rect((float)nine[0], (float)nine[1], (float)nine[2], (float)nine[3]);
+    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page]) || !rbl__atlasJsonPolygon(j, obj, m[8], m[9], m[10], f)) return false;
     s->frameCount++;
+    return true;
+}
+
+// Frames of one sheet: an object (hash form, names as keys) or an array (each with "filename")
+static bool rbl__atlasJsonFrames(rbl__Json *j, int frames, int page)
+{
+    bool hash = (j->nodes[frames].type == RBL__J_OBJECT);
+    for (int k = frames + 1, i = 0; i < j->nodes[frames].count; i += hash? 2 : 1)
+    {
+        int value = hash? j->nodes[k].next : k;
+        const char *name = hash? rbl__jsonText(j, k) : rbl__jsonText(j, rbl__jsonGet(j, value, "filename"));
+        if (name == NULL) { rbl__atlasError(j->s, "a frame has no name (\"filename\")%s", NULL, j->nodes[value].start); return false; }
+        if (!rbl__atlasJsonFrame(j, value, name, page)) return false;
+        k = j->nodes[value].next;
+    }
     return true;
 }
 
@@ -9093,22 +9466,25 @@ static bool rbl__atlasJsonTags(rbl__Json *j, int meta, int first)
         }
         int start;
         if (!rbl__asepriteTagRange(s, first, name, (int)from, (int)to, &start)) { rbl__atlasError(s, "tag \"%s\": frames outside the sheet", name, j->nodes[t].start); return false; }
-        RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, return false);
+        RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, "tags", return false);
         RblAtlasTag *g = &s->tags[s->tagCount++];
         g->name = name; g->from = start; g->to = start + (int)(to - from); g->direction = dir; g->repeat = (int)repeat;
     }
     return true;
 }
 
-// Aseprite slices: one entry per key; the first slice with pivots sets the pivot of the frames its
-// keys cover (canvas pixels -> fractions of the untrimmed size)
+// Aseprite slices: one entry per key, each a sub-frame with its own pivot (none given: its bottom
+// centre) and 9-slice centre; a key applies until the slice's next key. When exactly one slice of
+// the export has pivots, it is the pivot slice the one-slice workflow means: its pivots become the
+// pivots of the frames its keys cover (canvas pixels -> fractions of the untrimmed size).
 static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
 {
     rbl__AtlasState *s = j->s;
     int slices = rbl__jsonGet(j, meta, "slices");
     if (slices < 0) return true;
     if (j->nodes[slices].type != RBL__J_ARRAY) { rbl__atlasError(s, "meta.slices is not an array%s", NULL, j->nodes[slices].start); return false; }
-    bool pivotsSet = false;
+    int pivoted = 0, pivotFrom = 0, pivotTo = 0;        // slices with pivots; the keys of the last one
+    const char *const xy[2] = { "x", "y" };
     for (int e = slices + 1, i = 0; i < j->nodes[slices].count; i++, e = j->nodes[e].next)
     {
         const char *name = rbl__jsonText(j, rbl__jsonGet(j, e, "name"));
@@ -9118,27 +9494,34 @@ static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
         bool anyPivot = false;
         for (int k = keys + 1, n = 0; n < j->nodes[keys].count; n++, k = j->nodes[k].next)
         {
-            double fr, b[4], p[2] = { 0.0, 0.0 };
-            const char *const xy[2] = { "x", "y" };
+            double fr, b[4], p[2] = { 0.0, 0.0 }, c[4] = { 0.0, 0.0, 0.0, 0.0 };
             if ((j->nodes[k].type != RBL__J_OBJECT) || !rbl__jsonMember(j, k, "frame", 0.0, 1e9, false, 0.0, &fr) || (fr != floor(fr)) ||
-                !rbl__jsonRect(j, k, "bounds", rbl__xywh, 4, false, b) || !rbl__jsonRect(j, k, "pivot", xy, 2, true, p))
+                !rbl__jsonRect(j, k, "bounds", rbl__xywh, 4, false, b) || !rbl__jsonRect(j, k, "pivot", xy, 2, true, p) || !rbl__jsonRect(j, k, "center", rbl__xywh, 4, true, c))
             { rbl__atlasError(s, "slice \"%s\": bad key", name, j->nodes[k].start); return false; }
+            if (first + fr >= s->frameCount) { rbl__atlasErrorf(s, j->nodes[k].start, "slice \"%s\": key on frame %g, past the sheet's %d frames", name, fr, s->frameCount - first); return false; }
             if ((n > 0) && (fr <= s->slices[s->sliceCount - 1].frame - first)) { rbl__atlasError(s, "slice \"%s\": keys out of frame order", name, j->nodes[k].start); return false; }
-            RBL__ATLAS_GROW(s, s->slices, s->sliceCount, s->sliceCap, RblAtlasSlice, return false);
+            if (!(b[2] > 0.0) || !(b[3] > 0.0) || (c[0] < 0.0) || (c[1] < 0.0) || (c[2] < 0.0) || (c[3] < 0.0) || (c[0] + c[2] > b[2]) || (c[1] + c[3] > b[3]))
+            { rbl__atlasError(s, "slice \"%s\": empty bounds, or a center outside them", name, j->nodes[k].start); return false; }
+            if (n > 0) s->slices[s->sliceCount - 1].lastFrame = first + (int)fr - 1;
+            RBL__ATLAS_GROW(s, s->slices, s->sliceCount, s->sliceCap, RblAtlasSlice, "slice keys", return false);
             RblAtlasSlice *sl = &s->slices[s->sliceCount++];
-            sl->name = name; sl->frame = first + (int)fr;
+            memset(sl, 0, sizeof(*sl));
+            sl->name = name; sl->frame = first + (int)fr; sl->lastFrame = s->frameCount - 1;
             sl->bounds = rbl__rect((float)b[0], (float)b[1], (float)b[2], (float)b[3]);
             sl->hasPivot = (rbl__jsonGet(j, k, "pivot") >= 0);
-            sl->pivot = rbl__v2((float)(b[0] + p[0]), (float)(b[1] + p[1]));
+            sl->pivot = sl->hasPivot? rbl__v2((float)(b[0] + p[0]), (float)(b[1] + p[1])) : rbl__v2((float)(b[0] + 0.5*b[2]), (float)(b[1] + b[3]));
+            if (c[2]*c[3] > 0.0) sl->center = rbl__rect((float)(b[0] + c[0]), (float)(b[1] + c[1]), (float)c[2], (float)c[3]);
             anyPivot = anyPivot || sl->hasPivot;
         }
-        if (!anyPivot || pivotsSet) continue;
-        pivotsSet = true;
-        for (int f = first; f < s->frameCount; f++)
+        if (anyPivot) { pivoted++; pivotFrom = firstKey; pivotTo = s->sliceCount; }
+    }
+    if (pivoted != 1) return true;
+    for (int k = pivotFrom; k < pivotTo; k++)
+    {
+        const RblAtlasSlice *key = &s->slices[k];
+        if (!key->hasPivot) continue;
+        for (int f = key->frame; f <= key->lastFrame; f++)
         {
-            const RblAtlasSlice *key = NULL;
-            for (int k = firstKey; k < s->sliceCount; k++) if (s->slices[k].frame <= f) key = &s->slices[k];
-            if ((key == NULL) || !key->hasPivot) continue;
             s->frames[f].pivot.x = key->pivot.x/s->frames[f].size.x;
             s->frames[f].pivot.y = key->pivot.y/s->frames[f].size.y;
         }
@@ -9146,8 +9529,49 @@ static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
     return true;
 }
 
-// TexturePacker / Aseprite JSON; related (may be NULL) receives meta.related_multi_packs
-static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, const char *dir, int *format, rbl__Json *jOut)
+// One JSON sheet from obj (meta, or a textures[] entry): size (whole texels), scale (obj's, else
+// meta's), image and normalMap. file: the text's path (RblLoadAtlas: the image is looked for, a
+// "_n" sheet beside it found); NULL: from memory, names kept as written.
+static bool rbl__atlasJsonPage(rbl__Json *j, int obj, int meta, const char *file, const char *where)
+{
+    rbl__AtlasState *s = j->s;
+    double sz[2] = { 0.0, 0.0 }, scale = 1.0;
+    if ((obj >= 0) && !rbl__jsonRect(j, obj, "size", rbl__xywh + 2, 2, true, sz)) return false;
+    if ((obj >= 0) && (rbl__jsonGet(j, obj, "size") >= 0))
+        for (int k = 0; k < 2; k++)
+            if (!(sz[k] >= 1.0) || (sz[k] != floor(sz[k])))
+            { rbl__atlasErrorf(s, j->nodes[rbl__jsonGet(j, obj, "size")].start, "%s.size %gx%g is not whole texels 1..%g", where, sz[0], sz[1], RBL__ATLAS_MAX_COORD); return false; }
+    int sc = rbl__jsonGet(j, obj, "scale");
+    if (sc < 0) sc = rbl__jsonGet(j, meta, "scale");
+    if ((sc >= 0) && (!rbl__jsonNum(j, sc, &scale) || (scale < 1.0/RBL__ATLAS_MAX_SCALE) || (scale > RBL__ATLAS_MAX_SCALE)))
+    { rbl__atlasErrorf(s, j->nodes[sc].start, "%s.scale is not a number in 1/%g..%g", where, RBL__ATLAS_MAX_SCALE, RBL__ATLAS_MAX_SCALE); return false; }
+    int img = rbl__jsonGet(j, obj, "image"), nrm = rbl__jsonGet(j, obj, "normalMap");
+    const char *image = "", *normal = NULL;
+    if (img >= 0)
+    {
+        image = rbl__jsonText(j, img);
+        if (image == NULL) { rbl__atlasErrorf(s, j->nodes[img].start, "%s.image is not a string", where); return false; }
+    }
+    if (nrm >= 0)
+    {
+        normal = rbl__jsonText(j, nrm);
+        if (normal == NULL) { rbl__atlasErrorf(s, j->nodes[nrm].start, "%s.normalMap is not a string", where); return false; }
+    }
+    if (file != NULL)
+    {
+        image = rbl__atlasFindFile(s, file, image, file, "", "sheet");
+        if ((image == NULL) || ((normal != NULL) && ((normal = rbl__atlasFindFile(s, file, normal, image, "_n", "normal sheet")) == NULL))) return false;
+    }
+    RblAtlasPage *page = rbl__atlasAddPage(s, image, (int)sz[0], (int)sz[1]);
+    if (page == NULL) return false;
+    page->scale = (float)scale;
+    page->normalImage = normal;
+    return (file == NULL) || (normal != NULL) || rbl__atlasProbeNormal(s, page);
+}
+
+// TexturePacker / Aseprite JSON: "frames" (hash or array) with meta.image, or TexturePacker's
+// multi-texture (Phaser 3) "textures": one sheet per entry, its normalMap paired with it
+static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, const char *file, int *format, rbl__Json *jOut)
 {
     rbl__Json j0 = { text, size, 0, NULL, 0, 0, s };
     *jOut = j0;
@@ -9158,8 +9582,10 @@ static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, 
     rbl__jsonSkip(j);
     if (j->pos != j->size) { rbl__atlasError(s, "JSON: text after the document%s", NULL, j->pos); return false; }
     if (j->nodes[root].type != RBL__J_OBJECT) { rbl__atlasError(s, "JSON: the document is not an object%s", NULL, 0); return false; }
-    int frames = rbl__jsonGet(j, root, "frames"), meta = rbl__jsonGet(j, root, "meta");
-    if ((frames < 0) || ((j->nodes[frames].type != RBL__J_OBJECT) && (j->nodes[frames].type != RBL__J_ARRAY))) { rbl__atlasError(s, "no \"frames\" object or array%s", NULL, 0); return false; }
+    int frames = rbl__jsonGet(j, root, "frames"), textures = rbl__jsonGet(j, root, "textures"), meta = rbl__jsonGet(j, root, "meta");
+    if ((frames >= 0) && (textures >= 0)) { rbl__atlasError(s, "both \"frames\" and \"textures\" (one sheet or several? neither read)%s", NULL, 0); return false; }
+    if ((textures >= 0) && ((j->nodes[textures].type != RBL__J_ARRAY) || (j->nodes[textures].count == 0))) { rbl__atlasError(s, "\"textures\" is not a non-empty array%s", NULL, j->nodes[textures].start); return false; }
+    if ((textures < 0) && ((frames < 0) || ((j->nodes[frames].type != RBL__J_OBJECT) && (j->nodes[frames].type != RBL__J_ARRAY)))) { rbl__atlasError(s, "no \"frames\" object or array, nor a \"textures\" array%s", NULL, 0); return false; }
     if ((meta >= 0) && (j->nodes[meta].type != RBL__J_OBJECT)) { rbl__atlasError(s, "\"meta\" is not an object%s", NULL, j->nodes[meta].start); return false; }
     if (*format == RBL_ATLAS_AUTO)
     {
@@ -9169,37 +9595,19 @@ static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, 
             for (int k = 0; k + 8 <= j->nodes[app].len; k++) if (memcmp(j->text + j->nodes[app].start + k, "aseprite", 8) == 0) aseprite = true;
         *format = (aseprite || (rbl__jsonGet(j, meta, "frameTags") >= 0))? RBL_ATLAS_ASEPRITE : RBL_ATLAS_TEXTUREPACKER;
     }
-    // the sheet: meta.image (joined to dir) and meta.size
-    double sz[2] = { 0.0, 0.0 };
-    if ((meta >= 0) && !rbl__jsonRect(j, meta, "size", rbl__xywh + 2, 2, true, sz)) return false;
-    if ((sz[0] < 0.0) || (sz[1] < 0.0)) { rbl__atlasError(s, "meta.size is negative%s", NULL, -1); return false; }
-    int img = rbl__jsonGet(j, meta, "image");
-    const char *image = "";
-    if (img >= 0)
+    int first = s->frameCount;
+    if (textures >= 0)
     {
-        const char *raw = rbl__jsonText(j, img);
-        if (raw == NULL) { rbl__atlasError(s, "meta.image is not a string%s", NULL, j->nodes[img].start); return false; }
-        if ((dir != NULL) && (dir[0] != 0) && (raw[0] != '/'))
+        for (int t = textures + 1, i = 0; i < j->nodes[textures].count; i++, t = j->nodes[t].next)
         {
-            size_t dl = strlen(dir), rl = strlen(raw);
-            char *joined = rbl__atlasPoolTake(s, dl + rl + 2);
-            if (joined == NULL) return false;
-            memcpy(joined, dir, dl); joined[dl] = '/'; memcpy(joined + dl + 1, raw, rl + 1);
-            image = joined;
+            char where[32];
+            snprintf(where, sizeof(where), "textures[%d]", i);
+            int tf = rbl__jsonGet(j, t, "frames");
+            if ((tf < 0) || ((j->nodes[tf].type != RBL__J_OBJECT) && (j->nodes[tf].type != RBL__J_ARRAY))) { rbl__atlasErrorf(s, j->nodes[t].start, "%s has no \"frames\" object or array", where); return false; }
+            if (!rbl__atlasJsonPage(j, t, meta, file, where) || !rbl__atlasJsonFrames(j, tf, s->pageCount - 1)) return false;
         }
-        else image = raw;
     }
-    if (rbl__atlasAddPage(s, image, (int)sz[0], (int)sz[1]) == NULL) return false;
-    int page = s->pageCount - 1, first = s->frameCount;
-    bool hash = (j->nodes[frames].type == RBL__J_OBJECT);
-    for (int k = frames + 1, i = 0; i < j->nodes[frames].count; i += hash? 2 : 1)
-    {
-        int value = hash? j->nodes[k].next : k;
-        const char *name = hash? rbl__jsonText(j, k) : rbl__jsonText(j, rbl__jsonGet(j, value, "filename"));
-        if (name == NULL) { rbl__atlasError(s, "a frame has no name (\"filename\")%s", NULL, j->nodes[value].start); return false; }
-        if (!rbl__atlasJsonFrame(j, value, name, page)) return false;
-        k = j->nodes[value].next;
-    }
+    else if (!rbl__atlasJsonPage(j, meta, meta, file, "meta") || !rbl__atlasJsonFrames(j, frames, s->pageCount - 1)) return false;
     if (meta >= 0) { if (!rbl__atlasJsonTags(j, meta, first) || !rbl__atlasJsonSlices(j, meta, first)) return false; }
     return true;
 }
@@ -9223,12 +9631,12 @@ static bool rbl__gdxInts(const char *v, const char *end, int *out, int n)
     return v == end;
 }
 
-typedef struct rbl__GdxRegion { int xy[2], size[2], orig[2], offset[2], index; bool rotated, hasXY, hasSize, hasOrig; } rbl__GdxRegion;
+typedef struct rbl__GdxRegion { int xy[2], size[2], orig[2], offset[2], split[4], index, degrees; bool hasXY, hasSize, hasOrig, hasSplit, hasPad; } rbl__GdxRegion;
 
 static bool rbl__gdxFinish(rbl__AtlasState *s, const char *name, const rbl__GdxRegion *r)
 {
     if (!r->hasXY || !r->hasSize) { rbl__atlasError(s, "region \"%s\": no xy/size or bounds", name, -1); return false; }
-    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, return false);
+    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, "frames", return false);
     RblAtlasFrame *f = &s->frames[s->frameCount];
     memset(f, 0, sizeof(*f));
     f->name = name; f->page = s->pageCount - 1; f->index = r->index;
@@ -9237,8 +9645,20 @@ static bool rbl__gdxFinish(rbl__AtlasState *s, const char *name, const rbl__GdxR
     f->size = r->hasOrig? rbl__v2((float)r->orig[0], (float)r->orig[1]) : rbl__v2(w, h);
     // offset from the bottom-left of the original to the bottom-left of the packed part
     f->trim = rbl__rect((float)r->offset[0], f->size.y - (float)r->offset[1] - h, w, h);
-    f->pivot = rbl__v2(0.5f, 0.5f);
-    if (!rbl__atlasFinishFrame(s, f, r->rotated, true, &s->pages[s->pageCount - 1])) return false;
+    f->pivot = rbl__v2(0.5f, 1.0f);
+    // split: left, right, top, bottom insets of the packed part -> its centre, in canvas pixels
+    if (r->hasSplit)
+    {
+        const int *q = r->split;
+        if ((q[0] < 0) || (q[1] < 0) || (q[2] < 0) || (q[3] < 0) || (q[0] + q[1] > r->size[0]) || (q[2] + q[3] > r->size[1]))
+        { rbl__atlasError(s, "region \"%s\": split insets outside it", name, -1); return false; }
+        f->center = rbl__rect(f->trim.x + (float)q[0], f->trim.y + (float)q[2], w - (float)(q[0] + q[1]), h - (float)(q[2] + q[3]));
+    }
+    s->ignoredPads += r->hasPad;
+    // stored turned `degrees` counter-clockwise: 90 and 270 occupy an h x w block; 90 and 180 are
+    // the clockwise convention plus a half turn (both extents negated)
+    int d = r->degrees;
+    if (!rbl__atlasFinishFrame(s, f, (d == 90) || (d == 270), (d == 90) || (d == 180), &s->pages[s->pageCount - 1])) return false;
     s->frameCount++;
     return true;
 }
@@ -9260,7 +9680,7 @@ static int rbl__gdxByGroup(const void *a, const void *b)
 }
 
 // libGDX: regions named alike with index >= 0 become one tag in index order (the frames move so
-// that each tag is a contiguous run; everything else keeps file order)
+// that each tag is a contiguous run; everything else keeps file order; libGDX has no polygons)
 static bool rbl__gdxGroup(rbl__AtlasState *s)
 {
     int n = s->frameCount;
@@ -9285,7 +9705,7 @@ static bool rbl__gdxGroup(rbl__AtlasState *s)
         while ((from <= e) && (s->frames[from].index < 0)) from++;
         if (from <= e)
         {
-            ok = true; RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, ok = false; break);
+            ok = true; RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, "tags", ok = false; break);
             if (ok)
             {
                 RblAtlasTag *t = &s->tags[s->tagCount++];
@@ -9298,7 +9718,43 @@ static bool rbl__gdxGroup(rbl__AtlasState *s)
     return ok;
 }
 
-static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, const char *dir)
+// Field names libGDX writes (page fields before the first region, region fields after). A line
+// with a colon is a field when it is indented (the old form indents every region field), when its
+// key is one of these, or when the next line is not a region field; otherwise it names a region,
+// colons and all ("ui:button" followed by "bounds:...")
+static bool rbl__gdxKnownKey(const char *k, size_t kl, bool page)
+{
+    static const char *const pageKeys[] = { "size", "format", "filter", "repeat", "pma" };
+    static const char *const regionKeys[] = { "rotate", "xy", "size", "orig", "offset", "index", "bounds", "offsets", "split", "pad" };
+    const char *const *keys = page? pageKeys : regionKeys;
+    int n = page? 5 : 10;
+    for (int i = 0; i < n; i++) if ((strlen(keys[i]) == kl) && (memcmp(keys[i], k, kl) == 0)) return true;
+    return false;
+}
+
+// Whether the first non-blank line from p on is a region field (indented, or a region key and a colon)
+static bool rbl__gdxRegionFieldNext(const char *p, const char *end)
+{
+    while (p < end)
+    {
+        const char *a = p;
+        while ((a < end) && ((*a == ' ') || (*a == '\t'))) a++;
+        const char *eol = a;
+        while ((eol < end) && (*eol != '\n')) eol++;
+        const char *b = eol;
+        while ((b > a) && ((b[-1] == ' ') || (b[-1] == '\t') || (b[-1] == '\r'))) b--;
+        if (a == b) return false;        // a blank line ends the page
+        const char *colon = (const char *)memchr(a, ':', (size_t)(b - a));
+        if (colon == NULL) return false;
+        if (a > p) return true;
+        const char *ke = colon;
+        while ((ke > a) && ((ke[-1] == ' ') || (ke[-1] == '\t'))) ke--;
+        return rbl__gdxKnownKey(a, (size_t)(ke - a), false);
+    }
+    return false;
+}
+
+static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, const char *file)
 {
     const char *p = text, *end = text + size;
     bool expectPage = true;
@@ -9313,9 +9769,11 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
         const char *a = p, *b = eol;
         p = (eol < end)? eol + 1 : end;
         lineNo++;
+        const char *lineStart = a;
         while ((a < b) && ((*a == ' ') || (*a == '\t'))) a++;
         while ((b > a) && ((b[-1] == ' ') || (b[-1] == '\t') || (b[-1] == '\r'))) b--;
-        for (const char *c = a; c < b; c++) if ((unsigned char)*c < 0x20 && (*c != '\t')) { rbl__atlasError(s, "libGDX: control character on line %s", NULL, -1); return false; }
+        bool indented = (a > lineStart);
+        for (const char *c = a; c < b; c++) if ((unsigned char)*c < 0x20 && (*c != '\t')) { rbl__atlasErrorf(s, -1, "libGDX: control character on line %d", lineNo); return false; }
         if (a == b)     // blank line: a page ends (its last region with it)
         {
             if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; region = NULL; }
@@ -9324,17 +9782,18 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
         }
         if (expectPage)
         {
-            size_t dl = (dir != NULL)? strlen(dir) : 0, nl = (size_t)(b - a);
-            char *image = rbl__atlasPoolTake(s, dl + nl + 2);
-            if (image == NULL) return false;
-            if (dl > 0) { memcpy(image, dir, dl); image[dl] = '/'; memcpy(image + dl + 1, a, nl); image[dl + 1 + nl] = 0; }
-            else { memcpy(image, a, nl); image[nl] = 0; }
-            if (rbl__atlasAddPage(s, image, 0, 0) == NULL) return false;
+            const char *written = rbl__atlasPoolCopy(s, a, (size_t)(b - a)), *image = written;
+            if ((written != NULL) && (file != NULL)) image = rbl__atlasFindFile(s, file, written, file, "", "sheet");
+            RblAtlasPage *page = (image == NULL)? NULL : rbl__atlasAddPage(s, image, 0, 0);
+            if ((page == NULL) || ((file != NULL) && !rbl__atlasProbeNormal(s, page))) return false;
             expectPage = false;
             continue;
         }
         const char *colon = (const char *)memchr(a, ':', (size_t)(b - a));
-        if (colon == NULL)      // a region name
+        const char *k = a, *ke = colon;
+        if (colon != NULL) { while ((ke > k) && ((ke[-1] == ' ') || (ke[-1] == '\t'))) ke--; }
+        size_t kl = (colon != NULL)? (size_t)(ke - k) : 0;
+        if ((colon == NULL) || !(indented || rbl__gdxKnownKey(k, kl, region == NULL) || !rbl__gdxRegionFieldNext(p, end)))      // a region name
         {
             if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; }
             region = rbl__atlasPoolCopy(s, a, (size_t)(b - a));
@@ -9342,27 +9801,36 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
             memset(&r, 0, sizeof(r)); r.index = -1;
             continue;
         }
-        const char *k = a, *ke = colon, *v = colon + 1;
-        while ((ke > k) && (ke[-1] == ' ')) ke--;
+        const char *v = colon + 1;
         while ((v < b) && (*v == ' ')) v++;
-        size_t kl = (size_t)(ke - k);
         #define RBL__KEY(word) ((kl == sizeof(word) - 1) && (memcmp(k, word, kl) == 0))
         bool ok = true;
         int q[4];
-        if (region == NULL)     // page fields: only the size is read (format, filter, repeat, pma ignored)
+        size_t vl = (size_t)(b - v);
+        if (region == NULL)     // page fields: size and pma are read (format, filter, repeat: the texture's own)
         {
+            RblAtlasPage *page = &s->pages[s->pageCount - 1];
             if (RBL__KEY("size"))
             {
                 ok = rbl__gdxInts(v, b, q, 2) && (q[0] > 0) && (q[1] > 0) && (q[0] <= RBL__ATLAS_MAX_COORD) && (q[1] <= RBL__ATLAS_MAX_COORD);
-                if (ok) { s->pages[s->pageCount - 1].width = q[0]; s->pages[s->pageCount - 1].height = q[1]; }
+                if (!ok) { rbl__atlasErrorf(s, -1, "libGDX: page size on line %d is not whole texels 1..%g", lineNo, RBL__ATLAS_MAX_COORD); return false; }
+                page->width = q[0]; page->height = q[1];
+            }
+            else if (RBL__KEY("pma"))
+            {
+                if ((vl == 4) && (memcmp(v, "true", 4) == 0)) page->premultiplied = true;
+                else if ((vl == 5) && (memcmp(v, "false", 5) == 0)) page->premultiplied = false;
+                else ok = false;
             }
         }
         else if (RBL__KEY("rotate"))
         {
-            size_t vl = (size_t)(b - v);
-            if (((vl == 4) && (memcmp(v, "true", 4) == 0)) || ((vl == 2) && (memcmp(v, "90", 2) == 0))) r.rotated = true;
-            else if (((vl == 5) && (memcmp(v, "false", 5) == 0)) || ((vl == 1) && (*v == '0'))) r.rotated = false;
-            else ok = false;
+            // true = 90; any multiple of 90 degrees (counter-clockwise, as libGDX and Spine store it)
+            int d = 0;
+            if ((vl == 4) && (memcmp(v, "true", 4) == 0)) d = 90;
+            else if ((vl == 5) && (memcmp(v, "false", 5) == 0)) d = 0;
+            else ok = rbl__gdxInts(v, b, &d, 1) && (d%90 == 0);
+            r.degrees = ((d%360) + 360)%360;
         }
         else if (RBL__KEY("xy")) { ok = rbl__gdxInts(v, b, r.xy, 2); r.hasXY = true; }
         else if (RBL__KEY("size")) { ok = rbl__gdxInts(v, b, r.size, 2); r.hasSize = true; }
@@ -9379,20 +9847,23 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
             ok = rbl__gdxInts(v, b, q, 4);
             r.offset[0] = q[0]; r.offset[1] = q[1]; r.orig[0] = q[2]; r.orig[1] = q[3]; r.hasOrig = true;
         }
+        else if (RBL__KEY("split")) { ok = rbl__gdxInts(v, b, r.split, 4) && (abs(r.split[0]) <= RBL__ATLAS_MAX_COORD) && (abs(r.split[1]) <= RBL__ATLAS_MAX_COORD) && (abs(r.split[2]) <= RBL__ATLAS_MAX_COORD) && (abs(r.split[3]) <= RBL__ATLAS_MAX_COORD); r.hasSplit = true; }
+        else if (RBL__KEY("pad")) { ok = rbl__gdxInts(v, b, q, 4); r.hasPad = true; }
         #undef RBL__KEY
         for (int c = 0; c < 2; c++) if ((abs(r.xy[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.size[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.orig[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.offset[c]) > RBL__ATLAS_MAX_COORD)) ok = false;
-        if (!ok) { char ln[24]; snprintf(ln, sizeof(ln), "%d", lineNo); rbl__atlasError(s, "libGDX: bad value on line %s", ln, -1); return false; }
+        if (!ok) { rbl__atlasErrorf(s, -1, "libGDX: bad %.*s value on line %d", (int)((kl < 32)? kl : 32), k, lineNo); return false; }
     }
     if ((region != NULL) && !rbl__gdxFinish(s, region, &r)) return false;
     if (s->frameCount == 0) { rbl__atlasError(s, "libGDX: no regions%s", NULL, -1); return false; }
     return rbl__gdxGroup(s);
 }
 
-// Parses one text into s (appending a page and its frames); format in/out
-static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int *format, const char *dir, char ***related, int *relatedCount)
+// Parses one text into s (appending its pages and frames); format in/out. file: the text's path
+// (RblLoadAtlas), NULL from memory
+static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int *format, const char *file, char ***related, int *relatedCount)
 {
-    // decoded strings never outgrow their raw text; sheet paths add the folder (at most 64 pages)
-    if (!rbl__atlasPoolBegin(s, 2*(size_t)size + (RBL__ATLAS_MAX_PAGES + 2)*(((dir != NULL)? strlen(dir) : 0) + 2) + 64)) return false;
+    // decoded strings never outgrow their raw text (sheet paths have blocks of their own)
+    if (!rbl__atlasPoolBegin(s, 2*(size_t)size + 64)) return false;
     int f = *format;     // TexturePacker and Aseprite read alike (the caller's name is kept); AUTO: detected
     if (f == RBL_ATLAS_AUTO)
     {
@@ -9401,9 +9872,9 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
         while ((i < size) && ((text[i] == ' ') || (text[i] == '\t') || (text[i] == '\n') || (text[i] == '\r'))) i++;
         f = ((i < size) && (text[i] == '{'))? RBL_ATLAS_AUTO : RBL_ATLAS_LIBGDX;   // JSON: told apart by its meta
     }
-    if (f == RBL_ATLAS_LIBGDX) { *format = f; return rbl__atlasParseGdx(s, text, size, dir); }
+    if (f == RBL_ATLAS_LIBGDX) { *format = f; return rbl__atlasParseGdx(s, text, size, file); }
     rbl__Json j;
-    bool ok = rbl__atlasParseJson(s, text, size, dir, &f, &j);
+    bool ok = rbl__atlasParseJson(s, text, size, file, &f, &j);
     if (ok && (related != NULL))
     {
         int packs = rbl__jsonGet(&j, rbl__jsonGet(&j, 0, "meta"), "related_multi_packs");
@@ -9414,7 +9885,7 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
                 if (name == NULL) { rbl__atlasError(s, "related_multi_packs holds a non-string%s", NULL, j.nodes[k].start); ok = false; break; }
                 // plain file names beside the atlas only: a pack never leads the loader elsewhere
                 if ((name[0] == 0) || (name[0] == '.') || (strchr(name, '/') != NULL) || (strchr(name, '\\') != NULL)) { rbl__atlasError(s, "related pack \"%s\" is not a file name beside the atlas", name, j.nodes[k].start); ok = false; break; }
-                if (*relatedCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); ok = false; break; }
+                if (*relatedCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasErrorf(s, -1, "more than %d sheets", RBL__ATLAS_MAX_PAGES); ok = false; break; }
                 (*related)[(*relatedCount)++] = (char *)name;
             }
     }
@@ -9427,14 +9898,30 @@ static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
 {
     RblAtlas a;
     memset(&a, 0, sizeof(a));
-    RBL__ATLAS_GROW(s, rbl__atlases.live, rbl__atlases.count, rbl__atlases.capacity, const void *, return a);
-    rbl__atlases.live[rbl__atlases.count++] = s;
+    a.id = rbl__liveAdd(s);
+    if (a.id == 0) return a;            // out of memory: the caller fails the load
     s->format = format;
+    // the tables stopped moving: polygons point into their rows, frames at their polygons
+    for (int i = 0; i < s->polygonCount; i++)
+    {
+        RblAtlasPolygon *p = &s->polygons[i];
+        const rbl__AtlasPolyRef *r = &s->polygonRefs[i];
+        p->vertices = s->polyPoints + r->vertex;
+        p->uvs = s->polyPoints + r->vertex + p->vertexCount;
+        p->indices = s->polyIndices + r->index;
+        s->frames[r->frame].polygon = p;
+    }
     a.format = format;
     a.frameCount = s->frameCount; a.tagCount = s->tagCount; a.pageCount = s->pageCount; a.sliceCount = s->sliceCount;
     a.frames = s->frames; a.tags = s->tags; a.pages = s->pages; a.slices = s->slices;
     a.state = s;
     return a;
+}
+
+// What a loaded atlas leaves unread, said once (LOG_INFO: the atlas is fine)
+static void rbl__atlasReportIgnored(const rbl__AtlasState *s, const char *fn, const char *what)
+{
+    if (s->ignoredPads > 0) TraceLog(LOG_INFO, "RBL: %s: %s: libGDX pad (9-slice content padding) of %i regions ignored", fn, what, s->ignoredPads);
 }
 
 static RblAtlas rbl__atlasFail(rbl__AtlasState *s, const char *fn, const char *what)
@@ -9443,7 +9930,7 @@ static RblAtlas rbl__atlasFail(rbl__AtlasState *s, const char *fn, const char *w
     memset(&a, 0, sizeof(a));
     TraceLog(LOG_WARNING, "RBL: %s: %s: %s", fn, what, ((s != NULL) && (s->error[0] != 0))? s->error : "out of memory");
     rbl__atlasFree(s);
-    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__tidyAfterClose();
     return a;
 }
 
@@ -9460,6 +9947,7 @@ RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format)
     if (s->frameCount == 0) { rbl__atlasError(s, "no frames%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas"); }
     RblAtlas a = rbl__atlasPublish(s, f);
     if (a.state == NULL) return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas");
+    rbl__atlasReportIgnored(s, "RblLoadAtlasFromMemory", "atlas");
     return a;
 }
 
@@ -9473,9 +9961,8 @@ RblAtlas RblLoadAtlas(const char *fileName)
     // the folder of the file: sheets and related packs are named relative to it
     size_t fl = strlen(fileName), dl = fl;
     while ((dl > 0) && (fileName[dl - 1] != '/') && (fileName[dl - 1] != '\\')) dl--;
-    char dir[1024], path[2048];
-    if ((dl >= sizeof(dir)) || (fl >= sizeof(path))) { rbl__atlasError(s, "path too long%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
-    memcpy(dir, fileName, dl); dir[(dl > 0)? dl - 1 : 0] = 0;
+    char path[2048];
+    if (fl >= sizeof(path)) { rbl__atlasErrorf(s, -1, "path longer than %d bytes", (int)sizeof(path) - 1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
     char *relatedStore[RBL__ATLAS_MAX_PAGES], **related = relatedStore;
     int relatedCount = 0, done = 0, format = RBL_ATLAS_AUTO;
     const char *loaded[RBL__ATLAS_MAX_PAGES + 1];
@@ -9487,7 +9974,7 @@ RblAtlas RblLoadAtlas(const char *fileName)
         unsigned char *data = LoadFileData(path, &bytes);
         if ((data == NULL) || (bytes <= 0)) { if (data != NULL) UnloadFileData(data); rbl__atlasError(s, "cannot read \"%s\"", path, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
         int f = (done == 0)? RBL_ATLAS_AUTO : format;
-        bool ok = rbl__atlasParse(s, (const char *)data, bytes, &f, (dl > 0)? dir : NULL, &related, &relatedCount);
+        bool ok = rbl__atlasParse(s, (const char *)data, bytes, &f, path, &related, &relatedCount);
         UnloadFileData(data);
         if (!ok) return rbl__atlasFail(s, "RblLoadAtlas", path);
         if (done == 0) format = f;
@@ -9502,41 +9989,42 @@ RblAtlas RblLoadAtlas(const char *fileName)
             if (!seen && (strcmp(related[i], base) != 0)) next = related[i];
         }
         if (next == NULL) break;
-        if (done > RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
-        if (dl + strlen(next) + 1 >= sizeof(path)) { rbl__atlasError(s, "path too long%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        if (done > RBL__ATLAS_MAX_PAGES) { rbl__atlasErrorf(s, -1, "more than %d sheets", RBL__ATLAS_MAX_PAGES); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        if (dl + strlen(next) + 1 >= sizeof(path)) { rbl__atlasErrorf(s, -1, "path longer than %d bytes", (int)sizeof(path) - 1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
         memcpy(path, fileName, dl); memcpy(path + dl, next, strlen(next) + 1);
     }
     if (s->frameCount == 0) { rbl__atlasError(s, "no frames%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
     RblAtlas a = rbl__atlasPublish(s, format);
     if (a.state == NULL) return rbl__atlasFail(s, "RblLoadAtlas", fileName);
+    rbl__atlasReportIgnored(s, "RblLoadAtlas", fileName);
     return a;
 }
 
 bool RblIsAtlasValid(const RblAtlas *atlas)
 {
-    return (atlas != NULL) && rbl__atlasLive(atlas->state);
+    return (atlas != NULL) && rbl__atlasLive(atlas);
 }
 
 void RblUnloadAtlas(RblAtlas *atlas)
 {
     if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: NULL atlas"); return; }
-    if (!rbl__atlasLive(atlas->state))
+    if (!rbl__atlasLive(atlas))
     {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", (atlas->state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", ((atlas->id != 0) || (atlas->state != NULL))? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
         memset(atlas, 0, sizeof(*atlas));
         return;
     }
-    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == atlas->state) { rbl__atlases.live[i] = rbl__atlases.live[--rbl__atlases.count]; break; }
-    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__liveRemove(atlas->id);
     rbl__atlasFree(atlas->state);
     memset(atlas, 0, sizeof(*atlas));
+    rbl__tidyAfterClose();
 }
 
 // The live state of an atlas argument, or NULL after one line under fn
 static const rbl__AtlasState *rbl__atlasArg(const RblAtlas *atlas, const char *fn)
 {
     if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL atlas", fn); return NULL; }
-    if (!rbl__atlasLive(atlas->state)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
+    if (!rbl__atlasLive(atlas)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
     return atlas->state;
 }
 
@@ -9558,11 +10046,17 @@ int RblAtlasFindTag(const RblAtlas *atlas, const char *name)
     return -1;
 }
 
-// Quad of a frame: the trimmed part at its place in the untrimmed frame, pivot as the origin
-// (world units from the drawn quad's bottom-left; may lie outside it)
-static void rbl__atlasFrameQuad(const RblAtlasFrame *f, float worldScale, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+// World units per sheet texel: worldScale per pixel of the art at scale 1 (a sheet exported at
+// meta.scale 0.5 has half the texels: its frames come out the size of the full-scale sheet's)
+static double rbl__atlasUnit(const rbl__AtlasState *s, const RblAtlasFrame *f, float worldScale)
 {
-    double k = worldScale;
+    return (double)worldScale/(double)s->pages[f->page].scale;
+}
+
+// Quad of a frame: the trimmed part at its place in the untrimmed frame, pivot as the origin
+// (world units from the drawn quad's bottom-left; may lie outside it); k world units per texel
+static void rbl__atlasFrameQuad(const RblAtlasFrame *f, double k, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
     double px = (double)f->pivot.x*f->size.x, py = (double)f->pivot.y*f->size.y;     // pixels, top-left origin
     *source = f->source;
     *size = rbl__v2((float)(f->trim.width*k), (float)(f->trim.height*k));
@@ -9576,7 +10070,7 @@ static bool rbl__atlasQuad(const RblAtlas *atlas, int frame, float worldScale, c
     if (s == NULL) return false;
     if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
-    rbl__atlasFrameQuad(&s->frames[frame], worldScale, source, size, origin, flags);
+    rbl__atlasFrameQuad(&s->frames[frame], rbl__atlasUnit(s, &s->frames[frame], worldScale), source, size, origin, flags);
     return true;
 }
 
@@ -9598,6 +10092,25 @@ bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblIns
     instance->source = src; instance->size = size; instance->origin = origin;
     instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
     return true;
+}
+
+// The source rectangle that shows the part [a0, a1] x [b0, b1] of a frame's trimmed picture
+// (fractions: a from its left, b from its top; beyond 0..1 the texture coordinates run on at the
+// same rate). Texture x follows the picture's x (upright) or y (stored turned clockwise: x runs up
+// the picture unless the height is negated); growing with it or against it (a negated extent).
+static Rectangle rbl__atlasSubSource(const RblAtlasFrame *f, double a0, double a1, double b0, double b1)
+{
+    const Rectangle o = f->source;
+    bool rotated = (f->flags & RBL_FRAME_ROTATED) != 0;
+    double x0 = rotated? b0 : a0, x1 = rotated? b1 : a1, y0 = rotated? a0 : b0, y1 = rotated? a1 : b1;
+    bool forwardX = rotated? (o.height < 0.0f) : (o.width >= 0.0f), forwardY = (rotated? o.width : o.height) >= 0.0f;
+    double w = fabs((double)o.width), h = fabs((double)o.height);
+    Rectangle r;
+    r.x = (float)(o.x + (forwardX? x0 : 1.0 - x1)*w);
+    r.y = (float)(o.y + (forwardY? y0 : 1.0 - y1)*h);
+    r.width = (float)((x1 - x0)*w*((o.width < 0.0f)? -1.0 : 1.0));
+    r.height = (float)((y1 - y0)*h*((o.height < 0.0f)? -1.0 : 1.0));
+    return r;
 }
 
 // Cross-fade quad of two frames: the union of their trimmed rectangles (pixels from each frame's own
@@ -9623,24 +10136,13 @@ static bool rbl__atlasFadeQuad(const RblAtlas *atlas, int frame, int nextFrame, 
         r[k][0] = t.x - px; r[k][1] = t.y - py; r[k][2] = (double)t.x + t.width - px; r[k][3] = (double)t.y + t.height - py;
     }
     double u[4] = { fmin(r[0][0], r[1][0]), fmin(r[0][1], r[1][1]), fmax(r[0][2], r[1][2]), fmax(r[0][3], r[1][3]) };
-    double uw = u[2] - u[0], uh = u[3] - u[1], k = worldScale;
+    double uw = u[2] - u[0], uh = u[3] - u[1], k = rbl__atlasUnit(s, f[0], worldScale);
     Rectangle src[2], clip[2];
     for (int i = 0; i < 2; i++)
     {
-        const Rectangle o = f[i]->source;
         double tw = r[i][2] - r[i][0], th = r[i][3] - r[i][1];
         // The union's edges in the frame's own fractions (0..1 = its trim)
-        double a0 = (u[0] - r[i][0])/tw, a1 = (u[2] - r[i][0])/tw, b0 = (u[1] - r[i][1])/th, b1 = (u[3] - r[i][1])/th;
-        // Texture x follows the picture's x (upright) or y (stored turned clockwise: x runs up the
-        // picture unless the height is negated); growing with it or against it (a negated extent)
-        bool rotated = (f[i]->flags & RBL_FRAME_ROTATED) != 0;
-        double x0 = rotated? b0 : a0, x1 = rotated? b1 : a1, y0 = rotated? a0 : b0, y1 = rotated? a1 : b1;
-        bool forwardX = rotated? (o.height < 0.0f) : (o.width >= 0.0f), forwardY = (rotated? o.width : o.height) >= 0.0f;
-        double w = fabs((double)o.width), h = fabs((double)o.height);
-        src[i].x = (float)(o.x + (forwardX? x0 : 1.0 - x1)*w);
-        src[i].y = (float)(o.y + (forwardY? y0 : 1.0 - y1)*h);
-        src[i].width = (float)((x1 - x0)*w*((o.width < 0.0f)? -1.0 : 1.0));
-        src[i].height = (float)((y1 - y0)*h*((o.height < 0.0f)? -1.0 : 1.0));
+        src[i] = rbl__atlasSubSource(f[i], (u[0] - r[i][0])/tw, (u[2] - r[i][0])/tw, (u[1] - r[i][1])/th, (u[3] - r[i][1])/th);
         clip[i].x = (float)((r[i][0] - u[0])/uw); clip[i].y = (float)((r[i][1] - u[1])/uh);
         clip[i].width = (float)(tw/uw); clip[i].height = (float)(th/uh);
     }
@@ -9675,6 +10177,109 @@ bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float
     instance->source = src; instance->size = size; instance->origin = origin;
     instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
     *fade = f;
+    return true;
+}
+
+// ---- slices: sub-frames of a frame -------------------------------------------------------------
+int RblAtlasFindSlice(const RblAtlas *atlas, const char *name, int frame)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblAtlasFindSlice");
+    if (s == NULL) return -1;
+    if (name == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasFindSlice: NULL name"); return -1; }
+    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: RblAtlasFindSlice: frame %i outside 0..%i", frame, s->frameCount - 1); return -1; }
+    for (int i = 0; i < s->sliceCount; i++)
+        if ((s->slices[i].frame <= frame) && (frame <= s->slices[i].lastFrame) && (strcmp(s->slices[i].name, name) == 0)) return i;
+    return -1;
+}
+
+// A slice key drawn alone at a frame it applies to: its bounds clipped to the frame's trim (only
+// drawn pixels are sampled), placed about its pivot as a frame about its own
+static bool rbl__atlasSliceQuad(const RblAtlas *atlas, int slice, int frame, float worldScale, const char *fn, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, fn);
+    if (s == NULL) return false;
+    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
+    if ((slice < 0) || (slice >= s->sliceCount)) { TraceLog(LOG_WARNING, "RBL: %s: slice %i outside 0..%i", fn, slice, s->sliceCount - 1); return false; }
+    const RblAtlasSlice *key = &s->slices[slice];
+    if ((frame < key->frame) || (frame > key->lastFrame)) { TraceLog(LOG_WARNING, "RBL: %s: slice key %i applies to frames %i..%i, not %i (RblAtlasFindSlice)", fn, slice, key->frame, key->lastFrame, frame); return false; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
+    const RblAtlasFrame *f = &s->frames[frame];
+    const Rectangle t = f->trim, b = key->bounds;
+    double l = fmax(b.x, t.x), top = fmax(b.y, t.y), r = fmin((double)b.x + b.width, (double)t.x + t.width), bottom = fmin((double)b.y + b.height, (double)t.y + t.height);
+    if (!((r > l) && (bottom > top))) { TraceLog(LOG_WARNING, "RBL: %s: slice \"%s\" lies outside frame %i's drawn (trimmed) pixels", fn, key->name, frame); return false; }
+    double k = rbl__atlasUnit(s, f, worldScale);
+    *source = rbl__atlasSubSource(f, (l - t.x)/t.width, (r - t.x)/t.width, (top - t.y)/t.height, (bottom - t.y)/t.height);
+    *size = rbl__v2((float)((r - l)*k), (float)((bottom - top)*k));
+    *origin = rbl__v2((float)((key->pivot.x - l)*k), (float)((bottom - key->pivot.y)*k));
+    *flags = f->flags;
+    return true;
+}
+
+bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float worldScale, RblBillboard *billboard)
+{
+    if (billboard == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasSliceBillboard: NULL billboard"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags;
+    if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceBillboard", &src, &size, &origin, &flags)) return false;
+    billboard->source = src; billboard->size = size; billboard->origin = origin;
+    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    return true;
+}
+
+bool RblAtlasSliceInstance(const RblAtlas *atlas, int slice, int frame, float worldScale, RblInstance *instance)
+{
+    if (instance == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasSliceInstance: NULL instance"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags;
+    if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceInstance", &src, &size, &origin, &flags)) return false;
+    instance->source = src; instance->size = size; instance->origin = origin;
+    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    return true;
+}
+
+// ---- a page's textures into a Material ----------------------------------------------------------
+// The colour sheet into ALBEDO and, when there is one, its same-layout normal sheet into NORMAL
+// (an RGB tangent-space map: RblMaterialLayout.normalEncoding RGB), both checked before either slot
+// changes; the slots' previous textures are replaced, not unloaded (UnloadMaterial frees these)
+bool RblLoadAtlasTextures(const RblAtlas *atlas, int page, const char *normalSuffix, Material *material, RblMaterialLayout *layout)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblLoadAtlasTextures");
+    if (s == NULL) return false;
+    if ((page < 0) || (page >= s->pageCount)) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: page %i outside 0..%i", page, s->pageCount - 1); return false; }
+    if ((material == NULL) || (material->maps == NULL)) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: NULL material or material.maps"); return false; }
+    const RblAtlasPage *pg = &s->pages[page];
+    char suffixed[RBL__ATLAS_PATH];
+    const char *normalPath = pg->normalImage;          // NULL suffix: the file's pairing or "_n" found at load
+    if (normalSuffix != NULL)
+    {
+        normalPath = NULL;                              // "": no normal sheet
+        if ((normalSuffix[0] != 0) && !rbl__pathWithSuffix(pg->image, normalSuffix, suffixed, sizeof(suffixed))) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: normal sheet path longer than %i bytes", RBL__ATLAS_PATH - 1); return false; }
+        if (normalSuffix[0] != 0) normalPath = suffixed;
+    }
+    const char *missing = ((pg->image[0] == 0) || !FileExists(pg->image))? pg->image : (((normalPath != NULL) && !FileExists(normalPath))? normalPath : NULL);
+    if (missing != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: %s \"%s\" not found", (missing == pg->image)? "sheet" : "normal sheet", missing); return false; }
+    Texture2D albedo = LoadTexture(pg->image), normal;
+    memset(&normal, 0, sizeof(normal));
+    if ((albedo.id != 0) && (normalPath != NULL)) normal = LoadTexture(normalPath);
+    const char *bad = (albedo.id == 0)? "the sheet did not load (no GL context, or not an image)" : (((normalPath != NULL) && (normal.id == 0))? "the normal sheet did not load" : NULL);
+    if ((bad == NULL) && (pg->width > 0) && ((albedo.width != pg->width) || (albedo.height != pg->height))) bad = "the sheet's size differs from the size the atlas states";
+    if ((bad == NULL) && (normal.id != 0) && ((normal.width != albedo.width) || (normal.height != albedo.height))) bad = "the normal sheet's size differs from the sheet's (same layout needed)";
+    if (bad != NULL)
+    {
+        if (albedo.id != 0) UnloadTexture(albedo);
+        if (normal.id != 0) UnloadTexture(normal);
+        TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: \"%s\": %s", pg->image, bad);
+        return false;
+    }
+    // ES 2 / WebGL1 sample a non-power-of-two texture only with clamped edges
+    const bool npot = ((albedo.width & (albedo.width - 1)) != 0) || ((albedo.height & (albedo.height - 1)) != 0);
+    if ((rbl__glsl() == 100) && npot) { SetTextureWrap(albedo, TEXTURE_WRAP_CLAMP); if (normal.id != 0) SetTextureWrap(normal, TEXTURE_WRAP_CLAMP); }
+    material->maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    if (normal.id != 0) material->maps[MATERIAL_MAP_NORMAL].texture = normal;
+    if (layout != NULL)
+    {
+        memset(layout, 0, sizeof(*layout));
+        layout->normalEncoding = (normal.id != 0)? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
+        layout->premultipliedAlpha = pg->premultiplied;
+    }
     return true;
 }
 
@@ -9797,7 +10402,10 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
     }
     if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
-    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
+    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance,
+    // with each page's world units per texel divided out once)
+    double unit[RBL__ATLAS_MAX_PAGES];
+    for (int p = 0; p < s->pageCount; p++) unit[p] = (double)worldScale/(double)s->pages[p].scale;
     int done = 0, skipped = 0;
     const char *why = NULL;
     for (int i = 0; i < count; i++)
@@ -9806,7 +10414,8 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
         if (bad != NULL) { skipped++; why = bad; continue; }
         RblInstance *in = &instances[i];
         unsigned int flags;
-        rbl__atlasFrameQuad(&s->frames[players[i].frame], worldScale, &in->source, &in->size, &in->origin, &flags);
+        const RblAtlasFrame *f = &s->frames[players[i].frame];
+        rbl__atlasFrameQuad(f, unit[f->page], &in->source, &in->size, &in->origin, &flags);
         in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
         done++;
     }

@@ -31,6 +31,8 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_lit_bad_lights_are_rejected_and_change_nothing),
         RT_TEST(test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases),
         RT_TEST(test_atlas_rotated_frames_light_like_the_upright_frame),
+        RT_TEST(test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_the_reference),
+        RT_TEST(test_atlas_premultiplied_pages_light_and_blend_as_their_straight_colour),
         RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate),
         RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro),
         RT_TEST_GLSL3(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),

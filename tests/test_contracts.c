@@ -1140,6 +1140,18 @@ static void c_atlas_load(void)
     EXPECT_REFUSED(loadedFile(""));
     EXPECT_REFUSED(loadedFile("no/such/atlas.json"));
     ck(loadedFromMemory(atlasText, n, RBL_ATLAS_TEXTUREPACKER) && loadedFromMemory(atlasText, n, RBL_ATLAS_ASEPRITE), "good text refused: %s", lastWarning);
+    // the entry cap (built here at RBL_MAX_ATLAS_ENTRIES 4096): JSON values, and rows of the frame
+    // table (libGDX regions), each refused with the cap named in the line
+    static char big[200000];
+    int len = snprintf(big, sizeof(big), "{\"frames\": [");
+    for (int i = 0; i < 600; i++) len += snprintf(big + len, sizeof(big) - (size_t)len, "%s{\"filename\": \"f\", \"frame\": {\"x\":0,\"y\":0,\"w\":1,\"h\":1}}", (i > 0)? "," : "");
+    len += snprintf(big + len, sizeof(big) - (size_t)len, "]}");
+    EXPECT_REFUSED(loadedFromMemory(big, len, 0));
+    ck(strstr(lastWarning, "4096 JSON values (RBL_MAX_ATLAS_ENTRIES)") != NULL, "JSON cap not named: %s", lastWarning);
+    len = snprintf(big, sizeof(big), "p.png\n");
+    for (int i = 0; i < 4097; i++) len += snprintf(big + len, sizeof(big) - (size_t)len, "r\nxy:0,0\nsize:1,1\n");
+    EXPECT_REFUSED(loadedFromMemory(big, len, 0));
+    ck(strstr(lastWarning, "4096 frames (RBL_MAX_ATLAS_ENTRIES)") != NULL, "frame cap not named: %s", lastWarning);
 }
 
 static void c_atlas_lifecycle(void)
@@ -1190,6 +1202,109 @@ static void c_atlas_quads(void)
     RblAtlas stale = a;
     RblUnloadAtlas(&a);
     EXPECT_REFUSED(RblAtlasBillboard(&stale, 0, 1.0f, &b));
+}
+
+// Slice keys as sub-frames: NULL outputs and names, zero and stale atlases, keys and frames out of
+// range, a key at a frame it does not cover, a key outside the frame's drawn pixels, bad scales;
+// outputs untouched; accepted extremes finite
+static void c_atlas_slices(void)
+{
+    static const char text[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":8}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":2,\"y\":0,\"w\":4,\"h\":8},"
+        " \"sourceSize\": {\"w\":8,\"h\":8}}, {\"filename\": \"b\", \"frame\": {\"x\":4,\"y\":0,\"w\":8,\"h\":8}}], \"meta\": {\"app\": \"aseprite\", \"size\": {\"w\":16,\"h\":16},"
+        " \"scale\": \"0.5\", \"slices\": [{\"name\": \"s\", \"keys\": [{\"frame\": 1, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":2}, \"pivot\": {\"x\":1,\"y\":1}}]},"
+        " {\"name\": \"edge\", \"keys\": [{\"frame\": 0, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":8}}]}]}}";
+    RblAtlas a = RblLoadAtlasFromMemory(text, (int)strlen(text), RBL_ATLAS_AUTO), zero; memset(&zero, 0, sizeof(zero));
+    ck(RblIsAtlasValid(&a) && a.sliceCount == 2, "fixture: %s", lastWarning);
+    RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
+    RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
+    EXPECT_QUIET(RblAtlasFindSlice(&a, "s", 1) == 0, true);
+    EXPECT_QUIET(RblAtlasFindSlice(&a, "s", 0) == -1, true);
+    EXPECT_QUIET(RblAtlasFindSlice(&a, "edge", 1) == 1, true);
+    EXPECT_REFUSED(RblAtlasFindSlice(&a, NULL, 0) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(&a, "s", -1) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(&a, "s", 2) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(NULL, "s", 0) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(&zero, "s", 0) >= 0);
+    EXPECT_REFUSED(RblAtlasSliceBillboard(&a, 0, 1, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasSliceInstance(&a, 0, 1, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasSliceBillboard(NULL, 0, 1, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasSliceInstance(&zero, 0, 1, 1.0f, &in));
+    const int keys[2] = { -1, 2 }, frames[2] = { -1, 2 };
+    for (int k = 0; k < 2; k++)
+    {
+        EXPECT_REFUSED(RblAtlasSliceBillboard(&a, keys[k], 1, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasSliceInstance(&a, 0, frames[k], 1.0f, &in));
+    }
+    EXPECT_REFUSED(RblAtlasSliceBillboard(&a, 0, 0, 1.0f, &b));     // key 0 covers frame 1 only
+    EXPECT_REFUSED(RblAtlasSliceInstance(&a, 1, 0, 1.0f, &in));     // "edge" lies left of frame 0's trim
+    const float scales[3] = { 0.0f, -1.0f, 2e15f };
+    for (int vi = 0; vi < 8; vi++)
+    {
+        float sc = (vi < 5)? badFloats[vi] : scales[vi - 5];
+        EXPECT_REFUSED(RblAtlasSliceBillboard(&a, 0, 1, sc, &b));
+        EXPECT_REFUSED(RblAtlasSliceInstance(&a, 1, 1, sc, &in));
+    }
+    ck(memcmp(&b, &b0, sizeof(b)) == 0 && memcmp(&in, &in0, sizeof(in)) == 0, "refused calls wrote their outputs");
+    ck(RblAtlasSliceBillboard(&a, 0, 1, 1e15f, &b) && allFinite(&b.size.x, 2) && allFinite(&b.origin.x, 2) && allFinite(&b.source.x, 4), "largest scale: non-finite or refused");
+    ck(RblAtlasSliceInstance(&a, 1, 1, 1e-45f, &in) && allFinite(&in.size.x, 2) && allFinite(&in.origin.x, 2), "tiny scale refused");
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblAtlasSliceBillboard(&stale, 0, 1, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasFindSlice(&stale, "s", 1) >= 0);
+}
+
+// A page's textures into a Material: NULL and stale atlases, pages, materials, a suffix naming no
+// file, a normal sheet of another size, a sheet not of the stated size, a sheet not found; nothing
+// changes in the material on refusal; the accepted calls fill the slots and the layout
+static void c_atlas_textures(void)
+{
+    MakeDirectory("build/tests/contracts");
+    Image img = GenImageColor(16, 16, RED);
+    ExportImage(img, "build/tests/contracts/sheet.png");
+    ExportImage(img, "build/tests/contracts/sheet_n.png");
+    ExportImage(img, "build/tests/contracts/wrong.png");
+    UnloadImage(img);
+    img = GenImageColor(8, 8, BLUE);
+    ExportImage(img, "build/tests/contracts/sheet_small.png");
+    ExportImage(img, "build/tests/contracts/wrong_n.png");
+    UnloadImage(img);
+    SaveFileText("build/tests/contracts/sheet.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"sheet.png\", \"size\": {\"w\":16,\"h\":16}}}");
+    SaveFileText("build/tests/contracts/big.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"sheet.png\", \"size\": {\"w\":32,\"h\":32}}}");
+    SaveFileText("build/tests/contracts/wrong.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"wrong.png\"}}");
+    static const char memText[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"nowhere.png\"}}";
+    RblAtlas a = RblLoadAtlas("build/tests/contracts/sheet.json"), big = RblLoadAtlas("build/tests/contracts/big.json"), wrong = RblLoadAtlas("build/tests/contracts/wrong.json");
+    RblAtlas mem = RblLoadAtlasFromMemory(memText, (int)strlen(memText), RBL_ATLAS_AUTO), zero; memset(&zero, 0, sizeof(zero));
+    ck(RblIsAtlasValid(&a) && RblIsAtlasValid(&big) && RblIsAtlasValid(&wrong) && RblIsAtlasValid(&mem) && (a.pages[0].normalImage != NULL), "fixtures: %s", lastWarning);
+    Material m = LoadMaterialDefault(), noMaps = m;
+    noMaps.maps = NULL;
+    Material keep = m;
+    Texture2D t0 = m.maps[MATERIAL_MAP_ALBEDO].texture, t2 = m.maps[MATERIAL_MAP_NORMAL].texture;
+    RblMaterialLayout layout, layout0; memset(&layout, 0x5A, sizeof(layout)); layout0 = layout;
+    EXPECT_REFUSED(RblLoadAtlasTextures(NULL, 0, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&zero, 0, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, -1, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 1, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, NULL, NULL, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, NULL, &noMaps, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, "_none", &m, &layout));       // sheet_none.png does not exist
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, "_small", &m, &layout));      // 8x8 beside a 16x16 sheet
+    EXPECT_REFUSED(RblLoadAtlasTextures(&big, 0, NULL, &m, &layout));        // stated 32x32, the file 16x16
+    EXPECT_REFUSED(RblLoadAtlasTextures(&wrong, 0, NULL, &m, &layout));      // its "_n" sheet is 8x8
+    EXPECT_REFUSED(RblLoadAtlasTextures(&mem, 0, NULL, &m, &layout));        // as written, nowhere
+    ck(memcmp(&m, &keep, sizeof(m)) == 0 && memcmp(&m.maps[MATERIAL_MAP_ALBEDO].texture, &t0, sizeof(t0)) == 0 && memcmp(&m.maps[MATERIAL_MAP_NORMAL].texture, &t2, sizeof(t2)) == 0 &&
+       memcmp(&layout, &layout0, sizeof(layout)) == 0, "refused calls changed the material or the layout");
+    // accepted: the sheet and its "_n" sheet; "" loads the sheet alone (the normal slot kept)
+    EXPECT_QUIET(RblLoadAtlasTextures(&a, 0, NULL, &m, &layout), true);
+    ck(m.maps[MATERIAL_MAP_ALBEDO].texture.width == 16 && m.maps[MATERIAL_MAP_NORMAL].texture.width == 16 && layout.normalEncoding == RBL_NORMAL_RGB && !layout.premultipliedAlpha, "loaded slots");
+    Texture2D loaded[2] = { m.maps[MATERIAL_MAP_ALBEDO].texture, m.maps[MATERIAL_MAP_NORMAL].texture };
+    EXPECT_QUIET(RblLoadAtlasTextures(&a, 0, "", &m, NULL), true);
+    ck(m.maps[MATERIAL_MAP_NORMAL].texture.id == loaded[1].id && m.maps[MATERIAL_MAP_ALBEDO].texture.id != loaded[0].id, "\"\": the normal slot changed");
+    UnloadTexture(loaded[0]); UnloadTexture(loaded[1]); UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
+    MemFree(m.maps);
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblLoadAtlasTextures(&stale, 0, NULL, &keep, NULL));
+    RblUnloadAtlas(&big); RblUnloadAtlas(&wrong); RblUnloadAtlas(&mem);
 }
 
 // Cross-fade quads: NULL outputs, atlases, frames (either), weights, scales, stale; outputs
@@ -1423,12 +1538,7 @@ static void expectEveryDrawRefused(Material m, const char *what)
 {
     RblBillboard b = billboard();
     printf("      %s\n", what);
-    EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
-    RblBatch batch = RblLoadBatch(2);
-    RblBeginBatch(&batch, camera());
-    EXPECT_REFUSED(RblBatchAdd(&batch, m, &b));
-    RblEndBatch(&batch);
-    RblUnloadBatch(&batch);
+    expectBillboardRefused(m, b);
     Mesh cube = GenMeshCube(1, 1, 1);
     EXPECT_REFUSED(V(RblDrawMesh(cube, m, MatrixIdentity())));
     Model model = LoadModelFromMesh(cube);
@@ -1578,6 +1688,16 @@ static void c_stale_objects_reused_address(void)
     EXPECT_REFUSED(V(RblUnloadGBuffer(&forgedG)));
     ck(RblIsGBufferValid(&gb), "the newer G-buffer was touched by its forged copy");
     RblUnloadGBuffer(&gb);
+
+    RblAtlas aa = goodAtlas(), staleA2 = aa;
+    RblUnloadAtlas(&aa);
+    RblAtlas ab = goodAtlas(), forgedA = ab;
+    forgedA.id = staleA2.id;
+    EXPECT_QUIET(RblIsAtlasValid(&forgedA), false);
+    EXPECT_REFUSED(RblAtlasFindFrame(&forgedA, "a") >= 0);
+    EXPECT_REFUSED(V(RblUnloadAtlas(&forgedA)));
+    ck(RblIsAtlasValid(&ab), "the newer atlas was touched by its forged copy");
+    RblUnloadAtlas(&ab);
 
     RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
     RblShadowMap ma = RblLoadShadowMap(sd), staleM = ma;
@@ -1931,12 +2051,14 @@ static const Case cases[] = {
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load, "null counts" },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle, "null stale-header" },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads, "null stale-header" },
+    { "RblAtlasFindSlice RblAtlasSliceBillboard RblAtlasSliceInstance", "NULL, stale, keys, frames, uncovered frames, outside the trim, scales; outputs untouched", c_atlas_slices, "null stale-header counts floats" },
+    { "RblLoadAtlasTextures", "NULL, stale, pages, materials (maps NULL), missing or mis-sized sheets; material untouched", c_atlas_textures, "null null-inside stale-header counts" },
     { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale, different sheets, empty trims; outputs untouched; equal frames unclipped", c_atlas_fade_quads, "null stale-header" },
     { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites, "null stale-header counts floats" },
     { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawInstanced RblDrawMesh RblDrawModel RblIsLitShaderValid RblUnloadLitShader", "lit Shader copies after RblUnloadLitShader, UnloadShader, UnloadMaterial; then nothing, a lit load, a raylib load", c_stale_shader_copies, "stale-header stale-raylib stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawMesh RblDrawModel RblIsLitShaderValid RblLoadLitShader", "lit Shader copies whose GL name a raylib shader or a lit load took (reuse staged)", c_stale_shader_copies_reused_id, "stale-reused stale-raylib" },
-    { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },
+    { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap RblIsAtlasValid RblAtlasFindFrame RblUnloadAtlas", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblDrawInstanced RblDrawMesh RblDrawModel", "NULL maps/locs/arrays; shaders, textures and meshes raylib unloaded", c_null_and_dead_inside_raylib_structs, "null-inside stale-raylib" },
     { "RblLightFeatures RblSetScene RblUpdateSpriteInstances RblDrawInstanced", "every count at its limit and one past", c_counts_at_and_past_limits, "counts" },
     { "RblDrawBillboard", "Material values (maps[].value, params[]) NaN/Inf/overflowing: finite float output", c_material_values_every_float, "floats" },

@@ -281,6 +281,20 @@ static void test_sprites_instanced_sort_draws_alike_in_any_array_order(void)
     UnloadTexture(glass);
 }
 
+// A soft-particle material: white, never cut (faded texels blend to nothing), fade distance 0.5
+static Material sprSoftPuff(Texture2D white)
+{
+    RblLitShaderDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.softParticles = true;
+    Material puff = LoadMaterialDefault();
+    puff.shader = RblLoadLitShader(sd);
+    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
+    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    return puff;
+}
+
 // Centre pixel of a white soft card `delta` in front of the plane z = 0, drawn alone over black into out
 static Color sprSoftCentre(Camera3D cam, Material puff, RenderTexture2D out, float delta)
 {
@@ -304,14 +318,7 @@ static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void
 {
     Texture2D white = solidTexture(WHITE);
     Material wall = sprMaterial(white, 0.0f);
-    RblLitShaderDesc sd;
-    memset(&sd, 0, sizeof(sd));
-    sd.softParticles = true;
-    Material puff = LoadMaterialDefault();
-    puff.shader = RblLoadLitShader(sd);
-    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;           // never cut: faded texels blend to nothing
-    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    Material puff = sprSoftPuff(white);
     RT_CHECK(RblIsLitShaderValid(puff.shader), "soft variant did not compile");
     RenderTexture2D sceneTarget = RblLoadSceneTarget(SPR_TARGET, SPR_TARGET);
     RT_CHECK(sceneTarget.id != 0 && sceneTarget.depth.id != 0, "scene target refused");
@@ -352,7 +359,9 @@ static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void
         UnloadRenderTexture(out);
     }
     printf("    soft particles: worst |centre - 255*clamp(delta/0.5)| %.1f/255 over 7 distances x 2 projections\n", worst);
-    RblLitShaderDesc bad = sd;
+    RblLitShaderDesc bad;
+    memset(&bad, 0, sizeof(bad));
+    bad.softParticles = true;
     bad.deferred = true;
     warnings = 0;
     Shader refused = RblLoadLitShader(bad);
@@ -373,14 +382,7 @@ static void test_sprites_soft_particles_in_a_plain_frame_with_two_added_lines(vo
     Texture2D white = solidTexture(WHITE);
     Material wall = sprMaterial(white, 0.0f);
     wall.maps[MATERIAL_MAP_ALBEDO].color = (Color){ 0, 0, 255, 255 };
-    RblLitShaderDesc sd;
-    memset(&sd, 0, sizeof(sd));
-    sd.softParticles = true;
-    Material puff = LoadMaterialDefault();
-    puff.shader = RblLoadLitShader(sd);
-    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
-    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    Material puff = sprSoftPuff(white);
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
     const float deltas[6] = { -0.2f, 0.0f, 0.1f, 0.25f, 0.4f, 0.8f };
     const int sizes[3] = { SPR_TARGET, 48, 80 };
@@ -479,14 +481,7 @@ static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
     Material wall = LoadMaterialDefault();
     wall.shader = RblLoadLitShader(geoDesc);
     wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    RblLitShaderDesc sd;
-    memset(&sd, 0, sizeof(sd));
-    sd.softParticles = true;
-    Material puff = LoadMaterialDefault();
-    puff.shader = RblLoadLitShader(sd);
-    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
-    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    Material puff = sprSoftPuff(white);
     RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
     Camera3D cam = sprCamera();
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
