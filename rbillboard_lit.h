@@ -165,13 +165,16 @@
 *       - CAMERA_PLANE: the caller's up off the camera's right; f = the camera's up. normal = right x
 *         up; the up keeps its length and its part along right (collapsing as raylib's quad does).
 *       - CAMERA_POSITION: the camera's up off n (toward the eye); f = n x the camera's right (the
-*         centre on the camera's screen-up line: shadow passes orient casters by the viewer's
-*         camera). right = up x n. Centre at the eye: the camera plane.
+*         centre on the camera's screen-up line: camera-facing shadow casters meet it). right = up x n.
+*         Centre at the eye: the camera plane.
 *       - AXIS: the eye off the axis; f = the view's back off the axis, itself blended toward the
 *         view's up off the axis where the view looks along the axis. right = axis x n.
 *       - FIXED: up off the normal; f = the fallback up of the normal (as for the camera).
 *       - AXIS in a shadow pass: the tilt fades out (weight w of the sine between the light and the
-*         pivot line) where the light nears the pivot line, along which no tilt helps.
+*         pivot line) where the light nears the pivot line, along which no tilt helps. Light-facing
+*         casters near the axis: the eye (the light) off the axis falls back as above; the tilt then
+*         turns the card about its mid-height line, so its shadow, centred on the card, is the same
+*         whichever way the fallback turns it (no jump as the light passes over: SHADOWS).
 *       - up or axis shorter than 1e-12 counts as zero (the default).
 *       - NaN/Inf input is skipped with one warning per batch or draw, never written to a buffer;
 *         instance values must stay below 2^120 in magnitude (the GPU could overflow).
@@ -228,6 +231,7 @@
 *       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
 *         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a bits 23..16
 *         RT1 RGBA8    bits 55..24 of one 56-bit word (RT1.r its most significant byte); RT2 RG8 bits 15..0
+*                      (RGBA8 where the G-buffer receives shadows: ba each pixel's caster identity, 12 B)
 *           GGX        normal 36 bits | roughness 12: log over [0.045, 1] | metalness 8: linear
 *           Blinn-P.   normal 36 bits | shininess 11: log2(n)/11 | intensity 9: log2(1 + 256 s)/9
 *                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
@@ -256,22 +260,59 @@
 *       0..3r: casters up to 2r toward the light), moved in whole texels of a world-fixed grid so edges
 *       do not crawl as the focus follows the camera; spot = perspective over the outer cone (<= 80
 *       degrees), depth range/1000..range (range 0: out to the focus sphere).
-*       Casters: inside a pass every header draw swaps in a depth-only caster keeping the material's
+*       Casters: inside a pass every header draw swaps in a caster program keeping the material's
 *       albedo map, colDiffuse, tint and alpha cutoff (a cut-out casts a cut-out); culling is off.
-*       Billboards face the billboard call's camera (the viewer's): the shadow is the silhouette seen,
-*       never falling on the visibly lit side (RblShadowDesc.faceLight: face the light instead). AXIS
-*       billboards lean away from the light about their pivot line until it sees them at minCastAngle
-*       (30 degrees): an upright tree under a light along its axis would be edge-on and cast nothing
-*       (a light within 7.2 degrees of the pivot line tilts them less, none within 0.9: DEGENERATE FRAMES).
-*       Receiver bias (per light sample, world units, t = texel size at the point):
-*         normal offset    lookup moved along N by normalBias*t*sin(incidence) (shifts edges <= that)
+*       Billboards never shadow themselves: each caster writes its identity with its distance into
+*       the map's casters target (RGBA8: rg a 16-bit distance code, ba a 16-bit identity; Models 0), and
+*       a billboard receiver ignores every texel holding its own identity, in every PCF fetch. The
+*       identity mixes the float bits of the billboard's pivot, size and origin (rbl__casterId; the
+*       instanced stage computes the same): the same in every pass, order, sort, cull and path, with
+*       no per-billboard field; batches stream it (4 bytes a vertex) only into casters and receivers.
+*       A flat card cannot shadow itself, so whatever orientation the pass gives it and however its
+*       normal map bends the normal, its own pixels keep their light; other casters (a crate, the
+*       next sprite) shadow it as before. RblShadowDesc.selfShadow drops the identities (depth only:
+*       no casters target, 4 B/texel less; billboards then darken themselves where the receiver's
+*       PCF footprint meets their own caster).
+*       Caster orientation (billboards; FIXED cards keep theirs):
+*         light-facing     (default) CAMERA_PLANE cards parallel to the light's view plane,
+*                          CAMERA_POSITION and AXIS cards turned toward the light (a directional
+*                          light: along its direction; a spot: toward its position): the shadow is a
+*                          whole figure stretching away from the light, as an upright object's, in
+*                          every direction; the common 2.5D case (characters and trees on a ground,
+*                          a sun from the side) casts a full shadow. The silhouette is the sprite's
+*                          front image seen from the light (mirrored when the light is behind it).
+*         camera-facing    (faceCamera) the billboard call's camera: the shadow is the silhouette the
+*                          viewer sees, exact for lights in front or behind; a light from the side sees
+*                          the card edge-on (a thin shadow, or the tilt below).
+*       AXIS billboards lean until the light sees them at minCastAngle (30 degrees): an upright tree
+*       under a light along its axis would be edge-on and cast nothing. They turn about a line across
+*       the quad: its lowest edge (a sprite standing on the ground keeps its feet there, whatever its
+*       pivot) under a light more than 30 degrees off the axis, moving to mid-height as the light
+*       reaches the axis (smoothstep of |l.axis| from cos 30 to 1), where the shadow, centred on the
+*       card, no longer depends on which side it leans to: a light passing over the axis moves the
+*       shadow continuously (tested in 0.5-degree steps). Light-facing cards turn their front face up
+*       toward the light (continuous through the axis); camera-facing ones the nearer face, so their
+*       lean changes side where the light crosses the card's plane away from the axis (a jump there:
+*       no card hinged above the ground passes from leaning back to leaning forward without standing
+*       edge-on). A light within 7.2 degrees of the pivot line tilts them less, none within 0.9.
+*       Receiver bias (per light sample, world units, t = texel size at the point), from the
+*       rasterised surface's normal (screen derivatives forward, depth neighbours deferred: the card's
+*       plane, not its rounded or normal-mapped shading normal), turned toward the light:
+*         normal offset    lookup moved along N by normalBias*t*sin(incidence) (shifts edges <= that),
+*                          fading out through edge-on (|cos| < 1/20) so it never jumps sides
 *         receiver plane   each PCF fetch compares with the receiver's plane extended to that texel
 *                          (gradient <= 10 texels per texel): flat ground needs no slope-sized bias
 *         depth bias       t*(constantBias + slopeBias*tan(incidence)), tan clamped at 10
 *         PCF              k x k texel box over bilinear-weighted comparisons, (k + 1)^2 fetches
 *                          (shadowFilter, default 2); k = 1 is hardware 2x2 comparison's footprint
 *       Defaults in texels: constant 0.2, slope 0.1, normal 0.25. Outside the map, beyond its far plane,
-*       behind a spot light and where nothing was drawn, a point is lit. Deferred: the same lookup.
+*       behind a spot light and where nothing was drawn, a point is lit. Deferred: the same lookup; the
+*       G-buffer keeps each pixel's identity (RT2 RGBA8 when it receives shadows: 12 B/pixel).
+*       Distance code of the casters target: orthographic, the window depth (linear); perspective,
+*       log(d/near)/log(far/near) (a step is a fixed share of the distance, as a texel is); 16 bits,
+*       its half step added to the depth bias.
+*       Contact: where a sprite meets the ground, the ground's texels inside the PCF footprint (k/2 +
+*       1 texels) darken its base, as for any receiver meeting another surface (measured: README).
 *
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
@@ -390,8 +431,17 @@
 *         use of it and logged once per program.
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
-*         the target, viewport and matrices it found but leaves the depth test off and culling on (as
-*         EndMode3D): run shadow passes before BeginMode3D (inside BeginTextureMode is fine).
+*         the target, viewport and matrices it found but leaves the depth test off, culling on and
+*         colour blending on (as EndMode3D and raylib's default): run shadow passes before BeginMode3D
+*         (inside BeginTextureMode is fine).
+*       - Caster identities are 16 bits: a billboard is not shadowed by another whose pivot, size and
+*         origin hash alike (1 pair in 65536), nor by one with the very same pivot, size and origin.
+*         The map keeps the nearest caster per texel: where a billboard's own light-facing card lies
+*         between the light and its visible card, another caster between the two cards is hidden
+*         (within half the card's width of it). Camera-facing AXIS casters change the side they lean
+*         to where the light crosses the card's plane away from the axis (light-facing ones do not).
+*         ES 2 without highp fragments: the casters target's 16-bit code loses precision (mediump);
+*         without OES_standard_derivatives the bias follows the interpolated vertex normal.
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
 *         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
@@ -516,6 +566,9 @@
 *             _CLASSIC_FALLOFF                           RBL_LIGHT_POINT etc. stay the light types)
 *           RblView, RblGetView(camera)                RblCameraFrame, RblGetCameraFrame(camera)
 *           RblView.light, .minCastSin                 removed (the shadow pass's, private)
+*         After 0.4 (old -> new):
+*           RblShadowDesc.faceLight = true             the default (casters face the light)
+*           RblShadowDesc.faceLight = false            RblShadowDesc.faceCamera = true
 *           RblGBufferView, RBL_GBUFFER_VIEW_*         RblGBufferOutput, RBL_GBUFFER_OUTPUT_*
 *           RblSetGBufferView(&g, v, s); g.debugView,  RblSetGBufferOutput(&g, o, s); g.output,
 *             g.debugScale                               g.outputScale
@@ -982,12 +1035,14 @@ typedef struct RblShadowDesc {
     float slopeBias;                // Depth bias per unit tan(incidence) (0 = 0.1; negative = none)
     float normalBias;               // Lookup offset along the receiver normal x sin(incidence) (0 = 0.25; negative = none)
     float minCastAngle;             // AXIS billboards tilt until the light sees them at >= this, degrees (0 = 30; negative = never)
-    bool faceLight;                 // Billboards face the light in the shadow pass (default: the camera of the billboard call)
+    bool faceCamera;                // Billboards cast facing the billboard call's camera (default: facing the light; see SHADOWS)
+    bool selfShadow;                // No caster identities: billboards may shadow themselves, no casters target (4 B/texel less)
 } RblShadowDesc;
 
 // Shadow map of one directional or spot light: a depth texture and its light camera (caster programs are the header's)
 typedef struct RblShadowMap {
-    Texture2D depth;                // Depth texture (receivers compare in the shader: rlgl exposes no compare mode)
+    Texture2D depth;                // Depth texture of the pass (receivers sample it only with desc.selfShadow)
+    Texture2D casters;              // RGBA8: per texel the nearest caster's distance (16 bits) and identity (16 bits), what receivers sample (id 0 with desc.selfShadow)
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
@@ -1261,7 +1316,7 @@ typedef enum {
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
-    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL,
+    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1290,6 +1345,7 @@ typedef struct rbl__Program {
     int refs;                       // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
     rbl__MaterialValues values;     // Last per-draw values uploaded
     int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
+    int casterIdLoc;                // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
     bool valuesValid;
     bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
 } rbl__Program;
@@ -1355,6 +1411,14 @@ typedef struct rbl__BatchState {
     unsigned int fadeVboId;         // GPU copy (attribute location 5), created at the first fading RblEndBatch
     int fadeGpuCapacity;            // Billboards fadeVboId holds
     bool fading;                    // A billboard since RblBeginBatch() had a fade weight: fade[0..count) is filled
+    // The optional caster identity stream (RBL__ID_BYTES per billboard: rbl__casterId as two bytes per
+    // vertex), filled from the first billboard a shadow pass casts or a shadow receiver draws
+    unsigned char *ids;             // Per billboard since RblBeginBatch() while identified (capacity billboards)
+    unsigned char *idsSorted;       // Sorted copy (allocated at the first sorted identified RblEndBatch)
+    int idSortCapacity;             // Billboards idsSorted holds
+    unsigned int idVboId;           // GPU copy, created at the first identified RblEndBatch
+    int idGpuCapacity;              // Billboards idVboId holds
+    bool identified;                // ids[0..count) is filled
 } rbl__BatchState;
 
 // An instance buffer's own data (RblInstanceBuffer.state)
@@ -1418,6 +1482,7 @@ typedef struct rbl__ShadowMapState {
 typedef struct rbl__Cast {
     Vector4 light;                  // xyz toward the light (w 0) or its position (w 1)
     float minSin;
+    bool faceLight;                 // Casters face the light (the pass's frame is the light's: orthographic for a directional light, so CAMERA_POSITION and AXIS face along it): AXIS tilts turn the front face to it
 } rbl__Cast;
 
 // The frame's scene, validated and packed once by RblSetScene
@@ -1782,7 +1847,7 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
     "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
-    "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;\n",
+    "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadowAt(map, s, l) : 1.0;\n",
     "#else\n",
     "    float shadow = 1.0;\n",
     "#endif\n",
@@ -1800,8 +1865,16 @@ static const char *const rbl__shader_dialect[] = {
     "//   RBL_VARYING            a vertex output / fragment input\n",
     "//   RBL_FLAT               not interpolated (1.x dialects have no flat: such values are constant anyway)\n",
     "//   rblFetch(map, at, n)   texel `at` (ivec2) of an n x n texture, unfiltered\n",
+    "//   RBL_DERIVATIVES        dFdx/dFdy exist in this fragment stage (GLSL ES 1.00: OES_standard_derivatives)\n",
     "// Instanced and deferred stages use GLSL 3 features (integer bits, MRT, layout locations): the loader\n",
     "// compiles them only for 330 and 300 es.\n",
+    "\n",
+    "#if defined(RBL_GLSL_ES) && (RBL_GLSL < 300) && defined(RBL_FRAGMENT_STAGE) && defined(GL_OES_standard_derivatives)\n",
+    "#extension GL_OES_standard_derivatives : enable\n",
+    "#endif\n",
+    "#if defined(RBL_FRAGMENT_STAGE) && ((RBL_GLSL >= 300) || !defined(RBL_GLSL_ES) || defined(GL_OES_standard_derivatives))\n",
+    "#define RBL_DERIVATIVES\n",
+    "#endif\n",
     "\n",
     "#ifdef RBL_GLSL_ES\n",
     "// Highp everywhere it exists: ES defaults samplers to lowp, which bands depth reads, and ES 2 may\n",
@@ -1881,7 +1954,9 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    float albedoA;\n",
     "    rblPackWord(sp.normal, field1, field2, rblOutNormal, albedoA, params);\n",
     "    rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), albedoA);\n",
-    "    rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)\n",
+    "    // RG8 keeps x, y (raylib samples it r,r,r,g: read back as .ra); RGBA8 (ES, or a G-buffer that\n",
+    "    // receives shadows) also the caster identity (gbuffer_read.glsl)\n",
+    "    rblOutParams = vec4(params.x, params.y, sp.caster);\n",
     "    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);\n",
     "}\n",
     NULL };
@@ -2003,7 +2078,7 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "\n",
     "uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, bits 23..16 of the normal/material word\n",
     "uniform sampler2D rblGNormal;           // RGBA8: bits 55..24\n",
-    "uniform sampler2D rblGParams;           // RG8: bits 15..0\n",
+    "uniform sampler2D rblGParams;           // RG8: bits 15..0; RBL_GB_PARAMS_RGBA: RGBA8, ba the caster identity\n",
     "uniform sampler2D rblGDepth;            // depth texture of the geometry pass\n",
     "uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)\n",
     "uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0\n",
@@ -2037,6 +2112,27 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    return (rblInvView*vec4(view, 1.0)).xyz;\n",
     "}\n",
     "\n",
+    "#if RBL_SHADOWS > 0\n",
+    "// The rasterised surface's normal at texel (for shadow biasing, as the forward path's screen\n",
+    "// derivatives): from the positions of the neighbours on each axis, the one whose depth differs less\n",
+    "// (the same surface, across an edge); the shading normal where neither lies on a surface\n",
+    "vec3 rblFaceNormal(ivec2 texel, vec3 position, float depth, vec3 fallback)\n",
+    "{\n",
+    "    ivec2 top = textureSize(rblGDepth, 0) - 1;\n",
+    "    vec3 d[2];\n",
+    "    for (int axis = 0; axis < 2; axis++)\n",
+    "    {\n",
+    "        ivec2 step = (axis == 0)? ivec2(1, 0) : ivec2(0, 1);\n",
+    "        ivec2 a = min(texel + step, top), b = max(texel - step, ivec2(0));\n",
+    "        float da = texelFetch(rblGDepth, a, 0).r, db = texelFetch(rblGDepth, b, 0).r;\n",
+    "        bool useA = (a != texel) && (da < 1.0) && ((b == texel) || (db >= 1.0) || (abs(da - depth) <= abs(db - depth)));\n",
+    "        bool useB = !useA && (b != texel) && (db < 1.0);\n",
+    "        d[axis] = useA? rblPositionFromDepth(a, da) - position : (useB? position - rblPositionFromDepth(b, db) : vec3(0.0));\n",
+    "    }\n",
+    "    return rblSafeNormalize(cross(d[0], d[1]), fallback);\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)\n",
     "{\n",
     "    vec4 a = texelFetch(rblGAlbedo, texel, 0);\n",
@@ -2045,8 +2141,19 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    RblShadingPoint s;\n",
     "    s.position = position;\n",
     "    uint field1, field2;\n",
+    "#ifdef RBL_GB_PARAMS_RGBA\n",
+    "    rblUnpackWord(n, a.a, p.rg, s.normal, field1, field2);\n",
+    "    s.caster = p.ba;\n",
+    "#else\n",
     "    rblUnpackWord(n, a.a, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)\n",
+    "    s.caster = vec2(0.0);                   // no room for it: every caster counts\n",
+    "#endif\n",
     "    s.albedo = rblSrgbToLinear(a.rgb);\n",
+    "#if RBL_SHADOWS > 0\n",
+    "    s.face = rblFaceNormal(texel, position, texelFetch(rblGDepth, texel, 0).r, s.normal);\n",
+    "#else\n",
+    "    s.face = s.normal;\n",
+    "#endif\n",
     "    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
@@ -2143,7 +2250,7 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
-    "    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;\n",
+    "    return (NdotL > 0.0)? rblShadowAt(k, s, l) : 1.0;\n",
     "}\n",
     "#endif\n",
     "\n",
@@ -2296,6 +2403,15 @@ static const char *const rbl__shader_lit_vs[] = {
     "RBL_VARYING vec4 fragFadeClip;\n",
     "#endif\n",
     "\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "// The billboard's caster identity (shadow_caster.fs.glsl, shadows.glsl): 16 bits as two normalised\n",
+    "// bytes, from the batch's identity stream. rblCasterIdOn is 1 for the header's billboard draws and 0\n",
+    "// otherwise: a Model's identity is 0 whatever its buffers hold at this attribute's location\n",
+    "RBL_ATTRIBUTE vec4 rblCasterId;\n",
+    "uniform float rblCasterIdOn;\n",
+    "RBL_FLAT RBL_VARYING vec2 fragCasterId;\n",
+    "#endif\n",
+    "\n",
     "uniform mat4 mvp;\n",
     "uniform mat4 matModel;\n",
     "uniform mat4 matNormal;\n",
@@ -2320,6 +2436,9 @@ static const char *const rbl__shader_lit_vs[] = {
     "#endif\n",
     "    fragPosition = vec3(matModel*vec4(position, 1.0));\n",
     "    fragTexCoord = vertexTexCoord;\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "    fragCasterId = rblCasterId.xy*rblCasterIdOn;\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    fragTexCoord2 = vertexTexCoord2.xy;\n",
     "    fragFade = vertexTexCoord2.zw;\n",
@@ -2366,9 +2485,15 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "RBL_VARYING vec4 fragFadeClip;                       // both frames' positions in their rectangles\n",
     "#endif\n",
     "\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "RBL_FLAT RBL_VARYING vec2 fragCasterId;              // the instance's caster identity (rblCasterIdOf)\n",
+    "#endif\n",
+    "\n",
     "uniform mat4 mvp;\n",
     "// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):\n",
-    "//   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
+    "//   [0] eye, facing code: RblFacing + 8 in a shadow pass with light-facing casters (AXIS tilts turn\n",
+    "//       the front face to the light)\n",
+    "//   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
     "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass\n",
     "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
     "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera\n",
@@ -2477,14 +2602,16 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "}\n",
     "\n",
     "// Right r, up u (unit, except CAMERA_PLANE's caller up) and unit normal n of a billboard at position\n",
-    "// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS\n",
-    "// billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,\n",
-    "// a vector v and a fallback f, one blend follows, then the frame is built.\n",
-    "void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
+    "// for facing code (rblInstancing[0].w), from the view frame and the draw's up and axis; a shadow pass\n",
+    "// tilts AXIS billboards until the light sees them at the minimum angle. As on the CPU: each mode picks\n",
+    "// an axis, a vector v and a fallback f, one blend follows, then the frame is built.\n",
+    "void rblFacingBasis(int code, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
     "                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)\n",
     "{\n",
+    "    int facing = code & 3;\n",
+    "    bool faceLight = (code & 8) != 0;\n",
     "    r = viewRight; u = viewUp; n = viewBack;\n",
-    "    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity\n",
+    "    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity (a directional light's too)\n",
     "    vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);\n",
     "    bool own = true;\n",
     "    if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }\n",
@@ -2521,11 +2648,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))\n",
     "        {\n",
     "            float ln = dot(l, n), la = dot(l, a);\n",
-    "            float x = abs(ln), y = abs(la), rho = sqrt(x*x + y*y);\n",
+    "            float x = faceLight? ln : abs(ln), y = abs(la), rho = sqrt(x*x + y*y);\n",
     "            if ((x < minCastSin) && (rho > 0.0))\n",
     "            {\n",
     "                float k = min(minCastSin/rho, 1.0), m = sqrt(1.0 - k*k);\n",
-    "                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;\n",
+    "                float sg = faceLight? ((la >= 0.0)? 1.0 : -1.0) : (((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0);\n",
     "                float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;\n",
     "                float wt = rblBlendWeight(rho);\n",
     "                if (wt < 1.0)\n",
@@ -2541,6 +2668,28 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    }\n",
     "    else { n = axis; u = d; r = cross(u, n); }\n",
     "}\n",
+    "\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "// MurmurHash3's 32-bit finaliser (the CPU's rbl__mix32)\n",
+    "uint rblMix32(uint h)\n",
+    "{\n",
+    "    h ^= h >> 16; h *= 0x85ebca6bu;\n",
+    "    h ^= h >> 13; h *= 0xc2b2ae35u;\n",
+    "    return h ^ (h >> 16);\n",
+    "}\n",
+    "\n",
+    "// A billboard's caster identity: 16 bits mixed from the float bits of its pivot, size and origin (the\n",
+    "// CPU's rbl__casterId; never 0, which marks Models), as two normalised bytes (high, low)\n",
+    "vec2 rblCasterIdOf(vec3 pivot, vec4 sizeOrigin)\n",
+    "{\n",
+    "    uvec3 p = floatBitsToUint(pivot);\n",
+    "    uvec4 s = floatBitsToUint(sizeOrigin);\n",
+    "    uint h = rblMix32(rblMix32(rblMix32(rblMix32(rblMix32(rblMix32(rblMix32(p.x) ^ p.y) ^ p.z) ^ s.x) ^ s.y) ^ s.z) ^ s.w);\n",
+    "    h = (h ^ (h >> 16)) & 0xffffu;\n",
+    "    if (h == 0u) h = 1u;\n",
+    "    return vec2(float(h >> 8), float(h & 255u))/255.0;\n",
+    "}\n",
+    "#endif\n",
     "\n",
     "// One corner (0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left) of the instance's quad, given\n",
     "// its rotated frame: world position, texture coordinate, rounded normal and tangent\n",
@@ -2628,13 +2777,34 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "{\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
+    "    int code = int(rblInstancing[0].w + 0.5);\n",
     "    vec3 r, u, n;\n",
-    "    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
+    "    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
     "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
+    "    // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the\n",
+    "    // axis (rbl__billboardVertices)\n",
+    "    vec3 shift = vec3(0.0);\n",
+    "    vec2 sc = vec2(0.0, 1.0);\n",
+    "    if (rblInstancePosition.w != 0.0) sc = rblSinCosDeg(rblInstancePosition.w);\n",
+    "    if (((code & 3) == 2) && (rblInstancing[4].w > 0.0))\n",
+    "    {\n",
+    "        vec3 a = vec3(0.0, 1.0, 0.0), l = a;\n",
+    "        if (dot(rblInstancing[5].xyz, rblInstancing[5].xyz) > 1e-24) rblNormalizeTo(rblInstancing[5].xyz, a);\n",
+    "        vec3 d = a - u;\n",
+    "        vec4 light = rblInstancing[6];\n",
+    "        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblInstancePosition.xyz*light.w, l))\n",
+    "        {\n",
+    "            float x0 = -rblInstanceSize.z, x1 = abs(rblInstanceSize.x) - rblInstanceSize.z;\n",
+    "            float y0 = -rblInstanceSize.w, y1 = abs(rblInstanceSize.y) - rblInstanceSize.w;\n",
+    "            vec4 e = vec4(sc.x*x0 + sc.y*y0, sc.x*x1 + sc.y*y0, sc.x*x1 + sc.y*y1, sc.x*x0 + sc.y*y1);\n",
+    "            float lo = min(min(e.x, e.y), min(e.z, e.w)), hi = max(max(e.x, e.y), max(e.z, e.w));\n",
+    "            float t = clamp((abs(dot(l, a)) - 0.8660254)*(1.0/(1.0 - 0.8660254)), 0.0, 1.0);\n",
+    "            shift = d*(lo + 0.5*(hi - lo)*(t*t*(3.0 - 2.0*t)));\n",
+    "        }\n",
+    "    }\n",
     "    // Rotate the frame around the normal (raylib rotates the corners; same result)\n",
     "    if (rblInstancePosition.w != 0.0)\n",
     "    {\n",
-    "        vec2 sc = rblSinCosDeg(rblInstancePosition.w);\n",
     "        vec3 nr = cross(n, r), nu = cross(n, u);\n",
     "        r = r*sc.y + nr*sc.x;\n",
     "        u = u*sc.y + nu*sc.x;\n",
@@ -2642,7 +2812,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    vec3 p;\n",
     "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
     "                       p, fragTexCoord, fragNormal, fragTangent);\n",
+    "    p += shift;\n",
     "    fragPosition = p;\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "    fragCasterId = rblCasterIdOf(rblInstancePosition.xyz, rblInstanceSize);\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    int corner = cornerOf[gl_VertexID % 6];\n",
     "    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;\n",
@@ -2677,6 +2851,7 @@ static const char *const rbl__shader_material[] = {
     "//                            divided by its alpha before decoding (the alpha-weighted mean of its\n",
     "//                            neighbours' colours, no dark fringe); lit and written as straight alpha\n",
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
+    "//   RBL_CASTER_ID            the billboard's caster identity arrives (receivers, casters, G-buffer)\n",
     "//   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map\n",
     "//                            is fetched at both texture coordinates. What is mixed: colour in linear\n",
     "//                            light weighted by coverage (alpha), as the mips average; alpha linearly,\n",
@@ -2693,6 +2868,10 @@ static const char *const rbl__shader_material[] = {
     "#ifdef RBL_VIEW_VECTOR\n",
     "RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)\n",
     "RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)\n",
+    "#endif\n",
+    "\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "RBL_FLAT RBL_VARYING vec2 fragCasterId;  // the billboard's caster identity (lit.vs.glsl), 0 for Models\n",
     "#endif\n",
     "\n",
     "#ifdef RBL_CROSS_FADE\n",
@@ -2788,6 +2967,14 @@ static const char *const rbl__shader_material[] = {
     "// tangent-space normal (debug views) come back through the out parameters\n",
     "RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)\n",
     "{\n",
+    "    // The surface as rasterised (what a shadow map holds): the card's plane, not the rounded or\n",
+    "    // normal-mapped normal that shades it; without derivatives (ES 2 lacking the extension) the\n",
+    "    // interpolated vertex normal. Taken before any discard (derivatives need the whole quad)\n",
+    "#ifdef RBL_DERIVATIVES\n",
+    "    vec3 face = rblSafeNormalize(cross(dFdx(fragPosition), dFdy(fragPosition)), rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0)));\n",
+    "#else\n",
+    "    vec3 face = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));\n",
+    "#endif\n",
     "    vec4 texel = rblStraightAlpha(texture(texture0, fragTexCoord));\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample\n",
@@ -2861,6 +3048,12 @@ static const char *const rbl__shader_material[] = {
     "    sp.specularColor = vec3(1.0);\n",
     "    sp.shininess = 1.0;\n",
     "    sp.metalness = 0.0;\n",
+    "    sp.face = face;\n",
+    "#ifdef RBL_CASTER_ID\n",
+    "    sp.caster = fragCasterId;\n",
+    "#else\n",
+    "    sp.caster = vec2(0.0);\n",
+    "#endif\n",
     "#if RBL_BRDF == 1\n",
     "    sp.specularColor = rblSpecularColor.rgb;\n",
     "    sp.shininess = rblSpecularColor.a;\n",
@@ -2982,16 +3175,33 @@ static const char *const rbl__shader_scene_composite_vs[] = {
     "}\n",
     NULL };
 static const char *const rbl__shader_shadow_caster_fs[] = {
-    "// Shadow pass, fragment stage: depth only. The alpha test is the colour pass's own (albedo x\n",
-    "// colDiffuse x vertex colour against the material's cutoff): a sprite's silhouette casts the shadow,\n",
-    "// not its quad. Nothing else is sampled; the target has no colour attachment.\n",
+    "// Shadow pass, fragment stage. The alpha test is the colour pass's own (albedo x colDiffuse x vertex\n",
+    "// colour against the material's cutoff): a sprite's silhouette casts the shadow, not its quad.\n",
+    "// Nothing else is sampled. The depth target gets the nearest caster; the casters target (RGBA8,\n",
+    "// RblShadowMap.casters; absent with RblShadowDesc.selfShadow) gets what shadows.glsl reads of it:\n",
+    "//   rg   its distance along the light's axis as a 16-bit code (high byte first): orthographic, the\n",
+    "//        window depth (linear over near..far); perspective, log(d/near)/log(far/near), a step a fixed\n",
+    "//        share of the distance, as a perspective texel is\n",
+    "//   ba   its caster identity: a billboard's from its pivot, 0 for Models (shadows.glsl)\n",
     "#include \"material.glsl\"\n",
+    "\n",
+    "uniform vec4 rblCasterDepth;    // perspective (0/1), near, far, log(far/near)\n",
+    "#if RBL_GLSL >= 300\n",
+    "out vec4 rblOutCaster;\n",
+    "#else\n",
+    "#define rblOutCaster gl_FragColor\n",
+    "#endif\n",
     "\n",
     "void main()\n",
     "{\n",
     "    float alpha;\n",
     "    vec3 emission, tangentNormal;\n",
-    "    rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff\n",
+    "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff\n",
+    "    float code = gl_FragCoord.z;\n",
+    "    if (rblCasterDepth.x > 0.5) code = log(max(1.0/gl_FragCoord.w, rblCasterDepth.y)/rblCasterDepth.y)/rblCasterDepth.w;\n",
+    "    float v = floor(clamp(code, 0.0, 1.0)*65535.0 + 0.5);\n",
+    "    float high = floor(v/256.0);\n",
+    "    rblOutCaster = vec4(high/255.0, (v - high*256.0)/255.0, sp.caster);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_shadows[] = {
@@ -2999,15 +3209,17 @@ static const char *const rbl__shader_shadows[] = {
     "// light a map shadows is the lights' business (lights.glsl, deferred_volume.fs.glsl).\n",
     "//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light\n",
     "//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup\n",
-    "#include \"common.glsl\"\n",
+    "#include \"surface.glsl\"\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
     "uniform vec4 rblShadowMatrix[4*RBL_SHADOWS]; // rows 4k..4k+3: world -> (u, v, window depth, w) of map k (rows: no\n",
     "                                            // transpose convention to differ between GL and ES uploads)\n",
-    "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), perspective (0/1), near, far\n",
+    "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), format, near, far; format:\n",
+    "                                            // 0, 1 depth texture (orthographic, perspective); 2, 3 the casters\n",
+    "                                            // target (RGBA8: 16-bit distance code, caster identity)\n",
     "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
     "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
-    "uniform sampler2D rblShadowMap0;            // depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
+    "uniform sampler2D rblShadowMap0;            // casters targets or depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
     "#if RBL_SHADOWS > 1\n",
     "uniform sampler2D rblShadowMap1;\n",
     "#endif\n",
@@ -3020,19 +3232,28 @@ static const char *const rbl__shader_shadows[] = {
     "#endif\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
-    "// Distance along the light's axis from a window depth of map k (prm: texel, perspective, near, far)\n",
-    "float rblShadowDistance(float d, vec4 prm)\n",
+    "// Distance along the light's axis from a value v of map k (prm: texel, format, near, far): a window\n",
+    "// depth, or a casters target's code (shadow_caster.fs.glsl); both are linear when orthographic\n",
+    "float rblShadowDistance(float v, vec4 prm)\n",
     "{\n",
-    "    return (prm.y > 0.5)? prm.z*prm.w/(prm.w - d*(prm.w - prm.z)) : prm.z + d*(prm.w - prm.z);\n",
+    "    if (prm.y > 2.5) return prm.z*exp(v*log(prm.w/prm.z));\n",
+    "    if ((prm.y > 0.5) && (prm.y < 1.5)) return prm.z*prm.w/(prm.w - v*(prm.w - prm.z));\n",
+    "    return prm.z + v*(prm.w - prm.z);\n",
     "}\n",
     "\n",
-    "// Fraction of light k's map lets through to a surface point with unit normal n, lit at cos(incidence)\n",
-    "// NdotL (> 0). Depths are compared as distances along the light's axis, in world units:\n",
-    "//   normal offset   the lookup moves along n by normal*texel*sin(incidence) (lateral shift <= that)\n",
+    "// Fraction of light k's map lets through to a surface point of unit normal n (either sign) lit at\n",
+    "// cos(incidence) NdotL (> 0), that lies on the billboard of identity caster (0: a Model). Depths are\n",
+    "// compared as distances along the light's axis, in world units:\n",
+    "//   normal offset   the lookup moves along n*side (side: +-1 toward the light) by normal*texel*\n",
+    "//                   sin(incidence) (lateral shift <= that)\n",
     "//   receiver plane  each PCF fetch is compared with the receiver's own plane extended to that texel's\n",
     "//                   centre (depth gradient from n in the light's frame, clamped at 10 texels per\n",
     "//                   texel), so a flat receiver never shadows itself at any incidence below 84 degrees\n",
-    "//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10\n",
+    "//   depth bias      texel*(constant + slope*tan(incidence)), tan clamped at 10; a casters target\n",
+    "//                   adds half its code's step (its rounding)\n",
+    "//   identity        a fetch holding the point's own caster (same identity, not 0) lets light through:\n",
+    "//                   a billboard is flat, so its own card never shadows it, wherever the pass turned it\n",
+    "//                   (the light-facing card, the AXIS tilt) and however its normal map bends the normal\n",
     "// PCF: a box of RBL_SHADOW_FILTER texels per side over bilinear-weighted comparisons, (k + 1)^2\n",
     "// fetches: at k = 1 the footprint of hardware 2x2 comparison filtering (rlgl exposes no compare mode).\n",
     "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
@@ -3046,18 +3267,23 @@ static const char *const rbl__shader_shadows[] = {
     "}\n",
     "\n",
     "float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec3 right, vec3 up,\n",
-    "                      vec3 position, vec3 n, float NdotL)\n",
+    "                      vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
     "{\n",
+    "    bool coded = prm.y > 1.5;                  // the casters target (else a depth texture)\n",
+    "    bool skipOwn = coded && (caster.x + caster.y > 0.0);\n",
     "    vec3 along = cross(up, right);\n",
     "    vec4 c0 = rblShadowTransform(r0, r1, r2, r3, position);\n",
-    "    float texel = prm.x*((prm.y > 0.5)? max(c0.w, 0.0) : 1.0);      // world size of a texel here\n",
+    "    bool perspective = mod(prm.y, 2.0) > 0.5;\n",
+    "    float texel = prm.x*(perspective? max(c0.w, 0.0) : 1.0);       // world size of a texel here\n",
     "    float sinI = sqrt(max(1.0 - NdotL*NdotL, 0.0));\n",
     "    float tanI = min(sinI/max(NdotL, 1e-4), 10.0);\n",
-    "    vec4 c = rblShadowTransform(r0, r1, r2, r3, position + n*(bias.z*texel*sinI));\n",
+    "    vec4 c = rblShadowTransform(r0, r1, r2, r3, position + n*(bias.z*texel*sinI*side));\n",
     "    if (!(c.w > 0.0)) return 1.0;\n",
     "    vec3 q = c.xyz/c.w;\n",
     "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return 1.0;\n",
-    "    float z = rblShadowDistance(max(q.z, 0.0), prm) - texel*(bias.x + bias.y*tanI);\n",
+    "    // The receiver's own distance from its window depth (a depth texture's format, whatever the map holds)\n",
+    "    float z = rblShadowDistance(max(q.z, 0.0), vec4(prm.x, perspective? 1.0 : 0.0, prm.zw)) - texel*(bias.x + bias.y*tanI);\n",
+    "    if (coded) z -= ((prm.y > 2.5)? z*log(prm.w/prm.z) : prm.w - prm.z)*(0.5/65535.0);\n",
     "    // Receiver plane: distance change per texel step along the map's x and y\n",
     "    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);\n",
     "    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;\n",
@@ -3075,31 +3301,48 @@ static const char *const rbl__shader_shadows[] = {
     "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
     "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
     "            ivec2 at = b0 + ivec2(i, j);\n",
-    "            float raw = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at, size).r : 1.0;\n",
+    "            vec4 t = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at, size) : vec4(1.0);\n",
+    "            float raw = t.r;\n",
+    "            bool through = raw >= 1.0;       // nothing drawn there (cleared to 1), or the point's own caster\n",
+    "            if (coded)\n",
+    "            {\n",
+    "                float code = floor(t.r*255.0 + 0.5)*256.0 + floor(t.g*255.0 + 0.5);\n",
+    "                raw = code/65535.0;\n",
+    "                through = (code > 65534.5) || (skipOwn && all(lessThan(abs(t.ba - caster), vec2(0.5/255.0))));\n",
+    "            }\n",
     "            float receiver = z + dot(slope, origin + vec2(float(i), float(j)));\n",
-    "            lit += ((raw >= 1.0) || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
+    "            lit += (through || (receiver <= rblShadowDistance(raw, prm)))? wx*wy : 0.0;\n",
     "        }\n",
     "    }\n",
     "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
     "}\n",
     "\n",
-    "float rblShadow(int k, vec3 position, vec3 n, float NdotL)\n",
+    "float rblShadow(int k, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
     "{\n",
     "    if (k == 0) return rblShadowLookup(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3],\n",
-    "                                     rblShadowParams[0], rblShadowBias[0], rblShadowAxes[0].xyz, rblShadowAxes[1].xyz, position, n, NdotL);\n",
+    "                                     rblShadowParams[0], rblShadowBias[0], rblShadowAxes[0].xyz, rblShadowAxes[1].xyz, position, n, NdotL, side, caster);\n",
     "#if RBL_SHADOWS > 1\n",
     "    if (k == 1) return rblShadowLookup(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7],\n",
-    "                                     rblShadowParams[1], rblShadowBias[1], rblShadowAxes[2].xyz, rblShadowAxes[3].xyz, position, n, NdotL);\n",
+    "                                     rblShadowParams[1], rblShadowBias[1], rblShadowAxes[2].xyz, rblShadowAxes[3].xyz, position, n, NdotL, side, caster);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 2\n",
     "    if (k == 2) return rblShadowLookup(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11],\n",
-    "                                     rblShadowParams[2], rblShadowBias[2], rblShadowAxes[4].xyz, rblShadowAxes[5].xyz, position, n, NdotL);\n",
+    "                                     rblShadowParams[2], rblShadowBias[2], rblShadowAxes[4].xyz, rblShadowAxes[5].xyz, position, n, NdotL, side, caster);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 3\n",
     "    if (k == 3) return rblShadowLookup(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15],\n",
-    "                                     rblShadowParams[3], rblShadowBias[3], rblShadowAxes[6].xyz, rblShadowAxes[7].xyz, position, n, NdotL);\n",
+    "                                     rblShadowParams[3], rblShadowBias[3], rblShadowAxes[6].xyz, rblShadowAxes[7].xyz, position, n, NdotL, side, caster);\n",
     "#endif\n",
     "    return 1.0;\n",
+    "}\n",
+    "\n",
+    "// Light k's map at shading point s for the light toward l: biased by the rasterised surface (its\n",
+    "// face; a card is two-sided: the side toward the light), whatever normal shades it. The normal\n",
+    "// offset fades out through edge-on (|cos| < 1/20), so it never jumps from one side to the other\n",
+    "float rblShadowAt(int k, RblShadingPoint s, vec3 l)\n",
+    "{\n",
+    "    float c = dot(s.face, l);\n",
+    "    return rblShadow(k, s.position, s.face, max(abs(c), 1e-4), clamp(c*20.0, -1.0, 1.0), s.caster);\n",
     "}\n",
     "#endif\n",
     NULL };
@@ -3187,6 +3430,8 @@ static const char *const rbl__shader_surface[] = {
     "    vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)\n",
     "    float shininess;    // Blinn-Phong exponent\n",
     "    float metalness;    // GGX\n",
+    "    vec2 caster;        // identity of the billboard the point lies on (two bytes /255; 0 = a Model): its own caster never shadows it\n",
+    "    vec3 face;          // unit normal of the rasterised surface (the card's plane, a Model's triangle), either sign: shadow biasing\n",
     "};\n",
     NULL };
 static const char *const rbl__shader_volume_vs[] = {
@@ -3592,7 +3837,7 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 {
     Vector3 r = view->right, u = view->up, n = view->back;
     Vector3 axis = r, v = u, f = u, a = rbl__v3(0.0f, 1.0f, 0.0f);
-    Vector3 toEye = view->orthographic? view->back : rbl__sub(view->eye, b->position);     // a parallel view's eye is at infinity
+    Vector3 toEye = view->orthographic? view->back : rbl__sub(view->eye, b->position);     // a parallel view's eye is at infinity (a directional light's too)
     bool own = true;        // false: CAMERA_PLANE without an up, CAMERA_POSITION at the eye (the view's frame)
     switch (b->facing)
     {
@@ -3644,22 +3889,25 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
         {
             Vector3 nn = d;
             u = a; n = nn; r = rbl__cross(u, n);
-            // Shadow pass: tilt about the pivot line (r), leaning away from the light, by the smallest
-            // angle t at which the light sees the quad at the minimum angle s: in the (n, a) plane with
-            // l's components x = |n.l|, y = |a.l|, rho = |(x, y)|, (cos t, sin t) = k (x, y)/rho +
-            // sqrt(1 - k^2) (y, -x)/rho, k = min(s/rho, 1) (no inverse trig: CPU and GPU agree). An
-            // upright sprite thus still casts under a light along its axis. r stays; n and u turn together.
+            // Shadow pass: tilt about r (rbl__billboardVertices keeps the quad's lowest edge in place),
+            // by the smallest angle t at which the light sees the quad at the minimum angle s: in the
+            // (n, a) plane with l's components x = n.l, y = |a.l|, rho = |(x, y)|, (cos t, sin t) = k
+            // (x, y)/rho + sqrt(1 - k^2) (y, -x)/rho, k = min(s/rho, 1) (no inverse trig: CPU and GPU
+            // agree). Light-facing casters turn their front face to the light (x signed: continuous as
+            // the light passes over the axis); camera-facing ones whichever face is nearer (x = |n.l|:
+            // the lean changes side where the light crosses the card's plane). An upright sprite thus
+            // still casts under a light along its axis. r stays; n and u turn together.
             Vector3 l;
             if ((cast != NULL) && (cast->minSin > 0.0f) &&
                 rbl__normalizeTo(rbl__v3(cast->light.x - b->position.x*cast->light.w, cast->light.y - b->position.y*cast->light.w,
                                          cast->light.z - b->position.z*cast->light.w), &l))
             {
                 float ln = rbl__dot(l, n), la = rbl__dot(l, a);
-                float x = fabsf(ln), y = fabsf(la), rho = sqrtf(x*x + y*y);
+                float x = cast->faceLight? ln : fabsf(ln), y = fabsf(la), rho = sqrtf(x*x + y*y);
                 if ((x < cast->minSin) && (rho > 0.0f))
                 {
                     float k = fminf(cast->minSin/rho, 1.0f), m = sqrtf(1.0f - k*k);
-                    float sg = ((ln >= 0.0f) == (la >= 0.0f))? 1.0f : -1.0f;
+                    float sg = cast->faceLight? ((la >= 0.0f)? 1.0f : -1.0f) : (((ln >= 0.0f) == (la >= 0.0f))? 1.0f : -1.0f);
                     float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
                     // rho is the sine between l and the pivot line, where no tilt helps and (x, y)/rho is
                     // float noise: the tilt fades out with the near-degenerate blend weight (c >= 0: no cancelling)
@@ -3831,7 +4079,32 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
     float sx = fabsf(b->size.x), sy = fabsf(b->size.y);
     float x0 = -b->origin.x, x1 = sx - b->origin.x;
     float y0 = -b->origin.y, y1 = sy*ulen - b->origin.y;
-    const Vector3 P = b->position;
+    Vector3 P = b->position;
+    if ((cast != NULL) && (b->facing == RBL_FACING_AXIS))
+    {
+        // A tilted AXIS caster turns about a line across the quad at height h along the axis, not
+        // the pivot line: its lowest edge (a sprite standing on the ground keeps its feet there,
+        // whatever its pivot) under a low light, moving to mid-height as the light nears the axis
+        // (within 30 degrees; smoothstep of |l.a| from cos 30 to 1): there the shadow, centred on
+        // the quad, is the same whichever side the tilt leans to, so it does not jump as the light
+        // passes over. Turning by T about r moves corner offset o to T o; about the line through a h,
+        // to T o + h (a - T a), T a = the tilted up; h from the untilted (rotated) frame, where R.a =
+        // sin and U.a = cos of the rotation
+        Vector3 a = rbl__v3(0.0f, 1.0f, 0.0f), l;
+        if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);
+        Vector3 d = rbl__sub(a, cache->up);
+        if ((rbl__len2(d) > 0.0f) &&
+            rbl__normalizeTo(rbl__v3(cast->light.x - P.x*cast->light.w, cast->light.y - P.y*cast->light.w, cast->light.z - P.z*cast->light.w), &l))
+        {
+            float s = 0.0f, c = 1.0f;
+            if (b->rotation != 0.0f) rbl__sinCosDeg(b->rotation, &s, &c);
+            float e0 = s*x0 + c*y0, e1 = s*x1 + c*y0, e2 = s*x1 + c*y1, e3 = s*x0 + c*y1;
+            float lo = fminf(fminf(e0, e1), fminf(e2, e3)), hi = fmaxf(fmaxf(e0, e1), fmaxf(e2, e3));
+            float t = fminf(fmaxf((fabsf(rbl__dot(l, a)) - 0.8660254f)*(1.0f/(1.0f - 0.8660254f)), 0.0f), 1.0f);
+            float h = lo + 0.5f*(hi - lo)*(t*t*(3.0f - 2.0f*t));
+            P = rbl__v3(P.x + d.x*h, P.y + d.y*h, P.z + d.z*h);
+        }
+    }
     Vector3 p[4];
     p[0] = rbl__v3(P.x + R.x*x0 + U.x*y0, P.y + R.y*x0 + U.y*y0, P.z + R.z*x0 + U.z*y0);
     p[1] = rbl__v3(P.x + R.x*x1 + U.x*y0, P.y + R.y*x1 + U.y*y0, P.z + R.z*x1 + U.z*y0);
@@ -3975,13 +4248,44 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
-    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;      // gone with the context
+    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
     if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
-    batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;
-    batch->gpuCapacity = batch->fadeGpuCapacity = 0;
+    if (batch->idVboId != 0) rlUnloadVertexBuffer(batch->idVboId);
+    batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = 0;
+    batch->gpuCapacity = batch->fadeGpuCapacity = batch->idGpuCapacity = 0;
+}
+
+// The caster identity stream: per vertex the identity's high and low bytes (normalised) and two zero bytes
+#define RBL__ID_BYTES 16
+
+// MurmurHash3's 32-bit finaliser: every input bit reaches every output bit
+static unsigned int rbl__mix32(unsigned int h)
+{
+    h ^= h >> 16; h = (h*0x85ebca6bu) & 0xffffffffu;
+    h ^= h >> 13; h = (h*0xc2b2ae35u) & 0xffffffffu;
+    return h ^ (h >> 16);
+}
+
+// A billboard's caster identity: 16 bits mixed from the float bits of its pivot, size and origin
+// (the pivot is the one point every facing, tilt and light-facing turn keeps; size and origin tell
+// apart cards sharing a pivot, a sprite standing on a tile's centre; the same bits give the same
+// identity in any pass, order or path), never 0, which marks Models. lit_instanced.vs.glsl's
+// rblCasterIdOf is the twin.
+static unsigned int rbl__casterId(Vector3 pivot, Vector2 size, Vector2 origin)
+{
+    const float f[7] = { pivot.x, pivot.y, pivot.z, size.x, size.y, origin.x, origin.y };
+    unsigned int h = 0u;
+    for (int i = 0; i < 7; i++)
+    {
+        unsigned int b;
+        memcpy(&b, &f[i], 4);
+        h = rbl__mix32(h ^ b);
+    }
+    h = (h ^ (h >> 16)) & 0xffffu;
+    return (h == 0u)? 1u : h;
 }
 
 static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
@@ -4010,6 +4314,8 @@ static void rbl__freeBatchState(rbl__BatchState *b)
     RBL_FREE(b->runs);
     RBL_FREE(b->fade);
     RBL_FREE(b->fadeSorted);
+    RBL_FREE(b->ids);
+    RBL_FREE(b->idsSorted);
     RBL_FREE(b);
 }
 
@@ -4077,6 +4383,7 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->backFacing = false;
     batch->frame.facing = -1;      // the frame depends on the view
     batch->fading = false;
+    batch->identified = false;
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
@@ -4106,6 +4413,12 @@ static bool rbl__growBatch(rbl__BatchState *batch)
         float *fade = (float *)RBL_REALLOC(batch->fade, (size_t)newCapacity*RBL__FADE_FLOATS*sizeof(float));
         if (fade == NULL) return false;
         batch->fade = fade;
+    }
+    if (batch->ids != NULL)
+    {
+        unsigned char *ids = (unsigned char *)RBL_REALLOC(batch->ids, (size_t)newCapacity*RBL__ID_BYTES);
+        if (ids == NULL) return false;
+        batch->ids = ids;
     }
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
     if (vertices == NULL) return false;     // the caller logs the skip (a grown fade array is kept: capacity follows later)
@@ -4149,6 +4462,26 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
         return false;
+    }
+    // The identity stream starts with the first billboard cast into a casters target or drawn by a
+    // shadow receiver (forward, or into a G-buffer that receives shadows); earlier ones get 0 (their
+    // programs read none). Continuing runs had their program checked when they started.
+    const RblShadowMap *pass = rbl__state.shadowPass;
+    const RblGBuffer *gpass = rbl__state.gbufferPass;
+    if (batch->identified || ((pass != NULL)? !pass->desc.selfShadow : (gpass != NULL)? (gpass->desc.shadowMaps > 0) :
+                                                                        ((program != NULL) && (program->key.desc.shadowMaps > 0))))
+    {
+        if (batch->ids == NULL) batch->ids = (unsigned char *)RBL_MALLOC((size_t)batch->capacity*RBL__ID_BYTES);
+        if (batch->ids == NULL)
+        {
+            if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (out of memory for the caster identities); further skips this batch are not logged", fn);
+            return false;
+        }
+        if (!batch->identified) memset(batch->ids, 0, (size_t)batch->count*RBL__ID_BYTES);
+        batch->identified = true;
+        unsigned int id = rbl__casterId(billboard->position, billboard->size, billboard->origin);
+        unsigned char *o = batch->ids + (size_t)batch->count*RBL__ID_BYTES;
+        for (int v = 0; v < 4; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
     }
     // The fade stream starts with the first faded billboard (earlier ones get weight 0); a clipped
     // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn)
@@ -4303,6 +4636,18 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
         }
     qsort(batch->keys, (size_t)batch->count, sizeof(rbl__SortKey), rbl__compareKeys);
     for (int i = 0; i < batch->count; i++) memcpy(batch->sorted + (size_t)i*4, batch->vertices + (size_t)batch->keys[i].index*4, 4*sizeof(RblVertex));
+    if (batch->identified)
+    {
+        if (batch->idSortCapacity < batch->capacity)
+        {
+            unsigned char *s = (unsigned char *)RBL_MALLOC((size_t)batch->capacity*RBL__ID_BYTES);
+            if (s == NULL) return false;
+            RBL_FREE(batch->idsSorted);
+            batch->idsSorted = s;
+            batch->idSortCapacity = batch->capacity;
+        }
+        for (int i = 0; i < batch->count; i++) memcpy(batch->idsSorted + (size_t)i*RBL__ID_BYTES, batch->ids + (size_t)batch->keys[i].index*RBL__ID_BYTES, RBL__ID_BYTES);
+    }
     if (!batch->fading) return true;
     if (batch->fadeSortCapacity < batch->capacity)
     {
@@ -4338,11 +4683,27 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         }
     }
     const int clipLoc = (batch->fading && (program != NULL))? program->fadeClipLoc : -1;
+    // Caster identities: the stream where the batch has one (the gate on), else identity 0 (gate off:
+    // the attribute's content does not matter)
+    const int idLoc = (batch->identified && (program != NULL))? program->casterIdLoc : -1;
+    if ((program != NULL) && (program->casterIdLoc >= 0))
+    {
+        float on = batch->identified? 1.0f : 0.0f;
+        rlSetUniform(program->loc[RBL__U_CASTER_ID_ON], &on, SHADER_UNIFORM_FLOAT, 1);
+        if (!batch->identified) rlDisableVertexAttribute((unsigned int)program->casterIdLoc);
+    }
     for (int q = 0; q < count; q += RBL__QUADS_PER_CHUNK)
     {
         int n = count - q;
         if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
         rbl__setVertexLayout((size_t)(first + q)*4*sizeof(RblVertex));
+        if (idLoc >= 0)
+        {
+            rlEnableVertexBuffer(batch->idVboId);
+            rlSetVertexAttribute((unsigned int)idLoc, 4, RL_UNSIGNED_BYTE, true, 4, (int)((size_t)(first + q)*RBL__ID_BYTES));
+            rlEnableVertexAttribute((unsigned int)idLoc);
+            rlEnableVertexBuffer(batch->vboId);
+        }
         if (batch->fading)
         {
             rlEnableVertexBuffer(batch->fadeVboId);
@@ -4358,6 +4719,13 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
             rlEnableVertexBuffer(batch->vboId);     // the next chunk's layout reads the bound buffer
         }
         rlDrawVertexArrayElements(0, n*6, 0);
+    }
+    if ((program != NULL) && (program->casterIdLoc >= 0))
+    {
+        // raylib's own DrawModel may draw with this program next: identity 0 for it
+        float off = 0.0f;
+        rlSetUniform(program->loc[RBL__U_CASTER_ID_ON], &off, SHADER_UNIFORM_FLOAT, 1);
+        if (idLoc >= 0) rlDisableVertexAttribute((unsigned int)idLoc);
     }
     if (program != NULL) rbl__markDrawn(program);
 }
@@ -4404,7 +4772,8 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
             TraceLog(LOG_WARNING, "RBL: %s: GPU buffers for %i billboards could not be created; nothing drawn", fn, batch->capacity);
             return;
         }
-        old.fadeVboId = 0;      // the fade buffer is kept (sized below)
+        old.fadeVboId = 0;      // the fade and identity buffers are kept (sized below)
+        old.idVboId = 0;
         rbl__unloadBatchGpu(&old);
     }
     if (batch->fading && (batch->fadeGpuCapacity < batch->capacity))
@@ -4414,6 +4783,14 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
         batch->fadeVboId = id;
         batch->fadeGpuCapacity = batch->capacity;
+    }
+    if (batch->identified && (batch->idGpuCapacity < batch->capacity))
+    {
+        unsigned int id = rlLoadVertexBuffer(NULL, batch->capacity*RBL__ID_BYTES, true);
+        if (id == 0) { TraceLog(LOG_WARNING, "RBL: %s: GPU caster identity buffer for %i billboards could not be created; nothing drawn", fn, batch->capacity); return; }
+        if (batch->idVboId != 0) rlUnloadVertexBuffer(batch->idVboId);
+        batch->idVboId = id;
+        batch->idGpuCapacity = batch->capacity;
     }
     // Order matters only where colour blends: shadow and G-buffer passes draw in submission order
     int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : pub->sort;
@@ -4432,6 +4809,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
     if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
+    if (batch->identified) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
     rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
     unsigned int bound = 0;
@@ -4802,7 +5180,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     RblCameraFrame view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     const float frame[28] = {
-        view.eye.x, view.eye.y, view.eye.z, (float)desc.facing,
+        view.eye.x, view.eye.y, view.eye.z, (float)(desc.facing + (rbl__state.cast.faceLight? 8 : 0)),
         view.right.x, view.right.y, view.right.z, desc.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
@@ -6068,7 +6446,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -6143,6 +6521,8 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
     if ((n > 0) && ((size_t)n < size) && d->softParticles) n += snprintf(out + n, size - (size_t)n, "#define RBL_SOFT_PARTICLES\n");
     if ((n > 0) && ((size_t)n < size) && d->crossFade) n += snprintf(out + n, size - (size_t)n, "#define RBL_CROSS_FADE\n");
+    // The caster identity: shadow receivers and G-buffer geometry variants (rbl__compileProgram adds it to casters)
+    if ((n > 0) && ((size_t)n < size) && ((d->shadowMaps > 0) || d->deferred)) n += snprintf(out + n, size - (size_t)n, "#define RBL_CASTER_ID\n");
     if ((n > 0) && ((size_t)n < size) && m->premultipliedAlpha) n += snprintf(out + n, size - (size_t)n, "#define RBL_PREMULTIPLIED_ALPHA\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
@@ -6328,6 +6708,10 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
+    size_t used = strlen(defines);
+    if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
+    // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
+    if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_COMPOSITE)
@@ -6367,6 +6751,8 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     // texcoord2 buffer there; unbound, the attribute is constant and its weight 0
     p->shader.locs[SHADER_LOC_VERTEX_TEXCOORD02] = -1;
     p->fadeClipLoc = (d->crossFade && !d->instanced)? rlGetLocationAttrib(shader.id, "rblFadeClip") : -1;
+    p->casterIdLoc = ((key->kind != RBL__KIND_PASS) && !d->instanced && ((key->kind == RBL__KIND_CASTER) || (d->shadowMaps > 0) || d->deferred))?
+                     rlGetLocationAttrib(shader.id, "rblCasterId") : -1;
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
@@ -6739,6 +7125,12 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
+        // The casters target's distance code (shadow_caster.fs.glsl): perspective, near, far, log(far/near)
+        const rbl__ShadowMapState *st = rbl__state.shadowPass->state;
+        bool perspective = (st->lightType == RBL_LIGHT_SPOT);
+        float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
+        rlEnableShader(caster->shader.id);
+        rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
@@ -7030,7 +7422,7 @@ bool RblSetScene(const RblScene *scene)
         rbl__shadowUniformData(map, s->shadowUniforms[k]);
         s->shadowLight[k] = map->light;
         s->shadowId[k] = map->id;
-        s->shadowTexture[k] = map->depth.id;
+        s->shadowTexture[k] = (map->casters.id != 0)? map->casters.id : map->depth.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
@@ -7342,8 +7734,10 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 {
     g->albedo = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
     g->normal = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
-    // RG8 for the 16 parameter bits; ES maps two-channel formats to unrenderable luminance-alpha: RGBA8
-    g->params = rbl__targetTexture(width, height, (rbl__glsl() == 300)? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
+    // RG8 for the 16 parameter bits; ES maps two-channel formats to unrenderable luminance-alpha: RGBA8.
+    // A G-buffer receiving shadows keeps each pixel's caster identity there too (RGBA8)
+    bool rgba = (rbl__glsl() == 300) || (g->desc.shadowMaps > 0);
+    g->params = rbl__targetTexture(width, height, rgba? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
@@ -7569,6 +7963,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
         return g;
     }
     unsigned int callerTarget = rbl__activeFramebuffer();
+    g.desc = desc;                  // rbl__loadTargets reads shadowMaps
     if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); RblUnloadGBuffer(&g); return g; }
     rbl__restoreTarget(callerTarget);
     g.desc = desc;
@@ -7985,11 +8380,12 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 //----------------------------------------------------------------------------------
 // Module Functions Definition: shadows
 //----------------------------------------------------------------------------------
-// The billboard frame of a shadow pass: the caller's camera (the shadow matches what is seen), or the
-// light's own frame (desc.faceLight); AXIS billboards get the light and minimum angle to tilt by
+// The billboard frame of a shadow pass: the light's own frame (the default: casters face the light),
+// or the caller's camera (desc.faceCamera: the shadow matches what is seen); AXIS billboards get the
+// light and minimum angle to tilt by (rbl__castOf)
 static void rbl__shadowPassView(RblCameraFrame *view)
 {
-    if (rbl__state.shadowPass->desc.faceLight) *view = rbl__state.shadowPass->state->lightView;
+    if (!rbl__state.shadowPass->desc.faceCamera) *view = rbl__state.shadowPass->state->lightView;
 }
 
 // The light AXIS billboards tilt toward in map's pass
@@ -8000,6 +8396,7 @@ static rbl__Cast rbl__castOf(const RblShadowMap *map)
     if (map->state->lightType == RBL_LIGHT_SPOT) { cast.light.x = map->state->lightView.eye.x; cast.light.y = map->state->lightView.eye.y; cast.light.z = map->state->lightView.eye.z; cast.light.w = 1.0f; }
     else { cast.light.x = toLight.x; cast.light.y = toLight.y; cast.light.z = toLight.z; cast.light.w = 0.0f; }
     cast.minSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
+    cast.faceLight = !map->desc.faceCamera;
     return cast;
 }
 
@@ -8015,7 +8412,8 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     out->slopeBias = (in.slopeBias == 0.0f)? 0.1f : ((in.slopeBias < 0.0f)? 0.0f : in.slopeBias);
     out->normalBias = (in.normalBias == 0.0f)? 0.25f : ((in.normalBias < 0.0f)? 0.0f : in.normalBias);
     out->minCastAngle = (in.minCastAngle == 0.0f)? 30.0f : ((in.minCastAngle < 0.0f)? 0.0f : in.minCastAngle);
-    out->faceLight = in.faceLight;
+    out->faceCamera = in.faceCamera;
+    out->selfShadow = in.selfShadow;
     return NULL;
 }
 
@@ -8072,10 +8470,25 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
     map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
     bool ok = (map.depth.id != 0);
+    if (ok && !map.desc.selfShadow)
+    {
+        // The casters target: what receivers sample (distance code and identity, unfiltered)
+        map.casters.id = rlLoadTexture(NULL, map.size, map.size, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
+        map.casters.width = map.size; map.casters.height = map.size; map.casters.mipmaps = 1; map.casters.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
+        ok = (map.casters.id != 0);
+        if (ok)
+        {
+            rlTextureParameters(map.casters.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+            rlTextureParameters(map.casters.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+            rlTextureParameters(map.casters.id, RL_TEXTURE_WRAP_S, RL_TEXTURE_WRAP_CLAMP);
+            rlTextureParameters(map.casters.id, RL_TEXTURE_WRAP_T, RL_TEXTURE_WRAP_CLAMP);
+        }
+    }
     if (ok)
     {
         map.state->id = rlLoadFramebuffer();
         rlFramebufferAttach(map.state->id, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        if (map.casters.id != 0) rlFramebufferAttach(map.state->id, map.casters.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
         ok = (map.state->id != 0) && rlFramebufferComplete(map.state->id);
     }
     rbl__restoreTarget(callerTarget);
@@ -8085,14 +8498,14 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
         RblUnloadShadowMap(&map);
         return map;
     }
-    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded", map.size, map.size);
+    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s)", map.size, map.size, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target");
     return map;
 }
 
 bool RblIsShadowMapValid(RblShadowMap map)
 {
     // Membership first: a stale copy's state (its map unloaded) is never read
-    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0);
+    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
@@ -8101,8 +8514,12 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
     rbl__dropSceneShadow(map->id);
     if (!rbl__glUsable()) {}                                                // gone with the context
-    else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture too
-    else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
+    else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture (and casters target) too
+    else
+    {
+        if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
+        if (map->casters.id != 0) rlUnloadTexture(map->casters.id);
+    }
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
     if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the on-demand casters go too
@@ -8211,7 +8628,9 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlViewport(0, 0, map->size, map->size);
     rlEnableDepthTest();
     rlEnableDepthMask();
+    rlClearColor(255, 255, 0, 0);           // casters target: distance code 1 (nothing), identity 0
     rlClearScreenBuffers();
+    rlDisableColorBlend();                  // the identity's low byte is the target's alpha
     rlDisableBackfaceCulling();             // a billboard facing the viewer may show the light its back
     rlSetMatrixProjection(projection);
     rlSetMatrixModelview(map->state->view);
@@ -8231,6 +8650,7 @@ void RblEndShadowMap(RblShadowMap *map)
     rlSetMatrixModelview(map->state->savedView);
     rlEnableBackfaceCulling();
     rlDisableDepthTest();
+    rlEnableColorBlend();                   // raylib's default
     map->state->begun = false;
     rbl__state.shadowPass = NULL;
     memset(&rbl__state.cast, 0, sizeof(rbl__state.cast));
@@ -8274,7 +8694,9 @@ static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
     const Matrix *m = &map->state->matrix;
     const float rows[16] = { m->m0, m->m4, m->m8, m->m12, m->m1, m->m5, m->m9, m->m13, m->m2, m->m6, m->m10, m->m14, m->m3, m->m7, m->m11, m->m15 };
     memcpy(out, rows, sizeof(rows));
-    out[16] = map->state->texelWorld; out[17] = (map->state->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f; out[18] = map->state->nearPlane; out[19] = map->state->farPlane;
+    // Format (shadows.glsl): perspective + 2 where receivers sample the casters target
+    out[16] = map->state->texelWorld; out[17] = ((map->state->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f) + ((map->casters.id != 0)? 2.0f : 0.0f);
+    out[18] = map->state->nearPlane; out[19] = map->state->farPlane;
     out[20] = map->desc.constantBias; out[21] = map->desc.slopeBias; out[22] = map->desc.normalBias; out[23] = (float)map->size;
     out[24] = map->state->lightView.right.x; out[25] = map->state->lightView.right.y; out[26] = map->state->lightView.right.z; out[27] = 0.0f;
     out[28] = map->state->lightView.up.x; out[29] = map->state->lightView.up.y; out[30] = map->state->lightView.up.z; out[31] = 0.0f;

@@ -28,7 +28,7 @@ void main()
     int map = int(volumeFalloff.w + 0.5) - 1;
     vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);
     float NdotL = dot(s.normal, l);
-    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadow(map, s.position, s.normal, NdotL) : 1.0;
+    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadowAt(map, s, l) : 1.0;
 #else
     float shadow = 1.0;
 #endif

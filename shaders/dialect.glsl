@@ -7,8 +7,16 @@
 //   RBL_VARYING            a vertex output / fragment input
 //   RBL_FLAT               not interpolated (1.x dialects have no flat: such values are constant anyway)
 //   rblFetch(map, at, n)   texel `at` (ivec2) of an n x n texture, unfiltered
+//   RBL_DERIVATIVES        dFdx/dFdy exist in this fragment stage (GLSL ES 1.00: OES_standard_derivatives)
 // Instanced and deferred stages use GLSL 3 features (integer bits, MRT, layout locations): the loader
 // compiles them only for 330 and 300 es.
+
+#if defined(RBL_GLSL_ES) && (RBL_GLSL < 300) && defined(RBL_FRAGMENT_STAGE) && defined(GL_OES_standard_derivatives)
+#extension GL_OES_standard_derivatives : enable
+#endif
+#if defined(RBL_FRAGMENT_STAGE) && ((RBL_GLSL >= 300) || !defined(RBL_GLSL_ES) || defined(GL_OES_standard_derivatives))
+#define RBL_DERIVATIVES
+#endif
 
 #ifdef RBL_GLSL_ES
 // Highp everywhere it exists: ES defaults samplers to lowp, which bands depth reads, and ES 2 may

@@ -31,6 +31,8 @@ void main()
     float albedoA;
     rblPackWord(sp.normal, field1, field2, rblOutNormal, albedoA, params);
     rblOutAlbedo = vec4(rblLinearToSrgb(sp.albedo), albedoA);
-    rblOutParams = vec4(params.x, params.y, 0.0, params.y);    // read back as .ra: RG8 (raylib swizzles it r,r,r,g) or RGBA8 (ES)
+    // RG8 keeps x, y (raylib samples it r,r,r,g: read back as .ra); RGBA8 (ES, or a G-buffer that
+    // receives shadows) also the caster identity (gbuffer_read.glsl)
+    rblOutParams = vec4(params.x, params.y, sp.caster);
     rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);
 }

@@ -5,7 +5,7 @@
 
 uniform sampler2D rblGAlbedo;           // RGBA8: sRGB albedo, bits 23..16 of the normal/material word
 uniform sampler2D rblGNormal;           // RGBA8: bits 55..24
-uniform sampler2D rblGParams;           // RG8: bits 15..0
+uniform sampler2D rblGParams;           // RG8: bits 15..0; RBL_GB_PARAMS_RGBA: RGBA8, ba the caster identity
 uniform sampler2D rblGDepth;            // depth texture of the geometry pass
 uniform sampler2D rblGAccum;            // RGBA16F light accumulation (resolve only)
 uniform vec4 rblDepthLinear;            // perspective: n*f, f - n, f, 1; orthographic: n, f - n, 0, 0
@@ -39,6 +39,27 @@ vec3 rblPositionFromDepth(ivec2 texel, float depth)
     return (rblInvView*vec4(view, 1.0)).xyz;
 }
 
+#if RBL_SHADOWS > 0
+// The rasterised surface's normal at texel (for shadow biasing, as the forward path's screen
+// derivatives): from the positions of the neighbours on each axis, the one whose depth differs less
+// (the same surface, across an edge); the shading normal where neither lies on a surface
+vec3 rblFaceNormal(ivec2 texel, vec3 position, float depth, vec3 fallback)
+{
+    ivec2 top = textureSize(rblGDepth, 0) - 1;
+    vec3 d[2];
+    for (int axis = 0; axis < 2; axis++)
+    {
+        ivec2 step = (axis == 0)? ivec2(1, 0) : ivec2(0, 1);
+        ivec2 a = min(texel + step, top), b = max(texel - step, ivec2(0));
+        float da = texelFetch(rblGDepth, a, 0).r, db = texelFetch(rblGDepth, b, 0).r;
+        bool useA = (a != texel) && (da < 1.0) && ((b == texel) || (db >= 1.0) || (abs(da - depth) <= abs(db - depth)));
+        bool useB = !useA && (b != texel) && (db < 1.0);
+        d[axis] = useA? rblPositionFromDepth(a, da) - position : (useB? position - rblPositionFromDepth(b, db) : vec3(0.0));
+    }
+    return rblSafeNormalize(cross(d[0], d[1]), fallback);
+}
+#endif
+
 RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
 {
     vec4 a = texelFetch(rblGAlbedo, texel, 0);
@@ -47,8 +68,19 @@ RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
     RblShadingPoint s;
     s.position = position;
     uint field1, field2;
+#ifdef RBL_GB_PARAMS_RGBA
+    rblUnpackWord(n, a.a, p.rg, s.normal, field1, field2);
+    s.caster = p.ba;
+#else
     rblUnpackWord(n, a.a, p.ra, s.normal, field1, field2);     // raylib samples RG8 (GRAY_ALPHA) as (r, r, r, g)
+    s.caster = vec2(0.0);                   // no room for it: every caster counts
+#endif
     s.albedo = rblSrgbToLinear(a.rgb);
+#if RBL_SHADOWS > 0
+    s.face = rblFaceNormal(texel, position, texelFetch(rblGDepth, texel, 0).r, s.normal);
+#else
+    s.face = s.normal;
+#endif
     s.occlusion = 1.0;                  // the geometry pass added the ambient it scales
     s.specularColor = vec3(1.0);
     s.shininess = 1.0;

@@ -75,7 +75,7 @@ float rblShadowOfMap(int k, RblShadingPoint s, int light)
 #endif
     vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);
     float NdotL = dot(s.normal, l);
-    return (NdotL > 0.0)? rblShadow(k, s.position, s.normal, NdotL) : 1.0;
+    return (NdotL > 0.0)? rblShadowAt(k, s, l) : 1.0;
 }
 #endif
 

@@ -23,6 +23,15 @@ RBL_ATTRIBUTE vec4 rblFadeClip;
 RBL_VARYING vec4 fragFadeClip;
 #endif
 
+#ifdef RBL_CASTER_ID
+// The billboard's caster identity (shadow_caster.fs.glsl, shadows.glsl): 16 bits as two normalised
+// bytes, from the batch's identity stream. rblCasterIdOn is 1 for the header's billboard draws and 0
+// otherwise: a Model's identity is 0 whatever its buffers hold at this attribute's location
+RBL_ATTRIBUTE vec4 rblCasterId;
+uniform float rblCasterIdOn;
+RBL_FLAT RBL_VARYING vec2 fragCasterId;
+#endif
+
 uniform mat4 mvp;
 uniform mat4 matModel;
 uniform mat4 matNormal;
@@ -47,6 +56,9 @@ void main()
 #endif
     fragPosition = vec3(matModel*vec4(position, 1.0));
     fragTexCoord = vertexTexCoord;
+#ifdef RBL_CASTER_ID
+    fragCasterId = rblCasterId.xy*rblCasterIdOn;
+#endif
 #ifdef RBL_CROSS_FADE
     fragTexCoord2 = vertexTexCoord2.xy;
     fragFade = vertexTexCoord2.zw;

@@ -23,9 +23,15 @@ RBL_FLAT RBL_VARYING vec2 fragFade;                  // weight, tangent axes cod
 RBL_VARYING vec4 fragFadeClip;                       // both frames' positions in their rectangles
 #endif
 
+#ifdef RBL_CASTER_ID
+RBL_FLAT RBL_VARYING vec2 fragCasterId;              // the instance's caster identity (rblCasterIdOf)
+#endif
+
 uniform mat4 mvp;
 // Per-draw frame, one upload (uniform calls cost more than the data in most drivers):
-//   [0] eye, facing   [1] right, roundness   [2] up, texture width   [3] back, texture height
+//   [0] eye, facing code: RblFacing + 8 in a shadow pass with light-facing casters (AXIS tilts turn
+//       the front face to the light)
+//   [1] right, roundness   [2] up, texture width   [3] back, texture height
 //   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass
 //       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
 //   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera
@@ -134,14 +140,16 @@ vec2 rblSinCosDeg(float degrees)
 }
 
 // Right r, up u (unit, except CAMERA_PLANE's caller up) and unit normal n of a billboard at position
-// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS
-// billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,
-// a vector v and a fallback f, one blend follows, then the frame is built.
-void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,
+// for facing code (rblInstancing[0].w), from the view frame and the draw's up and axis; a shadow pass
+// tilts AXIS billboards until the light sees them at the minimum angle. As on the CPU: each mode picks
+// an axis, a vector v and a fallback f, one blend follows, then the frame is built.
+void rblFacingBasis(int code, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,
                     vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)
 {
+    int facing = code & 3;
+    bool faceLight = (code & 8) != 0;
     r = viewRight; u = viewUp; n = viewBack;
-    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity
+    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity (a directional light's too)
     vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);
     bool own = true;
     if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }
@@ -178,11 +186,11 @@ void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec
         if ((minCastSin > 0.0) && rblNormalizeTo(light.xyz - position*light.w, l))
         {
             float ln = dot(l, n), la = dot(l, a);
-            float x = abs(ln), y = abs(la), rho = sqrt(x*x + y*y);
+            float x = faceLight? ln : abs(ln), y = abs(la), rho = sqrt(x*x + y*y);
             if ((x < minCastSin) && (rho > 0.0))
             {
                 float k = min(minCastSin/rho, 1.0), m = sqrt(1.0 - k*k);
-                float sg = ((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0;
+                float sg = faceLight? ((la >= 0.0)? 1.0 : -1.0) : (((ln >= 0.0) == (la >= 0.0))? 1.0 : -1.0);
                 float c = (k*x + m*y)/rho, sn = (k*y - m*x)/rho*sg;
                 float wt = rblBlendWeight(rho);
                 if (wt < 1.0)
@@ -198,6 +206,28 @@ void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec
     }
     else { n = axis; u = d; r = cross(u, n); }
 }
+
+#ifdef RBL_CASTER_ID
+// MurmurHash3's 32-bit finaliser (the CPU's rbl__mix32)
+uint rblMix32(uint h)
+{
+    h ^= h >> 16; h *= 0x85ebca6bu;
+    h ^= h >> 13; h *= 0xc2b2ae35u;
+    return h ^ (h >> 16);
+}
+
+// A billboard's caster identity: 16 bits mixed from the float bits of its pivot, size and origin (the
+// CPU's rbl__casterId; never 0, which marks Models), as two normalised bytes (high, low)
+vec2 rblCasterIdOf(vec3 pivot, vec4 sizeOrigin)
+{
+    uvec3 p = floatBitsToUint(pivot);
+    uvec4 s = floatBitsToUint(sizeOrigin);
+    uint h = rblMix32(rblMix32(rblMix32(rblMix32(rblMix32(rblMix32(rblMix32(p.x) ^ p.y) ^ p.z) ^ s.x) ^ s.y) ^ s.z) ^ s.w);
+    h = (h ^ (h >> 16)) & 0xffffu;
+    if (h == 0u) h = 1u;
+    return vec2(float(h >> 8), float(h & 255u))/255.0;
+}
+#endif
 
 // One corner (0 bottom-left, 1 bottom-right, 2 top-right, 3 top-left) of the instance's quad, given
 // its rotated frame: world position, texture coordinate, rounded normal and tangent
@@ -285,13 +315,34 @@ void main()
 {
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     vec3 eye = rblInstancing[0].xyz;
+    int code = int(rblInstancing[0].w + 0.5);
     vec3 r, u, n;
-    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
+    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
                    rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);
+    // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the
+    // axis (rbl__billboardVertices)
+    vec3 shift = vec3(0.0);
+    vec2 sc = vec2(0.0, 1.0);
+    if (rblInstancePosition.w != 0.0) sc = rblSinCosDeg(rblInstancePosition.w);
+    if (((code & 3) == 2) && (rblInstancing[4].w > 0.0))
+    {
+        vec3 a = vec3(0.0, 1.0, 0.0), l = a;
+        if (dot(rblInstancing[5].xyz, rblInstancing[5].xyz) > 1e-24) rblNormalizeTo(rblInstancing[5].xyz, a);
+        vec3 d = a - u;
+        vec4 light = rblInstancing[6];
+        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblInstancePosition.xyz*light.w, l))
+        {
+            float x0 = -rblInstanceSize.z, x1 = abs(rblInstanceSize.x) - rblInstanceSize.z;
+            float y0 = -rblInstanceSize.w, y1 = abs(rblInstanceSize.y) - rblInstanceSize.w;
+            vec4 e = vec4(sc.x*x0 + sc.y*y0, sc.x*x1 + sc.y*y0, sc.x*x1 + sc.y*y1, sc.x*x0 + sc.y*y1);
+            float lo = min(min(e.x, e.y), min(e.z, e.w)), hi = max(max(e.x, e.y), max(e.z, e.w));
+            float t = clamp((abs(dot(l, a)) - 0.8660254)*(1.0/(1.0 - 0.8660254)), 0.0, 1.0);
+            shift = d*(lo + 0.5*(hi - lo)*(t*t*(3.0 - 2.0*t)));
+        }
+    }
     // Rotate the frame around the normal (raylib rotates the corners; same result)
     if (rblInstancePosition.w != 0.0)
     {
-        vec2 sc = rblSinCosDeg(rblInstancePosition.w);
         vec3 nr = cross(n, r), nu = cross(n, u);
         r = r*sc.y + nr*sc.x;
         u = u*sc.y + nu*sc.x;
@@ -299,7 +350,11 @@ void main()
     vec3 p;
     rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
                        p, fragTexCoord, fragNormal, fragTangent);
+    p += shift;
     fragPosition = p;
+#ifdef RBL_CASTER_ID
+    fragCasterId = rblCasterIdOf(rblInstancePosition.xyz, rblInstanceSize);
+#endif
 #ifdef RBL_CROSS_FADE
     int corner = cornerOf[gl_VertexID % 6];
     float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;

@@ -11,6 +11,7 @@
 //                            divided by its alpha before decoding (the alpha-weighted mean of its
 //                            neighbours' colours, no dark fringe); lit and written as straight alpha
 //   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
+//   RBL_CASTER_ID            the billboard's caster identity arrives (receivers, casters, G-buffer)
 //   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map
 //                            is fetched at both texture coordinates. What is mixed: colour in linear
 //                            light weighted by coverage (alpha), as the mips average; alpha linearly,
@@ -27,6 +28,10 @@ RBL_VARYING vec4 fragTangent;
 #ifdef RBL_VIEW_VECTOR
 RBL_FLAT RBL_VARYING vec3 fragEye;           // camera position (from matView in the vertex stage)
 RBL_FLAT RBL_VARYING vec4 fragViewAxis;      // camera back direction, w 1 orthographic (rblViewVector)
+#endif
+
+#ifdef RBL_CASTER_ID
+RBL_FLAT RBL_VARYING vec2 fragCasterId;  // the billboard's caster identity (lit.vs.glsl), 0 for Models
 #endif
 
 #ifdef RBL_CROSS_FADE
@@ -122,6 +127,14 @@ vec4 rblStraightAlpha(vec4 texel)
 // tangent-space normal (debug views) come back through the out parameters
 RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)
 {
+    // The surface as rasterised (what a shadow map holds): the card's plane, not the rounded or
+    // normal-mapped normal that shades it; without derivatives (ES 2 lacking the extension) the
+    // interpolated vertex normal. Taken before any discard (derivatives need the whole quad)
+#ifdef RBL_DERIVATIVES
+    vec3 face = rblSafeNormalize(cross(dFdx(fragPosition), dFdy(fragPosition)), rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0)));
+#else
+    vec3 face = rblSafeNormalize(fragNormal, vec3(0.0, 0.0, 1.0));
+#endif
     vec4 texel = rblStraightAlpha(texture(texture0, fragTexCoord));
 #ifdef RBL_CROSS_FADE
     // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample
@@ -195,6 +208,12 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     sp.specularColor = vec3(1.0);
     sp.shininess = 1.0;
     sp.metalness = 0.0;
+    sp.face = face;
+#ifdef RBL_CASTER_ID
+    sp.caster = fragCasterId;
+#else
+    sp.caster = vec2(0.0);
+#endif
 #if RBL_BRDF == 1
     sp.specularColor = rblSpecularColor.rgb;
     sp.shininess = rblSpecularColor.a;

@@ -1,11 +1,28 @@
-// Shadow pass, fragment stage: depth only. The alpha test is the colour pass's own (albedo x
-// colDiffuse x vertex colour against the material's cutoff): a sprite's silhouette casts the shadow,
-// not its quad. Nothing else is sampled; the target has no colour attachment.
+// Shadow pass, fragment stage. The alpha test is the colour pass's own (albedo x colDiffuse x vertex
+// colour against the material's cutoff): a sprite's silhouette casts the shadow, not its quad.
+// Nothing else is sampled. The depth target gets the nearest caster; the casters target (RGBA8,
+// RblShadowMap.casters; absent with RblShadowDesc.selfShadow) gets what shadows.glsl reads of it:
+//   rg   its distance along the light's axis as a 16-bit code (high byte first): orthographic, the
+//        window depth (linear over near..far); perspective, log(d/near)/log(far/near), a step a fixed
+//        share of the distance, as a perspective texel is
+//   ba   its caster identity: a billboard's from its pivot, 0 for Models (shadows.glsl)
 #include "material.glsl"
+
+uniform vec4 rblCasterDepth;    // perspective (0/1), near, far, log(far/near)
+#if RBL_GLSL >= 300
+out vec4 rblOutCaster;
+#else
+#define rblOutCaster gl_FragColor
+#endif
 
 void main()
 {
     float alpha;
     vec3 emission, tangentNormal;
-    rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff
+    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff
+    float code = gl_FragCoord.z;
+    if (rblCasterDepth.x > 0.5) code = log(max(1.0/gl_FragCoord.w, rblCasterDepth.y)/rblCasterDepth.y)/rblCasterDepth.w;
+    float v = floor(clamp(code, 0.0, 1.0)*65535.0 + 0.5);
+    float high = floor(v/256.0);
+    rblOutCaster = vec4(high/255.0, (v - high*256.0)/255.0, sp.caster);
 }

@@ -13,4 +13,6 @@ struct RblShadingPoint {
     vec3 specularColor; // Blinn-Phong: linear specular colour (white in the G-buffer)
     float shininess;    // Blinn-Phong exponent
     float metalness;    // GGX
+    vec2 caster;        // identity of the billboard the point lies on (two bytes /255; 0 = a Model): its own caster never shadows it
+    vec3 face;          // unit normal of the rasterised surface (the card's plane, a Model's triangle), either sign: shadow biasing
 };

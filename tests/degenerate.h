@@ -211,6 +211,7 @@ static inline bool dgCpuQuad(const DgCase *c, int texW, int texH, RblVertex q[4]
 {
     RblCameraFrame view = RblGetCameraFrame(c->camera);
     rbl__Cast cast;
+    memset(&cast, 0, sizeof(cast));         // camera-facing casters (the instanced capture's facing code carries no flags)
     cast.light = c->light; cast.minSin = c->minSin;
     rbl__FrameCache cache;
     cache.facing = -1;

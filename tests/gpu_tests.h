@@ -13,6 +13,7 @@
 #include "test_deferred.c"
 #include "test_view.c"
 #include "test_shadows.c"
+#include "test_self_shadow.c"
 #include "test_skinning.c"
 #include "test_sprites.c"
 #include "test_atlas_render.c"
@@ -98,6 +99,12 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing),
         RT_TEST(test_shadows_hard_cases_stay_finite),
         RT_TEST(test_shadows_pass_restores_the_callers_target_and_matrices),
+        RT_TEST(test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_light_direction),
+        RT_TEST(test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_the_users_scene),
+        RT_TEST(test_shadows_light_over_an_axis_sprite_moves_its_shadow_continuously),
+        RT_TEST(test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_order),
+        RT_TEST(test_shadows_self_shadow_option_drops_the_identities),
+        RT_TEST_GLSL3(test_shadows_deferred_sprites_never_shadow_themselves_and_match_forward),
         RT_TEST(test_sprites_sorted_translucent_cards_draw_alike_in_any_submission_order),
         RT_TEST(test_sprites_hybrid_smoke_behind_a_tree_shows_through_its_holes),
         RT_TEST(test_sprites_bad_sort_settings_are_refused_and_draw_nothing),

@@ -130,11 +130,32 @@ static inline void refFrame(Camera3D cam, const RblBillboard *b, Vector4 light, 
 // Corners in the header's order (bottom-left, bottom-right, top-right, top-left) and the unit normal,
 // from refFrame. Camera-plane follows raylib's DrawBillboardPro literally (scaled vectors, origin from
 // the normalised ones, rotation about cross(right, up)); the other modes follow their definitions.
+// A tilted AXIS quad turns about the line across it at height h along the axis: the untilted quad's
+// lowest point under a light more than 30 degrees off the axis, mid-height on the axis (smoothstep of
+// |l.a| from cos 30 to 1): its corners move by (a - U) h, U the tilted up.
 static inline void refQuadCast(Camera3D cam, const RblBillboard *b, Vector4 light, double minSin, D3 out[4], D3 *normal)
 {
     D3 R, U, N;
     refFrame(cam, b, light, minSin, &R, &U, &N);
     D3 pos = d3f(b->position);
+    if ((b->facing == RBL_FACING_AXIS) && (minSin > 0.0))
+    {
+        D3 a = (dDot(d3f(b->axis), d3f(b->axis)) > 1e-24)? dNorm(d3f(b->axis)) : d3(0, 1, 0);
+        D3 R0, U0, N0;
+        refFrame(cam, b, light, 0.0, &R0, &U0, &N0);
+        double sx0 = fabs(b->size.x), sy0 = fabs(b->size.y), lo = 1e300, hi = -1e300;
+        D3 c0[4] = { d3(0, 0, 0), dScale(R0, sx0), dAdd(dScale(R0, sx0), dScale(U0, sy0)), dScale(U0, sy0) };
+        D3 o0 = dAdd(dScale(R0, b->origin.x), dScale(U0, b->origin.y));
+        for (int i = 0; i < 4; i++)
+        {
+            D3 q = dSub(c0[i], o0);
+            if (b->rotation != 0.0f) q = dRotate(q, N0, fmod((double)b->rotation, 360.0)*PI/180.0);
+            lo = fmin(lo, dDot(q, a)); hi = fmax(hi, dDot(q, a));
+        }
+        D3 l = dNorm(dSub(d3(light.x, light.y, light.z), dScale(pos, light.w)));
+        double t = fmin(fmax((fabs(dDot(l, a)) - sqrt(3.0)/2.0)/(1.0 - sqrt(3.0)/2.0), 0.0), 1.0);
+        pos = dAdd(pos, dScale(dSub(a, U), lo + 0.5*(hi - lo)*t*t*(3.0 - 2.0*t)));
+    }
     double sx = fabs(b->size.x), sy = fabs(b->size.y);
     D3 rs = dScale(R, sx), us = dScale(U, sy);
     D3 origin3D = dAdd(dScale(dNorm(R), b->origin.x), dScale(dNorm(U), b->origin.y));

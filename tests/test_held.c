@@ -101,7 +101,7 @@ static void test_held_orthographic_facing_is_parallel_across_the_whole_view(void
     // Shadow pass with light-facing casters: a directional light's view is parallel too
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
-    sd.size = 64; sd.faceLight = true; sd.minCastAngle = -1.0f;
+    sd.size = 64; sd.minCastAngle = -1.0f;                     // casters face the light (the default)
     RblShadowMap map = RblLoadShadowMap(sd);
     RblLight sun;
     memset(&sun, 0, sizeof(sun));

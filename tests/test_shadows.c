@@ -435,6 +435,7 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
     Camera3D cam = litCamera((Vector3){ 3.0f, 6.0f, 25.0f }, (Vector3){ -1.0f, 0.5f, 0.0f });
     RblCameraFrame view = RblGetCameraFrame(cam);
     rbl__Cast cast;                 // what a shadow pass gives the CPU path (the header's internal frame input)
+    memset(&cast, 0, sizeof(cast));
     cast.minSin = sinf(30.0f*PI/180.0f);
     unsigned int seed = 4242u;
     double worstAngle = 90.0, worstOrtho = 0.0;
@@ -459,11 +460,28 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
         worstOrtho = fmax(worstOrtho, fabs(n.x*t.x + n.y*t.y + n.z*t.z));
         worstOrtho = fmax(worstOrtho, fabs(e1.x*e2.x + e1.y*e2.y + e1.z*e2.z)/(Vector3Length(e1)*Vector3Length(e2)));
         worstOrtho = fmax(worstOrtho, fabs(Vector3Length(e2) - 2.0f)/2.0f);
-        // The bottom edge (pivot line) stays on the floor: the quad rotates about it
-        worstOrtho = fmax(worstOrtho, fabs(q[0].position[1]) + fabs(q[1].position[1]));
+        // The quad turns about the line across it at height h (in double, from the documented rule):
+        // the bottom edge under a low light, mid-height as the light nears the axis (smoothstep of
+        // |l.a| from cos 30 to 1); points on that line keep their place, every corner its distance
+        // to it and its offset along it (the pivot line r)
+        double la = fabs((double)cast.light.y), g = fmin(fmax((la - sqrt(3.0)/2.0)/(1.0 - sqrt(3.0)/2.0), 0.0), 1.0);
+        double h = 1.0*g*g*(3.0 - 2.0*g);               // half the 2-unit height at full weight
+        RblVertex u[4];
+        rbl__Cast none = cast;
+        none.minSin = 0.0f;
+        cache.facing = -1;
+        rbl__billboardVertices(&view, &none, &cache, 16, 16, &b, u);      // the untilted quad
+        double hinge[3] = { b.position.x, b.position.y + h, b.position.z }, r[3] = { e1.x, e1.y, e1.z }, rl = sqrt(r[0]*r[0] + r[1]*r[1] + r[2]*r[2]);
+        for (int c = 0; c < 4; c++)
+        {
+            double dt[3], du[3];
+            for (int k = 0; k < 3; k++) { dt[k] = q[c].position[k] - hinge[k]; du[k] = u[c].position[k] - hinge[k]; }
+            worstOrtho = fmax(worstOrtho, fabs(sqrt(dt[0]*dt[0] + dt[1]*dt[1] + dt[2]*dt[2]) - sqrt(du[0]*du[0] + du[1]*du[1] + du[2]*du[2])));
+            worstOrtho = fmax(worstOrtho, fabs((dt[0] - du[0])*r[0] + (dt[1] - du[1])*r[1] + (dt[2] - du[2])*r[2])/rl);
+        }
     }
     RT_CHECK(worstAngle >= 29.9, "the light sees a tilted quad at %.3f degrees (minimum 30)", worstAngle);
-    RT_CHECK(worstOrtho < 1e-5, "tilted frame not orthonormal / not pivoting on its base (%.3g)", worstOrtho);
+    RT_CHECK(worstOrtho < 1e-5, "tilted frame not orthonormal / not turning about its hinge line (%.3g)", worstOrtho);
     // GPU: the instanced stage with the same shadow-pass frame
     TfGl gl;
     if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
@@ -475,12 +493,14 @@ static void test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu(void)
     memset(&d, 0, sizeof(d));
     d.facing = RBL_FACING_AXIS;
     double worst = 0.0;
-    for (int lightKind = 0; lightKind < 2; lightKind++)
+    for (int lightKind = 0; lightKind < 4; lightKind++)
     {
-        cast.light = lightKind? (Vector4){ 2.0f, 30.0f, -1.0f, 1.0f } : (Vector4){ 0.1f, 0.99f, 0.1f, 0.0f };
-        tfLight = cast.light; tfMinCastSin = cast.minSin;
+        // camera-facing casters, then light-facing ones (their flags in the facing code)
+        cast.light = (lightKind & 1)? (Vector4){ 2.0f, 30.0f, -1.0f, 1.0f } : (Vector4){ 0.1f, 0.99f, 0.1f, 0.0f };
+        cast.faceLight = (lightKind >= 2);
+        tfLight = cast.light; tfMinCastSin = cast.minSin; tfFacingFlags = cast.faceLight? 8 : 0;
         float *gpu = tfCapture(&gl, prog, &buf, cam, d, 256, 128, in, 64);
-        tfLight = (Vector4){ 0 }; tfMinCastSin = 0.0f;
+        tfLight = (Vector4){ 0 }; tfMinCastSin = 0.0f; tfFacingFlags = 0;
         const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
         for (int i = 0; i < 64; i++)
         {

@@ -568,6 +568,282 @@ static double IdealWidth(int n)
 //----------------------------------------------------------------------------------
 // Main
 //----------------------------------------------------------------------------------
+//----------------------------------------------------------------------------------
+// Sprite self-shadowing (issue #26, item 1): caster identities against depth-only maps
+//----------------------------------------------------------------------------------
+// pass     ns per billboard of the pass above (1k and 10k billboards, map 1024, camera-facing casters)
+//          into a map with the casters target and identities (the default) and into a depth-only
+//          map (RblShadowDesc.selfShadow, the 0.4 format), timed alternately per round; ratio =
+//          median of per-round ratios
+// receiver ms per frame of the pcf 2 receiver above reading the casters target (identity compare in
+//          each fetch) and a depth-only map of the same card, alternately; ratio as above
+// sweep    the errors: a 1 x 2 sprite on a floor, its normal map bending the normal up to 60
+//          degrees, a directional light at azimuth 0..345 (15-degree steps) x elevation 5..85
+//          (20-degree steps), AXIS and CAMERA_PLANE sprites, pivot at the feet; each case rendered
+//          with and without the sprite in the pass (the floor casts in both): cases where any
+//          sprite pixel darkens by more than 2/255, the worst darkening and the darkened share of the
+//          sprite's pixels, per caster mode (light-, camera-facing) and map (identities, depth only)
+#define SELF_MAP            1024
+#define SELF_VIEW           48
+#define SELF_MODES          4           // identities light-facing, identities camera-facing, depth light-facing, depth camera-facing
+typedef struct SelfBench {
+    double passNs[2][PASS_COUNTS][2], passRatio[2][PASS_COUNTS];    // [path batched/instanced][count][identities, depth]
+    double rxMs[2], rxRatio;                                        // [identities, depth]
+    int cases[SELF_MODES], darkened[SELF_MODES], worst[SELF_MODES];
+    double worstShare[SELF_MODES];
+    RblShadowMap idMap, depthMap;
+    RblShadowMap rxDepthMap;
+    PassScene *p;
+    Receiver *r;
+    RblScene rxDepthScene;
+    int count;
+} SelfBench;
+static const char *selfModeName[SELF_MODES] = { "identities_light_facing", "identities_camera_facing", "depth_light_facing", "depth_camera_facing" };
+
+static double SelfPassFrame(SelfBench *sb, bool batched, bool identities)
+{
+    PassScene *p = sb->p;
+    RblShadowMap *map = identities? &sb->idMap : &sb->depthMap;
+    rtFinish();
+    double t0 = BenchNowNs();
+    if (RblBeginShadowMap(map, &p->scene, 0, p->focus, p->radius))
+    {
+        if (batched)
+        {
+            RblBeginBatch(&p->batch, p->viewer);
+            for (int i = 0; i < sb->count; i++) RblBatchAdd(&p->batch, p->material, &p->billboards[i]);
+            RblEndBatch(&p->batch);
+        }
+        else RblDrawInstanced(&p->instances, p->viewer, p->materialInstanced, p->instancedDesc, p->instanceSet, sb->count);
+        RblEndShadowMap(map);
+    }
+    rtFinish();
+    return (BenchNowNs() - t0)/sb->count;
+}
+
+static void SelfPassRound(void *ctx, double *out)
+{
+    SelfBench *sb = (SelfBench *)ctx;
+    for (int path = 0; path < 2; path++)
+    {
+        static int flip = 0;
+        flip ^= 1;
+        double a = SelfPassFrame(sb, path == 0, flip), b = SelfPassFrame(sb, path == 0, !flip);
+        out[path*3 + 0] = flip? a : b;                  // identities
+        out[path*3 + 1] = flip? b : a;                  // depth only
+        out[path*3 + 2] = out[path*3 + 0]/out[path*3 + 1];
+    }
+}
+
+static void SelfReceiverRound(void *ctx, double *out)
+{
+    SelfBench *sb = (SelfBench *)ctx;
+    Receiver *r = sb->r;
+    const int v = RX_UNSHADOWED + 2;                     // pcf 2
+    for (int k = 0; k < 2; k++)
+    {
+        bool depth = (k == 1);
+        RblSetScene(depth? &sb->rxDepthScene : &r->scene);
+        rtFinish();
+        double t0 = BenchNowNs();
+        BeginTextureMode(r->target);
+        ClearBackground(BLANK);
+        BeginMode3D(r->camera);
+        RblDrawBillboard(r->camera, r->material[v], r->floor);
+        EndMode3D();
+        EndTextureMode();
+        rtFinish();
+        out[k] = (BenchNowNs() - t0)*1e-6;
+    }
+    out[2] = out[0]/out[1];
+}
+
+// A tangent-space normal map bending up to 60 degrees across and 30 along (tests/test_self_shadow.c's)
+static Texture2D SelfNormalTexture(void)
+{
+    Image img = GenImageColor(32, 64, (Color){ 128, 128, 255, 255 });
+    for (int y = 0; y < 64; y++)
+        for (int x = 0; x < 32; x++)
+        {
+            double u = (x + 0.5)/32.0, v = (y + 0.5)/64.0;
+            double nx = 1.7*sin(2.0*PI*1.5*u), ny = 0.6*sin(2.0*PI*3.0*v), nz = 1.0, l = sqrt(nx*nx + ny*ny + nz*nz);
+            ImageDrawPixel(&img, x, y, (Color){ (unsigned char)lround((nx/l*0.5 + 0.5)*255.0), (unsigned char)lround((ny/l*0.5 + 0.5)*255.0),
+                                                (unsigned char)lround((nz/l*0.5 + 0.5)*255.0), 255 });
+        }
+    Texture2D t = LoadTextureFromImage(img);
+    UnloadImage(img);
+    return t;
+}
+
+static bool SelfBenchRun(SelfBench *sb, PassScene *p, Receiver *r)
+{
+    sb->p = p; sb->r = r;
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = SELF_MAP; sd.faceCamera = true;
+    sb->idMap = RblLoadShadowMap(sd);
+    sd.selfShadow = true;
+    sb->depthMap = RblLoadShadowMap(sd);
+    sd.size = RX_MAP; sd.faceCamera = false;
+    sb->rxDepthMap = RblLoadShadowMap(sd);
+    if (!RblIsShadowMapValid(sb->idMap) || !RblIsShadowMapValid(sb->depthMap) || !RblIsShadowMapValid(sb->rxDepthMap)) return false;
+    // Pass cost
+    const BenchTiming timing = { 1, 5, 15, 2.5e9 };
+    for (int c = 0; c < PASS_COUNTS; c++)
+    {
+        double med[6];
+        sb->count = passCounts[c];
+        BenchMedianOfRuns(SelfPassRound, sb, 6, timing, med);
+        for (int path = 0; path < 2; path++)
+        {
+            sb->passNs[path][c][0] = med[path*3]; sb->passNs[path][c][1] = med[path*3 + 1]; sb->passRatio[path][c] = med[path*3 + 2];
+        }
+    }
+    // Receiver cost: the same card into a depth-only map
+    if (!RblBeginShadowMap(&sb->rxDepthMap, &r->sceneNoMap, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, RX_FOCUS)) return false;
+    RblDrawBillboard(r->camera, r->material[RX_UNSHADOWED], Card());
+    RblEndShadowMap(&sb->rxDepthMap);
+    sb->rxDepthScene = r->sceneNoMap;
+    sb->rxDepthScene.shadowMaps = &sb->rxDepthMap;
+    sb->rxDepthScene.shadowMapCount = 1;
+    double rmed[3];
+    const BenchTiming rtiming = { 1, 5, 11, 4.0e9 };
+    BenchMedianOfRuns(SelfReceiverRound, sb, 3, rtiming, rmed);
+    sb->rxMs[0] = rmed[0]; sb->rxMs[1] = rmed[1]; sb->rxRatio = rmed[2];
+
+    // The sweep (errors)
+    RblLight light;
+    memset(&light, 0, sizeof(light));
+    light.type = RBL_LIGHT_DIRECTIONAL; light.color = WHITE; light.intensity = 1.0f; light.direction = (Vector3){ 0.0f, -1.0f, 0.0f };
+    RblLitShaderDesc ld;
+    memset(&ld, 0, sizeof(ld));
+    ld.maxLights = 1; ld.lightFeatures = RblLightFeatures(&light, 1); ld.shadowMaps = 1; ld.material.normalEncoding = RBL_NORMAL_RGB;
+    Shader lit = RblLoadLitShader(ld);
+    Image wi = GenImageColor(4, 4, WHITE), fi = GenImageColor(4, 4, (Color){ 128, 128, 255, 255 });
+    Texture2D white = LoadTextureFromImage(wi), normal = SelfNormalTexture(), flat = LoadTextureFromImage(fi);
+    UnloadImage(wi); UnloadImage(fi);
+    Material sprite = LoadMaterialDefault(), floorMat = LoadMaterialDefault();
+    sprite.shader = floorMat.shader = lit;
+    sprite.maps[MATERIAL_MAP_ALBEDO].texture = floorMat.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    sprite.maps[MATERIAL_MAP_NORMAL].texture = normal;
+    floorMat.maps[MATERIAL_MAP_NORMAL].texture = flat;
+    RblShadowMap maps[SELF_MODES];
+    for (int m = 0; m < SELF_MODES; m++)
+    {
+        memset(&sd, 0, sizeof(sd));
+        sd.size = 256; sd.selfShadow = (m >= 2); sd.faceCamera = (m & 1);
+        maps[m] = RblLoadShadowMap(sd);
+    }
+    RenderTexture2D view = LoadRenderTexture(SELF_VIEW, SELF_VIEW);
+    Camera3D viewer;
+    memset(&viewer, 0, sizeof(viewer));
+    viewer.position = (Vector3){ 0.0f, 1.5f, 6.0f }; viewer.target = (Vector3){ 0.0f, 1.0f, 0.0f }; viewer.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    viewer.fovy = 28.0f; viewer.projection = CAMERA_PERSPECTIVE;
+    RblBillboard fl, b;
+    memset(&fl, 0, sizeof(fl));
+    fl.size = (Vector2){ 40.0f, 40.0f }; fl.origin = (Vector2){ 20.0f, 20.0f }; fl.facing = RBL_FACING_FIXED;
+    fl.axis = (Vector3){ 0.0f, 1.0f, 0.0f }; fl.up = (Vector3){ 0.0f, 0.0f, -1.0f };
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 1.0f, 2.0f }; b.origin = (Vector2){ 0.5f, 0.0f };
+    bool ok = RblIsLitShaderValid(lit);
+    for (int m = 0; m < SELF_MODES; m++) ok = ok && RblIsShadowMapValid(maps[m]);
+    for (int el = 5; ok && (el <= 85); el += 20)
+        for (int az = 0; az < 360; az += 15)
+            for (int f = 0; f < 2; f++)
+                for (int m = 0; m < SELF_MODES; m++)
+                {
+                    double a = az*PI/180.0, e = el*PI/180.0;
+                    light.direction = (Vector3){ (float)(-cos(e)*sin(a)), (float)-sin(e), (float)(-cos(e)*cos(a)) };
+                    b.facing = f? RBL_FACING_CAMERA_PLANE : RBL_FACING_AXIS;
+                    Image img[2];
+                    for (int with = 0; with < 2; with++)
+                    {
+                        RblScene scene;
+                        memset(&scene, 0, sizeof(scene));
+                        scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 40, 40, 40, 255 };
+                        if (RblBeginShadowMap(&maps[m], &scene, 0, (Vector3){ 0.0f, 1.0f, 0.0f }, 4.4f))
+                        {
+                            RblDrawBillboard(viewer, floorMat, fl);
+                            if (with) RblDrawBillboard(viewer, sprite, b);
+                            RblEndShadowMap(&maps[m]);
+                            scene.shadowMaps = &maps[m]; scene.shadowMapCount = 1;
+                        }
+                        RblSetScene(&scene);
+                        BeginTextureMode(view);
+                        ClearBackground(BLANK);
+                        BeginMode3D(viewer);
+                        RblDrawBillboard(viewer, sprite, b);
+                        EndMode3D();
+                        EndTextureMode();
+                        img[with] = rtReadTarget(view);
+                    }
+                    int covered = 0, dark = 0, worst = 0;
+                    const unsigned char *pw = (const unsigned char *)img[1].data, *po = (const unsigned char *)img[0].data;
+                    for (int i = 0; i < SELF_VIEW*SELF_VIEW; i++)
+                    {
+                        if ((pw[i*4 + 3] < 255) || (po[i*4 + 3] < 255)) continue;
+                        covered++;
+                        int d = 0;
+                        for (int ch = 0; ch < 3; ch++) if ((int)po[i*4 + ch] - pw[i*4 + ch] > d) d = (int)po[i*4 + ch] - pw[i*4 + ch];
+                        dark += (d > 2);
+                        if (d > worst) worst = d;
+                    }
+                    sb->cases[m]++;
+                    sb->darkened[m] += (dark > 0);
+                    if (worst > sb->worst[m]) sb->worst[m] = worst;
+                    if ((covered > 0) && ((double)dark/covered > sb->worstShare[m])) sb->worstShare[m] = (double)dark/covered;
+                    UnloadImage(img[0]); UnloadImage(img[1]);
+                }
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
+    UnloadRenderTexture(view);
+    for (int m = 0; m < SELF_MODES; m++) RblUnloadShadowMap(&maps[m]);
+    MemFree(sprite.maps); MemFree(floorMat.maps);
+    UnloadTexture(white); UnloadTexture(normal); UnloadTexture(flat);
+    RblUnloadLitShader(&lit);
+    RblUnloadShadowMap(&sb->idMap); RblUnloadShadowMap(&sb->depthMap);
+    return ok;
+}
+
+static void SelfBenchRows(SelfBench *sb)
+{
+    char name[64];
+    for (int path = 0; path < 2; path++)
+        for (int c = 0; c < PASS_COUNTS; c++)
+        {
+            snprintf(name, sizeof(name), "identities_pass_%s_%d_%d", path? "instanced" : "batched", passCounts[c], SELF_MAP);
+            BenchCsvRow(SUITE, name, "ns_per_billboard", sb->passNs[path][c][0], "ns");
+            BenchCsvRow(SUITE, name, "depth_only_ns_per_billboard", sb->passNs[path][c][1], "ns");
+            BenchCsvRow(SUITE, name, "ratio_to_depth_only", sb->passRatio[path][c], "x");
+        }
+    BenchCsvRow(SUITE, "identities_receiver_pcf2", "ms_per_frame_1280x720", sb->rxMs[0], "ms");
+    BenchCsvRow(SUITE, "identities_receiver_pcf2", "depth_only_ms_per_frame_1280x720", sb->rxMs[1], "ms");
+    BenchCsvRow(SUITE, "identities_receiver_pcf2", "ratio_to_depth_only", sb->rxRatio, "x");
+    for (int m = 0; m < SELF_MODES; m++)
+    {
+        snprintf(name, sizeof(name), "self_shadow_sweep_%s", selfModeName[m]);
+        BenchCsvRow(SUITE, name, "cases", sb->cases[m], "cases");
+        BenchCsvRow(SUITE, name, "cases_self_darkened", sb->darkened[m], "cases");
+        BenchCsvRow(SUITE, name, "worst_darkening", sb->worst[m], "1/255");
+        BenchCsvRow(SUITE, name, "worst_share_darkened", sb->worstShare[m], "fraction");
+    }
+}
+
+static void SelfBenchSummary(const SelfBench *sb)
+{
+    printf("\nshadows: sprite self-shadowing, caster identities (casters target, the default) against depth-only maps (selfShadow)\n");
+    printf("  pass, ns per billboard (map %d, camera-facing casters; medians of alternating rounds):\n", SELF_MAP);
+    for (int path = 0; path < 2; path++)
+        for (int c = 0; c < PASS_COUNTS; c++)
+            printf("    %-9s %6d: identities %7.0f, depth only %7.0f = %.2fx\n", path? "instanced" : "batched", passCounts[c],
+                   sb->passNs[path][c][0], sb->passNs[path][c][1], sb->passRatio[path][c]);
+    printf("  receiver pcf 2 at 1280x720: identities %.2f ms, depth only %.2f ms = %.2fx\n", sb->rxMs[0], sb->rxMs[1], sb->rxRatio);
+    printf("  sweep (azimuth 0..345/15 x elevation 5..85/20, AXIS and CAMERA_PLANE, bent normals): cases where the sprite darkens itself\n");
+    for (int m = 0; m < SELF_MODES; m++)
+        printf("    %-26s %3d of %3d, worst %3d/255, at most %.0f%% of its pixels\n", selfModeName[m], sb->darkened[m], sb->cases[m], sb->worst[m], 100.0*sb->worstShare[m]);
+}
+
 int main(void)
 {
     double benchStart = BenchNowNs();
@@ -607,6 +883,7 @@ int main(void)
         RblShadowDesc sd;
         memset(&sd, 0, sizeof(sd));
         sd.size = mapSizes[s];
+        sd.faceCamera = true;           // as the baseline's billboards: both rasterise about the same texels
         p->maps[s] = RblLoadShadowMap(sd);
         p->targets[s] = LoadRenderTexture(mapSizes[s], mapSizes[s]);
         passOk = passOk && RblIsShadowMapValid(p->maps[s]) && (p->targets[s].id != 0);
@@ -772,6 +1049,13 @@ int main(void)
     double rbase = rmed[RV_MS(RX_UNSHADOWED)];
     double rspread = (rbase > 0.0)? 100.0*(r->baseMax - r->baseMin)/rbase : 0.0;
 
+    // ---- sprite self-shadowing: identities against depth-only maps ---------------------------------------
+    SelfBench sb;
+    memset(&sb, 0, sizeof(sb));
+    bool selfOk = passOk && r->ok[RX_UNSHADOWED + 2] && mapOk;
+    if (selfOk) selfOk = SelfBenchRun(&sb, p, r);
+    if (!selfOk) { printf("bench_shadows: self-shadowing rows skipped\n"); problems++; }
+
     // ---- rows ----------------------------------------------------------------------------------------
     char name[64];
     if (passOk)
@@ -848,6 +1132,8 @@ int main(void)
         BenchCsvRow(SUITE, name, "ratio_to_raylib", rmed[RV_RATIO_RAYLIB(RX_NOMAP)], "x");
     }
     if (noMapErr >= 0) BenchCsvRow(SUITE, name, "max_err_lit", noMapErr, "1/255");
+
+    if (selfOk) SelfBenchRows(&sb);
 
     // ---- release -------------------------------------------------------------------------------------
     for (int s = 0; s < MAP_SIZES; s++) { RblUnloadShadowMap(&p->maps[s]); UnloadRenderTexture(p->targets[s]); }
@@ -929,6 +1215,7 @@ int main(void)
     printf("  ideal width (box of n texels over the texel step, edge positions uniform):");
     for (int k = 0; k < RX_FILTERS; k++) printf(" pcf %d %.2f%s", rxFilters[k], IdealWidth(rxFilters[k]), (k < RX_FILTERS - 1)? "," : "\n");
     printf("  (%d pixels within %.0f texels of the edge)\n", r->ok[RX_UNSHADOWED + 1]? edge[0].edgePixels : 0, RX_EDGE_TEXELS);
+    if (selfOk) SelfBenchSummary(&sb);
     printf("bench_shadows: done in %.1f s, rows in %s%s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath(), problems? " (with problems, see above)" : "");
     return 0;
 }

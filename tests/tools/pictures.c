@@ -282,6 +282,227 @@ static bool shadowsPicture(const char *dir)
     return ok;
 }
 
+// A character sprite (opaque body, transparent around it) and its height for a normal map: limbs
+// and head bulge, so the normal map bends the normal along arms, legs and outline
+static Image characterImage(bool height)
+{
+    const int w = 64, h = 128;
+    Image img = GenImageColor(w, h, height? BLACK : BLANK);
+    Color skin = height? (Color){ 255, 255, 255, 255 } : (Color){ 236, 196, 160, 255 };
+    Color shirt = height? (Color){ 230, 230, 230, 255 } : (Color){ 200, 70, 60, 255 };
+    Color pants = height? (Color){ 210, 210, 210, 255 } : (Color){ 60, 80, 150, 255 };
+    ImageDrawRectangle(&img, 22, 84, 8, 42, pants);                 // legs
+    ImageDrawRectangle(&img, 34, 84, 8, 42, pants);
+    ImageDrawRectangle(&img, 19, 40, 26, 46, shirt);               // body
+    ImageDrawRectangle(&img, 10, 42, 8, 36, shirt);                // arms
+    ImageDrawRectangle(&img, 46, 42, 8, 36, shirt);
+    ImageDrawCircle(&img, 14, 80, 4, skin);                         // hands
+    ImageDrawCircle(&img, 50, 80, 4, skin);
+    ImageDrawCircle(&img, 32, 24, 14, skin);                        // head
+    if (!height) { ImageDrawCircle(&img, 27, 22, 2, (Color){ 40, 30, 30, 255 }); ImageDrawCircle(&img, 37, 22, 2, (Color){ 40, 30, 30, 255 }); }
+    return img;
+}
+
+// The user's 2.5D scene (issue #26): an AXIS-facing character sprite (pivot at its feet, normal map
+// from its height, so limbs and outline bend the normal), a sun from +X at 37 degrees elevation and a
+// crate beside it; the camera in front. Left: casters facing the light (the default); right: facing
+// the camera. Neither darkens the sprite with its own caster (caster identities); the ground shadow
+// is the light-facing card's (a full figure stretching away from the sun) or the camera-facing
+// card's (edge-on to a side sun: tilted back to the minimum angle, a leaning parallelogram)
+static bool spriteShadowsPicture(const char *dir)
+{
+    const int w = 640, h = 300, panel = w/2;
+    Image ci = characterImage(false), hi = characterImage(true);
+    ImageBlurGaussian(&hi, 3);
+    Image ni = RblGenNormalMapFromHeight(hi, 6.0f, false);
+    Image fi = GenImageChecked(256, 256, 32, 32, (Color){ 196, 190, 178, 255 }, (Color){ 172, 166, 154, 255 });
+    Texture2D character = LoadTextureFromImage(ci), normals = LoadTextureFromImage(ni), floorTexture = LoadTextureFromImage(fi);
+    UnloadImage(ci); UnloadImage(hi); UnloadImage(ni); UnloadImage(fi);
+    GenTextureMipmaps(&floorTexture);
+    SetTextureFilter(floorTexture, TEXTURE_FILTER_TRILINEAR);
+
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    const float e = 37.0f*DEG2RAD;
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ -cosf(e), -sinf(e), 0.0f };
+    sun.color = (Color){ 255, 236, 210, 255 }; sun.intensity = 1.0f;
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.shadowMaps = 1;
+    Shader flat = RblLoadLitShader(d);
+    d.material.normalEncoding = RBL_NORMAL_RGB;
+    Shader bent = RblLoadLitShader(d);
+    RblShadowDesc sd[2];
+    memset(sd, 0, sizeof(sd));
+    sd[0].size = sd[1].size = 2048;
+    sd[1].faceCamera = true;
+    RblShadowMap maps[2] = { RblLoadShadowMap(sd[0]), RblLoadShadowMap(sd[1]) };
+    if (!RblIsLitShaderValid(flat) || !RblIsLitShaderValid(bent) || !RblIsShadowMapValid(maps[0]) || !RblIsShadowMapValid(maps[1])) { printf("pictures: sprite shadows unavailable\n"); return false; }
+    Material sprite = LoadMaterialDefault();
+    sprite.shader = bent;
+    sprite.maps[MATERIAL_MAP_ALBEDO].texture = character;
+    sprite.maps[MATERIAL_MAP_NORMAL].texture = normals;
+    Model ground = LoadModelFromMesh(GenMeshPlane(12.0f, 12.0f, 1, 1));
+    ground.materials[0].shader = flat;
+    ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    Model crate = LoadModelFromMesh(GenMeshCube(0.8f, 0.8f, 0.8f));
+    crate.materials[0].shader = flat;
+    crate.materials[0].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 170, 120, 70, 255 };
+    const Vector3 crateAt = { 1.05f, 0.4f, 0.1f };     // its shadow reaches the sprite's legs
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 1.0f, 2.0f }; b.origin = (Vector2){ 0.5f, 0.0f }; b.facing = RBL_FACING_AXIS;
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ -0.4f, 2.4f, 5.4f }; cam.target = (Vector3){ -0.7f, 0.7f, 0.0f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 46.0f; cam.projection = CAMERA_PERSPECTIVE;
+    RenderTexture2D rt = LoadRenderTexture(panel, h), out = LoadRenderTexture(w, h);
+    bool ok = true;
+    BeginTextureMode(out);
+    ClearBackground(BLACK);
+    EndTextureMode();
+    for (int k = 0; k < 2; k++)
+    {
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 70, 76, 92, 255 };
+        if (RblBeginShadowMap(&maps[k], &scene, 0, (Vector3){ -1.0f, 0.8f, 0.0f }, 3.5f))
+        {
+            RblDrawBillboard(cam, sprite, b);
+            RblDrawModel(crate, crateAt, 1.0f, WHITE);
+            RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+            RblEndShadowMap(&maps[k]);
+            scene.shadowMaps = &maps[k]; scene.shadowMapCount = 1;
+        }
+        ok = ok && RblSetScene(&scene);
+        BeginTextureMode(rt);
+        ClearBackground((Color){ 24, 26, 32, 255 });
+        BeginMode3D(cam);
+        RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+        RblDrawModel(crate, crateAt, 1.0f, WHITE);
+        RblDrawBillboard(cam, sprite, b);
+        EndMode3D();
+        DrawText(k? "casters face the camera (faceCamera)" : "casters face the light (default)", 8, 6, 10, RAYWHITE);
+        EndTextureMode();
+        BeginTextureMode(out);
+        DrawTextureRec(rt.texture, (Rectangle){ 0.0f, 0.0f, (float)panel, (float)-h }, (Vector2){ (float)(k*panel), 0.0f }, WHITE);
+        EndTextureMode();
+    }
+    BeginTextureMode(out);
+    DrawText("AXIS sprite, sun from +X at 37 degrees, a crate: no self-shadow in either mode", 8, h - 16, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(out);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_sprite_shadows.png", dir);
+    ok = ok && ExportImage(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
+    UnloadRenderTexture(rt); UnloadRenderTexture(out);
+    for (int k = 0; k < 2; k++) RblUnloadShadowMap(&maps[k]);
+    MemFree(sprite.maps);
+    UnloadModel(ground); UnloadModel(crate);
+    RblUnloadLitShader(&flat); RblUnloadLitShader(&bent);
+    UnloadTexture(character); UnloadTexture(normals); UnloadTexture(floorTexture);
+    return ok;
+}
+
+// The self-shadowing sweep's contact sheet (tests/test_self_shadow.c): the character sprite (AXIS,
+// default light-facing casters) under a directional light from azimuth 0 (the viewer's side) to 315
+// in columns and elevation 5 to 85 in rows, with its ground shadow; no cell darkens the sprite itself
+static bool sweepPicture(const char *dir)
+{
+    const int cols = 8, rows = 5, cw = 96, ch = 96, w = cols*cw, h = rows*ch + 20;
+    Image ci = characterImage(false), hi = characterImage(true);
+    ImageBlurGaussian(&hi, 3);
+    Image ni = RblGenNormalMapFromHeight(hi, 6.0f, false);
+    Texture2D character = LoadTextureFromImage(ci), normals = LoadTextureFromImage(ni), white = LoadTextureFromImage(hi);
+    UnloadImage(ci); UnloadImage(hi); UnloadImage(ni);
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.color = (Color){ 255, 240, 220, 255 }; sun.intensity = 0.7f; sun.direction = (Vector3){ 0.0f, -1.0f, 0.0f };
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.shadowMaps = 1;
+    Shader flat = RblLoadLitShader(d);
+    d.material.normalEncoding = RBL_NORMAL_RGB;
+    Shader bent = RblLoadLitShader(d);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 1024;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    if (!RblIsLitShaderValid(flat) || !RblIsLitShaderValid(bent) || !RblIsShadowMapValid(map)) { printf("pictures: sweep unavailable\n"); return false; }
+    Material sprite = LoadMaterialDefault(), floorMat = LoadMaterialDefault();
+    sprite.shader = bent;
+    sprite.maps[MATERIAL_MAP_ALBEDO].texture = character;
+    sprite.maps[MATERIAL_MAP_NORMAL].texture = normals;
+    floorMat.shader = flat;
+    floorMat.maps[MATERIAL_MAP_ALBEDO].color = (Color){ 200, 196, 186, 255 };
+    RblBillboard b, fl;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 1.0f, 2.0f }; b.origin = (Vector2){ 0.5f, 0.0f }; b.facing = RBL_FACING_AXIS;
+    memset(&fl, 0, sizeof(fl));
+    fl.size = (Vector2){ 16.0f, 16.0f }; fl.origin = (Vector2){ 8.0f, 8.0f }; fl.facing = RBL_FACING_FIXED;
+    fl.axis = (Vector3){ 0.0f, 1.0f, 0.0f }; fl.up = (Vector3){ 0.0f, 0.0f, -1.0f };
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 3.2f, 4.6f }; cam.target = (Vector3){ 0.0f, 0.5f, -0.6f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 58.0f; cam.projection = CAMERA_PERSPECTIVE;
+    RenderTexture2D cell = LoadRenderTexture(cw, ch), out = LoadRenderTexture(w, h);
+    BeginTextureMode(out);
+    ClearBackground(BLACK);
+    EndTextureMode();
+    bool ok = true;
+    for (int r = 0; r < rows; r++)
+        for (int c = 0; c < cols; c++)
+        {
+            double az = c*45.0*PI/180.0, el = (5.0 + 20.0*r)*PI/180.0;
+            sun.direction = (Vector3){ (float)(-cos(el)*sin(az)), (float)-sin(el), (float)(-cos(el)*cos(az)) };
+            RblScene scene;
+            memset(&scene, 0, sizeof(scene));
+            scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 60, 64, 76, 255 };
+            if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 1.0f, 0.0f }, 6.0f))
+            {
+                RblDrawBillboard(cam, floorMat, fl);
+                RblDrawBillboard(cam, sprite, b);
+                RblEndShadowMap(&map);
+                scene.shadowMaps = &map; scene.shadowMapCount = 1;
+            }
+            ok = ok && RblSetScene(&scene);
+            BeginTextureMode(cell);
+            ClearBackground((Color){ 24, 26, 32, 255 });
+            BeginMode3D(cam);
+            RblDrawBillboard(cam, floorMat, fl);
+            RblDrawBillboard(cam, sprite, b);
+            EndMode3D();
+            DrawText(TextFormat("%d/%d", c*45, 5 + 20*r), 3, 3, 10, RAYWHITE);
+            EndTextureMode();
+            BeginTextureMode(out);
+            DrawTextureRec(cell.texture, (Rectangle){ 0.0f, 0.0f, (float)cw, (float)-ch }, (Vector2){ (float)(c*cw), (float)(r*ch) }, WHITE);
+            EndTextureMode();
+        }
+    BeginTextureMode(out);
+    DrawText("light azimuth/elevation (0 = from the viewer's side, 90 = from +X): AXIS sprite, light-facing casters", 4, h - 15, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(out);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_shadow_sweep.png", dir);
+    ok = ok && ExportImage(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
+    UnloadRenderTexture(cell); UnloadRenderTexture(out);
+    RblUnloadShadowMap(&map);
+    MemFree(sprite.maps); MemFree(floorMat.maps);
+    RblUnloadLitShader(&flat); RblUnloadLitShader(&bent);
+    UnloadTexture(character); UnloadTexture(normals); UnloadTexture(white);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = (argc > 1)? argv[1] : "examples/resources";
@@ -358,6 +579,8 @@ int main(int argc, char **argv)
     UnloadRenderTexture(rt);
     if (!lightingPicture(dir)) return 1;
     if (!shadowsPicture(dir)) return 1;
+    if (!spriteShadowsPicture(dir)) return 1;
+    if (!sweepPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(&lit);
