@@ -33,6 +33,22 @@
 //                Checked once, untimed: every case writes every pixel; volumes and naive agree within
 //                1/255 (max channel difference over covered pixels) at every light count; forward and
 //                deferred agree at 16 lights (one forward pass, so the same light sum).
+//   G-buffer     ms per frame at 1280x720 of the same floor through each BRDF's G-buffer (the codec's
+//   per BRDF     cost: packing in the geometry pass, unpacking in the light passes): the geometry pass
+//                alone (RblBeginGBuffer, the floor, RblEndGBuffer) and the whole frame at 16 of the
+//                lights (geometry, RblDrawDeferredLights, RblResolveGBuffer); each case right after a
+//                baseline frame, ratios to the run's median baseline, medians over runs.
+//   reference    (GPU, untimed) the deferred image against the double-precision reference
+//                (tests/lighting_reference.h) in the views of the GPU test
+//                test_deferred_every_brdf_matches_the_double_reference_on_8_bit_and_float_targets: a
+//                tilted plane and a sphere Model (its interpolated vertex normals), perspective and
+//                orthographic, a point light near the surface and a directional light, 96x96; resolved
+//                into RGBA8 and into RGBA16F / RGBA32F with the display encoding and with linear output.
+//                Per group (Lambert; Blinn-Phong n 2..1024 at intensities 0.03..1.5; GGX roughness
+//                0.02..1 metal and dielectric; GGX metalness between codes) the worst max and mean in
+//                1/255: 8-bit against the reference rounded, float against the reference itself,
+//                linear values above 1 relative to the value. A previous commit's binary prints the
+//                same rows for its codec (run both, alternating, for the before/after).
 //   encoding     (CPU, double; no GL) what the G-buffer's quantisation alone does to the image, 0.3's
 //                codec beside this one: the double-precision reference (tests/lighting_reference.h)
 //                shades every pixel of the GPU sweep test's two scenes (test_deferred.c: an axis-aligned
@@ -53,12 +69,15 @@
 //   deferred_vs_forward: crossover_lights (smallest tested n where volumes beat forward; 0 = none)
 //   check_volumes_vs_naive_<n>lights, check_forward_vs_deferred_16lights: max_diff (1/255), pixels
 //   normal_<old_12x12_rounded|30bit_nearest|29bit_nearest>: mean_deg, max_deg
+//   geometry_pass_<lambert|blinn_phong|ggx>, deferred_frame_<brdf>_16lights: ms_per_frame_1280x720, ratio_to_raylib
+//   reference_<lambert|blinn_phong|ggx|ggx_metal_between>_<rgba8|rgba16f|rgba32f|rgba16f_linear|rgba32f_linear>: max, mean (1/255)
 //   encoding_<brdf>_<parameters>_<plane|sphere>: old_max, old_mean, new_max, new_mean (1/255)
 //   flank_bound_ggx_r<roughness>: old, new (1/255, first-order worst case of the normal code)
 // Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "rlgl.h"
+#include "raymath.h"
 #include "harness.h"
 #include "bench.h"
 #include "lighting_reference.h"
@@ -324,6 +343,299 @@ static bool ScatterLights(Scene *s, int n)
         s->lights[i++] = l;
     }
     return true;
+}
+
+//----------------------------------------------------------------------------------
+// Geometry pass per BRDF (timed) and the G-buffer against the double reference (untimed)
+//----------------------------------------------------------------------------------
+// Each BRDF's G-buffer at the frame's size, its geometry variant and a material of middling values
+typedef struct BrdfPass { RblGBuffer g; Shader geo; Material mat; bool ok; } BrdfPass;
+static const char *brdfKey[3] = { "lambert", "blinn_phong", "ggx" };
+
+static void BrdfPassLoad(BrdfPass *p, int brdf, Texture2D albedo)
+{
+    RblGBufferDesc gd;
+    memset(&gd, 0, sizeof(gd));
+    gd.width = FRAME_W; gd.height = FRAME_H;
+    gd.brdf = brdf;                         // point lights (the default light features), no fog, sRGB
+    p->g = RblLoadGBuffer(gd);
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.brdf = brdf;
+    d.deferred = true;
+    p->geo = RblLoadLitShader(d);
+    p->mat = LoadMaterialDefault();
+    p->mat.shader = p->geo;
+    p->mat.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    p->mat.maps[MATERIAL_MAP_NORMAL].value = 32.0f;                               // Blinn-Phong shininess
+    p->mat.params[1] = 0.7f;                                                      // Blinn-Phong intensity
+    p->mat.maps[MATERIAL_MAP_ROUGHNESS].value = 0.4f;                             // GGX
+    p->ok = RblIsGBufferValid(&p->g) && RblIsLitShaderValid(p->geo);
+}
+
+static void BrdfPassUnload(BrdfPass *p)
+{
+    if (RblIsLitShaderValid(p->geo)) RblUnloadLitShader(&p->geo);
+    MemFree(p->mat.maps);
+    RblUnloadGBuffer(&p->g);
+}
+
+// The geometry pass alone (frame = false) or the whole frame at 16 lights: geometry, lights, resolve
+static bool DrawBrdf(Scene *s, BrdfPass *p, bool frame)
+{
+    bool ok = SetLights(s->lights, 16, s->ambient) && RblBeginGBuffer(&p->g, s->camera);
+    if (ok)
+    {
+        RblDrawBillboard(s->camera, p->mat, s->floor);
+        RblEndGBuffer(&p->g);
+    }
+    if (!frame) return ok;
+    ok = ok && RblDrawDeferredLights(&p->g);
+    BeginTextureMode(s->target);
+    ClearBackground(BLANK);
+    if (ok) RblResolveGBuffer(&p->g);
+    EndTextureMode();
+    return ok;
+}
+
+typedef struct BrdfRun { Scene *s; BrdfPass *p; } BrdfRun;
+#define BRDF_CASES 6                        // geometry pass x 3 BRDFs, frame x 3 BRDFs
+#define BRDF_VALUES (2*BRDF_CASES + 1)      // ms, ratios, baseline
+
+// One run: every case once, each right after a baseline frame; ratios to the run's median baseline
+static void BrdfRoundRun(void *ctx, double *out)
+{
+    BrdfRun *r = (BrdfRun *)ctx;
+    double base[BRDF_CASES];
+    for (int i = 0; i < BRDF_CASES; i++)
+    {
+        rtFinish();
+        double t0 = BenchNowNs();
+        DrawBaseline(r->s);
+        rtFinish();
+        base[i] = (BenchNowNs() - t0)*1e-6;
+        out[i] = 0.0;
+        if (!r->p[i%3].ok) continue;
+        t0 = BenchNowNs();
+        DrawBrdf(r->s, &r->p[i%3], i >= 3);
+        rtFinish();
+        out[i] = (BenchNowNs() - t0)*1e-6;
+    }
+    double roundBase = BenchMedian(base, BRDF_CASES);
+    for (int i = 0; i < BRDF_CASES; i++) out[BRDF_CASES + i] = (roundBase > 0.0)? out[i]/roundBase : 0.0;
+    out[2*BRDF_CASES] = roundBase;
+}
+
+// ---- against the double reference (tests/lighting_reference.h), the GPU test's views ----------------
+// A tilted plane (normal no code) and a sphere Model (interpolated vertex normals), perspective and
+// orthographic, a point light near the surface and a directional light; resolved into RGBA8 (display),
+// RGBA16F and RGBA32F (display encoding, unrounded) and RGBA16F / RGBA32F linear output. Errors in
+// 1/255: 8-bit against the reference rounded, float against the reference, linear values above 1 relative.
+#define REF_SIZE    96
+#define REF_TARGETS 5
+static const char *refTargetKey[REF_TARGETS] = { "rgba8", "rgba16f", "rgba32f", "rgba16f_linear", "rgba32f_linear" };
+static const int refFormat[REF_TARGETS] = { PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32,
+                                            PIXELFORMAT_UNCOMPRESSED_R16G16B16A16, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32 };
+
+typedef struct RefView { Camera3D camera; RblLight lights[2]; bool sphere; RblBillboard plane; bool hit[REF_SIZE*REF_SIZE]; D3 p[REF_SIZE*REF_SIZE], n[REF_SIZE*REF_SIZE]; } RefView;
+
+static void RefViewLoad(RefView *v, bool sphere, bool ortho, const RefMesh *mesh)
+{
+    memset(v, 0, sizeof(*v));
+    v->sphere = sphere;
+    RblLight point, sun;
+    memset(&point, 0, sizeof(point)); memset(&sun, 0, sizeof(sun));
+    point.type = RBL_LIGHT_POINT; point.color = (Color){ 255, 240, 220, 255 };
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.color = WHITE; sun.intensity = 0.6f;
+    if (sphere)
+    {
+        v->camera = makeCamera((Vector3){ 0.3f, 0.5f, 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        point.position = (Vector3){ 1.1f, 0.9f, 1.6f }; point.intensity = 3.0f; point.range = 5.0f;
+        sun.direction = (Vector3){ 0.5f, -0.3f, -1.0f };
+    }
+    else
+    {
+        v->camera = makeCamera((Vector3){ 0.0f, -2.5f, 2.0f }, (Vector3){ 0.0f, 0.5f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        point.position = (Vector3){ 0.3f, 0.5f, 0.35f }; point.intensity = 0.4f; point.range = 3.0f;
+        sun.direction = (Vector3){ 0.5f, -3.7f, -2.0f };
+        v->plane.size = (Vector2){ 40.0f, 40.0f }; v->plane.origin = (Vector2){ 20.0f, 20.0f };
+        v->plane.facing = RBL_FACING_FIXED;
+        v->plane.axis = Vector3Normalize((Vector3){ 0.21f, -0.13f, 1.0f });
+        v->plane.up = Vector3Normalize(Vector3CrossProduct(v->plane.axis, (Vector3){ 1.0f, 0.0f, 0.0f }));
+    }
+    v->lights[0] = point; v->lights[1] = sun;
+    if (ortho) { v->camera.projection = CAMERA_ORTHOGRAPHIC; v->camera.fovy = sphere? 2.9f : 3.6f; }
+    static bool sees[REF_SIZE*REF_SIZE];
+    D3 corners[4], normal = d3(0, 0, 1);
+    if (!sphere) refQuad(v->camera, &v->plane, corners, &normal);
+    for (int py = 0; py < REF_SIZE; py++)
+        for (int px = 0; px < REF_SIZE; px++)
+        {
+            int i = py*REF_SIZE + px;
+            D3 o, d;
+            refPixelRay(v->camera, REF_SIZE, REF_SIZE, px, py, &o, &d);
+            if (sphere) sees[i] = refMeshRay(mesh, o, d, &v->p[i], &v->n[i]);
+            else { sees[i] = refPixelOnPlane(v->camera, REF_SIZE, REF_SIZE, px, py, corners[0], normal, &v->p[i]); v->n[i] = normal; }
+        }
+    for (int py = 1; py < REF_SIZE - 1; py++)
+        for (int px = 1; px < REF_SIZE - 1; px++)
+        {
+            int i = py*REF_SIZE + px;
+            v->hit[i] = sees[i] && sees[i - 1] && sees[i + 1] && sees[i - REF_SIZE] && sees[i + REF_SIZE];
+        }
+}
+
+typedef struct RefCase { int brdf; float roughness, metalness, shininess, specular; } RefCase;
+typedef struct RefErr { double max, mean; } RefErr;
+
+// A colour target of a raylib format with a depth renderbuffer (the resolve writes depth)
+static RenderTexture2D RefTarget(int format)
+{
+    RenderTexture2D rt;
+    memset(&rt, 0, sizeof(rt));
+    rt.id = rlLoadFramebuffer();
+    rt.texture.id = rlLoadTexture(NULL, REF_SIZE, REF_SIZE, format, 1);
+    rt.texture.width = REF_SIZE; rt.texture.height = REF_SIZE; rt.texture.mipmaps = 1; rt.texture.format = format;
+    rt.depth.id = rlLoadTextureDepth(REF_SIZE, REF_SIZE, true);
+    rlFramebufferAttach(rt.id, rt.texture.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    rlFramebufferAttach(rt.id, rt.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_RENDERBUFFER, 0);
+    return rt;
+}
+
+// One case in one view, each target against the reference (e per target); false when refused
+static bool RefRender(const RefView *v, RefCase c, Model *sphere, Texture2D albedo, RblGBuffer g[2], RefErr e[REF_TARGETS])
+{
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.brdf = c.brdf; d.maxLights = 2; d.lightFeatures = RblLightFeatures(v->lights, 2); d.deferred = true;
+    Shader geo = RblLoadLitShader(d);
+    Material m = LoadMaterialDefault();
+    m.shader = geo;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m.maps[MATERIAL_MAP_NORMAL].value = c.shininess;
+    m.maps[MATERIAL_MAP_ROUGHNESS].value = c.roughness;
+    m.maps[MATERIAL_MAP_METALNESS].value = c.metalness;
+    m.params[1] = c.specular;
+    const Color ambient = { 20, 22, 28, 255 };
+    bool ok = RblIsLitShaderValid(geo) && SetLights(v->lights, 2, ambient);
+    for (int k = 0; k < 2; k++)
+    {
+        ok = ok && RblBeginGBuffer(&g[k], v->camera);
+        if (!ok) break;
+        if (v->sphere)
+        {
+            Material keep = sphere->materials[0];
+            sphere->materials[0] = m;
+            RblDrawModel(*sphere, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+            sphere->materials[0] = keep;
+        }
+        else RblDrawBillboard(v->camera, m, v->plane);
+        RblEndGBuffer(&g[k]);
+        ok = RblDrawDeferredLights(&g[k]);
+    }
+    RefParams rp;
+    memset(&rp, 0, sizeof(rp));
+    rp.brdf = c.brdf; rp.roughness = c.roughness; rp.metalness = c.metalness; rp.shininess = c.shininess; rp.specular = c.specular;
+    RefEnvironment env;
+    memset(&env, 0, sizeof(env));
+    env.ambient = ambient;
+    const Color albedoColor = { 200, 160, 120, 255 };
+    for (int t = 0; ok && (t < REF_TARGETS); t++)
+    {
+        bool linear = (t >= 3);
+        RenderTexture2D rt = RefTarget(refFormat[t]);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g[linear? 1 : 0]); EndTextureMode();
+        float *px = rtReadFloatPixels(rt.texture.id, REF_SIZE, REF_SIZE);          // GL rows: bottom first
+        rlUnloadTexture(rt.texture.id);
+        rlUnloadFramebuffer(rt.id);
+        if (px == NULL) { ok = false; break; }
+        rp.linearOutput = linear;
+        double sum = 0.0;
+        int pixels = 0;
+        e[t].max = 0.0;
+        for (int py = 0; py < REF_SIZE; py++)
+            for (int x = 0; x < REF_SIZE; x++)
+            {
+                int i = py*REF_SIZE + x;
+                const float *q = &px[((REF_SIZE - 1 - py)*REF_SIZE + x)*4];
+                if (!v->hit[i] || (q[3] <= 0.0f)) continue;
+                RefSurface s;
+                memset(&s, 0, sizeof(s));
+                s.position = v->p[i]; s.normal = v->n[i]; s.albedo = refLinear(albedoColor); s.specularMap = -1.0; s.occlusion = 1.0;
+                RefRgb ref = refFinishAt(&rp, refShadeView(&rp, v->lights, 2, &env, &s, refViewVector(v->camera, s.position)), refViewDistance(v->camera, s.position));
+                const double want[3] = { ref.r, ref.g, ref.b };
+                for (int ch = 0; ch < 3; ch++)
+                {
+                    double err = (t == 0)? fabs(floor(q[ch]*255.0 + 0.5) - floor(want[ch]*255.0 + 0.5)) : fabs(q[ch] - want[ch])*255.0/fmax(1.0, want[ch]);
+                    e[t].max = fmax(e[t].max, err);
+                    sum += err;
+                }
+                pixels++;
+            }
+        e[t].mean = (pixels > 0)? sum/(3.0*pixels) : 0.0;
+        free(px);
+    }
+    MemFree(m.maps);
+    if (RblIsLitShaderValid(geo)) RblUnloadLitShader(&geo);
+    return ok;
+}
+
+// Worst max and mean per BRDF group (Lambert, Blinn-Phong, GGX metal/dielectric, GGX metalness between
+// codes) and target over its cases and the 4 views; rows reference_<group>_<target>
+#define REF_GROUPS 4
+static const char *refGroupKey[REF_GROUPS] = { "lambert", "blinn_phong", "ggx", "ggx_metal_between" };
+
+static bool ReferenceErrors(RefErr worst[REF_GROUPS][REF_TARGETS])
+{
+    static const RefCase cases[] = {
+        { RBL_BRDF_LAMBERT, 0, 0, 0, 0 },
+        { RBL_BRDF_BLINN_PHONG, 0, 0, 2.0f, 0.7f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 32.0f, 0.7f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 64.0f, 1.5f },
+        { RBL_BRDF_BLINN_PHONG, 0, 0, 300.0f, 0.7f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 1.2f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 0.03f },
+        { RBL_BRDF_GGX, 0.02f, 0, 0, 0 }, { RBL_BRDF_GGX, 0.1f, 0, 0, 0 }, { RBL_BRDF_GGX, 0.3f, 0, 0, 0 }, { RBL_BRDF_GGX, 1.0f, 0, 0, 0 },
+        { RBL_BRDF_GGX, 0.02f, 1, 0, 0 }, { RBL_BRDF_GGX, 0.05f, 1, 0, 0 }, { RBL_BRDF_GGX, 0.3f, 1, 0, 0 }, { RBL_BRDF_GGX, 1.0f, 1, 0, 0 },
+        { RBL_BRDF_GGX, 0.1f, 0.5f, 0, 0 }, { RBL_BRDF_GGX, 0.4f, 0.3f, 0, 0 },
+    };
+    memset(worst, 0, sizeof(RefErr)*REF_GROUPS*REF_TARGETS);
+    Model sphere = LoadModelFromMesh(GenMeshSphere(1.2f, 32, 32));
+    RefMesh mesh = refMeshOf(sphere.meshes[0], d3(0, 0, 0));
+    Image a = GenImageColor(1, 1, (Color){ 200, 160, 120, 255 });
+    Texture2D albedo = LoadTextureFromImage(a);
+    UnloadImage(a);
+    static RefView views[4];
+    for (int k = 0; k < 4; k++) RefViewLoad(&views[k], k >= 2, (k & 1) != 0, &mesh);
+    RblGBuffer g[3][2];
+    bool ok = true;
+    for (int b = 0; b < 3; b++)
+        for (int k = 0; k < 2; k++)
+        {
+            RblGBufferDesc gd;
+            memset(&gd, 0, sizeof(gd));
+            gd.width = REF_SIZE; gd.height = REF_SIZE; gd.brdf = b;
+            gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+            gd.linearOutput = (k == 1);
+            g[b][k] = RblLoadGBuffer(gd);
+            ok = ok && RblIsGBufferValid(&g[b][k]);
+        }
+    for (int i = 0; ok && (i < (int)(sizeof(cases)/sizeof(cases[0]))); i++)
+    {
+        RefCase c = cases[i];
+        int group = (c.brdf == RBL_BRDF_GGX)? (((c.metalness > 0.0f) && (c.metalness < 1.0f))? 3 : 2) : c.brdf;
+        for (int k = 0; ok && (k < 4); k++)
+        {
+            RefErr e[REF_TARGETS];
+            ok = RefRender(&views[k], c, &sphere, albedo, g[c.brdf], e);
+            for (int t = 0; ok && (t < REF_TARGETS); t++)
+            {
+                worst[group][t].max = fmax(worst[group][t].max, e[t].max);
+                worst[group][t].mean = fmax(worst[group][t].mean, e[t].mean);
+            }
+        }
+    }
+    for (int b = 0; b < 3; b++) { RblUnloadGBuffer(&g[b][0]); RblUnloadGBuffer(&g[b][1]); }
+    refMeshFree(&mesh);
+    UnloadTexture(albedo);
+    UnloadModel(sphere);
+    return ok;
 }
 
 //----------------------------------------------------------------------------------
@@ -713,7 +1025,45 @@ int main(void)
         if ((crossover == 0) && (vsForward[c] > 1.0)) crossover = counts[c];
     }
 
+    // ---- geometry pass and frame per BRDF (the G-buffer codec's cost), then the reference errors -----
+    static BrdfPass brdfPass[3];
+    BrdfRun brdfRun = { s, brdfPass };
+    double brdfMed[BRDF_VALUES];
+    int brdfRuns = 0;
+    for (int b = 0; b < 3; b++)
+    {
+        BrdfPassLoad(&brdfPass[b], b, s->albedo);
+        brdfPass[b].ok = brdfPass[b].ok && DrawBrdf(s, &brdfPass[b], true);      // also the warm-up
+        if (!brdfPass[b].ok) { printf("bench_deferred: %s G-buffer pass refused\n", brdfKey[b]); problems++; }
+    }
+    const BenchTiming brdfTiming = { 1, 5, 15, 6e9 };
+    brdfRuns = BenchMedianOfRuns(BrdfRoundRun, &brdfRun, BRDF_VALUES, brdfTiming, brdfMed);
+    for (int b = 0; b < 3; b++) BrdfPassUnload(&brdfPass[b]);
+
+    // Its 6 G-buffers' passes need the program registry's room: the frame-cost scene's programs first go
+    for (int c = 0; c < COUNTS; c++) if (RblIsLitShaderValid(s->fwd[c])) RblUnloadLitShader(&s->fwd[c]);
+    if (RblIsLitShaderValid(s->geo)) RblUnloadLitShader(&s->geo);
+    RblUnloadGBuffer(&s->g);
+    RefErr refWorst[REF_GROUPS][REF_TARGETS];
+    bool refOk = ReferenceErrors(refWorst);
+    if (!refOk) { printf("bench_deferred: the reference views were refused\n"); problems++; }
+
     // ---- rows ----------------------------------------------------------------------------------------
+    for (int i = 0; i < BRDF_CASES; i++)
+    {
+        char name[64];
+        snprintf(name, sizeof(name), (i < 3)? "geometry_pass_%s" : "deferred_frame_%s_16lights", brdfKey[i%3]);
+        BenchCsvRow(SUITE, name, "ms_per_frame_1280x720", brdfMed[i], "ms");
+        BenchCsvRow(SUITE, name, "ratio_to_raylib", brdfMed[BRDF_CASES + i], "x");
+    }
+    for (int grp = 0; refOk && (grp < REF_GROUPS); grp++)
+        for (int t = 0; t < REF_TARGETS; t++)
+        {
+            char name[64];
+            snprintf(name, sizeof(name), "reference_%s_%s", refGroupKey[grp], refTargetKey[t]);
+            BenchCsvRow(SUITE, name, "max", refWorst[grp][t].max, "1/255");
+            BenchCsvRow(SUITE, name, "mean", refWorst[grp][t].mean, "1/255");
+        }
     BenchCsvRow(SUITE, "gbuffer", "bytes_per_pixel", bpp, "B");
     BenchCsvRow(SUITE, "gbuffer", "gl_bytes_per_pixel", glColour, "B");
     BenchCsvRow(SUITE, "gbuffer_albedo", "bytes_per_pixel", albedoB, "B");
@@ -759,15 +1109,9 @@ int main(void)
     }
 
     // ---- release -------------------------------------------------------------------------------------
-    for (int c = 0; c < COUNTS; c++)
-    {
-        if (RblIsLitShaderValid(s->fwd[c])) RblUnloadLitShader(&s->fwd[c]);
-        MemFree(s->fwdMat[c].maps);
-    }
-    if (RblIsLitShaderValid(s->geo)) RblUnloadLitShader(&s->geo);
+    for (int c = 0; c < COUNTS; c++) MemFree(s->fwdMat[c].maps);
     MemFree(s->geoMat.maps);
     MemFree(s->rayMat.maps);
-    RblUnloadGBuffer(&s->g);
     UnloadMesh(s->plane);
     UnloadTexture(s->albedo);
     UnloadRenderTexture(s->target);
@@ -820,6 +1164,23 @@ int main(void)
         for (int c = 0; c < COUNTS; c++) agreeOk = agreeOk && (agree[c].worst <= 1) && (agree[c].coverage == 0);
         printf(" over %d covered pixels (limit 1/255: %s)\n", agree[last].pixels, agreeOk? "ok" : "EXCEEDED");
         if (fwdVsDef.worst >= 0) printf("  check: forward vs deferred at 16 lights (one forward pass) max %d/255 over %d pixels\n", fwdVsDef.worst, fwdVsDef.pixels);
+    }
+    printf("\ndeferred: G-buffer pass per BRDF, ms per frame %dx%d (the floor; median of %d runs, each case right after a baseline frame)\n", FRAME_W, FRAME_H, brdfRuns);
+    printf("  %-12s %16s %16s\n", "", "geometry pass", "frame, 16 lights");
+    for (int b = 0; b < 3; b++)
+        printf("  %-12s %9.2f %5.2fx %9.2f %5.2fx\n", brdfKey[b], brdfMed[b], brdfMed[BRDF_CASES + b], brdfMed[3 + b], brdfMed[BRDF_CASES + 3 + b]);
+    if (refOk)
+    {
+        printf("\ndeferred: against the double reference (GPU; tilted plane and sphere Model, perspective and orthographic),\n");
+        printf("  worst max / mean in 1/255 per group (linear: relative above 1)\n  %-20s", "");
+        for (int t = 0; t < REF_TARGETS; t++) printf(" %15s", refTargetKey[t]);
+        printf("\n");
+        for (int grp = 0; grp < REF_GROUPS; grp++)
+        {
+            printf("  %-20s", refGroupKey[grp]);
+            for (int t = 0; t < REF_TARGETS; t++) printf("    %5.2f %5.3f", refWorst[grp][t].max, refWorst[grp][t].mean);
+            printf("\n");
+        }
     }
     EncodingRows();
     printf("bench_deferred: done in %.1f s, rows in %s%s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath(), problems? " (with problems, see above)" : "");
