@@ -1332,6 +1332,7 @@ typedef struct rbl__State {
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
+    bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
@@ -6749,6 +6750,26 @@ static Texture2D rbl__targetTexture(int width, int height, int format)
 }
 
 // Targets and framebuffers at the G-buffer's size; false (and nothing left loaded) on any failure
+// The G-buffer's depth as a 32-bit float texture: rlLoadTextureDepth leaves the format to the driver
+// (24-bit, or 32-bit normalised that a sampler may read at 23 bits), and under an orthographic camera
+// the window depth is linear over raylib's whole clip range, so each step of it is (far - near)/2^24
+// (2.4e-4 world units with raylib's 4000) along the view axis wherever the surface is; the position a
+// light pass rebuilds moves a sharp highlight near a light. Float depth keeps what the rasterizer
+// computed. The texture's storage is specified again through rlGetProcAddress (rlgl has no call for
+// it); without the entry point, or where the format is refused (GL leaves the texture as it was), the
+// depth stays as rlgl made it.
+static void rbl__floatDepth(unsigned int id, int width, int height)
+{
+    typedef void (*rbl__TexImage2D)(unsigned int, int, int, int, int, int, unsigned int, unsigned int, const void *);
+    void *entry = rlGetProcAddress("glTexImage2D");
+    if (entry == NULL) return;
+    rbl__TexImage2D texImage2D;
+    memcpy(&texImage2D, &entry, sizeof(entry));         // ISO C has no object-to-function pointer cast
+    rlEnableTexture(id);
+    texImage2D(0x0DE1 /* GL_TEXTURE_2D */, 0, 0x8CAC /* GL_DEPTH_COMPONENT32F */, width, height, 0, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, NULL);
+    rlDisableTexture();
+}
+
 static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 {
     g->albedo = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
@@ -6758,6 +6779,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
+    if ((g->depth.id != 0) && !rbl__state.gbufferDriverDepth) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
     bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__state.gbufferForceFailure;
     if (ok)

@@ -70,6 +70,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST_GLSL3(test_deferred_normal_encoding_error_table_against_published_figures),
         RT_TEST_GLSL3(test_deferred_position_from_depth_error_at_near_middle_far),
         RT_TEST_GLSL3(test_deferred_distance_view_matches_the_true_plane_within_24_bit_depth_steps),
+        RT_TEST_GLSL3(test_deferred_orthographic_float_depth_rebuilds_the_view_distance_within_1_5_steps),
         RT_TEST_GLSL3(test_raster_interpolated_position_and_window_depth_match_the_true_plane),
         RT_TEST_GLSL3(test_deferred_forced_failure_logs_and_the_forward_fallback_renders),
         RT_TEST_GLSL3(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth),
