@@ -67,6 +67,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST_GLSL3(test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved),
         RT_TEST_GLSL3(test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255),
         RT_TEST_GLSL3(test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255),
+        RT_TEST_GLSL3(test_deferred_every_brdf_matches_the_double_reference_on_8_bit_and_float_targets),
         RT_TEST_GLSL3(test_deferred_normal_encoding_error_table_against_published_figures),
         RT_TEST_GLSL3(test_deferred_position_from_depth_error_at_near_middle_far),
         RT_TEST_GLSL3(test_deferred_distance_view_matches_the_true_plane_within_24_bit_depth_steps),

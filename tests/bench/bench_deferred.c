@@ -50,14 +50,18 @@
 //                linear values above 1 relative to the value. A previous commit's binary prints the
 //                same rows for its codec (run both, alternating, for the before/after).
 //   encoding     (CPU, double; no GL) what the G-buffer's quantisation alone does to the image, 0.3's
-//                codec beside this one: the double-precision reference (tests/lighting_reference.h)
-//                shades every pixel of the GPU sweep test's two scenes (test_deferred.c: an axis-aligned
-//                plane seen obliquely, a sphere of radius 1.2 filling a 128x128 frame; a point and a
-//                directional light, sRGB, no tonemap) once with the exact surface and once with the
-//                surface each codec stores (normal, roughness, metalness, shininess, intensity decoded
-//                as the shaders do); max and mean channel difference in 1/255 before 8-bit rounding.
+//                codec, the previous one (Blinn-Phong: normal 36 bits, shininess 11, intensity 9) and
+//                this one (Blinn-Phong: normal 32, shininess 12, intensity 12): the double-precision
+//                reference (tests/lighting_reference.h) shades every pixel of the GPU sweep test's two
+//                scenes (test_deferred.c: an axis-aligned plane seen obliquely, a sphere of radius 1.2
+//                filling a 128x128 frame; a point and a directional light, sRGB, no tonemap) once with
+//                the exact surface and once with the surface each codec stores (normal, roughness,
+//                metalness, shininess, intensity decoded as the shaders do); max and mean channel
+//                difference in 1/255 before 8-bit rounding, and per group the worst of the previous
+//                codec and this one also rounded to 8 bits and as linear output (relative above 1).
 //                Normal codes over 400000 uniform sphere normals (degrees), and the first-order worst
-//                case of a GGX highlight's flank: 255 sRGB'(1) (2/alpha) x the code's worst normal error.
+//                case of a highlight's flank: 255 sRGB'(1) (2/alpha) x the code's worst normal error
+//                (Blinn-Phong as the GGX alpha of its lobe, n = 2/alpha^2 - 2).
 // Rows (suite "deferred"):
 //   gbuffer: bytes_per_pixel (RblGBufferBytesPerPixel), gl_bytes_per_pixel (GL-reported bits / 8)
 //   gbuffer_albedo|gbuffer_normal|gbuffer_params|gbuffer_depth|gbuffer_accum: bytes_per_pixel
@@ -68,11 +72,13 @@
 //   deferred_volumes_<n>lights: speedup_vs_naive (median of per-run naive/volumes), speedup_vs_forward
 //   deferred_vs_forward: crossover_lights (smallest tested n where volumes beat forward; 0 = none)
 //   check_volumes_vs_naive_<n>lights, check_forward_vs_deferred_16lights: max_diff (1/255), pixels
-//   normal_<old_12x12_rounded|30bit_nearest|29bit_nearest>: mean_deg, max_deg
+//   normal_<old_12x12_rounded|30bit_nearest|32bit_nearest|36bit_nearest>: mean_deg, max_deg
 //   geometry_pass_<lambert|blinn_phong|ggx>, deferred_frame_<brdf>_16lights: ms_per_frame_1280x720, ratio_to_raylib
 //   reference_<lambert|blinn_phong|ggx|ggx_metal_between>_<rgba8|rgba16f|rgba32f|rgba16f_linear|rgba32f_linear>: max, mean (1/255)
-//   encoding_<brdf>_<parameters>_<plane|sphere>: old_max, old_mean, new_max, new_mean (1/255)
-//   flank_bound_ggx_r<roughness>: old, new (1/255, first-order worst case of the normal code)
+//   encoding_<brdf>_<parameters>_<plane|sphere>: old_max, old_mean, prev_max, prev_mean, new_max, new_mean (1/255)
+//   encoding_<lambert|blinn_phong|ggx|ggx_metal_between>_<float|8bit|linear>: prev_max, prev_mean, new_max, new_mean (1/255)
+//   flank_bound_ggx_r<roughness>: old, 30bit, 32bit, new; flank_bound_blinn_phong_n<n>: prev, new (1/255,
+//                first-order worst case of the normal code)
 // Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
@@ -639,9 +645,11 @@ static bool ReferenceErrors(RefErr worst[REF_GROUPS][REF_TARGETS])
 }
 
 //----------------------------------------------------------------------------------
-// Encoding error (CPU, double): 0.3's G-buffer codec and this one, mirrored from their layouts
+// Encoding error (CPU, double): 0.3's G-buffer codec, the previous one and this one, mirrored from
+// their layouts (previous: every BRDF's normal 18 + 18 bits, Blinn-Phong shininess 11 and intensity
+// 9; this one: Blinn-Phong normal 16 + 16, shininess 12, intensity 12)
 //----------------------------------------------------------------------------------
-typedef enum { CODEC_OLD = 0, CODEC_NEW } Codec;
+typedef enum { CODEC_OLD = 0, CODEC_PREV, CODEC_NEW } Codec;
 
 // Octahedral code q in 0..levels-1 stands for e = q/(levels - 1)*2 - 1 (Cigolle et al. 2014)
 static D3 OctDecode(int qx, int qy, int levels)
@@ -690,8 +698,10 @@ static RefParams StoredParams(RefParams p, Codec c)
         double lo = log2(0.045);
         q.roughness = (float)exp2(lo*(1.0 - Quantize(1.0 - log2(fmin(fmax(p.roughness, 0.045), 1.0))/lo, 12)));
         q.metalness = (float)Quantize(p.metalness, 8);
-        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, 11)*11.0);
-        q.specular = (float)((exp2(Quantize(log2(1.0 + 256.0*p.specular)/9.0, 9)*9.0) - 1.0)/256.0);
+        int bits = (c == CODEC_PREV)? 11 : 12;
+        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, bits)*11.0);
+        bits = (c == CODEC_PREV)? 9 : 12;
+        q.specular = (float)((exp2(Quantize(log2(1.0 + 256.0*p.specular)/9.0, bits)*9.0) - 1.0)/256.0);
     }
     return q;
 }
@@ -699,14 +709,18 @@ static RefParams StoredParams(RefParams p, Codec c)
 static D3 StoredNormal(D3 n, int brdf, Codec c)
 {
     if (c == CODEC_OLD) return OctRoundTrip(n, 4096, false);
-    (void)brdf;                                 // every BRDF: 2^18 - 1 levels per coordinate
-    return OctRoundTrip(n, 262143, true);
+    if ((c == CODEC_NEW) && (brdf == RBL_BRDF_BLINN_PHONG)) return OctRoundTrip(n, 65535, true);     // 2^16 - 1 levels
+    return OctRoundTrip(n, 262143, true);       // 2^18 - 1 levels per coordinate
 }
 
+// Per target: the display encoding unrounded (a float target), rounded to 8 bits on both sides, and
+// linear output (values above 1 relative)
+enum { ENC_FLOAT = 0, ENC_8BIT, ENC_LINEAR, ENC_TARGETS };
+static const char *encTargetKey[ENC_TARGETS] = { "float", "8bit", "linear" };
 typedef struct EncError { double max, mean; } EncError;
 
 // The GPU sweep test's scenes (tests/test_deferred.c, defSweepScene), shaded in double at each pixel centre
-static EncError EncodingError(RefParams p, bool sphere, Codec c)
+static void EncodingError(RefParams p, bool sphere, Codec c, EncError out[ENC_TARGETS])
 {
     const int size = 128;
     Camera3D cam;
@@ -734,8 +748,10 @@ static EncError EncodingError(RefParams p, bool sphere, Codec c)
     RefParams q = StoredParams(p, c);
     D3 eye = d3f(cam.position), f = dNorm(dSub(d3f(cam.target), eye));
     D3 right = dNorm(dCross(f, d3f(cam.up))), up = dCross(right, f);
-    double t = tan(cam.fovy*PI/360.0), sum = 0.0;
-    EncError e = { 0.0, 0.0 };
+    double t = tan(cam.fovy*PI/360.0), sum[ENC_TARGETS] = { 0.0, 0.0, 0.0 };
+    for (int k = 0; k < ENC_TARGETS; k++) out[k].max = out[k].mean = 0.0;
+    RefParams pl = p, ql = q;
+    pl.linearOutput = true; ql.linearOutput = true;
     int pixels = 0;
     for (int py = 0; py < size; py++)
         for (int px = 0; px < size; px++)
@@ -761,14 +777,19 @@ static EncError EncodingError(RefParams p, bool sphere, Codec c)
             s.occlusion = 1.0;
             RefSurface stored = s;
             stored.normal = StoredNormal(s.normal, p.brdf, c);
-            RefRgb a = refFinish(&p, refShade(&p, lights, 2, &env, &s, eye), s.position, eye);
-            RefRgb b = refFinish(&q, refShade(&q, lights, 2, &env, &stored, eye), s.position, eye);
-            double d[3] = { fabs(a.r - b.r)*255.0, fabs(a.g - b.g)*255.0, fabs(a.b - b.b)*255.0 };
-            for (int k = 0; k < 3; k++) { e.max = fmax(e.max, d[k]); sum += d[k]; }
+            RefRgb ea = refShade(&p, lights, 2, &env, &s, eye), eb = refShade(&q, lights, 2, &env, &stored, eye);
+            RefRgb a = refFinish(&p, ea, s.position, eye), b = refFinish(&q, eb, s.position, eye);
+            RefRgb la = refFinish(&pl, ea, s.position, eye), lb = refFinish(&ql, eb, s.position, eye);
+            const double av[3] = { a.r, a.g, a.b }, bv[3] = { b.r, b.g, b.b }, lav[3] = { la.r, la.g, la.b }, lbv[3] = { lb.r, lb.g, lb.b };
+            for (int k = 0; k < 3; k++)
+            {
+                double d[ENC_TARGETS] = { fabs(av[k] - bv[k])*255.0, fabs(floor(av[k]*255.0 + 0.5) - floor(bv[k]*255.0 + 0.5)),
+                                          fabs(lav[k] - lbv[k])*255.0/fmax(1.0, lav[k]) };
+                for (int e = 0; e < ENC_TARGETS; e++) { out[e].max = fmax(out[e].max, d[e]); sum[e] += d[e]; }
+            }
             pixels++;
         }
-    e.mean = (pixels > 0)? sum/(3.0*pixels) : 0.0;
-    return e;
+    for (int e = 0; e < ENC_TARGETS; e++) out[e].mean = (pixels > 0)? sum[e]/(3.0*pixels) : 0.0;
 }
 
 // Worst and mean angle (degrees) of a normal code over a uniform sphere sample
@@ -789,12 +810,12 @@ static void NormalCodeError(int levels, bool nearest, double *mean, double *wors
 
 static void EncodingRows(void)
 {
-    const char *normalName[3] = { "old_12x12_rounded", "30bit_nearest", "36bit_nearest" };   // 0.3, the 48-bit word's, now
-    const int normalLevels[3] = { 4096, 32767, 262143 };
-    double nMean[3], nMax[3];
-    printf("\ndeferred: G-buffer encoding error (CPU, double reference; no GL), 0.3's codec -> this one\n");
+    const char *normalName[4] = { "old_12x12_rounded", "30bit_nearest", "32bit_nearest", "36bit_nearest" };   // 0.3, a 30-bit word's, Blinn-Phong's, GGX's
+    const int normalLevels[4] = { 4096, 32767, 65535, 262143 };
+    double nMean[4], nMax[4];
+    printf("\ndeferred: G-buffer encoding error (CPU, double reference; no GL), 0.3's codec, the previous one, this one\n");
     printf("  normal codes over 400000 uniform sphere normals (degrees):\n");
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 4; k++)
     {
         NormalCodeError(normalLevels[k], k > 0, &nMean[k], &nMax[k]);
         char name[64];
@@ -803,29 +824,40 @@ static void EncodingRows(void)
         BenchCsvRow(SUITE, name, "max_deg", nMax[k], "deg");
         printf("    %-22s %6d levels per coordinate: mean %.6f  max %.6f\n", normalName[k], normalLevels[k], nMean[k], nMax[k]);
     }
-    printf("  image error from the stored surface alone, 1/255 before 8-bit rounding (the GPU sweep test's scenes):\n");
-    printf("    %-40s %21s %21s\n", "", "plane old -> new", "sphere old -> new");
+    printf("  image error from the stored surface alone, 1/255 before 8-bit rounding (the GPU sweep test's scenes), max/mean:\n");
+    printf("    %-40s %30s %30s\n", "", "plane old / prev / new", "sphere old / prev / new");
     typedef struct { int brdf; float roughness, metalness, shininess, specular; } Case;
-    Case cases[20];
+    Case cases[32];
     int n = 0;
     cases[n++] = (Case){ RBL_BRDF_LAMBERT, 0, 0, 0, 0 };
     const float shininess[6] = { 4.0f, 16.0f, 64.0f, 256.0f, 600.0f, 1024.0f };
     for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, shininess[i], 0.5f };
     cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 0.03f };
+    // Values between two codes of the previous codec (the GPU reference test's)
+    const float between[6][2] = { { 2.0f, 0.7f }, { 32.0f, 0.7f }, { 64.0f, 0.8f }, { 64.0f, 1.5f }, { 300.0f, 0.7f }, { 1024.0f, 1.2f } };
+    for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, between[i][0], between[i][1] };
     const float roughness[6] = { 0.02f, 0.05f, 0.1f, 0.3f, 0.6f, 1.0f };
     for (int metal = 0; metal < 2; metal++)
         for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_GGX, roughness[i], (float)metal, 0, 0 };
+    cases[n++] = (Case){ RBL_BRDF_GGX, 0.1f, 0.5f, 0, 0 };
+    cases[n++] = (Case){ RBL_BRDF_GGX, 0.4f, 0.3f, 0, 0 };
+    // Worst per group (Lambert, Blinn-Phong, GGX metal/dielectric, GGX metalness between) and target
+    const char *groupKey[4] = { "lambert", "blinn_phong", "ggx", "ggx_metal_between" };
+    EncError worst[4][2][ENC_TARGETS];          // [group][prev, new][target]
+    memset(worst, 0, sizeof(worst));
     for (int i = 0; i < n; i++)
     {
         RefParams p;
         memset(&p, 0, sizeof(p));
         p.brdf = cases[i].brdf; p.roughness = cases[i].roughness; p.metalness = cases[i].metalness;
         p.shininess = cases[i].shininess; p.specular = cases[i].specular;
+        int group = (p.brdf == RBL_BRDF_GGX)? (((p.metalness > 0.0f) && (p.metalness < 1.0f))? 3 : 2) : p.brdf;
         char label[64], key[64];
         if (p.brdf == RBL_BRDF_GGX)
         {
-            snprintf(label, sizeof(label), "GGX roughness %.2f %s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
-            snprintf(key, sizeof(key), "ggx_r%.2f_%s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
+            snprintf(label, sizeof(label), "GGX roughness %.2f metalness %.1f", p.roughness, p.metalness);
+            if ((p.metalness == 0.0f) || (p.metalness == 1.0f)) snprintf(key, sizeof(key), "ggx_r%.2f_%s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
+            else snprintf(key, sizeof(key), "ggx_r%.2f_m%.2f", p.roughness, p.metalness);
         }
         else if (p.brdf == RBL_BRDF_BLINN_PHONG)
         {
@@ -836,18 +868,44 @@ static void EncodingRows(void)
         printf("    %-40s", label);
         for (int surface = 0; surface < 2; surface++)
         {
-            EncError old = EncodingError(p, surface == 1, CODEC_OLD), now = EncodingError(p, surface == 1, CODEC_NEW);
+            EncError e[3][ENC_TARGETS];
+            for (int c = 0; c < 3; c++) EncodingError(p, surface == 1, (Codec)c, e[c]);
             char name[96];
             snprintf(name, sizeof(name), "encoding_%s_%s", key, surface? "sphere" : "plane");
-            BenchCsvRow(SUITE, name, "old_max", old.max, "1/255");
-            BenchCsvRow(SUITE, name, "old_mean", old.mean, "1/255");
-            BenchCsvRow(SUITE, name, "new_max", now.max, "1/255");
-            BenchCsvRow(SUITE, name, "new_mean", now.mean, "1/255");
-            printf("  %5.2f/%5.3f -> %4.2f/%5.3f", old.max, old.mean, now.max, now.mean);
+            BenchCsvRow(SUITE, name, "old_max", e[CODEC_OLD][ENC_FLOAT].max, "1/255");
+            BenchCsvRow(SUITE, name, "old_mean", e[CODEC_OLD][ENC_FLOAT].mean, "1/255");
+            BenchCsvRow(SUITE, name, "prev_max", e[CODEC_PREV][ENC_FLOAT].max, "1/255");
+            BenchCsvRow(SUITE, name, "prev_mean", e[CODEC_PREV][ENC_FLOAT].mean, "1/255");
+            BenchCsvRow(SUITE, name, "new_max", e[CODEC_NEW][ENC_FLOAT].max, "1/255");
+            BenchCsvRow(SUITE, name, "new_mean", e[CODEC_NEW][ENC_FLOAT].mean, "1/255");
+            printf("  %5.2f/%5.3f %4.2f/%5.3f %4.2f/%5.3f", e[CODEC_OLD][ENC_FLOAT].max, e[CODEC_OLD][ENC_FLOAT].mean, e[CODEC_PREV][ENC_FLOAT].max,
+                   e[CODEC_PREV][ENC_FLOAT].mean, e[CODEC_NEW][ENC_FLOAT].max, e[CODEC_NEW][ENC_FLOAT].mean);
+            for (int c = 0; c < 2; c++)
+                for (int t = 0; t < ENC_TARGETS; t++)
+                {
+                    worst[group][c][t].max = fmax(worst[group][c][t].max, e[CODEC_PREV + c][t].max);
+                    worst[group][c][t].mean = fmax(worst[group][c][t].mean, e[CODEC_PREV + c][t].mean);
+                }
         }
         printf("\n");
     }
-    printf("  (max/mean per surface)\n");
+    printf("  worst per group, previous codec -> this one, max/mean 1/255 (float: display encoding unrounded; 8bit: both\n");
+    printf("  rounded; linear: linear output, relative above 1):\n");
+    for (int g = 0; g < 4; g++)
+    {
+        printf("    %-20s", groupKey[g]);
+        for (int t = 0; t < ENC_TARGETS; t++)
+        {
+            char name[64];
+            snprintf(name, sizeof(name), "encoding_%s_%s", groupKey[g], encTargetKey[t]);
+            BenchCsvRow(SUITE, name, "prev_max", worst[g][0][t].max, "1/255");
+            BenchCsvRow(SUITE, name, "prev_mean", worst[g][0][t].mean, "1/255");
+            BenchCsvRow(SUITE, name, "new_max", worst[g][1][t].max, "1/255");
+            BenchCsvRow(SUITE, name, "new_mean", worst[g][1][t].mean, "1/255");
+            printf("  %s %4.2f/%5.3f -> %4.2f/%5.3f", encTargetKey[t], worst[g][0][t].max, worst[g][0][t].mean, worst[g][1][t].max, worst[g][1][t].mean);
+        }
+        printf("\n");
+    }
     printf("  first-order worst case on a highlight's flank, 255 sRGB'(1) (2/alpha) x worst normal error (GGX;\n");
     printf("  first order holds while that error is small beside alpha: 0.3's figures at 0.045-0.05 only say 'far off'):\n");
     const float flank[4] = { 0.045f, 0.05f, 0.1f, 0.3f };
@@ -858,8 +916,21 @@ static void EncodingRows(void)
         snprintf(name, sizeof(name), "flank_bound_ggx_r%.3f", flank[i]);
         BenchCsvRow(SUITE, name, "old", k*nMax[0], "1/255");
         BenchCsvRow(SUITE, name, "30bit", k*nMax[1], "1/255");
+        BenchCsvRow(SUITE, name, "32bit", k*nMax[2], "1/255");
+        BenchCsvRow(SUITE, name, "new", k*nMax[3], "1/255");
+        printf("    roughness %.3f: 0.3's codec %6.1f/255, a 30-bit normal %5.1f/255, 32-bit %5.2f/255, GGX's 36 bits %5.2f/255\n", flank[i], k*nMax[0], k*nMax[1], k*nMax[2], k*nMax[3]);
+    }
+    // Blinn-Phong's lobe as a GGX alpha (Walter et al. 2007: n = 2/alpha^2 - 2): its sharpest (n = 2048)
+    // is a GGX roughness of 0.177, where 32 bits keep the bound GGX's 36 keep at 0.045-0.05 twice over
+    const float blinn[2] = { 1024.0f, 2048.0f };
+    for (int i = 0; i < 2; i++)
+    {
+        double alpha = sqrt(2.0/(blinn[i] + 2.0)), k = 255.0*(1.055/2.4)*2.0/alpha*PI/180.0;
+        char name[64];
+        snprintf(name, sizeof(name), "flank_bound_blinn_phong_n%.0f", blinn[i]);
+        BenchCsvRow(SUITE, name, "prev", k*nMax[3], "1/255");
         BenchCsvRow(SUITE, name, "new", k*nMax[2], "1/255");
-        printf("    roughness %.3f: 0.3's codec %6.1f/255, a 30-bit normal %5.1f/255, this one (36 bits) %5.2f/255\n", flank[i], k*nMax[0], k*nMax[1], k*nMax[2]);
+        printf("    Blinn-Phong n %4.0f (GGX alpha %.4f): previous 36 bits %5.2f/255, this one (32 bits) %5.2f/255\n", blinn[i], alpha, k*nMax[3], k*nMax[2]);
     }
 }
 
@@ -1123,8 +1194,8 @@ int main(void)
     printf("  RblGBufferBytesPerPixel %d = albedo %d + normal %d + params %d (GL reports %.0f + %.0f + %.0f = %.0f)\n",
            bpp, albedoB, normalB, paramsB, glAlbedo, glNormal, glParams, glColour);
     printf("  not counted: depth %.0f (GL depth bits %.0f) and accumulation RGBA16F %d (GL %.0f)\n", glDepth, glDepth*8.0, accumB, glAccum);
-    if (fabs(glDepth*8.0 - 24.0) > 1e-9)
-        printf("  note: the header documents a 24-bit depth texture; rlLoadTextureDepth asks desktop GL for unsized GL_DEPTH_COMPONENT and this driver allocated %.0f bits\n", glDepth*8.0);
+    if (fabs(glDepth*8.0 - 32.0) > 1e-9)
+        printf("  note: the G-buffer asks for a 32-bit float depth texture; this context kept the driver's %.0f-bit format\n", glDepth*8.0);
     printf("  for comparison (constants from their sources): seed pipeline %d, raylib's deferred example %d\n", SEED_BYTES, RAYLIB_EXAMPLE_BYTES);
 
     printf("\ndeferred: ms per frame, %dx%d, a floor filling the screen, n point lights of range 0.3-0.8 (%s BRDF); %s context\n",
