@@ -16,11 +16,11 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot api-index
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
-NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps
+NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps api-index
 ifeq ($(filter $(NO_RAYLIB_GOALS),$(MAKECMDGOALS)),)
 include $(BUILD)/raylib.mk
 ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
@@ -39,6 +39,11 @@ $(BUILD)/raylib.mk: tests/tools/get-raylib.sh
 deps:
 	@bash tests/tools/deps.sh
 
+# The README's API index, regenerated from the header's declarations (make test checks it)
+api-index:
+	@bash tests/tools/api_index.sh write rbillboard_lit.h README.md
+	@echo "api-index: README.md rewritten from rbillboard_lit.h"
+
 # ---- shaders ------------------------------------------------------------------------------
 shaders:
 	@bash shaders/embed.sh rbillboard_lit.h
@@ -52,7 +57,7 @@ check-shaders:
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
-GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_sprites.c tests/test_atlas_render.c tests/test_fade.c
+GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_sprites.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -73,7 +78,7 @@ $(BUILD)/tests/test_api_san: tests/test_api_main.c tests/test_api.c $(HARNESS) $
 	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_api_main.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 # Contract suite: small limits so that they are reached in a few draws (the checks are the same code)
-CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256
+CONTRACT_LIMITS := -DRBL_MAX_BATCH_BILLBOARDS=64 -DRBL_MAX_INSTANCES=64 -DRBL_MAX_SCENE_LIGHTS=256 -DRBL_MAX_ATLAS_ENTRIES=4096
 $(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(CONTRACT_LIMITS) $(RAYLIB_CFLAGS) tests/test_contracts.c tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -81,6 +86,15 @@ $(BUILD)/tests/test_contracts: tests/test_contracts.c tests/gpu_common.h tests/s
 $(BUILD)/tests/test_alloc: tests/test_alloc.c tests/gpu_common.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) tests/test_alloc.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+# Teardown orders with a real raylib window (xvfb-run in tests/run.sh): C99 and C++11 (RAII holders)
+$(BUILD)/tests/test_teardown: tests/test_teardown.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/tests/test_teardown_cpp: tests/test_teardown.c $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CXX) -std=c++11 $(WARN) -O1 -g -I. -Itests $(SAN) $(RAYLIB_CFLAGS) -x c++ $< -x none -o $@ $(RAYLIB_LIBS)
 
 # The GPU suite against raylib built for ES 3, ES 2 and GL 2.1 (tests/tools/raylib-variant.sh builds
 # each once from the same source tree; the harness makes the context itself)
@@ -115,7 +129,7 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
 
 # ---- showcase -----------------------------------------------------------------------------

@@ -94,7 +94,7 @@
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
-*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: the render size
+*            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
 *            gdesc.brdf = RBL_BRDF_GGX;
 *            RblGBuffer g = RblLoadGBuffer(gdesc);
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
@@ -124,20 +124,25 @@
 *       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
 *
 *   OWNERSHIP:
-*       - RblLoadLitShader returns a raylib Shader whose locs array is that holder's; copies of it
-*         (material.shader) are the same holder: release it once. Equal descs share one program;
-*         each call is its own holder, and the program goes with its last holder.
-*       - Release with RblUnloadLitShader(&shader) (zeroes it) or raylib's UnloadMaterial/UnloadShader:
-*         the header notices the deleted program at the next load, scene or validity check, forgets
-*         it and compiles anew on the next load (draws skip the check: a GL query each).
+*       - RblLoadLitShader returns a raylib Shader that is its own GL program (as LoadShader); copies
+*         of it (material.shader) are the same holder: release it once, with RblUnloadLitShader(&shader)
+*         (zeroes it) or raylib's UnloadShader/UnloadMaterial. Materials that differ only in values
+*         share one Shader; equal descs loaded twice are two programs.
+*       - Draws recognise a Material's shader by its (id, locs) pair and ask GL that the program still
+*         exists before reading anything else of the Material: a stale copy is refused with one line.
+*         Draws use the header's own locations, never a Material's.
+*       - Batches, instance buffers, G-buffers and shadow maps carry an id: a copy of an unloaded one
+*         is refused even when a newer object took its memory.
 *       - Shadow maps and G-buffers hold their programs until RblUnloadShadowMap / RblUnloadGBuffer.
-*       - RblClose frees the immediate path, the scene and every program still held: call it after
-*         your own Unload calls (a Shader unloaded afterwards would be freed twice), before CloseWindow.
+*       - RblClose frees what the header owns (immediate path, scene, registry); lit programs become
+*         their holders' plain Shaders. Unload your objects before or after it; after CloseWindow the
+*         header makes no GL call (unloads free memory only).
 *
 *   FACING MODES (RblBillboard.facing, or RblInstancedDesc.facing for an instanced draw):
 *       CAMERA_PLANE: parallel to the view plane, as DrawBillboard (optional up, as DrawBillboardPro);
 *       CAMERA_POSITION: turns toward the eye; AXIS: turns toward the eye about a locked axis (+Y by
-*       default); FIXED: a world orientation (axis = normal, up). roundness bends the corner normals
+*       default); FIXED: a world orientation (axis = normal, up). Under an orthographic camera the eye
+*       is at infinity along the view's back direction (RblCameraFrame.orthographic). roundness bends the corner normals
 *       outward (sphere, or cylinder about up with RBL_ROUND_CYLINDER) for volume.
 *       Two-sided: a quad seen from behind (FIXED, or CAMERA_PLANE with an up against the view's) is
 *       drawn and shaded on the side seen (gl_FrontFacing): the normal flips, the normal map's tangent
@@ -298,18 +303,56 @@
 *
 *   SPRITE SHEETS (RblLoadAtlas / RblLoadAtlasFromMemory; tests/test_atlas.c, test_atlas_render.c, fuzz/):
 *       - Read: TexturePacker JSON (hash / array; frame, rotated, trimmed, spriteSourceSize, sourceSize,
-*         pivot or Pixi's anchor; related_multi_packs followed by RblLoadAtlas, plain names beside the
-*         file only), Aseprite JSON (duration ms, frameTags from/to inclusive, direction, repeat as a
-*         number or a string, slices keys: the first slice with pivots sets the pivot of the frames
-*         its keys cover), libGDX text (old xy/size/orig/offset, new bounds/offsets, rotate true/90,
-*         index: regions sharing a name with index >= 0 are moved together in index order and form a
-*         tag). Duplicate JSON keys: the last wins (JSON.parse). Nesting <= 64, coordinates <= 65536,
-*         64 sheets, text <= 2^28 bytes; anything else malformed: one line, invalid atlas, nothing kept.
+*         pivot or Pixi's anchor, scale9Borders, polygon vertices/verticesUV/triangles; meta.image,
+*         size, scale; related_multi_packs followed by RblLoadAtlas, plain names beside the file
+*         only; the multi-texture (Phaser 3) form: one page per textures[] entry, its normalMap and
+*         scale), Aseprite JSON (the same frames; duration ms, frameTags from/to inclusive, direction,
+*         repeat as a number or a string, slices: keys with bounds, pivot, center), libGDX text (old
+*         xy/size/orig/offset, new bounds/offsets, rotate true/false/any multiple of 90, index: regions
+*         sharing a name with index >= 0 are moved together in index order and form a tag; split;
+*         page size and pma). Not read: Pixi "animations" lists, TexturePacker's smartupdate and
+*         format, libGDX format/filter/repeat (the texture's own settings); libGDX pad is reported
+*         once per load (LOG_INFO). Duplicate JSON keys: the last wins (JSON.parse). A libGDX line
+*         with a colon is a field when its key is one libGDX writes or the line is indented (old
+*         form), else a region name ("ui:button"). Limits, each named in its refusal: nesting 64,
+*         coordinates 65536, 64 sheets, text 2^28 bytes, RBL_MAX_ATLAS_ENTRIES JSON values and rows
+*         per table, 65535 vertices per polygon; page sizes whole texels 1..65536, scale
+*         1/65536..65536; anything else malformed: one line, invalid atlas, nothing kept.
+*       - Sheets (RblLoadAtlas): each image is looked for as written (joined to the atlas file's
+*         folder unless absolute), then by its base name beside the atlas file, then by the atlas
+*         file's own base name with the image's extension; found nowhere, refused with one line
+*         naming every path tried. A normal sheet: the file's normalMap (as written, beside by base
+*         name, then <sheet>_n), else <sheet>_n.<ext> when it exists (TexturePacker, SpriteIlluminator,
+*         Paper2D): RblAtlasPage.normalImage. From memory nothing is looked for: names as written.
+*         RblLoadAtlasTextures(&atlas, page, suffix, &material, &desc.material) loads a page into
+*         maps[ALBEDO] and its normal sheet (suffix NULL: normalImage; "_x": <sheet>_x.<ext>, which
+*         must exist; "": none) into maps[NORMAL], same size required, and fills the layout (RGB
+*         normals, premultiplied alpha) the program needs.
 *       - One convention: rotated = stored turned 90 degrees clockwise in an h x w block (RblAtlasFrame
 *         .block); libGDX's counter-clockwise turn is that plus a half turn, so its .source has both
-*         extents negated (both mirrors); trim and pivot upright, top-left origin (libGDX offsets are
-*         counted from the bottom). RblAtlasBillboard/Instance: size = trim x scale, origin = the
-*         pivot from the trimmed quad's bottom-left (outside it when the pivot is), flags' ROTATED bit.
+*         extents negated (both mirrors; a libGDX half turn is both mirrors alone, 270 the clockwise
+*         turn); trim and pivot upright, top-left origin (libGDX offsets are counted from the bottom).
+*         A frame whose file states no pivot (libGDX never does) stands on its bottom centre (0.5, 1):
+*         placed at y = 0 it stands on the floor. RblAtlasBillboard/Instance: size = trim x worldScale
+*         / page scale (worldScale: world units per pixel of the art at scale 1, so exports at any
+*         meta.scale draw at one size), origin = the pivot from the trimmed quad's bottom-left
+*         (outside it when the pivot is), flags' ROTATED bit.
+*       - Slices (Aseprite): each key is a sub-frame from its frame to lastFrame. RblAtlasFindSlice
+*         (name, frame) finds the key; RblAtlasSliceBillboard/Instance draw it alone: its bounds
+*         clipped to the frame's trim, about its pivot (none: its bottom centre). When exactly one
+*         slice of an export has pivots, they are also the pivots of the frames its keys cover.
+*       - Polygons (TexturePacker): RblAtlasFrame.polygon holds the vertices (untrimmed-frame pixels),
+*         their sheet texels (inside the block) and triangles (indices < vertexCount), validated on
+*         load. The draw paths still draw the trimmed quad (the polygon's bounds and more).
+*       - 9-slice: RblAtlasFrame.center (scale9Borders, libGDX split) and RblAtlasSlice.center, in
+*         canvas pixels (for raylib's DrawTextureNPatch and the like); billboards draw the frame whole.
+*       - Premultiplied pages (libGDX pma: RblAtlasPage.premultiplied): RblMaterialLayout
+*         .premultipliedAlpha makes the program divide each filtered texel by its alpha before the
+*         sRGB decode (the alpha-weighted mean of its neighbours: no dark fringe), light the straight
+*         colour and write straight alpha: raylib's default BLEND_ALPHA then composites exactly as
+*         premultiplied blending of the lit colour would (do not switch to BLEND_ALPHA_PREMULTIPLY).
+*         RblMaterialSource.premultipliedAlpha packs such a sheet: mips averaged as straight colour,
+*         stored premultiplied again.
 *       - Aseprite exports of several sprites count tags per sprite: a tag lands on the frames named
 *         "<tag>:<k>" when the sheet's own indices do not fit those names.
 *       - Playback (RblSpritePlayer): per-frame durations (none given: RBL_SPRITE_DEFAULT_FRAME_TIME),
@@ -345,9 +388,11 @@
 *         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
 *         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
 *         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
-*         the G-buffer are refused there with one log line. ES 2: raylib 6.0's rlGetActiveFramebuffer
-*         answers 0, so a shadow pass run inside BeginTextureMode returns to the default framebuffer.
-*       - raylib's own DrawModel/DrawMesh draw with the values the program last received (stage 5).
+*         the G-buffer are refused there with one log line.
+*       - raylib's own DrawModel/DrawMesh upload colDiffuse, matrices and textures, none of the header's
+*         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
+*         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
+*         use of it and logged once per program.
 *       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
 *         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
 *         the target, viewport and matrices it found but leaves the depth test off and culling on (as
@@ -355,16 +400,19 @@
 *       - Deferred: one BRDF and light feature set per G-buffer (a geometry variant of another brdf is
 *         refused at draw); Blinn-Phong specular colour folded to its luminance, its intensity clamped
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
-*         (directional, range 0); the geometry pass ends on the default framebuffer (run it outside
-*         BeginTextureMode, resolve inside); resolve into a target of its size. The geometry pass
+*         (directional, range 0); a G-buffer loaded with size 0 takes its target's size at each
+*         RblBeginGBuffer (the screen, or the render texture of BeginTextureMode) and RblEndGBuffer
+*         returns to that target; a fixed size resolved into another size is scaled (logged). The geometry pass
 *         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
+*       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
+*         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
+*         packer that interlocks polygons may leave another frame's texels inside a quad.
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
-*         rlgl cannot report the caller's state. Under an orthographic camera CAMERA_POSITION and AXIS
-*         billboards still turn toward camera.position (their shading uses the parallel view).
+*         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
@@ -376,9 +424,9 @@
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
-*       #define RBL_SHADER_CACHE_SIZE 32
-*           Programs the registry holds: lit variants (equal descs share one), 2 casters while a shadow
-*           map is loaded, 5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
+*       #define RBL_SHADER_CACHE_SIZE 1024
+*           Programs the registry holds: one per lit Shader loaded, casters while a shadow map is loaded,
+*           5 passes per distinct G-buffer desc. A load beyond it fails with a log line.
 *       #define RBL_BATCH_DEFAULT_CAPACITY 1024
 *           Billboards a batch, or instances an instance buffer, reserves when loaded with 0.
 *       #define RBL_MAX_BATCH_BILLBOARDS 2097152, RBL_MAX_INSTANCES 2097152
@@ -389,12 +437,19 @@
 *           Largest G-buffer side and shadow-map size (the driver's own maximum applies too).
 *       #define RBL_MAX_OCCLUSION_RADIUS 256
 *           Largest RblGenOcclusionFromHeight radius, in texels.
+*       #define RBL_MAX_ATLAS_ENTRIES 16777216
+*           JSON values one atlas text may hold (32 to 38 per TexturePacker frame: 440k-520k frames),
+*           and rows of every atlas table (frames, tags, slice keys, polygon points and indices);
+*           1..2^26. The reader holds the text's values at once (20 bytes each).
 *           Input beyond any limit is refused with one log line; world positions and camera vectors
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
+*       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
+*           Texture unit soft particles read the scene depth from (RblScene.depth, RblEndSceneDepth).
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
-*           Scene shadow map k goes to texture unit 12 + k (materials use 0..11; GL 3.3 promises 16).
+*           Scene shadow map k goes to texture unit 12 + k (raylib's material maps use 0..10, the
+*           scene depth 11; GL 3.3 promises 16).
 *       #define RBL_MAX_BONES 128
 *           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
 *       #define RBL_GPU_SKINNING 1
@@ -546,7 +601,7 @@
     #define RBL_MAX_LIGHTS 64                   // Light slots a lit shader may compile in
 #endif
 #ifndef RBL_SHADER_CACHE_SIZE
-    #define RBL_SHADER_CACHE_SIZE 32            // Lit shader variants reused instead of recompiled
+    #define RBL_SHADER_CACHE_SIZE 1024          // Programs the registry may hold (lit programs, casters, G-buffer passes)
 #endif
 #ifndef RBL_BATCH_DEFAULT_CAPACITY
     #define RBL_BATCH_DEFAULT_CAPACITY 1024     // Billboards reserved by RblLoadBatch(0)
@@ -568,6 +623,9 @@
 #endif
 #ifndef RBL_MAX_OCCLUSION_RADIUS
     #define RBL_MAX_OCCLUSION_RADIUS 256        // Largest RblGenOcclusionFromHeight radius in texels
+#endif
+#ifndef RBL_MAX_ATLAS_ENTRIES
+    #define RBL_MAX_ATLAS_ENTRIES 16777216      // JSON values one atlas text may hold, and rows of each atlas table (2^24; at most 2^26)
 #endif
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
@@ -648,6 +706,7 @@ typedef struct RblCameraFrame {
     Vector3 right;                  // View matrix row 0 (unit)
     Vector3 up;                     // View matrix row 1 (unit)
     Vector3 back;                   // View matrix row 2 (unit, from target toward the eye)
+    bool orthographic;              // Parallel view (CAMERA_ORTHOGRAPHIC): the eye is at infinity along back, facing modes turn toward back
 } RblCameraFrame;
 
 // Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
@@ -664,6 +723,7 @@ typedef struct RblBatch {
     int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
     int count;                      // Billboards added since RblBeginBatch()
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__BatchState *state;  // The header's: vertices, material runs, GL buffers, camera frame (NULL = not loaded)
 } RblBatch;
 
@@ -693,6 +753,7 @@ typedef struct RblInstancedDesc {
 typedef struct RblInstanceBuffer {
     int capacity;                   // Instances reserved (doubles with a log line when a draw needs more)
     int skipped;                    // Instances skipped for bad input in the last draw
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__InstanceBufferState *state; // The header's: GPU buffers, staging copy (NULL = not loaded)
 } RblInstanceBuffer;
 
@@ -717,6 +778,7 @@ typedef struct RblMaterialLayout {
     bool specular;                  // Material texture B: specular intensity (or roughness), linear
     bool occlusion;                 // Material texture A: ambient occlusion, linear
     int emissive;                   // RblEmissiveLayout of the emissive texture
+    bool premultipliedAlpha;        // Albedo texels hold colour x alpha (libGDX pma): divided back after filtering, before lighting
 } RblMaterialLayout;
 
 // Packing input: raylib Images of one size (any format raylib converts); data == NULL = absent
@@ -732,6 +794,7 @@ typedef struct RblMaterialSource {
     int frameCount;                 // Number of frames
     bool mipmaps;                   // Build mip chains (normals renormalised, colour averaged in linear light)
     float alphaCoverage;            // With mipmaps: keep the share of texels at or above this alpha cutoff on every level (0 = off)
+    bool premultipliedAlpha;        // The albedo holds colour x alpha (libGDX pma); kept so (mips too), layout.premultipliedAlpha set
 } RblMaterialSource;
 
 // Packing output (CPU Images; upload with LoadTextureFromImage or RblLoadPackedTextures)
@@ -900,6 +963,7 @@ typedef struct RblGBuffer {
     bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__GBufferState *state; // The header's: framebuffers, pass programs, light volumes, camera (NULL = not loaded)
 } RblGBuffer;
 
@@ -919,6 +983,7 @@ typedef struct RblShadowMap {
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__ShadowMapState *state; // The header's: framebuffer, light camera and matrices, pass state (NULL = not loaded)
 } RblShadowMap;
 
@@ -952,6 +1017,15 @@ typedef enum {
     RBL_SPRITE_PINGPONG_REVERSE     // to .. from .. to
 } RblSpriteDirection;
 
+// A frame's polygon mesh (TexturePacker polygon packing): the opaque part as triangles; read-only
+typedef struct RblAtlasPolygon {
+    int vertexCount;                // Vertices (3..65535)
+    const Vector2 *vertices;        // Untrimmed-frame pixels, top-left origin, upright (the file's "vertices"; inside size)
+    const Vector2 *uvs;             // Sheet texels of each vertex (the file's "verticesUV"; inside the frame's block)
+    int indexCount;                 // Indices, 3 per triangle (the file's "triangles", winding as written)
+    const unsigned short *indices;  // Vertex of each triangle corner (each < vertexCount), as raylib's Mesh.indices
+} RblAtlasPolygon;
+
 // One frame of an atlas, every format normalised to one convention (TexturePacker's)
 typedef struct RblAtlasFrame {
     const char *name;               // Frame name (hash key, "filename", libGDX region name); owned by the atlas
@@ -961,9 +1035,11 @@ typedef struct RblAtlasFrame {
     unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above)
     Rectangle trim;                 // Drawn (trimmed) part of the frame: pixels, top-left origin, upright
     Vector2 size;                   // Untrimmed frame size in pixels
-    Vector2 pivot;                  // Pivot as fractions of size from the top-left (default 0.5, 0.5)
+    Vector2 pivot;                  // Pivot as fractions of size from the top-left (none given: 0.5, 1, the bottom centre)
     float duration;                 // Seconds (Aseprite's milliseconds / 1000); 0 = none given
     int index;                      // libGDX animation index (-1 = none)
+    Rectangle center;               // 9-slice centre in untrimmed-frame pixels (TexturePacker scale9Borders, libGDX split); zero = none
+    const RblAtlasPolygon *polygon; // Polygon mesh (TexturePacker vertices/verticesUV/triangles); NULL = the trimmed quad
 } RblAtlasFrame;
 
 // A named run of frames (Aseprite frame tags; libGDX regions sharing a name with index >= 0)
@@ -976,17 +1052,22 @@ typedef struct RblAtlasTag {
 
 // One sheet image
 typedef struct RblAtlasPage {
-    const char *image;              // Image path as written (RblLoadAtlas: joined to the atlas file's folder)
+    const char *image;              // Sheet path (RblLoadAtlas: the file found, see SPRITE SHEETS; from memory: as written)
     int width, height;              // Size the file states (0 = not stated)
+    const char *normalImage;        // Same-layout normal sheet: the file's normalMap, else <image>_n.<ext> found beside it (RblLoadAtlas); NULL = none
+    float scale;                    // Exporter scale (meta.scale, textures[].scale; 1 = none): frames are drawn at pixels / scale
+    bool premultiplied;             // Texels hold colour x alpha (libGDX pma: true); RblLoadAtlasTextures reports it in the layout
 } RblAtlasPage;
 
-// One key of an Aseprite slice: applies from its frame until the slice's next key
+// One key of an Aseprite slice: applies from its frame until the slice's next key (a sub-frame a billboard can draw)
 typedef struct RblAtlasSlice {
     const char *name;               // Slice name (owned by the atlas)
     int frame;                      // First frame the key applies to
+    int lastFrame;                  // Last frame it applies to (before the slice's next key, or its sprite's last frame)
     Rectangle bounds;               // Untrimmed-canvas pixels, top-left origin
-    Vector2 pivot;                  // Canvas pixels (bounds origin + the file's pivot)
-    bool hasPivot;                  // The key gives a pivot (then it is the pivot of the frames it covers)
+    Vector2 pivot;                  // Canvas pixels: bounds origin + the file's pivot (none given: the bounds' bottom centre)
+    bool hasPivot;                  // The key gives a pivot (the one pivoted slice of an export also sets its frames' pivots)
+    Rectangle center;               // 9-slice centre, canvas pixels (the key's center + bounds origin); zero = none
 } RblAtlasSlice;
 
 // A loaded atlas: one frame table every draw path reads (RblAtlasBillboard / RblAtlasInstance)
@@ -1018,6 +1099,9 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module Functions Declaration
 //----------------------------------------------------------------------------------
+// Module lifetime
+RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+
 // Geometry (CPU, no GL needed)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
@@ -1030,7 +1114,6 @@ RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  //
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
-RBLAPI void RblClose(void);                                                   // Release the immediate path's buffers (before CloseWindow)
 
 // Instanced path (GL): per-instance data only, quads expanded in the vertex shader
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
@@ -1062,6 +1145,8 @@ RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      //
 // Deferred G-buffer
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
+RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
+RBLAPI void RblEndSceneDepth(void);                                            // Show that world on the current target with its depth; soft particles read it (unless RblScene.depth is given)
 RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
@@ -1091,6 +1176,10 @@ RBLAPI bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale
 RBLAPI bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance);   // The same for an instance
 RBLAPI bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard); // Cross-fade frame into nextFrame by weight 0..1: the quad covers both trims (each where its canvas and pivot put it), source, size, origin, flags and fade set; the rest kept
 RBLAPI bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblInstance *instance, RblFade *fade); // The same for an instance and its RblInstancedDesc.fades entry
+RBLAPI int RblAtlasFindSlice(const RblAtlas *atlas, const char *name, int frame); // Key (RblAtlas.slices) of the named slice that applies at frame; -1 when none
+RBLAPI bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float worldScale, RblBillboard *billboard); // Draw slice key slice of frame alone: source, size, origin, flags for its part of the trim about its own pivot; the rest kept
+RBLAPI bool RblAtlasSliceInstance(const RblAtlas *atlas, int slice, int frame, float worldScale, RblInstance *instance); // The same for an instance
+RBLAPI bool RblLoadAtlasTextures(const RblAtlas *atlas, int page, const char *normalSuffix, Material *material, RblMaterialLayout *layout); // Load a page's sheet into material maps[ALBEDO] and its same-layout normal sheet (page.normalImage, else <image><normalSuffix>.<ext>, NULL = "_n") into maps[NORMAL]; layout (NULL = none) gets RGB normals if found and pma; false + log: nothing changed
 RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops); // Start a tag (-1 = all frames); loops: 0 = the tag's repeat, n > 0 = n passes, -1 = forever
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
 RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
@@ -1114,7 +1203,8 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 #include "rlgl.h"
 #include <math.h>       // sqrtf, sinf, cosf, fabsf
 #include <string.h>     // memcpy, memset, strlen
-#include <stdio.h>      // snprintf
+#include <stdio.h>      // snprintf, vsnprintf
+#include <stdarg.h>     // va_list (atlas errors)
 #include <stddef.h>     // offsetof
 #include <stdlib.h>     // strtod, qsort, abs (atlas parsing)
 
@@ -1131,6 +1221,15 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
 #endif
 
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
+
+// Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
+#define RBL__RAYLIB_MATERIAL_MAPS 12
+// GL entry points the header asks raylib's loader for (rlGetProcAddress): the platform's calling convention
+#if defined(_WIN32)
+    #define RBL__GLAPI __stdcall
+#else
+    #define RBL__GLAPI
+#endif
 
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
@@ -1157,7 +1256,7 @@ typedef enum {
     RBL__U_COUNT
 } rbl__Uniform;
 
-typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS } rbl__ProgramKind;
+typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS, RBL__KIND_COMPOSITE } rbl__ProgramKind;
 enum { RBL__PASS_FULLSCREEN = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_FULLSCREEN_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
 
 // What a program is compiled from: equal keys share one program
@@ -1176,19 +1275,22 @@ typedef struct rbl__MaterialValues {
 // One entry of the program registry
 typedef struct rbl__Program {
     rbl__ProgramKey key;
-    Shader shader;                  // Program and the registry's own raylib locs (handles get copies)
+    Shader shader;                  // Program and the registry's own raylib locs (every draw reads these, never a Material's)
+    const int *handleLocs;          // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
     int loc[RBL__U_COUNT];          // Uniform locations
-    int refs;                       // Holders: RblLoadLitShader handles, shadow maps, G-buffers
+    int refs;                       // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
     rbl__MaterialValues values;     // Last per-draw values uploaded
     int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
     bool valuesValid;
+    bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
 } rbl__Program;
 
-// A Shader handed out by RblLoadLitShader: its locs array is that holder's (raylib's UnloadShader frees it)
-typedef struct rbl__Handle {
-    int *locs;
+// A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
+// by the pair (stale Shader copies)
+typedef struct rbl__DeadHandle {
     unsigned int id;
-} rbl__Handle;
+    const int *locs;
+} rbl__DeadHandle;
 
 // A run of billboards sharing one material inside a batch
 // A billboard's place in a sorted batch
@@ -1235,6 +1337,7 @@ typedef struct rbl__BatchState {
     bool orthographic;              // The camera's projection (which side of a quad it sees)
     bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
+    unsigned int pass;              // The pass it began in (rbl__passNow): added to and ended in that one only
     // The optional fade stream (16 floats per billboard: rbl__fadeVertices), allocated when the first
     // billboard with a fade weight arrives; a batch without one uploads and binds nothing more
     float *fade;                    // Per billboard since RblBeginBatch() while fading (capacity billboards)
@@ -1277,6 +1380,10 @@ typedef struct rbl__GBufferState {
     Vector3 eye;
     float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
     bool ambientNoted;              // A later scene's other ambient was logged once
+    bool geometryDone;              // A geometry pass filled the targets (since load or the last resize)
+    bool follow;                    // Loaded with size 0: takes its target's size at each RblBeginGBuffer
+    bool sizeNoted;                 // A resolve into a target of another size was logged (until sizes match again)
+    unsigned int savedFramebuffer;  // The caller's target at RblBeginGBuffer, restored by RblEndGBuffer
     bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
 } rbl__GBufferState;
 
@@ -1318,30 +1425,63 @@ typedef struct rbl__Scene {
     float exposure;
     int shadowCount;
     int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
+    unsigned int shadowId[RBL_MAX_SHADOWS];         // Each map's object id (an unload drops it from the scene)
+    bool shadowDropped;                             // A map was unloaded after RblSetScene: its light draws unshadowed
+    bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
+    bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
     float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
+// The scene target of a plain raylib frame (RblBeginSceneDepth .. RblEndSceneDepth): the opaque world
+// drawn where its depth is a texture, then shown on the caller's target with that depth
+typedef struct rbl__SceneCapture {
+    RenderTexture2D target;         // Follows the size of the target it is shown on (0 = not made yet)
+    unsigned int composite;         // The composite program (registry, RBL__KIND_COMPOSITE)
+    unsigned int vao, vbo;          // Full-screen triangle (vao 0 where the context has none)
+    unsigned int savedFramebuffer;  // The caller's target at RblBeginSceneDepth
+    bool begun;                     // Between RblBeginSceneDepth and RblEndSceneDepth
+    bool shown;                     // RblEndSceneDepth ran: soft particles read its depth (RblScene.depth given: that one)
+} rbl__SceneCapture;
+
+// One slot of the loaded-object table (rbl__liveAdd)
+typedef struct rbl__Live {
+    unsigned int id;                // The object's id (0 = free slot)
+    const void *state;              // Its private state
+} rbl__Live;
+
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
 typedef struct rbl__State {
-    rbl__Program programs[RBL_SHADER_CACHE_SIZE];   // The one program registry (refs == 0: free slot)
-    rbl__Handle *handles;           // Live RblLoadLitShader handles
-    int handleCount;
-    int handleCapacity;
+    rbl__Program **programs;        // The one program registry (each entry allocated: pointers stay valid as it grows)
+    int programCount;
+    int programCapacity;
+    rbl__DeadHandle *dead;          // Lit handles that died, so their copies are refused (freed by RblClose)
+    int deadCount;
+    int deadCapacity;
+    int **quarantine;               // Locations arrays of handles RblUnloadLitShader released: kept allocated so no later
+    int quarantineCount;            // allocation takes their address while a stale copy may hold it (freed by RblClose)
+    int quarantineCapacity;
+    void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
+    void *glGetUniformfv;           // ... and glGetUniformfv
+    bool glLooked;
+    bool closed;
+    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target                    // RblClose ran: the tables go with the last object the caller holds
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
-    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap)
+    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
+    RblShadowMap shadowPassMap;     // ... the map as it began (the caller's struct is never held)
     rbl__Cast cast;                 // ... and its light, for AXIS tilts
-    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer)
+    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
+    RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
-    const void **live;              // Batches, G-buffers and shadow maps loaded and not unloaded
-    int liveCount;
+    rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
+    int liveCount;                  // Slots used (free ones are reused)
     int liveCapacity;
 } rbl__State;
 
@@ -1383,42 +1523,77 @@ static const char *rbl__needsGlsl3(const char *feature)
     return rbl__state.problem;
 }
 
-// Loaded objects' private states: validity is membership, so a stale copy's pointer (its object
-// unloaded) is recognised without being dereferenced
-static bool rbl__liveAdd(void *object)
+// Objects handed out (batches, instance buffers, G-buffers, shadow maps) are named by id: slot + 1 in
+// the low 16 bits, a serial above. A stale copy (its object unloaded, its slot or its state's
+// address perhaps taken by another since) carries an id no live object has, so it is recognised
+// without dereferencing anything it holds. The serial outlives RblClose: no id repeats across it.
+static unsigned int rbl__serial = 0;
+
+// Whether GL may be called: raylib's window is open, or the header never saw one (a context made
+// another way, e.g. rlglInit on a headless context). After CloseWindow the context is gone: unloads
+// and RblClose then free memory only (both survive RblClose, as the serial)
+static bool rbl__sawWindow = false;
+static bool rbl__glUsable(void)
 {
-    if (rbl__state.liveCount == rbl__state.liveCapacity)
+    if (IsWindowReady()) { rbl__sawWindow = true; return true; }
+    return !rbl__sawWindow;
+}
+
+// Registers a loaded object's state; its id, or 0 when out of memory or slots
+static unsigned int rbl__liveAdd(const void *state)
+{
+    int slot = -1;
+    for (int i = 0; (i < rbl__state.liveCount) && (slot < 0); i++) if (rbl__state.live[i].id == 0) slot = i;
+    if (slot < 0)
     {
-        int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
-        const void **live = (const void **)RBL_REALLOC((void *)rbl__state.live, (size_t)capacity*sizeof(void *));
-        if (live == NULL) return false;
-        rbl__state.live = live;
-        rbl__state.liveCapacity = capacity;
+        if (rbl__state.liveCount >= 0xFFFF) return 0;
+        if (rbl__state.liveCount == rbl__state.liveCapacity)
+        {
+            int capacity = (rbl__state.liveCapacity > 0)? rbl__state.liveCapacity*2 : 16;
+            rbl__Live *live = (rbl__Live *)RBL_REALLOC(rbl__state.live, (size_t)capacity*sizeof(rbl__Live));
+            if (live == NULL) return 0;
+            rbl__state.live = live;
+            rbl__state.liveCapacity = capacity;
+        }
+        slot = rbl__state.liveCount++;
     }
-    rbl__state.live[rbl__state.liveCount++] = object;
-    return true;
+    rbl__serial = (rbl__serial + 1u) & 0xFFFFu;
+    if (rbl__serial == 0u) rbl__serial = 1u;
+    rbl__state.closed = false;      // used again after RblClose
+    rbl__state.live[slot].id = (rbl__serial << 16) | (unsigned int)(slot + 1);
+    rbl__state.live[slot].state = state;
+    return rbl__state.live[slot].id;
 }
 
-static void rbl__liveRemove(const void *object)
+// The slot id names, or -1 (id 0 and ids of empty or reused slots included)
+static int rbl__liveSlot(unsigned int id)
 {
-    for (int i = 0; i < rbl__state.liveCount; i++)
-        if (rbl__state.live[i] == object) { rbl__state.live[i] = rbl__state.live[--rbl__state.liveCount]; return; }
+    unsigned int slot = (id & 0xFFFFu) - 1u;
+    return ((id != 0u) && (slot < (unsigned int)rbl__state.liveCount) && (rbl__state.live[slot].id == id))? (int)slot : -1;
 }
 
-static bool rbl__isLive(const void *object)
+static void rbl__liveRemove(unsigned int id)
 {
-    if (object == NULL) return false;
-    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i] == object) return true;
-    return false;
+    int slot = rbl__liveSlot(id);
+    if (slot >= 0) { rbl__state.live[slot].id = 0; rbl__state.live[slot].state = NULL; }
 }
 
-// An unload's holder check: true when holder's state is live; otherwise one line under fn (NULL
+// Whether (id, state) is a loaded object: the id first, then its state pointer compared (not read)
+static bool rbl__isLive(unsigned int id, const void *state)
+{
+    int slot = rbl__liveSlot(id);
+    return (slot >= 0) && (state != NULL) && (rbl__state.live[slot].state == state);
+}
+
+// An unload's holder check: true when holder's object is live; otherwise one line under fn (NULL
 // holder, zero holder, stale copy) and false
-static bool rbl__unloadable(const void *holder, const void *state, const char *fn, const char *what)
+static void rbl__tidyAfterClose(void);
+
+static bool rbl__unloadable(const void *holder, unsigned int id, const void *state, const char *fn, const char *what)
 {
     if (holder == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL %s", fn, what); return false; }
-    if (rbl__isLive(state)) return true;
-    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, (state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+    if (rbl__isLive(id, state)) return true;
+    TraceLog(LOG_WARNING, "RBL: %s: %s %s", fn, what, ((id != 0) || (state != NULL))? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
     return false;
 }
 
@@ -2310,20 +2485,21 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS\n",
     "// billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,\n",
     "// a vector v and a fallback f, one blend follows, then the frame is built.\n",
-    "void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
+    "void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,\n",
     "                    vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)\n",
     "{\n",
     "    r = viewRight; u = viewUp; n = viewBack;\n",
+    "    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity\n",
     "    vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);\n",
     "    bool own = true;\n",
     "    if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }\n",
-    "    else if (facing == 1) { own = rblNormalizeTo(eye - position, axis); f = cross(axis, r); }\n",
+    "    else if (facing == 1) { own = rblNormalizeTo(toEye, axis); f = cross(axis, r); }\n",
     "    else if (facing == 2)\n",
     "    {\n",
     "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);\n",
     "        vec3 q;\n",
     "        float wb = rblOffAxis(viewBack, a, q);\n",
-    "        axis = a; v = eye - position; f = rblBlendOffAxis(q, wb, viewUp, a);\n",
+    "        axis = a; v = toEye; f = rblBlendOffAxis(q, wb, viewUp, a);\n",
     "    }\n",
     "    else\n",
     "    {\n",
@@ -2458,7 +2634,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
     "    vec3 r, u, n;\n",
-    "    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
+    "    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
     "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
     "    // Rotate the frame around the normal (raylib rotates the corners; same result)\n",
     "    if (rblInstancePosition.w != 0.0)\n",
@@ -2502,6 +2678,9 @@ static const char *const rbl__shader_material[] = {
     "//   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness\n",
     "//   RBL_OCCLUSION            material texture A holds ambient occlusion\n",
     "//   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)\n",
+    "//   RBL_PREMULTIPLIED_ALPHA  albedo texels hold colour x alpha (libGDX pma): the filtered texel is\n",
+    "//                            divided by its alpha before decoding (the alpha-weighted mean of its\n",
+    "//                            neighbours' colours, no dark fringe); lit and written as straight alpha\n",
     "//   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)\n",
     "//   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map\n",
     "//                            is fetched at both texture coordinates. What is mixed: colour in linear\n",
@@ -2600,14 +2779,24 @@ static const char *const rbl__shader_material[] = {
     "}\n",
     "#endif\n",
     "\n",
+    "// A filtered albedo texel as straight (not premultiplied) sRGB colour and alpha\n",
+    "vec4 rblStraightAlpha(vec4 texel)\n",
+    "{\n",
+    "#ifdef RBL_PREMULTIPLIED_ALPHA\n",
+    "    return vec4((texel.a > 0.0)? min(texel.rgb/texel.a, vec3(1.0)) : vec3(0.0), texel.a);\n",
+    "#else\n",
+    "    return texel;\n",
+    "#endif\n",
+    "}\n",
+    "\n",
     "// The material at this fragment: discards below the alpha cutoff; alpha, emission and the\n",
     "// tangent-space normal (debug views) come back through the out parameters\n",
     "RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)\n",
     "{\n",
-    "    vec4 texel = texture(texture0, fragTexCoord);\n",
+    "    vec4 texel = rblStraightAlpha(texture(texture0, fragTexCoord));\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample\n",
-    "    vec4 texel2 = texture(texture0, fragTexCoord2);\n",
+    "    vec4 texel2 = rblStraightAlpha(texture(texture0, fragTexCoord2));\n",
     "    float fade = fragFade.x;\n",
     "    float inside1 = rblFadeInside(fragFadeClip.xy), inside2 = rblFadeInside(fragFadeClip.zw);\n",
     "    // Outside the frame shown alone (or both) there is no fragment, as with that frame's own quad\n",
@@ -2753,6 +2942,48 @@ static const char *const rbl__shader_output[] = {
     "#else\n",
     "    return rblLinearToSrgb(color);\n",
     "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_scene_composite_fs[] = {
+    "// The opaque world drawn between RblBeginSceneDepth and RblEndSceneDepth, shown on the caller's target\n",
+    "// with its depth, so later draws are depth tested against it (soft particles also read that depth as a\n",
+    "// texture). Where nothing was drawn the caller's target shows through. GLSL ES 1.00 writes depth only\n",
+    "// with EXT_frag_depth (the loader enables it where it exists).\n",
+    "#include \"dialect.glsl\"\n",
+    "\n",
+    "uniform sampler2D texture0;             // the scene target's colour\n",
+    "uniform sampler2D rblSceneDepthMap;     // its depth\n",
+    "RBL_VARYING vec2 fragUv;\n",
+    "#if RBL_GLSL >= 300\n",
+    "out vec4 finalColor;\n",
+    "#else\n",
+    "#define finalColor gl_FragColor\n",
+    "#endif\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    float depth = texture(rblSceneDepthMap, fragUv).r;\n",
+    "    if (depth >= 1.0) discard;\n",
+    "    finalColor = vec4(texture(texture0, fragUv).rgb, 1.0);\n",
+    "#if RBL_GLSL >= 120\n",
+    "    gl_FragDepth = depth;\n",
+    "#elif defined(GL_EXT_frag_depth)\n",
+    "    gl_FragDepthEXT = depth;\n",
+    "#endif\n",
+    "}\n",
+    NULL };
+static const char *const rbl__shader_scene_composite_vs[] = {
+    "// Full-screen triangle from a vertex buffer (GLSL 1 has no gl_VertexID): RblEndSceneDepth shows the\n",
+    "// scene target on the caller's target. Pairs with scene_composite.fs.glsl.\n",
+    "#include \"dialect.glsl\"\n",
+    "\n",
+    "RBL_ATTRIBUTE vec3 vertexPosition;      // (-1,-1) (3,-1) (-1,3)\n",
+    "RBL_VARYING vec2 fragUv;                // scene target coordinate of this pixel (0..1)\n",
+    "\n",
+    "void main()\n",
+    "{\n",
+    "    fragUv = vertexPosition.xy*0.5 + 0.5;\n",
+    "    gl_Position = vec4(vertexPosition.xy, 0.0, 1.0);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_shadow_caster_fs[] = {
@@ -3006,6 +3237,8 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
     { "output.glsl", rbl__shader_output },
+    { "scene_composite.fs.glsl", rbl__shader_scene_composite_fs },
+    { "scene_composite.vs.glsl", rbl__shader_scene_composite_vs },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
     { "shadows.glsl", rbl__shader_shadows },
     { "skinning.glsl", rbl__shader_skinning },
@@ -3017,23 +3250,27 @@ static const struct { const char *file; const char *const *source; } rbl__shader
 static const char *const *const rbl__pass_fullscreen_vs[] = { rbl__shader_dialect, rbl__shader_fullscreen_vs, NULL };
 static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_skinning, rbl__shader_lit_vs, NULL };
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
+static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
 static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
 static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
 static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
 static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
     { "lit_instanced.vs.glsl", rbl__pass_lit_instanced_vs },
+    { "scene_composite.vs.glsl", rbl__pass_scene_composite_vs },
     { "volume.vs.glsl", rbl__pass_volume_vs },
     { "deferred_fullscreen.fs.glsl", rbl__pass_deferred_fullscreen_fs },
     { "deferred_resolve.fs.glsl", rbl__pass_deferred_resolve_fs },
     { "deferred_volume.fs.glsl", rbl__pass_deferred_volume_fs },
     { "gbuffer.fs.glsl", rbl__pass_gbuffer_fs },
     { "lit.fs.glsl", rbl__pass_lit_fs },
+    { "scene_composite.fs.glsl", rbl__pass_scene_composite_fs },
     { "shadow_caster.fs.glsl", rbl__pass_shadow_caster_fs },
 };
 // RBL-SHADERS-END
@@ -3077,6 +3314,8 @@ static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsB
 // Instance floats and any rotation: values of 2^120 (1.3e36, exponent field 127 + 120) or more could
 // overflow float once the GPU combines them: rejected like NaN
 #define RBL__INSTANCE_LIMIT_EXPONENT 247u
+// CAMERA_PLANE's caller up, whose length scales the quad's height (as raylib's): below 2^30
+#define RBL__UP_LIMIT_EXPONENT 157u
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
@@ -3123,15 +3362,36 @@ static Matrix rbl__identity(void)
 // Back to framebuffer fbo with a viewport covering it. rlgl's framebuffer size is the last render
 // texture's after EndTextureMode (raylib does not reset it), so the screen's size comes from the
 // window when there is one (headless rlglInit contexts have none: rlgl's size is the screen's there)
+// The framebuffer draws go to now. raylib 6.0's rlGetActiveFramebuffer asks for the ES 3 name of
+// the binding and answers 0 on ES 2 / WebGL1: there GL is asked for the ES 2 one
+typedef void (RBL__GLAPI *rbl__GlGetIntegerv)(unsigned int pname, int *data);
+static unsigned int rbl__activeFramebuffer(void)
+{
+    if ((rbl__glsl() != 100) || (rlGetTextureIdDefault() == 0)) return rlGetActiveFramebuffer();
+    void *proc = rlGetProcAddress("glGetIntegerv");
+    if (proc == NULL) return 0;
+    rbl__GlGetIntegerv get;
+    memcpy(&get, &proc, sizeof(get));
+    int fbo = 0;
+    get(0x8CA6 /* GL_FRAMEBUFFER_BINDING */, &fbo);
+    return (fbo > 0)? (unsigned int)fbo : 0u;
+}
+
+// Size of the target draws go to now: inside BeginTextureMode rlgl's framebuffer size (the
+// texture's); on the screen raylib's render size (rlgl keeps the last texture's after EndTextureMode
+// and never hears of window resizes), or rlgl's where there is no raylib window (headless contexts)
+static void rbl__targetSize(unsigned int fbo, int *w, int *h)
+{
+    *w = rlGetFramebufferWidth(); *h = rlGetFramebufferHeight();
+    if ((fbo == 0) && (GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { *w = GetRenderWidth(); *h = GetRenderHeight(); }
+}
+
 static void rbl__restoreTarget(unsigned int fbo)
 {
-    int w = rlGetFramebufferWidth(), h = rlGetFramebufferHeight();
-    if (fbo != 0) rlEnableFramebuffer(fbo);     // inside BeginTextureMode: rlgl's size is that texture's
-    else
-    {
-        rlDisableFramebuffer();
-        if ((GetRenderWidth() > 0) && (GetRenderHeight() > 0)) { w = GetRenderWidth(); h = GetRenderHeight(); }
-    }
+    int w, h;
+    rbl__targetSize(fbo, &w, &h);
+    if (fbo != 0) rlEnableFramebuffer(fbo);
+    else rlDisableFramebuffer();
     rlViewport(0, 0, w, h);
 }
 
@@ -3280,6 +3540,7 @@ static RblCameraFrame rbl__cameraFrame(Camera3D camera)
     view.right = rbl__v3((float)r[0], (float)r[1], (float)r[2]);
     view.up = rbl__v3((float)(b[1]*r[2] - b[2]*r[1]), (float)(b[2]*r[0] - b[0]*r[2]), (float)(b[0]*r[1] - b[1]*r[0]));
     view.back = rbl__v3((float)b[0], (float)b[1], (float)b[2]);
+    view.orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     return view;
 }
 
@@ -3288,7 +3549,7 @@ RblCameraFrame RblGetCameraFrame(Camera3D camera)
     if (!rbl__cameraOk(camera))
     {
         TraceLog(LOG_WARNING, "RBL: RblGetCameraFrame: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection; identity frame returned");
-        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f } };
+        RblCameraFrame view = { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f }, false };
         return view;
     }
     return rbl__cameraFrame(camera);
@@ -3316,6 +3577,18 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
     memcpy(cosOut, &rc, sizeof(rc));
 }
 
+// A caller's direction (FIXED up and normal, AXIS axis) from any finite vector: a long one is scaled
+// by a power of two (exact) so its squared length cannot overflow; short ones are left (shorter than
+// 1e-12 counts as zero)
+static inline Vector3 rbl__tame(Vector3 v)
+{
+    float m = fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
+    if (!(m > 1e12f)) return v;
+    int e;
+    frexpf(m, &e);
+    return rbl__v3(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
+}
+
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
 // takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
 // (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
@@ -3324,28 +3597,31 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 {
     Vector3 r = view->right, u = view->up, n = view->back;
     Vector3 axis = r, v = u, f = u, a = rbl__v3(0.0f, 1.0f, 0.0f);
+    Vector3 toEye = view->orthographic? view->back : rbl__sub(view->eye, b->position);     // a parallel view's eye is at infinity
     bool own = true;        // false: CAMERA_PLANE without an up, CAMERA_POSITION at the eye (the view's frame)
     switch (b->facing)
     {
         // normal = right x (the caller's up off right), toward the camera's up
         case RBL_FACING_CAMERA_PLANE: own = rbl__len2(b->up) > 1e-24f; v = b->up; break;
         // n toward the eye; up = the camera's up off n, toward n x right (the centre on the camera's up line)
-        case RBL_FACING_CAMERA_POSITION: own = rbl__normalizeTo(rbl__sub(view->eye, b->position), &axis); f = rbl__cross(axis, r); break;
+        case RBL_FACING_CAMERA_POSITION: own = rbl__normalizeTo(toEye, &axis); f = rbl__cross(axis, r); break;
         // n = toward the eye off the axis, toward the view's back off the axis, itself toward the view's
         // up off the axis where the view looks along it (up and back are never both near it)
         case RBL_FACING_AXIS:
         {
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &a);    // shorter counts as zero (a GPU may flush it)
+            Vector3 given = rbl__tame(b->axis);
+            if (rbl__len2(given) > 1e-24f) rbl__normalizeTo(given, &a);    // shorter counts as zero (a GPU may flush it)
             Vector3 q;
             float wb = rbl__offAxis(view->back, a, &q);
-            axis = a; v = rbl__sub(view->eye, b->position); f = rbl__blendOffAxis(q, wb, view->up, a);
+            axis = a; v = toEye; f = rbl__blendOffAxis(q, wb, view->up, a);
         } break;
         // up off the normal, toward the normal's fallback up
         case RBL_FACING_FIXED:
         {
+            Vector3 normal = rbl__tame(b->axis), up = rbl__tame(b->up);
             axis = rbl__v3(0.0f, 0.0f, 1.0f);
-            if (rbl__len2(b->axis) > 1e-24f) rbl__normalizeTo(b->axis, &axis);
-            v = (rbl__len2(b->up) > 1e-24f)? b->up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
+            if (rbl__len2(normal) > 1e-24f) rbl__normalizeTo(normal, &axis);
+            v = (rbl__len2(up) > 1e-24f)? up : rbl__v3(0.0f, 1.0f, 0.0f); f = rbl__fallbackUp(axis);
         } break;
         default: own = false; break;
     }
@@ -3469,6 +3745,8 @@ static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textur
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
     if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
         !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
+    if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
     return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__fadeOk(&b->fade, RBL__BILLBOARD_LIMIT_EXPONENT);
 }
 
@@ -3669,6 +3947,10 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
 static void rbl__forgetProgram(rbl__Program *p);
+static void rbl__removeProgram(rbl__Program *p);
+static void rbl__noteDroppedShadow(void);
+static void rbl__markDrawn(const rbl__Program *p);
+static void rbl__releaseCapture(void);
 
 static void rbl__loadBatchGpu(rbl__BatchState *batch)
 {
@@ -3698,6 +3980,7 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
+    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
@@ -3708,10 +3991,19 @@ static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 
 static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
 
+// The pass in progress: the shadow map's or G-buffer's id, 0 for a colour pass. A batch collects for
+// one pass (its frame and programs are that pass's)
+static unsigned int rbl__passNow(void)
+{
+    if (rbl__state.shadowPass != NULL) return rbl__state.shadowPass->id;
+    if (rbl__state.gbufferPass != NULL) return rbl__state.gbufferPass->id;
+    return 0;
+}
+
 // The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
 static rbl__BatchState *rbl__batchState(const RblBatch *batch)
 {
-    return ((batch != NULL) && rbl__isLive(batch->state))? batch->state : NULL;
+    return ((batch != NULL) && rbl__isLive(batch->id, batch->state))? batch->state : NULL;
 }
 
 static void rbl__freeBatchState(rbl__BatchState *b)
@@ -3747,7 +4039,8 @@ RblBatch RblLoadBatch(int capacity)
     }
     b->capacity = capacity;
     rbl__loadBatchGpu(b);
-    if ((b->vaoId == 0) || (b->vboId == 0) || (b->eboId == 0) || !rbl__liveAdd(b))
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0) && (b->eboId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadBatch: GPU buffers could not be created (no GL context?)");
         rbl__freeBatchState(b);
@@ -3755,6 +4048,7 @@ RblBatch RblLoadBatch(int capacity)
     }
     batch.capacity = capacity;
     batch.state = b;
+    batch.id = id;
     return batch;
 }
 
@@ -3765,10 +4059,11 @@ bool RblIsBatchValid(RblBatch batch)
 
 void RblUnloadBatch(RblBatch *batch)
 {
-    if (!rbl__unloadable(batch, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
-    rbl__liveRemove(batch->state);
+    if (!rbl__unloadable(batch, (batch != NULL)? batch->id : 0, (batch != NULL)? batch->state : NULL, "RblUnloadBatch", "batch")) { if (batch != NULL) memset(batch, 0, sizeof(*batch)); return; }
+    rbl__liveRemove(batch->id);
     rbl__freeBatchState(batch->state);
     memset(batch, 0, sizeof(*batch));
+    if (batch != &rbl__state.immediate) rbl__tidyAfterClose();
 }
 
 bool RblBeginBatch(RblBatch *pub, Camera3D camera)
@@ -3791,14 +4086,15 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->runCount = 0;
     batch->skipped = 0;
     batch->begun = true;
+    batch->pass = rbl__passNow();
     pub->count = 0; pub->skipped = 0;
     return true;
 }
 
+// Whether b continues a's run: compares pointers before reading a's maps (b's are the same array)
 static bool rbl__sameMaterial(const Material *a, const Material *b)
 {
-    if ((a->shader.id != b->shader.id) || (a->maps != b->maps)) return false;
-    if (a->maps == NULL) return true;
+    if ((a->shader.id != b->shader.id) || (a->shader.locs != b->shader.locs) || (a->maps != b->maps) || (a->maps == NULL)) return false;
     return (a->maps[MATERIAL_MAP_ALBEDO].texture.id == b->maps[MATERIAL_MAP_ALBEDO].texture.id) &&
            (a->maps[MATERIAL_MAP_METALNESS].texture.id == b->maps[MATERIAL_MAP_METALNESS].texture.id) &&
            (a->maps[MATERIAL_MAP_NORMAL].texture.id == b->maps[MATERIAL_MAP_NORMAL].texture.id) &&
@@ -3827,7 +4123,12 @@ static bool rbl__growBatch(rbl__BatchState *batch)
 bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return false; }
+    if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+                 "the batch began in another pass (shadow map, G-buffer or colour): add and end it in the pass it began in");
+        return false;
+    }
     bool added = rbl__batchAdd(batch, material, billboard, "RblBatchAdd");
     pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
     return added;
@@ -3841,12 +4142,12 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         return false;
     }
 
-    int texW, texH;
-    rbl__albedoSize(&material, &texW, &texH);
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
     rbl__Program *program = NULL;
     const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
+    int texW = 1, texH = 1;
+    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);       // the maps are read once the shader is known live
     if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
         bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL)
@@ -3906,11 +4207,6 @@ static unsigned int rbl__bindMaterial(const Material *material)
     if (sh.locs[SHADER_LOC_MATRIX_NORMAL] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_NORMAL], rbl__identity());
     if (sh.locs[SHADER_LOC_MATRIX_VIEW] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_VIEW], view);
     if (sh.locs[SHADER_LOC_MATRIX_PROJECTION] != -1) rlSetUniformMatrix(sh.locs[SHADER_LOC_MATRIX_PROJECTION], proj);
-    if (material->maps == NULL)
-    {
-        rlActiveTextureSlot(0); rlEnableTexture(rlGetTextureIdDefault());
-        return 1u;
-    }
     if (sh.locs[SHADER_LOC_COLOR_DIFFUSE] != -1)
     {
         Color c = material->maps[MATERIAL_MAP_ALBEDO].color;
@@ -4068,6 +4364,7 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         }
         rlDrawVertexArrayElements(0, n*6, 0);
     }
+    if (program != NULL) rbl__markDrawn(program);
 }
 
 // One pass over the uploaded quads: the runs in order, or (sorted) each stretch of consecutive
@@ -4087,7 +4384,12 @@ static void rbl__drawBatchPass(const rbl__BatchState *batch, bool sorted, const 
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
-    if ((batch == NULL) || !batch->begun) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : "no RblBeginBatch in progress"); return; }
+    if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+                 "the batch began in another pass (shadow map, G-buffer or colour): end it in the pass it began in");
+        return;
+    }
     batch->begun = false;
     if ((pub->sort < RBL_SORT_NONE) || (pub->sort > RBL_SORT_HYBRID) || !rbl__finite(pub->solidAlpha) || (pub->solidAlpha < 0.0f) || (pub->solidAlpha > 1.0f))
     {
@@ -4163,10 +4465,10 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     RblBatch *immediate = &rbl__state.immediate;
     // Everything is checked before the one-quad batch is touched (or created on first use)
     rbl__Program *program = NULL;
-    int texW, texH;
-    rbl__albedoSize(&material, &texW, &texH);
+    int texW = 1, texH = 1;
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
                       rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program);
+    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);
     if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
     if (immediate->state == NULL)
@@ -4179,23 +4481,39 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     rbl__endBatch(immediate, "RblDrawBillboard");
 }
 
+// After RblClose, the module's tables go with the last object the caller still holds (nothing loaded
+// and no lit program left): the next load starts afresh
+static void rbl__tidyAfterClose(void)
+{
+    if (!rbl__state.closed || (rbl__state.programCount > 0)) return;
+    for (int i = 0; i < rbl__state.liveCount; i++) if (rbl__state.live[i].id != 0) return;
+    for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
+    RBL_FREE(rbl__state.quarantine);
+    RBL_FREE(rbl__state.dead);
+    RBL_FREE(rbl__state.programs);
+    RBL_FREE(rbl__state.live);
+    memset(&rbl__state, 0, sizeof(rbl__state));
+}
+
 void RblClose(void)
 {
+    // The header's own resources go now (GL objects only while a context exists); what the caller
+    // holds (batches, instance buffers, G-buffers, shadow maps) stays valid until its own unload, before
+    // or after this, before or after CloseWindow
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
-    // Programs still held: deleted with their holders' locations (call RblClose after your own
-    // UnloadMaterial/RblUnloadLitShader calls: a Shader unloaded afterwards would be freed twice)
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-    {
-        rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs == 0) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
-        UnloadShader(p->shader);
-    }
-    for (int i = 0; i < rbl__state.handleCount; i++) MemFree(rbl__state.handles[i].locs);
-    RBL_FREE(rbl__state.handles);
-    RBL_FREE((void *)rbl__state.live);
+    rbl__releaseCapture();
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
-    memset(&rbl__state, 0, sizeof(rbl__state));
+    memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
+    // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
+    // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
+    for (int i = rbl__state.programCount - 1; i >= 0; i--)
+        if (rbl__state.programs[i]->key.kind == RBL__KIND_LIT) rbl__removeProgram(rbl__state.programs[i]);
+    for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
+    RBL_FREE(rbl__state.quarantine); RBL_FREE(rbl__state.dead);
+    rbl__state.quarantine = NULL; rbl__state.dead = NULL;
+    rbl__state.quarantineCount = rbl__state.quarantineCapacity = rbl__state.deadCount = rbl__state.deadCapacity = 0;
+    rbl__state.closed = true;
+    rbl__tidyAfterClose();
 }
 
 //----------------------------------------------------------------------------------
@@ -4222,6 +4540,7 @@ static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
 
 static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 {
+    if (!rbl__glUsable()) b->vaoId = b->vboId = b->fadeVboId = 0;        // gone with the context
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
     if (b->fadeVboId != 0) rlUnloadVertexBuffer(b->fadeVboId);
@@ -4235,7 +4554,7 @@ static void rbl__freeInstanceState(rbl__InstanceBufferState *b)
 // The state of a loaded instance buffer, or NULL (never dereferences a stale copy's pointer)
 static rbl__InstanceBufferState *rbl__instanceState(const RblInstanceBuffer *buffer)
 {
-    return ((buffer != NULL) && rbl__isLive(buffer->state))? buffer->state : NULL;
+    return ((buffer != NULL) && rbl__isLive(buffer->id, buffer->state))? buffer->state : NULL;
 }
 
 RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
@@ -4255,7 +4574,8 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     }
     b->capacity = capacity;
     rbl__loadInstanceGpu(b);
-    if ((b->vaoId == 0) || (b->vboId == 0) || !rbl__liveAdd(b))
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadInstanceBuffer: GPU buffers could not be created (no GL context?)");
         rbl__freeInstanceState(b);
@@ -4263,6 +4583,7 @@ RblInstanceBuffer RblLoadInstanceBuffer(int capacity)
     }
     buffer.capacity = capacity;
     buffer.state = b;
+    buffer.id = id;
     return buffer;
 }
 
@@ -4273,10 +4594,11 @@ bool RblIsInstanceBufferValid(RblInstanceBuffer buffer)
 
 void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer)
 {
-    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
-    rbl__liveRemove(buffer->state);
+    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->id : 0, (buffer != NULL)? buffer->state : NULL, "RblUnloadInstanceBuffer", "instance buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
+    rbl__liveRemove(buffer->id);
     rbl__freeInstanceState(buffer->state);
     memset(buffer, 0, sizeof(*buffer));
+    rbl__tidyAfterClose();
 }
 
 // The 12 floats (position .. source) hold no NaN, Inf or |value| >= 2^120
@@ -4372,11 +4694,15 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
     if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID))
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID) ||
+        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
     {
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i or NaN/Inf vectors)", desc.facing, desc.sort);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i, NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
         return 0;
     }
+    // Directions only (FIXED up and normal, AXIS axis): long ones scaled, as the CPU does
+    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
+    desc.axis = rbl__tame(desc.axis);
     rbl__Program *checked = NULL;
     const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
@@ -4486,7 +4812,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
         desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
-        desc.axis.x, desc.axis.y, desc.axis.z, (camera.projection == CAMERA_ORTHOGRAPHIC)? 1.0f : 0.0f,
+        desc.axis.x, desc.axis.y, desc.axis.z, view.orthographic? 1.0f : 0.0f,
         rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
     // Quads seen from behind are drawn, as in the batch: culling off for this draw only
     bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
@@ -4513,6 +4839,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
     else rlDrawVertexArrayInstanced(0, 6, n);
+    rbl__markDrawn(program);
     if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
@@ -4915,6 +5242,11 @@ static double rbl__srgbToLinear(double s)
     return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4);
 }
 
+static double rbl__linearToSrgb(double l)
+{
+    return (l <= 0.0031308)? 12.92*l : 1.055*pow(l, 1.0/2.4) - 0.055;
+}
+
 // Exact 8-bit sRGB: decode table, and the linear values halfway between consecutive codes
 // (encoding = how many midpoints lie below the value: round-to-nearest in the sRGB domain)
 typedef struct rbl__Srgb {
@@ -4979,9 +5311,11 @@ static void rbl__mipTaps(int srcSize, int dstSize, rbl__Taps *taps)
 }
 
 // Colour mip level (RGBA8 sRGB): RGB averaged in linear light, weighted by alpha when alphaWeighted
-// (transparent texels' colour does not darken or tint the edges of cut-outs), alpha averaged linearly
+// (transparent texels' colour does not darken or tint the edges of cut-outs), alpha averaged linearly.
+// premultiplied: texels hold sRGB colour x alpha; each is divided back, averaged as above, and the
+// level stored premultiplied again (the same weighted mean as straight texels give)
 static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char *dst, int dw, int dh,
-                                 const rbl__Taps *tx, const rbl__Taps *ty, const rbl__Srgb *srgb, bool alphaWeighted)
+                                 const rbl__Taps *tx, const rbl__Taps *ty, const rbl__Srgb *srgb, bool alphaWeighted, bool premultiplied)
 {
     for (int y = 0; y < dh; y++)
     {
@@ -4997,7 +5331,7 @@ static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char
                     float w = ty[y].w[j]*tx[x].w[i], a = p[3]/255.0f;
                     for (int k = 0; k < 3; k++)
                     {
-                        float l = srgb->toLinear[p[k]];
+                        float l = !premultiplied? srgb->toLinear[p[k]] : ((p[3] > 0)? (float)rbl__srgbToLinear(fmin((double)p[k]/p[3], 1.0)) : 0.0f);
                         sum[k] += w*l;
                         sumA[k] += w*a*l;
                     }
@@ -5005,9 +5339,12 @@ static void rbl__downsampleColor(const unsigned char *src, int sw, unsigned char
                 }
             }
             unsigned char *out = dst + ((size_t)y*(size_t)dw + (size_t)x)*4;
-            for (int k = 0; k < 3; k++)
-                out[k] = rbl__linearToSrgb8(srgb, (alphaWeighted && (alpha > 0.0f))? sumA[k]/alpha : sum[k]);
             out[3] = rbl__unorm8(alpha);
+            for (int k = 0; k < 3; k++)
+            {
+                if (premultiplied) out[k] = (out[3] > 0)? rbl__unorm8(rbl__linearToSrgb(sumA[k]/alpha)*out[3]/255.0) : 0;
+                else out[k] = rbl__linearToSrgb8(srgb, (alphaWeighted && (alpha > 0.0f))? sumA[k]/alpha : sum[k]);
+            }
         }
     }
 }
@@ -5028,8 +5365,9 @@ static long long rbl__alphaCoverage(const unsigned char *rgba, size_t n, float c
 // "Computing alpha mipmaps", 2010): without it, averaging thins alpha-tested foliage and fences
 // level by level. With a' = min(255, round(a s)), exactly the texels with a >= k pass, for the k whose
 // boundary s maps onto the threshold: the histogram gives every reachable share, the closest to the
-// target is kept, and s puts k - 1/2 on t - 1/2 (between the two roundings). Colour is untouched.
-static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, double share0)
+// target is kept, and s puts k - 1/2 on t - 1/2 (between the two roundings). Colour is untouched
+// (premultiplied texels are scaled with their alpha, which keeps the colour they hold).
+static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, double share0, bool premultiplied)
 {
     size_t hist[256] = { 0 };
     for (size_t i = 0; i < n; i++) hist[rgba[i*4 + 3]]++;
@@ -5050,7 +5388,10 @@ static void rbl__keepAlphaCoverage(unsigned char *rgba, size_t n, float cutoff, 
     for (size_t i = 0; i < n; i++)
     {
         double a = floor(rgba[i*4 + 3]*scale + 0.5);
-        rgba[i*4 + 3] = (unsigned char)((a > 255.0)? 255.0 : a);
+        if (a > 255.0) a = 255.0;
+        if (premultiplied && (rgba[i*4 + 3] > 0))
+            for (int k = 0; k < 3; k++) { double c = floor(rgba[i*4 + k]*a/rgba[i*4 + 3] + 0.5); rgba[i*4 + k] = (unsigned char)((c > a)? a : c); }
+        rgba[i*4 + 3] = (unsigned char)a;
     }
 }
 
@@ -5409,17 +5750,17 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
             if (l > 0)
             {
                 // The level above is no longer a source once this one is built from it: scale it now
-                if ((l > 1) && coverageTarget >= 0.0) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget);
+                if ((l > 1) && coverageTarget >= 0.0) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget, source->premultipliedAlpha);
                 rbl__Taps *tx = taps, *ty = taps + w;
                 rbl__mipTaps(pw, w, tx);
                 rbl__mipTaps(ph, h, ty);
-                rbl__downsampleColor((unsigned char *)out.albedo.data + prevOffset*4, pw, albedoLevel, w, h, tx, ty, &srgb, true);
+                rbl__downsampleColor((unsigned char *)out.albedo.data + prevOffset*4, pw, albedoLevel, w, h, tx, ty, &srgb, true, source->premultipliedAlpha);
                 if (hasMaterial)
                     rbl__downsampleMaterial((unsigned char *)out.material.data + prevOffset*4, pw, materialLevel, w, h, tx, ty, encoding, hasNormal);
                 if (hasEmissive && emissiveMask)
                     rbl__downsampleLinear1((unsigned char *)out.emissive.data + prevOffset, pw, emissiveLevel, w, h, tx, ty);
                 else if (hasEmissive)
-                    rbl__downsampleColor((unsigned char *)out.emissive.data + prevOffset*4, pw, emissiveLevel, w, h, tx, ty, &srgb, false);
+                    rbl__downsampleColor((unsigned char *)out.emissive.data + prevOffset*4, pw, emissiveLevel, w, h, tx, ty, &srgb, false, false);
             }
             if (hasFrames)
             {
@@ -5438,12 +5779,13 @@ bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed)
             w = (w > 1)? w/2 : 1;
             h = (h > 1)? h/2 : 1;
         }
-        if ((levels > 1) && (coverageTarget >= 0.0)) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget);
+        if ((levels > 1) && (coverageTarget >= 0.0)) rbl__keepAlphaCoverage((unsigned char *)out.albedo.data + prevOffset*4, (size_t)pw*(size_t)ph, source->alphaCoverage, coverageTarget, source->premultipliedAlpha);
 
         out.layout.normalEncoding = hasNormal? encoding : RBL_NORMAL_NONE;
         out.layout.specular = hasSpecular;
         out.layout.occlusion = hasOcclusion;
         out.layout.emissive = !hasEmissive? RBL_EMISSIVE_NONE : (emissiveMask? RBL_EMISSIVE_MASK : RBL_EMISSIVE_RGB);
+        out.layout.premultipliedAlpha = source->premultipliedAlpha;
     }
     else
     {
@@ -5764,6 +6106,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->material.normalEncoding = m.normalEncoding;
     out->material.emissive = m.emissive;
     out->material.occlusion = m.occlusion;
+    out->material.premultipliedAlpha = m.premultipliedAlpha;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
     out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == 3));
     out->brdf = in.brdf;
@@ -5805,69 +6148,190 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
     if ((n > 0) && ((size_t)n < size) && d->softParticles) n += snprintf(out + n, size - (size_t)n, "#define RBL_SOFT_PARTICLES\n");
     if ((n > 0) && ((size_t)n < size) && d->crossFade) n += snprintf(out + n, size - (size_t)n, "#define RBL_CROSS_FADE\n");
+    if ((n > 0) && ((size_t)n < size) && m->premultipliedAlpha) n += snprintf(out + n, size - (size_t)n, "#define RBL_PREMULTIPLIED_ALPHA\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
 //----------------------------------------------------------------------------------
 // Module Internal Functions: the program registry
 //----------------------------------------------------------------------------------
-// Every program the header compiles is one registry entry, keyed by what changes the code; raylib's
-// UnloadShader (as UnloadMaterial calls it) may delete a lit program behind the registry's back, so
-// entries handed to users are checked before use (a deleted or reused id no longer answers with the
-// registry's location of rblAlphaCutoff, which every lit and caster variant declares)
+// Every program the header compiles is one registry entry, keyed by what changes the code. Lit
+// programs go out one per RblLoadLitShader call, each its own GL program, so raylib's UnloadShader
+// or UnloadMaterial on one copy deletes that program alone (as with raylib's LoadShader); casters
+// and G-buffer passes are the header's own, shared by key among their holders. raylib may delete a
+// lit program behind the registry's back: an entry is checked against GL before a draw uses it.
+
+// GL name queries rlgl does not wrap, through raylib's loader (desktop, ES and WebGL all have them)
+typedef unsigned char (RBL__GLAPI *rbl__GlIsName)(unsigned int name);
+enum { RBL__GL_PROGRAM = 0, RBL__GL_TEXTURE, RBL__GL_VERTEX_ARRAY, RBL__GL_QUERIES };
+
+// Whether name is a live GL object of that kind; true where the loader gives no query (cannot tell)
+static bool rbl__glIsLive(int which, unsigned int name)
+{
+    if (name == 0) return false;
+    if (!rbl__glUsable()) return true;          // no context to ask
+    // rlGetProcAddress calls raylib's loader, which exists once rlgl is up (its default texture made)
+    if (!rbl__state.glLooked && (rbl__glsl() != 0) && (rlGetTextureIdDefault() != 0))
+    {
+        rbl__state.glIs[RBL__GL_PROGRAM] = rlGetProcAddress("glIsProgram");
+        rbl__state.glIs[RBL__GL_TEXTURE] = rlGetProcAddress("glIsTexture");
+        rbl__state.glIs[RBL__GL_VERTEX_ARRAY] = (rbl__glsl() >= 300)? rlGetProcAddress("glIsVertexArray") : NULL;
+        rbl__state.glGetUniformfv = rlGetProcAddress("glGetUniformfv");
+        rbl__state.glLooked = true;
+    }
+    if (rbl__state.glIs[which] == NULL) return true;
+    rbl__GlIsName is;
+    memcpy(&is, &rbl__state.glIs[which], sizeof(is));       // ISO C: no cast between object and function pointers
+    return is(name) != 0;
+}
+
+// A lit program is live while GL still has it as the header compiled it: a deleted id, or one GL
+// gave to another program since, no longer answers with the registry's location of rblAlphaCutoff
+// (every lit and caster variant declares it). Casters and passes never leave the header.
 static bool rbl__programAlive(const rbl__Program *p)
 {
-    if (p->key.kind == RBL__KIND_PASS) return true;         // never handed out
-    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
+    if ((p->key.kind != RBL__KIND_LIT) || !rbl__glUsable()) return true;     // no context: nothing to ask
+    return (p->loc[RBL__U_ALPHA_CUTOFF] != -1) && rbl__glIsLive(RBL__GL_PROGRAM, p->shader.id) &&
+           (rlGetLocationUniform(p->shader.id, "rblAlphaCutoff") == p->loc[RBL__U_ALPHA_CUTOFF]);
 }
 
-// Forget handles of program id (their locs were freed with it, or belong to holders who unload them)
-static void rbl__dropHandles(unsigned int id)
+// raylib's DrawModel/DrawMesh upload a lit program's colDiffuse, matrices and textures, none of the
+// header's material values. Each header draw leaves a sentinel in the program's mvp (raylib's draws
+// always overwrite it) and the next header use reads it back: anything else means raylib drew with
+// the program since, with the values the last header draw left (said once a program)
+typedef void (RBL__GLAPI *rbl__GlGetUniformfv)(unsigned int program, int location, float *params);
+static Matrix rbl__mvpSentinel(void)
 {
-    int n = 0;
-    for (int i = 0; i < rbl__state.handleCount; i++) if (rbl__state.handles[i].id != id) rbl__state.handles[n++] = rbl__state.handles[i];
-    rbl__state.handleCount = n;
+    Matrix m;
+    memset(&m, 0, sizeof(m));
+    m.m15 = -8.125f;
+    return m;
 }
 
-// A program deleted outside the header: its entry goes (the GL name is not deleted again)
+// After a header draw with p (bound): the sentinel
+static void rbl__markDrawn(const rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind == RBL__KIND_LIT) && !p->raylibNoted && (loc != -1)) rlSetUniformMatrix(loc, rbl__mvpSentinel());
+}
+
+// Before a header use of p: whether raylib drew with it since the last header draw
+static void rbl__checkRaylibDrew(rbl__Program *p)
+{
+    int loc = p->shader.locs[SHADER_LOC_MATRIX_MVP];
+    if ((p->key.kind != RBL__KIND_LIT) || p->raylibNoted || (loc == -1) || (rbl__state.glGetUniformfv == NULL) || !rbl__glUsable()) return;
+    rbl__GlGetUniformfv get;
+    memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
+    float m[16];
+    get(p->shader.id, loc, m);
+    bool sentinel = (m[15] == -8.125f);
+    for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
+    if (sentinel) return;
+    TraceLog(LOG_WARNING, "RBL: lit program %u was drawn by raylib's DrawModel/DrawMesh, which uploads colDiffuse, matrices and textures only: "
+                          "roughness, metalness, shininess, specular, emission and alpha cutoff were the last header draw's (draw Models with RblDrawModel/RblDrawMesh)", p->shader.id);
+    p->raylibNoted = true;
+}
+
+static bool rbl__buried(unsigned int id, const int *locs)
+{
+    for (int i = 0; i < rbl__state.deadCount; i++) if ((rbl__state.dead[i].id == id) && (rbl__state.dead[i].locs == locs)) return true;
+    return false;
+}
+
+// Remembers a dead handle so its copies are refused (out of memory: forgotten, the GL probe remains)
+static void rbl__bury(unsigned int id, const int *locs)
+{
+    if (rbl__buried(id, locs)) return;
+    if (rbl__state.deadCount == rbl__state.deadCapacity)
+    {
+        int capacity = (rbl__state.deadCapacity > 0)? rbl__state.deadCapacity*2 : 16;
+        rbl__DeadHandle *dead = (rbl__DeadHandle *)RBL_REALLOC(rbl__state.dead, (size_t)capacity*sizeof(rbl__DeadHandle));
+        if (dead == NULL) return;
+        rbl__state.dead = dead;
+        rbl__state.deadCapacity = capacity;
+    }
+    rbl__state.dead[rbl__state.deadCount].id = id;
+    rbl__state.dead[rbl__state.deadCount].locs = locs;
+    rbl__state.deadCount++;
+}
+
+// Takes entry p (allocated) out of the registry and frees it and its registry locs
+static void rbl__removeProgram(rbl__Program *p)
+{
+    for (int i = 0; i < rbl__state.programCount; i++)
+    {
+        if (rbl__state.programs[i] != p) continue;
+        rbl__state.programs[i] = rbl__state.programs[--rbl__state.programCount];
+        break;
+    }
+    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
+    RBL_FREE(p);
+}
+
+// A lit program deleted outside the header (raylib's UnloadShader or UnloadMaterial: allowed): its
+// entry goes, its handle is remembered as dead, the GL name is not deleted again
 static void rbl__forgetProgram(rbl__Program *p)
 {
-    TraceLog(LOG_INFO, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
-    rbl__dropHandles(p->shader.id);
-    if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
-    memset(p, 0, sizeof(*p));
+    TraceLog(LOG_DEBUG, "RBL: lit program %u was unloaded outside the header (UnloadMaterial/UnloadShader): forgotten", p->shader.id);
+    if (p->key.kind == RBL__KIND_LIT) rbl__bury(p->shader.id, p->handleLocs);
+    rbl__removeProgram(p);
 }
 
-// Registered lit program id (kind LIT), or NULL. probe: also ask GL that it is still the header's
-// program (loads, scenes and validity checks; draws skip the query, a GL round trip each: a program
-// deleted by raylib's UnloadMaterial went with that Material, and the next load or scene notices)
-static rbl__Program *rbl__findLit(unsigned int id, bool probe)
+// Registered lit program id, or NULL (not checked against GL: rbl__resolveShader does that)
+static rbl__Program *rbl__findLit(unsigned int id)
 {
-    if (id == 0) return NULL;
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; (id != 0) && (i < rbl__state.programCount); i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != RBL__KIND_LIT)) continue;
-        if (probe && !rbl__programAlive(p)) { rbl__forgetProgram(p); return NULL; }
-        return p;
+        rbl__Program *p = rbl__state.programs[i];
+        if ((p->shader.id == id) && (p->key.kind == RBL__KIND_LIT)) return p;
     }
+    return NULL;
+}
+
+// What a Material's shader is to the header: one of its live lit programs (*program), another live
+// program (the caller's own, drawn as raylib would: *program NULL), or not drawable (the reason).
+// Only the Shader's id and locs pointer are compared: a lit program's locs are the registry's.
+static const char *rbl__resolveShader(Shader shader, rbl__Program **program)
+{
+    *program = NULL;
+    if (shader.id == 0) return "the material has no shader (id 0: a zero Material, or a lit program that failed to load or was unloaded)";
+    rbl__Program *p = rbl__findLit(shader.id);
+    if ((p != NULL) && !rbl__programAlive(p)) { rbl__forgetProgram(p); p = NULL; }
+    if (p != NULL)
+    {
+        if (p->handleLocs == shader.locs) { *program = p; return NULL; }
+        return "the shader carries a live lit program's id but not its handle (a stale copy, or a Shader assembled by hand)";
+    }
+    if (rbl__buried(shader.id, shader.locs)) return "a stale copy of a lit shader unloaded earlier (RblUnloadLitShader, UnloadShader or UnloadMaterial)";
+    if (!rbl__glIsLive(RBL__GL_PROGRAM, shader.id)) return "the shader's program does not exist (unloaded?)";
+    if (shader.locs == NULL) return "the shader has no locations (locs NULL)";
     return NULL;
 }
 
 static void rbl__uploadScene(rbl__Program *p);
 
-// Compile a program for key into a free registry slot; NULL (logged) on failure
+// Compile a program for key into a new registry entry; NULL (problem set) on failure
 static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
 {
-    int slot = -1;
-    for (int i = 0; (i < RBL_SHADER_CACHE_SIZE) && (slot < 0); i++) if (rbl__state.programs[i].refs == 0) slot = i;
-    if (slot < 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (rbl__state.programCount >= RBL_SHADER_CACHE_SIZE) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "program registry full (RBL_SHADER_CACHE_SIZE = %i programs)", RBL_SHADER_CACHE_SIZE); return NULL; }
+    if (rbl__state.programCount == rbl__state.programCapacity)
+    {
+        int capacity = (rbl__state.programCapacity > 0)? rbl__state.programCapacity*2 : 16;
+        rbl__Program **programs = (rbl__Program **)RBL_REALLOC(rbl__state.programs, (size_t)capacity*sizeof(rbl__Program *));
+        if (programs == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
+        rbl__state.programs = programs;
+        rbl__state.programCapacity = capacity;
+    }
+    rbl__Program *p = (rbl__Program *)RBL_CALLOC(1, sizeof(rbl__Program));
+    if (p == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
     const RblLitShaderDesc *d = &key->desc;
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
-    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) return NULL;
+    if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
-    if (key->kind == RBL__KIND_PASS)
+    if (key->kind == RBL__KIND_COMPOSITE)
+        shader = rbl__loadShaderVariant(rbl__pass_scene_composite_vs, rbl__pass_scene_composite_fs, (rbl__glsl() == 100)? "#extension GL_EXT_frag_depth : enable\n" : "");
+    else if (key->kind == RBL__KIND_PASS)
     {
         static const char *const *const *const vs[RBL__PASS_COUNT] = { rbl__pass_fullscreen_vs, rbl__pass_volume_vs, rbl__pass_fullscreen_vs, rbl__pass_fullscreen_vs, rbl__pass_volume_vs };
         static const char *const *const *const fs[RBL__PASS_COUNT] = { rbl__pass_deferred_fullscreen_fs, rbl__pass_deferred_volume_fs, rbl__pass_deferred_resolve_fs,
@@ -5884,14 +6348,14 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
         const char *const *const *fs = (key->kind == RBL__KIND_CASTER)? rbl__pass_shadow_caster_fs : (d->deferred? rbl__pass_gbuffer_fs : rbl__pass_lit_fs);
         shader = rbl__loadShaderVariant(d->instanced? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs, fs, defines);
     }
-    if (shader.id == 0) return NULL;
+    if (shader.id == 0) { RBL_FREE(p); return NULL; }
     // GL hands out the names of deleted programs again: an entry still holding this id was deleted
     // outside the header
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == shader.id)) rbl__forgetProgram(&rbl__state.programs[i]);
+    for (int i = 0; i < rbl__state.programCount; i++)
+        if (rbl__state.programs[i]->shader.id == shader.id) { rbl__forgetProgram(rbl__state.programs[i]); i--; }
 
-    rbl__Program *p = &rbl__state.programs[slot];
-    memset(p, 0, sizeof(*p));
+    rbl__state.programs[rbl__state.programCount++] = p;
+    rbl__state.closed = false;      // used again after RblClose
     p->key = *key;
     p->shader = shader;
     // Samplers exist only where the layout uses them (-1 otherwise), so nothing absent is bound
@@ -5905,10 +6369,6 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
     rlEnableShader(shader.id);
-    // Until a draw of ours uploads a material's values (raylib's DrawModel uploads none), nothing is
-    // cut: the alpha band's ceiling is above every alpha
-    float band[2] = { 0.0f, 2.0f };
-    if (p->loc[RBL__U_ALPHA_CUTOFF] != -1) rlSetUniform(p->loc[RBL__U_ALPHA_CUTOFF], band, SHADER_UNIFORM_VEC2, 1);
     if (d->softParticles)
     {
         int unit = RBL_SCENE_DEPTH_TEXTURE_UNIT;
@@ -5925,39 +6385,51 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     }
     int none[4] = { -1, -1, -1, -1 };
     if (p->loc[RBL__U_SHADOW_LIGHT] != -1) rlSetUniform(p->loc[RBL__U_SHADOW_LIGHT], none, SHADER_UNIFORM_IVEC4, 1);
+    rbl__markDrawn(p);
     float one = 1.0f, up[3] = { 0.0f, 1.0f, 0.0f };
     if (p->loc[RBL__U_EXPOSURE] != -1) rlSetUniform(p->loc[RBL__U_EXPOSURE], &one, SHADER_UNIFORM_FLOAT, 1);
     if (p->loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(p->loc[RBL__U_AMBIENT_UP], up, SHADER_UNIFORM_VEC3, 1);
+    // A default Material's values (its zero fields), so raylib's DrawModel of such materials draws as
+    // the header's own draws would
+    if ((key->kind == RBL__KIND_LIT) || (key->kind == RBL__KIND_CASTER))
+    {
+        MaterialMap defaults[RBL__RAYLIB_MATERIAL_MAPS];
+        Material none;
+        memset(defaults, 0, sizeof(defaults));
+        memset(&none, 0, sizeof(none));
+        none.maps = defaults;
+        rbl__applyMaterialValues(p, &none);
+    }
     rlDisableShader();
     rbl__uploadScene(p);            // a program loaded mid-frame draws with the current scene
     return p;
 }
 
-// Entry for key: the registry's (one more holder) or a new compile; NULL (logged) on failure
+// The header's own program for key (casters, passes): the registry's (one more holder) or a new
+// compile; NULL (problem set) on failure
 static rbl__Program *rbl__acquireProgram(const rbl__ProgramKey *key)
 {
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (memcmp(&p->key, key, sizeof(*key)) != 0)) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); break; }
+        rbl__Program *p = rbl__state.programs[i];
+        if (memcmp(&p->key, key, sizeof(*key)) != 0) continue;
         p->refs++;
         return p;
     }
     return rbl__compileProgram(key);
 }
 
-// One holder fewer; the last one deletes the program
+// One holder fewer of a caster or pass; the last one deletes the program
 static void rbl__releaseProgram(unsigned int id, int kind)
 {
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs == 0) || (p->shader.id != id) || (p->key.kind != kind)) continue;
+        rbl__Program *p = rbl__state.programs[i];
+        if ((p->shader.id != id) || (p->key.kind != kind)) continue;
         if (--p->refs == 0)
         {
-            UnloadShader(p->shader);
-            memset(p, 0, sizeof(*p));
+            if (rbl__glUsable()) rlUnloadShaderProgram(p->shader.id);
+            rbl__removeProgram(p);
         }
         return;
     }
@@ -5981,61 +6453,78 @@ Shader RblLoadLitShader(RblLitShaderDesc desc)
     RblLitShaderDesc normalised;
     const char *bad = rbl__normaliseLitDesc(desc, &normalised);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad); return none; }
-    if (rbl__state.handleCount == rbl__state.handleCapacity)
-    {
-        int capacity = (rbl__state.handleCapacity > 0)? rbl__state.handleCapacity*2 : 16;
-        rbl__Handle *handles = (rbl__Handle *)RBL_REALLOC(rbl__state.handles, (size_t)capacity*sizeof(rbl__Handle));
-        if (handles == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
-        rbl__state.handles = handles;
-        rbl__state.handleCapacity = capacity;
-    }
-    // The holder's own copy of the locations: raylib's UnloadShader frees a Shader's locs, so no two
-    // holders may share one array (raylib's allocator, since raylib frees it)
-    int *locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
-    if (locs == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory"); return none; }
     rbl__ProgramKey key;
     rbl__keyFromDesc(&normalised, RBL__KIND_LIT, 0, &key);
-    rbl__Program *p = rbl__acquireProgram(&key);
-    if (p == NULL) { MemFree(locs); TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
+    rbl__Program *p = rbl__compileProgram(&key);
+    if (p == NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", rbl__state.problem); return none; }
+    // The holder's own copy of the locations (raylib's UnloadShader frees a Shader's locs: raylib's
+    // allocator). An address a dead handle of this id had is skipped, so its stale copies stay stale.
+    int *locs = NULL, *spare[8];
+    int spares = 0;
+    while (spares < 8)
+    {
+        locs = (int *)MemAlloc(RL_MAX_SHADER_LOCATIONS*sizeof(int));
+        if ((locs == NULL) || !rbl__buried(p->shader.id, locs)) break;
+        spare[spares++] = locs;
+        locs = NULL;
+    }
+    for (int i = 0; i < spares; i++) MemFree(spare[i]);
+    if (locs == NULL)
+    {
+        rlUnloadShaderProgram(p->shader.id);
+        rbl__removeProgram(p);
+        TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: out of memory");
+        return none;
+    }
     memcpy(locs, p->shader.locs, RL_MAX_SHADER_LOCATIONS*sizeof(int));
-    rbl__state.handles[rbl__state.handleCount].locs = locs;
-    rbl__state.handles[rbl__state.handleCount].id = p->shader.id;
-    rbl__state.handleCount++;
+    p->handleLocs = locs;
     Shader shader;
     shader.id = p->shader.id;
     shader.locs = locs;
     return shader;
 }
 
-// Index of the live handle shader is, or -1
-static int rbl__findHandle(Shader shader)
-{
-    if ((shader.id == 0) || (shader.locs == NULL)) return -1;
-    for (int i = 0; i < rbl__state.handleCount; i++)
-        if ((rbl__state.handles[i].locs == shader.locs) && (rbl__state.handles[i].id == shader.id)) return i;
-    return -1;
-}
-
 bool RblIsLitShaderValid(Shader shader)
 {
-    if (rbl__findLit(shader.id, true) == NULL) return false;     // forgets a deleted program and its handles
-    return rbl__findHandle(shader) >= 0;
+    rbl__Program *p = NULL;
+    return (rbl__findLit(shader.id) != NULL) && (rbl__resolveShader(shader, &p) == NULL) && (p != NULL);
 }
 
 void RblUnloadLitShader(Shader *shader)
 {
     if (shader == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: NULL shader"); return; }
-    rbl__findLit(shader->id, true);             // forgets the program (and its handles) if it was deleted outside
-    int h = rbl__findHandle(*shader);
-    if (h < 0)
+    rbl__Program *p = NULL;
+    const char *bad = rbl__resolveShader(*shader, &p);
+    if ((bad == NULL) && (p == NULL))
     {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u is not a live lit program handle (already unloaded, or a stale copy)", shader->id);
-        return;
+        // A lit program RblClose handed to its holder is a plain raylib Shader: released as
+        // UnloadShader would (after CloseWindow its program went with the context)
+        bool gl = rbl__glUsable();
+        if (gl && (rlGetLocationUniform(shader->id, "rblAlphaCutoff") == -1)) bad = "not a lit program of this header";
+        else
+        {
+            if (gl) rlUnloadShaderProgram(shader->id);
+            MemFree(shader->locs);
+            memset(shader, 0, sizeof(*shader));
+            return;
+        }
     }
-    rbl__releaseProgram(shader->id, RBL__KIND_LIT);
-    MemFree(rbl__state.handles[h].locs);
-    rbl__state.handles[h] = rbl__state.handles[--rbl__state.handleCount];
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadLitShader: shader %u: %s", shader->id, bad); return; }
+    // The locations array stays allocated (quarantine) until RblClose: no later allocation can take
+    // its address while a stale copy holds it
+    if (rbl__state.quarantineCount == rbl__state.quarantineCapacity)
+    {
+        int capacity = (rbl__state.quarantineCapacity > 0)? rbl__state.quarantineCapacity*2 : 16;
+        int **q = (int **)RBL_REALLOC(rbl__state.quarantine, (size_t)capacity*sizeof(int *));
+        if (q != NULL) { rbl__state.quarantine = q; rbl__state.quarantineCapacity = capacity; }
+    }
+    if (rbl__state.quarantineCount < rbl__state.quarantineCapacity) rbl__state.quarantine[rbl__state.quarantineCount++] = shader->locs;
+    else MemFree(shader->locs);
+    rbl__bury(p->shader.id, p->handleLocs);
+    if (rbl__glUsable()) rlUnloadShaderProgram(p->shader.id);
+    rbl__removeProgram(p);
     memset(shader, 0, sizeof(*shader));
+    rbl__tidyAfterClose();
 }
 
 static bool rbl__lightFeatureOf(const RblLight *l, int *features)
@@ -6049,7 +6538,11 @@ static bool rbl__lightFeatureOf(const RblLight *l, int *features)
 int RblLightFeatures(const RblLight *lights, int count)
 {
     int features = 0;
-    if ((count < 0) || ((count > 0) && (lights == NULL))) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i with lights %p", count, (const void *)lights); return 0; }
+    if ((count < 0) || (count > RBL_MAX_SCENE_LIGHTS) || ((count > 0) && (lights == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i outside 0..RBL_MAX_SCENE_LIGHTS (%i) or lights NULL", count, RBL_MAX_SCENE_LIGHTS);
+        return 0;
+    }
     for (int i = 0; i < count; i++)
         if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: light %i has an unknown type or falloff", i); return 0; }
     return features;
@@ -6117,26 +6610,28 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
 }
 
-// The program of a header draw: inside a shadow pass the caster (the material keeps only its albedo
-// map, never another slot that could hold the very depth texture being written, and its alpha
-// cutoff, so a sprite's silhouette casts); elsewhere the material's own program, checked against the
-// pass in progress. *program = NULL for a shader that is not the header's (drawn as raylib would).
-// false = refused, with one log line.
-// Why a material cannot draw in the current pass through a path (instanced or not); NULL = it can.
-// No side effect: the draw calls ask before they touch any state.
+
+// Why a material cannot draw in the current pass through a path; NULL = it can, with *program its
+// lit program (NULL: the caller's own shader, drawn as raylib would). The shader is resolved before
+// anything else of the Material is read (a stale copy's maps went with its program), then the maps:
+// present, and every texture a draw binds still alive. No side effect: draws ask before touching state.
 static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program)
 {
     bool instanced = (path == RBL__PATH_INSTANCED);
+    rbl__Program *p = NULL;
     *program = NULL;
-    if (material->maps != NULL)
-    {
-        Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
-        if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
-            return "the albedo texture's size is outside 1..65536";
-    }
+    const char *bad = rbl__resolveShader(material->shader, &p);
+    if (bad != NULL) return bad;
+    if (material->maps == NULL) return "the material's maps are NULL (a zero Material?)";
+    Texture2D t = material->maps[MATERIAL_MAP_ALBEDO].texture;
+    if ((t.id != 0) && ((t.width <= 0) || (t.height <= 0) || (t.width > RBL__MAX_TEXTURE_SIDE) || (t.height > RBL__MAX_TEXTURE_SIDE)))
+        return "the albedo texture's size is outside 1..65536";
+    // Billboard paths bind albedo .. emission; raylib's DrawMesh every map with a texture
+    int slots = ((path == RBL__PATH_MESH) || (path == RBL__PATH_SKINNED))? RBL__RAYLIB_MATERIAL_MAPS : MATERIAL_MAP_EMISSION + 1;
+    for (int i = 0; i < slots; i++)
+        if ((material->maps[i].texture.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, material->maps[i].texture.id))
+            return "a texture in the material's maps does not exist (unloaded?)";
     if (rbl__state.shadowPass != NULL) return NULL;        // every material casts through the header's casters
-    if ((material->shader.id == 0) || (material->shader.locs == NULL)) return "the material has no shader (a zero Material, or a lit program that failed to load or was unloaded)";
-    rbl__Program *p = rbl__findLit(material->shader.id, false);
     const RblGBuffer *g = rbl__state.gbufferPass;
     if (p == NULL)
     {
@@ -6157,12 +6652,15 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
     return NULL;
 }
 
-static rbl__Program *rbl__findCaster(unsigned int id)
+// Registry entry of the header's own program id of that kind (caster or pass), or NULL
+static rbl__Program *rbl__findOwn(unsigned int id, int kind)
 {
-    for (int i = 0; (id != 0) && (i < RBL_SHADER_CACHE_SIZE); i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == id) && (rbl__state.programs[i].key.kind == RBL__KIND_CASTER)) return &rbl__state.programs[i];
+    for (int i = 0; (id != 0) && (i < rbl__state.programCount); i++)
+        if ((rbl__state.programs[i]->shader.id == id) && (rbl__state.programs[i]->key.kind == kind)) return rbl__state.programs[i];
     return NULL;
 }
+
+static rbl__Program *rbl__findCaster(unsigned int id) { return rbl__findOwn(id, RBL__KIND_CASTER); }
 
 // The skinned caster, compiled on the first GPU-skinned mesh of a shadow pass and held (one holder)
 // until the last shadow map goes; NULL (problem set) when it cannot compile
@@ -6205,7 +6703,16 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
 // fade distance
 static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
 {
-    const rbl__Scene *sc = &rbl__state.scene;
+    rbl__Scene *sc = &rbl__state.scene;
+    // No depth in the scene: the last RblEndSceneDepth's (the same size as the target drawn into)
+    const bool captured = (sc->depth.id == 0) && rbl__state.capture.shown;
+    if (captured) sc->depth = rbl__state.capture.target.depth;
+    if ((sc->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, sc->depth.id))
+    {
+        if (!sc->depthNoted) TraceLog(LOG_WARNING, "RBL: the scene's depth texture %u was unloaded after RblSetScene: soft particles draw unsoftened until the next RblSetScene", sc->depth.id);
+        sc->depthNoted = true;
+        memset(&sc->depth, 0, sizeof(sc->depth));
+    }
     Matrix proj = rlGetMatrixProjection();
     float fade = material->params[RBL_PARAM_SOFT_DISTANCE];
     if (!rbl__finite(fade) || (fade <= 0.0f)) fade = 0.5f;
@@ -6216,6 +6723,7 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     rlSetUniform(p->loc[RBL__U_SOFT_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
     rlSetUniform(p->loc[RBL__U_SOFT_TEXEL], texel, SHADER_UNIFORM_VEC2, 1);
     if (sc->depth.id != 0) { rlActiveTextureSlot(RBL_SCENE_DEPTH_TEXTURE_UNIT); rlEnableTexture(sc->depth.id); rlActiveTextureSlot(0); }
+    if (captured) memset(&sc->depth, 0, sizeof(sc->depth));
 }
 
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
@@ -6231,13 +6739,17 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
-        if (material->maps != NULL) casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
-        else casterMaps[MATERIAL_MAP_ALBEDO].color = WHITE;
+        casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
         material->shader = caster->shader;
         *program = caster;
+        return true;
     }
-    else if ((*program != NULL) && (*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
+    if (*program == NULL) return true;
+    rbl__checkRaylibDrew(*program);
+    material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
+    if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
+    if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     return true;
 }
 
@@ -6301,6 +6813,44 @@ static void rbl__bindSceneShadows(void)
 {
     for (int k = 0; k < rbl__state.scene.shadowCount; k++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + k); rlEnableTexture(rbl__state.scene.shadowTexture[k]); }
     rlActiveTextureSlot(0);
+}
+
+// A map the scene lists was unloaded: said once, at the first draw that would have sampled it
+static void rbl__noteDroppedShadow(void)
+{
+    if (rbl__state.scene.shadowDroppedNoted) return;
+    TraceLog(LOG_WARNING, "RBL: a shadow map of the scene was unloaded after RblSetScene: its light draws unshadowed until the next RblSetScene");
+    rbl__state.scene.shadowDroppedNoted = true;
+}
+
+static int rbl__uploadSceneInto(rbl__Program *p);
+
+// An unloaded shadow map leaves the scene at once, so no program samples its deleted texture; its
+// light draws unshadowed (noted at the next draw that would have used it)
+static void rbl__dropSceneShadow(unsigned int id)
+{
+    rbl__Scene *s = &rbl__state.scene;
+    int k = 0;
+    while ((k < s->shadowCount) && (s->shadowId[k] != id)) k++;
+    if (k == s->shadowCount) return;
+    for (int j = k; j + 1 < s->shadowCount; j++)
+    {
+        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1];
+        memcpy(s->shadowUniforms[j], s->shadowUniforms[j + 1], sizeof(s->shadowUniforms[j]));
+    }
+    s->shadowCount--;
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        float *map = &s->lights[i*RBL__LIGHT_FLOATS + 15];      // shadow map index + 1
+        if (*map == (float)(k + 1)) *map = 0.0f;
+        else if (*map > (float)(k + 1)) *map -= 1.0f;
+    }
+    s->shadowDropped = true;
+    s->shadowDroppedNoted = false;
+    if (!rbl__glUsable()) return;
+    rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + s->shadowCount); rlDisableTexture();
+    rbl__bindSceneShadows();
+    for (int i = 0; i < rbl__state.programCount; i++) rbl__uploadSceneInto(rbl__state.programs[i]);
 }
 
 // Shadow uniforms of program p: map k shadows light slot slotOf[k] (-1 = none)
@@ -6408,6 +6958,7 @@ bool RblSetScene(const RblScene *scene)
     else if (!rbl__finite3(scene->ambientUp) || ((rbl__len2(scene->ambientUp) != 0.0f) && !rbl__normalizeTo(scene->ambientUp, &up))) bad = "ambientUp not a finite direction";
     else if ((scene->depth.id != 0) && ((scene->depth.width <= 0) || (scene->depth.height <= 0) || (scene->depth.width > RBL_MAX_TARGET_SIZE) || (scene->depth.height > RBL_MAX_TARGET_SIZE)))
         bad = "depth texture size outside 1..RBL_MAX_TARGET_SIZE";
+    else if ((scene->depth.id != 0) && !rbl__glIsLive(RBL__GL_TEXTURE, scene->depth.id)) bad = "the depth texture does not exist (unloaded?)";
     else bad = rbl__checkShadowMaps(scene->shadowMaps, scene->shadowMapCount, scene->lightCount);
     rbl__Scene *s = &rbl__state.scene;
     // Packed storage grows to the largest scene (no allocation in a steady frame)
@@ -6469,22 +7020,25 @@ bool RblSetScene(const RblScene *scene)
     s->fogStart = (fog->mode == RBL_FOG_NONE)? 0.0f : fog->start;
     s->exposure = (scene->exposure == 0.0f)? 1.0f : scene->exposure;
     s->depth = scene->depth;
+    s->depthNoted = false;
     s->shadowCount = scene->shadowMapCount;
+    s->shadowDropped = s->shadowDroppedNoted = false;
     for (int k = 0; k < scene->shadowMapCount; k++)
     {
         const RblShadowMap *map = &scene->shadowMaps[k];
         rbl__shadowUniformData(map, s->shadowUniforms[k]);
         s->shadowLight[k] = map->light;
+        s->shadowId[k] = map->id;
         s->shadowTexture[k] = map->depth.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
     // Every live program now, so raylib's DrawModel/DrawMesh (which bind programs themselves) see it too
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs == 0) continue;
-        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); continue; }
+        rbl__Program *p = rbl__state.programs[i];
+        if (!rbl__programAlive(p)) { rbl__forgetProgram(p); i--; continue; }
+        rbl__checkRaylibDrew(p);
         int skipped = rbl__uploadSceneInto(p);
         if (skipped > 0)
             TraceLog(LOG_INFO, "RBL: RblSetScene: lit program %u lights %i of %i lights (maxLights %i, or types not in lightFeatures)",
@@ -6497,6 +7051,13 @@ bool RblSetScene(const RblScene *scene)
 // Why a mesh cannot be drawn with this transform; NULL = it can
 static const char *rbl__meshProblem(const Mesh *mesh, const Matrix *transform)
 {
+    // GL 3 / ES 3 draw through the mesh's vertex array (a core context has no other way): it must be
+    // a live one (UnloadMesh deletes it), which also vouches for the mesh's arrays read next
+    if (rbl__glsl() >= 300)
+    {
+        if (mesh->vaoId == 0) return "mesh has no vertex array (vaoId 0: not uploaded, or unloaded)";
+        if (!rbl__glIsLive(RBL__GL_VERTEX_ARRAY, mesh->vaoId)) return "mesh's vertex array does not exist (unloaded?)";
+    }
     if ((mesh->vertexCount <= 0) || ((mesh->vaoId == 0) && ((mesh->vboId == NULL) || (mesh->vboId[0] == 0)))) return "mesh not uploaded (no vertices, vaoId and vboId 0)";
     if (!rbl__exponentsBelow(transform, 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "transform with NaN/Inf or |value| >= 2^60";
     return NULL;
@@ -6560,6 +7121,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
         rbl__uploadBones(material.shader.locs[SHADER_LOC_MATRIX_BONETRANSFORMS], bones);
     }
     DrawMesh(mesh, material, transform);
+    if (p != NULL) { rlEnableShader(p->shader.id); rbl__markDrawn(p); rlDisableShader(); }
 }
 
 void RblDrawMesh(Mesh mesh, Material material, Matrix transform)
@@ -6601,7 +7163,6 @@ void RblDrawModel(Model model, Vector3 position, float scale, Color tint)
     {
         Material material = model.materials[model.meshMaterial[i]];
         int path = (bones && rbl__meshGpuSkinned(&model.meshes[i]))? RBL__PATH_SKINNED : RBL__PATH_MESH;
-        if (material.maps == NULL) { rbl__drawMesh(model.meshes[i], material, transform, path, &model); continue; }
         Color c = material.maps[MATERIAL_MAP_ALBEDO].color;
         Color tinted = { (unsigned char)((c.r*tint.r)/255), (unsigned char)((c.g*tint.g)/255), (unsigned char)((c.b*tint.b)/255), (unsigned char)((c.a*tint.a)/255) };
         material.maps[MATERIAL_MAP_ALBEDO].color = tinted;
@@ -6743,6 +7304,13 @@ static void rbl__loadVolumeMesh(RblGBuffer *g)
 
 static void rbl__unloadTargets(RblGBuffer *g)
 {
+    if (!rbl__glUsable())       // gone with the context
+    {
+        Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
+        for (int i = 0; i < 5; i++) memset(t[i], 0, sizeof(Texture2D));
+        g->state->id = 0; g->state->lightId = 0;
+        return;
+    }
     // rlUnloadFramebuffer deletes the depth texture attached to it (not the colour ones)
     if (g->state->id != 0) { rlUnloadFramebuffer(g->state->id); g->depth.id = 0; }
     if (g->state->lightId != 0) rlUnloadFramebuffer(g->state->lightId);
@@ -6845,16 +7413,17 @@ static void rbl__releasePasses(RblGBuffer *g)
     memset(g->state->passes, 0, sizeof(g->state->passes));
 }
 
-RenderTexture2D RblLoadSceneTarget(int width, int height)
+// A colour + depth texture target; id 0 (problem set) when the context has no such target
+static RenderTexture2D rbl__loadSceneTarget(int width, int height)
 {
     RenderTexture2D t;
     memset(&t, 0, sizeof(t));
     if ((width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE))
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "size %ix%i outside 1..RBL_MAX_TARGET_SIZE", width, height);
         return t;
     }
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     t.id = rlLoadFramebuffer();
     t.texture.id = rlLoadTexture(NULL, width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
     t.texture.width = width; t.texture.height = height; t.texture.mipmaps = 1; t.texture.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
@@ -6874,7 +7443,7 @@ RenderTexture2D RblLoadSceneTarget(int width, int height)
     rbl__restoreTarget(callerTarget);
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "%ix%i colour + depth texture target unavailable (no depth textures?)", width, height);
         if (t.id != 0) rlUnloadFramebuffer(t.id);       // deletes an attached depth texture
         if (!attached && (t.depth.id != 0)) rlUnloadTexture(t.depth.id);
         if (t.texture.id != 0) rlUnloadTexture(t.texture.id);
@@ -6883,12 +7452,127 @@ RenderTexture2D RblLoadSceneTarget(int width, int height)
     return t;
 }
 
+RenderTexture2D RblLoadSceneTarget(int width, int height)
+{
+    RenderTexture2D t = rbl__loadSceneTarget(width, height);
+    if (t.id == 0) TraceLog(LOG_WARNING, "RBL: RblLoadSceneTarget: %s", rbl__state.problem);
+    return t;
+}
+
+static void rbl__unloadSceneTarget(RenderTexture2D *t)
+{
+    if (rbl__glUsable() && (t->id != 0))
+    {
+        rlUnloadFramebuffer(t->id);                     // deletes the attached depth texture
+        rlUnloadTexture(t->texture.id);
+    }
+    memset(t, 0, sizeof(*t));
+}
+
+// The header's scene target, its composite program and triangle released (RblClose)
+static void rbl__releaseCapture(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    rbl__unloadSceneTarget(&c->target);
+    if (c->composite != 0) rbl__releaseProgram(c->composite, RBL__KIND_COMPOSITE);
+    if (rbl__glUsable() && (c->vao != 0)) rlUnloadVertexArray(c->vao);
+    if (rbl__glUsable() && (c->vbo != 0)) rlUnloadVertexBuffer(c->vbo);
+    memset(c, 0, sizeof(*c));
+}
+
+bool RblBeginSceneDepth(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    const char *bad = c->begun? "already in progress (RblEndSceneDepth first)" : (rbl__state.shadowPass != NULL)? "inside a shadow pass" :
+                      (rbl__state.gbufferPass != NULL)? "inside a G-buffer's geometry pass" : NULL;
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    int w = 0, h = 0;
+    rbl__targetSize(callerTarget, &w, &h);
+    if ((bad == NULL) && (c->composite == 0))
+    {
+        // First use: the composite program and a full-screen triangle (kept until RblClose)
+        rbl__ProgramKey key;
+        memset(&key, 0, sizeof(key));
+        key.kind = RBL__KIND_COMPOSITE;
+        rbl__Program *p = rbl__acquireProgram(&key);
+        if (p == NULL) bad = rbl__state.problem;
+        else
+        {
+            c->composite = p->shader.id;
+            const float triangle[9] = { -1.0f, -1.0f, 0.0f, 3.0f, -1.0f, 0.0f, -1.0f, 3.0f, 0.0f };
+            c->vao = rlLoadVertexArray();          // 0 where the context has none: attributes set per draw
+            if (c->vao != 0) rlEnableVertexArray(c->vao);
+            c->vbo = rlLoadVertexBuffer(triangle, (int)sizeof(triangle), false);
+            if (c->vao != 0)
+            {
+                rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION, 3, RL_FLOAT, false, 0, 0);
+                rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION);
+                rlDisableVertexArray();
+            }
+            if (c->vbo == 0) bad = "the full-screen triangle's buffer could not be created";
+        }
+    }
+    // The target follows the size of the one it is shown on (a resized window never stretches it)
+    if ((bad == NULL) && ((c->target.id == 0) || (c->target.texture.width != w) || (c->target.texture.height != h)))
+    {
+        RenderTexture2D t = rbl__loadSceneTarget(w, h);
+        if (t.id == 0) bad = rbl__state.problem;
+        else { rbl__unloadSceneTarget(&c->target); c->target = t; }
+    }
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginSceneDepth: %s", bad); return false; }
+    rlDrawRenderBatchActive();
+    c->savedFramebuffer = callerTarget;
+    rlEnableFramebuffer(c->target.id);
+    rlViewport(0, 0, w, h);
+    rlClearColor(0, 0, 0, 0);
+    rlClearScreenBuffers();
+    c->begun = true;
+    return true;
+}
+
+void RblEndSceneDepth(void)
+{
+    rbl__SceneCapture *c = &rbl__state.capture;
+    if (!c->begun) { TraceLog(LOG_WARNING, "RBL: RblEndSceneDepth: no RblBeginSceneDepth in progress"); return; }
+    rlDrawRenderBatchActive();
+    rbl__restoreTarget(c->savedFramebuffer);
+    const rbl__Program *p = rbl__findOwn(c->composite, RBL__KIND_COMPOSITE);
+    rlEnableShader(p->shader.id);
+    int units[2] = { 0, 1 };
+    rlSetUniform(rlGetLocationUniform(p->shader.id, "texture0"), &units[0], SHADER_UNIFORM_INT, 1);
+    rlSetUniform(rlGetLocationUniform(p->shader.id, "rblSceneDepthMap"), &units[1], SHADER_UNIFORM_INT, 1);
+    rlActiveTextureSlot(0); rlEnableTexture(c->target.texture.id);
+    rlActiveTextureSlot(1); rlEnableTexture(c->target.depth.id);
+    rlDisableColorBlend();                          // the world is opaque: its colour and depth replace the target's
+    rlEnableDepthTest();
+    rlEnableDepthMask();
+    rlDisableBackfaceCulling();
+    if ((c->vao == 0) || !rlEnableVertexArray(c->vao))
+    {
+        rlEnableVertexBuffer(c->vbo);
+        rlSetVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION, 3, RL_FLOAT, false, 0, 0);
+        rlEnableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_POSITION);
+    }
+    rlDrawVertexArray(0, 3);
+    rlDisableVertexArray();
+    rlDisableVertexBuffer();
+    rlEnableBackfaceCulling();
+    rlDisableDepthTest();                           // raylib's 2D state (BeginMode3D turns it on again)
+    rlEnableColorBlend();
+    rlActiveTextureSlot(1); rlDisableTexture();
+    rlActiveTextureSlot(0); rlDisableTexture();
+    rlDisableShader();
+    c->begun = false;
+    c->shown = true;
+}
+
 RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 {
     RblGBuffer g;
     memset(&g, 0, sizeof(g));
-    int width = (desc.width == 0)? rlGetFramebufferWidth() : desc.width;
-    int height = (desc.height == 0)? rlGetFramebufferHeight() : desc.height;
+    int width = desc.width, height = desc.height;
+    const bool follow = (width == 0) && (height == 0);
+    if (follow) rbl__targetSize(rbl__activeFramebuffer(), &width, &height);
     RblLitShaderDesc lit, normalised;
     rbl__gbufferLitDesc(&desc, &lit);
     const char *bad = rbl__normaliseLitDesc(lit, &normalised);
@@ -6896,14 +7580,14 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     if (bad == NULL) bad = rbl__needsGlsl3("the G-buffer and deferred passes");
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: %s", bad); return g; }
     g.state = (rbl__GBufferState *)RBL_CALLOC(1, sizeof(rbl__GBufferState));
-    if ((g.state == NULL) || !rbl__liveAdd(g.state))
+    if ((g.state == NULL) || ((g.id = rbl__liveAdd(g.state)) == 0))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadGBuffer: out of memory");
         RBL_FREE(g.state);
         memset(&g, 0, sizeof(g));
         return g;
     }
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     if (!rbl__loadTargets(&g, width, height)) { rbl__restoreTarget(callerTarget); RblUnloadGBuffer(&g); return g; }
     rbl__restoreTarget(callerTarget);
     g.desc = desc;
@@ -6927,6 +7611,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
         return g;
     }
     g.state->instanceCapacity = 256;
+    g.state->follow = follow;
     rbl__loadVolumeMesh(&g);
     g.outputScale = 1.0f;
     g.state->view = rbl__identity(); g.state->projection = rbl__identity();
@@ -6937,7 +7622,28 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
 bool RblIsGBufferValid(const RblGBuffer *gbuffer)
 {
     // Membership first: a stale copy's state (its G-buffer unloaded) is never read
-    return (gbuffer != NULL) && rbl__isLive(gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
+    return (gbuffer != NULL) && rbl__isLive(gbuffer->id, gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
+}
+
+// New targets at width x height (passes kept); false (logged by rbl__loadTargets) keeps the old ones
+static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
+{
+    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
+    rbl__GBufferState freshState = *gbuffer->state;
+    RblGBuffer fresh = *gbuffer;
+    fresh.state = &freshState;
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    bool ok = rbl__loadTargets(&fresh, width, height);
+    rbl__restoreTarget(callerTarget);
+    if (!ok) return false;
+    rbl__unloadTargets(gbuffer);
+    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
+    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
+    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
+    gbuffer->width = width; gbuffer->height = height;
+    gbuffer->desc.width = width; gbuffer->desc.height = height;
+    gbuffer->state->geometryDone = false;       // new targets hold nothing yet
+    return true;
 }
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
@@ -6947,37 +7653,27 @@ bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
     }
-    if ((width == gbuffer->width) && (height == gbuffer->height)) return true;
-    rbl__GBufferState freshState = *gbuffer->state;
-    RblGBuffer fresh = *gbuffer;
-    fresh.state = &freshState;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
-    bool ok = rbl__loadTargets(&fresh, width, height);
-    rbl__restoreTarget(callerTarget);
-    if (!ok) return false;      // the old targets stay
-    rbl__unloadTargets(gbuffer);
-    gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
-    gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
-    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
-    gbuffer->width = width; gbuffer->height = height;
-    gbuffer->desc.width = width; gbuffer->desc.height = height;
+    if (!rbl__resizeTargets(gbuffer, width, height)) return false;
+    gbuffer->state->follow = false;         // sized by the caller from now on
     return true;
 }
 
 void RblUnloadGBuffer(RblGBuffer *gbuffer)
 {
-    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
-    if (gbuffer->state->begun) RblEndGBuffer(gbuffer);
+    if (!rbl__unloadable(gbuffer, (gbuffer != NULL)? gbuffer->id : 0, (gbuffer != NULL)? gbuffer->state : NULL, "RblUnloadGBuffer", "G-buffer")) { if (gbuffer != NULL) memset(gbuffer, 0, sizeof(*gbuffer)); return; }
+    if (gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadGBuffer: its geometry pass is in progress (RblEndGBuffer first)"); return; }
     rbl__unloadTargets(gbuffer);
     rbl__releasePasses(gbuffer);
+    if (!rbl__glUsable()) gbuffer->state->volumeVao = gbuffer->state->emptyVao = gbuffer->state->volumeVbo = gbuffer->state->volumeIbo = gbuffer->state->instanceVbo = 0;
     if (gbuffer->state->volumeVao != 0) rlUnloadVertexArray(gbuffer->state->volumeVao);
     if (gbuffer->state->emptyVao != 0) rlUnloadVertexArray(gbuffer->state->emptyVao);
     if (gbuffer->state->volumeVbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeVbo);
     if (gbuffer->state->volumeIbo != 0) rlUnloadVertexBuffer(gbuffer->state->volumeIbo);
     if (gbuffer->state->instanceVbo != 0) rlUnloadVertexBuffer(gbuffer->state->instanceVbo);
-    rbl__liveRemove(gbuffer->state);
+    rbl__liveRemove(gbuffer->id);
     RBL_FREE(gbuffer->state);
     memset(gbuffer, 0, sizeof(*gbuffer));
+    rbl__tidyAfterClose();
 }
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
@@ -7013,7 +7709,18 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
+    unsigned int callerTarget = rbl__activeFramebuffer();
+    int w = 0, h = 0;
+    if ((bad == NULL) && gbuffer->state->follow)
+    {
+        // Loaded with size 0: the size of what it renders for (the screen, or the render texture of
+        // BeginTextureMode), taken here so a resized window never stretches it
+        rbl__targetSize(callerTarget, &w, &h);
+        if ((w <= 0) || (h <= 0) || (w > RBL_MAX_TARGET_SIZE) || (h > RBL_MAX_TARGET_SIZE)) bad = "the target's size is outside 1..RBL_MAX_TARGET_SIZE";
+        else if (((w != gbuffer->width) || (h != gbuffer->height)) && !rbl__resizeTargets(gbuffer, w, h)) bad = "the G-buffer could not take its target's new size (the old targets are kept)";
+    }
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginGBuffer: %s", bad); return false; }
+    gbuffer->state->savedFramebuffer = callerTarget;
     rlDrawRenderBatchActive();
     rlEnableFramebuffer(gbuffer->state->id);
     rlViewport(0, 0, gbuffer->width, gbuffer->height);
@@ -7049,14 +7756,16 @@ bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
     gbuffer->state->eye = camera.position;
     rbl__sceneAmbient(gbuffer->state->ambient);
     gbuffer->state->begun = true;
-    rbl__state.gbufferPass = gbuffer;
+    rbl__state.gbufferPassBuffer = *gbuffer;
+    rbl__state.gbufferPass = &rbl__state.gbufferPassBuffer;
     return true;
 }
 
 void RblEndGBuffer(RblGBuffer *gbuffer)
 {
-    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
+    if ((gbuffer == NULL) || !rbl__isLive(gbuffer->id, gbuffer->state) || !gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndGBuffer: no G-buffer pass of this G-buffer in progress"); return; }
     gbuffer->state->begun = false;
+    gbuffer->state->geometryDone = true;
     rbl__state.gbufferPass = NULL;
     rlDrawRenderBatchActive();
     rlMatrixMode(RL_PROJECTION);
@@ -7065,16 +7774,11 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
     rlLoadIdentity();
     rlEnableColorBlend();
     rlDisableDepthTest();
-    rbl__restoreTarget(0);
+    rbl__restoreTarget(gbuffer->state->savedFramebuffer);     // the caller's target (e.g. inside BeginTextureMode)
 }
 
 // Registry entry of one of the G-buffer's pass programs
-static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass)
-{
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
-        if ((rbl__state.programs[i].refs > 0) && (rbl__state.programs[i].shader.id == g->state->passes[pass]) && (rbl__state.programs[i].key.kind == RBL__KIND_PASS)) return &rbl__state.programs[i];
-    return NULL;
-}
+static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass) { return rbl__findOwn(g->state->passes[pass], RBL__KIND_PASS); }
 
 // Binds the G-buffer textures, camera and shadow uniforms of one pass; returns its locations
 static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
@@ -7153,7 +7857,10 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
+    else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
+    else if (!gbuffer->state->geometryDone) bad = "no geometry pass ran since the G-buffer was loaded or resized (RblBeginGBuffer/RblEndGBuffer first)";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
+    if (rbl__state.scene.shadowDropped && (gbuffer->desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     RblGBuffer *g = gbuffer;
     const rbl__Scene *s = &rbl__state.scene;
     int count = s->lightCount, unbounded = 0, uncompiled = 0;
@@ -7190,7 +7897,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     bool counting = (g->output == RBL_GBUFFER_OUTPUT_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     rlEnableFramebuffer(g->state->lightId);
     rlViewport(0, 0, g->width, g->height);
     rlDisableDepthTest();
@@ -7270,8 +7977,15 @@ void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer) || gbuffer->state->begun) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: invalid G-buffer, or inside its geometry pass"); return; }
+    const char *bad = !RblIsGBufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
+                      (rbl__state.shadowPass != NULL)? "inside a shadow pass" : (rbl__state.gbufferPass != NULL)? "inside another G-buffer's geometry pass" : NULL;
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
+    int w, h;
+    rbl__targetSize(rbl__activeFramebuffer(), &w, &h);
+    if (((w != g->width) || (h != g->height)) && !g->state->sizeNoted)
+        TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: the G-buffer is %ix%i and its target %ix%i: the image is scaled (load it with size 0 to follow its target)", g->width, g->height, w, h);
+    g->state->sizeNoted = (w != g->width) || (h != g->height);
     rlDrawRenderBatchActive();
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
     if (loc[RBL__U_OUTPUT] != -1) rlSetUniform(loc[RBL__U_OUTPUT], &g->output, SHADER_UNIFORM_INT, 1);
@@ -7356,7 +8070,7 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     const char *bad = rbl__normaliseShadowDesc(desc, &map.desc);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %s", bad); memset(&map, 0, sizeof(map)); return map; }
     map.state = (rbl__ShadowMapState *)RBL_CALLOC(1, sizeof(rbl__ShadowMapState));
-    if ((map.state == NULL) || !rbl__liveAdd(map.state))
+    if ((map.state == NULL) || ((map.id = rbl__liveAdd(map.state)) == 0))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: out of memory");
         RBL_FREE(map.state);
@@ -7366,14 +8080,14 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     if (!rbl__acquireCasters())
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: caster programs unavailable (%s)", rbl__state.problem);
-        rbl__liveRemove(map.state);
+        rbl__liveRemove(map.id);
         RBL_FREE(map.state);
         memset(&map, 0, sizeof(map));
         return map;
     }
     map.size = map.desc.size;
     map.light = -1;
-    unsigned int callerTarget = rlGetActiveFramebuffer();
+    unsigned int callerTarget = rbl__activeFramebuffer();
     map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
     map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
     bool ok = (map.depth.id != 0);
@@ -7397,14 +8111,16 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
 bool RblIsShadowMapValid(RblShadowMap map)
 {
     // Membership first: a stale copy's state (its map unloaded) is never read
-    return rbl__isLive(map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0);
+    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
 {
-    if (!rbl__unloadable(map, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
-    if (map->state->begun) RblEndShadowMap(map);
-    if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);         // deletes its depth texture too
+    if (!rbl__unloadable(map, (map != NULL)? map->id : 0, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
+    if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
+    rbl__dropSceneShadow(map->id);
+    if (!rbl__glUsable()) {}                                                // gone with the context
+    else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture too
     else if (map->depth.id != 0) rlUnloadTexture(map->depth.id);
     rbl__releaseProgram(rbl__state.casterIds[0], RBL__KIND_CASTER);        // the two casters it acquired
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
@@ -7416,9 +8132,10 @@ void RblUnloadShadowMap(RblShadowMap *map)
             rbl__state.casterIds[k] = 0;
         }
     }
-    rbl__liveRemove(map->state);
+    rbl__liveRemove(map->id);
     RBL_FREE(map->state);
     memset(map, 0, sizeof(*map));
+    rbl__tidyAfterClose();
 }
 
 // raymath's MatrixOrtho / MatrixFrustum, in raylib's layout
@@ -7473,6 +8190,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         double r = focusRadius, texel = 2.0*r/(size - 1.0);
         cam.position = rbl__v3(focusCenter.x - dir.x*2.0f*focusRadius, focusCenter.y - dir.y*2.0f*focusRadius, focusCenter.z - dir.z*2.0f*focusRadius);
         cam.target = focusCenter;
+        cam.projection = CAMERA_ORTHOGRAPHIC;          // parallel rays: light-facing casters face the direction
         map->state->lightView = rbl__cameraFrame(cam);
         double ex = rbl__dot(map->state->lightView.right, cam.position), ey = rbl__dot(map->state->lightView.up, cam.position);
         double cx = rbl__dot(map->state->lightView.right, focusCenter), cy = rbl__dot(map->state->lightView.up, focusCenter);
@@ -7507,7 +8225,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlActiveTextureSlot(0);
     map->state->savedView = rlGetMatrixModelview();
     map->state->savedProjection = rlGetMatrixProjection();
-    map->state->savedFramebuffer = rlGetActiveFramebuffer();
+    map->state->savedFramebuffer = rbl__activeFramebuffer();
     rlEnableFramebuffer(map->state->id);
     rlViewport(0, 0, map->size, map->size);
     rlEnableDepthTest();
@@ -7517,14 +8235,15 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     rlSetMatrixProjection(projection);
     rlSetMatrixModelview(map->state->view);
     map->state->begun = true;
-    rbl__state.shadowPass = map;
+    rbl__state.shadowPassMap = *map;
+    rbl__state.shadowPass = &rbl__state.shadowPassMap;
     rbl__state.cast = rbl__castOf(map);
     return true;
 }
 
 void RblEndShadowMap(RblShadowMap *map)
 {
-    if ((map == NULL) || !rbl__isLive(map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
+    if ((map == NULL) || !rbl__isLive(map->id, map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
     rlDrawRenderBatchActive();
     rbl__restoreTarget(map->state->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->state->savedProjection);
@@ -7606,22 +8325,36 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
 
 #define RBL__ATLAS_MAX_DEPTH 64         // JSON nesting
 #define RBL__ATLAS_MAX_COORD 65536.0    // texel coordinates and sizes
-#define RBL__ATLAS_MAX_PAGES 64         // multipack sheets / libGDX pages
+#define RBL__ATLAS_MAX_PAGES 64         // multipack sheets / libGDX pages / textures[] entries
 #define RBL__ATLAS_MAX_REPEAT 65535
+#define RBL__ATLAS_MAX_SCALE 65536.0    // meta.scale in 1/65536..65536
+#define RBL__ATLAS_MAX_POLYGON 65535    // vertices of one polygon frame (16-bit indices)
+#define RBL__ATLAS_PATH 4096            // longest sheet path tried
+#if (RBL_MAX_ATLAS_ENTRIES < 1) || (RBL_MAX_ATLAS_ENTRIES > 67108864)
+    #error "RBL_MAX_ATLAS_ENTRIES must be in 1..2^26"
+#endif
 #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // seconds per frame where the atlas gives no duration
 
 static inline Rectangle rbl__rect(float x, float y, float w, float h) { Rectangle r; r.x = x; r.y = y; r.width = w; r.height = h; return r; }
 static inline Vector2 rbl__v2(float x, float y) { Vector2 v; v.x = x; v.y = y; return v; }
+
+// Where a polygon's rows start while the tables grow (its public pointers are set at publication)
+typedef struct rbl__AtlasPolyRef { int frame, vertex, index; } rbl__AtlasPolyRef;
 
 typedef struct rbl__AtlasState {
     RblAtlasFrame *frames; int frameCount, frameCap;
     RblAtlasTag *tags; int tagCount, tagCap;
     RblAtlasPage *pages; int pageCount, pageCap;
     RblAtlasSlice *slices; int sliceCount, sliceCap;
-    char **pools; int poolCount, poolCap;       // name storage: one block per parsed text, never moved
+    RblAtlasPolygon *polygons; int polygonCount, polygonCap;
+    rbl__AtlasPolyRef *polygonRefs; int polygonRefCap;
+    Vector2 *polyPoints; int polyPointCount, polyPointCap;          // each polygon's vertices, then its uvs
+    unsigned short *polyIndices; int polyIndexCount, polyIndexCap;
+    char **pools; int poolCount, poolCap;       // name storage: one block per parsed text (and per path), never moved
     char *pool; size_t poolUsed, poolSize;      // the current block
     int format;
-    char error[200];
+    int ignoredPads;                            // libGDX pad entries (reported once per load, LOG_INFO)
+    char error[3*RBL__ATLAS_PATH + 256];
 } rbl__AtlasState;
 
 // Atlases are CPU objects the caller owns past RblClose: their own live list (freed when empty)
@@ -7643,31 +8376,47 @@ static void rbl__atlasError(rbl__AtlasState *s, const char *fmt, const char *det
     else snprintf(s->error, sizeof(s->error), "%s", what);
 }
 
+// The first problem, formatted (at >= 0: the byte it was found at)
+static void rbl__atlasErrorf(rbl__AtlasState *s, long at, const char *fmt, ...)
+{
+    if (s->error[0] != 0) return;
+    va_list args;
+    va_start(args, fmt);
+    int n = vsnprintf(s->error, sizeof(s->error), fmt, args);
+    va_end(args);
+    if ((at >= 0) && (n >= 0) && ((size_t)n < sizeof(s->error))) snprintf(s->error + n, sizeof(s->error) - (size_t)n, " (byte %ld)", at);
+}
+
 static void rbl__atlasFree(rbl__AtlasState *s)
 {
     if (s == NULL) return;
     for (int i = 0; i < s->poolCount; i++) RBL_FREE(s->pools[i]);
     RBL_FREE(s->pools); RBL_FREE(s->frames); RBL_FREE(s->tags); RBL_FREE(s->pages); RBL_FREE(s->slices);
+    RBL_FREE(s->polygons); RBL_FREE(s->polygonRefs); RBL_FREE(s->polyPoints); RBL_FREE(s->polyIndices);
     RBL_FREE(s);
 }
 
-// Room for one more element: the array (grown when full), NULL on failure (the old array kept)
-static void *rbl__atlasGrowRaw(rbl__AtlasState *s, void *array, int count, int *cap, size_t elem)
+// Room for `more` elements: the array (grown when short), NULL on failure (the old array kept).
+// Every table and the JSON reader's values stop at RBL_MAX_ATLAS_ENTRIES, named in the refusal.
+static void *rbl__atlasGrowRaw(rbl__AtlasState *s, void *array, int count, int more, int *cap, size_t elem, const char *what)
 {
-    if (count < *cap) return array;
-    if (*cap >= (1 << 24)) { rbl__atlasError(s, "too many entries%s", NULL, -1); return NULL; }
-    int n = (*cap > 0)? *cap*2 : 16;
+    if ((more <= *cap - count) && (count <= *cap)) return array;
+    if (more > RBL_MAX_ATLAS_ENTRIES - count) { rbl__atlasErrorf(s, -1, "more than %d %s (RBL_MAX_ATLAS_ENTRIES)", RBL_MAX_ATLAS_ENTRIES, what); return NULL; }
+    int n = (*cap > 0)? *cap : 16;
+    while (n - count < more) n = (n > RBL_MAX_ATLAS_ENTRIES/2)? RBL_MAX_ATLAS_ENTRIES : n*2;
+    if (n > RBL_MAX_ATLAS_ENTRIES) n = RBL_MAX_ATLAS_ENTRIES;
     void *p = RBL_REALLOC(array, (size_t)n*elem);
-    if (p == NULL) { rbl__atlasError(s, "out of memory%s", NULL, -1); return NULL; }
+    if (p == NULL) { rbl__atlasErrorf(s, -1, "out of memory"); return NULL; }
     *cap = n;
     return p;
 }
-#define RBL__ATLAS_GROW(s, arr, count, cap, T, onFail) do { void *g_ = rbl__atlasGrowRaw((s), (void *)(arr), (count), &(cap), sizeof(T)); if (g_ == NULL) { onFail; } (arr) = (T *)g_; } while (0)
+#define RBL__ATLAS_GROWN(s, arr, count, more, cap, T, what, onFail) do { void *g_ = rbl__atlasGrowRaw((s), (void *)(arr), (count), (more), &(cap), sizeof(T), (what)); if (g_ == NULL) { onFail; } (arr) = (T *)g_; } while (0)
+#define RBL__ATLAS_GROW(s, arr, count, cap, T, what, onFail) RBL__ATLAS_GROWN(s, arr, count, 1, cap, T, what, onFail)
 
 // A name block big enough for every string one text can hold (decoded strings never outgrow the text)
 static bool rbl__atlasPoolBegin(rbl__AtlasState *s, size_t bytes)
 {
-    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, return false);
+    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, "name blocks", return false);
     char *p = (char *)RBL_MALLOC(bytes);
     if (p == NULL) { rbl__atlasError(s, "out of memory%s", NULL, -1); return false; }
     s->pools[s->poolCount++] = p;
@@ -7713,7 +8462,7 @@ static void rbl__jsonSkip(rbl__Json *j)
 
 static int rbl__jsonNode(rbl__Json *j, int type, int start)
 {
-    RBL__ATLAS_GROW(j->s, j->nodes, j->count, j->cap, rbl__JNode, return -1);
+    RBL__ATLAS_GROW(j->s, j->nodes, j->count, j->cap, rbl__JNode, "JSON values", return -1);
     rbl__JNode *n = &j->nodes[j->count];
     n->type = type; n->start = start; n->len = 0; n->next = j->count + 1; n->count = 0;
     return j->count++;
@@ -7940,19 +8689,44 @@ static bool rbl__jsonNum(const rbl__Json *j, int node, double *out)
 }
 
 // Number member, with a range; missing: def (when optional) else false
+// Members of an object found in one pass, the last of duplicate keys winning (as rbl__jsonGet):
+// out[k] = the value of keys[k], -1 when absent
+static void rbl__jsonPick(const rbl__Json *j, int object, const char *const *keys, int n, int *out)
+{
+    for (int k = 0; k < n; k++) out[k] = -1;
+    if ((object < 0) || (j->nodes[object].type != RBL__J_OBJECT)) return;
+    for (int c = object + 1, i = 0; i < j->nodes[object].count; i += 2)
+    {
+        const rbl__JNode *name = &j->nodes[c];
+        const char *t = j->text + name->start;
+        for (int k = 0; k < n; k++)      // strncmp stops at the key's end; then the lengths must agree
+            if ((name->len > 0) && (keys[k][0] == t[0]) && (strncmp(keys[k], t, (size_t)name->len) == 0) && (keys[k][name->len] == 0)) out[k] = name->next;
+        c = j->nodes[name->next].next;
+    }
+}
+
+// Number value v (the member key of owner), with a range; absent (v < 0): def when optional, else false
+static bool rbl__jsonNumberAt(rbl__Json *j, int v, int owner, const char *key, double lo, double hi, bool optional, double def, double *out)
+{
+    if (v < 0) { if (optional) { *out = def; return true; } rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[owner].start); return false; }
+    double x;
+    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasErrorf(j->s, j->nodes[v].start, "\"%s\" is not a number in %g..%g", key, lo, hi); return false; }
+    *out = x;
+    return true;
+}
+
 static bool rbl__jsonMember(rbl__Json *j, int object, const char *key, double lo, double hi, bool optional, double def, double *out)
 {
     int v = rbl__jsonGet(j, object, key);
     if (v < 0) { if (optional) { *out = def; return true; } rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
     double x;
-    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasError(j->s, "\"%s\" is not a number in range", key, j->nodes[v].start); return false; }
+    if (!rbl__jsonNum(j, v, &x) || (x < lo) || (x > hi)) { rbl__atlasErrorf(j->s, j->nodes[v].start, "\"%s\" is not a number in %g..%g", key, lo, hi); return false; }
     *out = x;
     return true;
 }
 
-static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
+static bool rbl__jsonBoolAt(rbl__Json *j, int v, const char *key, bool *out)
 {
-    int v = rbl__jsonGet(j, object, key);
     *out = false;
     if (v < 0) return true;
     if (j->nodes[v].type == RBL__J_TRUE) { *out = true; return true; }
@@ -7961,65 +8735,252 @@ static bool rbl__jsonBool(rbl__Json *j, int object, const char *key, bool *out)
     return false;
 }
 
-// {x, y, w, h} (any subset named in keys, in order) into out[]
+// {x, y, w, h} (any subset named in names, in order, at most 4) of value r (the member key of owner) into out[]
+static bool rbl__jsonRectAt(rbl__Json *j, int r, int owner, const char *key, const char *const *names, int n, bool optional, double *out)
+{
+    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[owner].start); return false; }
+    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
+    int at[4];
+    rbl__jsonPick(j, r, names, n, at);
+    for (int k = 0; k < n; k++)
+        if (!rbl__jsonNumberAt(j, at[k], r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
+    return true;
+}
+
 static bool rbl__jsonRect(rbl__Json *j, int object, const char *key, const char *const *names, int n, bool optional, double *out)
 {
-    int r = rbl__jsonGet(j, object, key);
-    if (r < 0) { if (optional) return true; rbl__atlasError(j->s, "missing \"%s\"", key, j->nodes[object].start); return false; }
-    if (j->nodes[r].type != RBL__J_OBJECT) { rbl__atlasError(j->s, "\"%s\" is not an object", key, j->nodes[r].start); return false; }
-    for (int k = 0; k < n; k++)
-        if (!rbl__jsonMember(j, r, names[k], -RBL__ATLAS_MAX_COORD, RBL__ATLAS_MAX_COORD, false, 0.0, &out[k])) return false;
-    return true;
+    return rbl__jsonRectAt(j, rbl__jsonGet(j, object, key), object, key, names, n, optional, out);
 }
 
 static RblAtlasPage *rbl__atlasAddPage(rbl__AtlasState *s, const char *image, int width, int height)
 {
-    if (s->pageCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); return NULL; }
-    RBL__ATLAS_GROW(s, s->pages, s->pageCount, s->pageCap, RblAtlasPage, return NULL);
+    if (s->pageCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasErrorf(s, -1, "more than %d sheets", RBL__ATLAS_MAX_PAGES); return NULL; }
+    RBL__ATLAS_GROW(s, s->pages, s->pageCount, s->pageCap, RblAtlasPage, "sheets", return NULL);
     RblAtlasPage *p = &s->pages[s->pageCount++];
-    p->image = image; p->width = width; p->height = height;
+    memset(p, 0, sizeof(*p));
+    p->image = image; p->width = width; p->height = height; p->scale = 1.0f;
     return p;
 }
 
+// ---- sheet files (RblLoadAtlas) -----------------------------------------------------------------
+// A copy in a block of its own (the text's name block keeps its room for the names)
+static const char *rbl__atlasKeep(rbl__AtlasState *s, const char *text)
+{
+    RBL__ATLAS_GROW(s, s->pools, s->poolCount, s->poolCap, char *, "name blocks", return NULL);
+    size_t n = strlen(text);
+    char *p = (char *)RBL_MALLOC(n + 1);
+    if (p == NULL) { rbl__atlasErrorf(s, -1, "out of memory"); return NULL; }
+    memcpy(p, text, n + 1);
+    s->pools[s->poolCount++] = p;
+    return p;
+}
+
+// File name part of a path (either separator: exporters on Windows write backslashes)
+static const char *rbl__pathBase(const char *path)
+{
+    const char *b = path;
+    for (const char *c = path; *c != 0; c++) if ((*c == '/') || (*c == '\\')) b = c + 1;
+    return b;
+}
+
+// Length of a file name without its extension (a leading dot belongs to the name)
+static size_t rbl__pathStem(const char *base)
+{
+    const char *dot = strrchr(base, '.');
+    return ((dot != NULL) && (dot != base))? (size_t)(dot - base) : strlen(base);
+}
+
+static bool rbl__pathAbsolute(const char *p)
+{
+    bool drive = ((p[0] | 32) >= 'a') && ((p[0] | 32) <= 'z') && (p[1] == ':') && ((p[2] == '/') || (p[2] == '\\'));
+    return (p[0] == '/') || (p[0] == '\\') || drive;
+}
+
+// <stem><suffix><extension> of a sheet path (its normal sheet by a naming convention); false if too long
+static bool rbl__pathWithSuffix(const char *image, const char *suffix, char *out, size_t size)
+{
+    const char *base = rbl__pathBase(image);
+    size_t stem = (size_t)(base - image) + rbl__pathStem(base);
+    int n = snprintf(out, size, "%.*s%s%s", (int)stem, image, suffix, image + stem);
+    return (n >= 0) && ((size_t)n < size);
+}
+
+// The file a sheet name finds, kept; NULL with one error naming every path tried. Tried in order:
+// the path as written (joined to the atlas file's folder unless absolute), its base name beside
+// the atlas file, then the base name of `stemOf` (the atlas file, or the colour sheet for its
+// normal sheet) + suffix + the written extension (".png" when none).
+static const char *rbl__atlasFindFile(rbl__AtlasState *s, const char *file, const char *written, const char *stemOf, const char *suffix, const char *what)
+{
+    char tried[3][RBL__ATLAS_PATH];
+    int n = 0;
+    int dl = (int)(rbl__pathBase(file) - file);    // the folder with its separator ("" = current)
+    const char *base = rbl__pathBase(written), *stemBase = rbl__pathBase(stemOf);
+    const char *ext = strrchr(base, '.');
+    if ((ext == NULL) || (ext == base)) ext = ".png";
+    for (int k = 0; k < 3; k++)
+    {
+        char *c = tried[n];
+        int len = 0;
+        if ((k < 2) && (written[0] == 0)) continue;
+        if (k == 0) len = rbl__pathAbsolute(written)? snprintf(c, RBL__ATLAS_PATH, "%s", written) : snprintf(c, RBL__ATLAS_PATH, "%.*s%s", dl, file, written);
+        else if (k == 1) len = snprintf(c, RBL__ATLAS_PATH, "%.*s%s", dl, file, base);
+        else len = snprintf(c, RBL__ATLAS_PATH, "%.*s%.*s%s%s", dl, file, (int)rbl__pathStem(stemBase), stemBase, suffix, ext);
+        if ((len < 0) || (len >= RBL__ATLAS_PATH)) { rbl__atlasErrorf(s, -1, "%s path longer than %d bytes", what, RBL__ATLAS_PATH - 1); return NULL; }
+        bool again = false;
+        for (int i = 0; i < n; i++) again = again || (strcmp(tried[i], c) == 0);
+        if (again) continue;
+        if (FileExists(c)) return rbl__atlasKeep(s, c);
+        n++;
+    }
+    rbl__atlasErrorf(s, -1, "%s \"%s\" not found: tried \"%s\"%s%s%s%s%s%s", what, written, tried[0], (n > 1)? ", \"" : "", (n > 1)? tried[1] : "", (n > 1)? "\"" : "",
+                     (n > 2)? ", \"" : "", (n > 2)? tried[2] : "", (n > 2)? "\"" : "");
+    return NULL;
+}
+
+// The same-layout normal sheet by the "_n" convention (TexturePacker, SpriteIlluminator, Paper2D), or NULL
+static bool rbl__atlasProbeNormal(rbl__AtlasState *s, RblAtlasPage *page)
+{
+    char path[RBL__ATLAS_PATH];
+    if (!rbl__pathWithSuffix(page->image, "_n", path, sizeof(path)) || !FileExists(path)) return true;
+    page->normalImage = rbl__atlasKeep(s, path);
+    return page->normalImage != NULL;
+}
+
 // Fills the derived fields of a frame from its upright rectangle and trim; false (logged) when
-// inconsistent. ccw: stored turned counter-clockwise (libGDX).
-static bool rbl__atlasFinishFrame(rbl__AtlasState *s, RblAtlasFrame *f, bool rotated, bool ccw, const RblAtlasPage *page)
+// inconsistent. swap: stored in an h x w block (a quarter turn); mirror: both extents negated (a
+// half turn more: libGDX's counter-clockwise quarter, or its half turn).
+static bool rbl__atlasFinishFrame(rbl__AtlasState *s, RblAtlasFrame *f, bool swap, bool mirror, const RblAtlasPage *page)
 {
     float x = f->block.x, y = f->block.y, w = f->block.width, h = f->block.height;   // upright size on entry
     if (!(w > 0.0f) || !(h > 0.0f) || (x < 0.0f) || (y < 0.0f)) { rbl__atlasError(s, "frame \"%s\": empty or negative rectangle", f->name, -1); return false; }
-    if (rotated) { f->block.width = h; f->block.height = w; }
+    if (swap) { f->block.width = h; f->block.height = w; }
     if ((page->width > 0) && (page->height > 0) && ((f->block.x + f->block.width > (float)page->width) || (f->block.y + f->block.height > (float)page->height)))
     { rbl__atlasError(s, "frame \"%s\": outside its sheet", f->name, -1); return false; }
     f->source = f->block;
-    f->flags = rotated? (unsigned int)RBL_FRAME_ROTATED : 0u;
-    if (rotated && ccw) { f->source.width = -f->source.width; f->source.height = -f->source.height; }
+    f->flags = swap? (unsigned int)RBL_FRAME_ROTATED : 0u;
+    if (mirror) { f->source.width = -f->source.width; f->source.height = -f->source.height; }
     if (!(f->size.x > 0.0f) || !(f->size.y > 0.0f) || (f->trim.x < 0.0f) || (f->trim.y < 0.0f) ||
         (f->trim.x + f->trim.width > f->size.x) || (f->trim.y + f->trim.height > f->size.y))
     { rbl__atlasError(s, "frame \"%s\": trimmed rectangle outside the untrimmed size", f->name, -1); return false; }
     if (!isfinite(f->pivot.x) || !isfinite(f->pivot.y) || (fabsf(f->pivot.x) > 1e6f) || (fabsf(f->pivot.y) > 1e6f))
     { rbl__atlasError(s, "frame \"%s\": pivot out of range", f->name, -1); return false; }
+    const Rectangle c = f->center;
+    if ((c.x < 0.0f) || (c.y < 0.0f) || (c.width < 0.0f) || (c.height < 0.0f) || (c.x + c.width > f->size.x) || (c.y + c.height > f->size.y))
+    { rbl__atlasError(s, "frame \"%s\": 9-slice centre outside the frame", f->name, -1); return false; }
     return true;
 }
 
 static const char *const rbl__xywh[4] = { "x", "y", "w", "h" };
 
-// One TexturePacker / Aseprite frame object
+// Polygon points, [[x, y], ...] or [x, y, x, y, ...], each inside box, appended to the point table;
+// *count: in, the number required (-1 = any 3..65535); out, the number read
+static bool rbl__atlasJsonPoints(rbl__Json *j, int node, const char *key, const char *frame, Rectangle box, int *count)
+{
+    rbl__AtlasState *s = j->s;
+    if ((j->nodes[node].type != RBL__J_ARRAY) || (j->nodes[node].count == 0)) { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"%s\" is not an array of points", frame, key); return false; }
+    bool pairs = (j->nodes[node + 1].type == RBL__J_ARRAY);
+    int n = pairs? j->nodes[node].count : j->nodes[node].count/2;
+    if ((!pairs && (j->nodes[node].count%2 != 0)) || (n < 3) || (n > RBL__ATLAS_MAX_POLYGON) || ((*count >= 0) && (n != *count)))
+    { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"%s\" holds %d points (3..%d, as many as \"vertices\")", frame, key, n, RBL__ATLAS_MAX_POLYGON); return false; }
+    RBL__ATLAS_GROWN(s, s->polyPoints, s->polyPointCount, n, s->polyPointCap, Vector2, "polygon points", return false);
+    Vector2 *out = s->polyPoints + s->polyPointCount;
+    for (int i = 0, c = node + 1; i < n; i++)
+    {
+        int xn = c, yn;
+        if (pairs)
+        {
+            if ((j->nodes[c].type != RBL__J_ARRAY) || (j->nodes[c].count != 2)) { rbl__atlasErrorf(s, j->nodes[c].start, "frame \"%s\": \"%s\" point %d is not [x, y]", frame, key, i); return false; }
+            xn = c + 1; yn = j->nodes[xn].next; c = j->nodes[c].next;
+        }
+        else { yn = j->nodes[c].next; c = j->nodes[yn].next; }
+        double x, y;
+        if (!rbl__jsonNum(j, xn, &x) || !rbl__jsonNum(j, yn, &y) || (x < box.x) || (y < box.y) || (x > (double)box.x + box.width) || (y > (double)box.y + box.height))
+        { rbl__atlasErrorf(s, j->nodes[xn].start, "frame \"%s\": \"%s\" point %d not a number pair inside %g,%g %gx%g", frame, key, i, box.x, box.y, box.width, box.height); return false; }
+        out[i] = rbl__v2((float)x, (float)y);
+    }
+    s->polyPointCount += n;
+    *count = n;
+    return true;
+}
+
+// Triangle corners, [[a, b, c], ...] or [a, b, c, ...], each a vertex index, appended to the index table
+static bool rbl__atlasJsonTriangles(rbl__Json *j, int node, const char *frame, int vertexCount, int *count)
+{
+    rbl__AtlasState *s = j->s;
+    if ((j->nodes[node].type != RBL__J_ARRAY) || (j->nodes[node].count == 0)) { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"triangles\" is not an array", frame); return false; }
+    bool nested = (j->nodes[node + 1].type == RBL__J_ARRAY);
+    int n = nested? j->nodes[node].count : j->nodes[node].count/3;
+    if (!nested && (j->nodes[node].count%3 != 0)) { rbl__atlasErrorf(s, j->nodes[node].start, "frame \"%s\": \"triangles\" holds %d indices, not a multiple of 3", frame, j->nodes[node].count); return false; }
+    if (n > RBL_MAX_ATLAS_ENTRIES/3) { rbl__atlasErrorf(s, -1, "more than %d polygon indices (RBL_MAX_ATLAS_ENTRIES)", RBL_MAX_ATLAS_ENTRIES); return false; }
+    RBL__ATLAS_GROWN(s, s->polyIndices, s->polyIndexCount, 3*n, s->polyIndexCap, unsigned short, "polygon indices", return false);
+    unsigned short *out = s->polyIndices + s->polyIndexCount;
+    for (int t = 0, c = node + 1; t < n; t++)
+    {
+        int corner = c;
+        if (nested)
+        {
+            if ((j->nodes[c].type != RBL__J_ARRAY) || (j->nodes[c].count != 3)) { rbl__atlasErrorf(s, j->nodes[c].start, "frame \"%s\": triangle %d is not [a, b, c]", frame, t); return false; }
+            corner = c + 1;
+            c = j->nodes[c].next;
+        }
+        for (int k = 0; k < 3; k++)
+        {
+            double v;
+            if (!rbl__jsonNum(j, corner, &v) || (v < 0.0) || (v >= vertexCount) || (v != floor(v)))
+            { rbl__atlasErrorf(s, j->nodes[corner].start, "frame \"%s\": triangle %d corner %d is not a vertex index 0..%d", frame, t, k, vertexCount - 1); return false; }
+            out[3*t + k] = (unsigned short)v;
+            corner = j->nodes[corner].next;
+        }
+        if (!nested) c = corner;
+    }
+    s->polyIndexCount += 3*n;
+    *count = 3*n;
+    return true;
+}
+
+// A polygon frame (TexturePacker's polygon packing): vertices in the untrimmed frame, their sheet
+// texels inside the frame's block, triangles over them; the rows are published with the atlas
+static bool rbl__atlasJsonPolygon(rbl__Json *j, int obj, int v, int uv, int tri, const RblAtlasFrame *f)
+{
+    rbl__AtlasState *s = j->s;
+    if ((v < 0) && (uv < 0) && (tri < 0)) return true;
+    if ((v < 0) || (uv < 0) || (tri < 0)) { rbl__atlasErrorf(s, j->nodes[obj].start, "frame \"%s\": a polygon needs \"vertices\", \"verticesUV\" and \"triangles\"", f->name); return false; }
+    RBL__ATLAS_GROW(s, s->polygons, s->polygonCount, s->polygonCap, RblAtlasPolygon, "polygons", return false);
+    RBL__ATLAS_GROW(s, s->polygonRefs, s->polygonCount, s->polygonRefCap, rbl__AtlasPolyRef, "polygons", return false);
+    rbl__AtlasPolyRef ref = { s->frameCount, s->polyPointCount, s->polyIndexCount };
+    int n = -1, indices = 0;
+    if (!rbl__atlasJsonPoints(j, v, "vertices", f->name, rbl__rect(0.0f, 0.0f, f->size.x, f->size.y), &n) ||
+        !rbl__atlasJsonPoints(j, uv, "verticesUV", f->name, f->block, &n) || !rbl__atlasJsonTriangles(j, tri, f->name, n, &indices)) return false;
+    RblAtlasPolygon *p = &s->polygons[s->polygonCount];
+    memset(p, 0, sizeof(*p));
+    p->vertexCount = n; p->indexCount = indices;
+    s->polygonRefs[s->polygonCount++] = ref;
+    return true;
+}
+
+// One TexturePacker / Aseprite frame object: its members in one pass
+#define RBL__FRAME_KEYS 11
+static const char *const rbl__frameKeys[RBL__FRAME_KEYS] = { "frame", "rotated", "spriteSourceSize", "sourceSize", "anchor", "pivot", "duration",
+                                                              "scale9Borders", "vertices", "verticesUV", "triangles" };
 static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int page)
 {
     rbl__AtlasState *s = j->s;
     if ((obj < 0) || (j->nodes[obj].type != RBL__J_OBJECT)) { rbl__atlasError(s, "frame \"%s\" is not an object", name, -1); return false; }
-    double fr[4], sss[4], src[2], piv[2] = { 0.5, 0.5 }, dur = 0.0;
+    double fr[4], sss[4], src[2], piv[2] = { 0.5, 1.0 }, dur = 0.0, nine[4] = { 0.0, 0.0, 0.0, 0.0 };
     bool rotated = false;
-    if (!rbl__jsonRect(j, obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBool(j, obj, "rotated", &rotated)) return false;
+    int m[RBL__FRAME_KEYS];
+    rbl__jsonPick(j, obj, rbl__frameKeys, RBL__FRAME_KEYS, m);
+    if (!rbl__jsonRectAt(j, m[0], obj, "frame", rbl__xywh, 4, false, fr) || !rbl__jsonBoolAt(j, m[1], "rotated", &rotated)) return false;
     sss[0] = 0.0; sss[1] = 0.0; sss[2] = fr[2]; sss[3] = fr[3];
     src[0] = fr[2]; src[1] = fr[3];
-    if (!rbl__jsonRect(j, obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
-    if (!rbl__jsonRect(j, obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
+    if (!rbl__jsonRectAt(j, m[2], obj, "spriteSourceSize", rbl__xywh, 4, true, sss)) return false;
+    if (!rbl__jsonRectAt(j, m[3], obj, "sourceSize", rbl__xywh + 2, 2, true, src)) return false;
     const char *const xy[2] = { "x", "y" };
-    // pivot (TexturePacker), anchor (the Pixi exporter's name for it)
-    if (!rbl__jsonRect(j, obj, "anchor", xy, 2, true, piv) || !rbl__jsonRect(j, obj, "pivot", xy, 2, true, piv)) return false;
-    if (!rbl__jsonMember(j, obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
-    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, return false);
+    // pivot (TexturePacker), anchor (the Pixi exporter's name for it); none: the bottom centre
+    if (!rbl__jsonRectAt(j, m[4], obj, "anchor", xy, 2, true, piv) || !rbl__jsonRectAt(j, m[5], obj, "pivot", xy, 2, true, piv)) return false;
+    if (!rbl__jsonNumberAt(j, m[6], obj, "duration", 0.0, 1e9, true, 0.0, &dur)) return false;
+    if (!rbl__jsonRectAt(j, m[7], obj, "scale9Borders", rbl__xywh, 4, true, nine)) return false;     // Phaser 3's 9-slice centre
+    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, "frames", return false);
     RblAtlasFrame *f = &s->frames[s->frameCount];
     memset(f, 0, sizeof(*f));
     f->name = name; f->page = page; f->index = -1;
@@ -8029,8 +8990,24 @@ static bool rbl__atlasJsonFrame(rbl__Json *j, int obj, const char *name, int pag
     f->size = rbl__v2((float)src[0], (float)src[1]);
     f->pivot = rbl__v2((float)piv[0], (float)piv[1]);
     f->duration = (float)(dur/1000.0);
-    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page])) return false;
+    f->center = rbl__rect((float)nine[0], (float)nine[1], (float)nine[2], (float)nine[3]);
+    if (!rbl__atlasFinishFrame(s, f, rotated, false, &s->pages[page]) || !rbl__atlasJsonPolygon(j, obj, m[8], m[9], m[10], f)) return false;
     s->frameCount++;
+    return true;
+}
+
+// Frames of one sheet: an object (hash form, names as keys) or an array (each with "filename")
+static bool rbl__atlasJsonFrames(rbl__Json *j, int frames, int page)
+{
+    bool hash = (j->nodes[frames].type == RBL__J_OBJECT);
+    for (int k = frames + 1, i = 0; i < j->nodes[frames].count; i += hash? 2 : 1)
+    {
+        int value = hash? j->nodes[k].next : k;
+        const char *name = hash? rbl__jsonText(j, k) : rbl__jsonText(j, rbl__jsonGet(j, value, "filename"));
+        if (name == NULL) { rbl__atlasError(j->s, "a frame has no name (\"filename\")%s", NULL, j->nodes[value].start); return false; }
+        if (!rbl__atlasJsonFrame(j, value, name, page)) return false;
+        k = j->nodes[value].next;
+    }
     return true;
 }
 
@@ -8093,22 +9070,25 @@ static bool rbl__atlasJsonTags(rbl__Json *j, int meta, int first)
         }
         int start;
         if (!rbl__asepriteTagRange(s, first, name, (int)from, (int)to, &start)) { rbl__atlasError(s, "tag \"%s\": frames outside the sheet", name, j->nodes[t].start); return false; }
-        RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, return false);
+        RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, "tags", return false);
         RblAtlasTag *g = &s->tags[s->tagCount++];
         g->name = name; g->from = start; g->to = start + (int)(to - from); g->direction = dir; g->repeat = (int)repeat;
     }
     return true;
 }
 
-// Aseprite slices: one entry per key; the first slice with pivots sets the pivot of the frames its
-// keys cover (canvas pixels -> fractions of the untrimmed size)
+// Aseprite slices: one entry per key, each a sub-frame with its own pivot (none given: its bottom
+// centre) and 9-slice centre; a key applies until the slice's next key. When exactly one slice of
+// the export has pivots, it is the pivot slice the one-slice workflow means: its pivots become the
+// pivots of the frames its keys cover (canvas pixels -> fractions of the untrimmed size).
 static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
 {
     rbl__AtlasState *s = j->s;
     int slices = rbl__jsonGet(j, meta, "slices");
     if (slices < 0) return true;
     if (j->nodes[slices].type != RBL__J_ARRAY) { rbl__atlasError(s, "meta.slices is not an array%s", NULL, j->nodes[slices].start); return false; }
-    bool pivotsSet = false;
+    int pivoted = 0, pivotFrom = 0, pivotTo = 0;        // slices with pivots; the keys of the last one
+    const char *const xy[2] = { "x", "y" };
     for (int e = slices + 1, i = 0; i < j->nodes[slices].count; i++, e = j->nodes[e].next)
     {
         const char *name = rbl__jsonText(j, rbl__jsonGet(j, e, "name"));
@@ -8118,27 +9098,34 @@ static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
         bool anyPivot = false;
         for (int k = keys + 1, n = 0; n < j->nodes[keys].count; n++, k = j->nodes[k].next)
         {
-            double fr, b[4], p[2] = { 0.0, 0.0 };
-            const char *const xy[2] = { "x", "y" };
+            double fr, b[4], p[2] = { 0.0, 0.0 }, c[4] = { 0.0, 0.0, 0.0, 0.0 };
             if ((j->nodes[k].type != RBL__J_OBJECT) || !rbl__jsonMember(j, k, "frame", 0.0, 1e9, false, 0.0, &fr) || (fr != floor(fr)) ||
-                !rbl__jsonRect(j, k, "bounds", rbl__xywh, 4, false, b) || !rbl__jsonRect(j, k, "pivot", xy, 2, true, p))
+                !rbl__jsonRect(j, k, "bounds", rbl__xywh, 4, false, b) || !rbl__jsonRect(j, k, "pivot", xy, 2, true, p) || !rbl__jsonRect(j, k, "center", rbl__xywh, 4, true, c))
             { rbl__atlasError(s, "slice \"%s\": bad key", name, j->nodes[k].start); return false; }
+            if (first + fr >= s->frameCount) { rbl__atlasErrorf(s, j->nodes[k].start, "slice \"%s\": key on frame %g, past the sheet's %d frames", name, fr, s->frameCount - first); return false; }
             if ((n > 0) && (fr <= s->slices[s->sliceCount - 1].frame - first)) { rbl__atlasError(s, "slice \"%s\": keys out of frame order", name, j->nodes[k].start); return false; }
-            RBL__ATLAS_GROW(s, s->slices, s->sliceCount, s->sliceCap, RblAtlasSlice, return false);
+            if (!(b[2] > 0.0) || !(b[3] > 0.0) || (c[0] < 0.0) || (c[1] < 0.0) || (c[2] < 0.0) || (c[3] < 0.0) || (c[0] + c[2] > b[2]) || (c[1] + c[3] > b[3]))
+            { rbl__atlasError(s, "slice \"%s\": empty bounds, or a center outside them", name, j->nodes[k].start); return false; }
+            if (n > 0) s->slices[s->sliceCount - 1].lastFrame = first + (int)fr - 1;
+            RBL__ATLAS_GROW(s, s->slices, s->sliceCount, s->sliceCap, RblAtlasSlice, "slice keys", return false);
             RblAtlasSlice *sl = &s->slices[s->sliceCount++];
-            sl->name = name; sl->frame = first + (int)fr;
+            memset(sl, 0, sizeof(*sl));
+            sl->name = name; sl->frame = first + (int)fr; sl->lastFrame = s->frameCount - 1;
             sl->bounds = rbl__rect((float)b[0], (float)b[1], (float)b[2], (float)b[3]);
             sl->hasPivot = (rbl__jsonGet(j, k, "pivot") >= 0);
-            sl->pivot = rbl__v2((float)(b[0] + p[0]), (float)(b[1] + p[1]));
+            sl->pivot = sl->hasPivot? rbl__v2((float)(b[0] + p[0]), (float)(b[1] + p[1])) : rbl__v2((float)(b[0] + 0.5*b[2]), (float)(b[1] + b[3]));
+            if (c[2]*c[3] > 0.0) sl->center = rbl__rect((float)(b[0] + c[0]), (float)(b[1] + c[1]), (float)c[2], (float)c[3]);
             anyPivot = anyPivot || sl->hasPivot;
         }
-        if (!anyPivot || pivotsSet) continue;
-        pivotsSet = true;
-        for (int f = first; f < s->frameCount; f++)
+        if (anyPivot) { pivoted++; pivotFrom = firstKey; pivotTo = s->sliceCount; }
+    }
+    if (pivoted != 1) return true;
+    for (int k = pivotFrom; k < pivotTo; k++)
+    {
+        const RblAtlasSlice *key = &s->slices[k];
+        if (!key->hasPivot) continue;
+        for (int f = key->frame; f <= key->lastFrame; f++)
         {
-            const RblAtlasSlice *key = NULL;
-            for (int k = firstKey; k < s->sliceCount; k++) if (s->slices[k].frame <= f) key = &s->slices[k];
-            if ((key == NULL) || !key->hasPivot) continue;
             s->frames[f].pivot.x = key->pivot.x/s->frames[f].size.x;
             s->frames[f].pivot.y = key->pivot.y/s->frames[f].size.y;
         }
@@ -8146,8 +9133,49 @@ static bool rbl__atlasJsonSlices(rbl__Json *j, int meta, int first)
     return true;
 }
 
-// TexturePacker / Aseprite JSON; related (may be NULL) receives meta.related_multi_packs
-static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, const char *dir, int *format, rbl__Json *jOut)
+// One JSON sheet from obj (meta, or a textures[] entry): size (whole texels), scale (obj's, else
+// meta's), image and normalMap. file: the text's path (RblLoadAtlas: the image is looked for, a
+// "_n" sheet beside it found); NULL: from memory, names kept as written.
+static bool rbl__atlasJsonPage(rbl__Json *j, int obj, int meta, const char *file, const char *where)
+{
+    rbl__AtlasState *s = j->s;
+    double sz[2] = { 0.0, 0.0 }, scale = 1.0;
+    if ((obj >= 0) && !rbl__jsonRect(j, obj, "size", rbl__xywh + 2, 2, true, sz)) return false;
+    if ((obj >= 0) && (rbl__jsonGet(j, obj, "size") >= 0))
+        for (int k = 0; k < 2; k++)
+            if (!(sz[k] >= 1.0) || (sz[k] != floor(sz[k])))
+            { rbl__atlasErrorf(s, j->nodes[rbl__jsonGet(j, obj, "size")].start, "%s.size %gx%g is not whole texels 1..%g", where, sz[0], sz[1], RBL__ATLAS_MAX_COORD); return false; }
+    int sc = rbl__jsonGet(j, obj, "scale");
+    if (sc < 0) sc = rbl__jsonGet(j, meta, "scale");
+    if ((sc >= 0) && (!rbl__jsonNum(j, sc, &scale) || (scale < 1.0/RBL__ATLAS_MAX_SCALE) || (scale > RBL__ATLAS_MAX_SCALE)))
+    { rbl__atlasErrorf(s, j->nodes[sc].start, "%s.scale is not a number in 1/%g..%g", where, RBL__ATLAS_MAX_SCALE, RBL__ATLAS_MAX_SCALE); return false; }
+    int img = rbl__jsonGet(j, obj, "image"), nrm = rbl__jsonGet(j, obj, "normalMap");
+    const char *image = "", *normal = NULL;
+    if (img >= 0)
+    {
+        image = rbl__jsonText(j, img);
+        if (image == NULL) { rbl__atlasErrorf(s, j->nodes[img].start, "%s.image is not a string", where); return false; }
+    }
+    if (nrm >= 0)
+    {
+        normal = rbl__jsonText(j, nrm);
+        if (normal == NULL) { rbl__atlasErrorf(s, j->nodes[nrm].start, "%s.normalMap is not a string", where); return false; }
+    }
+    if (file != NULL)
+    {
+        image = rbl__atlasFindFile(s, file, image, file, "", "sheet");
+        if ((image == NULL) || ((normal != NULL) && ((normal = rbl__atlasFindFile(s, file, normal, image, "_n", "normal sheet")) == NULL))) return false;
+    }
+    RblAtlasPage *page = rbl__atlasAddPage(s, image, (int)sz[0], (int)sz[1]);
+    if (page == NULL) return false;
+    page->scale = (float)scale;
+    page->normalImage = normal;
+    return (file == NULL) || (normal != NULL) || rbl__atlasProbeNormal(s, page);
+}
+
+// TexturePacker / Aseprite JSON: "frames" (hash or array) with meta.image, or TexturePacker's
+// multi-texture (Phaser 3) "textures": one sheet per entry, its normalMap paired with it
+static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, const char *file, int *format, rbl__Json *jOut)
 {
     rbl__Json j0 = { text, size, 0, NULL, 0, 0, s };
     *jOut = j0;
@@ -8158,8 +9186,10 @@ static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, 
     rbl__jsonSkip(j);
     if (j->pos != j->size) { rbl__atlasError(s, "JSON: text after the document%s", NULL, j->pos); return false; }
     if (j->nodes[root].type != RBL__J_OBJECT) { rbl__atlasError(s, "JSON: the document is not an object%s", NULL, 0); return false; }
-    int frames = rbl__jsonGet(j, root, "frames"), meta = rbl__jsonGet(j, root, "meta");
-    if ((frames < 0) || ((j->nodes[frames].type != RBL__J_OBJECT) && (j->nodes[frames].type != RBL__J_ARRAY))) { rbl__atlasError(s, "no \"frames\" object or array%s", NULL, 0); return false; }
+    int frames = rbl__jsonGet(j, root, "frames"), textures = rbl__jsonGet(j, root, "textures"), meta = rbl__jsonGet(j, root, "meta");
+    if ((frames >= 0) && (textures >= 0)) { rbl__atlasError(s, "both \"frames\" and \"textures\" (one sheet or several? neither read)%s", NULL, 0); return false; }
+    if ((textures >= 0) && ((j->nodes[textures].type != RBL__J_ARRAY) || (j->nodes[textures].count == 0))) { rbl__atlasError(s, "\"textures\" is not a non-empty array%s", NULL, j->nodes[textures].start); return false; }
+    if ((textures < 0) && ((frames < 0) || ((j->nodes[frames].type != RBL__J_OBJECT) && (j->nodes[frames].type != RBL__J_ARRAY)))) { rbl__atlasError(s, "no \"frames\" object or array, nor a \"textures\" array%s", NULL, 0); return false; }
     if ((meta >= 0) && (j->nodes[meta].type != RBL__J_OBJECT)) { rbl__atlasError(s, "\"meta\" is not an object%s", NULL, j->nodes[meta].start); return false; }
     if (*format == RBL_ATLAS_AUTO)
     {
@@ -8169,37 +9199,19 @@ static bool rbl__atlasParseJson(rbl__AtlasState *s, const char *text, int size, 
             for (int k = 0; k + 8 <= j->nodes[app].len; k++) if (memcmp(j->text + j->nodes[app].start + k, "aseprite", 8) == 0) aseprite = true;
         *format = (aseprite || (rbl__jsonGet(j, meta, "frameTags") >= 0))? RBL_ATLAS_ASEPRITE : RBL_ATLAS_TEXTUREPACKER;
     }
-    // the sheet: meta.image (joined to dir) and meta.size
-    double sz[2] = { 0.0, 0.0 };
-    if ((meta >= 0) && !rbl__jsonRect(j, meta, "size", rbl__xywh + 2, 2, true, sz)) return false;
-    if ((sz[0] < 0.0) || (sz[1] < 0.0)) { rbl__atlasError(s, "meta.size is negative%s", NULL, -1); return false; }
-    int img = rbl__jsonGet(j, meta, "image");
-    const char *image = "";
-    if (img >= 0)
+    int first = s->frameCount;
+    if (textures >= 0)
     {
-        const char *raw = rbl__jsonText(j, img);
-        if (raw == NULL) { rbl__atlasError(s, "meta.image is not a string%s", NULL, j->nodes[img].start); return false; }
-        if ((dir != NULL) && (dir[0] != 0) && (raw[0] != '/'))
+        for (int t = textures + 1, i = 0; i < j->nodes[textures].count; i++, t = j->nodes[t].next)
         {
-            size_t dl = strlen(dir), rl = strlen(raw);
-            char *joined = rbl__atlasPoolTake(s, dl + rl + 2);
-            if (joined == NULL) return false;
-            memcpy(joined, dir, dl); joined[dl] = '/'; memcpy(joined + dl + 1, raw, rl + 1);
-            image = joined;
+            char where[32];
+            snprintf(where, sizeof(where), "textures[%d]", i);
+            int tf = rbl__jsonGet(j, t, "frames");
+            if ((tf < 0) || ((j->nodes[tf].type != RBL__J_OBJECT) && (j->nodes[tf].type != RBL__J_ARRAY))) { rbl__atlasErrorf(s, j->nodes[t].start, "%s has no \"frames\" object or array", where); return false; }
+            if (!rbl__atlasJsonPage(j, t, meta, file, where) || !rbl__atlasJsonFrames(j, tf, s->pageCount - 1)) return false;
         }
-        else image = raw;
     }
-    if (rbl__atlasAddPage(s, image, (int)sz[0], (int)sz[1]) == NULL) return false;
-    int page = s->pageCount - 1, first = s->frameCount;
-    bool hash = (j->nodes[frames].type == RBL__J_OBJECT);
-    for (int k = frames + 1, i = 0; i < j->nodes[frames].count; i += hash? 2 : 1)
-    {
-        int value = hash? j->nodes[k].next : k;
-        const char *name = hash? rbl__jsonText(j, k) : rbl__jsonText(j, rbl__jsonGet(j, value, "filename"));
-        if (name == NULL) { rbl__atlasError(s, "a frame has no name (\"filename\")%s", NULL, j->nodes[value].start); return false; }
-        if (!rbl__atlasJsonFrame(j, value, name, page)) return false;
-        k = j->nodes[value].next;
-    }
+    else if (!rbl__atlasJsonPage(j, meta, meta, file, "meta") || !rbl__atlasJsonFrames(j, frames, s->pageCount - 1)) return false;
     if (meta >= 0) { if (!rbl__atlasJsonTags(j, meta, first) || !rbl__atlasJsonSlices(j, meta, first)) return false; }
     return true;
 }
@@ -8223,12 +9235,12 @@ static bool rbl__gdxInts(const char *v, const char *end, int *out, int n)
     return v == end;
 }
 
-typedef struct rbl__GdxRegion { int xy[2], size[2], orig[2], offset[2], index; bool rotated, hasXY, hasSize, hasOrig; } rbl__GdxRegion;
+typedef struct rbl__GdxRegion { int xy[2], size[2], orig[2], offset[2], split[4], index, degrees; bool hasXY, hasSize, hasOrig, hasSplit, hasPad; } rbl__GdxRegion;
 
 static bool rbl__gdxFinish(rbl__AtlasState *s, const char *name, const rbl__GdxRegion *r)
 {
     if (!r->hasXY || !r->hasSize) { rbl__atlasError(s, "region \"%s\": no xy/size or bounds", name, -1); return false; }
-    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, return false);
+    RBL__ATLAS_GROW(s, s->frames, s->frameCount, s->frameCap, RblAtlasFrame, "frames", return false);
     RblAtlasFrame *f = &s->frames[s->frameCount];
     memset(f, 0, sizeof(*f));
     f->name = name; f->page = s->pageCount - 1; f->index = r->index;
@@ -8237,8 +9249,20 @@ static bool rbl__gdxFinish(rbl__AtlasState *s, const char *name, const rbl__GdxR
     f->size = r->hasOrig? rbl__v2((float)r->orig[0], (float)r->orig[1]) : rbl__v2(w, h);
     // offset from the bottom-left of the original to the bottom-left of the packed part
     f->trim = rbl__rect((float)r->offset[0], f->size.y - (float)r->offset[1] - h, w, h);
-    f->pivot = rbl__v2(0.5f, 0.5f);
-    if (!rbl__atlasFinishFrame(s, f, r->rotated, true, &s->pages[s->pageCount - 1])) return false;
+    f->pivot = rbl__v2(0.5f, 1.0f);
+    // split: left, right, top, bottom insets of the packed part -> its centre, in canvas pixels
+    if (r->hasSplit)
+    {
+        const int *q = r->split;
+        if ((q[0] < 0) || (q[1] < 0) || (q[2] < 0) || (q[3] < 0) || (q[0] + q[1] > r->size[0]) || (q[2] + q[3] > r->size[1]))
+        { rbl__atlasError(s, "region \"%s\": split insets outside it", name, -1); return false; }
+        f->center = rbl__rect(f->trim.x + (float)q[0], f->trim.y + (float)q[2], w - (float)(q[0] + q[1]), h - (float)(q[2] + q[3]));
+    }
+    s->ignoredPads += r->hasPad;
+    // stored turned `degrees` counter-clockwise: 90 and 270 occupy an h x w block; 90 and 180 are
+    // the clockwise convention plus a half turn (both extents negated)
+    int d = r->degrees;
+    if (!rbl__atlasFinishFrame(s, f, (d == 90) || (d == 270), (d == 90) || (d == 180), &s->pages[s->pageCount - 1])) return false;
     s->frameCount++;
     return true;
 }
@@ -8260,7 +9284,7 @@ static int rbl__gdxByGroup(const void *a, const void *b)
 }
 
 // libGDX: regions named alike with index >= 0 become one tag in index order (the frames move so
-// that each tag is a contiguous run; everything else keeps file order)
+// that each tag is a contiguous run; everything else keeps file order; libGDX has no polygons)
 static bool rbl__gdxGroup(rbl__AtlasState *s)
 {
     int n = s->frameCount;
@@ -8285,7 +9309,7 @@ static bool rbl__gdxGroup(rbl__AtlasState *s)
         while ((from <= e) && (s->frames[from].index < 0)) from++;
         if (from <= e)
         {
-            ok = true; RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, ok = false; break);
+            ok = true; RBL__ATLAS_GROW(s, s->tags, s->tagCount, s->tagCap, RblAtlasTag, "tags", ok = false; break);
             if (ok)
             {
                 RblAtlasTag *t = &s->tags[s->tagCount++];
@@ -8298,7 +9322,43 @@ static bool rbl__gdxGroup(rbl__AtlasState *s)
     return ok;
 }
 
-static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, const char *dir)
+// Field names libGDX writes (page fields before the first region, region fields after). A line
+// with a colon is a field when it is indented (the old form indents every region field), when its
+// key is one of these, or when the next line is not a region field; otherwise it names a region,
+// colons and all ("ui:button" followed by "bounds:...")
+static bool rbl__gdxKnownKey(const char *k, size_t kl, bool page)
+{
+    static const char *const pageKeys[] = { "size", "format", "filter", "repeat", "pma" };
+    static const char *const regionKeys[] = { "rotate", "xy", "size", "orig", "offset", "index", "bounds", "offsets", "split", "pad" };
+    const char *const *keys = page? pageKeys : regionKeys;
+    int n = page? 5 : 10;
+    for (int i = 0; i < n; i++) if ((strlen(keys[i]) == kl) && (memcmp(keys[i], k, kl) == 0)) return true;
+    return false;
+}
+
+// Whether the first non-blank line from p on is a region field (indented, or a region key and a colon)
+static bool rbl__gdxRegionFieldNext(const char *p, const char *end)
+{
+    while (p < end)
+    {
+        const char *a = p;
+        while ((a < end) && ((*a == ' ') || (*a == '\t'))) a++;
+        const char *eol = a;
+        while ((eol < end) && (*eol != '\n')) eol++;
+        const char *b = eol;
+        while ((b > a) && ((b[-1] == ' ') || (b[-1] == '\t') || (b[-1] == '\r'))) b--;
+        if (a == b) return false;        // a blank line ends the page
+        const char *colon = (const char *)memchr(a, ':', (size_t)(b - a));
+        if (colon == NULL) return false;
+        if (a > p) return true;
+        const char *ke = colon;
+        while ((ke > a) && ((ke[-1] == ' ') || (ke[-1] == '\t'))) ke--;
+        return rbl__gdxKnownKey(a, (size_t)(ke - a), false);
+    }
+    return false;
+}
+
+static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, const char *file)
 {
     const char *p = text, *end = text + size;
     bool expectPage = true;
@@ -8313,9 +9373,11 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
         const char *a = p, *b = eol;
         p = (eol < end)? eol + 1 : end;
         lineNo++;
+        const char *lineStart = a;
         while ((a < b) && ((*a == ' ') || (*a == '\t'))) a++;
         while ((b > a) && ((b[-1] == ' ') || (b[-1] == '\t') || (b[-1] == '\r'))) b--;
-        for (const char *c = a; c < b; c++) if ((unsigned char)*c < 0x20 && (*c != '\t')) { rbl__atlasError(s, "libGDX: control character on line %s", NULL, -1); return false; }
+        bool indented = (a > lineStart);
+        for (const char *c = a; c < b; c++) if ((unsigned char)*c < 0x20 && (*c != '\t')) { rbl__atlasErrorf(s, -1, "libGDX: control character on line %d", lineNo); return false; }
         if (a == b)     // blank line: a page ends (its last region with it)
         {
             if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; region = NULL; }
@@ -8324,17 +9386,18 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
         }
         if (expectPage)
         {
-            size_t dl = (dir != NULL)? strlen(dir) : 0, nl = (size_t)(b - a);
-            char *image = rbl__atlasPoolTake(s, dl + nl + 2);
-            if (image == NULL) return false;
-            if (dl > 0) { memcpy(image, dir, dl); image[dl] = '/'; memcpy(image + dl + 1, a, nl); image[dl + 1 + nl] = 0; }
-            else { memcpy(image, a, nl); image[nl] = 0; }
-            if (rbl__atlasAddPage(s, image, 0, 0) == NULL) return false;
+            const char *written = rbl__atlasPoolCopy(s, a, (size_t)(b - a)), *image = written;
+            if ((written != NULL) && (file != NULL)) image = rbl__atlasFindFile(s, file, written, file, "", "sheet");
+            RblAtlasPage *page = (image == NULL)? NULL : rbl__atlasAddPage(s, image, 0, 0);
+            if ((page == NULL) || ((file != NULL) && !rbl__atlasProbeNormal(s, page))) return false;
             expectPage = false;
             continue;
         }
         const char *colon = (const char *)memchr(a, ':', (size_t)(b - a));
-        if (colon == NULL)      // a region name
+        const char *k = a, *ke = colon;
+        if (colon != NULL) { while ((ke > k) && ((ke[-1] == ' ') || (ke[-1] == '\t'))) ke--; }
+        size_t kl = (colon != NULL)? (size_t)(ke - k) : 0;
+        if ((colon == NULL) || !(indented || rbl__gdxKnownKey(k, kl, region == NULL) || !rbl__gdxRegionFieldNext(p, end)))      // a region name
         {
             if (region != NULL) { if (!rbl__gdxFinish(s, region, &r)) return false; }
             region = rbl__atlasPoolCopy(s, a, (size_t)(b - a));
@@ -8342,27 +9405,36 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
             memset(&r, 0, sizeof(r)); r.index = -1;
             continue;
         }
-        const char *k = a, *ke = colon, *v = colon + 1;
-        while ((ke > k) && (ke[-1] == ' ')) ke--;
+        const char *v = colon + 1;
         while ((v < b) && (*v == ' ')) v++;
-        size_t kl = (size_t)(ke - k);
         #define RBL__KEY(word) ((kl == sizeof(word) - 1) && (memcmp(k, word, kl) == 0))
         bool ok = true;
         int q[4];
-        if (region == NULL)     // page fields: only the size is read (format, filter, repeat, pma ignored)
+        size_t vl = (size_t)(b - v);
+        if (region == NULL)     // page fields: size and pma are read (format, filter, repeat: the texture's own)
         {
+            RblAtlasPage *page = &s->pages[s->pageCount - 1];
             if (RBL__KEY("size"))
             {
                 ok = rbl__gdxInts(v, b, q, 2) && (q[0] > 0) && (q[1] > 0) && (q[0] <= RBL__ATLAS_MAX_COORD) && (q[1] <= RBL__ATLAS_MAX_COORD);
-                if (ok) { s->pages[s->pageCount - 1].width = q[0]; s->pages[s->pageCount - 1].height = q[1]; }
+                if (!ok) { rbl__atlasErrorf(s, -1, "libGDX: page size on line %d is not whole texels 1..%g", lineNo, RBL__ATLAS_MAX_COORD); return false; }
+                page->width = q[0]; page->height = q[1];
+            }
+            else if (RBL__KEY("pma"))
+            {
+                if ((vl == 4) && (memcmp(v, "true", 4) == 0)) page->premultiplied = true;
+                else if ((vl == 5) && (memcmp(v, "false", 5) == 0)) page->premultiplied = false;
+                else ok = false;
             }
         }
         else if (RBL__KEY("rotate"))
         {
-            size_t vl = (size_t)(b - v);
-            if (((vl == 4) && (memcmp(v, "true", 4) == 0)) || ((vl == 2) && (memcmp(v, "90", 2) == 0))) r.rotated = true;
-            else if (((vl == 5) && (memcmp(v, "false", 5) == 0)) || ((vl == 1) && (*v == '0'))) r.rotated = false;
-            else ok = false;
+            // true = 90; any multiple of 90 degrees (counter-clockwise, as libGDX and Spine store it)
+            int d = 0;
+            if ((vl == 4) && (memcmp(v, "true", 4) == 0)) d = 90;
+            else if ((vl == 5) && (memcmp(v, "false", 5) == 0)) d = 0;
+            else ok = rbl__gdxInts(v, b, &d, 1) && (d%90 == 0);
+            r.degrees = ((d%360) + 360)%360;
         }
         else if (RBL__KEY("xy")) { ok = rbl__gdxInts(v, b, r.xy, 2); r.hasXY = true; }
         else if (RBL__KEY("size")) { ok = rbl__gdxInts(v, b, r.size, 2); r.hasSize = true; }
@@ -8379,20 +9451,23 @@ static bool rbl__atlasParseGdx(rbl__AtlasState *s, const char *text, int size, c
             ok = rbl__gdxInts(v, b, q, 4);
             r.offset[0] = q[0]; r.offset[1] = q[1]; r.orig[0] = q[2]; r.orig[1] = q[3]; r.hasOrig = true;
         }
+        else if (RBL__KEY("split")) { ok = rbl__gdxInts(v, b, r.split, 4) && (abs(r.split[0]) <= RBL__ATLAS_MAX_COORD) && (abs(r.split[1]) <= RBL__ATLAS_MAX_COORD) && (abs(r.split[2]) <= RBL__ATLAS_MAX_COORD) && (abs(r.split[3]) <= RBL__ATLAS_MAX_COORD); r.hasSplit = true; }
+        else if (RBL__KEY("pad")) { ok = rbl__gdxInts(v, b, q, 4); r.hasPad = true; }
         #undef RBL__KEY
         for (int c = 0; c < 2; c++) if ((abs(r.xy[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.size[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.orig[c]) > RBL__ATLAS_MAX_COORD) || (abs(r.offset[c]) > RBL__ATLAS_MAX_COORD)) ok = false;
-        if (!ok) { char ln[24]; snprintf(ln, sizeof(ln), "%d", lineNo); rbl__atlasError(s, "libGDX: bad value on line %s", ln, -1); return false; }
+        if (!ok) { rbl__atlasErrorf(s, -1, "libGDX: bad %.*s value on line %d", (int)((kl < 32)? kl : 32), k, lineNo); return false; }
     }
     if ((region != NULL) && !rbl__gdxFinish(s, region, &r)) return false;
     if (s->frameCount == 0) { rbl__atlasError(s, "libGDX: no regions%s", NULL, -1); return false; }
     return rbl__gdxGroup(s);
 }
 
-// Parses one text into s (appending a page and its frames); format in/out
-static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int *format, const char *dir, char ***related, int *relatedCount)
+// Parses one text into s (appending its pages and frames); format in/out. file: the text's path
+// (RblLoadAtlas), NULL from memory
+static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int *format, const char *file, char ***related, int *relatedCount)
 {
-    // decoded strings never outgrow their raw text; sheet paths add the folder (at most 64 pages)
-    if (!rbl__atlasPoolBegin(s, 2*(size_t)size + (RBL__ATLAS_MAX_PAGES + 2)*(((dir != NULL)? strlen(dir) : 0) + 2) + 64)) return false;
+    // decoded strings never outgrow their raw text (sheet paths have blocks of their own)
+    if (!rbl__atlasPoolBegin(s, 2*(size_t)size + 64)) return false;
     int f = *format;     // TexturePacker and Aseprite read alike (the caller's name is kept); AUTO: detected
     if (f == RBL_ATLAS_AUTO)
     {
@@ -8401,9 +9476,9 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
         while ((i < size) && ((text[i] == ' ') || (text[i] == '\t') || (text[i] == '\n') || (text[i] == '\r'))) i++;
         f = ((i < size) && (text[i] == '{'))? RBL_ATLAS_AUTO : RBL_ATLAS_LIBGDX;   // JSON: told apart by its meta
     }
-    if (f == RBL_ATLAS_LIBGDX) { *format = f; return rbl__atlasParseGdx(s, text, size, dir); }
+    if (f == RBL_ATLAS_LIBGDX) { *format = f; return rbl__atlasParseGdx(s, text, size, file); }
     rbl__Json j;
-    bool ok = rbl__atlasParseJson(s, text, size, dir, &f, &j);
+    bool ok = rbl__atlasParseJson(s, text, size, file, &f, &j);
     if (ok && (related != NULL))
     {
         int packs = rbl__jsonGet(&j, rbl__jsonGet(&j, 0, "meta"), "related_multi_packs");
@@ -8414,7 +9489,7 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
                 if (name == NULL) { rbl__atlasError(s, "related_multi_packs holds a non-string%s", NULL, j.nodes[k].start); ok = false; break; }
                 // plain file names beside the atlas only: a pack never leads the loader elsewhere
                 if ((name[0] == 0) || (name[0] == '.') || (strchr(name, '/') != NULL) || (strchr(name, '\\') != NULL)) { rbl__atlasError(s, "related pack \"%s\" is not a file name beside the atlas", name, j.nodes[k].start); ok = false; break; }
-                if (*relatedCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); ok = false; break; }
+                if (*relatedCount >= RBL__ATLAS_MAX_PAGES) { rbl__atlasErrorf(s, -1, "more than %d sheets", RBL__ATLAS_MAX_PAGES); ok = false; break; }
                 (*related)[(*relatedCount)++] = (char *)name;
             }
     }
@@ -8427,14 +9502,30 @@ static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
 {
     RblAtlas a;
     memset(&a, 0, sizeof(a));
-    RBL__ATLAS_GROW(s, rbl__atlases.live, rbl__atlases.count, rbl__atlases.capacity, const void *, return a);
+    RBL__ATLAS_GROW(s, rbl__atlases.live, rbl__atlases.count, rbl__atlases.capacity, const void *, "live atlases", return a);
     rbl__atlases.live[rbl__atlases.count++] = s;
     s->format = format;
+    // the tables stopped moving: polygons point into their rows, frames at their polygons
+    for (int i = 0; i < s->polygonCount; i++)
+    {
+        RblAtlasPolygon *p = &s->polygons[i];
+        const rbl__AtlasPolyRef *r = &s->polygonRefs[i];
+        p->vertices = s->polyPoints + r->vertex;
+        p->uvs = s->polyPoints + r->vertex + p->vertexCount;
+        p->indices = s->polyIndices + r->index;
+        s->frames[r->frame].polygon = p;
+    }
     a.format = format;
     a.frameCount = s->frameCount; a.tagCount = s->tagCount; a.pageCount = s->pageCount; a.sliceCount = s->sliceCount;
     a.frames = s->frames; a.tags = s->tags; a.pages = s->pages; a.slices = s->slices;
     a.state = s;
     return a;
+}
+
+// What a loaded atlas leaves unread, said once (LOG_INFO: the atlas is fine)
+static void rbl__atlasReportIgnored(const rbl__AtlasState *s, const char *fn, const char *what)
+{
+    if (s->ignoredPads > 0) TraceLog(LOG_INFO, "RBL: %s: %s: libGDX pad (9-slice content padding) of %i regions ignored", fn, what, s->ignoredPads);
 }
 
 static RblAtlas rbl__atlasFail(rbl__AtlasState *s, const char *fn, const char *what)
@@ -8460,6 +9551,7 @@ RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format)
     if (s->frameCount == 0) { rbl__atlasError(s, "no frames%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas"); }
     RblAtlas a = rbl__atlasPublish(s, f);
     if (a.state == NULL) return rbl__atlasFail(s, "RblLoadAtlasFromMemory", "atlas");
+    rbl__atlasReportIgnored(s, "RblLoadAtlasFromMemory", "atlas");
     return a;
 }
 
@@ -8473,9 +9565,8 @@ RblAtlas RblLoadAtlas(const char *fileName)
     // the folder of the file: sheets and related packs are named relative to it
     size_t fl = strlen(fileName), dl = fl;
     while ((dl > 0) && (fileName[dl - 1] != '/') && (fileName[dl - 1] != '\\')) dl--;
-    char dir[1024], path[2048];
-    if ((dl >= sizeof(dir)) || (fl >= sizeof(path))) { rbl__atlasError(s, "path too long%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
-    memcpy(dir, fileName, dl); dir[(dl > 0)? dl - 1 : 0] = 0;
+    char path[2048];
+    if (fl >= sizeof(path)) { rbl__atlasErrorf(s, -1, "path longer than %d bytes", (int)sizeof(path) - 1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
     char *relatedStore[RBL__ATLAS_MAX_PAGES], **related = relatedStore;
     int relatedCount = 0, done = 0, format = RBL_ATLAS_AUTO;
     const char *loaded[RBL__ATLAS_MAX_PAGES + 1];
@@ -8487,7 +9578,7 @@ RblAtlas RblLoadAtlas(const char *fileName)
         unsigned char *data = LoadFileData(path, &bytes);
         if ((data == NULL) || (bytes <= 0)) { if (data != NULL) UnloadFileData(data); rbl__atlasError(s, "cannot read \"%s\"", path, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
         int f = (done == 0)? RBL_ATLAS_AUTO : format;
-        bool ok = rbl__atlasParse(s, (const char *)data, bytes, &f, (dl > 0)? dir : NULL, &related, &relatedCount);
+        bool ok = rbl__atlasParse(s, (const char *)data, bytes, &f, path, &related, &relatedCount);
         UnloadFileData(data);
         if (!ok) return rbl__atlasFail(s, "RblLoadAtlas", path);
         if (done == 0) format = f;
@@ -8502,13 +9593,14 @@ RblAtlas RblLoadAtlas(const char *fileName)
             if (!seen && (strcmp(related[i], base) != 0)) next = related[i];
         }
         if (next == NULL) break;
-        if (done > RBL__ATLAS_MAX_PAGES) { rbl__atlasError(s, "more than 64 sheets%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
-        if (dl + strlen(next) + 1 >= sizeof(path)) { rbl__atlasError(s, "path too long%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        if (done > RBL__ATLAS_MAX_PAGES) { rbl__atlasErrorf(s, -1, "more than %d sheets", RBL__ATLAS_MAX_PAGES); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
+        if (dl + strlen(next) + 1 >= sizeof(path)) { rbl__atlasErrorf(s, -1, "path longer than %d bytes", (int)sizeof(path) - 1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
         memcpy(path, fileName, dl); memcpy(path + dl, next, strlen(next) + 1);
     }
     if (s->frameCount == 0) { rbl__atlasError(s, "no frames%s", NULL, -1); return rbl__atlasFail(s, "RblLoadAtlas", fileName); }
     RblAtlas a = rbl__atlasPublish(s, format);
     if (a.state == NULL) return rbl__atlasFail(s, "RblLoadAtlas", fileName);
+    rbl__atlasReportIgnored(s, "RblLoadAtlas", fileName);
     return a;
 }
 
@@ -8558,11 +9650,17 @@ int RblAtlasFindTag(const RblAtlas *atlas, const char *name)
     return -1;
 }
 
-// Quad of a frame: the trimmed part at its place in the untrimmed frame, pivot as the origin
-// (world units from the drawn quad's bottom-left; may lie outside it)
-static void rbl__atlasFrameQuad(const RblAtlasFrame *f, float worldScale, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+// World units per sheet texel: worldScale per pixel of the art at scale 1 (a sheet exported at
+// meta.scale 0.5 has half the texels: its frames come out the size of the full-scale sheet's)
+static double rbl__atlasUnit(const rbl__AtlasState *s, const RblAtlasFrame *f, float worldScale)
 {
-    double k = worldScale;
+    return (double)worldScale/(double)s->pages[f->page].scale;
+}
+
+// Quad of a frame: the trimmed part at its place in the untrimmed frame, pivot as the origin
+// (world units from the drawn quad's bottom-left; may lie outside it); k world units per texel
+static void rbl__atlasFrameQuad(const RblAtlasFrame *f, double k, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
     double px = (double)f->pivot.x*f->size.x, py = (double)f->pivot.y*f->size.y;     // pixels, top-left origin
     *source = f->source;
     *size = rbl__v2((float)(f->trim.width*k), (float)(f->trim.height*k));
@@ -8576,7 +9674,7 @@ static bool rbl__atlasQuad(const RblAtlas *atlas, int frame, float worldScale, c
     if (s == NULL) return false;
     if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
-    rbl__atlasFrameQuad(&s->frames[frame], worldScale, source, size, origin, flags);
+    rbl__atlasFrameQuad(&s->frames[frame], rbl__atlasUnit(s, &s->frames[frame], worldScale), source, size, origin, flags);
     return true;
 }
 
@@ -8598,6 +9696,25 @@ bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblIns
     instance->source = src; instance->size = size; instance->origin = origin;
     instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
     return true;
+}
+
+// The source rectangle that shows the part [a0, a1] x [b0, b1] of a frame's trimmed picture
+// (fractions: a from its left, b from its top; beyond 0..1 the texture coordinates run on at the
+// same rate). Texture x follows the picture's x (upright) or y (stored turned clockwise: x runs up
+// the picture unless the height is negated); growing with it or against it (a negated extent).
+static Rectangle rbl__atlasSubSource(const RblAtlasFrame *f, double a0, double a1, double b0, double b1)
+{
+    const Rectangle o = f->source;
+    bool rotated = (f->flags & RBL_FRAME_ROTATED) != 0;
+    double x0 = rotated? b0 : a0, x1 = rotated? b1 : a1, y0 = rotated? a0 : b0, y1 = rotated? a1 : b1;
+    bool forwardX = rotated? (o.height < 0.0f) : (o.width >= 0.0f), forwardY = (rotated? o.width : o.height) >= 0.0f;
+    double w = fabs((double)o.width), h = fabs((double)o.height);
+    Rectangle r;
+    r.x = (float)(o.x + (forwardX? x0 : 1.0 - x1)*w);
+    r.y = (float)(o.y + (forwardY? y0 : 1.0 - y1)*h);
+    r.width = (float)((x1 - x0)*w*((o.width < 0.0f)? -1.0 : 1.0));
+    r.height = (float)((y1 - y0)*h*((o.height < 0.0f)? -1.0 : 1.0));
+    return r;
 }
 
 // Cross-fade quad of two frames: the union of their trimmed rectangles (pixels from each frame's own
@@ -8623,24 +9740,13 @@ static bool rbl__atlasFadeQuad(const RblAtlas *atlas, int frame, int nextFrame, 
         r[k][0] = t.x - px; r[k][1] = t.y - py; r[k][2] = (double)t.x + t.width - px; r[k][3] = (double)t.y + t.height - py;
     }
     double u[4] = { fmin(r[0][0], r[1][0]), fmin(r[0][1], r[1][1]), fmax(r[0][2], r[1][2]), fmax(r[0][3], r[1][3]) };
-    double uw = u[2] - u[0], uh = u[3] - u[1], k = worldScale;
+    double uw = u[2] - u[0], uh = u[3] - u[1], k = rbl__atlasUnit(s, f[0], worldScale);
     Rectangle src[2], clip[2];
     for (int i = 0; i < 2; i++)
     {
-        const Rectangle o = f[i]->source;
         double tw = r[i][2] - r[i][0], th = r[i][3] - r[i][1];
         // The union's edges in the frame's own fractions (0..1 = its trim)
-        double a0 = (u[0] - r[i][0])/tw, a1 = (u[2] - r[i][0])/tw, b0 = (u[1] - r[i][1])/th, b1 = (u[3] - r[i][1])/th;
-        // Texture x follows the picture's x (upright) or y (stored turned clockwise: x runs up the
-        // picture unless the height is negated); growing with it or against it (a negated extent)
-        bool rotated = (f[i]->flags & RBL_FRAME_ROTATED) != 0;
-        double x0 = rotated? b0 : a0, x1 = rotated? b1 : a1, y0 = rotated? a0 : b0, y1 = rotated? a1 : b1;
-        bool forwardX = rotated? (o.height < 0.0f) : (o.width >= 0.0f), forwardY = (rotated? o.width : o.height) >= 0.0f;
-        double w = fabs((double)o.width), h = fabs((double)o.height);
-        src[i].x = (float)(o.x + (forwardX? x0 : 1.0 - x1)*w);
-        src[i].y = (float)(o.y + (forwardY? y0 : 1.0 - y1)*h);
-        src[i].width = (float)((x1 - x0)*w*((o.width < 0.0f)? -1.0 : 1.0));
-        src[i].height = (float)((y1 - y0)*h*((o.height < 0.0f)? -1.0 : 1.0));
+        src[i] = rbl__atlasSubSource(f[i], (u[0] - r[i][0])/tw, (u[2] - r[i][0])/tw, (u[1] - r[i][1])/th, (u[3] - r[i][1])/th);
         clip[i].x = (float)((r[i][0] - u[0])/uw); clip[i].y = (float)((r[i][1] - u[1])/uh);
         clip[i].width = (float)(tw/uw); clip[i].height = (float)(th/uh);
     }
@@ -8675,6 +9781,109 @@ bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float
     instance->source = src; instance->size = size; instance->origin = origin;
     instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
     *fade = f;
+    return true;
+}
+
+// ---- slices: sub-frames of a frame -------------------------------------------------------------
+int RblAtlasFindSlice(const RblAtlas *atlas, const char *name, int frame)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblAtlasFindSlice");
+    if (s == NULL) return -1;
+    if (name == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasFindSlice: NULL name"); return -1; }
+    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: RblAtlasFindSlice: frame %i outside 0..%i", frame, s->frameCount - 1); return -1; }
+    for (int i = 0; i < s->sliceCount; i++)
+        if ((s->slices[i].frame <= frame) && (frame <= s->slices[i].lastFrame) && (strcmp(s->slices[i].name, name) == 0)) return i;
+    return -1;
+}
+
+// A slice key drawn alone at a frame it applies to: its bounds clipped to the frame's trim (only
+// drawn pixels are sampled), placed about its pivot as a frame about its own
+static bool rbl__atlasSliceQuad(const RblAtlas *atlas, int slice, int frame, float worldScale, const char *fn, Rectangle *source, Vector2 *size, Vector2 *origin, unsigned int *flags)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, fn);
+    if (s == NULL) return false;
+    if ((frame < 0) || (frame >= s->frameCount)) { TraceLog(LOG_WARNING, "RBL: %s: frame %i outside 0..%i", fn, frame, s->frameCount - 1); return false; }
+    if ((slice < 0) || (slice >= s->sliceCount)) { TraceLog(LOG_WARNING, "RBL: %s: slice %i outside 0..%i", fn, slice, s->sliceCount - 1); return false; }
+    const RblAtlasSlice *key = &s->slices[slice];
+    if ((frame < key->frame) || (frame > key->lastFrame)) { TraceLog(LOG_WARNING, "RBL: %s: slice key %i applies to frames %i..%i, not %i (RblAtlasFindSlice)", fn, slice, key->frame, key->lastFrame, frame); return false; }
+    if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: %s: worldScale must be finite and in (0, 1e15]", fn); return false; }
+    const RblAtlasFrame *f = &s->frames[frame];
+    const Rectangle t = f->trim, b = key->bounds;
+    double l = fmax(b.x, t.x), top = fmax(b.y, t.y), r = fmin((double)b.x + b.width, (double)t.x + t.width), bottom = fmin((double)b.y + b.height, (double)t.y + t.height);
+    if (!((r > l) && (bottom > top))) { TraceLog(LOG_WARNING, "RBL: %s: slice \"%s\" lies outside frame %i's drawn (trimmed) pixels", fn, key->name, frame); return false; }
+    double k = rbl__atlasUnit(s, f, worldScale);
+    *source = rbl__atlasSubSource(f, (l - t.x)/t.width, (r - t.x)/t.width, (top - t.y)/t.height, (bottom - t.y)/t.height);
+    *size = rbl__v2((float)((r - l)*k), (float)((bottom - top)*k));
+    *origin = rbl__v2((float)((key->pivot.x - l)*k), (float)((bottom - key->pivot.y)*k));
+    *flags = f->flags;
+    return true;
+}
+
+bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float worldScale, RblBillboard *billboard)
+{
+    if (billboard == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasSliceBillboard: NULL billboard"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags;
+    if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceBillboard", &src, &size, &origin, &flags)) return false;
+    billboard->source = src; billboard->size = size; billboard->origin = origin;
+    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    return true;
+}
+
+bool RblAtlasSliceInstance(const RblAtlas *atlas, int slice, int frame, float worldScale, RblInstance *instance)
+{
+    if (instance == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasSliceInstance: NULL instance"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags;
+    if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceInstance", &src, &size, &origin, &flags)) return false;
+    instance->source = src; instance->size = size; instance->origin = origin;
+    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    return true;
+}
+
+// ---- a page's textures into a Material ----------------------------------------------------------
+// The colour sheet into ALBEDO and, when there is one, its same-layout normal sheet into NORMAL
+// (an RGB tangent-space map: RblMaterialLayout.normalEncoding RGB), both checked before either slot
+// changes; the slots' previous textures are replaced, not unloaded (UnloadMaterial frees these)
+bool RblLoadAtlasTextures(const RblAtlas *atlas, int page, const char *normalSuffix, Material *material, RblMaterialLayout *layout)
+{
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblLoadAtlasTextures");
+    if (s == NULL) return false;
+    if ((page < 0) || (page >= s->pageCount)) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: page %i outside 0..%i", page, s->pageCount - 1); return false; }
+    if ((material == NULL) || (material->maps == NULL)) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: NULL material or material.maps"); return false; }
+    const RblAtlasPage *pg = &s->pages[page];
+    char suffixed[RBL__ATLAS_PATH];
+    const char *normalPath = pg->normalImage;          // NULL suffix: the file's pairing or "_n" found at load
+    if (normalSuffix != NULL)
+    {
+        normalPath = NULL;                              // "": no normal sheet
+        if ((normalSuffix[0] != 0) && !rbl__pathWithSuffix(pg->image, normalSuffix, suffixed, sizeof(suffixed))) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: normal sheet path longer than %i bytes", RBL__ATLAS_PATH - 1); return false; }
+        if (normalSuffix[0] != 0) normalPath = suffixed;
+    }
+    const char *missing = ((pg->image[0] == 0) || !FileExists(pg->image))? pg->image : (((normalPath != NULL) && !FileExists(normalPath))? normalPath : NULL);
+    if (missing != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: %s \"%s\" not found", (missing == pg->image)? "sheet" : "normal sheet", missing); return false; }
+    Texture2D albedo = LoadTexture(pg->image), normal;
+    memset(&normal, 0, sizeof(normal));
+    if ((albedo.id != 0) && (normalPath != NULL)) normal = LoadTexture(normalPath);
+    const char *bad = (albedo.id == 0)? "the sheet did not load (no GL context, or not an image)" : (((normalPath != NULL) && (normal.id == 0))? "the normal sheet did not load" : NULL);
+    if ((bad == NULL) && (pg->width > 0) && ((albedo.width != pg->width) || (albedo.height != pg->height))) bad = "the sheet's size differs from the size the atlas states";
+    if ((bad == NULL) && (normal.id != 0) && ((normal.width != albedo.width) || (normal.height != albedo.height))) bad = "the normal sheet's size differs from the sheet's (same layout needed)";
+    if (bad != NULL)
+    {
+        if (albedo.id != 0) UnloadTexture(albedo);
+        if (normal.id != 0) UnloadTexture(normal);
+        TraceLog(LOG_WARNING, "RBL: RblLoadAtlasTextures: \"%s\": %s", pg->image, bad);
+        return false;
+    }
+    // ES 2 / WebGL1 sample a non-power-of-two texture only with clamped edges
+    const bool npot = ((albedo.width & (albedo.width - 1)) != 0) || ((albedo.height & (albedo.height - 1)) != 0);
+    if ((rbl__glsl() == 100) && npot) { SetTextureWrap(albedo, TEXTURE_WRAP_CLAMP); if (normal.id != 0) SetTextureWrap(normal, TEXTURE_WRAP_CLAMP); }
+    material->maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    if (normal.id != 0) material->maps[MATERIAL_MAP_NORMAL].texture = normal;
+    if (layout != NULL)
+    {
+        memset(layout, 0, sizeof(*layout));
+        layout->normalEncoding = (normal.id != 0)? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
+        layout->premultipliedAlpha = pg->premultiplied;
+    }
     return true;
 }
 
@@ -8737,6 +9946,7 @@ static const char *rbl__spriteStep(const rbl__AtlasState *s, RblSpritePlayer *pl
     bool pingpong = (dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
     if ((p.frame < from) || (p.frame > to) || ((p.step != 1) && (p.step != -1)) || !rbl__finite(p.time) || (p.time < 0.0f) || (p.loops < 0) || (p.passes < 0))
         return "player state not from RblPlaySprite for this atlas (frame, step, time or counts)";
+    if ((double)p.time > rbl__spriteDuration(s, p.frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     if (p.finished) return NULL;
     double t = (double)p.time + dt;
     // Most updates stay inside the current frame: no period, no stepping
@@ -8789,10 +9999,17 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
 {
     const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblUpdateSpriteInstances");
     if (s == NULL) return 0;
-    if ((count < 0) || ((count > 0) && ((players == NULL) || (instances == NULL)))) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count below 0, or players/instances NULL"); return 0; }
+    if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && ((players == NULL) || (instances == NULL))))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: count %i outside 0..RBL_MAX_INSTANCES (%i), or players/instances NULL", count, RBL_MAX_INSTANCES);
+        return 0;
+    }
     if (!rbl__finite(dt) || (dt < 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: dt must be finite and >= 0"); return 0; }
     if (!rbl__finite(worldScale) || !(worldScale > 0.0f) || (worldScale > 1e15f)) { TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: worldScale must be finite and in (0, 1e15]"); return 0; }
-    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance)
+    // the checks above once, then per instance: the step and the frame's fields (as RblAtlasInstance,
+    // with each page's world units per texel divided out once)
+    double unit[RBL__ATLAS_MAX_PAGES];
+    for (int p = 0; p < s->pageCount; p++) unit[p] = (double)worldScale/(double)s->pages[p].scale;
     int done = 0, skipped = 0;
     const char *why = NULL;
     for (int i = 0; i < count; i++)
@@ -8801,7 +10018,8 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
         if (bad != NULL) { skipped++; why = bad; continue; }
         RblInstance *in = &instances[i];
         unsigned int flags;
-        rbl__atlasFrameQuad(&s->frames[players[i].frame], worldScale, &in->source, &in->size, &in->origin, &flags);
+        const RblAtlasFrame *f = &s->frames[players[i].frame];
+        rbl__atlasFrameQuad(f, unit[f->page], &in->source, &in->size, &in->origin, &flags);
         in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
         done++;
     }
@@ -8818,6 +10036,8 @@ static const char *rbl__spriteBlend(const rbl__AtlasState *s, const RblSpritePla
     rbl__spriteRange(s, player->tag, &from, &to, &dir, &repeat);
     if ((player->frame < from) || (player->frame > to) || ((player->step != 1) && (player->step != -1)) || !rbl__finite(player->time) || (player->time < 0.0f) || (player->loops < 0) || (player->passes < 0))
         return "player state not from RblPlaySprite for this atlas";
+    // RblUpdateSprite keeps time inside the frame; more is not a state it makes
+    if ((double)player->time > rbl__spriteDuration(s, player->frame)) return "player's time is beyond its frame's duration (not a state RblUpdateSprite makes)";
     RblSpritePlayer p = *player;
     *nextFrame = p.frame;
     *weight = 0.0f;
@@ -8867,7 +10087,8 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: NaN/Inf view direction or facing (|facing| <= 1e9)"); return -1; }
     // The eye seen from the sprite, on the ground plane: angle about +Y from +Z (the facing's 0)
     double ex = -(double)viewDirection.x, ez = -(double)viewDirection.z;
-    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up (or zero): the front
+    if ((ex == 0.0) && (ez == 0.0) && (viewDirection.y == 0.0f)) { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: zero view direction"); return -1; }
+    if ((ex == 0.0) && (ez == 0.0)) return 0;        // straight down or up: the front
     double eye = atan2(ex, ez)*(180.0/3.14159265358979323846);
     double rel = fmod(eye - fmod((double)facingDegrees, 360.0), 360.0);
     if (rel < 0.0) rel += 360.0;

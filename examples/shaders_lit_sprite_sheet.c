@@ -242,9 +242,8 @@ static void SpritesDrawWorld(void)
             // The character walks a circle of radius 3.2; mirrored when it moves left on screen
             RblBillboard hero = RBL_ZERO;
             hero.facing = RBL_FACING_AXIS;
-            RblAtlasBillboard(&atlas, walk.frame, 1.0f/28.0f, &hero);
+            RblAtlasBillboard(&atlas, walk.frame, 1.0f/28.0f, &hero);  // no pivot in the atlas: it stands on its feet
             hero.position = CLITERAL(Vector3){ 3.2f*cosf(heroAngle), 0.0f, 3.2f*sinf(heroAngle) };
-            hero.origin.y = 0.0f;                           // stand on the floor (pivot at the feet)
             Vector3 velocity = { -sinf(heroAngle), 0.0f, cosf(heroAngle) };
             RblCameraFrame view = RblGetCameraFrame(camera);
             if (velocity.x*view.right.x + velocity.z*view.right.z < 0.0f) hero.size.x = -hero.size.x;

@@ -137,20 +137,21 @@ vec2 rblSinCosDeg(float degrees)
 // for facing mode facing, from the view frame and the draw's up and axis; a shadow pass tilts AXIS
 // billboards until the light sees them at the minimum angle. As on the CPU: each mode picks an axis,
 // a vector v and a fallback f, one blend follows, then the frame is built.
-void rblFacingBasis(int facing, vec3 position, vec3 eye, vec3 viewRight, vec3 viewUp, vec3 viewBack,
+void rblFacingBasis(int facing, vec3 position, vec3 eye, float orthographic, vec3 viewRight, vec3 viewUp, vec3 viewBack,
                     vec3 facingUp, vec3 facingAxis, float minCastSin, vec4 light, out vec3 r, out vec3 u, out vec3 n)
 {
     r = viewRight; u = viewUp; n = viewBack;
+    vec3 toEye = (orthographic > 0.5)? viewBack : eye - position;     // a parallel view's eye is at infinity
     vec3 axis = r, v = u, f = u, a = vec3(0.0, 1.0, 0.0);
     bool own = true;
     if (facing == 0) { own = dot(facingUp, facingUp) > 1e-24; v = facingUp; }
-    else if (facing == 1) { own = rblNormalizeTo(eye - position, axis); f = cross(axis, r); }
+    else if (facing == 1) { own = rblNormalizeTo(toEye, axis); f = cross(axis, r); }
     else if (facing == 2)
     {
         if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);
         vec3 q;
         float wb = rblOffAxis(viewBack, a, q);
-        axis = a; v = eye - position; f = rblBlendOffAxis(q, wb, viewUp, a);
+        axis = a; v = toEye; f = rblBlendOffAxis(q, wb, viewUp, a);
     }
     else
     {
@@ -285,7 +286,7 @@ void main()
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     vec3 eye = rblInstancing[0].xyz;
     vec3 r, u, n;
-    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[1].xyz, rblInstancing[2].xyz,
+    rblFacingBasis(int(rblInstancing[0].w + 0.5), rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
                    rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);
     // Rotate the frame around the normal (raylib rotates the corners; same result)
     if (rblInstancePosition.w != 0.0)

@@ -7,6 +7,9 @@
 //   RBL_SPECULAR             material texture B: Blinn-Phong specular intensity / GGX roughness
 //   RBL_OCCLUSION            material texture A holds ambient occlusion
 //   RBL_EMISSIVE e           0 none, 1 mask (texture5.r x albedo), 2 sRGB colour (texture5.rgb)
+//   RBL_PREMULTIPLIED_ALPHA  albedo texels hold colour x alpha (libGDX pma): the filtered texel is
+//                            divided by its alpha before decoding (the alpha-weighted mean of its
+//                            neighbours' colours, no dark fringe); lit and written as straight alpha
 //   RBL_VIEW_VECTOR          the eye position is needed (specular BRDF or fog)
 //   RBL_CROSS_FADE           a second atlas frame mixed in (RblLitShaderDesc.crossFade): every map
 //                            is fetched at both texture coordinates. What is mixed: colour in linear
@@ -105,14 +108,24 @@ float rblFadeCoverage(float w, float a1, float a2)
 }
 #endif
 
+// A filtered albedo texel as straight (not premultiplied) sRGB colour and alpha
+vec4 rblStraightAlpha(vec4 texel)
+{
+#ifdef RBL_PREMULTIPLIED_ALPHA
+    return vec4((texel.a > 0.0)? min(texel.rgb/texel.a, vec3(1.0)) : vec3(0.0), texel.a);
+#else
+    return texel;
+#endif
+}
+
 // The material at this fragment: discards below the alpha cutoff; alpha, emission and the
 // tangent-space normal (debug views) come back through the out parameters
 RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 tangentNormal)
 {
-    vec4 texel = texture(texture0, fragTexCoord);
+    vec4 texel = rblStraightAlpha(texture(texture0, fragTexCoord));
 #ifdef RBL_CROSS_FADE
     // Both fetches outside any branch: implicit derivatives (mips) need every pixel of a quad to sample
-    vec4 texel2 = texture(texture0, fragTexCoord2);
+    vec4 texel2 = rblStraightAlpha(texture(texture0, fragTexCoord2));
     float fade = fragFade.x;
     float inside1 = rblFadeInside(fragFadeClip.xy), inside2 = rblFadeInside(fragFadeClip.zw);
     // Outside the frame shown alone (or both) there is no fragment, as with that frame's own quad

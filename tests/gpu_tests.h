@@ -17,9 +17,11 @@
 #include "test_sprites.c"
 #include "test_atlas_render.c"
 #include "test_fade.c"
+#include "test_held.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_API_TESTS,
+        RBL_HELD_TESTS,
         RT_TEST(test_shaders_every_lit_variant_compiles_and_links),
         RT_TEST(test_shaders_compile_failure_is_reported_not_replaced_by_the_default),
         RT_TEST(test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u),
@@ -28,6 +30,8 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_lit_bad_lights_are_rejected_and_change_nothing),
         RT_TEST(test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases),
         RT_TEST(test_atlas_rotated_frames_light_like_the_upright_frame),
+        RT_TEST(test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_the_reference),
+        RT_TEST(test_atlas_premultiplied_pages_light_and_blend_as_their_straight_colour),
         RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate),
         RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro),
         RT_TEST_GLSL3(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),
@@ -44,7 +48,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_materials_occlusion_dims_ambient_only),
         RT_TEST(test_materials_emission_adds_after_lighting),
         RT_TEST(test_materials_packed_atlas_renders_like_its_separate_maps),
-        RT_TEST(test_lighting_every_variant_in_the_matrix_compiles_links_and_compiles_once),
+        RT_TEST(test_lighting_every_variant_compiles_and_each_handle_owns_its_program),
         RT_TEST(test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line),
         RT_TEST(test_lighting_matrix_matches_the_double_reference_within_2_of_255),
         RT_TEST(test_lighting_optional_stages_match_the_reference),
@@ -101,6 +105,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_sprites_bad_sort_settings_are_refused_and_draw_nothing),
         RT_TEST_GLSL3(test_sprites_instanced_sort_draws_alike_in_any_array_order),
         RT_TEST(test_sprites_soft_particles_fade_by_depth_distance_to_the_scene),
+        RT_TEST(test_sprites_soft_particles_in_a_plain_frame_with_two_added_lines),
         RT_TEST(test_sprites_npot_packed_atlas_uploads_what_the_context_can_sample),
         RT_TEST_GLSL3(test_sprites_soft_particles_read_a_gbuffer_depth),
         RT_TEST(test_skinning_lit_model_animates_and_matches_the_cpu_skinned_rendering),

@@ -305,6 +305,58 @@ void rtSaveImage(Image image, const char *tag)
     if (ExportImage(image, path)) printf("    image written: %s\n", path);
 }
 
+// ---- atlas fixtures -----------------------------------------------------------------------------
+const char *rtAtlasFixtures(void)
+{
+    static const char *dir = NULL;
+    if (dir != NULL) return dir;
+    static const char *const files[] = {
+        "texturepacker/hash.json", "texturepacker/array.json", "texturepacker/multi-0.json", "texturepacker/multi-1.json",
+        "texturepacker/phaser3.json", "texturepacker/polygon.json", "aseprite/tags.json", "aseprite/slices.json",
+        "libgdx/old.atlas", "libgdx/new.atlas", "libgdx/rotations.atlas" };
+    static const struct { const char *name; int w, h; } sheets[] = {
+        { "texturepacker/sheet.png", 128, 64 }, { "texturepacker/multi-0.png", 16, 16 }, { "texturepacker/multi-1.png", 16, 16 },
+        { "texturepacker/phaser-0.png", 64, 32 }, { "texturepacker/phaser-0_n.png", 64, 32 }, { "texturepacker/phaser-1.png", 32, 32 },
+        { "texturepacker/phaser-1_n.png", 32, 32 }, { "texturepacker/poly.png", 64, 64 }, { "aseprite/s.png", 64, 16 },
+        { "aseprite/slices.png", 64, 32 }, { "libgdx/page1.png", 64, 64 }, { "libgdx/sheet.png", 64, 32 }, { "libgdx/second.png", 8, 8 },
+        { "libgdx/rot.png", 64, 64 } };
+    static const char *const formats[3] = { "texturepacker", "aseprite", "libgdx" };
+    char path[256];
+    for (int i = 0; i < 3; i++)
+    {
+        snprintf(path, sizeof(path), "build/tests/atlas/%s", formats[i]);
+        MakeDirectory(path);
+    }
+    for (int i = 0; i < (int)(sizeof(files)/sizeof(files[0])); i++)
+    {
+        int size = 0;
+        snprintf(path, sizeof(path), "tests/fuzz/corpus/%s", files[i]);
+        unsigned char *data = LoadFileData(path, &size);
+        snprintf(path, sizeof(path), "build/tests/atlas/%s", files[i]);
+        bool ok = (data != NULL) && SaveFileData(path, data, size);
+        UnloadFileData(data);
+        if (!ok) { printf("    rtAtlasFixtures: cannot copy %s\n", files[i]); return NULL; }
+    }
+    for (int i = 0; i < (int)(sizeof(sheets)/sizeof(sheets[0])); i++)
+    {
+        unsigned int seed = 2166136261u;
+        for (const char *c = sheets[i].name; *c; c++) seed = (seed ^ (unsigned char)*c)*16777619u;
+        Image img = GenImageColor(sheets[i].w, sheets[i].h, BLANK);
+        Color *px = (Color *)img.data;
+        for (int k = 0; k < sheets[i].w*sheets[i].h; k++)
+        {
+            unsigned int r = rtRandom(&seed);
+            px[k] = (Color){ (unsigned char)r, (unsigned char)(r >> 8), (unsigned char)(r >> 16), 255 };
+        }
+        snprintf(path, sizeof(path), "build/tests/atlas/%s", sheets[i].name);
+        bool ok = ExportImage(img, path);
+        UnloadImage(img);
+        if (!ok) { printf("    rtAtlasFixtures: cannot write %s\n", path); return NULL; }
+    }
+    dir = "build/tests/atlas";
+    return dir;
+}
+
 // ---- timing support -------------------------------------------------------------------------
 #if !defined(__EMSCRIPTEN__)
 // glFinish through the current context's loader (looked up again if the context changed)

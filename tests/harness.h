@@ -30,6 +30,12 @@ bool rtNear(double a, double b, double tol);
 unsigned int rtRandom(unsigned int *state);           // xorshift32, fixed seeds in tests
 float rtRandomRange(unsigned int *state, float lo, float hi);
 
+// ---- atlas fixtures -----------------------------------------------------------------------------
+// The hand-written atlas fixtures of tests/fuzz/corpus/ (also the fuzz seeds) copied under
+// build/tests/atlas/<format>/ beside the sheets they name (deterministic noise PNGs, written here:
+// RblLoadAtlas refuses a sheet it cannot find). Returns "build/tests/atlas" (NULL on failure).
+const char *rtAtlasFixtures(void);
+
 // ---- headless GL ----------------------------------------------------------------------------
 // Creates the context (EGL first unless forced), loads GL through rlLoadExtensions and calls
 // rlglInit(width, height). Returns the backend name ("egl"/"osmesa"; "webgl2" in the browser build,

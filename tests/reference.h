@@ -71,6 +71,7 @@ static inline void refFrame(Camera3D cam, const RblBillboard *b, Vector4 light, 
     D3 right, vup, back;
     refCameraFrame(cam, &right, &vup, &back);
     D3 eye = d3f(cam.position), pos = d3f(b->position);
+    D3 toEye = (cam.projection == CAMERA_ORTHOGRAPHIC)? back : dSub(eye, pos);      // a parallel view's eye is at infinity along back
     *R = right; *U = vup; *N = back;
     if (b->facing == RBL_FACING_CAMERA_PLANE)
     {
@@ -84,7 +85,7 @@ static inline void refFrame(Camera3D cam, const RblBillboard *b, Vector4 light, 
     }
     else if (b->facing == RBL_FACING_CAMERA_POSITION)
     {
-        D3 d = dSub(eye, pos);
+        D3 d = toEye;
         if (dDot(d, d) > 1e-24)
         {
             *N = dNorm(d);
@@ -96,7 +97,7 @@ static inline void refFrame(Camera3D cam, const RblBillboard *b, Vector4 light, 
     {
         D3 a = (dDot(d3f(b->axis), d3f(b->axis)) > 1e-24)? dNorm(d3f(b->axis)) : d3(0, 1, 0);
         D3 f = refBlendDir(back, vup, a, REF_BLEND_LO, REF_BLEND_HI);
-        D3 n = refBlendDir(dSub(eye, pos), f, a, REF_BLEND_LO, REF_BLEND_HI);
+        D3 n = refBlendDir(toEye, f, a, REF_BLEND_LO, REF_BLEND_HI);
         *U = a; *N = n; *R = dCross(a, n);
         if (minSin > 0.0)
         {

@@ -8,6 +8,7 @@
 #   api_san:        the 1.0 API tests (ownership, raylib-habitual unloads) under ASan+UBSan+LSan
 #   contracts:      every public function x every class of bad input, one process per case (ASan+UBSan)
 #   alloc:          RBL_MALLOC family failing at the Nth call, swept over N on every allocating path
+#   teardown:       unloads, RblClose and CloseWindow in all six orders (C, C++ RAII), real window on xvfb
 #   fuzz:           the atlas readers under libFuzzer (one target per format, bounded time)
 #   gpu:            render tests under EGL surfaceless, then under OSMesa (GL 3.3 core), then on
 #                   strict ES 3.0, ES 2.0 and GL 2.1 contexts with raylib built for each
@@ -49,6 +50,10 @@ for i in $(seq 1 $n); do
   if [ -s "$f" ] && head -1 "$f" | grep -q '^ok '; then pass=$((pass + 1)); sed 's/^/  /' "$f"
   else fail=$((fail + 1)); if [ -s "$f" ]; then sed 's/^/  /' "$f"; else echo "  FAIL  matrix cell $i (no result)"; fi; fi
 done
+
+# The README's API index and the doc block's CONFIGURATION list against the header
+echo "== api (README index, CONFIGURATION)"
+out=$(bash tests/tools/api_index.sh check rbillboard_lit.h README.md 2>&1); printf '%s\n' "$out"; count "$out"
 
 # CMake: tests/cmake_consumer uses the rbillboard_lit::rbillboard_lit INTERFACE target through
 # add_subdirectory, then FetchContent (local source override), with the raylib build/raylib.mk found;
@@ -113,6 +118,12 @@ echo "== test_contracts (egl, ASan+UBSan, one process per case)"
 out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=exitcode=66:detect_leaks=0 "$BUILD/tests/test_contracts" rbillboard_lit.h 2>&1); printf '%s\n' "$out"; count "$out"
 echo "== test_alloc (egl, ASan+UBSan, the header's allocator failing at every call)"
 out=$(RBL_TEST_CONTEXT=egl ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/test_alloc" 2>&1); printf '%s\n' "$out"; count "$out"
+# Teardown in every order (unloads, RblClose, CloseWindow; C++ RAII) with a real raylib window on
+# a virtual X display
+for suite in test_teardown test_teardown_cpp; do
+  echo "== $suite (xvfb, ASan+UBSan)"
+  out=$(ASAN_OPTIONS=detect_leaks=0 xvfb-run -a "$BUILD/tests/$suite" 2>&1 | grep -v "^Can't open /dev/input"); printf '%s\n' "$out"; count "$out"
+done
 # Atlas readers under libFuzzer + ASan + UBSan: FUZZ_SECONDS (default 8) per format from the
 # hand-written seeds; new inputs go to a scratch corpus under $BUILD, never into the repository
 echo "== fuzz (libFuzzer, ASan+UBSan, ${FUZZ_SECONDS:-8} s per format)"

@@ -202,23 +202,29 @@ static void test_alloc_every_loading_path_fails_cleanly_at_every_allocation(void
     sweep("RblGenNormalMapFromHeight", runGenNormal, cleanGen);
     sweep("RblGenHeightFromLuminance", runGenHeight, cleanGen);
     sweep("RblGenOcclusionFromHeight", runGenOcclusion, cleanGen);
-    // Atlases: every fixture format from memory (JSON nodes, names, frames, tags, slices, libGDX
-    // grouping) and the multipack file loader (two files, two sheets)
-    static const char *fixtures[5] = { "tests/fuzz/corpus/texturepacker/hash.json", "tests/fuzz/corpus/texturepacker/array.json",
-        "tests/fuzz/corpus/aseprite/tags.json", "tests/fuzz/corpus/libgdx/old.atlas", "tests/fuzz/corpus/libgdx/new.atlas" };
-    for (int i = 0; i < 5; i++)
+    // Atlases: every fixture format from memory (JSON nodes, names, frames, tags, slices, polygons,
+    // multi-texture pages, libGDX grouping) and the file loader (the multipack: two files, two
+    // sheets; Phaser 3 pages: sheet and normal-sheet paths found and kept)
+    static const char *fixtures[9] = { "texturepacker/hash.json", "texturepacker/array.json", "aseprite/tags.json", "libgdx/old.atlas", "libgdx/new.atlas",
+        "texturepacker/phaser3.json", "texturepacker/polygon.json", "aseprite/slices.json", "libgdx/rotations.atlas" };
+    for (int i = 0; i < 9; i++)
     {
-        unsigned char *data = LoadFileData(fixtures[i], &atlasSize);
+        char path[128];
+        snprintf(path, sizeof(path), "tests/fuzz/corpus/%s", fixtures[i]);
+        unsigned char *data = LoadFileData(path, &atlasSize);
         atlasText = (char *)data;
-        RT_CHECK(data != NULL, "%s missing", fixtures[i]);
+        RT_CHECK(data != NULL, "%s missing", path);
         if (data == NULL) continue;
         char what[96];
         snprintf(what, sizeof(what), "RblLoadAtlasFromMemory (%s)", strrchr(fixtures[i], '/') + 1);
         sweep(what, runLoadAtlasMemory, cleanAtlas);
         UnloadFileData(data);
     }
-    atlasFile = "tests/fuzz/corpus/texturepacker/multi-0.json";
+    RT_CHECK(rtAtlasFixtures() != NULL, "fixtures");
+    atlasFile = "build/tests/atlas/texturepacker/multi-0.json";
     sweep("RblLoadAtlas (multipack)", runLoadAtlasFile, cleanAtlas);
+    atlasFile = "build/tests/atlas/texturepacker/phaser3.json";
+    sweep("RblLoadAtlas (Phaser 3 pages, normal sheets)", runLoadAtlasFile, cleanAtlas);
     printf("    %d failing runs in all\n", failuresSwept);
     UnloadImage(packSource.albedo); UnloadImage(packSource.normal); UnloadImage(packSource.specular);
     UnloadImage(packSource.occlusion); UnloadImage(packSource.emissive); UnloadImage(heightImage);

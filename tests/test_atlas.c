@@ -1,5 +1,6 @@
 // Sprite-sheet atlases (TexturePacker, Aseprite, libGDX), animation playback and N-way sectors.
-// Hand-written fixtures (tests/fuzz/corpus/, also the fuzz seeds) with expectations derived by hand
+// Hand-written fixtures (tests/fuzz/corpus/, also the fuzz seeds; loaded from the copies
+// rtAtlasFixtures puts beside generated sheets under build/tests/atlas/) with expectations derived by hand
 // from each format's documented meaning; the real exporter files of ../shared/atlases when present:
 // every file imports and the frames rebuilt from its sheet by raylib's ImageFromImage/ImageRotate*
 // (the format's meaning) equal what the frame table puts under a billboard's texture coordinates.
@@ -13,13 +14,24 @@ static void atlasCountingLog(int level, const char *text, va_list args)
     if (strncmp(line, "RBL:", 4) == 0) atlasWarnings++;
 }
 
+// A fixture's path under build/tests/atlas/ (copied beside its sheets by rtAtlasFixtures)
+static const char *atlasFixture(const char *name)
+{
+    static char paths[4][256];
+    static int next = 0;
+    const char *dir = rtAtlasFixtures();
+    char *p = paths[next++ & 3];
+    snprintf(p, sizeof(paths[0]), "%s/%s", (dir != NULL)? dir : "(no fixtures)", name);
+    return p;
+}
+
 static bool rectIs(Rectangle r, float x, float y, float w, float h) { return (r.x == x) && (r.y == y) && (r.width == w) && (r.height == h); }
 #define CHECK_RECT(r, X, Y, W, H, what) RT_CHECK(rectIs((r), (X), (Y), (W), (H)), "%s: %g %g %g %g, expected %g %g %g %g", (what), (r).x, (r).y, (r).width, (r).height, (double)(X), (double)(Y), (double)(W), (double)(H))
 
 // Texture coordinates of a billboard's corners (BL, BR, TR, TL) for a frame, in texels
 static void frameCornerTexels(const RblAtlas *a, int frame, int sheetW, int sheetH, float uv[4][2])
 {
-    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, false };
     RblBillboard b;
     memset(&b, 0, sizeof(b));
     RT_CHECK(RblAtlasBillboard(a, frame, 1.0f, &b), "frame %d: RblAtlasBillboard refused", frame);
@@ -55,13 +67,13 @@ static void checkQuad(const RblAtlas *a, int frame, float scale, float w, float 
 
 static void test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames(void)
 {
-    const char *files[2] = { "tests/fuzz/corpus/texturepacker/hash.json", "tests/fuzz/corpus/texturepacker/array.json" };
+    const char *files[2] = { "texturepacker/hash.json", "texturepacker/array.json" };
     for (int k = 0; k < 2; k++)
     {
-        RblAtlas a = RblLoadAtlas(files[k]);
+        RblAtlas a = RblLoadAtlas(atlasFixture(files[k]));
         RT_CHECK(RblIsAtlasValid(&a) && (a.format == RBL_ATLAS_TEXTUREPACKER) && (a.frameCount == 3) && (a.pageCount == 1) && (a.tagCount == 0), "%s: valid %d format %d frames %d", files[k], RblIsAtlasValid(&a), a.format, a.frameCount);
         if (a.frameCount != 3) { RblUnloadAtlas(&a); continue; }
-        RT_CHECK(strcmp(a.pages[0].image, "tests/fuzz/corpus/texturepacker/sheet.png") == 0 && a.pages[0].width == 128 && a.pages[0].height == 64, "%s: page %s %dx%d", files[k], a.pages[0].image, a.pages[0].width, a.pages[0].height);
+        RT_CHECK(strcmp(a.pages[0].image, "build/tests/atlas/texturepacker/sheet.png") == 0 && a.pages[0].scale == 1.0f && a.pages[0].normalImage == NULL && !a.pages[0].premultiplied && a.pages[0].width == 128 && a.pages[0].height == 64, "%s: page %s %dx%d", files[k], a.pages[0].image, a.pages[0].width, a.pages[0].height);
         // "a": trimmed, pivot bottom-centre of the untrimmed 50x60
         const RblAtlasFrame *f = &a.frames[0];
         CHECK_RECT(f->block, 10, 20, 30, 40, "a block"); CHECK_RECT(f->source, 10, 20, 30, 40, "a source"); CHECK_RECT(f->trim, 5, 6, 30, 40, "a trim");
@@ -78,7 +90,9 @@ static void test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames
         // bottom-right -> bottom-left, bottom-left -> top-left
         const float bWant[4][2] = { { 100, 0 }, { 100, 20 }, { 110, 20 }, { 110, 0 } };
         checkCorners(&a, 1, 128, 64, bWant, "b corners");
-        checkQuad(&a, 1, 1.0f, 20.0f, 10.0f, 10.0f, 5.0f, "b at 1");
+        // no pivot given: the bottom centre (10, 10) px; the quad's bottom-left is (0, 10): origin (10, 0)
+        RT_CHECK(f->pivot.x == 0.5f && f->pivot.y == 1.0f, "b: default pivot %g %g, expected the bottom centre", f->pivot.x, f->pivot.y);
+        checkQuad(&a, 1, 1.0f, 20.0f, 10.0f, 10.0f, 0.0f, "b at 1");
         // "c": rotated and trimmed with a pivot: block 8x12, pivot (4, 12) px, quad bottom-left (3, 10)
         f = &a.frames[2];
         CHECK_RECT(f->block, 64, 32, 8, 12, "c block"); CHECK_RECT(f->trim, 3, 2, 12, 8, "c trim");
@@ -93,11 +107,11 @@ static void test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames
 static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
 {
     // each pack names the other: both load once, in order, each frame on its own sheet
-    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/texturepacker/multi-0.json");
+    RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/multi-0.json"));
     RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 2 && a.frameCount == 2, "pages %d frames %d", a.pageCount, a.frameCount);
     if (a.pageCount == 2 && a.frameCount == 2)
     {
-        RT_CHECK(strcmp(a.pages[1].image, "tests/fuzz/corpus/texturepacker/multi-1.png") == 0 && a.frames[0].page == 0 && a.frames[1].page == 1, "page of each frame");
+        RT_CHECK(strcmp(a.pages[1].image, "build/tests/atlas/texturepacker/multi-1.png") == 0 && a.frames[0].page == 0 && a.frames[1].page == 1, "page of each frame");
         CHECK_RECT(a.frames[1].block, 4, 0, 12, 4, "two block (rotated 4x12)");
     }
     RblUnloadAtlas(&a);
@@ -119,7 +133,7 @@ static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
 
 static void test_atlas_aseprite_durations_tags_and_slice_pivots(void)
 {
-    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/aseprite/tags.json");
+    RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/tags.json"));
     RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_ASEPRITE && a.frameCount == 4 && a.tagCount == 4 && a.sliceCount == 3, "format %d frames %d tags %d slices %d", a.format, a.frameCount, a.tagCount, a.sliceCount);
     if (a.frameCount != 4 || a.tagCount != 4 || a.sliceCount != 3) { RblUnloadAtlas(&a); return; }
     const float dur[4] = { 0.125f, 0.25f, 0.5f, 1.0f };
@@ -140,7 +154,7 @@ static void test_atlas_aseprite_durations_tags_and_slice_pivots(void)
 
 static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets_from_the_bottom(void)
 {
-    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/libgdx/old.atlas");
+    RblAtlas a = RblLoadAtlas(atlasFixture("libgdx/old.atlas"));
     RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_LIBGDX && a.frameCount == 3 && a.tagCount == 1 && a.pageCount == 1, "old: frames %d tags %d", a.frameCount, a.tagCount);
     if (a.frameCount == 3 && a.tagCount == 1)
     {
@@ -155,15 +169,16 @@ static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets
         // bottom-right -> top-right, bottom-left -> bottom-right
         const float want[4][2] = { { 22, 28 }, { 22, 20 }, { 10, 20 }, { 10, 28 } };
         checkCorners(&a, 1, 64, 64, want, "run1 corners");
-        // centre pivot (8, 8) of 16x16; quad bottom-left at (3, 15): origin (5, 7)
-        checkQuad(&a, 1, 1.0f, 8.0f, 12.0f, 5.0f, 7.0f, "run1");
+        // libGDX states no pivot: the bottom centre (8, 16) of 16x16; quad bottom-left at (3, 15): origin (5, -1)
+        checkQuad(&a, 1, 1.0f, 8.0f, 12.0f, 5.0f, -1.0f, "run1");
     }
     RblUnloadAtlas(&a);
-    a = RblLoadAtlas("tests/fuzz/corpus/libgdx/new.atlas");
+    a = RblLoadAtlas(atlasFixture("libgdx/new.atlas"));
     RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 3 && a.pageCount == 2 && a.tagCount == 0, "new: frames %d pages %d", a.frameCount, a.pageCount);
     if (a.frameCount == 3 && a.pageCount == 2)
     {
-        RT_CHECK(a.pages[0].width == 64 && a.pages[0].height == 32 && a.pages[1].width == 8 && strcmp(a.pages[1].image, "tests/fuzz/corpus/libgdx/second.png") == 0, "new: pages");
+        RT_CHECK(a.pages[0].width == 64 && a.pages[0].height == 32 && a.pages[1].width == 8 && strcmp(a.pages[1].image, "build/tests/atlas/libgdx/second.png") == 0, "new: pages");
+        RT_CHECK(a.pages[0].premultiplied && !a.pages[1].premultiplied, "new: pma:true on the first page only");
         CHECK_RECT(a.frames[0].block, 1, 2, 6, 10, "a block"); CHECK_RECT(a.frames[0].source, 1, 2, -6, -10, "a source");
         CHECK_RECT(a.frames[0].trim, 2, 3, 10, 6, "a trim (12 - 3 - 6 from the top)");
         RT_CHECK(a.frames[0].size.x == 16 && a.frames[0].size.y == 12 && a.frames[0].flags == RBL_FRAME_ROTATED, "a: size/flags");
@@ -177,7 +192,7 @@ static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets
 // packing with the atlas's blocks keeps every frame texel and fills the gutters from frames only
 static void test_atlas_blocks_pack_a_same_layout_normal_sheet_per_frame(void)
 {
-    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/texturepacker/hash.json");
+    RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/hash.json"));
     if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
     Rectangle blocks[8];
     for (int i = 0; i < a.frameCount; i++) blocks[i] = a.frames[i].block;
@@ -227,7 +242,7 @@ static int seqFrameAt(const int *seq, int n, bool loop, const float *dur, double
 
 static void test_atlas_player_follows_durations_directions_and_repeats(void)
 {
-    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/aseprite/tags.json");
+    RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/tags.json"));
     if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
     const float dur[4] = { 0.125f, 0.25f, 0.5f, 1.0f };
     static const int walk[4] = { 0, 1, 2, 3 }, back[6] = { 3, 2, 1, 3, 2, 1 }, pp[10] = { 0, 1, 2, 3, 2, 1, 0, 1, 2, 3 }, ppr[2] = { 2, 1 }, once[4] = { 0, 1, 2, 3 };
@@ -281,7 +296,7 @@ static void test_atlas_player_follows_durations_directions_and_repeats(void)
 // is skipped (player and instance untouched) with one line for the call
 static void test_atlas_bulk_instance_update_equals_the_per_sprite_calls(void)
 {
-    RblAtlas a = RblLoadAtlas("tests/fuzz/corpus/aseprite/tags.json");
+    RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/tags.json"));
     if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
     enum { N = 1000 };
     static RblSpritePlayer pa[N], pb[N];
@@ -396,9 +411,10 @@ static void test_atlas_malformed_input_fails_with_one_line(void)
     RblAtlas a = RblLoadAtlasFromMemory(deep, (int)sizeof(deep), RBL_ATLAS_TEXTUREPACKER);
     RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnings == 1, "deep nesting: %d lines", atlasWarnings);
     // every truncation of the valid fixtures fails cleanly (or parses a shorter valid text)
-    const char *files[4] = { "tests/fuzz/corpus/texturepacker/hash.json", "tests/fuzz/corpus/aseprite/tags.json", "tests/fuzz/corpus/libgdx/old.atlas", "tests/fuzz/corpus/libgdx/new.atlas" };
+    const char *files[8] = { "tests/fuzz/corpus/texturepacker/hash.json", "tests/fuzz/corpus/aseprite/tags.json", "tests/fuzz/corpus/libgdx/old.atlas", "tests/fuzz/corpus/libgdx/new.atlas",
+                             "tests/fuzz/corpus/texturepacker/phaser3.json", "tests/fuzz/corpus/texturepacker/polygon.json", "tests/fuzz/corpus/aseprite/slices.json", "tests/fuzz/corpus/libgdx/rotations.atlas" };
     int wrongLines = 0;
-    for (int f = 0; f < 4; f++)
+    for (int f = 0; f < 8; f++)
     {
         int size = 0;
         unsigned char *text = LoadFileData(files[f], &size);
@@ -428,8 +444,610 @@ static void test_atlas_malformed_input_fails_with_one_line(void)
     SetTraceLogCallback(NULL);
 }
 
-// ---- the real exporter files (../shared/atlases) ---------------------------------------------------
 #define SHARED_ATLASES "../shared/atlases/"
+
+// ---- what each exporter states beyond rectangles (issue #28) ---------------------------------------
+// Deterministic opaque noise (CPU checks of which texel lands where)
+static Image noiseSheetCpu(int w, int h, unsigned int seed)
+{
+    Image img = GenImageColor(w, h, BLANK);
+    Color *px = (Color *)img.data;
+    for (int i = 0; i < w*h; i++) { unsigned int r = rtRandom(&seed); px[i] = (Color){ (unsigned char)r, (unsigned char)(r >> 8), (unsigned char)(r >> 16), 255 }; }
+    return img;
+}
+
+// Every "RBL:" line with its level, for the tests that read the line or count INFO lines
+static int atlasInfoLines = 0, atlasWarnLines = 0;
+static char atlasLastLine[4096];
+static void atlasLevelLog(int level, const char *text, va_list args)
+{
+    char line[4096];
+    vsnprintf(line, sizeof(line), text, args);
+    if (strncmp(line, "RBL:", 4) != 0) return;
+    if (level == LOG_INFO) atlasInfoLines++;
+    else if (level >= LOG_WARNING) { atlasWarnLines++; memcpy(atlasLastLine, line, sizeof(line)); }
+}
+static void atlasLogBegin(void) { atlasInfoLines = 0; atlasWarnLines = 0; atlasLastLine[0] = 0; SetTraceLogLevel(LOG_INFO); SetTraceLogCallback(atlasLevelLog); }
+static void atlasLogEnd(void) { SetTraceLogCallback(NULL); SetTraceLogLevel(LOG_WARNING); }
+
+static RblAtlas atlasFromText(const char *text) { return RblLoadAtlasFromMemory(text, (int)strlen(text), RBL_ATLAS_AUTO); }
+
+static void test_atlas_phaser3_textures_are_one_page_each_with_its_normal_sheet_and_scale(void)
+{
+    RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/phaser3.json"));
+    RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_TEXTUREPACKER && a.pageCount == 2 && a.frameCount == 3, "valid %d format %d pages %d frames %d", RblIsAtlasValid(&a), a.format, a.pageCount, a.frameCount);
+    if (a.pageCount != 2 || a.frameCount != 3) { RblUnloadAtlas(&a); return; }
+    // page 0 names its normal sheet (normalMap) and scale 0.5; page 1 neither: its "_n" sheet beside
+    // it is found by the convention, its scale is meta's "1"
+    const RblAtlasPage *p0 = &a.pages[0], *p1 = &a.pages[1];
+    RT_CHECK(strcmp(p0->image, "build/tests/atlas/texturepacker/phaser-0.png") == 0 && p0->normalImage != NULL && strcmp(p0->normalImage, "build/tests/atlas/texturepacker/phaser-0_n.png") == 0 &&
+             p0->width == 64 && p0->height == 32 && p0->scale == 0.5f && !p0->premultiplied, "page 0: %s / %s %dx%d scale %g", p0->image, p0->normalImage ? p0->normalImage : "(none)", p0->width, p0->height, p0->scale);
+    RT_CHECK(strcmp(p1->image, "build/tests/atlas/texturepacker/phaser-1.png") == 0 && p1->normalImage != NULL && strcmp(p1->normalImage, "build/tests/atlas/texturepacker/phaser-1_n.png") == 0 &&
+             p1->width == 32 && p1->scale == 1.0f, "page 1: %s / %s scale %g", p1->image, p1->normalImage ? p1->normalImage : "(none)", p1->scale);
+    // knight: trimmed 20x28 at (2,4) of 24x32, no pivot (bottom centre 12, 32); a texel is 2 world
+    // units at worldScale 1 (scale 0.5): size 40x56, origin ((12 - 2)2, (4 + 28 - 32)2) = (20, 0)
+    int knight = RblAtlasFindFrame(&a, "knight"), panel = RblAtlasFindFrame(&a, "panel"), gem = RblAtlasFindFrame(&a, "gem");
+    RT_CHECK(knight == 0 && panel == 1 && gem == 2 && a.frames[0].page == 0 && a.frames[1].page == 0 && a.frames[2].page == 1, "frames on their pages");
+    CHECK_RECT(a.frames[0].block, 0, 0, 20, 28, "knight block"); CHECK_RECT(a.frames[0].trim, 2, 4, 20, 28, "knight trim");
+    checkQuad(&a, 0, 1.0f, 40.0f, 56.0f, 20.0f, 0.0f, "knight at scale 0.5");
+    // panel: turned clockwise in an 8x16 block, anchor centre (8, 4): size 32x16, origin (16, 8);
+    // scale9Borders: the 9-slice centre (3, 2) 10x4 in frame pixels
+    CHECK_RECT(a.frames[1].block, 24, 0, 8, 16, "panel block"); CHECK_RECT(a.frames[1].center, 3, 2, 10, 4, "panel 9-slice centre");
+    RT_CHECK(a.frames[1].flags == RBL_FRAME_ROTATED, "panel rotated");
+    checkQuad(&a, 1, 1.0f, 32.0f, 16.0f, 16.0f, 8.0f, "panel at scale 0.5");
+    checkQuad(&a, 2, 1.0f, 8.0f, 8.0f, 4.0f, 0.0f, "gem at scale 1");
+    CHECK_RECT(a.frames[2].center, 0, 0, 0, 0, "gem: no 9-slice");
+    RblUnloadAtlas(&a);
+    // from memory: the names as written, nothing probed (no file system is assumed)
+    int size = 0;
+    unsigned char *text = LoadFileData("tests/fuzz/corpus/texturepacker/phaser3.json", &size);
+    a = RblLoadAtlasFromMemory((const char *)text, size, RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 2 && strcmp(a.pages[0].image, "phaser-0.png") == 0 && strcmp(a.pages[0].normalImage, "phaser-0_n.png") == 0 && a.pages[1].normalImage == NULL,
+             "from memory: pages as written");
+    RblUnloadAtlas(&a);
+    UnloadFileData(text);
+    // malformed multi-texture files: one line each
+    static const char *bad[] = {
+        "{\"textures\": []}", "{\"textures\": {}}", "{\"textures\": [{\"image\": \"a.png\"}]}",
+        "{\"textures\": [{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"normalMap\": 5}]}",
+        "{\"textures\": [{\"frames\": []}], \"frames\": []}",
+        "{\"textures\": [{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"scale\": 0}]}",
+        "{\"textures\": [{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}, \"scale9Borders\": {\"x\":1,\"y\":1,\"w\":4,\"h\":1}}]}]}" };
+    atlasLogBegin();
+    for (int i = 0; i < (int)(sizeof(bad)/sizeof(bad[0])); i++)
+    {
+        atlasWarnLines = 0;
+        a = atlasFromText(bad[i]);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "bad multi-texture %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+    }
+    atlasLogEnd();
+}
+
+static void test_atlas_sheet_paths_resolve_as_written_then_beside_then_by_the_atlas_name(void)
+{
+    // As written, joined to the atlas's folder: hash.json's sheet.png. Beside the atlas by base name:
+    // polygon.json's absolute Windows path, slices.json's "examples/slices.png"
+    RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/polygon.json")), b = RblLoadAtlas(atlasFixture("aseprite/slices.json"));
+    RT_CHECK(RblIsAtlasValid(&a) && strcmp(a.pages[0].image, "build/tests/atlas/texturepacker/poly.png") == 0, "Windows path: %s", RblIsAtlasValid(&a)? a.pages[0].image : "(refused)");
+    RT_CHECK(RblIsAtlasValid(&b) && strcmp(b.pages[0].image, "build/tests/atlas/aseprite/slices.png") == 0, "other folder: %s", RblIsAtlasValid(&b)? b.pages[0].image : "(refused)");
+    RblUnloadAtlas(&a); RblUnloadAtlas(&b);
+    // By the atlas's own name: "export.png" does not exist, renamed.png does (as test-trim-rotation)
+    MakeDirectory("build/tests/atlas_paths");
+    Image sheet = GenImageColor(8, 8, RED);
+    ExportImage(sheet, "build/tests/atlas_paths/renamed.png");
+    ExportImage(sheet, "build/tests/atlas_paths/renamed_n.png");
+    UnloadImage(sheet);
+    const char *json = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"export.png\", \"size\": {\"w\":8,\"h\":8}}}";
+    SaveFileText("build/tests/atlas_paths/renamed.json", (char *)json);
+    a = RblLoadAtlas("build/tests/atlas_paths/renamed.json");
+    RT_CHECK(RblIsAtlasValid(&a) && strcmp(a.pages[0].image, "build/tests/atlas_paths/renamed.png") == 0 && a.pages[0].normalImage != NULL &&
+             strcmp(a.pages[0].normalImage, "build/tests/atlas_paths/renamed_n.png") == 0, "by the atlas's name: %s", RblIsAtlasValid(&a)? a.pages[0].image : "(refused)");
+    RblUnloadAtlas(&a);
+    // Found nowhere: one line naming every path tried, in order
+    json = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"art/missing.png\"}}";
+    SaveFileText("build/tests/atlas_paths/lost.json", (char *)json);
+    atlasLogBegin();
+    a = RblLoadAtlas("build/tests/atlas_paths/lost.json");
+    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "missing sheet: valid %d, %d lines", RblIsAtlasValid(&a), atlasWarnLines);
+    const char *tried[3] = { "\"build/tests/atlas_paths/art/missing.png\"", "\"build/tests/atlas_paths/missing.png\"", "\"build/tests/atlas_paths/lost.png\"" };
+    const char *at[3];
+    for (int k = 0; k < 3; k++) at[k] = strstr(atlasLastLine, tried[k]);
+    RT_CHECK(at[0] != NULL && at[1] > at[0] && at[2] > at[1], "the line names the three paths in order: %s", atlasLastLine);
+    // a named normal sheet: as written, beside by its base name, then the colour sheet's "_n" name
+    // (renamed_n.png here); found nowhere, refused the same way
+    json = "{\"textures\": [{\"image\": \"renamed.png\", \"normalMap\": \"maps/bump.png\", \"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}]}]}";
+    SaveFileText("build/tests/atlas_paths/bumpless.json", (char *)json);
+    atlasWarnLines = 0;
+    a = RblLoadAtlas("build/tests/atlas_paths/bumpless.json");
+    RT_CHECK(RblIsAtlasValid(&a) && atlasWarnLines == 0 && strcmp(a.pages[0].normalImage, "build/tests/atlas_paths/renamed_n.png") == 0, "normal sheet by the colour sheet's name: %s", atlasLastLine);
+    RblUnloadAtlas(&a);
+    remove("build/tests/atlas_paths/renamed_n.png");
+    a = RblLoadAtlas("build/tests/atlas_paths/bumpless.json");
+    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1 && strstr(atlasLastLine, "normal sheet \"maps/bump.png\" not found") != NULL && strstr(atlasLastLine, "\"build/tests/atlas_paths/maps/bump.png\"") != NULL &&
+             strstr(atlasLastLine, "\"build/tests/atlas_paths/bump.png\"") != NULL && strstr(atlasLastLine, "\"build/tests/atlas_paths/renamed_n.png\"") != NULL, "missing normal sheet: %s", atlasLastLine);
+    // libGDX pages likewise
+    SaveFileText("build/tests/atlas_paths/gdx.atlas", (char *)"\nnowhere.png\nr\n  xy: 0, 0\n  size: 4, 4\n");
+    atlasWarnLines = 0;
+    a = RblLoadAtlas("build/tests/atlas_paths/gdx.atlas");
+    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1 && strstr(atlasLastLine, "\"build/tests/atlas_paths/nowhere.png\"") && strstr(atlasLastLine, "\"build/tests/atlas_paths/gdx.png\""), "libGDX: %s", atlasLastLine);
+    atlasLogEnd();
+    // the real exporter files: test-trim-rotation.json says test.png (found by the json's name),
+    // building1.json's sheet is as written
+    if (DirectoryExists(SHARED_ATLASES))
+    {
+        a = RblLoadAtlas(SHARED_ATLASES "texturepacker/test-trim-rotation.json");
+        RT_CHECK(RblIsAtlasValid(&a) && strcmp(a.pages[0].image, SHARED_ATLASES "texturepacker/test-trim-rotation.png") == 0, "test-trim-rotation: %s", RblIsAtlasValid(&a)? a.pages[0].image : "(refused)");
+        RblUnloadAtlas(&a);
+    }
+}
+
+static void test_atlas_meta_scale_as_string_or_number_draws_every_export_at_one_world_size(void)
+{
+    // One 32x32 sprite trimmed to (8, 4) 16x24, pivot (0.5, 1), exported at 1, "0.5" and 0.25
+    static const char fmt[] = "{\"frames\": {\"s\": {\"frame\": {\"x\":0,\"y\":0,\"w\":%d,\"h\":%d}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":%d,\"y\":%d,\"w\":%d,\"h\":%d},"
+                              " \"sourceSize\": {\"w\":%d,\"h\":%d}, \"pivot\": {\"x\":0.5,\"y\":1}}}, \"meta\": {\"scale\": %s}}";
+    const char *scales[3] = { "1", "\"0.5\"", "0.25" };
+    const int div[3] = { 1, 2, 4 };
+    RblBillboard b[3];
+    for (int i = 0; i < 3; i++)
+    {
+        char text[512];
+        int d = div[i];
+        snprintf(text, sizeof(text), fmt, 16/d, 24/d, 8/d, 4/d, 16/d, 24/d, 32/d, 32/d, scales[i]);
+        RblAtlas a = atlasFromText(text);
+        memset(&b[i], 0, sizeof(b[i]));
+        RT_CHECK(RblIsAtlasValid(&a) && a.pages[0].scale == 1.0f/d && RblAtlasBillboard(&a, 0, 1.0f/32.0f, &b[i]), "scale %s: page scale %g", scales[i], RblIsAtlasValid(&a)? a.pages[0].scale : 0.0f);
+        RblUnloadAtlas(&a);
+    }
+    // 32 px per unit at scale 1: 0.5 x 0.75 units; the pivot (16, 32) lies 8 px right of the trim's
+    // left (0.25) and 4 px below its bottom (28): origin (0.25, -0.125)
+    for (int i = 0; i < 3; i++)
+        RT_CHECK(b[i].size.x == 0.5f && b[i].size.y == 0.75f && b[i].origin.x == 0.25f && b[i].origin.y == -0.125f, "scale %s: size %g %g origin %g %g", scales[i], b[i].size.x, b[i].size.y, b[i].origin.x, b[i].origin.y);
+    // the real pair: building1 (scale "0.5") and building1-0 (scale 1) show their stars at one size
+    if (DirectoryExists(SHARED_ATLASES))
+    {
+        RblAtlas half = RblLoadAtlas(SHARED_ATLASES "texturepacker/building1.json"), full = RblLoadAtlas(SHARED_ATLASES "texturepacker/building1-0.json");
+        RT_CHECK(RblIsAtlasValid(&half) && RblIsAtlasValid(&full) && half.pages[0].scale == 0.5f && full.pages[0].scale == 1.0f, "building1 scales");
+        for (int s = 1; s <= 4 && RblIsAtlasValid(&half) && RblIsAtlasValid(&full); s++)
+        {
+            char name[32]; snprintf(name, sizeof(name), "star%d.png", s);
+            const RblAtlasFrame *fh = &half.frames[RblAtlasFindFrame(&half, name)], *ff = &full.frames[RblAtlasFindFrame(&full, name)];
+            double worldH = fh->size.x/half.pages[0].scale, worldF = ff->size.x/full.pages[0].scale;
+            RT_CHECK(worldH == worldF, "%s: canvas %g px at 0.5 vs %g px at 1", name, worldH, worldF);
+        }
+        RblUnloadAtlas(&half); RblUnloadAtlas(&full);
+    }
+    // scales that cannot be one: one line each
+    const char *badScales[6] = { "0", "-1", "\"abc\"", "1e9", "\"1e-9\"", "null" };
+    atlasLogBegin();
+    for (int i = 0; i < 6; i++)
+    {
+        char text[512];
+        snprintf(text, sizeof(text), fmt, 16, 24, 8, 4, 16, 24, 32, 32, badScales[i]);
+        atlasWarnLines = 0;
+        RblAtlas a = atlasFromText(text);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1 && strstr(atlasLastLine, "scale") != NULL, "scale %s: valid %d, %d lines (%s)", badScales[i], RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+    }
+    atlasLogEnd();
+}
+
+static void test_atlas_zero_negative_fractional_or_non_finite_page_sizes_are_refused(void)
+{
+    static const char fmt[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"size\": {\"w\":%s,\"h\":%s}}}";
+    const char *sizes[][2] = { { "64", "0" }, { "64", "-0" }, { "64", "0.5" }, { "64", "1e-400" }, { "-64", "64" }, { "64", "1e999" }, { "64.5", "64" }, { "0", "0" }, { "\"64\"", "\"x\"" } };
+    atlasLogBegin();
+    for (int i = 0; i < (int)(sizeof(sizes)/sizeof(sizes[0])); i++)
+    {
+        char text[256];
+        snprintf(text, sizeof(text), fmt, sizes[i][0], sizes[i][1]);
+        atlasWarnLines = 0;
+        RblAtlas a = atlasFromText(text);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "size %s x %s: valid %d, %d lines (%s)", sizes[i][0], sizes[i][1], RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+    }
+    // the same for a Phaser 3 texture and for libGDX pages
+    const char *others[] = { "{\"textures\": [{\"size\": {\"w\":8,\"h\":0}, \"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}]}]}",
+                             "p.png\nsize: 64, 0\nr\n  xy: 0, 0\n  size: 4, 4\n", "p.png\nsize: 64, 1.5\nr\n  xy: 0, 0\n  size: 4, 4\n", "p.png\nsize: -64, 64\nr\n  xy: 0, 0\n  size: 4, 4\n" };
+    for (int i = 0; i < 4; i++)
+    {
+        atlasWarnLines = 0;
+        RblAtlas a = atlasFromText(others[i]);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "page size %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+    }
+    atlasLogEnd();
+    // whole sizes are kept; a frame beyond them is refused (the check the bad sizes used to skip)
+    RblAtlas a = atlasFromText("{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"size\": {\"w\":4,\"h\":1e0}}}");
+    RT_CHECK(!RblIsAtlasValid(&a), "a 4x4 frame on a 4x1 sheet accepted");
+    a = atlasFromText("{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"size\": {\"w\":4,\"h\":4.0}}}");
+    RT_CHECK(RblIsAtlasValid(&a) && a.pages[0].height == 4, "4.0 is a whole size");
+    RblUnloadAtlas(&a);
+}
+
+// Twice the signed area of triangle (a, b, c)
+static double triArea2(Vector2 a, Vector2 b, Vector2 c) { return ((double)b.x - a.x)*((double)c.y - a.y) - ((double)c.x - a.x)*((double)b.y - a.y); }
+
+static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_validated(void)
+{
+    RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/polygon.json"));
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 2 && a.pages[0].scale == 0.5f, "fixture");
+    if (!RblIsAtlasValid(&a) || a.frameCount != 2) { RblUnloadAtlas(&a); return; }
+    // "tri": the trim (4,6) 12x8 with its top-left corner cut off: a pentagon, fanned from vertex 0;
+    // each vertex's texel is the block's (10,20) plus its offset in the trim
+    const RblAtlasPolygon *p = a.frames[0].polygon;
+    static const float tv[5][2] = { { 4, 14 }, { 4, 8 }, { 8, 6 }, { 16, 6 }, { 16, 14 } }, tuv[5][2] = { { 10, 28 }, { 10, 22 }, { 14, 20 }, { 22, 20 }, { 22, 28 } };
+    static const unsigned short tidx[9] = { 0, 1, 2, 0, 2, 3, 0, 3, 4 };
+    RT_CHECK(p != NULL && p->vertexCount == 5 && p->indexCount == 9, "tri: polygon %p", (const void *)p);
+    int bad = 0;
+    for (int i = 0; p != NULL && i < 5; i++)
+    {
+        bad += (p->vertices[i].x != tv[i][0]) || (p->vertices[i].y != tv[i][1]) || (p->uvs[i].x != tuv[i][0]) || (p->uvs[i].y != tuv[i][1]);
+        // the stated texel is the frame's own mapping of the vertex (upright: block + vertex - trim offset)
+        bad += (p->uvs[i].x != a.frames[0].block.x + p->vertices[i].x - a.frames[0].trim.x) || (p->uvs[i].y != a.frames[0].block.y + p->vertices[i].y - a.frames[0].trim.y);
+    }
+    for (int i = 0; p != NULL && i < 9; i++) bad += p->indices[i] != tidx[i];
+    RT_CHECK(bad == 0, "tri: %d values differ from the file", bad);
+    // area: the trim's 96 px less the cut corner's 4 = 92, every triangle wound the same way
+    double area = 0.0; int cw = 0, ccw = 0;
+    for (int t = 0; p != NULL && t < p->indexCount/3; t++)
+    {
+        double a2 = triArea2(p->vertices[p->indices[3*t]], p->vertices[p->indices[3*t + 1]], p->vertices[p->indices[3*t + 2]]);
+        area += fabs(a2)/2.0; cw += a2 < 0.0; ccw += a2 > 0.0;
+    }
+    RT_CHECK(area == 92.0 && (cw == 0 || ccw == 0), "tri: area %g (expected 92), windings %d/%d", area, cw, ccw);
+    // "rot": flat arrays; the frame is stored turned clockwise in the 8x16 block at (40, 0): upright
+    // (x, y) lies at texel (40 + 8 - y, x)
+    p = a.frames[1].polygon;
+    RT_CHECK(p != NULL && p->vertexCount == 3 && p->indexCount == 3 && a.frames[1].flags == RBL_FRAME_ROTATED, "rot: polygon");
+    bad = 0;
+    for (int i = 0; p != NULL && i < 3; i++) bad += (p->uvs[i].x != 40.0f + 8.0f - p->vertices[i].y) || (p->uvs[i].y != p->vertices[i].x);
+    RT_CHECK(p != NULL && bad == 0 && p->indices[0] == 0 && p->indices[1] == 1 && p->indices[2] == 2 && fabs(triArea2(p->vertices[0], p->vertices[1], p->vertices[2]))/2.0 == 64.0, "rot: %d texels off its mapping", bad);
+    RblUnloadAtlas(&a);
+    // many polygon frames: the tables grow while read and every polygon points into the final rows
+    char *text = (char *)malloc(200000);
+    int n = snprintf(text, 200000, "{\"frames\": {");
+    for (int i = 0; i < 600; i++)
+        n += snprintf(text + n, 200000 - n, "%s\"f%d\": {\"frame\": {\"x\":%d,\"y\":0,\"w\":4,\"h\":4}, \"vertices\": [0,0,4,0,4,4,0,%d], \"verticesUV\": [%d,0,%d,0,%d,4,%d,%d], \"triangles\": [0,1,2,0,2,3]}",
+                      (i > 0)? "," : "", i, i*4, 4 - (i%5), i*4, i*4 + 4, i*4 + 4, i*4, 4 - (i%5));
+    snprintf(text + n, 200000 - n, "}}");
+    a = atlasFromText(text);
+    bad = 0;
+    for (int i = 0; RblIsAtlasValid(&a) && i < a.frameCount; i++)
+    {
+        p = a.frames[i].polygon;
+        bad += (p == NULL) || (p->vertexCount != 4) || (p->indexCount != 6) || (p->vertices[3].y != 4 - (i%5)) || (p->uvs[0].x != i*4) || (p->indices[5] != 3);
+    }
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 600 && bad == 0, "600 polygon frames: %d wrong", bad);
+    RblUnloadAtlas(&a);
+    free(text);
+    // what a polygon must be: one line for each way it is not
+    static const char *broken[] = {
+        "\"vertices\": [0,0,4,0,4,4], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,3]",            // index past the vertices
+        "\"vertices\": [0,0,4,0,5,4], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,2]",            // vertex outside the frame
+        "\"vertices\": [0,0,4,0,4,4], \"verticesUV\": [0,0,4,0,4,5], \"triangles\": [0,1,2]",            // texel outside the block
+        "\"vertices\": [0,0,4,0,4,4,0,4], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,2]",        // counts differ
+        "\"vertices\": [0,0,4,0,4,4]",                                                                // partial
+        "\"vertices\": [0,0,4,0], \"verticesUV\": [0,0,4,0], \"triangles\": [0,1,1]",                    // fewer than 3 points
+        "\"vertices\": [0,0,4,0,4,4], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1]",              // not triples
+        "\"vertices\": [0,0,4,0,4,4], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,1.5]",          // not whole
+        "\"vertices\": [[0,0],[4,0],[4]], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,2]",        // not a pair
+        "\"vertices\": [0,0,4,0,4,4], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [[0,1],[1,2,0]]",   // not a triple
+        "\"vertices\": [0,0,4,0,4,\"x\"], \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,2]",        // not a number
+        "\"vertices\": 5, \"verticesUV\": [0,0,4,0,4,4], \"triangles\": [0,1,2]",
+    };
+    atlasLogBegin();
+    for (int i = 0; i < (int)(sizeof(broken)/sizeof(broken[0])); i++)
+    {
+        char t[512];
+        snprintf(t, sizeof(t), "{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}, %s}}, \"meta\": {\"size\": {\"w\":8,\"h\":8}}}", broken[i]);
+        atlasWarnLines = 0;
+        a = atlasFromText(t);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "broken polygon %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+    }
+    atlasLogEnd();
+}
+
+// The pixels a billboard's texture coordinates put on an upright w x h picture (nearest texel, as
+// billboardMismatch), against the expected upright picture
+static int quadMismatch(const RblBillboard *b, Image sheet, Image expected)
+{
+    RblCameraFrame view = { { 0, 0, 5 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, false };
+    RblVertex v[4];
+    if (!RblBillboardVertices(&view, sheet.width, sheet.height, b, v)) return -1;
+    float uv[4][2];
+    for (int i = 0; i < 4; i++) { uv[i][0] = v[i].texcoord[0]*(float)sheet.width; uv[i][1] = v[i].texcoord[1]*(float)sheet.height; }
+    int w = expected.width, h = expected.height, bad = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+        {
+            double s = (x + 0.5)/w, t = (y + 0.5)/h;
+            double u = uv[3][0]*(1 - s)*(1 - t) + uv[2][0]*s*(1 - t) + uv[0][0]*(1 - s)*t + uv[1][0]*s*t;
+            double vv = uv[3][1]*(1 - s)*(1 - t) + uv[2][1]*s*(1 - t) + uv[0][1]*(1 - s)*t + uv[1][1]*s*t;
+            int tx = (int)floor(u), ty = (int)floor(vv);
+            if (tx < 0 || ty < 0 || tx >= sheet.width || ty >= sheet.height) { bad++; continue; }
+            Color c = GetImageColor(sheet, tx, ty), d = GetImageColor(expected, x, y);
+            bad += memcmp(&c, &d, sizeof(Color)) != 0;
+        }
+    return bad;
+}
+
+static void test_atlas_libgdx_any_quarter_turn_colon_names_pma_split_and_pad(void)
+{
+    atlasLogBegin();
+    RblAtlas a = RblLoadAtlas(atlasFixture("libgdx/rotations.atlas"));
+    // the pad entry is reported once (LOG_INFO), nothing else is said
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 7 && a.pages[0].premultiplied && atlasWarnLines == 0 && atlasInfoLines == 1, "valid %d frames %d pma %d, %d warnings, %d info",
+             RblIsAtlasValid(&a), a.frameCount, RblIsAtlasValid(&a) && a.pages[0].premultiplied, atlasWarnLines, atlasInfoLines);
+    atlasLogEnd();
+    if (!RblIsAtlasValid(&a) || a.frameCount != 7) { RblUnloadAtlas(&a); return; }
+    // stored turned d degrees counter-clockwise: 90 and 270 in an h x w block (ROTATED: clockwise);
+    // 90 and 180 are that plus a half turn (both extents negated)
+    static const struct { const char *name; float block[4], source[4]; unsigned int flags; int degrees; } want[6] = {
+        { "r0", { 0, 0, 8, 4 }, { 0, 0, 8, 4 }, 0, 0 }, { "r90", { 10, 0, 4, 8 }, { 10, 0, -4, -8 }, RBL_FRAME_ROTATED, 90 },
+        { "r180", { 20, 0, 8, 4 }, { 20, 0, -8, -4 }, 0, 180 }, { "r270", { 30, 0, 4, 8 }, { 30, 0, 4, 8 }, RBL_FRAME_ROTATED, 270 },
+        { "rneg", { 40, 0, 4, 8 }, { 40, 0, 4, 8 }, RBL_FRAME_ROTATED, 270 }, { "big:ship", { 20, 20, 12, 10 }, { 20, 20, -12, -10 }, RBL_FRAME_ROTATED, 90 } };
+    Image sheet = noiseSheetCpu(64, 64, 31u);
+    for (int i = 0; i < 6; i++)
+    {
+        int f = RblAtlasFindFrame(&a, want[i].name);
+        RT_CHECK(f >= 0, "%s not found", want[i].name);
+        if (f < 0) continue;
+        const RblAtlasFrame *fr = &a.frames[f];
+        CHECK_RECT(fr->block, want[i].block[0], want[i].block[1], want[i].block[2], want[i].block[3], want[i].name);
+        CHECK_RECT(fr->source, want[i].source[0], want[i].source[1], want[i].source[2], want[i].source[3], want[i].name);
+        RT_CHECK(fr->flags == want[i].flags, "%s: flags %u", want[i].name, fr->flags);
+        // the upright picture by the format's meaning: the block turned back d degrees clockwise
+        Image up = ImageFromImage(sheet, fr->block);
+        for (int k = 0; k < want[i].degrees/90; k++) ImageRotateCW(&up);
+        RblBillboard b; memset(&b, 0, sizeof(b));
+        RT_CHECK(RblAtlasBillboard(&a, f, 1.0f, &b), "%s: billboard", want[i].name);
+        int bad = quadMismatch(&b, sheet, up);
+        RT_CHECK(up.width == (int)fr->trim.width && up.height == (int)fr->trim.height && bad == 0, "%s: %d of %dx%d pixels differ from the block turned back", want[i].name, bad, up.width, up.height);
+        UnloadImage(up);
+    }
+    UnloadImage(sheet);
+    // "big:ship" (a colon in the name, new-form offsets): trim (1, 16 - 2 - 12) 10x12 of 14x16, the
+    // bottom-centre pivot (7, 16): origin (6, -2)
+    int ship = RblAtlasFindFrame(&a, "big:ship"), button = RblAtlasFindFrame(&a, "ui:button");
+    RT_CHECK(ship >= 0 && button >= 0, "names with colons");
+    if (ship >= 0) { CHECK_RECT(a.frames[ship].trim, 1, 2, 10, 12, "big:ship trim"); checkQuad(&a, ship, 1.0f, 10.0f, 12.0f, 6.0f, -2.0f, "big:ship"); }
+    // split 3, 4, 2, 5 (left, right, top, bottom) of 12x10: the centre (3, 2) 5x3
+    if (button >= 0) CHECK_RECT(a.frames[button].center, 3, 2, 5, 3, "ui:button 9-slice centre");
+    RblUnloadAtlas(&a);
+    // from memory, the same; no INFO line when no pad is present; rotations that are no quarter turn refused
+    atlasLogBegin();
+    a = RblLoadAtlas(atlasFixture("libgdx/new.atlas"));
+    RT_CHECK(RblIsAtlasValid(&a) && atlasInfoLines == 0, "new.atlas: %d info lines", atlasInfoLines);
+    RblUnloadAtlas(&a);
+    const char *badRot[3] = { "p.png\nr\n  rotate: 91\n  xy: 0,0\n  size: 4,4\n", "p.png\nr\n  rotate: yes\n  xy: 0,0\n  size: 4,4\n", "p.png\nr\n  split: 3, 3, 0, 0\n  xy: 0,0\n  size: 4,4\n" };
+    for (int i = 0; i < 3; i++)
+    {
+        atlasWarnLines = 0;
+        a = atlasFromText(badRot[i]);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "bad libGDX %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+    }
+    // old form: an indented unknown field is still a field; an unindented colon line is a name
+    atlasWarnLines = 0;
+    a = atlasFromText("p.png\nsize: 8, 8\nhud:icon\n  rotate: 180\n  xy: 0, 0\n  size: 4, 2\n  custom: 1, 2\n");
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 1 && strcmp(a.frames[0].name, "hud:icon") == 0 && a.frames[0].source.width == -4.0f && a.frames[0].source.height == -2.0f && atlasWarnLines == 0,
+             "old form with a colon name: valid %d (%s)", RblIsAtlasValid(&a), atlasLastLine);
+    RblUnloadAtlas(&a);
+    // fields libGDX does not write are still fields when no region field follows them (a page's
+    // "scale: 1", a region's "custom:7"); a colon line followed by a region's field is a name
+    a = atlasFromText("p.png\nsize: 8, 8\nscale: 1\nrun\n  xy: 0, 0\n  size: 4, 4\n");
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 1 && strcmp(a.frames[0].name, "run") == 0, "unknown page field read as a field");
+    RblUnloadAtlas(&a);
+    a = atlasFromText("p.png\nsize:8,8\na\nbounds:0,0,4,4\ncustom:7\nb:c\nbounds:4,0,4,4\n");
+    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 2 && strcmp(a.frames[1].name, "b:c") == 0 && a.frames[1].block.x == 4.0f, "unknown region field and a colon name");
+    RblUnloadAtlas(&a);
+    atlasLogEnd();
+}
+
+// Untrimmed canvas of a frame by the format's meaning (TexturePacker / Aseprite: stored clockwise)
+static Image canvasOf(Image sheet, const RblAtlasFrame *f)
+{
+    Image up = ImageFromImage(sheet, f->block);
+    if (f->flags & RBL_FRAME_ROTATED) ImageRotateCCW(&up);
+    Image canvas = GenImageColor((int)f->size.x, (int)f->size.y, BLANK);
+    for (int y = 0; y < up.height; y++)
+        for (int x = 0; x < up.width; x++) ImageDrawPixel(&canvas, (int)f->trim.x + x, (int)f->trim.y + y, GetImageColor(up, x, y));
+    UnloadImage(up);
+    return canvas;
+}
+
+static void test_atlas_aseprite_slices_are_sub_frames_with_their_own_pivots(void)
+{
+    RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/slices.json"));
+    RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_ASEPRITE && a.frameCount == 2 && a.sliceCount == 5, "valid %d frames %d slices %d", RblIsAtlasValid(&a), a.frameCount, a.sliceCount);
+    if (!RblIsAtlasValid(&a) || a.sliceCount != 5) { RblUnloadAtlas(&a); return; }
+    // two slices have pivots: neither is the frames' pivot (each keeps its own); frames stand on
+    // their bottom centre
+    RT_CHECK(a.frames[0].pivot.x == 0.5f && a.frames[0].pivot.y == 1.0f && a.frames[1].pivot.x == 0.5f && a.frames[1].pivot.y == 1.0f, "frame pivots moved by a slice");
+    // keys in file order: head@0 (frames 0..0), head@1 (1..1), sword@0 (0..1), shadow@1 (1..1), corner@0 (0..1)
+    static const struct { const char *name; int frame, last; float bounds[4], pivot[2]; bool hasPivot; float center[4]; } want[5] = {
+        { "head", 0, 0, { 8, 2, 16, 12 }, { 16, 14 }, true, { 0, 0, 0, 0 } }, { "head", 1, 1, { 6, 0, 16, 12 }, { 14, 12 }, true, { 0, 0, 0, 0 } },
+        { "sword", 0, 1, { 20, 10, 12, 20 }, { 22, 28 }, true, { 22, 14, 8, 12 } }, { "shadow", 1, 1, { 0, 28, 32, 4 }, { 16, 32 }, false, { 0, 0, 0, 0 } },
+        { "corner", 0, 1, { 0, 0, 3, 2 }, { 1.5f, 2 }, false, { 0, 0, 0, 0 } } };
+    for (int i = 0; i < 5; i++)
+    {
+        const RblAtlasSlice *k = &a.slices[i];
+        RT_CHECK(strcmp(k->name, want[i].name) == 0 && k->frame == want[i].frame && k->lastFrame == want[i].last && k->hasPivot == want[i].hasPivot &&
+                 k->pivot.x == want[i].pivot[0] && k->pivot.y == want[i].pivot[1], "key %d: %s frames %d..%d pivot %g %g", i, k->name, k->frame, k->lastFrame, k->pivot.x, k->pivot.y);
+        CHECK_RECT(k->bounds, want[i].bounds[0], want[i].bounds[1], want[i].bounds[2], want[i].bounds[3], want[i].name);
+        CHECK_RECT(k->center, want[i].center[0], want[i].center[1], want[i].center[2], want[i].center[3], want[i].name);
+    }
+    RT_CHECK(RblAtlasFindSlice(&a, "head", 0) == 0 && RblAtlasFindSlice(&a, "head", 1) == 1 && RblAtlasFindSlice(&a, "sword", 1) == 2 &&
+             RblAtlasFindSlice(&a, "shadow", 0) == -1 && RblAtlasFindSlice(&a, "shadow", 1) == 3 && RblAtlasFindSlice(&a, "cape", 0) == -1, "find by name and frame");
+    // sub-frames: the key's bounds clipped to the frame's trim, about the key's pivot
+    static const struct { int slice, frame; float size[2], origin[2], source[4]; } quads[5] = {
+        { 0, 0, { 16, 12 }, { 8, 0 }, { 4, 0, 16, 12 } },          // head: trim (4,2): block (8-4, 2-2)
+        { 2, 0, { 8, 20 }, { 2, 2 }, { 16, 8, 8, 20 } },           // sword clipped at the trim's right edge (28)
+        { 2, 1, { 12, 20 }, { 2, 2 }, { 52, 10, 12, 20 } },        // sword on the untrimmed frame at (32, 0)
+        { 3, 1, { 32, 4 }, { 16, 0 }, { 32, 28, 32, 4 } },         // shadow: no pivot, its bottom centre
+        { 4, 1, { 3, 2 }, { 1.5f, 0 }, { 32, 0, 3, 2 } } };        // corner: drawn where the frame has pixels there
+    Image sheet = noiseSheetCpu(64, 32, 77u);
+    for (int q = 0; q < 5; q++)
+    {
+        RblBillboard b; memset(&b, 0, sizeof(b));
+        b.flags = RBL_ROUND_CYLINDER;
+        RblInstance in; memset(&in, 0, sizeof(in));
+        bool ok = RblAtlasSliceBillboard(&a, quads[q].slice, quads[q].frame, 1.0f, &b) && RblAtlasSliceInstance(&a, quads[q].slice, quads[q].frame, 1.0f, &in);
+        RT_CHECK(ok && b.size.x == quads[q].size[0] && b.size.y == quads[q].size[1] && b.origin.x == quads[q].origin[0] && b.origin.y == quads[q].origin[1] && (b.flags & RBL_ROUND_CYLINDER),
+                 "slice %d at frame %d: size %g %g origin %g %g", quads[q].slice, quads[q].frame, b.size.x, b.size.y, b.origin.x, b.origin.y);
+        CHECK_RECT(b.source, quads[q].source[0], quads[q].source[1], quads[q].source[2], quads[q].source[3], "slice source");
+        RT_CHECK(memcmp(&in.source, &b.source, sizeof(Rectangle)) == 0 && memcmp(&in.size, &b.size, sizeof(Vector2)) == 0 && memcmp(&in.origin, &b.origin, sizeof(Vector2)) == 0, "instance differs");
+        // its pixels are the canvas's inside the clipped bounds
+        Image canvas = canvasOf(sheet, &a.frames[quads[q].frame]);
+        const Rectangle t = a.frames[quads[q].frame].trim, k = a.slices[quads[q].slice].bounds;
+        float l = fmaxf(t.x, k.x), top = fmaxf(t.y, k.y);
+        Image crop = ImageFromImage(canvas, (Rectangle){ l, top, b.size.x, b.size.y });
+        int bad = quadMismatch(&b, sheet, crop);
+        RT_CHECK(bad == 0, "slice %d at frame %d: %d pixels differ from the canvas", quads[q].slice, quads[q].frame, bad);
+        UnloadImage(crop); UnloadImage(canvas);
+    }
+    // a world scale and the page scale apply as to frames
+    RblBillboard b; memset(&b, 0, sizeof(b));
+    RT_CHECK(RblAtlasSliceBillboard(&a, 2, 1, 0.5f, &b) && b.size.x == 6.0f && b.size.y == 10.0f && b.origin.x == 1.0f && b.origin.y == 1.0f, "slice at 0.5");
+    // refusals: a key that does not apply at the frame, a slice outside the drawn pixels, indices
+    atlasLogBegin();
+    RblBillboard keep = b;
+    RT_CHECK(!RblAtlasSliceBillboard(&a, 3, 0, 1.0f, &b) && !RblAtlasSliceBillboard(&a, 4, 0, 1.0f, &b) && !RblAtlasSliceBillboard(&a, 5, 0, 1.0f, &b) &&
+             !RblAtlasSliceBillboard(&a, 0, 2, 1.0f, &b) && !RblAtlasSliceBillboard(&a, 0, 0, NAN, &b) && !RblAtlasSliceInstance(&a, 0, 0, 1.0f, NULL) &&
+             RblAtlasFindSlice(&a, NULL, 0) == -1 && RblAtlasFindSlice(&a, "head", 7) == -1 && atlasWarnLines == 8 && memcmp(&b, &keep, sizeof(b)) == 0, "refusals: %d lines", atlasWarnLines);
+    atlasLogEnd();
+    UnloadImage(sheet);
+    RblUnloadAtlas(&a);
+    // slices on a frame stored turned (a TexturePacker sheet with Aseprite-style slices): the
+    // sub-source follows the turn
+    const char *json = "{\"frames\": {\"t\": {\"frame\": {\"x\":4,\"y\":2,\"w\":12,\"h\":8}, \"rotated\": true, \"trimmed\": true, \"spriteSourceSize\": {\"x\":2,\"y\":1,\"w\":12,\"h\":8}, \"sourceSize\": {\"w\":16,\"h\":10}}},"
+                       " \"meta\": {\"size\": {\"w\":16,\"h\":16}, \"slices\": [{\"name\": \"eye\", \"keys\": [{\"frame\": 0, \"bounds\": {\"x\":5,\"y\":3,\"w\":6,\"h\":4}}]}]}}";
+    a = atlasFromText(json);
+    sheet = noiseSheetCpu(16, 16, 5u);
+    memset(&b, 0, sizeof(b));
+    RT_CHECK(RblIsAtlasValid(&a) && RblAtlasSliceBillboard(&a, 0, 0, 1.0f, &b), "turned frame slice");
+    if (RblIsAtlasValid(&a))
+    {
+        Image canvas = canvasOf(sheet, &a.frames[0]), crop = ImageFromImage(canvas, (Rectangle){ 5, 3, 6, 4 });
+        int bad = quadMismatch(&b, sheet, crop);
+        RT_CHECK(bad == 0 && b.size.x == 6.0f && b.size.y == 4.0f && b.origin.x == 3.0f && b.origin.y == 0.0f, "turned frame slice: %d pixels differ, size %g %g origin %g %g", bad, b.size.x, b.size.y, b.origin.x, b.origin.y);
+        UnloadImage(crop); UnloadImage(canvas);
+    }
+    UnloadImage(sheet);
+    RblUnloadAtlas(&a);
+    // the one pivoted slice of an export is the frames' pivot (tags.json's "foot": see above);
+    // keys past the frames, and a center outside the bounds, are refused
+    const char *bad[2] = {
+        "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"slices\": [{\"name\": \"s\", \"keys\": [{\"frame\": 1, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":2}}]}]}}",
+        "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"slices\": [{\"name\": \"s\", \"keys\": [{\"frame\": 0, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":2}, \"center\": {\"x\":1,\"y\":0,\"w\":2,\"h\":1}}]}]}}" };
+    atlasLogBegin();
+    for (int i = 0; i < 2; i++)
+    {
+        atlasWarnLines = 0;
+        a = atlasFromText(bad[i]);
+        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "bad slice %d: valid %d, %d lines", i, RblIsAtlasValid(&a), atlasWarnLines);
+    }
+    atlasLogEnd();
+}
+
+static void test_atlas_frames_without_a_pivot_stand_on_their_position(void)
+{
+    // untrimmed frames of every format, no pivot in the file: origin = (width/2, 0), the feet
+    const char *texts[3] = {
+        "{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\":0,\"w\":10,\"h\":6}}}}",
+        "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":10,\"h\":6}, \"duration\": 100}], \"meta\": {\"app\": \"http://www.aseprite.org/\"}}",
+        "p.png\nsize: 16, 16\na\n  rotate: true\n  xy: 0, 0\n  size: 10, 6\n" };
+    for (int i = 0; i < 3; i++)
+    {
+        RblAtlas a = atlasFromText(texts[i]);
+        RT_CHECK(RblIsAtlasValid(&a), "text %d", i);
+        if (RblIsAtlasValid(&a)) checkQuad(&a, 0, 0.5f, 5.0f, 3.0f, 2.5f, 0.0f, "no pivot");
+        RblUnloadAtlas(&a);
+    }
+}
+
+// Straight (unpremultiplied) texel of a premultiplied one, 0..1 sRGB; the sRGB curves in double
+static double straightOf(unsigned char c, unsigned char a) { return (a > 0)? fmin((double)c/a, 1.0) : 0.0; }
+static double srgbLin(double s) { return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4); }
+static double srgbEnc(double l) { return (l <= 0.0031308)? 12.92*l : 1.055*pow(l, 1.0/2.4) - 0.055; }
+
+static void test_atlas_premultiplied_pages_pack_mips_as_the_alpha_weighted_mean_kept_premultiplied(void)
+{
+    // A 4x4 premultiplied albedo (libGDX pma: sRGB value x alpha): its first mip level is, texel by
+    // texel, the alpha-weighted mean of the straight colours in linear light, premultiplied again
+    unsigned int seed = 99u;
+    Image albedo = GenImageColor(4, 4, BLANK);
+    Color *px = (Color *)albedo.data;
+    static const unsigned char alphas[4] = { 0, 60, 200, 255 };
+    for (int i = 0; i < 16; i++)
+    {
+        unsigned char a = alphas[rtRandom(&seed)%4];
+        Color c = { (unsigned char)rtRandom(&seed), (unsigned char)rtRandom(&seed), (unsigned char)rtRandom(&seed), a };
+        px[i] = (Color){ (unsigned char)(c.r*a/255.0 + 0.5), (unsigned char)(c.g*a/255.0 + 0.5), (unsigned char)(c.b*a/255.0 + 0.5), a };
+    }
+    RblMaterialSource src; memset(&src, 0, sizeof(src));
+    src.albedo = albedo; src.mipmaps = true; src.premultipliedAlpha = true;
+    RblPackedMaterial packed; memset(&packed, 0, sizeof(packed));
+    RT_CHECK(RblPackMaterial(&src, &packed) && packed.layout.premultipliedAlpha && packed.albedo.mipmaps == 3, "pack refused or layout not premultiplied");
+    if (packed.albedo.data == NULL) { UnloadImage(albedo); return; }
+    const unsigned char *out = (const unsigned char *)packed.albedo.data;
+    int baseDiff = memcmp(out, albedo.data, 16*4) != 0, worst = 0;
+    for (int y = 0; y < 2; y++)
+        for (int x = 0; x < 2; x++)
+        {
+            double sum[3] = { 0, 0, 0 }, alpha = 0.0;
+            for (int j = 0; j < 2; j++)
+                for (int i = 0; i < 2; i++)
+                {
+                    Color c = px[(2*y + j)*4 + 2*x + i];
+                    double a = c.a/255.0;
+                    sum[0] += 0.25*a*srgbLin(straightOf(c.r, c.a));
+                    sum[1] += 0.25*a*srgbLin(straightOf(c.g, c.a));
+                    sum[2] += 0.25*a*srgbLin(straightOf(c.b, c.a));
+                    alpha += 0.25*a;
+                }
+            const unsigned char *got = out + 16*4 + (y*2 + x)*4;
+            int wantA = (int)(alpha*255.0 + 0.5);
+            worst = (abs(got[3] - wantA) > worst)? abs(got[3] - wantA) : worst;
+            for (int k = 0; k < 3; k++)
+            {
+                int want = (int)(srgbEnc((alpha > 0.0)? sum[k]/alpha : 0.0)*wantA + 0.5);
+                if (abs(got[k] - want) > worst) worst = abs(got[k] - want);
+            }
+        }
+    RT_CHECK(baseDiff == 0 && worst <= 1, "level 0 copied %d; level 1 off the double reference by %d/255", !baseDiff, worst);
+    // a straight packing of the same colours (each premultiplied texel divided back, 8-bit) holds
+    // that level divided by its alpha: premultiplying it again lands within 1/255
+    Image straight = ImageCopy(albedo);
+    Color *sp = (Color *)straight.data;
+    for (int i = 0; i < 16; i++) sp[i] = (Color){ (unsigned char)(straightOf(px[i].r, px[i].a)*255.0 + 0.5), (unsigned char)(straightOf(px[i].g, px[i].a)*255.0 + 0.5), (unsigned char)(straightOf(px[i].b, px[i].a)*255.0 + 0.5), px[i].a };
+    src.albedo = straight; src.premultipliedAlpha = false;
+    RblPackedMaterial plain; memset(&plain, 0, sizeof(plain));
+    RT_CHECK(RblPackMaterial(&src, &plain) && !plain.layout.premultipliedAlpha, "straight pack");
+    int apart = 0;
+    for (int i = 16; (plain.albedo.data != NULL) && (i < 20); i++)
+    {
+        const unsigned char *q = (const unsigned char *)plain.albedo.data + i*4, *r = out + i*4;
+        for (int k = 0; k < 3; k++) { int d = abs(r[k] - (int)(q[k]*q[3]/255.0 + 0.5)); if (d > apart) apart = d; }
+        apart = (abs(r[3] - q[3]) > apart)? abs(r[3] - q[3]) : apart;
+    }
+    RT_CHECK(apart <= 1, "premultiplied level 1 and the straight one premultiplied differ by %d/255", apart);
+    RblUnloadPackedMaterial(&plain);
+    UnloadImage(straight);
+    RblUnloadPackedMaterial(&packed);
+    // with alpha coverage kept, the scaled levels stay premultiplied (colour scaled with its alpha:
+    // no texel brighter than its alpha)
+    src.albedo = albedo; src.premultipliedAlpha = true; src.alphaCoverage = 0.5f;
+    RT_CHECK(RblPackMaterial(&src, &packed), "coverage pack");
+    int over = 0;
+    for (int i = 0; (packed.albedo.data != NULL) && (i < 16 + 4 + 1); i++)
+    {
+        const unsigned char *q = (const unsigned char *)packed.albedo.data + i*4;
+        over += (q[0] > q[3]) || (q[1] > q[3]) || (q[2] > q[3]);
+    }
+    RT_CHECK(over == 0, "%d texels hold more colour than alpha after the coverage scaling", over);
+    RblUnloadPackedMaterial(&packed);
+    UnloadImage(albedo);
+}
+
+// ---- the real exporter files (../shared/atlases) ---------------------------------------------------
 
 // Upright image of a frame from its sheet by the format's meaning: ImageFromImage(block), then the
 // quarter turn back (TexturePacker stored it clockwise, libGDX counter-clockwise)
@@ -501,9 +1119,8 @@ static void test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets(
         bool libgdx = (a.format == RBL_ATLAS_LIBGDX);
         for (int p = 0; p < a.pageCount; p++)
         {
-            // test-trim-rotation.json names its sheet test.png; the file beside it is the json's name
+            // the sheet the loader found (test-trim-rotation.json names test.png: found by the json's own name)
             Image sheet = LoadImage(a.pages[p].image);
-            if (sheet.data == NULL) { char alt[300]; size_t pl = strlen(path); memcpy(alt, path, pl - 5); memcpy(alt + pl - 5, ".png", 5); sheet = LoadImage(alt); }
             RT_CHECK(sheet.data != NULL, "%s: sheet %s not loaded", files[i], a.pages[p].image);
             if (sheet.data == NULL) continue;
             ImageFormat(&sheet, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);

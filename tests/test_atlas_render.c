@@ -59,7 +59,9 @@ static int drawAtlasAndCompare(const RblAtlas *a, int page, Image sheet, bool in
         double px = cursor + (double)fr->pivot.x*fr->size.x, py = y0 + (double)fr->pivot.y*fr->size.y;     // screen pixels
         Vector3 pos = { (float)(px - ATLAS_RT_W/2.0), (float)(ATLAS_RT_H/2.0 - py), 0.0f };
         memset(&bb[n], 0, sizeof(bb[n])); memset(&inst[n], 0, sizeof(inst[n]));
-        RT_CHECK(RblAtlasBillboard(a, f, 1.0f, &bb[n]) && RblAtlasInstance(a, f, 1.0f, &inst[n]), "frame %d refused", f);
+        // world units per pixel = the page's scale: one texel per pixel (building1 is exported at 0.5)
+        float unit = a->pages[page].scale;
+        RT_CHECK(RblAtlasBillboard(a, f, unit, &bb[n]) && RblAtlasInstance(a, f, unit, &inst[n]), "frame %d refused", f);
         bb[n].position = pos; inst[n].position = pos;
         x0[n] = cursor; index[n] = f;
         cursor += (int)fr->size.x + 4;
@@ -110,7 +112,8 @@ static void test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_ca
         if (instanced && !rtGlsl3()) break;
         // hand-written fixtures over noise sheets: trimmed, pivoted, rotated clockwise (TexturePacker),
         // rotated counter-clockwise with bottom offsets (libGDX)
-        RblAtlas tp = RblLoadAtlas("tests/fuzz/corpus/texturepacker/hash.json"), gdx = RblLoadAtlas("tests/fuzz/corpus/libgdx/old.atlas");
+        RT_CHECK(rtAtlasFixtures() != NULL, "fixtures");
+        RblAtlas tp = RblLoadAtlas("build/tests/atlas/texturepacker/hash.json"), gdx = RblLoadAtlas("build/tests/atlas/libgdx/old.atlas");
         Image s1 = noiseSheet(128, 64, 7u), s2 = noiseSheet(64, 64, 9u);
         total += drawAtlasAndCompare(&tp, 0, s1, instanced, &n); frames += n;
         total += drawAtlasAndCompare(&gdx, 0, s2, instanced, &n); frames += n;
@@ -176,6 +179,7 @@ static void test_atlas_rotated_frames_light_like_the_upright_frame(void)
             RblBillboard b; memset(&b, 0, sizeof(b));
             const RblAtlas *a = (k == 2)? &gdx : &tp;
             RT_CHECK(RblAtlasBillboard(a, (k == 2)? 0 : k, 0.125f, &b), "billboard");
+            b.position.y = -0.5f*b.size.y;      // the card's centre on the target's (it stands on its bottom centre)
             RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
             BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
             RblDrawBillboard(cam, m, b);
@@ -194,4 +198,252 @@ static void test_atlas_rotated_frames_light_like_the_upright_frame(void)
     UnloadTexture(ntex); UnloadTexture(white);
     MemFree(m.maps);
     RblUnloadAtlas(&tp); RblUnloadAtlas(&gdx);
+}
+
+// ---- a page's textures in one call, its normal sheet, premultiplied pages (issue #28) ------------
+// One texel per pixel: an orthographic camera over a w x h target, a card of w' x h' world units at
+// (x, y) pixels from the top-left (its pivot at its bottom-left corner)
+static Camera3D pixelCamera(int height)
+{
+    Camera3D cam; memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0, 0, 10 }; cam.up = (Vector3){ 0, 1, 0 }; cam.fovy = (float)height; cam.projection = CAMERA_ORTHOGRAPHIC;
+    return cam;
+}
+static void pixelCard(RblBillboard *b, int w, int h, int x, int y, int rtW, int rtH)
+{
+    b->size = (Vector2){ (float)w, (float)h };
+    b->origin = (Vector2){ 0, 0 };
+    b->position = (Vector3){ (float)x - rtW/2.0f, rtH/2.0f - (float)(y + h), 0.0f };
+}
+
+// A normal tile n (unit, tangent space) as RGB8, and the vector the shader decodes from it
+static Color normalRgb(double x, double y, double z) { return (Color){ (unsigned char)lround((x*0.5 + 0.5)*255.0), (unsigned char)lround((y*0.5 + 0.5)*255.0), (unsigned char)lround((z*0.5 + 0.5)*255.0), 255 }; }
+static D3 normalDecoded(Color c) { return dNorm(d3(c.r/255.0*2.0 - 1.0, c.g/255.0*2.0 - 1.0, c.b/255.0*2.0 - 1.0)); }
+
+static void test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_the_reference(void)
+{
+    // A 16x8 sheet of two white 8x8 frames; the normal sheet tilts the left one toward the sprite's
+    // right (+x) and the right one toward its left, as an artist's normal pass would
+    MakeDirectory("build/tests/atlas_gpu");
+    Image sheet = GenImageColor(16, 8, WHITE), normals = GenImageColor(16, 8, BLANK);
+    const Color tilt[2] = { normalRgb(0.6, 0.0, 0.8), normalRgb(-0.6, 0.0, 0.8) };
+    ImageDrawRectangle(&normals, 0, 0, 8, 8, tilt[0]);
+    ImageDrawRectangle(&normals, 8, 0, 8, 8, tilt[1]);
+    ExportImage(sheet, "build/tests/atlas_gpu/hero.png");
+    ExportImage(normals, "build/tests/atlas_gpu/hero_n.png");          // the "_n" convention
+    ExportImage(normals, "build/tests/atlas_gpu/hero_nrm.png");        // a caller's own suffix
+    ExportImage(normals, "build/tests/atlas_gpu/hero_bump.png");       // named by a Phaser 3 file
+    UnloadImage(sheet); UnloadImage(normals);
+    SaveFileText("build/tests/atlas_gpu/hero.json", (char *)"{\"frames\": {\"l\": {\"frame\": {\"x\":0,\"y\":0,\"w\":8,\"h\":8}}, \"r\": {\"frame\": {\"x\":8,\"y\":0,\"w\":8,\"h\":8}}},"
+                 " \"meta\": {\"image\": \"hero.png\", \"size\": {\"w\":16,\"h\":8}}}");
+    SaveFileText("build/tests/atlas_gpu/hero3.json", (char *)"{\"textures\": [{\"image\": \"hero.png\", \"normalMap\": \"hero_bump.png\", \"size\": {\"w\":16,\"h\":8},"
+                 " \"frames\": [{\"filename\": \"l\", \"frame\": {\"x\":0,\"y\":0,\"w\":8,\"h\":8}}, {\"filename\": \"r\", \"frame\": {\"x\":8,\"y\":0,\"w\":8,\"h\":8}}]}]}");
+    // The light comes from the right and toward the viewer: the left frame faces it more
+    RblLight light; memset(&light, 0, sizeof(light));
+    light.type = RBL_LIGHT_DIRECTIONAL; light.direction = (Vector3){ -1.0f, 0.0f, -1.0f }; light.color = (Color){ 255, 230, 200, 255 }; light.intensity = 1.5f;
+    const Color ambient = { 40, 40, 50, 255 };
+    RT_CHECK(renderSetLights(&light, 1, ambient), "scene");
+    RefParams params; memset(&params, 0, sizeof(params));
+    RefEnvironment env; memset(&env, 0, sizeof(env));
+    env.ambient = ambient;
+    Camera3D cam = pixelCamera(16);
+    const char *files[3] = { "build/tests/atlas_gpu/hero.json", "build/tests/atlas_gpu/hero.json", "build/tests/atlas_gpu/hero3.json" };
+    const char *suffix[3] = { NULL, "_nrm", NULL };
+    int worst = 0, litDiff = 0;
+    for (int k = 0; k < 3; k++)
+    {
+        RblAtlas a = RblLoadAtlas(files[k]);
+        Material m = LoadMaterialDefault();
+        RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
+        desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+        bool ok = RblIsAtlasValid(&a) && RblLoadAtlasTextures(&a, 0, suffix[k], &m, &desc.material);
+        RT_CHECK(ok && desc.material.normalEncoding == RBL_NORMAL_RGB && !desc.material.premultipliedAlpha && m.maps[MATERIAL_MAP_NORMAL].texture.width == 16,
+                 "%s (suffix %s): loaded %d, normal encoding %d", files[k], suffix[k]? suffix[k] : "NULL", ok, desc.material.normalEncoding);
+        if (!ok) { RblUnloadAtlas(&a); UnloadMaterial(m); continue; }
+        m.shader = RblLoadLitShader(desc);
+        RenderTexture2D rt = LoadRenderTexture(32, 16);
+        BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+        for (int f = 0; f < 2; f++)
+        {
+            RblBillboard b; memset(&b, 0, sizeof(b));
+            RT_CHECK(RblAtlasBillboard(&a, f, 1.0f, &b), "frame %d", f);
+            b.position = (Vector3){ -12.0f + 16.0f*f, -4.0f, 0.0f };     // feet at the bottom centre of pixels 0..15 / 16..31
+            RblDrawBillboard(cam, m, b);
+        }
+        EndMode3D(); EndTextureMode();
+        Image out = rtReadTarget(rt);
+        // each frame's centre pixel against the double reference (Lambert, the decoded normal; the
+        // card faces +Z with +U = +X and the map's +Y up)
+        int lum[2];
+        for (int f = 0; f < 2; f++)
+        {
+            RefSurface s; memset(&s, 0, sizeof(s));
+            s.position = d3(0, 0, 0); s.normal = normalDecoded(tilt[f]); s.albedo = refRgb(1, 1, 1); s.occlusion = 1.0; s.specularMap = -1.0;
+            RefRgb want = refFinishAt(&params, refShadeView(&params, &light, 1, &env, &s, d3(0, 0, 1)), 0.0);
+            Color got = rtPixel(out, 4 + 16*f, 8);
+            int d = abs(got.r - (int)lround(want.r*255.0));
+            d = (abs(got.g - (int)lround(want.g*255.0)) > d)? abs(got.g - (int)lround(want.g*255.0)) : d;
+            d = (abs(got.b - (int)lround(want.b*255.0)) > d)? abs(got.b - (int)lround(want.b*255.0)) : d;
+            worst = (d > worst)? d : worst;
+            lum[f] = got.r + got.g + got.b;
+        }
+        litDiff = lum[0] - lum[1];
+        if (worst > 1) rtSaveImage(out, "normal-sheet");
+        UnloadImage(out);
+        UnloadRenderTexture(rt);
+        RblUnloadLitShader(&m.shader);
+        UnloadMaterial(m);      // frees the two textures RblLoadAtlasTextures put in the slots
+        RblUnloadAtlas(&a);
+    }
+    printf("    sheet + normal sheet (\"_n\", \"_nrm\", Phaser 3 normalMap): worst %d/255 from the double reference, left - right %d\n", worst, litDiff);
+    RT_CHECK(worst <= 1 && litDiff > 60, "lit frames %d/255 from the reference (left brighter by %d)", worst, litDiff);
+}
+
+// Premultiplied pages (libGDX pma): the lit program divides each filtered texel by its alpha and
+// lights the straight colour; against a double reference of that (Lambert + ambient, sRGB decode,
+// encode, alpha blending over the target), point-sampled at one texel per pixel and magnified 8x
+// through bilinear filtering, where the alpha-weighted mean of neighbours meets transparent texels.
+// The same texels through a program that takes them as straight colour are far off (the test can
+// fail), and a straight sheet whose transparent texels are black darkens the filtered edges.
+static void test_atlas_premultiplied_pages_light_and_blend_as_their_straight_colour(void)
+{
+    // straight colours and alphas (0..255 in steps), premultiplied as libGDX's packer stores them
+    Image straight = GenImageColor(16, 8, BLANK), pma = GenImageColor(16, 8, BLANK);
+    unsigned int seed = 1234u;
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 16; x++)
+        {
+            unsigned char a = (unsigned char)((x*17 + y*3)%256), r = (unsigned char)rtRandom(&seed), g = (unsigned char)rtRandom(&seed), b = (unsigned char)rtRandom(&seed);
+            ((Color *)pma.data)[y*16 + x] = (Color){ (unsigned char)lround(r*a/255.0), (unsigned char)lround(g*a/255.0), (unsigned char)lround(b*a/255.0), a };
+            ((Color *)straight.data)[y*16 + x] = (Color){ r, g, b, a };
+        }
+    // the page comes from a libGDX atlas that says pma: true, through RblLoadAtlasTextures
+    MakeDirectory("build/tests/atlas_gpu");
+    ExportImage(pma, "build/tests/atlas_gpu/pma.png");
+    SaveFileText("build/tests/atlas_gpu/pma.atlas", (char *)"pma.png\nsize: 16, 8\nformat: RGBA8888\nfilter: Nearest, Nearest\nrepeat: none\npma: true\nall\n  rotate: false\n  xy: 0, 0\n  size: 16, 8\n");
+    RblAtlas atlas = RblLoadAtlas("build/tests/atlas_gpu/pma.atlas");
+    Material mPma = LoadMaterialDefault();
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+    RT_CHECK(RblIsAtlasValid(&atlas) && atlas.pages[0].premultiplied && RblLoadAtlasTextures(&atlas, 0, "", &mPma, &desc.material) && desc.material.premultipliedAlpha, "pma page and layout");
+    mPma.shader = RblLoadLitShader(desc);
+    RblLitShaderDesc plainDesc = desc;
+    plainDesc.material.premultipliedAlpha = false;
+    Material mNaive = LoadMaterialDefault(), mStraight = LoadMaterialDefault();
+    mNaive.shader = RblLoadLitShader(plainDesc);
+    mNaive.maps[MATERIAL_MAP_ALBEDO].texture = mPma.maps[MATERIAL_MAP_ALBEDO].texture;
+    mStraight.shader = RblLoadLitShader(plainDesc);
+    RT_CHECK(RblIsLitShaderValid(mPma.shader) && RblIsLitShaderValid(mNaive.shader), "programs");
+    Material *mats[3] = { &mPma, &mNaive, &mStraight };
+    for (int k = 0; k < 3; k++) mats[k]->params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;     // every alpha blends
+    RblLight light; memset(&light, 0, sizeof(light));
+    light.type = RBL_LIGHT_DIRECTIONAL; light.direction = (Vector3){ -1.0f, -0.5f, -2.0f }; light.color = (Color){ 255, 210, 170, 255 }; light.intensity = 1.3f;
+    const Color ambient = { 60, 50, 40, 255 }, bg = { 20, 70, 120, 255 };
+    RT_CHECK(renderSetLights(&light, 1, ambient), "scene");
+    RefParams params; memset(&params, 0, sizeof(params));
+    RefEnvironment env; memset(&env, 0, sizeof(env));
+    env.ambient = ambient;
+    // lit output (0..1, encoded) of a straight sRGB texel colour
+    #define PMA_SHADE(sr, sg, sb, outRgb) do { RefSurface s_; memset(&s_, 0, sizeof(s_)); s_.normal = d3(0, 0, 1); s_.occlusion = 1.0; s_.specularMap = -1.0; \
+        s_.albedo = refRgb(srgbDecode(sr), srgbDecode(sg), srgbDecode(sb)); outRgb = refFinishAt(&params, refShadeView(&params, &light, 1, &env, &s_, d3(0, 0, 1)), 0.0); } while (0)
+    // 1) one texel per pixel, point sampling: 128 texels of 16 alphas
+    const int W = 32, H = 16;
+    Camera3D cam = pixelCamera(H);
+    int worst[2] = { 0, 0 }, worstTrue = 0;
+    for (int k = 0; k < 2; k++)
+    {
+        RenderTexture2D rt = LoadRenderTexture(W, H);
+        RblBillboard card; memset(&card, 0, sizeof(card));
+        pixelCard(&card, 16, 8, 8, 4, W, H);
+        BeginTextureMode(rt); ClearBackground(bg); BeginMode3D(cam);
+        RblDrawBillboard(cam, *mats[k], card);
+        EndMode3D(); EndTextureMode();
+        Image out = rtReadTarget(rt);
+        for (int y = 0; y < 8; y++)
+            for (int x = 0; x < 16; x++)
+            {
+                Color p = ((Color *)pma.data)[y*16 + x], s = ((Color *)straight.data)[y*16 + x], got = rtPixel(out, 8 + x, 4 + y);
+                double a = p.a/255.0;
+                RefRgb lit, litTrue;
+                PMA_SHADE((p.a > 0)? fmin(p.r/(double)p.a, 1.0) : 0.0, (p.a > 0)? fmin(p.g/(double)p.a, 1.0) : 0.0, (p.a > 0)? fmin(p.b/(double)p.a, 1.0) : 0.0, lit);
+                PMA_SHADE(s.r/255.0, s.g/255.0, s.b/255.0, litTrue);
+                const double w3[3] = { lit.r, lit.g, lit.b }, t3[3] = { litTrue.r, litTrue.g, litTrue.b }, b3[3] = { bg.r/255.0, bg.g/255.0, bg.b/255.0 };
+                const int g3[3] = { got.r, got.g, got.b };
+                for (int c = 0; c < 3; c++)
+                {
+                    int want = (int)lround((w3[c]*a + b3[c]*(1.0 - a))*255.0), wantTrue = (int)lround((t3[c]*a + b3[c]*(1.0 - a))*255.0);
+                    if (abs(g3[c] - want) > worst[k]) worst[k] = abs(g3[c] - want);
+                    if ((k == 0) && (abs(g3[c] - wantTrue) > worstTrue)) worstTrue = abs(g3[c] - wantTrue);
+                }
+            }
+        if (((k == 0) && (worst[0] > 1)) || ((k == 1) && (worst[1] < 20))) rtSaveImage(out, (k == 0)? "pma" : "naive");
+        UnloadImage(out);
+        UnloadRenderTexture(rt);
+    }
+    printf("    point-sampled: premultiplied program %d/255 from the double reference (%d from the unquantised straight colour); the same texels taken as straight %d/255\n", worst[0], worstTrue, worst[1]);
+    RT_CHECK(worst[0] <= 1 && worstTrue <= 2 && worst[1] >= 20, "premultiplied %d/255 (true colour %d), naive %d/255 (should be far)", worst[0], worstTrue, worst[1]);
+    // 2) magnified 8x through bilinear filtering: opaque red | transparent | opaque green | half-transparent blue
+    Image strip = GenImageColor(4, 1, BLANK), stripStraight = GenImageColor(4, 1, BLANK);
+    const Color texels[4] = { { 200, 40, 30, 255 }, { 0, 0, 0, 0 }, { 40, 190, 60, 255 }, { 40, 60, 220, 128 } };
+    for (int i = 0; i < 4; i++)
+    {
+        Color c = texels[i];
+        ((Color *)strip.data)[i] = (Color){ (unsigned char)lround(c.r*c.a/255.0), (unsigned char)lround(c.g*c.a/255.0), (unsigned char)lround(c.b*c.a/255.0), c.a };
+        ((Color *)stripStraight.data)[i] = c;       // transparent = black, as a straight exporter leaves it
+    }
+    Texture2D tPma = LoadTextureFromImage(strip), tStraight = LoadTextureFromImage(stripStraight);
+    SetTextureFilter(tPma, TEXTURE_FILTER_BILINEAR); SetTextureFilter(tStraight, TEXTURE_FILTER_BILINEAR);
+    SetTextureWrap(tPma, TEXTURE_WRAP_CLAMP); SetTextureWrap(tStraight, TEXTURE_WRAP_CLAMP);
+    Texture2D keepPage = mPma.maps[MATERIAL_MAP_ALBEDO].texture;
+    mPma.maps[MATERIAL_MAP_ALBEDO].texture = tPma;
+    mStraight.maps[MATERIAL_MAP_ALBEDO].texture = tStraight;
+    int worstLin[2] = { 0, 0 };
+    for (int k = 0; k < 2; k++)
+    {
+        Material *m = (k == 0)? &mPma : &mStraight;
+        RenderTexture2D rt = LoadRenderTexture(W, H);
+        RblBillboard card; memset(&card, 0, sizeof(card));
+        pixelCard(&card, 32, 8, 0, 4, W, H);
+        BeginTextureMode(rt); ClearBackground(bg); BeginMode3D(cam);
+        RblDrawBillboard(cam, *m, card);
+        EndMode3D(); EndTextureMode();
+        Image out = rtReadTarget(rt);
+        for (int x = 0; x < 32; x++)
+        {
+            // texel-space sample point, clamped to the edge texels as the wrap mode does
+            double u = (x + 0.5)/8.0 - 0.5;
+            int i0 = (int)floor(u);
+            double f = u - i0;
+            int i1 = i0 + 1;
+            i0 = (i0 < 0)? 0 : ((i0 > 3)? 3 : i0); i1 = (i1 < 0)? 0 : ((i1 > 3)? 3 : i1);
+            Color c0 = ((Color *)strip.data)[i0], c1 = ((Color *)strip.data)[i1];
+            double pr = ((1 - f)*c0.r + f*c1.r)/255.0, pg = ((1 - f)*c0.g + f*c1.g)/255.0, pb = ((1 - f)*c0.b + f*c1.b)/255.0, a = ((1 - f)*c0.a + f*c1.a)/255.0;
+            RefRgb lit;
+            PMA_SHADE((a > 0.0)? fmin(pr/a, 1.0) : 0.0, (a > 0.0)? fmin(pg/a, 1.0) : 0.0, (a > 0.0)? fmin(pb/a, 1.0) : 0.0, lit);
+            const double w3[3] = { lit.r, lit.g, lit.b }, b3[3] = { bg.r/255.0, bg.g/255.0, bg.b/255.0 };
+            for (int y = 4; y < 12; y++)
+            {
+                Color got = rtPixel(out, x, y);
+                const int g3[3] = { got.r, got.g, got.b };
+                for (int c = 0; c < 3; c++)
+                {
+                    int want = (int)lround((w3[c]*a + b3[c]*(1.0 - a))*255.0);
+                    if (abs(g3[c] - want) > worstLin[k]) worstLin[k] = abs(g3[c] - want);
+                }
+            }
+        }
+        if (((k == 0) && (worstLin[0] > 2)) || ((k == 1) && (worstLin[1] < 10))) rtSaveImage(out, (k == 0)? "pma-bilinear" : "straight-bilinear");
+        UnloadImage(out);
+        UnloadRenderTexture(rt);
+    }
+    #undef PMA_SHADE
+    printf("    bilinear 8x: premultiplied %d/255 from the reference; a straight sheet with black transparent texels %d/255 (dark fringes)\n", worstLin[0], worstLin[1]);
+    RT_CHECK(worstLin[0] <= 2 && worstLin[1] >= 10, "bilinear: premultiplied %d/255 (limit 2), straight %d/255 (should show fringes)", worstLin[0], worstLin[1]);
+    mPma.maps[MATERIAL_MAP_ALBEDO].texture = keepPage;
+    UnloadTexture(tPma); UnloadTexture(tStraight); UnloadImage(strip); UnloadImage(stripStraight);
+    RblUnloadLitShader(&mPma.shader); RblUnloadLitShader(&mNaive.shader); RblUnloadLitShader(&mStraight.shader);
+    UnloadTexture(keepPage);
+    MemFree(mPma.maps); MemFree(mNaive.maps); MemFree(mStraight.maps);
+    RblUnloadAtlas(&atlas);
+    UnloadImage(straight); UnloadImage(pma);
 }

@@ -950,9 +950,12 @@ static void c_gbuffer_passes(void)
     EXPECT_REFUSED(V(RblResolveGBuffer(&g)));
     EXPECT_REFUSED(RblResizeGBuffer(&g, 16, 16));
     EXPECT_REFUSED(V(RblEndGBuffer(&h)));                      // ending the other one
-    // Mismatched variants inside the pass: forward, other BRDF, instanced forward
+    // Mismatched variants inside the pass: forward, other BRDF, instanced forward (a refused first
+    // immediate draw creates nothing)
     RblBillboard bb = billboard();
+    ck(rbl__state.immediate.state == NULL, "the immediate path exists before any immediate draw");
     EXPECT_REFUSED(V(RblDrawBillboard(camera(), material, bb)));
+    ck(rbl__state.immediate.state == NULL, "a refused immediate draw created the immediate path's buffers");
     Material lam = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
     EXPECT_REFUSED(V(RblDrawBillboard(camera(), lam, bb)));
     RblShadowMap map = RblLoadShadowMap((RblShadowDesc){ 0 });
@@ -1137,6 +1140,18 @@ static void c_atlas_load(void)
     EXPECT_REFUSED(loadedFile(""));
     EXPECT_REFUSED(loadedFile("no/such/atlas.json"));
     ck(loadedFromMemory(atlasText, n, RBL_ATLAS_TEXTUREPACKER) && loadedFromMemory(atlasText, n, RBL_ATLAS_ASEPRITE), "good text refused: %s", lastWarning);
+    // the entry cap (built here at RBL_MAX_ATLAS_ENTRIES 4096): JSON values, and rows of the frame
+    // table (libGDX regions), each refused with the cap named in the line
+    static char big[200000];
+    int len = snprintf(big, sizeof(big), "{\"frames\": [");
+    for (int i = 0; i < 600; i++) len += snprintf(big + len, sizeof(big) - (size_t)len, "%s{\"filename\": \"f\", \"frame\": {\"x\":0,\"y\":0,\"w\":1,\"h\":1}}", (i > 0)? "," : "");
+    len += snprintf(big + len, sizeof(big) - (size_t)len, "]}");
+    EXPECT_REFUSED(loadedFromMemory(big, len, 0));
+    ck(strstr(lastWarning, "4096 JSON values (RBL_MAX_ATLAS_ENTRIES)") != NULL, "JSON cap not named: %s", lastWarning);
+    len = snprintf(big, sizeof(big), "p.png\n");
+    for (int i = 0; i < 4097; i++) len += snprintf(big + len, sizeof(big) - (size_t)len, "r\nxy:0,0\nsize:1,1\n");
+    EXPECT_REFUSED(loadedFromMemory(big, len, 0));
+    ck(strstr(lastWarning, "4096 frames (RBL_MAX_ATLAS_ENTRIES)") != NULL, "frame cap not named: %s", lastWarning);
 }
 
 static void c_atlas_lifecycle(void)
@@ -1187,6 +1202,109 @@ static void c_atlas_quads(void)
     RblAtlas stale = a;
     RblUnloadAtlas(&a);
     EXPECT_REFUSED(RblAtlasBillboard(&stale, 0, 1.0f, &b));
+}
+
+// Slice keys as sub-frames: NULL outputs and names, zero and stale atlases, keys and frames out of
+// range, a key at a frame it does not cover, a key outside the frame's drawn pixels, bad scales;
+// outputs untouched; accepted extremes finite
+static void c_atlas_slices(void)
+{
+    static const char text[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":8}, \"trimmed\": true, \"spriteSourceSize\": {\"x\":2,\"y\":0,\"w\":4,\"h\":8},"
+        " \"sourceSize\": {\"w\":8,\"h\":8}}, {\"filename\": \"b\", \"frame\": {\"x\":4,\"y\":0,\"w\":8,\"h\":8}}], \"meta\": {\"app\": \"aseprite\", \"size\": {\"w\":16,\"h\":16},"
+        " \"scale\": \"0.5\", \"slices\": [{\"name\": \"s\", \"keys\": [{\"frame\": 1, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":2}, \"pivot\": {\"x\":1,\"y\":1}}]},"
+        " {\"name\": \"edge\", \"keys\": [{\"frame\": 0, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":8}}]}]}}";
+    RblAtlas a = RblLoadAtlasFromMemory(text, (int)strlen(text), RBL_ATLAS_AUTO), zero; memset(&zero, 0, sizeof(zero));
+    ck(RblIsAtlasValid(&a) && a.sliceCount == 2, "fixture: %s", lastWarning);
+    RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
+    RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
+    EXPECT_QUIET(RblAtlasFindSlice(&a, "s", 1) == 0, true);
+    EXPECT_QUIET(RblAtlasFindSlice(&a, "s", 0) == -1, true);
+    EXPECT_QUIET(RblAtlasFindSlice(&a, "edge", 1) == 1, true);
+    EXPECT_REFUSED(RblAtlasFindSlice(&a, NULL, 0) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(&a, "s", -1) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(&a, "s", 2) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(NULL, "s", 0) >= 0);
+    EXPECT_REFUSED(RblAtlasFindSlice(&zero, "s", 0) >= 0);
+    EXPECT_REFUSED(RblAtlasSliceBillboard(&a, 0, 1, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasSliceInstance(&a, 0, 1, 1.0f, NULL));
+    EXPECT_REFUSED(RblAtlasSliceBillboard(NULL, 0, 1, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasSliceInstance(&zero, 0, 1, 1.0f, &in));
+    const int keys[2] = { -1, 2 }, frames[2] = { -1, 2 };
+    for (int k = 0; k < 2; k++)
+    {
+        EXPECT_REFUSED(RblAtlasSliceBillboard(&a, keys[k], 1, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasSliceInstance(&a, 0, frames[k], 1.0f, &in));
+    }
+    EXPECT_REFUSED(RblAtlasSliceBillboard(&a, 0, 0, 1.0f, &b));     // key 0 covers frame 1 only
+    EXPECT_REFUSED(RblAtlasSliceInstance(&a, 1, 0, 1.0f, &in));     // "edge" lies left of frame 0's trim
+    const float scales[3] = { 0.0f, -1.0f, 2e15f };
+    for (int vi = 0; vi < 8; vi++)
+    {
+        float sc = (vi < 5)? badFloats[vi] : scales[vi - 5];
+        EXPECT_REFUSED(RblAtlasSliceBillboard(&a, 0, 1, sc, &b));
+        EXPECT_REFUSED(RblAtlasSliceInstance(&a, 1, 1, sc, &in));
+    }
+    ck(memcmp(&b, &b0, sizeof(b)) == 0 && memcmp(&in, &in0, sizeof(in)) == 0, "refused calls wrote their outputs");
+    ck(RblAtlasSliceBillboard(&a, 0, 1, 1e15f, &b) && allFinite(&b.size.x, 2) && allFinite(&b.origin.x, 2) && allFinite(&b.source.x, 4), "largest scale: non-finite or refused");
+    ck(RblAtlasSliceInstance(&a, 1, 1, 1e-45f, &in) && allFinite(&in.size.x, 2) && allFinite(&in.origin.x, 2), "tiny scale refused");
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblAtlasSliceBillboard(&stale, 0, 1, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasFindSlice(&stale, "s", 1) >= 0);
+}
+
+// A page's textures into a Material: NULL and stale atlases, pages, materials, a suffix naming no
+// file, a normal sheet of another size, a sheet not of the stated size, a sheet not found; nothing
+// changes in the material on refusal; the accepted calls fill the slots and the layout
+static void c_atlas_textures(void)
+{
+    MakeDirectory("build/tests/contracts");
+    Image img = GenImageColor(16, 16, RED);
+    ExportImage(img, "build/tests/contracts/sheet.png");
+    ExportImage(img, "build/tests/contracts/sheet_n.png");
+    ExportImage(img, "build/tests/contracts/wrong.png");
+    UnloadImage(img);
+    img = GenImageColor(8, 8, BLUE);
+    ExportImage(img, "build/tests/contracts/sheet_small.png");
+    ExportImage(img, "build/tests/contracts/wrong_n.png");
+    UnloadImage(img);
+    SaveFileText("build/tests/contracts/sheet.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"sheet.png\", \"size\": {\"w\":16,\"h\":16}}}");
+    SaveFileText("build/tests/contracts/big.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"sheet.png\", \"size\": {\"w\":32,\"h\":32}}}");
+    SaveFileText("build/tests/contracts/wrong.json", (char *)"{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"wrong.png\"}}");
+    static const char memText[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"nowhere.png\"}}";
+    RblAtlas a = RblLoadAtlas("build/tests/contracts/sheet.json"), big = RblLoadAtlas("build/tests/contracts/big.json"), wrong = RblLoadAtlas("build/tests/contracts/wrong.json");
+    RblAtlas mem = RblLoadAtlasFromMemory(memText, (int)strlen(memText), RBL_ATLAS_AUTO), zero; memset(&zero, 0, sizeof(zero));
+    ck(RblIsAtlasValid(&a) && RblIsAtlasValid(&big) && RblIsAtlasValid(&wrong) && RblIsAtlasValid(&mem) && (a.pages[0].normalImage != NULL), "fixtures: %s", lastWarning);
+    Material m = LoadMaterialDefault(), noMaps = m;
+    noMaps.maps = NULL;
+    Material keep = m;
+    Texture2D t0 = m.maps[MATERIAL_MAP_ALBEDO].texture, t2 = m.maps[MATERIAL_MAP_NORMAL].texture;
+    RblMaterialLayout layout, layout0; memset(&layout, 0x5A, sizeof(layout)); layout0 = layout;
+    EXPECT_REFUSED(RblLoadAtlasTextures(NULL, 0, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&zero, 0, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, -1, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 1, NULL, &m, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, NULL, NULL, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, NULL, &noMaps, &layout));
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, "_none", &m, &layout));       // sheet_none.png does not exist
+    EXPECT_REFUSED(RblLoadAtlasTextures(&a, 0, "_small", &m, &layout));      // 8x8 beside a 16x16 sheet
+    EXPECT_REFUSED(RblLoadAtlasTextures(&big, 0, NULL, &m, &layout));        // stated 32x32, the file 16x16
+    EXPECT_REFUSED(RblLoadAtlasTextures(&wrong, 0, NULL, &m, &layout));      // its "_n" sheet is 8x8
+    EXPECT_REFUSED(RblLoadAtlasTextures(&mem, 0, NULL, &m, &layout));        // as written, nowhere
+    ck(memcmp(&m, &keep, sizeof(m)) == 0 && memcmp(&m.maps[MATERIAL_MAP_ALBEDO].texture, &t0, sizeof(t0)) == 0 && memcmp(&m.maps[MATERIAL_MAP_NORMAL].texture, &t2, sizeof(t2)) == 0 &&
+       memcmp(&layout, &layout0, sizeof(layout)) == 0, "refused calls changed the material or the layout");
+    // accepted: the sheet and its "_n" sheet; "" loads the sheet alone (the normal slot kept)
+    EXPECT_QUIET(RblLoadAtlasTextures(&a, 0, NULL, &m, &layout), true);
+    ck(m.maps[MATERIAL_MAP_ALBEDO].texture.width == 16 && m.maps[MATERIAL_MAP_NORMAL].texture.width == 16 && layout.normalEncoding == RBL_NORMAL_RGB && !layout.premultipliedAlpha, "loaded slots");
+    Texture2D loaded[2] = { m.maps[MATERIAL_MAP_ALBEDO].texture, m.maps[MATERIAL_MAP_NORMAL].texture };
+    EXPECT_QUIET(RblLoadAtlasTextures(&a, 0, "", &m, NULL), true);
+    ck(m.maps[MATERIAL_MAP_NORMAL].texture.id == loaded[1].id && m.maps[MATERIAL_MAP_ALBEDO].texture.id != loaded[0].id, "\"\": the normal slot changed");
+    UnloadTexture(loaded[0]); UnloadTexture(loaded[1]); UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
+    MemFree(m.maps);
+    RblAtlas stale = a;
+    RblUnloadAtlas(&a);
+    EXPECT_REFUSED(RblLoadAtlasTextures(&stale, 0, NULL, &keep, NULL));
+    RblUnloadAtlas(&big); RblUnloadAtlas(&wrong); RblUnloadAtlas(&mem);
 }
 
 // Cross-fade quads: NULL outputs, atlases, frames (either), weights, scales, stale; outputs
@@ -1406,54 +1524,538 @@ static void c_fades(void)
     RblUnloadInstanceBuffer(&buf);
 }
 
+// ---- cases: held like raylib (stale copies, raylib's unloads, NULL inside raylib structs) -----------
+// A tiny program of the caller's own (raylib's default vertex stage): what a raylib user loads
+static Shader ownShader(void)
+{
+    static const char *fs330 = "#version 330\nin vec2 fragTexCoord;\nin vec4 fragColor;\nuniform sampler2D texture0;\nuniform vec4 colDiffuse;\nout vec4 finalColor;\nvoid main() { finalColor = texture(texture0, fragTexCoord)*colDiffuse*fragColor; }\n";
+    return LoadShaderFromMemory(NULL, fs330);
+}
+
+// Every header draw of m, one at a time, each refused with one line and nothing changed (a stale or
+// broken Material is never read past its shader: ASan fails the case if it is)
+static void expectEveryDrawRefused(Material m, const char *what)
+{
+    RblBillboard b = billboard();
+    printf("      %s\n", what);
+    expectBillboardRefused(m, b);
+    Mesh cube = GenMeshCube(1, 1, 1);
+    EXPECT_REFUSED(V(RblDrawMesh(cube, m, MatrixIdentity())));
+    Model model = LoadModelFromMesh(cube);
+    Material *own = model.materials;
+    model.materials = &m;
+    model.materialCount = 1;
+    EXPECT_REFUSED(V(RblDrawModel(model, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    model.materials = own;
+    UnloadModel(model);
+    // Inside a shadow pass every material casts through the header's casters: still refused
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f))
+    {
+        EXPECT_REFUSED(V(RblDrawBillboard(camera(), m, b)));
+        RblEndShadowMap(&map);
+    }
+    RblUnloadShadowMap(&map);
+}
+
+static void expectInstancedRefused(Material m)
+{
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(2);
+    RblInstance x = instance();
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    EXPECT_REFUSED(RblDrawInstanced(&buf, camera(), m, d, &x, 1) > 0);
+    RblUnloadInstanceBuffer(&buf);
+}
+
+// A lit Shader copy after each way its program can die (the header's unload, raylib's UnloadShader,
+// raylib's UnloadMaterial), then with nothing loaded since, another lit program loaded (GL hands out
+// the deleted id again) and a raylib shader of the caller's loaded: every draw refuses the copy
+static void c_stale_shader_copies(void)
+{
+    static const char *ways[3] = { "RblUnloadLitShader", "UnloadShader", "UnloadMaterial" };
+    static const char *after[3] = { "nothing loaded since", "another lit program loaded", "a raylib shader loaded" };
+    for (int w = 0; w < 3; w++) for (int a = 0; a < 3; a++) for (int instanced = 0; instanced < 2; instanced++)
+    {
+        Material m = litMaterial(descOf(RBL_BRDF_GGX, instanced == 1, false));
+        Material copy = m;                          // raylib users copy Materials (a Model holds copies)
+        Shader handle = m.shader;
+        if (w == 0) RblUnloadLitShader(&handle);
+        else if (w == 1) UnloadShader(handle);
+        else { m.maps[MATERIAL_MAP_ALBEDO].texture.id = 0; UnloadMaterial(m); }   // the white texture is the fixture's
+        Shader next = { 0 };
+        if (a == 1) next = RblLoadLitShader(descOf(RBL_BRDF_GGX, instanced == 1, false));
+        if (a == 2) next = ownShader();
+        char what[160];
+        snprintf(what, sizeof(what), "%s after %s, %s (%s)", instanced? "instanced" : "forward", ways[w], after[a], (next.id == copy.shader.id)? "same id" : "new id");
+        EXPECT_QUIET(RblIsLitShaderValid(copy.shader), false);
+        if (w == 2) { MaterialMap live[12]; memset(live, 0, sizeof(live)); copy.maps = live; }     // UnloadMaterial freed the copy's maps: point at live ones (the shader alone must refuse)
+        if (instanced) expectInstancedRefused(copy); else expectEveryDrawRefused(copy, what);
+        Shader s = copy.shader;
+        if (w == 0) EXPECT_REFUSED(V(RblUnloadLitShader(&s)));       // double unload of the header's
+        if (a == 1) RblUnloadLitShader(&next);
+        if (a == 2) UnloadShader(next);
+        if (w != 2) MemFree(m.maps);
+    }
+}
+
+// GL drivers hand a deleted program's name to the next program (Mesa does not: its names only grow),
+// so the reuse is staged: the registry and the stale copy are given the name the newer program got,
+// as a reusing driver would have left them, before the header next looks
+typedef unsigned int (*GlCreateProgram)(void);
+typedef void (*GlDeleteProgram)(unsigned int);
+static void c_stale_shader_copies_reused_id(void)
+{
+    GlCreateProgram createProgram; GL_PROC(createProgram, "glCreateProgram");
+    GlDeleteProgram deleteProgram; GL_PROC(deleteProgram, "glDeleteProgram");
+    for (int w = 0; w < 2; w++)
+    {
+        // A raylib shader of the caller's takes the name of a lit program raylib deleted unnoticed
+        Material m = litMaterial(descOf(RBL_BRDF_GGX, false, false));
+        Material copy = m;
+        rbl__Program *entry = rbl__findLit(m.shader.id);
+        if (w == 0) UnloadShader(m.shader); else { m.maps[MATERIAL_MAP_ALBEDO].texture.id = 0; UnloadMaterial(m); }
+        Shader own = ownShader();
+        ck(entry != NULL, "no registry entry for a loaded lit program");
+        if (entry == NULL) continue;
+        entry->shader.id = own.id;          // as if GL had handed the deleted name to the caller's program
+        copy.shader.id = own.id;
+        MaterialMap live[12]; memset(live, 0, sizeof(live)); live[MATERIAL_MAP_ALBEDO].texture = white;
+        if (w == 1) copy.maps = live;
+        expectEveryDrawRefused(copy, (w == 0)? "after UnloadShader, the name reused by a raylib shader" : "after UnloadMaterial, the name reused by a raylib shader");
+        // ... while the caller's own Material with that program draws as raylib would
+        Material mine = material; mine.shader = own;
+        EXPECT_QUIET(V(RblDrawBillboard(camera(), mine, billboard())), false);
+        UnloadShader(own);
+        if (w == 0) MemFree(m.maps);
+    }
+    // A lit load takes the name of a lit program raylib deleted unnoticed: GL's next program name is
+    // found (Mesa: the highest + 1; the loader compiles two shaders first), the dead entry renamed to it
+    Material m = litMaterial(descOf(RBL_BRDF_GGX, false, false));
+    Material copy = m;
+    rbl__Program *entry = rbl__findLit(m.shader.id);
+    UnloadShader(m.shader);
+    unsigned int probe = createProgram();
+    deleteProgram(probe);
+    unsigned int next = probe + 3;
+    if (entry != NULL) entry->shader.id = next;
+    copy.shader.id = next;
+    Shader fresh = RblLoadLitShader(descOf(RBL_BRDF_GGX, false, false));
+    if (fresh.id != next) printf("      (lit reuse not staged: the new program got %u, not %u)\n", fresh.id, next);
+    else
+    {
+        ck(RblIsLitShaderValid(fresh) && !RblIsLitShaderValid(copy.shader), "the reused name: new handle valid %d, stale copy valid %d", RblIsLitShaderValid(fresh), RblIsLitShaderValid(copy.shader));
+        expectEveryDrawRefused(copy, "after UnloadShader, the name reused by a lit load");
+        Material now = material; now.shader = fresh;
+        EXPECT_QUIET(V(RblDrawBillboard(camera(), now, billboard())), false);
+    }
+    ck(fresh.id == next, "GL's next program name was not where Mesa puts it (%u, predicted %u): the lit reuse was not staged", fresh.id, next);
+    RblUnloadLitShader(&fresh);
+    MemFree(m.maps);
+}
+
+// Stale copies of the header's objects whose state address was taken by a newer object: the id,
+// not the pointer, decides (a forged copy with the newer state and the older id is refused)
+static void c_stale_objects_reused_address(void)
+{
+    RblBatch a = RblLoadBatch(4), staleA = a;
+    RblUnloadBatch(&a);
+    RblBatch b = RblLoadBatch(4), forged = b;
+    forged.id = staleA.id;
+    EXPECT_QUIET(RblIsBatchValid(forged), false);
+    EXPECT_REFUSED(RblBeginBatch(&forged, camera()));
+    EXPECT_REFUSED(V(RblUnloadBatch(&forged)));
+    ck(RblIsBatchValid(b), "the newer batch was touched by its forged copy");
+    RblUnloadBatch(&b);
+
+    RblInstanceBuffer ia = RblLoadInstanceBuffer(4), staleI = ia;
+    RblUnloadInstanceBuffer(&ia);
+    RblInstanceBuffer ib = RblLoadInstanceBuffer(4), forgedI = ib;
+    forgedI.id = staleI.id;
+    EXPECT_QUIET(RblIsInstanceBufferValid(forgedI), false);
+    EXPECT_REFUSED(V(RblUnloadInstanceBuffer(&forgedI)));
+    ck(RblIsInstanceBufferValid(ib), "the newer instance buffer was touched by its forged copy");
+    RblUnloadInstanceBuffer(&ib);
+
+    RblGBuffer ga = RblLoadGBuffer(gdesc(RBL_BRDF_GGX)), staleG = ga;
+    RblUnloadGBuffer(&ga);
+    RblGBuffer gb = RblLoadGBuffer(gdesc(RBL_BRDF_GGX)), forgedG = gb;
+    forgedG.id = staleG.id;
+    EXPECT_QUIET(RblIsGBufferValid(&forgedG), false);
+    EXPECT_REFUSED(RblBeginGBuffer(&forgedG, camera()));
+    EXPECT_REFUSED(V(RblUnloadGBuffer(&forgedG)));
+    ck(RblIsGBufferValid(&gb), "the newer G-buffer was touched by its forged copy");
+    RblUnloadGBuffer(&gb);
+
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap ma = RblLoadShadowMap(sd), staleM = ma;
+    RblUnloadShadowMap(&ma);
+    RblShadowMap mb = RblLoadShadowMap(sd), forgedM = mb;
+    forgedM.id = staleM.id;
+    EXPECT_QUIET(RblIsShadowMapValid(forgedM), false);
+    EXPECT_REFUSED(V(RblUnloadShadowMap(&forgedM)));
+    ck(RblIsShadowMapValid(mb), "the newer shadow map was touched by its forged copy");
+    RblUnloadShadowMap(&mb);
+}
+
+// NULL and dead pointers and GL names inside raylib structs: maps, locs, a Model's arrays, textures
+// and meshes unloaded by raylib
+static void c_null_and_dead_inside_raylib_structs(void)
+{
+    Material noMaps = material; noMaps.maps = NULL;
+    expectEveryDrawRefused(noMaps, "maps NULL");
+    Material lit = litMaterial(descOf(RBL_BRDF_LAMBERT, true, false));
+    Material noMapsI = lit; noMapsI.maps = NULL;
+    expectInstancedRefused(noMapsI);
+    Shader own = ownShader();
+    Material noLocs = material; noLocs.shader = own; noLocs.shader.locs = NULL;
+    expectEveryDrawRefused(noLocs, "the caller's shader with locs NULL");
+    Material deadProgram = material; deadProgram.shader = own;
+    UnloadShader(own);
+    expectEveryDrawRefused(deadProgram, "the caller's shader unloaded");
+    // A texture unloaded by raylib, still in the maps (albedo, and a normal map)
+    Texture2D t = solidTexture(WHITE), n = solidTexture(BLUE);
+    MaterialMap maps[12]; memcpy(maps, material.maps, sizeof(maps));
+    Material deadTex = material; deadTex.maps = maps;
+    maps[MATERIAL_MAP_ALBEDO].texture = t;
+    UnloadTexture(t);
+    expectEveryDrawRefused(deadTex, "albedo texture unloaded");
+    maps[MATERIAL_MAP_ALBEDO].texture = white;
+    maps[MATERIAL_MAP_NORMAL].texture = n;
+    UnloadTexture(n);
+    expectEveryDrawRefused(deadTex, "normal texture unloaded");
+    // A Mesh copy whose GPU data raylib unloaded, and one never uploaded
+    Mesh cube = GenMeshCube(1, 1, 1), stale = cube;
+    UnloadMesh(cube);
+    EXPECT_REFUSED(V(RblDrawMesh(stale, material, MatrixIdentity())));
+    Mesh zeroVao = GenMeshCube(1, 1, 1), noVao = zeroVao;
+    noVao.vaoId = 0;
+    EXPECT_REFUSED(V(RblDrawMesh(noVao, material, MatrixIdentity())));
+    UnloadMesh(zeroVao);
+    // A Model with NULL arrays
+    Model model = LoadModelFromMesh(GenMeshCube(1, 1, 1));
+    model.materials[0].shader = litShader;
+    Model m = model; m.meshMaterial = NULL; EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    m = model; m.materials[0].maps = NULL;
+    EXPECT_REFUSED(V(RblDrawModel(m, (Vector3){ 0, 0, 0 }, 1.0f, WHITE)));
+    m.materials[0].maps = model.materials[0].maps;
+    model.materials[0].shader = (Shader){ 0 };
+    UnloadModel(model);
+    MemFree(lit.maps);
+    RblUnloadLitShader(&lit.shader);
+}
+
+// Every count at its limit (accepted) and one past it (refused before any element is read)
+static void c_counts_at_and_past_limits(void)
+{
+    static RblLight lights[RBL_MAX_SCENE_LIGHTS + 1];
+    for (int i = 0; i <= RBL_MAX_SCENE_LIGHTS; i++) lights[i] = pointLight();
+    EXPECT_QUIET(RblLightFeatures(lights, RBL_MAX_SCENE_LIGHTS) == RBL_LIGHT_FEATURE_POINT, true);
+    EXPECT_REFUSED(RblLightFeatures(lights, RBL_MAX_SCENE_LIGHTS + 1) != 0);
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = lights;
+    scene.lightCount = RBL_MAX_SCENE_LIGHTS;
+    EXPECT_QUIET(RblSetScene(&scene), true);
+    scene.lightCount = RBL_MAX_SCENE_LIGHTS + 1;
+    EXPECT_REFUSED(RblSetScene(&scene));
+    RblAtlas a = goodAtlas();
+    static RblSpritePlayer players[RBL_MAX_INSTANCES + 1];
+    static RblInstance inst[RBL_MAX_INSTANCES + 1];
+    for (int i = 0; i <= RBL_MAX_INSTANCES; i++) { players[i] = RblPlaySprite(&a, -1, 0); inst[i] = instance(); }
+    EXPECT_QUIET(RblUpdateSpriteInstances(players, inst, RBL_MAX_INSTANCES, &a, 0.01f, 0.01f) == RBL_MAX_INSTANCES, true);
+    EXPECT_REFUSED(RblUpdateSpriteInstances(players, inst, RBL_MAX_INSTANCES + 1, &a, 0.01f, 0.01f) != 0);
+    Material im = litMaterial(descOf(RBL_BRDF_LAMBERT, true, false));
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(0);
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    for (int i = 0; i <= RBL_MAX_INSTANCES; i++) inst[i] = instance();
+    warnings = 0;
+    int drawn = RblDrawInstanced(&buf, camera(), im, d, inst, RBL_MAX_INSTANCES);
+    ck(drawn == RBL_MAX_INSTANCES && warnings <= 1, "instances at the limit: %d drawn, %d lines", drawn, warnings);   // a growth line is INFO
+    EXPECT_REFUSED(RblDrawInstanced(&buf, camera(), im, d, inst, RBL_MAX_INSTANCES + 1) > 0);
+    RblUnloadInstanceBuffer(&buf);
+    RblUnloadAtlas(&a);
+}
+
+// Material values (maps[].value, colours, params[]) as NaN, +-Inf and values whose products overflow:
+// every draw accepted, and a float target holds only finite colours
+static void c_material_values_every_float(void)
+{
+    RenderTexture2D ft = LoadRenderTexture(16, 16);
+    unsigned int fbo = rlLoadFramebuffer();
+    unsigned int tex = rlLoadTexture(NULL, 16, 16, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
+    rlFramebufferAttach(fbo, tex, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    static const int slots[6] = { MATERIAL_MAP_NORMAL, MATERIAL_MAP_ROUGHNESS, MATERIAL_MAP_METALNESS, MATERIAL_MAP_EMISSION, MATERIAL_MAP_OCCLUSION, MATERIAL_MAP_ALBEDO };
+    for (int brdf = 0; brdf < 3; brdf++)
+    {
+        Material m = litMaterial(descOf(brdf, false, false));
+        m.maps[MATERIAL_MAP_EMISSION].color = WHITE;
+        m.maps[MATERIAL_MAP_SPECULAR].color = WHITE;
+        for (int k = 0; k < 6 + 4; k++) for (int vi = 0; vi < 5; vi++)
+        {
+            Material v = m;
+            MaterialMap maps[12]; memcpy(maps, m.maps, sizeof(maps)); v.maps = maps;
+            if (k < 6) maps[slots[k]].value = badFloats[vi]; else v.params[k - 6] = badFloats[vi];
+            rlEnableFramebuffer(fbo);
+            rlViewport(0, 0, 16, 16);
+            rlClearColor(0, 0, 0, 0); rlClearScreenBuffers();
+            warnings = 0;
+            RblBillboard b = billboard(); b.size = (Vector2){ 4, 4 };
+            RblDrawBillboard(camera(), v, b);
+            rlDrawRenderBatchActive();
+            float *px = rtReadFloatPixels(tex, 16, 16);
+            bool finite = (px != NULL);
+            for (int i = 0; finite && (i < 16*16*4); i++) finite = isfinite(px[i]);
+            free(px);
+            ck(finite && warnings == 0, "brdf %d %s %d = %g: %s, %d lines", brdf, (k < 6)? "maps value" : "params", (k < 6)? slots[k] : k - 6, badFloats[vi], finite? "finite" : "non-finite pixels", warnings);
+        }
+        RblUnloadLitShader(&m.shader);
+        MemFree(m.maps);
+    }
+    rlUnloadFramebuffer(fbo);
+    rlUnloadTexture(tex);
+    BeginTextureMode(target);       // back to the fixture's target (the snapshots compare it)
+    UnloadRenderTexture(ft);
+}
+
+// Directions of any finite length (FIXED up and normal, AXIS axis) give a unit frame; a CAMERA_PLANE
+// up long enough to overflow the quad is refused
+static void c_vertices_long_directions(void)
+{
+    RblCameraFrame f = RblGetCameraFrame(camera());
+    const float longs[4] = { 1e20f, -3e38f, 1e13f, 3.0e38f };
+    for (int i = 0; i < 4; i++) for (int which = 0; which < 3; which++)
+    {
+        RblBillboard b = billboard(), unit = billboard();
+        b.facing = unit.facing = (which < 2)? RBL_FACING_FIXED : RBL_FACING_AXIS;
+        b.axis = unit.axis = (Vector3){ 0.0f, 0.0f, 1.0f };
+        b.up = unit.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+        if (which == 0) { b.up = (Vector3){ 0.0f, longs[i], 0.0f }; unit.up = (Vector3){ 0.0f, (longs[i] > 0)? 1.0f : -1.0f, 0.0f }; }
+        else { b.axis = (Vector3){ 0.0f, 0.0f, longs[i] }; unit.axis = (Vector3){ 0.0f, 0.0f, (longs[i] > 0)? 1.0f : -1.0f }; }
+        if (which == 2) { b.axis = (Vector3){ 0.0f, longs[i], 0.0f }; unit.axis = (Vector3){ 0.0f, (longs[i] > 0)? 1.0f : -1.0f, 0.0f }; }
+        RblVertex out[4], want[4];
+        warnings = 0;
+        bool ok = RblBillboardVertices(&f, 4, 4, &b, out), okUnit = RblBillboardVertices(&f, 4, 4, &unit, want);
+        ck(ok && okUnit && warnings == 0 && memcmp(out, want, sizeof(out)) == 0, "%s %s = %g: %s (the unit vector's frame expected)",
+           (which < 2)? "FIXED" : "AXIS", (which == 0)? "up" : "axis", longs[i], ok? "a different frame" : "refused");
+    }
+    RblBillboard b = billboard();
+    b.up = (Vector3){ 0.0f, 1.5e9f, 0.0f };
+    RblVertex out[4];
+    EXPECT_REFUSED(RblBillboardVertices(&f, 4, 4, &b, out));
+}
+
+// Begin/End of each pass against every other pass, both nesting orders: a batch ends only in the
+// pass it began in; shadow and G-buffer passes refuse each other and their own unloads; a shadow pass
+// or geometry pass inside raylib's BeginTextureMode returns to that target
+static void c_passes_against_passes(void)
+{
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_LAMBERT));
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    RblBillboard b = billboard();
+    Material def = litMaterial(descOf(RBL_BRDF_LAMBERT, false, true));
+    // Batch begun in the colour pass, ended inside a shadow pass / a geometry pass (and back outside)
+    RblBatch batch = RblLoadBatch(4);
+    RblBeginBatch(&batch, camera());
+    RblBatchAdd(&batch, material, &b);
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    EXPECT_REFUSED(RblBatchAdd(&batch, material, &b));
+    EXPECT_REFUSED(V(RblEndBatch(&batch)));
+    EXPECT_REFUSED(V(RblUnloadShadowMap(&map)));                 // its own pass is in progress
+    RblEndShadowMap(&map);
+    ck(RblBeginGBuffer(&g, camera()), "geometry pass refused");
+    EXPECT_REFUSED(V(RblEndBatch(&batch)));
+    EXPECT_REFUSED(V(RblUnloadGBuffer(&g)));                     // its own pass is in progress
+    EXPECT_REFUSED(V(RblResolveGBuffer(&g)));
+    RblEndGBuffer(&g);
+    EXPECT_QUIET(V(RblEndBatch(&batch)), false);                  // back in the colour pass: ends
+    // Batch begun inside a shadow pass, ended after it
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    RblBeginBatch(&batch, camera());
+    RblBatchAdd(&batch, material, &b);
+    EXPECT_REFUSED(V(RblResolveGBuffer(&g)));                    // resolve inside a shadow pass
+    RblEndShadowMap(&map);
+    EXPECT_REFUSED(V(RblEndBatch(&batch)));
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    EXPECT_QUIET(V(RblEndBatch(&batch)), false);                  // in its pass again: ends
+    RblEndShadowMap(&map);
+    // Batch begun inside a geometry pass, ended after it
+    ck(RblBeginGBuffer(&g, camera()), "geometry pass refused");
+    RblBeginBatch(&batch, camera());
+    RblBatchAdd(&batch, def, &b);
+    RblEndGBuffer(&g);
+    EXPECT_REFUSED(V(RblEndBatch(&batch)));
+    ck(RblBeginGBuffer(&g, camera()), "geometry pass refused");
+    EXPECT_QUIET(V(RblEndBatch(&batch)), false);
+    RblEndGBuffer(&g);
+    // Passes inside raylib's BeginTextureMode return to that target
+    RenderTexture2D rt = LoadRenderTexture(24, 24);
+    EndMode3D(); EndTextureMode();
+    BeginTextureMode(rt);
+    int fb = 0; glGetI(0x8CA6, &fb);
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    RblEndShadowMap(&map);
+    int after = 0; glGetI(0x8CA6, &after);
+    ck(after == fb, "shadow pass inside BeginTextureMode left framebuffer %d (was %d)", after, fb);
+    RblGBuffer follow; { RblGBufferDesc d = gdesc(RBL_BRDF_LAMBERT); d.width = d.height = 0; follow = RblLoadGBuffer(d); }
+    ck(RblBeginGBuffer(&follow, camera()), "geometry pass refused");
+    RblEndGBuffer(&follow);
+    glGetI(0x8CA6, &after);
+    ck(after == fb, "geometry pass inside BeginTextureMode left framebuffer %d (was %d)", after, fb);
+    ck(follow.width == 24 && follow.height == 24, "a size-0 G-buffer inside BeginTextureMode(24x24) is %dx%d", follow.width, follow.height);
+    EndTextureMode();
+    BeginTextureMode(target); BeginMode3D(camera());
+    RblUnloadGBuffer(&follow);
+    UnloadRenderTexture(rt);
+    RblUnloadBatch(&batch);
+    RblUnloadGBuffer(&g);
+    RblUnloadShadowMap(&map);
+    RblUnloadLitShader(&def.shader);
+    MemFree(def.maps);
+}
+
+// The scene's own references dying after RblSetScene: a shadow map unloaded (its light draws
+// unshadowed, said once), the depth texture unloaded (soft particles unsoftened, said once), a
+// deferred light pass before any geometry pass (refused)
+static void c_scene_references_die(void)
+{
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    RblEndShadowMap(&map);
+    scene.shadowMaps = &map; scene.shadowMapCount = 1;
+    RblGBufferDesc gd = gdesc(RBL_BRDF_LAMBERT); gd.shadowMaps = 1;
+    RblGBuffer g = RblLoadGBuffer(gd);
+    EXPECT_REFUSED(RblDrawDeferredLights(&g));                   // no geometry pass yet
+    ck(RblSetScene(&scene), "scene refused: %s", lastWarning);
+    RblLitShaderDesc rd = descOf(RBL_BRDF_LAMBERT, false, false); rd.shadowMaps = 1;
+    Material receiver = litMaterial(rd);
+    RblUnloadShadowMap(&map);
+    RblBillboard b = billboard();
+    warnings = 0;
+    RblDrawBillboard(camera(), receiver, b);
+    RblDrawBillboard(camera(), receiver, b);
+    ck(warnings == 1 && strstr(lastWarning, "unloaded after RblSetScene") != NULL, "draws after the scene's map was unloaded: %d lines (%s)", warnings, lastWarning);
+    // The depth texture: refused by RblSetScene when already gone, noted once when it goes later
+    RenderTexture2D st = RblLoadSceneTarget(16, 16);
+    RblScene soft; memset(&soft, 0, sizeof(soft)); soft.lights = &sun; soft.lightCount = 1; soft.depth = st.depth;
+    ck(RblSetScene(&soft), "scene with a depth texture refused: %s", lastWarning);
+    RblLitShaderDesc pd = descOf(RBL_BRDF_LAMBERT, false, false); pd.softParticles = true;
+    Material smoke = litMaterial(pd);
+    UnloadRenderTexture(st);
+    warnings = 0;
+    RblDrawBillboard(camera(), smoke, b);
+    RblDrawBillboard(camera(), smoke, b);
+    ck(warnings == 1 && strstr(lastWarning, "depth texture") != NULL, "draws after the scene's depth was unloaded: %d lines (%s)", warnings, lastWarning);
+    EXPECT_REFUSED(RblSetScene(&soft));
+    RblUnloadGBuffer(&g);
+    RblUnloadLitShader(&receiver.shader); MemFree(receiver.maps);
+    RblUnloadLitShader(&smoke.shader); MemFree(smoke.maps);
+}
+
+// The header's scene target of a plain frame: nested, unbalanced, inside other passes
+static void c_scene_depth(void)
+{
+    EXPECT_REFUSED(V(RblEndSceneDepth()));                       // never begun
+    ck(RblBeginSceneDepth(), "good scene-depth pass refused: %s", lastWarning);
+    EXPECT_REFUSED(RblBeginSceneDepth());                        // nested
+    RblEndSceneDepth();
+    EXPECT_REFUSED(V(RblEndSceneDepth()));                       // twice
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RblLight sun = pointLight(); sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &sun; scene.lightCount = 1;
+    ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
+    EXPECT_REFUSED(RblBeginSceneDepth());
+    RblEndShadowMap(&map);
+    RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_LAMBERT));
+    ck(RblBeginGBuffer(&g, camera()), "geometry pass refused");
+    EXPECT_REFUSED(RblBeginSceneDepth());
+    RblEndGBuffer(&g);
+    RblUnloadGBuffer(&g);
+    RblUnloadShadowMap(&map);
+}
+
 // ---- the case table -----------------------------------------------------------------------------
-typedef struct Case { const char *functions; const char *name; void (*run)(void); } Case;
+typedef struct Case { const char *functions; const char *name; void (*run)(void); const char *classes; } Case;
+
+// The classes of input the suite must cover (each case names the ones it tries)
+static const struct { const char *tag; const char *what; } classTable[] = {
+    { "null", "NULL pointers, zero and never-loaded objects" },
+    { "stale-header", "stale copies after the header's unload, double unloads" },
+    { "stale-raylib", "stale copies after raylib's unload (UnloadShader, UnloadMaterial, UnloadTexture, UnloadMesh, UnloadRenderTexture)" },
+    { "stale-reused", "stale copies whose GL id or state address a newer load took" },
+    { "null-inside", "NULL and dangling pointers inside raylib structs (maps, locs, meshes, materials, boneMatrices)" },
+    { "counts", "every count at its limit and one past" },
+    { "floats", "NaN, +-Inf and overflowing squares/products in every float field (Material values included)" },
+    { "nesting", "Begin/End against every other pass, both orders (batch, G-buffer, shadow map, BeginTextureMode)" },
+    { "variants", "mismatched program variants" },
+    { "scene-refs", "the scene's references dying after RblSetScene" },
+    { "lifetime", "module lifetime (RblClose twice; teardown orders: test_teardown)" },
+};
 #define BARE "(no lit program loaded yet) "
 static const Case cases[] = {
-    { "RblGetCameraFrame", "NaN/Inf/huge in every camera field", c_frame_bad_camera },
-    { "RblGetCameraFrame", "degenerate cameras: no log, orthonormal", c_frame_degenerate_cameras_are_fine },
-    { "RblBillboardVertices", "NULL pointers, sizes, facing", c_vertices_null_and_sizes },
-    { "RblBillboardVertices", "every float field x every facing", c_vertices_every_float_field },
-    { "RblBillboardVertices", "NaN/Inf camera frame", c_vertices_bad_frame },
-    { "RblLoadBatch", "negative and huge capacities", c_batch_load_counts },
-    { "RblIsBatchValid", "zero, loaded, stale", c_batch_valid_queries },
-    { "RblUnloadBatch", "NULL, zero, double, stale", c_batch_unload },
-    { "RblBeginBatch", "NULL, zero, stale, pending, bad camera", c_batch_begin },
-    { "RblBatchAdd", "NULL, not begun, bad floats, bad materials", c_batch_add },
-    { "RblBatchAdd RblLoadBatch", "the billboard limit", c_batch_limit },
-    { "RblEndBatch", "NULL, zero, unbegun, twice, stale", c_batch_end },
-    { "RblDrawBillboard", "bad camera, materials, variants", c_draw_billboard },
-    { "RblClose", "twice", c_close_twice },
-    { "RblLoadInstanceBuffer RblIsInstanceBufferValid RblUnloadInstanceBuffer", "counts, zero, stale, double", c_instances_load },
-    { "RblLoadSceneTarget RblSetScene", "sizes; the scene's depth field", c_scene_target },
-    { "RblDrawInstanced", "NULL, stale, counts, camera, desc, materials, bad instances", c_instances_draw },
-    { "RblDrawInstanced RblDrawBillboard", BARE "zero and raylib-default materials", c_instances_bare },
-    { "RblPackMaterial", "NULL, sizes, formats, encodings, frames", c_pack_material },
-    { "RblUnloadPackedMaterial", "NULL, double", c_unload_packed },
-    { "RblEncodeNormal RblDecodeNormal", "NULL, encodings, NaN/Inf/huge, zero", c_encode_decode_normal },
-    { "RblMeasureNormalEncoding", "NULL, counts, encoding, NaN normal", c_measure_normals },
-    { "RblGenNormalMapFromHeight RblGenHeightFromLuminance RblGenOcclusionFromHeight", "images, strengths, radii", c_gen_maps },
-    { "RblLoadPackedTextures", "NULL, bad images, no maps", c_load_packed_textures },
-    { "RblLoadLitShader", "every desc field out of range", c_load_lit_shader },
-    { "RblIsLitShaderValid", "zero, raylib default, stale", c_lit_shader_queries },
-    { "RblUnloadLitShader", "NULL, zero, default, double, stale", c_unload_lit_shader },
-    { "RblLightFeatures", "NULL, counts, types", c_light_features },
-    { "RblSetScene", "counts, maps, fog, every float of scene and lights", c_set_scene },
-    { "RblDrawModel RblDrawMesh", "bad models, transforms, materials, variants", c_draw_model_and_mesh },
-    { "RblDrawModel RblDrawMesh RblDrawBillboard", "skinned programs: bones NULL, counts, NaN bones, meshes without bone data, shadow pass", c_draw_skinned_model },
-    { "RblLoadGBuffer", "every desc field out of range", c_gbuffer_load },
-    { "RblIsGBufferValid RblGBufferBytesPerPixel RblResizeGBuffer RblUnloadGBuffer", "NULL, zero, sizes, stale, double", c_gbuffer_lifecycle },
-    { "RblBeginGBuffer RblEndGBuffer RblDrawDeferredLights RblSetGBufferOutput RblResolveGBuffer", "imbalance, nesting, mismatched variants, bad arguments", c_gbuffer_passes },
-    { "RblDrawDeferredLights", "extreme accepted lights keep the accumulation finite", c_gbuffer_extreme_lights_stay_finite },
-    { "RblLoadShadowMap RblIsShadowMapValid RblUnloadShadowMap", "sizes, desc floats, zero, stale, double", c_shadow_load },
-    { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes },
-    { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus },
-    { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load },
-    { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle },
-    { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads },
-    { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale, different sheets, empty trims; outputs untouched; equal frames unclipped", c_atlas_fade_quads },
-    { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites },
-    { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades },
+    { "RblGetCameraFrame", "NaN/Inf/huge in every camera field", c_frame_bad_camera, "floats" },
+    { "RblGetCameraFrame", "degenerate cameras: no log, orthonormal", c_frame_degenerate_cameras_are_fine, "floats" },
+    { "RblBillboardVertices", "NULL pointers, sizes, facing", c_vertices_null_and_sizes, "null counts" },
+    { "RblBillboardVertices", "every float field x every facing", c_vertices_every_float_field, "floats" },
+    { "RblBillboardVertices", "NaN/Inf camera frame", c_vertices_bad_frame, "floats" },
+    { "RblLoadBatch", "negative and huge capacities", c_batch_load_counts, "counts" },
+    { "RblIsBatchValid", "zero, loaded, stale", c_batch_valid_queries, "null stale-header" },
+    { "RblUnloadBatch", "NULL, zero, double, stale", c_batch_unload, "null stale-header" },
+    { "RblBeginBatch", "NULL, zero, stale, pending, bad camera", c_batch_begin, "null stale-header nesting floats" },
+    { "RblBatchAdd", "NULL, not begun, bad floats, bad materials", c_batch_add, "null floats variants" },
+    { "RblBatchAdd RblLoadBatch", "the billboard limit", c_batch_limit, "counts" },
+    { "RblEndBatch", "NULL, zero, unbegun, twice, stale", c_batch_end, "null nesting stale-header" },
+    { "RblDrawBillboard", "bad camera, materials, variants", c_draw_billboard, "floats variants" },
+    { "RblClose", "twice", c_close_twice, "lifetime" },
+    { "RblLoadInstanceBuffer RblIsInstanceBufferValid RblUnloadInstanceBuffer", "counts, zero, stale, double", c_instances_load, "counts null stale-header" },
+    { "RblLoadSceneTarget RblSetScene", "sizes; the scene's depth field", c_scene_target, "counts" },
+    { "RblDrawInstanced", "NULL, stale, counts, camera, desc, materials, bad instances", c_instances_draw, "null stale-header counts floats variants" },
+    { "RblDrawInstanced RblDrawBillboard", BARE "zero and raylib-default materials", c_instances_bare, "null variants" },
+    { "RblPackMaterial", "NULL, sizes, formats, encodings, frames", c_pack_material, "null counts" },
+    { "RblUnloadPackedMaterial", "NULL, double", c_unload_packed, "null stale-header" },
+    { "RblEncodeNormal RblDecodeNormal", "NULL, encodings, NaN/Inf/huge, zero", c_encode_decode_normal, "null floats" },
+    { "RblMeasureNormalEncoding", "NULL, counts, encoding, NaN normal", c_measure_normals, "null counts floats" },
+    { "RblGenNormalMapFromHeight RblGenHeightFromLuminance RblGenOcclusionFromHeight", "images, strengths, radii", c_gen_maps, "counts floats" },
+    { "RblLoadPackedTextures", "NULL, bad images, no maps", c_load_packed_textures, "null" },
+    { "RblLoadLitShader", "every desc field out of range", c_load_lit_shader, "counts floats" },
+    { "RblIsLitShaderValid", "zero, raylib default, stale", c_lit_shader_queries, "null stale-header" },
+    { "RblUnloadLitShader", "NULL, zero, default, double, stale", c_unload_lit_shader, "null stale-header stale-raylib" },
+    { "RblLightFeatures", "NULL, counts, types", c_light_features, "null counts" },
+    { "RblSetScene", "counts, maps, fog, every float of scene and lights", c_set_scene, "counts floats" },
+    { "RblDrawModel RblDrawMesh", "bad models, transforms, materials, variants", c_draw_model_and_mesh, "null-inside floats variants" },
+    { "RblDrawModel RblDrawMesh RblDrawBillboard", "skinned programs: bones NULL, counts, NaN bones, meshes without bone data, shadow pass", c_draw_skinned_model, "null-inside counts floats variants" },
+    { "RblLoadGBuffer", "every desc field out of range", c_gbuffer_load, "counts" },
+    { "RblIsGBufferValid RblGBufferBytesPerPixel RblResizeGBuffer RblUnloadGBuffer", "NULL, zero, sizes, stale, double", c_gbuffer_lifecycle, "null stale-header counts" },
+    { "RblBeginGBuffer RblEndGBuffer RblDrawDeferredLights RblSetGBufferOutput RblResolveGBuffer", "imbalance, nesting, mismatched variants, bad arguments", c_gbuffer_passes, "nesting variants" },
+    { "RblDrawDeferredLights", "extreme accepted lights keep the accumulation finite", c_gbuffer_extreme_lights_stay_finite, "floats" },
+    { "RblLoadShadowMap RblIsShadowMapValid RblUnloadShadowMap", "sizes, desc floats, zero, stale, double", c_shadow_load, "counts floats stale-header" },
+    { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes, "null nesting stale-header floats" },
+    { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus, "null floats" },
+    { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load, "null counts" },
+    { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle, "null stale-header" },
+    { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads, "null stale-header" },
+    { "RblAtlasFindSlice RblAtlasSliceBillboard RblAtlasSliceInstance", "NULL, stale, keys, frames, uncovered frames, outside the trim, scales; outputs untouched", c_atlas_slices, "null stale-header counts floats" },
+    { "RblLoadAtlasTextures", "NULL, stale, pages, materials (maps NULL), missing or mis-sized sheets; material untouched", c_atlas_textures, "null null-inside stale-header counts" },
+    { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale, different sheets, empty trims; outputs untouched; equal frames unclipped", c_atlas_fade_quads, "null stale-header" },
+    { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites, "null stale-header counts floats" },
+    { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
+    { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawInstanced RblDrawMesh RblDrawModel RblIsLitShaderValid RblUnloadLitShader", "lit Shader copies after RblUnloadLitShader, UnloadShader, UnloadMaterial; then nothing, a lit load, a raylib load", c_stale_shader_copies, "stale-header stale-raylib stale-reused" },
+    { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawMesh RblDrawModel RblIsLitShaderValid RblLoadLitShader", "lit Shader copies whose GL name a raylib shader or a lit load took (reuse staged)", c_stale_shader_copies_reused_id, "stale-reused stale-raylib" },
+    { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },
+    { "RblDrawBillboard RblBatchAdd RblDrawInstanced RblDrawMesh RblDrawModel", "NULL maps/locs/arrays; shaders, textures and meshes raylib unloaded", c_null_and_dead_inside_raylib_structs, "null-inside stale-raylib" },
+    { "RblLightFeatures RblSetScene RblUpdateSpriteInstances RblDrawInstanced", "every count at its limit and one past", c_counts_at_and_past_limits, "counts" },
+    { "RblDrawBillboard", "Material values (maps[].value, params[]) NaN/Inf/overflowing: finite float output", c_material_values_every_float, "floats" },
+    { "RblBillboardVertices", "FIXED/AXIS directions of any finite length; CAMERA_PLANE up overflowing", c_vertices_long_directions, "floats" },
+    { "RblBeginBatch RblBatchAdd RblEndBatch RblBeginShadowMap RblEndShadowMap RblBeginGBuffer RblEndGBuffer RblResolveGBuffer RblUnloadShadowMap RblUnloadGBuffer", "every pass against every other, both orders; inside BeginTextureMode", c_passes_against_passes, "nesting" },
+    { "RblSetScene RblDrawDeferredLights RblDrawBillboard", "shadow map and depth texture unloaded after RblSetScene; lights before a geometry pass", c_scene_references_die, "scene-refs stale-raylib" },
+    { "RblBeginSceneDepth RblEndSceneDepth", "nested, unbalanced, inside shadow and geometry passes", c_scene_depth, "nesting null" },
 };
 
 // One case in a child process: its own context and fixture, then the matrix stack depth check
@@ -1524,6 +2126,7 @@ int main(int argc, char **argv)
     const int caseCount = (int)(sizeof(cases)/sizeof(cases[0]));
     int passed = 0, failed = 0;
     int fnCases[128] = { 0 }, fnPassed[128] = { 0 };
+    static bool caseOk[256];
     for (int i = 0; i < caseCount; i++)
     {
         if ((filter != NULL) && (strstr(cases[i].functions, filter) == NULL) && (strstr(cases[i].name, filter) == NULL)) continue;
@@ -1537,6 +2140,7 @@ int main(int argc, char **argv)
                           (WEXITSTATUS(status) == 3)? " (no context)" : (WEXITSTATUS(status) == 66)? " (sanitizer report)" : (WEXITSTATUS(status) == 1)? "" : " (abort)";
         printf("  %s  %s: %s%s\n", ok? "ok  " : "FAIL", cases[i].functions, cases[i].name, why);
         if (ok) passed++; else failed++;
+        caseOk[i] = ok;
         for (int f = 0; f < fnCount; f++) if (caseCovers(&cases[i], names[f])) { fnCases[f]++; if (ok) fnPassed[f]++; }
     }
     printf("\n  %-28s %5s %6s\n", "function", "cases", "passed");
@@ -1544,6 +2148,20 @@ int main(int argc, char **argv)
     {
         printf("  %-28s %5d %6d\n", names[f], fnCases[f], fnPassed[f]);
         if ((filter == NULL) && (fnCases[f] == 0)) { printf("  FAIL  %s has no contract case\n", names[f]); failed++; }
+    }
+    printf("\n  %-14s %5s %6s  %s\n", "class", "cases", "passed", "what");
+    for (int k = 0; k < (int)(sizeof(classTable)/sizeof(classTable[0])); k++)
+    {
+        int n = 0, okCount = 0;
+        for (int i = 0; i < caseCount; i++)
+        {
+            if ((filter != NULL) && (strstr(cases[i].functions, filter) == NULL) && (strstr(cases[i].name, filter) == NULL)) continue;
+            Case tagged = cases[i];
+            tagged.functions = cases[i].classes;
+            if (caseCovers(&tagged, classTable[k].tag)) { n++; if (caseOk[i]) okCount++; }
+        }
+        printf("  %-14s %5d %6d  %s\n", classTable[k].tag, n, okCount, classTable[k].what);
+        if ((filter == NULL) && (n == 0)) { printf("  FAIL  class %s has no contract case\n", classTable[k].tag); failed++; }
     }
     printf("contracts: %d passed, %d failed\n", passed, failed);
     return (failed == 0)? 0 : 1;

@@ -70,6 +70,15 @@ int main(int argc, char **argv)
         RT_TEST(test_atlas_bulk_instance_update_equals_the_per_sprite_calls),
         RT_TEST(test_atlas_view_sector_boundaries_for_4_8_16_directions),
         RT_TEST(test_atlas_malformed_input_fails_with_one_line),
+        RT_TEST(test_atlas_phaser3_textures_are_one_page_each_with_its_normal_sheet_and_scale),
+        RT_TEST(test_atlas_sheet_paths_resolve_as_written_then_beside_then_by_the_atlas_name),
+        RT_TEST(test_atlas_meta_scale_as_string_or_number_draws_every_export_at_one_world_size),
+        RT_TEST(test_atlas_zero_negative_fractional_or_non_finite_page_sizes_are_refused),
+        RT_TEST(test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_validated),
+        RT_TEST(test_atlas_libgdx_any_quarter_turn_colon_names_pma_split_and_pad),
+        RT_TEST(test_atlas_aseprite_slices_are_sub_frames_with_their_own_pivots),
+        RT_TEST(test_atlas_frames_without_a_pivot_stand_on_their_position),
+        RT_TEST(test_atlas_premultiplied_pages_pack_mips_as_the_alpha_weighted_mean_kept_premultiplied),
         RT_TEST(test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets),
     };
     SetTraceLogLevel(LOG_WARNING);

@@ -557,7 +557,7 @@ static void test_fade_stream_is_declared_only_with_the_option_and_models_draw_un
 
 
 // Frames of different trims (issue #16): p upright, q stored turned clockwise, r = q upright, on
-// 16x12 canvases (pivot at the centre): p's trim (1,2 10x6), q's and r's (5,1 8x9). The fade quad
+// 16x12 canvases (no pivot stated: the bottom centre): p's trim (1,2 10x6), q's and r's (5,1 8x9). The fade quad
 // covers the union (1,1 12x9); each frame is fetched only inside its own trim
 static const char fadeTrimJson[] =
     "{\"frames\": {"
@@ -584,14 +584,18 @@ static Color fadeTrimCanvas(Image pic, int tx, int ty, int i, int j)
 // Largest rgb difference between the target and the double reference of canvases a (weight 1 - w)
 // and b (w) drawn with alpha blending over a cleared target, no cutoff: mixed alpha A = linear, the
 // colour mixed in linear light by coverage (w a_b / A), stored as encode(colour) x A; nothing where
-// neither frame lies. Canvas pixel (i, j) is target pixel (24 + i, 26 + j) (pivot 8,6 at the centre)
-static int fadeTrimDiff(Image out, Image picA, int ax, int ay, Image picB, int bx, int by, double w)
+// neither frame lies. Canvas pixel (i, j) is target pixel (24 + i, top + j): the card's pivot at the
+// target's centre, FADE_TOP_CENTRED for pivots at the canvas centre (8, 6), FADE_TOP_FEET for the
+// bottom centre (8, 12) frames without a stated pivot stand on
+#define FADE_TOP_CENTRED 26
+#define FADE_TOP_FEET 20
+static int fadeTrimDiff(Image out, Image picA, int ax, int ay, Image picB, int bx, int by, double w, int top)
 {
     int worst = 0;
     for (int y = 0; y < FADE_RT; y++)
         for (int x = 0; x < FADE_RT; x++)
         {
-            int i = x - 24, j = y - 26;
+            int i = x - 24, j = y - top;
             Color ca = fadeTrimCanvas(picA, ax, ay, i, j), cb = fadeTrimCanvas(picB, bx, by, i, j), got = rtPixel(out, x, y);
             double aa = ca.a/255.0, ab = cb.a/255.0, A = (1.0 - w)*aa + w*ab;
             double cover = (A > 0.0)? w*ab/A : 0.0;
@@ -698,14 +702,14 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
                 RT_CHECK(RblAtlasBillboard(&r.atlas, f0, 1.0f, &single[0]) && RblAtlasBillboard(&r.atlas, f1, 1.0f, &single[1]), "single frames");
                 Image only0 = fadeRender(path, plain, &single[0], 1, false, 0), only1 = fadeRender(path, plain, &single[1], 1, false, 0);
                 // The single frames sit on their canvases (the reference's placement holds)
-                RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
+                RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0, FADE_TOP_FEET) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0, FADE_TOP_FEET) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
                 for (int k = 0; k < 6; k++)
                 {
                     RblBillboard card;
                     memset(&card, 0, sizeof(card));
                     RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card), "fade card");
                     Image out = fadeRender(path, fade, &card, 1, true, 0);
-                    int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k]);
+                    int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k], FADE_TOP_FEET);
                     int got = (k == 0)? vs0 : ((k == 1)? vs1 : ref), limit = (k < 2)? 0 : 1;
                     printf("    %-9s %s pair %d (%s -> %s)  weight %-9.7g  vs first %3d  vs second %3d  vs double reference %3d\n", fadePathName[path], gdx? "libGDX" : "TP", pr,
                            (f0 == fq)? "rotated" : "upright", (f1 == fq)? "rotated" : "upright", weights[k], vs0, vs1, ref);
@@ -811,7 +815,7 @@ static void test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirror
                 RT_CHECK(RblAtlasBillboardFade(&r.atlas, f[0], f[1], weights[wi], 1.0f, &card), "fade card");
                 Image out = fadeRender(path, fade, &card, 1, true, 0);
                 // fadeTrimDiff places canvas pixel (i, j) at target (24 + i, 26 + j): the pivots at the centre
-                int ref = fadeTrimDiff(out, pic[0], x[0], y[0], pic[1], x[1], y[1], weights[wi]);
+                int ref = fadeTrimDiff(out, pic[0], x[0], y[0], pic[1], x[1], y[1], weights[wi], FADE_TOP_CENTRED);
                 int left = (int)lroundf(FADE_RT/2 - card.origin.x), right = left + (int)lroundf(card.size.x);
                 card.size.x = -card.size.x;
                 Image mirrored = fadeRender(path, fade, &card, 1, true, 0);
@@ -894,7 +898,7 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
         for (int y = 0; y < FADE_RT; y++)
             for (int x = 0; x < FADE_RT; x++)
             {
-                Color ca = fadeTrimCanvas(picP, 1, 2, x - 24, y - 26), cb = fadeTrimCanvas(picQ, 5, 1, x - 24, y - 26), got = rtPixel(img[4], x, y);
+                Color ca = fadeTrimCanvas(picP, 1, 2, x - 24, y - FADE_TOP_FEET), cb = fadeTrimCanvas(picQ, 5, 1, x - 24, y - FADE_TOP_FEET), got = rtPixel(img[4], x, y);
                 if ((ca.a == 0) && (cb.a == 0)) { if (got.a != 0 || got.r != 0 || got.g != 0 || got.b != 0) none++; continue; }
                 if ((ca.a == 0) || (cb.a == 0)) continue;
                 const unsigned char pc[3] = { ca.r, ca.g, ca.b }, qc[3] = { cb.r, cb.g, cb.b }, gc[3] = { got.r, got.g, got.b };

@@ -506,11 +506,13 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     state.capacity = COUNT;
     state.runs = (rbl__BatchRun *)malloc(16*sizeof(rbl__BatchRun));
     state.runCapacity = 16;
-    RT_CHECK((state.vertices != NULL) && (state.runs != NULL) && rbl__liveAdd(&state), "out of memory");
+    unsigned int stateId = rbl__liveAdd(&state);
+    RT_CHECK((state.vertices != NULL) && (state.runs != NULL) && (stateId != 0), "out of memory");
     if ((state.vertices == NULL) || (state.runs == NULL)) { free(state.vertices); free(state.runs); return; }
     RblBatch batch;
     memset(&batch, 0, sizeof(batch));
     batch.state = &state;
+    batch.id = stateId;
     batch.capacity = COUNT;
     // A material with a user's own shader (any non-zero program that is not the header's): accepted
     int locs[32];
@@ -519,6 +521,9 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     memset(&material, 0, sizeof(material));
     material.shader.id = 1;
     material.shader.locs = locs;
+    MaterialMap maps[12];
+    memset(maps, 0, sizeof(maps));
+    material.maps = maps;
 
     // Runs of repeated ups, a -0 up (a different key, the same frame), zero up, other modes between
     const Vector3 ups[5] = { { 0, 1, 0 }, { 0.3f, 2.0f, -0.1f }, { -0.0f, 1, 0 }, { 0, 0, 0 }, { 1e-3f, 1, 0 } };
@@ -554,7 +559,7 @@ static void test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboard
     RT_CHECK(last->facing == RBL_FACING_CAMERA_PLANE, "the last billboard should be CAMERA_PLANE");
     RT_CHECK(memcmp(alone, state.vertices, sizeof(alone)) == 0, "the frame kept from the previous camera was reused");
     RblEndBatch(&batch);     // no GPU buffer: draws nothing, must not crash
-    rbl__liveRemove(&state);
+    rbl__liveRemove(stateId);
     free(state.vertices);
     free(state.runs);
 }

@@ -469,10 +469,10 @@ static void test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float
 static int instancedRegistryEntries(unsigned int id, int *instancingLoc)
 {
     int n = 0;
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; i < rbl__state.programCount; i++)
     {
-        const rbl__Program *p = &rbl__state.programs[i];
-        if ((p->refs > 0) && (p->shader.id == id)) { n++; if (instancingLoc != NULL) *instancingLoc = p->loc[RBL__U_INSTANCING]; }
+        const rbl__Program *p = rbl__state.programs[i];
+        if (p->shader.id == id) { n++; if (instancingLoc != NULL) *instancingLoc = p->loc[RBL__U_INSTANCING]; }
     }
     return n;
 }

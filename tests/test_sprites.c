@@ -281,6 +281,20 @@ static void test_sprites_instanced_sort_draws_alike_in_any_array_order(void)
     UnloadTexture(glass);
 }
 
+// A soft-particle material: white, never cut (faded texels blend to nothing), fade distance 0.5
+static Material sprSoftPuff(Texture2D white)
+{
+    RblLitShaderDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.softParticles = true;
+    Material puff = LoadMaterialDefault();
+    puff.shader = RblLoadLitShader(sd);
+    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
+    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    return puff;
+}
+
 // Centre pixel of a white soft card `delta` in front of the plane z = 0, drawn alone over black into out
 static Color sprSoftCentre(Camera3D cam, Material puff, RenderTexture2D out, float delta)
 {
@@ -304,14 +318,7 @@ static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void
 {
     Texture2D white = solidTexture(WHITE);
     Material wall = sprMaterial(white, 0.0f);
-    RblLitShaderDesc sd;
-    memset(&sd, 0, sizeof(sd));
-    sd.softParticles = true;
-    Material puff = LoadMaterialDefault();
-    puff.shader = RblLoadLitShader(sd);
-    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;           // never cut: faded texels blend to nothing
-    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    Material puff = sprSoftPuff(white);
     RT_CHECK(RblIsLitShaderValid(puff.shader), "soft variant did not compile");
     RenderTexture2D sceneTarget = RblLoadSceneTarget(SPR_TARGET, SPR_TARGET);
     RT_CHECK(sceneTarget.id != 0 && sceneTarget.depth.id != 0, "scene target refused");
@@ -352,12 +359,71 @@ static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void
         UnloadRenderTexture(out);
     }
     printf("    soft particles: worst |centre - 255*clamp(delta/0.5)| %.1f/255 over 7 distances x 2 projections\n", worst);
-    RblLitShaderDesc bad = sd;
+    RblLitShaderDesc bad;
+    memset(&bad, 0, sizeof(bad));
+    bad.softParticles = true;
     bad.deferred = true;
     warnings = 0;
     Shader refused = RblLoadLitShader(bad);
     RT_CHECK((refused.id == 0) && (warnings == 1), "soft G-buffer variant: id %u, %d log lines", refused.id, warnings);
     UnloadRenderTexture(sceneTarget);
+    sprUnloadMaterial(&wall);
+    sprUnloadMaterial(&puff);
+    UnloadTexture(white);
+}
+
+// Soft particles in a plain raylib frame: the opaque wall between RblBeginSceneDepth and
+// RblEndSceneDepth (two added lines), then the soft card drawn as usual. The card fades by its
+// distance to the wall as over a RblLoadSceneTarget (255*clamp(delta/0.5)); the world's depth reached
+// the target (a card behind the wall is hidden); the background shows where the world drew nothing;
+// the scene target follows targets of other sizes
+static void test_sprites_soft_particles_in_a_plain_frame_with_two_added_lines(void)
+{
+    Texture2D white = solidTexture(WHITE);
+    Material wall = sprMaterial(white, 0.0f);
+    wall.maps[MATERIAL_MAP_ALBEDO].color = (Color){ 0, 0, 255, 255 };
+    Material puff = sprSoftPuff(white);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
+    const float deltas[6] = { -0.2f, 0.0f, 0.1f, 0.25f, 0.4f, 0.8f };
+    const int sizes[3] = { SPR_TARGET, 48, 80 };
+    double worst = 0.0;
+    for (int si = 0; si < 3; si++)
+    for (int ortho = 0; ortho < 2; ortho++)
+    {
+        Camera3D cam = sprCamera();
+        if (ortho) { cam.projection = CAMERA_ORTHOGRAPHIC; cam.fovy = 3.0f; }
+        RenderTexture2D screen = LoadRenderTexture(sizes[si], sizes[si]);     // stands for the window
+        for (int k = 0; k < 6; k++)
+        {
+            BeginTextureMode(screen);
+            ClearBackground(RED);
+            warnings = 0;
+            bool began = RblBeginSceneDepth();
+            BeginMode3D(cam);
+            RblBillboard w = sprCard(0.0f, 0.0f);
+            w.size = (Vector2){ 2.0f, 2.0f }; w.origin = (Vector2){ 1.0f, 1.0f };      // leaves red corners
+            RblDrawBillboard(cam, wall, w);
+            EndMode3D();
+            RblEndSceneDepth();
+            BeginMode3D(cam);
+            RblDrawBillboard(cam, puff, sprCard(deltas[k], 0.0f));
+            EndMode3D();
+            EndTextureMode();
+            RT_CHECK(began && warnings == 0, "size %d: RblBeginSceneDepth %d, %d lines (%s)", sizes[si], began, warnings, lastWarning);
+            Image img = rtReadTarget(screen);
+            Color c = rtPixel(img, sizes[si]/2, sizes[si]/2), corner = rtPixel(img, 1, 1);
+            UnloadImage(img);
+            // Over the blue wall: white*fade + blue*(1 - fade) in red; behind the wall (delta < 0): the wall
+            double fade = fmin(fmax(deltas[k]/0.5, 0.0), 1.0), want = 255.0*fade;
+            worst = fmax(worst, fabs(c.r - want));
+            RT_CHECK(fabs(c.r - want) <= 2.0 && c.b >= 253, "size %d %s, card %.2f in front: centre (%d,%d,%d), red expected %.1f over blue",
+                     sizes[si], ortho? "ortho" : "persp", deltas[k], c.r, c.g, c.b, want);
+            RT_CHECK(corner.r == RED.r && corner.g == RED.g && corner.b == RED.b, "size %d: the target's background under no world should show (%d,%d,%d)", sizes[si], corner.r, corner.g, corner.b);
+        }
+        RT_CHECK(rbl__state.capture.target.texture.width == sizes[si], "the scene target is %d wide for a %d target", rbl__state.capture.target.texture.width, sizes[si]);
+        UnloadRenderTexture(screen);
+    }
+    printf("    two-line frame: worst |centre - 255*clamp(delta/0.5)| %.1f/255 over 6 distances x 2 projections x 3 target sizes\n", worst);
     sprUnloadMaterial(&wall);
     sprUnloadMaterial(&puff);
     UnloadTexture(white);
@@ -415,14 +481,7 @@ static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
     Material wall = LoadMaterialDefault();
     wall.shader = RblLoadLitShader(geoDesc);
     wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    RblLitShaderDesc sd;
-    memset(&sd, 0, sizeof(sd));
-    sd.softParticles = true;
-    Material puff = LoadMaterialDefault();
-    puff.shader = RblLoadLitShader(sd);
-    puff.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    puff.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;
-    puff.params[RBL_PARAM_SOFT_DISTANCE] = 0.5f;
+    Material puff = sprSoftPuff(white);
     RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
     Camera3D cam = sprCamera();
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");

@@ -91,6 +91,7 @@ static GLu tfProgram(TfGl *gl)
 // Shadow-pass fields of the captured frame (zero: a colour pass); the shadow tests set them
 static Vector4 tfLight;
 static float tfMinCastSin;
+static float tfOrthographic;        // 1: the frame of an orthographic camera (set by the orthographic tests)
 
 // Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
 static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
@@ -104,7 +105,7 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
     const float frame[28] = {
         view.eye.x, view.eye.y, view.eye.z, (float)d.facing, view.right.x, view.right.y, view.right.z, d.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW, view.back.x, view.back.y, view.back.z, (float)texH,
-        d.up.x, d.up.y, d.up.z, tfMinCastSin, d.axis.x, d.axis.y, d.axis.z, 0.0f, tfLight.x, tfLight.y, tfLight.z, tfLight.w };
+        d.up.x, d.up.y, d.up.z, tfMinCastSin, d.axis.x, d.axis.y, d.axis.z, tfOrthographic, tfLight.x, tfLight.y, tfLight.z, tfLight.w };
     rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 7);
 
     size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);

@@ -288,10 +288,9 @@ static void CountRegistry(BenchApiResult *r)
 {
     unsigned int ids[RBL_SHADER_CACHE_SIZE];
     r->programs = r->lit = r->caster = r->pass = 0;
-    for (int i = 0; i < RBL_SHADER_CACHE_SIZE; i++)
+    for (int i = 0; (i < rbl__state.programCount) && (i < RBL_SHADER_CACHE_SIZE); i++)
     {
-        const rbl__Program *p = &rbl__state.programs[i];
-        if (p->refs <= 0) continue;
+        const rbl__Program *p = rbl__state.programs[i];
         if (p->key.kind == RBL__KIND_LIT) r->lit++;
         else if (p->key.kind == RBL__KIND_CASTER) r->caster++;
         else r->pass++;

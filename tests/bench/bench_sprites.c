@@ -2,6 +2,16 @@
 //   import_<format>_<N>frames   ms_per_1000_frames   RblLoadAtlasFromMemory of a generated text of N frames
 //                                                    (TexturePacker hash, Aseprite array with a tag per 8
 //                                                    frames, libGDX old form with indexed regions)
+//   import_<form>_4096frames    ms_per_1000_frames   the forms issue #28 added, each beside the plain TexturePacker hash text
+//                               over_texturepacker   (interleaved over 15 rounds, median of the per-round ratios): phaser3
+//                                                    (4 textures[] pages with normalMap and scale), polygon (8 vertices,
+//                                                    6 triangles a frame), aseprite_slices (64 slices, a key every 64
+//                                                    frames, pivots and centers), libgdx_new (compact form, rotate 270/180,
+//                                                    split, pad, index)
+//   import_phaser3_file         file_over_memory     RblLoadAtlas of the Phaser 3 text (4 sheets and 4 normal sheets looked
+//                                                    for on disk) over RblLoadAtlasFromMemory of the same text, interleaved
+//   slice_billboard_10000       ns_per_call          RblAtlasSliceBillboard (clipped sub-frame) beside RblAtlasBillboard
+//                               over_frame           of the same frames; ratio (best of 20 each)
 //   update_<N>                  ns_per_sprite        RblUpdateSprite over N players (pingpong tags, 1/60 s)
 //   instanced_<N>               cpu_ns_per_instance  plain: RblDrawInstanced of a filled array; animated: per
 //                                                    instance RblUpdateSprite + RblAtlasInstance, then the same
@@ -76,6 +86,91 @@ static Text makeText(int format, int frames)
         }
         put(&t, " ] } }\n");
     }
+    return t;
+}
+
+// The forms of issue #28, 4096 frames each
+enum { FORM_PHASER3 = 0, FORM_POLYGON, FORM_SLICES, FORM_GDX_NEW, FORM_COUNT };
+static const char *const formNames[FORM_COUNT] = { "phaser3", "polygon", "aseprite_slices", "libgdx_new" };
+static Text makeFormText(int form, int frames)
+{
+    Text t = { NULL, 0, 0 };
+    char line[768];
+    if (form == FORM_GDX_NEW)
+    {
+        put(&t, "sheet.png\nsize:4096,4096\nformat:RGBA8888\nfilter:Nearest,Nearest\nrepeat:none\npma:true\n");
+        for (int i = 0; i < frames; i++)
+        {
+            snprintf(line, sizeof(line), "ui:walk_%d\nbounds:%d,%d,30,40\noffsets:1,2,32,48\nrotate:%s\nsplit:2,3,4,5\npad:1,1,1,1\nindex:%d\n",
+                     i/8, (i%64)*64, (i/64)*48, (i%3 == 0)? "270" : ((i%3 == 1)? "180" : "false"), i%8);
+            put(&t, line);
+        }
+        return t;
+    }
+    if (form == FORM_PHASER3)
+    {
+        put(&t, "{\"textures\": [\n");
+        for (int p = 0; p < 4; p++)
+        {
+            snprintf(line, sizeof(line), "%s{\"image\": \"sheet-%d.png\", \"normalMap\": \"sheet-%d_n.png\", \"format\": \"RGBA8888\", \"size\": {\"w\":4096,\"h\":4096}, \"scale\": 0.5, \"frames\": [\n",
+                     (p > 0)? "]},\n" : "", p, p);
+            put(&t, line);
+            for (int i = p*frames/4; i < (p + 1)*frames/4; i++)
+            {
+                snprintf(line, sizeof(line), "%s{\"filename\": \"frame_%05d.png\", \"frame\": {\"x\":%d,\"y\":%d,\"w\":30,\"h\":40}, \"rotated\": %s, \"trimmed\": true,"
+                         " \"spriteSourceSize\": {\"x\":1,\"y\":2,\"w\":30,\"h\":40}, \"sourceSize\": {\"w\":32,\"h\":48}, \"pivot\": {\"x\":0.5,\"y\":1}}\n",
+                         (i > p*frames/4)? "," : "", i, (i%64)*64, ((i%1024)/64)*48, (i%3 == 0)? "true" : "false");
+                put(&t, line);
+            }
+        }
+        put(&t, "]}],\n\"meta\": {\"app\": \"https://www.codeandweb.com/texturepacker\", \"version\": \"3.0\", \"scale\": \"1\"}}\n");
+        return t;
+    }
+    if (form == FORM_POLYGON)
+    {
+        put(&t, "{\"frames\": {\n");
+        for (int i = 0; i < frames; i++)
+        {
+            int x = (i%64)*64, y = (i/64)*48;      // upright 30x40 at (1, 2) of 32x48: an octagon inside the trim
+            snprintf(line, sizeof(line), "%s\"frame_%05d.png\": {\"frame\": {\"x\":%d,\"y\":%d,\"w\":30,\"h\":40}, \"rotated\": false, \"trimmed\": true,"
+                     " \"spriteSourceSize\": {\"x\":1,\"y\":2,\"w\":30,\"h\":40}, \"sourceSize\": {\"w\":32,\"h\":48}, \"pivot\": {\"x\":0.5,\"y\":1},"
+                     " \"vertices\": [[9,2],[23,2],[31,12],[31,32],[23,42],[9,42],[1,32],[1,12]],"
+                     " \"verticesUV\": [[%d,%d],[%d,%d],[%d,%d],[%d,%d],[%d,%d],[%d,%d],[%d,%d],[%d,%d]],"
+                     " \"triangles\": [[0,1,2],[0,2,3],[0,3,4],[0,4,5],[0,5,6],[0,6,7]]}\n",
+                     (i > 0)? "," : "", i, x, y, x + 8, y, x + 22, y, x + 30, y + 10, x + 30, y + 30, x + 22, y + 40, x + 8, y + 40, x, y + 30, x, y + 10);
+            put(&t, line);
+        }
+        put(&t, "},\n\"meta\": {\"app\": \"https://www.codeandweb.com/texturepacker\", \"image\": \"s.png\", \"size\": {\"w\":4096,\"h\":4096}, \"scale\": \"1\"}}\n");
+        return t;
+    }
+    // Aseprite with slices: the array frames and tags of makeText, plus 64 slices keyed every 64 frames
+    put(&t, "{ \"frames\": [\n");
+    for (int i = 0; i < frames; i++)
+    {
+        snprintf(line, sizeof(line), "%s { \"filename\": \"walk_%d %d.aseprite\", \"frame\": { \"x\": %d, \"y\": %d, \"w\": 30, \"h\": 40 }, \"rotated\": false, \"trimmed\": true,"
+                 " \"spriteSourceSize\": { \"x\": 1, \"y\": 2, \"w\": 30, \"h\": 40 }, \"sourceSize\": { \"w\": 32, \"h\": 48 }, \"duration\": 100 }\n", (i > 0)? "," : "", i/8, i, (i%64)*64, (i/64)*48);
+        put(&t, line);
+    }
+    put(&t, "],\n\"meta\": { \"app\": \"http://www.aseprite.org/\", \"image\": \"s.png\", \"size\": { \"w\": 4096, \"h\": 4096 }, \"frameTags\": [\n");
+    for (int g = 0; g < frames/8; g++)
+    {
+        snprintf(line, sizeof(line), "%s  { \"name\": \"walk_%d\", \"from\": %d, \"to\": %d, \"direction\": \"pingpong\" }\n", (g > 0)? "," : "", g, g*8, g*8 + 7);
+        put(&t, line);
+    }
+    put(&t, " ], \"slices\": [\n");
+    for (int sl = 0; sl < 64; sl++)
+    {
+        snprintf(line, sizeof(line), "%s  { \"name\": \"part_%d\", \"color\": \"#0000ffff\", \"keys\": [", (sl > 0)? "," : "", sl);
+        put(&t, line);
+        for (int k = 0; k < frames/64; k++)
+        {
+            snprintf(line, sizeof(line), "%s{ \"frame\": %d, \"bounds\": { \"x\": %d, \"y\": %d, \"w\": 8, \"h\": 8 }, \"center\": { \"x\": 2, \"y\": 2, \"w\": 4, \"h\": 4 }, \"pivot\": { \"x\": 4, \"y\": 8 } }",
+                     (k > 0)? "," : "", k*64, (sl%4)*8, (sl/4)*2);
+            put(&t, line);
+        }
+        put(&t, "] }\n");
+    }
+    put(&t, " ] } }\n");
     return t;
 }
 
@@ -346,6 +441,92 @@ int main(void)
         BenchCsvRow("sprites", name, "ms_per_1000_frames", med/1e6*1000.0/frames, "ms");
         if (formats[f] == RBL_ATLAS_ASEPRITE) anim = RblLoadAtlasFromMemory(c.text.text, c.text.size, formats[f]);
         free(c.text.text);
+    }
+    // the new forms beside the plain TexturePacker hash text, interleaved (median of per-round ratios)
+    {
+        enum { ROUNDS = 15 };
+        const int frames = 4096;
+        Text plain = makeText(RBL_ATLAS_TEXTUREPACKER, frames);
+        for (int form = 0; form < FORM_COUNT; form++)
+        {
+            Text t = makeFormText(form, frames);
+            double ms[2][ROUNDS], ratio[ROUNDS];
+            for (int r = 0; r < ROUNDS + 2; r++)
+            {
+                double v[2];
+                for (int k = 0; k < 2; k++)
+                {
+                    const Text *x = (k == 0)? &plain : &t;
+                    double t0 = BenchNowNs();
+                    RblAtlas a = RblLoadAtlasFromMemory(x->text, x->size, RBL_ATLAS_AUTO);
+                    v[k] = BenchNowNs() - t0;
+                    if (!RblIsAtlasValid(&a) || (a.frameCount != frames)) { printf("bench_sprites: generated %s atlas refused\n", (k == 0)? "plain" : formNames[form]); exit(1); }
+                    RblUnloadAtlas(&a);
+                }
+                if (r < 2) continue;        // warm-up
+                ms[0][r - 2] = v[0]/1e6*1000.0/frames; ms[1][r - 2] = v[1]/1e6*1000.0/frames; ratio[r - 2] = v[1]/v[0];
+            }
+            double base = BenchMedian(ms[0], ROUNDS), mine = BenchMedian(ms[1], ROUNDS), over = BenchMedian(ratio, ROUNDS);
+            char name[64]; snprintf(name, sizeof(name), "import_%s_%dframes", formNames[form], frames);
+            printf("  %-34s %8.3f ms per 1000 frames (%.1f KiB text), %.2fx the plain TexturePacker text (%.3f ms)\n", name, mine, t.size/1024.0, over, base);
+            BenchCsvRow("sprites", name, "ms_per_1000_frames", mine, "ms");
+            BenchCsvRow("sprites", name, "over_texturepacker", over, "x");
+            if (form == FORM_PHASER3)
+            {
+                // the same text from a file: each textures[] image and normalMap looked for on disk
+                MakeDirectory("build/bench/atlas");
+                Image one = GenImageColor(1, 1, WHITE);
+                for (int p = 0; p < 4; p++)
+                {
+                    char path[64];
+                    snprintf(path, sizeof(path), "build/bench/atlas/sheet-%d.png", p); ExportImage(one, path);
+                    snprintf(path, sizeof(path), "build/bench/atlas/sheet-%d_n.png", p); ExportImage(one, path);
+                }
+                UnloadImage(one);
+                SaveFileData("build/bench/atlas/phaser3.json", t.text, t.size);
+                double fr[ROUNDS];
+                for (int r = 0; r < ROUNDS + 2; r++)
+                {
+                    double t0 = BenchNowNs();
+                    RblAtlas a = RblLoadAtlasFromMemory(t.text, t.size, RBL_ATLAS_AUTO);
+                    double mem = BenchNowNs() - t0;
+                    RblUnloadAtlas(&a);
+                    t0 = BenchNowNs();
+                    a = RblLoadAtlas("build/bench/atlas/phaser3.json");
+                    double file = BenchNowNs() - t0;
+                    if (!RblIsAtlasValid(&a) || (a.pages[3].normalImage == NULL)) { printf("bench_sprites: Phaser 3 file refused\n"); exit(1); }
+                    RblUnloadAtlas(&a);
+                    if (r >= 2) fr[r - 2] = file/mem;
+                }
+                double fileOver = BenchMedian(fr, ROUNDS);
+                printf("  %-34s %8.2fx from memory (8 sheets looked for; includes reading the file)\n", "import_phaser3_file", fileOver);
+                BenchCsvRow("sprites", "import_phaser3_file", "file_over_memory", fileOver, "x");
+            }
+            free(t.text);
+        }
+        // a slice's sub-frame beside the frame's own quad (best of 20 each)
+        Text st = makeFormText(FORM_SLICES, frames);
+        RblAtlas sa = RblLoadAtlasFromMemory(st.text, st.size, RBL_ATLAS_AUTO);
+        free(st.text);
+        static int keyOf[10000];
+        for (int i = 0; i < 10000; i++) keyOf[i] = RblAtlasFindSlice(&sa, "part_5", i%frames);
+        double best[2] = { 1e30, 1e30 };
+        RblBillboard bb; memset(&bb, 0, sizeof(bb));
+        for (int r = 0; r < 20; r++)
+            for (int k = 0; k < 2; k++)
+            {
+                double t0 = BenchNowNs();
+                if (k == 0) for (int i = 0; i < 10000; i++) RblAtlasBillboard(&sa, i%frames, 0.02f, &bb);
+                else for (int i = 0; i < 10000; i++) RblAtlasSliceBillboard(&sa, keyOf[i], i%frames, 0.02f, &bb);
+                double ns = (BenchNowNs() - t0)/10000.0;
+                if (ns < best[k]) best[k] = ns;
+            }
+        printf("  %-34s %8.1f ns per call (RblAtlasBillboard %.1f ns: %.2fx)\n", "slice_billboard_10000", best[1], best[0], best[1]/best[0]);
+        BenchCsvRow("sprites", "slice_billboard_10000", "ns_per_call", best[1], "ns");
+        BenchCsvRow("sprites", "frame_billboard_10000", "ns_per_call", best[0], "ns");
+        BenchCsvRow("sprites", "slice_billboard_10000", "over_frame", best[1]/best[0], "x");
+        RblUnloadAtlas(&sa);
+        free(plain.text);
     }
     // players spread over the tags and phases
     static const int counts[2] = { 10000, 100000 };

@@ -3,7 +3,9 @@
 // clang -fsanitize=fuzzer,address,undefined; `make test` runs each for a bounded time over
 // tests/fuzz/corpus/<format>/ (hand-written seeds). Beyond the sanitizers, it aborts when a refused
 // input does not log exactly one line, or an accepted one yields a frame table whose frames, tags or
-// billboard fields break the documented invariants, or the player leaves its tag.
+// billboard fields break the documented invariants (pages, polygons, 9-slice centres, slice keys and
+// their sub-frames among them), or the player leaves its tag. LOG_INFO lines (what an accepted atlas
+// leaves unread) are at most one per load, and never on a refusal.
 // Built in two parts so the header's implementation is instrumented once for the three targets:
 // -DFUZZ_IMPL compiles only the implementation; the targets include the declarations.
 #if defined(FUZZ_IMPL)
@@ -22,11 +24,12 @@
     #define FUZZ_FORMAT RBL_ATLAS_AUTO
 #endif
 
-static int lines = 0;
+static int lines = 0, infoLines = 0;
 static void countLog(int level, const char *text, va_list args)
 {
-    (void)level; (void)args;
-    if (strncmp(text, "RBL:", 4) == 0) lines++;
+    (void)args;
+    if (strncmp(text, "RBL:", 4) != 0) return;
+    if (level >= LOG_WARNING) lines++; else infoLines++;
 }
 
 static void expect(bool ok, const char *what)
@@ -37,10 +40,17 @@ static void expect(bool ok, const char *what)
 }
 
 static bool finiteRect(Rectangle r) { return isfinite(r.x) && isfinite(r.y) && isfinite(r.width) && isfinite(r.height); }
+static bool inside(Vector2 p, float x, float y, float w, float h) { return (p.x >= x) && (p.y >= y) && (p.x <= x + w) && (p.y <= y + h); }
 
 static void check(const RblAtlas *a)
 {
     expect(a->frameCount > 0 && a->pageCount > 0, "empty table accepted");
+    for (int p = 0; p < a->pageCount; p++)
+    {
+        const RblAtlasPage *g = &a->pages[p];
+        expect(g->image != NULL && g->width >= 0 && g->height >= 0 && (g->width > 0) == (g->height > 0), "page image/size");
+        expect(isfinite(g->scale) && g->scale >= 1.0f/65536.0f && g->scale <= 65536.0f, "page scale");
+    }
     for (int i = 0; i < a->frameCount; i++)
     {
         const RblAtlasFrame *f = &a->frames[i];
@@ -54,6 +64,16 @@ static void check(const RblAtlas *a)
         expect(RblAtlasBillboard(a, i, 0.01f, &b), "billboard refused");
         expect(finiteRect(b.source) && isfinite(b.size.x) && isfinite(b.size.y) && isfinite(b.origin.x) && isfinite(b.origin.y) && b.size.x > 0 && b.size.y > 0, "billboard fields");
         expect(strlen(f->name) < (1u << 20), "name");   // a C string inside the text's bound
+        const Rectangle c = f->center;
+        expect(finiteRect(c) && c.x >= 0 && c.y >= 0 && c.width >= 0 && c.height >= 0 && c.x + c.width <= f->size.x && c.y + c.height <= f->size.y, "9-slice centre outside the frame");
+        const RblAtlasPolygon *poly = f->polygon;
+        if (poly != NULL)
+        {
+            expect(poly->vertexCount >= 3 && poly->vertexCount <= 65535 && poly->indexCount >= 3 && poly->indexCount%3 == 0, "polygon counts");
+            for (int v = 0; v < poly->vertexCount; v++)
+                expect(inside(poly->vertices[v], 0, 0, f->size.x, f->size.y) && inside(poly->uvs[v], f->block.x, f->block.y, f->block.width, f->block.height), "polygon point outside its frame");
+            for (int k = 0; k < poly->indexCount; k++) expect(poly->indices[k] < poly->vertexCount, "polygon index");
+        }
     }
     for (int t = 0; t < a->tagCount; t++)
     {
@@ -69,21 +89,40 @@ static void check(const RblAtlas *a)
             expect(w >= 0 && w <= 1 && next >= g->from && next <= g->to, "blend");
         }
     }
-    for (int s = 0; s < a->sliceCount; s++) expect(a->slices[s].name != NULL && finiteRect(a->slices[s].bounds), "slice");
+    for (int s = 0; s < a->sliceCount; s++)
+    {
+        const RblAtlasSlice *k = &a->slices[s];
+        expect(k->name != NULL && finiteRect(k->bounds) && k->bounds.width > 0 && k->bounds.height > 0 && finiteRect(k->center) && isfinite(k->pivot.x) && isfinite(k->pivot.y), "slice");
+        expect(k->frame >= 0 && k->frame <= k->lastFrame && k->lastFrame < a->frameCount, "slice key frames");
+        int found = RblAtlasFindSlice(a, k->name, k->frame);
+        expect(found >= 0 && found <= s && a->slices[found].frame <= k->frame && k->frame <= a->slices[found].lastFrame, "slice lookup");
+        // its sub-frame: drawn (finite, positive) or refused with one line (outside the drawn pixels)
+        RblBillboard b; memset(&b, 0, sizeof(b));
+        int before = lines;
+        bool ok = RblAtlasSliceBillboard(a, s, k->lastFrame, 0.01f, &b);
+        expect(ok? (lines == before && finiteRect(b.source) && b.size.x > 0 && b.size.y > 0 && isfinite(b.origin.x) && isfinite(b.origin.y)) : (lines == before + 1), "slice sub-frame");
+    }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static bool init = false;
-    if (!init) { SetTraceLogCallback(countLog); init = true; }
+    if (!init) { SetTraceLogLevel(LOG_INFO); SetTraceLogCallback(countLog); init = true; }
     if (size == 0 || size > (1u << 20)) return 0;
     for (int pass = 0; pass < 2; pass++)
     {
-        lines = 0;
+        lines = 0; infoLines = 0;
         RblAtlas a = RblLoadAtlasFromMemory((const char *)data, (int)size, (pass == 0)? FUZZ_FORMAT : RBL_ATLAS_AUTO);
-        if (RblIsAtlasValid(&a)) { expect(lines == 0, "accepted with log lines"); check(&a); RblUnloadAtlas(&a); expect(!RblIsAtlasValid(&a), "unload"); }
-        else expect(lines == 1 && a.state == NULL && a.frames == NULL, "refused without exactly one line");
+        if (RblIsAtlasValid(&a))
+        {
+            expect(lines == 0 && infoLines <= 1, "accepted with warning lines, or more than one INFO line");
+            lines = 0;
+            check(&a);
+            RblUnloadAtlas(&a);
+            expect(!RblIsAtlasValid(&a), "unload");
+        }
+        else expect(lines == 1 && infoLines == 0 && a.state == NULL && a.frames == NULL, "refused without exactly one line");
     }
     return 0;
 }

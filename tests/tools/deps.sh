@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the build, tests and showcase need, when missing.
-# Usage: tests/tools/deps.sh [xvfb|web]   (xvfb only for a windowed run; web: emscripten and headless
+# Usage: tests/tools/deps.sh [web]   (xvfb: the teardown tests open a real raylib window; web: emscripten and headless
 #        chromium for make web / make test-web, plus python3 for the loopback runner)
 set -eu
-pkgs="g++ clang libclang-rt-dev cmake pkg-config dpkg-dev glslang-tools libegl-dev libgles-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev libxxf86vm-dev"
-[ "${1:-}" = xvfb ] && pkgs="$pkgs xvfb"
+pkgs="g++ clang libclang-rt-dev cmake pkg-config dpkg-dev glslang-tools libegl-dev libgles-dev libosmesa6-dev libgl-dev libx11-dev libxrandr-dev libxi-dev libxcursor-dev libxinerama-dev libxext-dev libxxf86vm-dev xvfb xauth"
 [ "${1:-}" = web ] && pkgs="emscripten chromium python3"
 missing=""
 for p in $pkgs; do
