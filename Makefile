@@ -5,6 +5,9 @@
 #   make shaders splice shaders/*.glsl into rbillboard_lit.h
 #   make web     the showcase as a page: build/web/index.html (WebGL2, WebGL1 fallback build)
 #   make test-web  the browser GPU suite in headless Chromium; ends with "web: N passed, N failed"
+#   make test-page the showcase page's checks in headless Chromium (sizes, input, context loss, no WebGL)
+#   make raylib-master  clone raylib master into build/raylib-master: make test then also compiles the
+#                header, README code and examples against its headers (or RAYLIB_MASTER=<tree>)
 # raylib >= 6.0 is found by tests/tools/get-raylib.sh: pkg-config, then RAYLIB_SRC=<tree>, then
 # Debian's source package (built once into build/raylib).
 
@@ -16,20 +19,26 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web web-deps web-shot api-index
+.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
-NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps api-index
+NO_RAYLIB_GOALS := clean clean-all shaders check-shaders deps api-index raylib-master
 ifeq ($(filter $(NO_RAYLIB_GOALS),$(MAKECMDGOALS)),)
 include $(BUILD)/raylib.mk
+endif
+# raylib.mk records the RAYLIB_SRC it was made for; another one remakes it. Through a phony
+# prerequisite, never by declaring raylib.mk itself phony: make does not re-read a phony makefile
+# it remade, so the recipes ran without raylib's flags (a fresh clone's first
+# `make run RAYLIB_SRC=...` failed with raylib.h not found)
 ifneq ($(RAYLIB_FOUND_FOR),$(RAYLIB_SRC))
-.PHONY: $(BUILD)/raylib.mk
+RAYLIB_MK_AGAIN := raylib-mk-again
 endif
-endif
+.PHONY: raylib-mk-again
+raylib-mk-again:
 
 # Remade when get-raylib.sh changes (its build flags are in the stamp: an older build is rebuilt)
-$(BUILD)/raylib.mk: tests/tools/get-raylib.sh
+$(BUILD)/raylib.mk: tests/tools/get-raylib.sh $(RAYLIB_MK_AGAIN)
 	@mkdir -p $(BUILD)
 	@bash tests/tools/deps.sh
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/get-raylib.sh > $@.tmp || { rm -f $@.tmp; exit 1; }
@@ -54,6 +63,9 @@ check-shaders:
 	  || { echo "check-shaders: rbillboard_lit.h differs from shaders/ (run make shaders)"; exit 1; }
 
 # ---- tests --------------------------------------------------------------------------------
+# The showcase page's files (built in the browser section below; named here, before `test` reads them)
+WEB_PAGE_FILES := $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html $(BUILD)/web/page_check.html $(BUILD)/web/shell.html $(BUILD)/web/game.js
+WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2" "nowebgl --disable-webgl" shell "shellnowebgl --disable-webgl"
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
@@ -129,8 +141,15 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/web/test/test_web.js
-	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" bash tests/run.sh
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
+	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" RAYLIB_MASTER="$(RAYLIB_MASTER)" bash tests/run.sh
+
+# raylib master's source for make test's optional check against its headers (needs the network;
+# under $(BUILD), so never committed). RAYLIB_MASTER=<tree> names one already on disk instead.
+raylib-master:
+	@if [ -d $(BUILD)/raylib-master/.git ]; then git -C $(BUILD)/raylib-master pull -q --ff-only; \
+	 else git clone -q --depth 1 https://github.com/raysan5/raylib $(BUILD)/raylib-master; fi
+	@echo "raylib-master: $(BUILD)/raylib-master at $$(git -C $(BUILD)/raylib-master log -1 --format='%h %cs')"
 
 # ---- showcase -----------------------------------------------------------------------------
 $(BUILD)/showcase: examples/shaders_lit_billboards.c $(HEADER) $(BUILD)/raylib.mk
@@ -152,6 +171,10 @@ $(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_def
 $(BUILD)/sprites_headless: tests/tools/sprites_headless.c examples/shaders_lit_sprite_sheet.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/sprites_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/game_headless: tests/tools/game_headless.c examples/shaders_lit_sprite_game.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/game_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
@@ -227,8 +250,9 @@ bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,eg
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
-	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
-	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png
+	rm -rf $(BUILD)/tests $(BUILD)/bench $(BUILD)/test-output $(BUILD)/cmake_consumer_* $(BUILD)/cmake_readme_* $(BUILD)/setup_check $(BUILD)/raylib_examples $(BUILD)/showcase $(BUILD)/showcase_headless $(BUILD)/showcase.png \
+	  $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/deferred.png $(BUILD)/deferred_views.png \
+	  $(BUILD)/sprites_headless $(BUILD)/sprites.png $(BUILD)/game_headless $(BUILD)/game.png
 
 clean-all:
 	rm -rf $(BUILD)
@@ -274,9 +298,25 @@ $(BUILD)/web/index.html: tests/web/index.html
 web: $(BUILD)/web/showcase.js $(BUILD)/web/showcase-gl1.js $(BUILD)/web/index.html
 	@echo "web: open build/web/index.html through a web server (python3 -m http.server -d $(BUILD)/web)"
 
-# Headless screenshot of the page for the README (SwiftShader WebGL2)
+# The page's checks (tests/web/page_check.html; make test runs them): the showcase page in every
+# mode, and the README's minimal shell as printed (shell.html) with the showcase build as game.js
+$(BUILD)/web/page_check.html: tests/web/page_check.html
+	@mkdir -p $(@D)
+	cp $< $@
+$(BUILD)/web/shell.html: README.md
+	@mkdir -p $(@D)
+	@awk '/^<!-- tested by tests\/web\/page_check.html \(shell\) -->$$/ {m=1; next} m && /^```html$$/ {f=1; next} f && /^```$$/ {exit} f' README.md > $@
+	@test -s $@ || { echo "shell.html: README has no html block after its 'tested by' marker"; rm -f $@; exit 1; }
+$(BUILD)/web/game.js: $(BUILD)/web/showcase.js
+	cp $(BUILD)/web/showcase.js $@
+	cp $(BUILD)/web/showcase.wasm $(BUILD)/web/game.wasm
+test-page: $(WEB_PAGE_FILES)
+	@for m in $(WEB_PAGE_MODES); do python3 tests/web/run.py page $(BUILD)/web $$m || exit 1; done
+
+# Headless screenshots of the page for the README (SwiftShader WebGL2; and with no WebGL at all)
 web-shot: web
 	@python3 tests/web/run.py shot $(BUILD)/web examples/resources/rbl_web.png 800 450 6000
+	@WEB_CHROMIUM_FLAGS=--disable-webgl python3 tests/web/run.py shot $(BUILD)/web examples/resources/rbl_web_nowebgl.png 640 360 2000
 
 # The browser GPU suite: tests/web/test_web_main.c (tests/test_*.c are included whole: the ones not
 # run in the browser are unused there, hence -Wno-unused-function)
@@ -295,10 +335,13 @@ $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.m
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-pictures: $(BUILD)/pictures $(BUILD)/deferred_headless run
+pictures: $(BUILD)/pictures $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless run
 	@mkdir -p examples/resources
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png
 	@cp examples/resources/rbl_showcase.png examples/shaders_lit_billboards.png && echo "pictures: wrote examples/shaders_lit_billboards.png"
 	@cp examples/resources/rbl_deferred.png examples/shaders_deferred_billboards.png && echo "pictures: wrote examples/shaders_deferred_billboards.png"
+	@$(BUILD)/sprites_headless examples/shaders_lit_sprite_sheet.png | sed 's/^/pictures: /'
+	@$(BUILD)/game_headless examples/shaders_lit_sprite_game.png examples | sed 's/^/pictures: /'
+	@cp examples/shaders_lit_sprite_game.png examples/resources/rbl_game.png && echo "pictures: wrote examples/resources/rbl_game.png"

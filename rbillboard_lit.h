@@ -1,6 +1,6 @@
 /**********************************************************************************************
 *
-*   rbillboard_lit v0.4 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
+*   rbillboard_lit v0.5 - Lit billboards for raylib: normals, tangents, materials, lights and shadows
 *
 *   DESCRIPTION:
 *       A raylib billboard (DrawBillboardPro) is two triangles with a colour and texture coordinates:
@@ -541,6 +541,11 @@
 *         all public functions, one process per case); limits RBL_MAX_BATCH_BILLBOARDS,
 *         RBL_MAX_INSTANCES, RBL_MAX_SCENE_LIGHTS, RBL_MAX_LIGHT_INTENSITY, RBL_MAX_TARGET_SIZE,
 *         RBL_MAX_OCCLUSION_RADIUS; allocation failures swept on every allocating path.
+*       0.5 (unreleased) Sprite sheets (TexturePacker, Aseprite, libGDX atlases; player, N-way,
+*                        cross-fades), GPU-skinned Models, translucent sorting and soft particles,
+*                        run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL), a 56-bit
+*                        G-buffer word, RBL_VERSION* (RBILLBOARD_LIT_VERSION* kept); no API removed.
+*                        Details: CHANGELOG.md.
 *
 *   DEPENDENCIES:
 *       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
@@ -571,10 +576,18 @@
 
 #include "raylib.h"
 
-#define RBILLBOARD_LIT_VERSION_MAJOR 0
-#define RBILLBOARD_LIT_VERSION_MINOR 4
-#define RBILLBOARD_LIT_VERSION_PATCH 0
-#define RBILLBOARD_LIT_VERSION "0.4.0"
+#if !defined(RAYLIB_VERSION_MAJOR) || (RAYLIB_VERSION_MAJOR < 6)
+    #error "rbillboard_lit.h needs raylib 6.0 or later, and the raylib.h included is older: update raylib (or put raylib 6's include directory first)"
+#endif
+
+#define RBL_VERSION_MAJOR 0
+#define RBL_VERSION_MINOR 5
+#define RBL_VERSION_PATCH 0
+#define RBL_VERSION "0.5.0"                     // CHANGELOG.md lists what each version changed
+#define RBILLBOARD_LIT_VERSION_MAJOR RBL_VERSION_MAJOR     // The same under the header's name (0.1..0.4 spelling)
+#define RBILLBOARD_LIT_VERSION_MINOR RBL_VERSION_MINOR
+#define RBILLBOARD_LIT_VERSION_PATCH RBL_VERSION_PATCH
+#define RBILLBOARD_LIT_VERSION RBL_VERSION
 
 // Function specifiers for a shared library build on Windows (as raylib's BUILD_LIBTYPE_SHARED)
 #ifndef RBLAPI
@@ -1078,6 +1091,7 @@ typedef struct RblAtlas {
     const RblAtlasTag *tags;
     const RblAtlasPage *pages;
     const RblAtlasSlice *slices;
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__AtlasState *state;  // The header's: tables and names (NULL = not loaded)
 } RblAtlas;
 
@@ -6223,7 +6237,13 @@ static void rbl__checkRaylibDrew(rbl__Program *p)
     rbl__GlGetUniformfv get;
     memcpy(&get, &rbl__state.glGetUniformfv, sizeof(get));
     float m[16];
+#if defined(__EMSCRIPTEN__)
+    rlEnableShader(p->shader.id);           // emscripten's WebGL layer resolves the location in the bound program only
     get(p->shader.id, loc, m);
+    rlDisableShader();
+#else
+    get(p->shader.id, loc, m);
+#endif
     bool sentinel = (m[15] == -8.125f);
     for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
     if (sentinel) return;
@@ -7079,8 +7099,9 @@ static bool rbl__meshGpuSkinned(const Mesh *mesh)
 // Why a Model's bone matrices cannot be uploaded; NULL = they can
 static const char *rbl__bonesProblem(const Model *model)
 {
-    if ((model->skeleton.boneCount < 1) || (model->skeleton.boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
-    for (int b = 0; b < model->skeleton.boneCount; b++)
+    const long long boneCount = (long long)model->skeleton.boneCount;   // int in raylib 6.0, unsigned int in 6.1
+    if ((boneCount < 1) || (boneCount > RBL_MAX_BONES)) return "skeleton.boneCount outside 1..RBL_MAX_BONES";
+    for (int b = 0; b < (int)boneCount; b++)
         if (!rbl__exponentsBelow(&model->boneMatrices[b], 16, RBL__BILLBOARD_LIMIT_EXPONENT)) return "a bone matrix with NaN/Inf or |value| >= 2^60";
     return NULL;
 }
@@ -7089,7 +7110,7 @@ static const char *rbl__bonesProblem(const Model *model)
 // on desktop GL and not on ES/WebGL: ES gets the matrices transposed first, so both arrive as set
 static void rbl__uploadBones(int loc, const Model *bones)
 {
-    int n = bones->skeleton.boneCount;
+    int n = (int)bones->skeleton.boneCount;                 // checked to 1..RBL_MAX_BONES
     if ((rbl__glsl() != 300) && (rbl__glsl() != 100)) { rlSetUniformMatrices(loc, bones->boneMatrices, n); return; }
     for (int b = 0; b < n; b++)
     {
@@ -8357,15 +8378,8 @@ typedef struct rbl__AtlasState {
     char error[3*RBL__ATLAS_PATH + 256];
 } rbl__AtlasState;
 
-// Atlases are CPU objects the caller owns past RblClose: their own live list (freed when empty)
-static struct { const void **live; int count, capacity; } rbl__atlases;
-
-static bool rbl__atlasLive(const void *s)
-{
-    if (s == NULL) return false;
-    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == s) return true;
-    return false;
-}
+// Atlases are CPU objects the caller owns past RblClose, named by id like the header's other objects
+static bool rbl__atlasLive(const RblAtlas *atlas) { return rbl__isLive(atlas->id, atlas->state); }
 
 static void rbl__atlasError(rbl__AtlasState *s, const char *fmt, const char *detail, long at)
 {
@@ -9502,8 +9516,8 @@ static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
 {
     RblAtlas a;
     memset(&a, 0, sizeof(a));
-    RBL__ATLAS_GROW(s, rbl__atlases.live, rbl__atlases.count, rbl__atlases.capacity, const void *, "live atlases", return a);
-    rbl__atlases.live[rbl__atlases.count++] = s;
+    a.id = rbl__liveAdd(s);
+    if (a.id == 0) return a;            // out of memory: the caller fails the load
     s->format = format;
     // the tables stopped moving: polygons point into their rows, frames at their polygons
     for (int i = 0; i < s->polygonCount; i++)
@@ -9534,7 +9548,7 @@ static RblAtlas rbl__atlasFail(rbl__AtlasState *s, const char *fn, const char *w
     memset(&a, 0, sizeof(a));
     TraceLog(LOG_WARNING, "RBL: %s: %s: %s", fn, what, ((s != NULL) && (s->error[0] != 0))? s->error : "out of memory");
     rbl__atlasFree(s);
-    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__tidyAfterClose();
     return a;
 }
 
@@ -9606,29 +9620,29 @@ RblAtlas RblLoadAtlas(const char *fileName)
 
 bool RblIsAtlasValid(const RblAtlas *atlas)
 {
-    return (atlas != NULL) && rbl__atlasLive(atlas->state);
+    return (atlas != NULL) && rbl__atlasLive(atlas);
 }
 
 void RblUnloadAtlas(RblAtlas *atlas)
 {
     if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: NULL atlas"); return; }
-    if (!rbl__atlasLive(atlas->state))
+    if (!rbl__atlasLive(atlas))
     {
-        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", (atlas->state != NULL)? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
+        TraceLog(LOG_WARNING, "RBL: RblUnloadAtlas: atlas %s", ((atlas->id != 0) || (atlas->state != NULL))? "already unloaded (a stale copy)" : "not loaded (zero, or unloaded before)");
         memset(atlas, 0, sizeof(*atlas));
         return;
     }
-    for (int i = 0; i < rbl__atlases.count; i++) if (rbl__atlases.live[i] == atlas->state) { rbl__atlases.live[i] = rbl__atlases.live[--rbl__atlases.count]; break; }
-    if (rbl__atlases.count == 0) { RBL_FREE((void *)rbl__atlases.live); memset(&rbl__atlases, 0, sizeof(rbl__atlases)); }
+    rbl__liveRemove(atlas->id);
     rbl__atlasFree(atlas->state);
     memset(atlas, 0, sizeof(*atlas));
+    rbl__tidyAfterClose();
 }
 
 // The live state of an atlas argument, or NULL after one line under fn
 static const rbl__AtlasState *rbl__atlasArg(const RblAtlas *atlas, const char *fn)
 {
     if (atlas == NULL) { TraceLog(LOG_WARNING, "RBL: %s: NULL atlas", fn); return NULL; }
-    if (!rbl__atlasLive(atlas->state)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
+    if (!rbl__atlasLive(atlas)) { TraceLog(LOG_WARNING, "RBL: %s: atlas not loaded (zero, unloaded or a stale copy)", fn); return NULL; }
     return atlas->state;
 }
 

@@ -1689,6 +1689,16 @@ static void c_stale_objects_reused_address(void)
     ck(RblIsGBufferValid(&gb), "the newer G-buffer was touched by its forged copy");
     RblUnloadGBuffer(&gb);
 
+    RblAtlas aa = goodAtlas(), staleA2 = aa;
+    RblUnloadAtlas(&aa);
+    RblAtlas ab = goodAtlas(), forgedA = ab;
+    forgedA.id = staleA2.id;
+    EXPECT_QUIET(RblIsAtlasValid(&forgedA), false);
+    EXPECT_REFUSED(RblAtlasFindFrame(&forgedA, "a") >= 0);
+    EXPECT_REFUSED(V(RblUnloadAtlas(&forgedA)));
+    ck(RblIsAtlasValid(&ab), "the newer atlas was touched by its forged copy");
+    RblUnloadAtlas(&ab);
+
     RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;
     RblShadowMap ma = RblLoadShadowMap(sd), staleM = ma;
     RblUnloadShadowMap(&ma);
@@ -2048,7 +2058,7 @@ static const Case cases[] = {
     { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawInstanced RblDrawMesh RblDrawModel RblIsLitShaderValid RblUnloadLitShader", "lit Shader copies after RblUnloadLitShader, UnloadShader, UnloadMaterial; then nothing, a lit load, a raylib load", c_stale_shader_copies, "stale-header stale-raylib stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawMesh RblDrawModel RblIsLitShaderValid RblLoadLitShader", "lit Shader copies whose GL name a raylib shader or a lit load took (reuse staged)", c_stale_shader_copies_reused_id, "stale-reused stale-raylib" },
-    { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },
+    { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap RblIsAtlasValid RblAtlasFindFrame RblUnloadAtlas", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblDrawInstanced RblDrawMesh RblDrawModel", "NULL maps/locs/arrays; shaders, textures and meshes raylib unloaded", c_null_and_dead_inside_raylib_structs, "null-inside stale-raylib" },
     { "RblLightFeatures RblSetScene RblUpdateSpriteInstances RblDrawInstanced", "every count at its limit and one past", c_counts_at_and_past_limits, "counts" },
     { "RblDrawBillboard", "Material values (maps[].value, params[]) NaN/Inf/overflowing: finite float output", c_material_values_every_float, "floats" },

@@ -38,6 +38,6 @@ int main(void)
     }
     const bool ok = (errC < 1e-6) && (errCpp < 1e-6);
     printf("cmake_consumer: rbillboard_lit %s, camera frame vs GetCameraMatrix: C max %.2g, C++ max %.2g: %s\n",
-           RBILLBOARD_LIT_VERSION, errC, errCpp, ok? "ok" : "FAIL");
+           RBL_VERSION, errC, errCpp, ok? "ok" : "FAIL");
     return ok? 0 : 1;
 }

@@ -3,15 +3,21 @@
 # with -Wall -Wextra -pedantic -Werror -O1 (optimised: some warnings, -Wmaybe-uninitialized among them,
 # only exist with the optimiser), writing "ok    <label>" or "FAIL  <label>" + the compiler's first
 # lines to $3.
-#   usage: compile_matrix.sh <compiler>:<std> <unit> <out-file>
+#   usage: compile_matrix.sh <compiler>:<std> <unit> <out-file> [<raylib tree>]
 #   unit: header-decl | header-impl | readme | an example .c file
 #   env:  BUILD, RAYLIB_CFLAGS, RAYLIB_LIBS
+# With a raylib tree (another raylib's source, e.g. master), the unit is compiled against that tree's
+# src/ headers only, with SUPPORT_GPU_SKINNING=1 (every path of the header), and not linked.
 set -u
-spec=$1 unit=$2 out=$3
+spec=$1 unit=$2 out=$3 other=${4:-}
 cc=${spec%%:*} std=${spec#*:}
 BUILD=${BUILD:-build}
 lang=c; case $std in c++*) lang=c++ ;; esac
 label="$cc -std=$std $unit"
+if [ -n "$other" ]; then
+  RAYLIB_CFLAGS="-I$other/src -DSUPPORT_GPU_SKINNING=1"
+  label="$label against $(sed -n 's/^#define RAYLIB_VERSION *"\([^"]*\)".*/raylib \1/p' "$other/src/raylib.h" | head -1) ($other)"
+fi
 dir=$BUILD/tests/matrix; mkdir -p "$dir"
 obj=$dir/$(echo "$cc-$std-$unit" | tr '/+.' '_px')
 
@@ -28,6 +34,9 @@ case $unit in
   readme)      cmd="$cc $flags $BUILD/tests/readme_example.c -x none -o $obj $RAYLIB_LIBS" ;;
   *)           cmd="$cc $flags $unit -x none -o $obj $RAYLIB_LIBS" ;;
 esac
+# Another raylib's headers: compiled only (its libraylib.a is not built here)
+[ -n "$other" ] && [ $unit != header-decl ] && [ $unit != header-impl ] && cmd="$cc $flags -c $unit -o $obj.o"
+[ -n "$other" ] && [ $unit = readme ] && cmd="$cc $flags -c $BUILD/tests/readme_example.c -o $obj.o"
 if log=$($cmd 2>&1); then printf 'ok    %s\n' "$label" > "$out"
 else { printf 'FAIL  %s\n' "$label"; printf '%s\n' "$log" | head -12 | sed 's/^/        /'; } > "$out"; fi
 rm -f "$obj" "$obj.o"

@@ -13,6 +13,16 @@ BUILD=${BUILD:-build}
 mkdir -p "$BUILD"
 BUILD=$(cd "$BUILD" && pwd)
 log() { echo "get-raylib: $*" >&2; }
+# One message for every way of not finding raylib: what was found, then what to do; exit 1
+fail() {
+  { echo "get-raylib: $1."
+    [ -n "${2:-}" ] && printf '%s\n' "$2" | sed 's/^/    /'
+    echo "  rbillboard_lit needs raylib 6.0 or later. Either point the build at a raylib source tree:"
+    echo "    git clone --depth 1 --branch 6.0 https://github.com/raysan5/raylib ../raylib && make RAYLIB_SRC=../raylib"
+    echo "  or install raylib 6.0+ where pkg-config finds it (raylib.pc on PKG_CONFIG_PATH) and run make without RAYLIB_SRC."
+  } >&2
+  exit 1
+}
 tried=""
 syslibs="-lGL -lX11 -lXrandr -lXi -lXcursor -lXext -lXinerama -lm -lpthread -ldl"
 
@@ -22,18 +32,23 @@ if [ -z "${RAYLIB_SRC:-}" ] && pkg-config --exists 'raylib >= 6.0' 2>/dev/null; 
   echo "RAYLIB_LIBS=$(pkg-config --libs --static raylib)"
   exit 0
 fi
-tried="$tried\n  - pkg-config 'raylib >= 6.0': $(pkg-config --modversion raylib 2>/dev/null || echo 'not found')"
+pc=$(pkg-config --modversion raylib 2>/dev/null || true)
+tried="$tried\n  - pkg-config raylib: ${pc:+version $pc, older than 6.0}${pc:-not found}"
 
 build_from() { # $1 = source tree root (holds src/raylib.h)
   local src=$1 out=$BUILD/raylib flags="-DSUPPORT_GPU_SKINNING=1"
   if [ -f "$out/libraylib.a" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$src $flags" ]; then :; else
     log "building libraylib.a from $src (PLATFORM_DESKTOP_RGFW, $flags)"
-    rm -rf "$out"; mkdir -p "$out/obj"
-    make -s -C "$src/src" PLATFORM=PLATFORM_DESKTOP_RGFW RAYLIB_RELEASE_PATH="$out" CUSTOM_CFLAGS="$flags" \
+    rm -rf "$out"; mkdir -p "$out"
+    # A private copy of src/: raylib's Makefile builds its objects in place, and its `clean` would
+    # take the caller's own libraylib.a with them
+    cp -r "$src/src" "$out/src"
+    make -s -C "$out/src" PLATFORM=PLATFORM_DESKTOP_RGFW RAYLIB_RELEASE_PATH="$out" CUSTOM_CFLAGS="$flags" \
          RAYLIB_BUILD_MODE=RELEASE -j"$(nproc)" >"$out/build.log" 2>&1 \
-      || { log "raylib build failed, see $out/build.log"; tail -20 "$out/build.log" >&2; return 1; }
-    make -s -C "$src/src" clean >/dev/null 2>&1 || true
-    cp "$src/src/raylib.h" "$src/src/rlgl.h" "$src/src/raymath.h" "$out/"
+      || { log "building raylib from $src failed; the end of $out/build.log:"; tail -20 "$out/build.log" | sed 's/^/    /' >&2
+           log "missing system headers are installed by tests/tools/deps.sh (run as root, or with sudo)"; exit 1; }
+    cp "$out/src/raylib.h" "$out/src/rlgl.h" "$out/src/raymath.h" "$out/"
+    rm -rf "$out/src"
     echo "$src $flags" > "$out/stamp"
   fi
   echo "RAYLIB_CFLAGS=-I$out $flags"
@@ -44,11 +59,15 @@ version_ok() { # raylib.h declares RAYLIB_VERSION_MAJOR
   local maj; maj=$(sed -n 's/^#define RAYLIB_VERSION_MAJOR *\([0-9]*\).*/\1/p' "$1/src/raylib.h" 2>/dev/null)
   [ -n "$maj" ] && [ "$maj" -ge 6 ]
 }
+version_of() { # "raylib 5.5" or "no src/raylib.h"
+  local v; v=$(sed -n 's/^#define RAYLIB_VERSION *"\([^"]*\)".*/\1/p' "$1/src/raylib.h" 2>/dev/null | head -1)
+  if [ -n "$v" ]; then echo "raylib $v"; elif [ -f "$1/src/raylib.h" ]; then echo "a raylib.h without RAYLIB_VERSION"; else echo "no src/raylib.h"; fi
+}
 
 # (2) a source tree named by the caller
 if [ -n "${RAYLIB_SRC:-}" ]; then
-  src=$(cd "$RAYLIB_SRC" 2>/dev/null && pwd) || { log "RAYLIB_SRC=$RAYLIB_SRC does not exist"; exit 1; }
-  version_ok "$src" || { log "RAYLIB_SRC=$src has no src/raylib.h of version >= 6.0"; exit 1; }
+  src=$(cd "$RAYLIB_SRC" 2>/dev/null && pwd) || fail "RAYLIB_SRC=$RAYLIB_SRC is not a directory"
+  version_ok "$src" || fail "RAYLIB_SRC=$src holds $(version_of "$src"), not raylib 6.0 or later"
   build_from "$src"; exit $?
 fi
 tried="$tried\n  - RAYLIB_SRC: not set"
@@ -83,7 +102,4 @@ else
   tried="$tried\n  - Debian source package: no Debian source URI / keyring / apt-get on this machine"
 fi
 
-printf "get-raylib: no raylib >= 6.0 found. Tried:%b\n" "$tried" >&2
-echo "get-raylib: point the build at one with  make RAYLIB_SRC=/path/to/raylib  (a source tree holding src/raylib.h)" >&2
-echo "get-raylib: or install raylib >= 6.0 with a raylib.pc on PKG_CONFIG_PATH." >&2
-exit 1
+fail "no raylib 6.0 or later found; tried" "$(printf '%b' "$tried" | sed '/^$/d; s/^  - //')"

@@ -13,6 +13,16 @@
 #define H 200
 
 // A sign texture: coloured card with an "F" (shows mirroring) and an arrow pointing up the image
+// As a window shows it: blending leaves the target's alpha below 255 where a PNG would show through
+static bool ExportOpaque(Image image, const char *path)
+{
+    Image copy = ImageCopy(image);
+    ImageFormat(&copy, PIXELFORMAT_UNCOMPRESSED_R8G8B8);
+    const bool ok = ExportImage(copy, path);
+    UnloadImage(copy);
+    return ok;
+}
+
 static Image signImage(Color base)
 {
     Image img = GenImageColor(64, 96, BLANK);
@@ -116,7 +126,7 @@ static bool lightingPicture(const char *dir)
     Image img = rtReadTarget(rt);
     char path[512];
     snprintf(path, sizeof(path), "%s/rbl_lighting.png", dir);
-    bool ok = sceneSet && RblIsLitShaderValid(shaders[0]) && RblIsLitShaderValid(shaders[1]) && ExportImage(img, path);
+    bool ok = sceneSet && RblIsLitShaderValid(shaders[0]) && RblIsLitShaderValid(shaders[1]) && ExportOpaque(img, path);
     printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
     UnloadImage(img);
     UnloadRenderTexture(rt);
@@ -260,7 +270,7 @@ static bool shadowsPicture(const char *dir)
     Image img = rtReadTarget(rt);
     char path[512];
     snprintf(path, sizeof(path), "%s/rbl_shadows.png", dir);
-    ok = ok && ExportImage(img, path);
+    ok = ok && ExportOpaque(img, path);
     printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
     UnloadImage(img);
     UnloadRenderTexture(rt);
@@ -340,7 +350,7 @@ int main(int argc, char **argv)
         Image img = rtReadTarget(rt);
         char path[512];
         snprintf(path, sizeof(path), "%s/rbl_mode_%s.png", dir, names[mode]);
-        if (!ExportImage(img, path)) { printf("pictures: could not write %s\n", path); return 1; }
+        if (!ExportOpaque(img, path)) { printf("pictures: could not write %s\n", path); return 1; }
         printf("pictures: wrote %s\n", path);
         UnloadImage(img);
     }

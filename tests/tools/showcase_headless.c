@@ -59,6 +59,7 @@ int main(int argc, char **argv)
     double elapsed = NowMs() - start;
 
     int rc = 0;
+    ImageFormat(&image, PIXELFORMAT_UNCOMPRESSED_R8G8B8);     // As a window shows it: blending leaves the target's alpha below 255
     if (ExportImage(image, outPath))
     {
         printf("showcase: wrote %s (%dx%d), average frame %.2f ms over %d frames (%s)\n",

@@ -40,6 +40,7 @@ int main(int argc, char **argv)
             if (a.r + a.g + a.b > b.r + b.g + b.b + 30) smoky++;
             if ((a.b > a.r + 40) && (a.b > 90)) coat++;
         }
+    ImageFormat(&image, PIXELFORMAT_UNCOMPRESSED_R8G8B8);     // As a window shows it: blending leaves the target's alpha below 255
     bool ok = ExportImage(image, outPath);
     printf("sprites: %s, %d pixels lighter than the bare world (smoke), %d coat-blue pixels (character)\n", outPath, smoky, coat);
     UnloadImage(image); UnloadImage(bare);
