@@ -7367,7 +7367,7 @@ static Texture2D rbl__targetTexture(int width, int height, int format)
 // depth stays as rlgl made it.
 static void rbl__floatDepth(unsigned int id, int width, int height)
 {
-    typedef void (*rbl__TexImage2D)(unsigned int, int, int, int, int, int, unsigned int, unsigned int, const void *);
+    typedef void (RBL__GLAPI *rbl__TexImage2D)(unsigned int, int, int, int, int, int, unsigned int, unsigned int, const void *);
     void *entry = rlGetProcAddress("glTexImage2D");
     if (entry == NULL) return;
     rbl__TexImage2D texImage2D;
