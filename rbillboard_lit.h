@@ -233,17 +233,22 @@
 *         RT1 RGBA8    bits 55..24 of one 56-bit word (RT1.r its most significant byte); RT2 RG8 bits 15..0
 *                      (RGBA8 where the G-buffer receives shadows: ba each pixel's caster identity, 12 B)
 *           GGX        normal 36 bits | roughness 12: log over [0.045, 1] | metalness 8: linear
-*           Blinn-P.   normal 36 bits | shininess 11: log2(n)/11 | intensity 9: log2(1 + 256 s)/9
+*           Blinn-P.   normal 32 bits | shininess 12: log2(n)/11 | intensity 12: log2(1 + 256 s)/9
 *                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
 *           Lambert    normal 36 bits | 0 | specular map 8 (debug view)
-*         normal       octahedral (Cigolle et al. 2014), L = 2^18 - 1 levels per coordinate (odd: 0 and
+*         normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate (odd: 0 and
 *                      +-1 are codes, axis-aligned normals exact), the nearest of the 4 codes around
-*                      the point (max 0.00061 deg)
+*                      the point; b = 18 (max 0.00061 deg), Blinn-Phong 16 (max 0.0025 deg: its lobe,
+*                      n <= 2048, is at least 25 times wider than GGX's sharpest, and a constant
+*                      material rounded to one code biases every pixel, so its fields take the bits)
 *       Steps are fixed relative changes of what the BRDF reads (a highlight's error is relative);
 *       shaders/gbuffer_codec.glsl has the packing, README "Deferred" the measured errors and limits.
 *       plus RT3 RGBA16F accumulation (emission and ambient from the geometry pass, then light; alpha:
-*       occlusion, for its debug view only) and a depth texture
-*       (rlLoadTextureDepth, at least 24 bits) under raylib's projection (rlgl's cull distances).
+*       occlusion, for its debug view only) and a 32-bit float depth texture under raylib's
+*       projection (rlgl's cull distances): rlLoadTextureDepth's texture respecified through
+*       rlGetProcAddress("glTexImage2D"), since an orthographic camera's depth is linear over the
+*       whole clip range (a 24-bit step is (far - near)/2^24 world units everywhere) and a driver's
+*       own format may be sampled at fewer bits; without the entry point the driver's format stays.
 *       Not stored: position (view z = n f/(f - d (f - n)) straight from the window depth, free of an
 *       inverse projection's cancellation; orthographic z = n + d (f - n)), the view vector (the
 *       camera's back direction under an orthographic camera), anything derivable. The depth is raylib's
@@ -1551,6 +1556,7 @@ typedef struct rbl__State {
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
+    bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
@@ -1968,31 +1974,39 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "//   RT2 RG8      bits 15..0 of the word\n",
     "//   RT3 RGBA16F  light accumulation: emission and the scene's ambient from the geometry pass, then\n",
     "//                the lights; alpha keeps the occlusion (its debug view; light passes add alpha 0)\n",
-    "//   word         normal x 18 bits | normal y 18 | field 1 | field 2 (20 bits together)\n",
-    "//     GGX          roughness 12 | metalness 8\n",
-    "//     Blinn-Phong  shininess 11 | specular intensity 9 (colour folded to its luminance)\n",
-    "//     Lambert      0 12 | the specular map 8 (the debug view)\n",
-    "// Every field is stored in the form whose step is the same relative change of what the BRDF reads\n",
-    "// (a highlight's error is relative), except metalness (linear in the output). Not stored: the\n",
-    "// normal's third coordinate, occlusion (the ambient it scales is added by the geometry pass), roughness\n",
-    "// below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
-    "//   normal       octahedral (Cigolle et al. 2014), L = 2^18 - 1 levels per coordinate, odd so that 0 and\n",
+    "//   word         normal x | normal y | field 1 | field 2, from the most significant bit; per BRDF:\n",
+    "//     GGX          normal 18 + 18 | roughness 12 | metalness 8\n",
+    "//     Blinn-Phong  normal 16 + 16 | shininess 12 | specular intensity 12 (colour folded to its luminance)\n",
+    "//     Lambert      normal 18 + 18 | 0 12 | the specular map 8 (the debug view)\n",
+    "// The split follows what each BRDF's error is made of. A normal off by d moves a highlight's flank by\n",
+    "// about (lobe sharpness) x d: GGX needs 36 bits at its sharpest lobe (alpha = 0.045^2), a Blinn-Phong\n",
+    "// lobe (n <= 2048) is at least 25 times wider and keeps the same error with 32. A constant material\n",
+    "// value rounded to its nearest code is the same error on every pixel, a bias the image's mean shows:\n",
+    "// Blinn-Phong's 4 spare bits go to its two fields (12 + 12 instead of 11 + 9). Every field is stored\n",
+    "// in the form whose step is the same relative change of what the BRDF reads (a highlight's error is\n",
+    "// relative), except metalness (linear in the output). Not stored: the normal's third coordinate,\n",
+    "// occlusion (the ambient it scales is added by the geometry pass), roughness below RBL_MIN_ROUGHNESS\n",
+    "// (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
+    "//   normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate, odd so that 0 and\n",
     "//                +-1 are codes (axis-aligned normals exact); of the 4 neighbouring codes the one\n",
     "//                decoding nearest the normal\n",
     "//   roughness    log over [RBL_MIN_ROUGHNESS, 1], 4095 steps\n",
     "//   metalness    linear, 255 steps (0 and 1 exact)\n",
-    "//   shininess    log2(n)/11, 2047 steps (n in 1..2048)\n",
-    "//   intensity    log2(1 + 256 s)/9, 511 steps: relative above 1/256, linear toward 0 (0 exact), s <= 511/256\n",
+    "//   shininess    log2(n)/11, 4095 steps (n in 1..2048)\n",
+    "//   intensity    log2(1 + 256 s)/9, 4095 steps: relative above 1/256, linear toward 0 (0 exact), s <= 511/256\n",
     "#include \"common.glsl\"\n",
     "\n",
-    "#define RBL_GB_NORMAL_LEVELS 262143u    // per coordinate: 2^18 - 1\n",
     "#if RBL_BRDF == 1\n",
-    "#define RBL_GB_FIELD1_BITS 11u          // shininess\n",
-    "#define RBL_GB_FIELD2_BITS 9u           // specular intensity\n",
+    "#define RBL_GB_NORMAL_BITS 16u          // per coordinate\n",
+    "#define RBL_GB_FIELD1_BITS 12u          // shininess\n",
+    "#define RBL_GB_FIELD2_BITS 12u          // specular intensity\n",
     "#else\n",
+    "#define RBL_GB_NORMAL_BITS 18u          // per coordinate\n",
     "#define RBL_GB_FIELD1_BITS 12u          // roughness (Lambert: 0)\n",
     "#define RBL_GB_FIELD2_BITS 8u           // metalness (Lambert: specular map)\n",
     "#endif\n",
+    "#define RBL_GB_NORMAL_LEVELS ((1u << RBL_GB_NORMAL_BITS) - 1u)\n",
+    "#define RBL_GB_FIELDS_BITS (RBL_GB_FIELD1_BITS + RBL_GB_FIELD2_BITS)\n",
     "\n",
     "// Octahedral map of a unit vector onto [-1,1]^2 and back (the lower hemisphere folded over the diagonals)\n",
     "vec2 rblOctahedral(vec3 n)\n",
@@ -2048,12 +2062,16 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "float rblDecodeIntensity(float t) { return (exp2(t*9.0) - 1.0)/256.0; }\n",
     "\n",
     "// The 56-bit word as RT1 (4 bytes), RT0's alpha and RT2 (2 bytes), each byte /255 as an 8-bit target\n",
-    "// stores it: hi = bits 55..24, lo = bits 23..0\n",
+    "// stores it: hi = bits 55..24, lo = bits 23..0. The fields (at most 24 bits together) lie in lo; the\n",
+    "// normal's y code straddles the two where they are fewer than 24 (shifts by 0 otherwise).\n",
+    "#define RBL_GB_HI_SHIFT (RBL_GB_NORMAL_BITS + RBL_GB_FIELDS_BITS - 24u)     // x code's lowest bit in hi\n",
+    "#define RBL_GB_Y_SPLIT (24u - RBL_GB_FIELDS_BITS)                           // y code's low bits in lo\n",
+    "\n",
     "void rblPackWord(vec3 normal, uint field1, uint field2, out vec4 rt1, out float rt0a, out vec2 rt2)\n",
     "{\n",
     "    uvec2 q = rblPackNormal(normal);\n",
-    "    uint hi = (q.x << 14u) | (q.y >> 4u);\n",
-    "    uint lo = ((q.y & 15u) << 20u) | (field1 << RBL_GB_FIELD2_BITS) | field2;\n",
+    "    uint hi = (q.x << RBL_GB_HI_SHIFT) | (q.y >> RBL_GB_Y_SPLIT);\n",
+    "    uint lo = ((q.y << RBL_GB_FIELDS_BITS) & 16777215u) | (field1 << RBL_GB_FIELD2_BITS) | field2;\n",
     "    rt1 = vec4(float(hi >> 24u), float((hi >> 16u) & 255u), float((hi >> 8u) & 255u), float(hi & 255u))/255.0;\n",
     "    rt0a = float(lo >> 16u)/255.0;\n",
     "    rt2 = vec2(float((lo >> 8u) & 255u), float(lo & 255u))/255.0;\n",
@@ -2065,7 +2083,8 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "    uvec3 b = uvec3(floor(vec3(rt0a, rt2)*255.0 + 0.5));\n",
     "    uint hi = (a.x << 24u) | (a.y << 16u) | (a.z << 8u) | a.w;\n",
     "    uint lo = (b.x << 16u) | (b.y << 8u) | b.z;\n",
-    "    normal = rblUnpackNormal(uvec2(hi >> 14u, ((hi & 16383u) << 4u) | (lo >> 20u)));\n",
+    "    uint mask = (1u << RBL_GB_NORMAL_BITS) - 1u;\n",
+    "    normal = rblUnpackNormal(uvec2(hi >> RBL_GB_HI_SHIFT, ((hi << RBL_GB_Y_SPLIT) | (lo >> RBL_GB_FIELDS_BITS)) & mask));\n",
     "    field1 = (lo >> RBL_GB_FIELD2_BITS) & ((1u << RBL_GB_FIELD1_BITS) - 1u);\n",
     "    field2 = lo & ((1u << RBL_GB_FIELD2_BITS) - 1u);\n",
     "}\n",
@@ -7730,6 +7749,26 @@ static Texture2D rbl__targetTexture(int width, int height, int format)
 }
 
 // Targets and framebuffers at the G-buffer's size; false (and nothing left loaded) on any failure
+// The G-buffer's depth as a 32-bit float texture: rlLoadTextureDepth leaves the format to the driver
+// (24-bit, or 32-bit normalised that a sampler may read at 23 bits), and under an orthographic camera
+// the window depth is linear over raylib's whole clip range, so each step of it is (far - near)/2^24
+// (2.4e-4 world units with raylib's 4000) along the view axis wherever the surface is; the position a
+// light pass rebuilds moves a sharp highlight near a light. Float depth keeps what the rasterizer
+// computed. The texture's storage is specified again through rlGetProcAddress (rlgl has no call for
+// it); without the entry point, or where the format is refused (GL leaves the texture as it was), the
+// depth stays as rlgl made it.
+static void rbl__floatDepth(unsigned int id, int width, int height)
+{
+    typedef void (RBL__GLAPI *rbl__TexImage2D)(unsigned int, int, int, int, int, int, unsigned int, unsigned int, const void *);
+    void *entry = rlGetProcAddress("glTexImage2D");
+    if (entry == NULL) return;
+    rbl__TexImage2D texImage2D;
+    memcpy(&texImage2D, &entry, sizeof(entry));         // ISO C has no object-to-function pointer cast
+    rlEnableTexture(id);
+    texImage2D(0x0DE1 /* GL_TEXTURE_2D */, 0, 0x8CAC /* GL_DEPTH_COMPONENT32F */, width, height, 0, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, NULL);
+    rlDisableTexture();
+}
+
 static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
 {
     g->albedo = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
@@ -7741,6 +7780,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
+    if ((g->depth.id != 0) && !rbl__state.gbufferDriverDepth) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
     bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__state.gbufferForceFailure;
     if (ok)

@@ -445,11 +445,18 @@ bool rtReadDepth(unsigned int fbo, int width, int height, float *out)
     rlEnableFramebuffer(fbo);
     if (rtContextIsEs())
     {
-        unsigned int *raw = (unsigned int *)malloc(sizeof(unsigned int)*(size_t)width*height);
-        if (raw == NULL) { rlDisableFramebuffer(); return false; }
-        readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1405 /* GL_UNSIGNED_INT */, raw);
-        for (size_t i = 0; i < (size_t)width*height; i++) out[i] = (float)(raw[i]/4294967295.0);
-        free(raw);
+        // A float depth buffer reads back only as floats (NV_read_depth); a fixed-point one as integers
+        unsigned int (*getError)(void) = NULL; void *e = rtGlProc("glGetError"); memcpy(&getError, &e, sizeof(e));
+        for (int k = 0; (k < 16) && (getError != NULL) && (getError() != 0); k++) { }     // earlier errors
+        readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, out);
+        if ((getError == NULL) || (getError() != 0))
+        {
+            unsigned int *raw = (unsigned int *)malloc(sizeof(unsigned int)*(size_t)width*height);
+            if (raw == NULL) { rlDisableFramebuffer(); return false; }
+            readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1405 /* GL_UNSIGNED_INT */, raw);
+            for (size_t i = 0; i < (size_t)width*height; i++) out[i] = (float)(raw[i]/4294967295.0);
+            free(raw);
+        }
     }
     else readPixels(0, 0, width, height, 0x1902 /* GL_DEPTH_COMPONENT */, 0x1406 /* GL_FLOAT */, out);
     rlDisableFramebuffer();

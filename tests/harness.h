@@ -63,8 +63,8 @@ bool rtGlsl3(void);
 // through a framebuffer and glReadPixels(GL_RGBA, GL_FLOAT): rlReadTexturePixels reads RGBA8 only on ES.
 // malloc'ed; NULL on failure
 float *rtReadFloatPixels(unsigned int textureId, int width, int height);
-// Window depths 0..1 of framebuffer fbo, GL row order: GL_FLOAT on desktop, GL_UNSIGNED_INT on ES
-// (ES reads depth only as integers; the 24-bit depth comes back scaled to 32 bits). false on failure
+// Window depths 0..1 of framebuffer fbo, GL row order: GL_FLOAT on desktop; on ES GL_FLOAT where the
+// depth buffer is float, else GL_UNSIGNED_INT (a 24-bit depth comes back scaled to 32 bits). false on failure
 bool rtReadDepth(unsigned int fbo, int width, int height, float *out);
 
 // ---- lit material values ----------------------------------------------------------------------

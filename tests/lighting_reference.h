@@ -254,4 +254,54 @@ static inline bool refPixelOnPlane(Camera3D cam, int width, int height, int px, 
     return true;
 }
 
+// A triangle mesh as the rasterizer shades it: the point a pixel's centre sees on the nearest
+// triangle, and the vertex normals interpolated there with that point's barycentrics (what
+// perspective-correct interpolation gives; under a parallel projection they are the screen's)
+typedef struct RefMesh { int triangles; D3 *p, *n; } RefMesh;      // 3 vertices per triangle
+
+// The mesh's triangles (indexed or not) moved by offset; free with refMeshFree
+static inline RefMesh refMeshOf(Mesh mesh, D3 offset)
+{
+    RefMesh r;
+    r.triangles = mesh.triangleCount;
+    r.p = (D3 *)malloc(sizeof(D3)*3*(size_t)r.triangles);
+    r.n = (D3 *)malloc(sizeof(D3)*3*(size_t)r.triangles);
+    for (int t = 0; t < r.triangles; t++)
+        for (int k = 0; k < 3; k++)
+        {
+            int i = (mesh.indices != NULL)? mesh.indices[t*3 + k] : t*3 + k;
+            r.p[t*3 + k] = dAdd(d3(mesh.vertices[i*3], mesh.vertices[i*3 + 1], mesh.vertices[i*3 + 2]), offset);
+            r.n[t*3 + k] = d3(mesh.normals[i*3], mesh.normals[i*3 + 1], mesh.normals[i*3 + 2]);
+        }
+    return r;
+}
+
+static inline void refMeshFree(RefMesh *r) { free(r->p); free(r->n); r->p = r->n = NULL; r->triangles = 0; }
+
+// Nearest front-facing hit of the ray o + s d (s > 0; Moller-Trumbore), its point and interpolated
+// unit normal; false when it misses
+static inline bool refMeshRay(const RefMesh *m, D3 o, D3 d, D3 *hit, D3 *normal)
+{
+    double best = INFINITY;
+    for (int t = 0; t < m->triangles; t++)
+    {
+        D3 a = m->p[t*3], e1 = dSub(m->p[t*3 + 1], a), e2 = dSub(m->p[t*3 + 2], a);
+        D3 q = dCross(d, e2);
+        double det = dDot(e1, q);
+        if (det <= 1e-300) continue;                 // back face or edge-on (culled)
+        D3 s = dSub(o, a);
+        double u = dDot(s, q)/det;
+        if ((u < 0.0) || (u > 1.0)) continue;
+        D3 r = dCross(s, e1);
+        double v = dDot(d, r)/det;
+        if ((v < 0.0) || (u + v > 1.0)) continue;
+        double dist = dDot(e2, r)/det;
+        if ((dist <= 0.0) || (dist >= best)) continue;
+        best = dist;
+        *hit = dAdd(o, dScale(d, dist));
+        *normal = dNorm(dAdd(dAdd(dScale(m->n[t*3], 1.0 - u - v), dScale(m->n[t*3 + 1], u)), dScale(m->n[t*3 + 2], v)));
+    }
+    return best < INFINITY;
+}
+
 #endif

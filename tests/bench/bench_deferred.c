@@ -33,15 +33,35 @@
 //                Checked once, untimed: every case writes every pixel; volumes and naive agree within
 //                1/255 (max channel difference over covered pixels) at every light count; forward and
 //                deferred agree at 16 lights (one forward pass, so the same light sum).
+//   G-buffer     ms per frame at 1280x720 of the same floor through each BRDF's G-buffer (the codec's
+//   per BRDF     cost: packing in the geometry pass, unpacking in the light passes): the geometry pass
+//                alone (RblBeginGBuffer, the floor, RblEndGBuffer) and the whole frame at 16 of the
+//                lights (geometry, RblDrawDeferredLights, RblResolveGBuffer); each case right after a
+//                baseline frame, ratios to the run's median baseline, medians over runs.
+//   reference    (GPU, untimed) the deferred image against the double-precision reference
+//                (tests/lighting_reference.h) in the views of the GPU test
+//                test_deferred_every_brdf_matches_the_double_reference_on_8_bit_and_float_targets: a
+//                tilted plane and a sphere Model (its interpolated vertex normals), perspective and
+//                orthographic, a point light near the surface and a directional light, 96x96; resolved
+//                into RGBA8 and into RGBA16F / RGBA32F with the display encoding and with linear output.
+//                Per group (Lambert; Blinn-Phong n 2..1024 at intensities 0.03..1.5; GGX roughness
+//                0.02..1 metal and dielectric; GGX metalness between codes) the worst max and mean in
+//                1/255: 8-bit against the reference rounded, float against the reference itself,
+//                linear values above 1 relative to the value. A previous commit's binary prints the
+//                same rows for its codec (run both, alternating, for the before/after).
 //   encoding     (CPU, double; no GL) what the G-buffer's quantisation alone does to the image, 0.3's
-//                codec beside this one: the double-precision reference (tests/lighting_reference.h)
-//                shades every pixel of the GPU sweep test's two scenes (test_deferred.c: an axis-aligned
-//                plane seen obliquely, a sphere of radius 1.2 filling a 128x128 frame; a point and a
-//                directional light, sRGB, no tonemap) once with the exact surface and once with the
-//                surface each codec stores (normal, roughness, metalness, shininess, intensity decoded
-//                as the shaders do); max and mean channel difference in 1/255 before 8-bit rounding.
+//                codec, the previous one (Blinn-Phong: normal 36 bits, shininess 11, intensity 9) and
+//                this one (Blinn-Phong: normal 32, shininess 12, intensity 12): the double-precision
+//                reference (tests/lighting_reference.h) shades every pixel of the GPU sweep test's two
+//                scenes (test_deferred.c: an axis-aligned plane seen obliquely, a sphere of radius 1.2
+//                filling a 128x128 frame; a point and a directional light, sRGB, no tonemap) once with
+//                the exact surface and once with the surface each codec stores (normal, roughness,
+//                metalness, shininess, intensity decoded as the shaders do); max and mean channel
+//                difference in 1/255 before 8-bit rounding, and per group the worst of the previous
+//                codec and this one also rounded to 8 bits and as linear output (relative above 1).
 //                Normal codes over 400000 uniform sphere normals (degrees), and the first-order worst
-//                case of a GGX highlight's flank: 255 sRGB'(1) (2/alpha) x the code's worst normal error.
+//                case of a highlight's flank: 255 sRGB'(1) (2/alpha) x the code's worst normal error
+//                (Blinn-Phong as the GGX alpha of its lobe, n = 2/alpha^2 - 2).
 // Rows (suite "deferred"):
 //   gbuffer: bytes_per_pixel (RblGBufferBytesPerPixel), gl_bytes_per_pixel (GL-reported bits / 8)
 //   gbuffer_albedo|gbuffer_normal|gbuffer_params|gbuffer_depth|gbuffer_accum: bytes_per_pixel
@@ -52,13 +72,18 @@
 //   deferred_volumes_<n>lights: speedup_vs_naive (median of per-run naive/volumes), speedup_vs_forward
 //   deferred_vs_forward: crossover_lights (smallest tested n where volumes beat forward; 0 = none)
 //   check_volumes_vs_naive_<n>lights, check_forward_vs_deferred_16lights: max_diff (1/255), pixels
-//   normal_<old_12x12_rounded|30bit_nearest|29bit_nearest>: mean_deg, max_deg
-//   encoding_<brdf>_<parameters>_<plane|sphere>: old_max, old_mean, new_max, new_mean (1/255)
-//   flank_bound_ggx_r<roughness>: old, new (1/255, first-order worst case of the normal code)
+//   normal_<old_12x12_rounded|30bit_nearest|32bit_nearest|36bit_nearest>: mean_deg, max_deg
+//   geometry_pass_<lambert|blinn_phong|ggx>, deferred_frame_<brdf>_16lights: ms_per_frame_1280x720, ratio_to_raylib
+//   reference_<lambert|blinn_phong|ggx|ggx_metal_between>_<rgba8|rgba16f|rgba32f|rgba16f_linear|rgba32f_linear>: max, mean (1/255)
+//   encoding_<brdf>_<parameters>_<plane|sphere>: old_max, old_mean, prev_max, prev_mean, new_max, new_mean (1/255)
+//   encoding_<lambert|blinn_phong|ggx|ggx_metal_between>_<float|8bit|linear>: prev_max, prev_mean, new_max, new_mean (1/255)
+//   flank_bound_ggx_r<roughness>: old, 30bit, 32bit, new; flank_bound_blinn_phong_n<n>: prev, new (1/255,
+//                first-order worst case of the normal code)
 // Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
 #define RBILLBOARD_LIT_IMPLEMENTATION
 #include "rbillboard_lit.h"
 #include "rlgl.h"
+#include "raymath.h"
 #include "harness.h"
 #include "bench.h"
 #include "lighting_reference.h"
@@ -327,9 +352,304 @@ static bool ScatterLights(Scene *s, int n)
 }
 
 //----------------------------------------------------------------------------------
-// Encoding error (CPU, double): 0.3's G-buffer codec and this one, mirrored from their layouts
+// Geometry pass per BRDF (timed) and the G-buffer against the double reference (untimed)
 //----------------------------------------------------------------------------------
-typedef enum { CODEC_OLD = 0, CODEC_NEW } Codec;
+// Each BRDF's G-buffer at the frame's size, its geometry variant and a material of middling values
+typedef struct BrdfPass { RblGBuffer g; Shader geo; Material mat; bool ok; } BrdfPass;
+static const char *brdfKey[3] = { "lambert", "blinn_phong", "ggx" };
+
+static void BrdfPassLoad(BrdfPass *p, int brdf, Texture2D albedo)
+{
+    RblGBufferDesc gd;
+    memset(&gd, 0, sizeof(gd));
+    gd.width = FRAME_W; gd.height = FRAME_H;
+    gd.brdf = brdf;                         // point lights (the default light features), no fog, sRGB
+    p->g = RblLoadGBuffer(gd);
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.brdf = brdf;
+    d.deferred = true;
+    p->geo = RblLoadLitShader(d);
+    p->mat = LoadMaterialDefault();
+    p->mat.shader = p->geo;
+    p->mat.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    p->mat.maps[MATERIAL_MAP_NORMAL].value = 32.0f;                               // Blinn-Phong shininess
+    p->mat.params[1] = 0.7f;                                                      // Blinn-Phong intensity
+    p->mat.maps[MATERIAL_MAP_ROUGHNESS].value = 0.4f;                             // GGX
+    p->ok = RblIsGBufferValid(&p->g) && RblIsLitShaderValid(p->geo);
+}
+
+static void BrdfPassUnload(BrdfPass *p)
+{
+    if (RblIsLitShaderValid(p->geo)) RblUnloadLitShader(&p->geo);
+    MemFree(p->mat.maps);
+    RblUnloadGBuffer(&p->g);
+}
+
+// The geometry pass alone (frame = false) or the whole frame at 16 lights: geometry, lights, resolve
+static bool DrawBrdf(Scene *s, BrdfPass *p, bool frame)
+{
+    bool ok = SetLights(s->lights, 16, s->ambient) && RblBeginGBuffer(&p->g, s->camera);
+    if (ok)
+    {
+        RblDrawBillboard(s->camera, p->mat, s->floor);
+        RblEndGBuffer(&p->g);
+    }
+    if (!frame) return ok;
+    ok = ok && RblDrawDeferredLights(&p->g);
+    BeginTextureMode(s->target);
+    ClearBackground(BLANK);
+    if (ok) RblResolveGBuffer(&p->g);
+    EndTextureMode();
+    return ok;
+}
+
+typedef struct BrdfRun { Scene *s; BrdfPass *p; } BrdfRun;
+#define BRDF_CASES 6                        // geometry pass x 3 BRDFs, frame x 3 BRDFs
+#define BRDF_VALUES (2*BRDF_CASES + 1)      // ms, ratios, baseline
+
+// One run: every case once, each right after a baseline frame; ratios to the run's median baseline
+static void BrdfRoundRun(void *ctx, double *out)
+{
+    BrdfRun *r = (BrdfRun *)ctx;
+    double base[BRDF_CASES];
+    for (int i = 0; i < BRDF_CASES; i++)
+    {
+        rtFinish();
+        double t0 = BenchNowNs();
+        DrawBaseline(r->s);
+        rtFinish();
+        base[i] = (BenchNowNs() - t0)*1e-6;
+        out[i] = 0.0;
+        if (!r->p[i%3].ok) continue;
+        t0 = BenchNowNs();
+        DrawBrdf(r->s, &r->p[i%3], i >= 3);
+        rtFinish();
+        out[i] = (BenchNowNs() - t0)*1e-6;
+    }
+    double roundBase = BenchMedian(base, BRDF_CASES);
+    for (int i = 0; i < BRDF_CASES; i++) out[BRDF_CASES + i] = (roundBase > 0.0)? out[i]/roundBase : 0.0;
+    out[2*BRDF_CASES] = roundBase;
+}
+
+// ---- against the double reference (tests/lighting_reference.h), the GPU test's views ----------------
+// A tilted plane (normal no code) and a sphere Model (interpolated vertex normals), perspective and
+// orthographic, a point light near the surface and a directional light; resolved into RGBA8 (display),
+// RGBA16F and RGBA32F (display encoding, unrounded) and RGBA16F / RGBA32F linear output. Errors in
+// 1/255: 8-bit against the reference rounded, float against the reference, linear values above 1 relative.
+#define REF_SIZE    96
+#define REF_TARGETS 5
+static const char *refTargetKey[REF_TARGETS] = { "rgba8", "rgba16f", "rgba32f", "rgba16f_linear", "rgba32f_linear" };
+static const int refFormat[REF_TARGETS] = { PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32,
+                                            PIXELFORMAT_UNCOMPRESSED_R16G16B16A16, PIXELFORMAT_UNCOMPRESSED_R32G32B32A32 };
+
+typedef struct RefView { Camera3D camera; RblLight lights[2]; bool sphere; RblBillboard plane; bool hit[REF_SIZE*REF_SIZE]; D3 p[REF_SIZE*REF_SIZE], n[REF_SIZE*REF_SIZE]; } RefView;
+
+static void RefViewLoad(RefView *v, bool sphere, bool ortho, const RefMesh *mesh)
+{
+    memset(v, 0, sizeof(*v));
+    v->sphere = sphere;
+    RblLight point, sun;
+    memset(&point, 0, sizeof(point)); memset(&sun, 0, sizeof(sun));
+    point.type = RBL_LIGHT_POINT; point.color = (Color){ 255, 240, 220, 255 };
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.color = WHITE; sun.intensity = 0.6f;
+    if (sphere)
+    {
+        v->camera = makeCamera((Vector3){ 0.3f, 0.5f, 4.0f }, (Vector3){ 0.0f, 0.0f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        point.position = (Vector3){ 1.1f, 0.9f, 1.6f }; point.intensity = 3.0f; point.range = 5.0f;
+        sun.direction = (Vector3){ 0.5f, -0.3f, -1.0f };
+    }
+    else
+    {
+        v->camera = makeCamera((Vector3){ 0.0f, -2.5f, 2.0f }, (Vector3){ 0.0f, 0.5f, 0.0f }, (Vector3){ 0.0f, 1.0f, 0.0f });
+        point.position = (Vector3){ 0.3f, 0.5f, 0.35f }; point.intensity = 0.4f; point.range = 3.0f;
+        sun.direction = (Vector3){ 0.5f, -3.7f, -2.0f };
+        v->plane.size = (Vector2){ 40.0f, 40.0f }; v->plane.origin = (Vector2){ 20.0f, 20.0f };
+        v->plane.facing = RBL_FACING_FIXED;
+        v->plane.axis = Vector3Normalize((Vector3){ 0.21f, -0.13f, 1.0f });
+        v->plane.up = Vector3Normalize(Vector3CrossProduct(v->plane.axis, (Vector3){ 1.0f, 0.0f, 0.0f }));
+    }
+    v->lights[0] = point; v->lights[1] = sun;
+    if (ortho) { v->camera.projection = CAMERA_ORTHOGRAPHIC; v->camera.fovy = sphere? 2.9f : 3.6f; }
+    static bool sees[REF_SIZE*REF_SIZE];
+    D3 corners[4], normal = d3(0, 0, 1);
+    if (!sphere) refQuad(v->camera, &v->plane, corners, &normal);
+    for (int py = 0; py < REF_SIZE; py++)
+        for (int px = 0; px < REF_SIZE; px++)
+        {
+            int i = py*REF_SIZE + px;
+            D3 o, d;
+            refPixelRay(v->camera, REF_SIZE, REF_SIZE, px, py, &o, &d);
+            if (sphere) sees[i] = refMeshRay(mesh, o, d, &v->p[i], &v->n[i]);
+            else { sees[i] = refPixelOnPlane(v->camera, REF_SIZE, REF_SIZE, px, py, corners[0], normal, &v->p[i]); v->n[i] = normal; }
+        }
+    for (int py = 1; py < REF_SIZE - 1; py++)
+        for (int px = 1; px < REF_SIZE - 1; px++)
+        {
+            int i = py*REF_SIZE + px;
+            v->hit[i] = sees[i] && sees[i - 1] && sees[i + 1] && sees[i - REF_SIZE] && sees[i + REF_SIZE];
+        }
+}
+
+typedef struct RefCase { int brdf; float roughness, metalness, shininess, specular; } RefCase;
+typedef struct RefErr { double max, mean; } RefErr;
+
+// A colour target of a raylib format with a depth renderbuffer (the resolve writes depth)
+static RenderTexture2D RefTarget(int format)
+{
+    RenderTexture2D rt;
+    memset(&rt, 0, sizeof(rt));
+    rt.id = rlLoadFramebuffer();
+    rt.texture.id = rlLoadTexture(NULL, REF_SIZE, REF_SIZE, format, 1);
+    rt.texture.width = REF_SIZE; rt.texture.height = REF_SIZE; rt.texture.mipmaps = 1; rt.texture.format = format;
+    rt.depth.id = rlLoadTextureDepth(REF_SIZE, REF_SIZE, true);
+    rlFramebufferAttach(rt.id, rt.texture.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+    rlFramebufferAttach(rt.id, rt.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_RENDERBUFFER, 0);
+    return rt;
+}
+
+// One case in one view, each target against the reference (e per target); false when refused
+static bool RefRender(const RefView *v, RefCase c, Model *sphere, Texture2D albedo, RblGBuffer g[2], RefErr e[REF_TARGETS])
+{
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.brdf = c.brdf; d.maxLights = 2; d.lightFeatures = RblLightFeatures(v->lights, 2); d.deferred = true;
+    Shader geo = RblLoadLitShader(d);
+    Material m = LoadMaterialDefault();
+    m.shader = geo;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m.maps[MATERIAL_MAP_NORMAL].value = c.shininess;
+    m.maps[MATERIAL_MAP_ROUGHNESS].value = c.roughness;
+    m.maps[MATERIAL_MAP_METALNESS].value = c.metalness;
+    m.params[1] = c.specular;
+    const Color ambient = { 20, 22, 28, 255 };
+    bool ok = RblIsLitShaderValid(geo) && SetLights(v->lights, 2, ambient);
+    for (int k = 0; k < 2; k++)
+    {
+        ok = ok && RblBeginGBuffer(&g[k], v->camera);
+        if (!ok) break;
+        if (v->sphere)
+        {
+            Material keep = sphere->materials[0];
+            sphere->materials[0] = m;
+            RblDrawModel(*sphere, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+            sphere->materials[0] = keep;
+        }
+        else RblDrawBillboard(v->camera, m, v->plane);
+        RblEndGBuffer(&g[k]);
+        ok = RblDrawDeferredLights(&g[k]);
+    }
+    RefParams rp;
+    memset(&rp, 0, sizeof(rp));
+    rp.brdf = c.brdf; rp.roughness = c.roughness; rp.metalness = c.metalness; rp.shininess = c.shininess; rp.specular = c.specular;
+    RefEnvironment env;
+    memset(&env, 0, sizeof(env));
+    env.ambient = ambient;
+    const Color albedoColor = { 200, 160, 120, 255 };
+    for (int t = 0; ok && (t < REF_TARGETS); t++)
+    {
+        bool linear = (t >= 3);
+        RenderTexture2D rt = RefTarget(refFormat[t]);
+        BeginTextureMode(rt); ClearBackground(BLANK); RblResolveGBuffer(&g[linear? 1 : 0]); EndTextureMode();
+        float *px = rtReadFloatPixels(rt.texture.id, REF_SIZE, REF_SIZE);          // GL rows: bottom first
+        rlUnloadTexture(rt.texture.id);
+        rlUnloadFramebuffer(rt.id);
+        if (px == NULL) { ok = false; break; }
+        rp.linearOutput = linear;
+        double sum = 0.0;
+        int pixels = 0;
+        e[t].max = 0.0;
+        for (int py = 0; py < REF_SIZE; py++)
+            for (int x = 0; x < REF_SIZE; x++)
+            {
+                int i = py*REF_SIZE + x;
+                const float *q = &px[((REF_SIZE - 1 - py)*REF_SIZE + x)*4];
+                if (!v->hit[i] || (q[3] <= 0.0f)) continue;
+                RefSurface s;
+                memset(&s, 0, sizeof(s));
+                s.position = v->p[i]; s.normal = v->n[i]; s.albedo = refLinear(albedoColor); s.specularMap = -1.0; s.occlusion = 1.0;
+                RefRgb ref = refFinishAt(&rp, refShadeView(&rp, v->lights, 2, &env, &s, refViewVector(v->camera, s.position)), refViewDistance(v->camera, s.position));
+                const double want[3] = { ref.r, ref.g, ref.b };
+                for (int ch = 0; ch < 3; ch++)
+                {
+                    double err = (t == 0)? fabs(floor(q[ch]*255.0 + 0.5) - floor(want[ch]*255.0 + 0.5)) : fabs(q[ch] - want[ch])*255.0/fmax(1.0, want[ch]);
+                    e[t].max = fmax(e[t].max, err);
+                    sum += err;
+                }
+                pixels++;
+            }
+        e[t].mean = (pixels > 0)? sum/(3.0*pixels) : 0.0;
+        free(px);
+    }
+    MemFree(m.maps);
+    if (RblIsLitShaderValid(geo)) RblUnloadLitShader(&geo);
+    return ok;
+}
+
+// Worst max and mean per BRDF group (Lambert, Blinn-Phong, GGX metal/dielectric, GGX metalness between
+// codes) and target over its cases and the 4 views; rows reference_<group>_<target>
+#define REF_GROUPS 4
+static const char *refGroupKey[REF_GROUPS] = { "lambert", "blinn_phong", "ggx", "ggx_metal_between" };
+
+static bool ReferenceErrors(RefErr worst[REF_GROUPS][REF_TARGETS])
+{
+    static const RefCase cases[] = {
+        { RBL_BRDF_LAMBERT, 0, 0, 0, 0 },
+        { RBL_BRDF_BLINN_PHONG, 0, 0, 2.0f, 0.7f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 32.0f, 0.7f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 64.0f, 1.5f },
+        { RBL_BRDF_BLINN_PHONG, 0, 0, 300.0f, 0.7f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 1.2f }, { RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 0.03f },
+        { RBL_BRDF_GGX, 0.02f, 0, 0, 0 }, { RBL_BRDF_GGX, 0.1f, 0, 0, 0 }, { RBL_BRDF_GGX, 0.3f, 0, 0, 0 }, { RBL_BRDF_GGX, 1.0f, 0, 0, 0 },
+        { RBL_BRDF_GGX, 0.02f, 1, 0, 0 }, { RBL_BRDF_GGX, 0.05f, 1, 0, 0 }, { RBL_BRDF_GGX, 0.3f, 1, 0, 0 }, { RBL_BRDF_GGX, 1.0f, 1, 0, 0 },
+        { RBL_BRDF_GGX, 0.1f, 0.5f, 0, 0 }, { RBL_BRDF_GGX, 0.4f, 0.3f, 0, 0 },
+    };
+    memset(worst, 0, sizeof(RefErr)*REF_GROUPS*REF_TARGETS);
+    Model sphere = LoadModelFromMesh(GenMeshSphere(1.2f, 32, 32));
+    RefMesh mesh = refMeshOf(sphere.meshes[0], d3(0, 0, 0));
+    Image a = GenImageColor(1, 1, (Color){ 200, 160, 120, 255 });
+    Texture2D albedo = LoadTextureFromImage(a);
+    UnloadImage(a);
+    static RefView views[4];
+    for (int k = 0; k < 4; k++) RefViewLoad(&views[k], k >= 2, (k & 1) != 0, &mesh);
+    RblGBuffer g[3][2];
+    bool ok = true;
+    for (int b = 0; b < 3; b++)
+        for (int k = 0; k < 2; k++)
+        {
+            RblGBufferDesc gd;
+            memset(&gd, 0, sizeof(gd));
+            gd.width = REF_SIZE; gd.height = REF_SIZE; gd.brdf = b;
+            gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+            gd.linearOutput = (k == 1);
+            g[b][k] = RblLoadGBuffer(gd);
+            ok = ok && RblIsGBufferValid(&g[b][k]);
+        }
+    for (int i = 0; ok && (i < (int)(sizeof(cases)/sizeof(cases[0]))); i++)
+    {
+        RefCase c = cases[i];
+        int group = (c.brdf == RBL_BRDF_GGX)? (((c.metalness > 0.0f) && (c.metalness < 1.0f))? 3 : 2) : c.brdf;
+        for (int k = 0; ok && (k < 4); k++)
+        {
+            RefErr e[REF_TARGETS];
+            ok = RefRender(&views[k], c, &sphere, albedo, g[c.brdf], e);
+            for (int t = 0; ok && (t < REF_TARGETS); t++)
+            {
+                worst[group][t].max = fmax(worst[group][t].max, e[t].max);
+                worst[group][t].mean = fmax(worst[group][t].mean, e[t].mean);
+            }
+        }
+    }
+    for (int b = 0; b < 3; b++) { RblUnloadGBuffer(&g[b][0]); RblUnloadGBuffer(&g[b][1]); }
+    refMeshFree(&mesh);
+    UnloadTexture(albedo);
+    UnloadModel(sphere);
+    return ok;
+}
+
+//----------------------------------------------------------------------------------
+// Encoding error (CPU, double): 0.3's G-buffer codec, the previous one and this one, mirrored from
+// their layouts (previous: every BRDF's normal 18 + 18 bits, Blinn-Phong shininess 11 and intensity
+// 9; this one: Blinn-Phong normal 16 + 16, shininess 12, intensity 12)
+//----------------------------------------------------------------------------------
+typedef enum { CODEC_OLD = 0, CODEC_PREV, CODEC_NEW } Codec;
 
 // Octahedral code q in 0..levels-1 stands for e = q/(levels - 1)*2 - 1 (Cigolle et al. 2014)
 static D3 OctDecode(int qx, int qy, int levels)
@@ -378,8 +698,10 @@ static RefParams StoredParams(RefParams p, Codec c)
         double lo = log2(0.045);
         q.roughness = (float)exp2(lo*(1.0 - Quantize(1.0 - log2(fmin(fmax(p.roughness, 0.045), 1.0))/lo, 12)));
         q.metalness = (float)Quantize(p.metalness, 8);
-        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, 11)*11.0);
-        q.specular = (float)((exp2(Quantize(log2(1.0 + 256.0*p.specular)/9.0, 9)*9.0) - 1.0)/256.0);
+        int bits = (c == CODEC_PREV)? 11 : 12;
+        q.shininess = (float)exp2(Quantize(log2(fmax(p.shininess, 1.0))/11.0, bits)*11.0);
+        bits = (c == CODEC_PREV)? 9 : 12;
+        q.specular = (float)((exp2(Quantize(log2(1.0 + 256.0*p.specular)/9.0, bits)*9.0) - 1.0)/256.0);
     }
     return q;
 }
@@ -387,14 +709,18 @@ static RefParams StoredParams(RefParams p, Codec c)
 static D3 StoredNormal(D3 n, int brdf, Codec c)
 {
     if (c == CODEC_OLD) return OctRoundTrip(n, 4096, false);
-    (void)brdf;                                 // every BRDF: 2^18 - 1 levels per coordinate
-    return OctRoundTrip(n, 262143, true);
+    if ((c == CODEC_NEW) && (brdf == RBL_BRDF_BLINN_PHONG)) return OctRoundTrip(n, 65535, true);     // 2^16 - 1 levels
+    return OctRoundTrip(n, 262143, true);       // 2^18 - 1 levels per coordinate
 }
 
+// Per target: the display encoding unrounded (a float target), rounded to 8 bits on both sides, and
+// linear output (values above 1 relative)
+enum { ENC_FLOAT = 0, ENC_8BIT, ENC_LINEAR, ENC_TARGETS };
+static const char *encTargetKey[ENC_TARGETS] = { "float", "8bit", "linear" };
 typedef struct EncError { double max, mean; } EncError;
 
 // The GPU sweep test's scenes (tests/test_deferred.c, defSweepScene), shaded in double at each pixel centre
-static EncError EncodingError(RefParams p, bool sphere, Codec c)
+static void EncodingError(RefParams p, bool sphere, Codec c, EncError out[ENC_TARGETS])
 {
     const int size = 128;
     Camera3D cam;
@@ -422,8 +748,10 @@ static EncError EncodingError(RefParams p, bool sphere, Codec c)
     RefParams q = StoredParams(p, c);
     D3 eye = d3f(cam.position), f = dNorm(dSub(d3f(cam.target), eye));
     D3 right = dNorm(dCross(f, d3f(cam.up))), up = dCross(right, f);
-    double t = tan(cam.fovy*PI/360.0), sum = 0.0;
-    EncError e = { 0.0, 0.0 };
+    double t = tan(cam.fovy*PI/360.0), sum[ENC_TARGETS] = { 0.0, 0.0, 0.0 };
+    for (int k = 0; k < ENC_TARGETS; k++) out[k].max = out[k].mean = 0.0;
+    RefParams pl = p, ql = q;
+    pl.linearOutput = true; ql.linearOutput = true;
     int pixels = 0;
     for (int py = 0; py < size; py++)
         for (int px = 0; px < size; px++)
@@ -449,14 +777,19 @@ static EncError EncodingError(RefParams p, bool sphere, Codec c)
             s.occlusion = 1.0;
             RefSurface stored = s;
             stored.normal = StoredNormal(s.normal, p.brdf, c);
-            RefRgb a = refFinish(&p, refShade(&p, lights, 2, &env, &s, eye), s.position, eye);
-            RefRgb b = refFinish(&q, refShade(&q, lights, 2, &env, &stored, eye), s.position, eye);
-            double d[3] = { fabs(a.r - b.r)*255.0, fabs(a.g - b.g)*255.0, fabs(a.b - b.b)*255.0 };
-            for (int k = 0; k < 3; k++) { e.max = fmax(e.max, d[k]); sum += d[k]; }
+            RefRgb ea = refShade(&p, lights, 2, &env, &s, eye), eb = refShade(&q, lights, 2, &env, &stored, eye);
+            RefRgb a = refFinish(&p, ea, s.position, eye), b = refFinish(&q, eb, s.position, eye);
+            RefRgb la = refFinish(&pl, ea, s.position, eye), lb = refFinish(&ql, eb, s.position, eye);
+            const double av[3] = { a.r, a.g, a.b }, bv[3] = { b.r, b.g, b.b }, lav[3] = { la.r, la.g, la.b }, lbv[3] = { lb.r, lb.g, lb.b };
+            for (int k = 0; k < 3; k++)
+            {
+                double d[ENC_TARGETS] = { fabs(av[k] - bv[k])*255.0, fabs(floor(av[k]*255.0 + 0.5) - floor(bv[k]*255.0 + 0.5)),
+                                          fabs(lav[k] - lbv[k])*255.0/fmax(1.0, lav[k]) };
+                for (int e = 0; e < ENC_TARGETS; e++) { out[e].max = fmax(out[e].max, d[e]); sum[e] += d[e]; }
+            }
             pixels++;
         }
-    e.mean = (pixels > 0)? sum/(3.0*pixels) : 0.0;
-    return e;
+    for (int e = 0; e < ENC_TARGETS; e++) out[e].mean = (pixels > 0)? sum[e]/(3.0*pixels) : 0.0;
 }
 
 // Worst and mean angle (degrees) of a normal code over a uniform sphere sample
@@ -477,12 +810,12 @@ static void NormalCodeError(int levels, bool nearest, double *mean, double *wors
 
 static void EncodingRows(void)
 {
-    const char *normalName[3] = { "old_12x12_rounded", "30bit_nearest", "36bit_nearest" };   // 0.3, the 48-bit word's, now
-    const int normalLevels[3] = { 4096, 32767, 262143 };
-    double nMean[3], nMax[3];
-    printf("\ndeferred: G-buffer encoding error (CPU, double reference; no GL), 0.3's codec -> this one\n");
+    const char *normalName[4] = { "old_12x12_rounded", "30bit_nearest", "32bit_nearest", "36bit_nearest" };   // 0.3, a 30-bit word's, Blinn-Phong's, GGX's
+    const int normalLevels[4] = { 4096, 32767, 65535, 262143 };
+    double nMean[4], nMax[4];
+    printf("\ndeferred: G-buffer encoding error (CPU, double reference; no GL), 0.3's codec, the previous one, this one\n");
     printf("  normal codes over 400000 uniform sphere normals (degrees):\n");
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 4; k++)
     {
         NormalCodeError(normalLevels[k], k > 0, &nMean[k], &nMax[k]);
         char name[64];
@@ -491,29 +824,40 @@ static void EncodingRows(void)
         BenchCsvRow(SUITE, name, "max_deg", nMax[k], "deg");
         printf("    %-22s %6d levels per coordinate: mean %.6f  max %.6f\n", normalName[k], normalLevels[k], nMean[k], nMax[k]);
     }
-    printf("  image error from the stored surface alone, 1/255 before 8-bit rounding (the GPU sweep test's scenes):\n");
-    printf("    %-40s %21s %21s\n", "", "plane old -> new", "sphere old -> new");
+    printf("  image error from the stored surface alone, 1/255 before 8-bit rounding (the GPU sweep test's scenes), max/mean:\n");
+    printf("    %-40s %30s %30s\n", "", "plane old / prev / new", "sphere old / prev / new");
     typedef struct { int brdf; float roughness, metalness, shininess, specular; } Case;
-    Case cases[20];
+    Case cases[32];
     int n = 0;
     cases[n++] = (Case){ RBL_BRDF_LAMBERT, 0, 0, 0, 0 };
     const float shininess[6] = { 4.0f, 16.0f, 64.0f, 256.0f, 600.0f, 1024.0f };
     for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, shininess[i], 0.5f };
     cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, 1024.0f, 0.03f };
+    // Values between two codes of the previous codec (the GPU reference test's)
+    const float between[6][2] = { { 2.0f, 0.7f }, { 32.0f, 0.7f }, { 64.0f, 0.8f }, { 64.0f, 1.5f }, { 300.0f, 0.7f }, { 1024.0f, 1.2f } };
+    for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_BLINN_PHONG, 0, 0, between[i][0], between[i][1] };
     const float roughness[6] = { 0.02f, 0.05f, 0.1f, 0.3f, 0.6f, 1.0f };
     for (int metal = 0; metal < 2; metal++)
         for (int i = 0; i < 6; i++) cases[n++] = (Case){ RBL_BRDF_GGX, roughness[i], (float)metal, 0, 0 };
+    cases[n++] = (Case){ RBL_BRDF_GGX, 0.1f, 0.5f, 0, 0 };
+    cases[n++] = (Case){ RBL_BRDF_GGX, 0.4f, 0.3f, 0, 0 };
+    // Worst per group (Lambert, Blinn-Phong, GGX metal/dielectric, GGX metalness between) and target
+    const char *groupKey[4] = { "lambert", "blinn_phong", "ggx", "ggx_metal_between" };
+    EncError worst[4][2][ENC_TARGETS];          // [group][prev, new][target]
+    memset(worst, 0, sizeof(worst));
     for (int i = 0; i < n; i++)
     {
         RefParams p;
         memset(&p, 0, sizeof(p));
         p.brdf = cases[i].brdf; p.roughness = cases[i].roughness; p.metalness = cases[i].metalness;
         p.shininess = cases[i].shininess; p.specular = cases[i].specular;
+        int group = (p.brdf == RBL_BRDF_GGX)? (((p.metalness > 0.0f) && (p.metalness < 1.0f))? 3 : 2) : p.brdf;
         char label[64], key[64];
         if (p.brdf == RBL_BRDF_GGX)
         {
-            snprintf(label, sizeof(label), "GGX roughness %.2f %s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
-            snprintf(key, sizeof(key), "ggx_r%.2f_%s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
+            snprintf(label, sizeof(label), "GGX roughness %.2f metalness %.1f", p.roughness, p.metalness);
+            if ((p.metalness == 0.0f) || (p.metalness == 1.0f)) snprintf(key, sizeof(key), "ggx_r%.2f_%s", p.roughness, (p.metalness > 0.5f)? "metal" : "dielectric");
+            else snprintf(key, sizeof(key), "ggx_r%.2f_m%.2f", p.roughness, p.metalness);
         }
         else if (p.brdf == RBL_BRDF_BLINN_PHONG)
         {
@@ -524,18 +868,44 @@ static void EncodingRows(void)
         printf("    %-40s", label);
         for (int surface = 0; surface < 2; surface++)
         {
-            EncError old = EncodingError(p, surface == 1, CODEC_OLD), now = EncodingError(p, surface == 1, CODEC_NEW);
+            EncError e[3][ENC_TARGETS];
+            for (int c = 0; c < 3; c++) EncodingError(p, surface == 1, (Codec)c, e[c]);
             char name[96];
             snprintf(name, sizeof(name), "encoding_%s_%s", key, surface? "sphere" : "plane");
-            BenchCsvRow(SUITE, name, "old_max", old.max, "1/255");
-            BenchCsvRow(SUITE, name, "old_mean", old.mean, "1/255");
-            BenchCsvRow(SUITE, name, "new_max", now.max, "1/255");
-            BenchCsvRow(SUITE, name, "new_mean", now.mean, "1/255");
-            printf("  %5.2f/%5.3f -> %4.2f/%5.3f", old.max, old.mean, now.max, now.mean);
+            BenchCsvRow(SUITE, name, "old_max", e[CODEC_OLD][ENC_FLOAT].max, "1/255");
+            BenchCsvRow(SUITE, name, "old_mean", e[CODEC_OLD][ENC_FLOAT].mean, "1/255");
+            BenchCsvRow(SUITE, name, "prev_max", e[CODEC_PREV][ENC_FLOAT].max, "1/255");
+            BenchCsvRow(SUITE, name, "prev_mean", e[CODEC_PREV][ENC_FLOAT].mean, "1/255");
+            BenchCsvRow(SUITE, name, "new_max", e[CODEC_NEW][ENC_FLOAT].max, "1/255");
+            BenchCsvRow(SUITE, name, "new_mean", e[CODEC_NEW][ENC_FLOAT].mean, "1/255");
+            printf("  %5.2f/%5.3f %4.2f/%5.3f %4.2f/%5.3f", e[CODEC_OLD][ENC_FLOAT].max, e[CODEC_OLD][ENC_FLOAT].mean, e[CODEC_PREV][ENC_FLOAT].max,
+                   e[CODEC_PREV][ENC_FLOAT].mean, e[CODEC_NEW][ENC_FLOAT].max, e[CODEC_NEW][ENC_FLOAT].mean);
+            for (int c = 0; c < 2; c++)
+                for (int t = 0; t < ENC_TARGETS; t++)
+                {
+                    worst[group][c][t].max = fmax(worst[group][c][t].max, e[CODEC_PREV + c][t].max);
+                    worst[group][c][t].mean = fmax(worst[group][c][t].mean, e[CODEC_PREV + c][t].mean);
+                }
         }
         printf("\n");
     }
-    printf("  (max/mean per surface)\n");
+    printf("  worst per group, previous codec -> this one, max/mean 1/255 (float: display encoding unrounded; 8bit: both\n");
+    printf("  rounded; linear: linear output, relative above 1):\n");
+    for (int g = 0; g < 4; g++)
+    {
+        printf("    %-20s", groupKey[g]);
+        for (int t = 0; t < ENC_TARGETS; t++)
+        {
+            char name[64];
+            snprintf(name, sizeof(name), "encoding_%s_%s", groupKey[g], encTargetKey[t]);
+            BenchCsvRow(SUITE, name, "prev_max", worst[g][0][t].max, "1/255");
+            BenchCsvRow(SUITE, name, "prev_mean", worst[g][0][t].mean, "1/255");
+            BenchCsvRow(SUITE, name, "new_max", worst[g][1][t].max, "1/255");
+            BenchCsvRow(SUITE, name, "new_mean", worst[g][1][t].mean, "1/255");
+            printf("  %s %4.2f/%5.3f -> %4.2f/%5.3f", encTargetKey[t], worst[g][0][t].max, worst[g][0][t].mean, worst[g][1][t].max, worst[g][1][t].mean);
+        }
+        printf("\n");
+    }
     printf("  first-order worst case on a highlight's flank, 255 sRGB'(1) (2/alpha) x worst normal error (GGX;\n");
     printf("  first order holds while that error is small beside alpha: 0.3's figures at 0.045-0.05 only say 'far off'):\n");
     const float flank[4] = { 0.045f, 0.05f, 0.1f, 0.3f };
@@ -546,8 +916,21 @@ static void EncodingRows(void)
         snprintf(name, sizeof(name), "flank_bound_ggx_r%.3f", flank[i]);
         BenchCsvRow(SUITE, name, "old", k*nMax[0], "1/255");
         BenchCsvRow(SUITE, name, "30bit", k*nMax[1], "1/255");
+        BenchCsvRow(SUITE, name, "32bit", k*nMax[2], "1/255");
+        BenchCsvRow(SUITE, name, "new", k*nMax[3], "1/255");
+        printf("    roughness %.3f: 0.3's codec %6.1f/255, a 30-bit normal %5.1f/255, 32-bit %5.2f/255, GGX's 36 bits %5.2f/255\n", flank[i], k*nMax[0], k*nMax[1], k*nMax[2], k*nMax[3]);
+    }
+    // Blinn-Phong's lobe as a GGX alpha (Walter et al. 2007: n = 2/alpha^2 - 2): its sharpest (n = 2048)
+    // is a GGX roughness of 0.177, where 32 bits keep the bound GGX's 36 keep at 0.045-0.05 twice over
+    const float blinn[2] = { 1024.0f, 2048.0f };
+    for (int i = 0; i < 2; i++)
+    {
+        double alpha = sqrt(2.0/(blinn[i] + 2.0)), k = 255.0*(1.055/2.4)*2.0/alpha*PI/180.0;
+        char name[64];
+        snprintf(name, sizeof(name), "flank_bound_blinn_phong_n%.0f", blinn[i]);
+        BenchCsvRow(SUITE, name, "prev", k*nMax[3], "1/255");
         BenchCsvRow(SUITE, name, "new", k*nMax[2], "1/255");
-        printf("    roughness %.3f: 0.3's codec %6.1f/255, a 30-bit normal %5.1f/255, this one (36 bits) %5.2f/255\n", flank[i], k*nMax[0], k*nMax[1], k*nMax[2]);
+        printf("    Blinn-Phong n %4.0f (GGX alpha %.4f): previous 36 bits %5.2f/255, this one (32 bits) %5.2f/255\n", blinn[i], alpha, k*nMax[3], k*nMax[2]);
     }
 }
 
@@ -713,7 +1096,45 @@ int main(void)
         if ((crossover == 0) && (vsForward[c] > 1.0)) crossover = counts[c];
     }
 
+    // ---- geometry pass and frame per BRDF (the G-buffer codec's cost), then the reference errors -----
+    static BrdfPass brdfPass[3];
+    BrdfRun brdfRun = { s, brdfPass };
+    double brdfMed[BRDF_VALUES];
+    int brdfRuns = 0;
+    for (int b = 0; b < 3; b++)
+    {
+        BrdfPassLoad(&brdfPass[b], b, s->albedo);
+        brdfPass[b].ok = brdfPass[b].ok && DrawBrdf(s, &brdfPass[b], true);      // also the warm-up
+        if (!brdfPass[b].ok) { printf("bench_deferred: %s G-buffer pass refused\n", brdfKey[b]); problems++; }
+    }
+    const BenchTiming brdfTiming = { 1, 5, 15, 6e9 };
+    brdfRuns = BenchMedianOfRuns(BrdfRoundRun, &brdfRun, BRDF_VALUES, brdfTiming, brdfMed);
+    for (int b = 0; b < 3; b++) BrdfPassUnload(&brdfPass[b]);
+
+    // Its 6 G-buffers' passes need the program registry's room: the frame-cost scene's programs first go
+    for (int c = 0; c < COUNTS; c++) if (RblIsLitShaderValid(s->fwd[c])) RblUnloadLitShader(&s->fwd[c]);
+    if (RblIsLitShaderValid(s->geo)) RblUnloadLitShader(&s->geo);
+    RblUnloadGBuffer(&s->g);
+    RefErr refWorst[REF_GROUPS][REF_TARGETS];
+    bool refOk = ReferenceErrors(refWorst);
+    if (!refOk) { printf("bench_deferred: the reference views were refused\n"); problems++; }
+
     // ---- rows ----------------------------------------------------------------------------------------
+    for (int i = 0; i < BRDF_CASES; i++)
+    {
+        char name[64];
+        snprintf(name, sizeof(name), (i < 3)? "geometry_pass_%s" : "deferred_frame_%s_16lights", brdfKey[i%3]);
+        BenchCsvRow(SUITE, name, "ms_per_frame_1280x720", brdfMed[i], "ms");
+        BenchCsvRow(SUITE, name, "ratio_to_raylib", brdfMed[BRDF_CASES + i], "x");
+    }
+    for (int grp = 0; refOk && (grp < REF_GROUPS); grp++)
+        for (int t = 0; t < REF_TARGETS; t++)
+        {
+            char name[64];
+            snprintf(name, sizeof(name), "reference_%s_%s", refGroupKey[grp], refTargetKey[t]);
+            BenchCsvRow(SUITE, name, "max", refWorst[grp][t].max, "1/255");
+            BenchCsvRow(SUITE, name, "mean", refWorst[grp][t].mean, "1/255");
+        }
     BenchCsvRow(SUITE, "gbuffer", "bytes_per_pixel", bpp, "B");
     BenchCsvRow(SUITE, "gbuffer", "gl_bytes_per_pixel", glColour, "B");
     BenchCsvRow(SUITE, "gbuffer_albedo", "bytes_per_pixel", albedoB, "B");
@@ -759,15 +1180,9 @@ int main(void)
     }
 
     // ---- release -------------------------------------------------------------------------------------
-    for (int c = 0; c < COUNTS; c++)
-    {
-        if (RblIsLitShaderValid(s->fwd[c])) RblUnloadLitShader(&s->fwd[c]);
-        MemFree(s->fwdMat[c].maps);
-    }
-    if (RblIsLitShaderValid(s->geo)) RblUnloadLitShader(&s->geo);
+    for (int c = 0; c < COUNTS; c++) MemFree(s->fwdMat[c].maps);
     MemFree(s->geoMat.maps);
     MemFree(s->rayMat.maps);
-    RblUnloadGBuffer(&s->g);
     UnloadMesh(s->plane);
     UnloadTexture(s->albedo);
     UnloadRenderTexture(s->target);
@@ -779,8 +1194,8 @@ int main(void)
     printf("  RblGBufferBytesPerPixel %d = albedo %d + normal %d + params %d (GL reports %.0f + %.0f + %.0f = %.0f)\n",
            bpp, albedoB, normalB, paramsB, glAlbedo, glNormal, glParams, glColour);
     printf("  not counted: depth %.0f (GL depth bits %.0f) and accumulation RGBA16F %d (GL %.0f)\n", glDepth, glDepth*8.0, accumB, glAccum);
-    if (fabs(glDepth*8.0 - 24.0) > 1e-9)
-        printf("  note: the header documents a 24-bit depth texture; rlLoadTextureDepth asks desktop GL for unsized GL_DEPTH_COMPONENT and this driver allocated %.0f bits\n", glDepth*8.0);
+    if (fabs(glDepth*8.0 - 32.0) > 1e-9)
+        printf("  note: the G-buffer asks for a 32-bit float depth texture; this context kept the driver's %.0f-bit format\n", glDepth*8.0);
     printf("  for comparison (constants from their sources): seed pipeline %d, raylib's deferred example %d\n", SEED_BYTES, RAYLIB_EXAMPLE_BYTES);
 
     printf("\ndeferred: ms per frame, %dx%d, a floor filling the screen, n point lights of range 0.3-0.8 (%s BRDF); %s context\n",
@@ -820,6 +1235,23 @@ int main(void)
         for (int c = 0; c < COUNTS; c++) agreeOk = agreeOk && (agree[c].worst <= 1) && (agree[c].coverage == 0);
         printf(" over %d covered pixels (limit 1/255: %s)\n", agree[last].pixels, agreeOk? "ok" : "EXCEEDED");
         if (fwdVsDef.worst >= 0) printf("  check: forward vs deferred at 16 lights (one forward pass) max %d/255 over %d pixels\n", fwdVsDef.worst, fwdVsDef.pixels);
+    }
+    printf("\ndeferred: G-buffer pass per BRDF, ms per frame %dx%d (the floor; median of %d runs, each case right after a baseline frame)\n", FRAME_W, FRAME_H, brdfRuns);
+    printf("  %-12s %16s %16s\n", "", "geometry pass", "frame, 16 lights");
+    for (int b = 0; b < 3; b++)
+        printf("  %-12s %9.2f %5.2fx %9.2f %5.2fx\n", brdfKey[b], brdfMed[b], brdfMed[BRDF_CASES + b], brdfMed[3 + b], brdfMed[BRDF_CASES + 3 + b]);
+    if (refOk)
+    {
+        printf("\ndeferred: against the double reference (GPU; tilted plane and sphere Model, perspective and orthographic),\n");
+        printf("  worst max / mean in 1/255 per group (linear: relative above 1)\n  %-20s", "");
+        for (int t = 0; t < REF_TARGETS; t++) printf(" %15s", refTargetKey[t]);
+        printf("\n");
+        for (int grp = 0; grp < REF_GROUPS; grp++)
+        {
+            printf("  %-20s", refGroupKey[grp]);
+            for (int t = 0; t < REF_TARGETS; t++) printf("    %5.2f %5.3f", refWorst[grp][t].max, refWorst[grp][t].mean);
+            printf("\n");
+        }
     }
     EncodingRows();
     printf("bench_deferred: done in %.1f s, rows in %s%s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath(), problems? " (with problems, see above)" : "");
