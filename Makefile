@@ -19,7 +19,7 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
+.PHONY: all run quickstart test bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
@@ -141,7 +141,7 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/readme_run $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" RAYLIB_MASTER="$(RAYLIB_MASTER)" bash tests/run.sh
 
 # raylib master's source for make test's optional check against its headers (needs the network;
@@ -182,6 +182,32 @@ run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	else \
 	  echo "run: no display; rendering the showcase headlessly"; \
 	  $(BUILD)/showcase_headless $(BUILD)/showcase.png; \
+	fi
+
+# The README's code as printed: the quick start and every how-to, run headlessly (make test checks
+# each picture); make quickstart builds the quick start alone and runs it in examples/ (a window when
+# a display exists, else build/quickstart.png through the headless runner)
+$(BUILD)/tests/readme_code.inc: README.md tests/tools/readme_code.sh
+	@mkdir -p $(@D)
+	@bash tests/tools/readme_code.sh README.md $@
+
+$(BUILD)/readme_run: tests/tools/readme_run.c $(BUILD)/tests/readme_code.inc $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) -I$(BUILD)/tests tests/tools/readme_run.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/quickstart.c: README.md
+	@mkdir -p $(@D)
+	@awk '/^<!-- run: quickstart -->$$/ {m=1; next} m && /^```c$$/ {f=1; next} f && /^```$$/ {exit} f' README.md > $@
+
+$(BUILD)/quickstart: $(BUILD)/quickstart.c $(HEADER) $(BUILD)/raylib.mk
+	$(CC) $(BENCH_CFLAGS) -I. $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
+
+quickstart: $(BUILD)/quickstart $(BUILD)/readme_run
+	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
+	  cd examples && $(abspath $(BUILD))/quickstart; \
+	else \
+	  echo "quickstart: no display; running it headlessly"; \
+	  cd examples && ASAN_OPTIONS=detect_leaks=0 $(abspath $(BUILD))/readme_run $(abspath $(BUILD)) | grep quickstart; \
 	fi
 
 # ---- benchmarks ---------------------------------------------------------------------------
@@ -335,8 +361,9 @@ $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.m
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-pictures: $(BUILD)/pictures $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless run
+pictures: $(BUILD)/pictures $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/readme_run run
 	@mkdir -p examples/resources
+	@cd examples && ASAN_OPTIONS=detect_leaks=0 $(abspath $(BUILD))/readme_run resources | sed -n 's/^    wrote /pictures: wrote examples\//p'
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png
