@@ -1096,6 +1096,7 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module lifetime
 RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+RBLAPI const char *RblGetFailureReason(void);                                // Why the last refused call failed: its log line without "RBL: " ("" before any; kept until the next refusal)
 
 // Geometry (CPU, no GL needed)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
@@ -1214,6 +1215,11 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
     #define RBL_REALLOC(ptr,sz)  realloc(ptr,sz)
     #define RBL_FREE(ptr)        free(ptr)
 #endif
+
+// Every header TraceLog goes through rbl__traceLog, which keeps the text of the last refusal
+// (warnings starting "RBL: ") for RblGetFailureReason and hands the same line to raylib's TraceLog
+static void rbl__traceLog(int level, const char *text, ...);
+#define TraceLog(...) rbl__traceLog(__VA_ARGS__)
 
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
@@ -1484,6 +1490,7 @@ typedef struct rbl__State {
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
+    char failure[512];              // The last refusal line without "RBL: " (RblGetFailureReason)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
     int liveCount;                  // Slots used (free ones are reused)
@@ -1491,6 +1498,19 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+
+static void rbl__traceLog(int level, const char *text, ...)
+{
+    char line[sizeof(rbl__state.failure) + 5];
+    va_list args;
+    va_start(args, text);
+    vsnprintf(line, sizeof(line), text, args);
+    va_end(args);
+    if ((level >= LOG_WARNING) && (strncmp(line, "RBL: ", 5) == 0)) memcpy(rbl__state.failure, line + 5, strlen(line + 5) + 1);
+    (TraceLog)(level, "%s", line);
+}
+
+const char *RblGetFailureReason(void) { return rbl__state.failure; }
 
 // The GLSL dialect of rlgl's context (shaders/dialect.glsl): 330 desktop GL 3.3/4.3, 300 ES 3 and
 // WebGL2, 120 GL 2.1, 100 ES 2 and WebGL1; 0 for a context this header cannot shade (GL 1.1, software)
