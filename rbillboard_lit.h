@@ -256,7 +256,7 @@
 *       own, so later forward draws test against it; lighting tolerates its far-field error.
 *       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
-*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, kept for
+*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, RBL_INSTRUMENTS, kept for
 *       comparison). Debug views: RblSetGBufferOutput.
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
@@ -471,6 +471,12 @@
 *   CONFIGURATION:
 *       #define RBILLBOARD_LIT_IMPLEMENTATION
 *           Generates the implementation in the including file (exactly one translation unit).
+*       #define RBL_NO_ATLAS
+*           Leaves out the sprite-sheet module (atlas readers, player, sectors: SPRITE SHEETS); the
+*           rest of the header does not depend on it.
+*       #define RBL_INSTRUMENTS
+*           Adds what the tests and benchmarks measure with: RblMeasureNormalEncoding, the G-buffer's
+*           naiveFullscreen baseline and forced-failure hooks (not for games).
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
@@ -493,6 +499,8 @@
 *           1..2^26. The reader holds the text's values at once (20 bytes each).
 *           Input beyond any limit is refused with one log line; world positions and camera vectors
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
+*       #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f
+*           Seconds a frame shows where its atlas states no duration (libGDX, TexturePacker).
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
@@ -629,6 +637,9 @@
 #endif
 #ifndef RBL_MAX_ATLAS_ENTRIES
     #define RBL_MAX_ATLAS_ENTRIES 16777216      // JSON values one atlas text may hold, and rows of each atlas table (2^24; at most 2^26)
+#endif
+#ifndef RBL_SPRITE_DEFAULT_FRAME_TIME
+    #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // Seconds a frame shows where the atlas gives no duration (libGDX, TexturePacker)
 #endif
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
@@ -808,13 +819,15 @@ typedef struct RblPackedMaterial {
     RblMaterialLayout layout;       // What is stored where
 } RblPackedMaterial;
 
-// Angular error of a normal encoding, in degrees
+#if defined(RBL_INSTRUMENTS)
+// Angular error of a normal encoding, in degrees (an instrument of the tests and benchmarks)
 typedef struct RblNormalErrorStats {
     double mean;                    // Mean angular error
     double p99;                     // 99th percentile
     double max;                     // Maximum
     int count;                      // Normals measured
 } RblNormalErrorStats;
+#endif
 
 // Light types (RblLight.type)
 typedef enum {
@@ -858,6 +871,16 @@ typedef enum {
     RBL_TONEMAP_REINHARD,           // c/(1 + c)
     RBL_TONEMAP_ACES                // ACES filmic fit (Narkowicz 2015)
 } RblTonemap;
+
+// What a lit program writes instead of the lit colour (RblLitShaderDesc.debugOutput)
+typedef enum {
+    RBL_DEBUG_OUTPUT_NONE = 0,      // The lit colour
+    RBL_DEBUG_OUTPUT_TANGENT_NORMAL, // The tangent-space normal the maps give
+    RBL_DEBUG_OUTPUT_WORLD_NORMAL,  // The shading normal in world space
+    RBL_DEBUG_OUTPUT_SPECULAR,      // The specular map
+    RBL_DEBUG_OUTPUT_OCCLUSION,     // The occlusion map
+    RBL_DEBUG_OUTPUT_COUNT
+} RblDebugOutput;
 
 // Light: a plain value; arrays of them are owned by the caller (no hidden global state)
 typedef struct RblLight {
@@ -903,7 +926,7 @@ typedef struct RblLitShaderDesc {
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBillboard.fade, RblInstancedDesc.fades): every map fetched twice
-    int debugOutput;                // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    int debugOutput;                // RblDebugOutput (0 = the lit colour)
 } RblLitShaderDesc;
 
 // Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
@@ -952,7 +975,9 @@ typedef struct RblGBuffer {
     RblGBufferDesc desc;            // Settings, defaults applied
     int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
     float outputScale;              // Range of the depth/position/light-count outputs
-    bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
+#if defined(RBL_INSTRUMENTS)
+    bool naiveFullscreen;           // Light every light in full-screen passes (the benchmarks' baseline)
+#endif
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
     unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
@@ -995,6 +1020,7 @@ typedef struct RblScene {
     Texture2D depth;                // Opaque scene depth for soft particles: RblLoadSceneTarget's .depth or a G-buffer's (id 0 = none)
 } RblScene;
 
+#if !defined(RBL_NO_ATLAS)
 // Sprite-sheet atlas formats (RblLoadAtlasFromMemory; RblLoadAtlas detects by content)
 typedef enum {
     RBL_ATLAS_AUTO = 0,             // Detect: JSON (Aseprite when meta.app names it, else TexturePacker) or libGDX text
@@ -1086,6 +1112,7 @@ typedef struct RblSpritePlayer {
     int loops;                      // Passes to play (0 = forever)
     bool finished;                  // The last pass ended: the frame stays on its last frame
 } RblSpritePlayer;
+#endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
@@ -1122,7 +1149,9 @@ RBLAPI bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *
 RBLAPI void RblUnloadPackedMaterial(RblPackedMaterial *packed);               // Free packed Images
 RBLAPI void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3]); // Encode a unit tangent-space normal (RG used; RGB for RBL_NORMAL_RGB)
 RBLAPI Vector3 RblDecodeNormal(const unsigned char in[3], int encoding);     // Decode as the shaders do (unit length, never NaN)
-RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals
+#if defined(RBL_INSTRUMENTS)
+RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals (RBL_INSTRUMENTS)
+#endif
 RBLAPI Image RblGenNormalMapFromHeight(Image height, float strength, bool wrap); // Tangent-space normal map (OpenGL convention) from a height map (grey)
 RBLAPI Image RblGenHeightFromLuminance(Image albedo);                         // Height (grey) from albedo luminance, for RblGenNormalMapFromHeight
 RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength); // Cavity occlusion (grey) from a height map
@@ -1143,7 +1172,7 @@ RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         /
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
 RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
 RBLAPI void RblEndSceneDepth(void);                                            // Show that world on the current target with its depth; soft particles read it (unless RblScene.depth is given)
-RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
+RBLAPI bool RblIsGBufferValid(RblGBuffer gbuffer);                             // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
 RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
@@ -1161,10 +1190,11 @@ RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int ligh
 RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
+#if !defined(RBL_NO_ATLAS)
 // Sprite-sheet atlases and animation (CPU, no GL needed)
 RBLAPI RblAtlas RblLoadAtlas(const char *fileName);                          // Load an atlas file (format detected; TexturePacker multipacks follow related_multi_packs); invalid + log on failure
 RBLAPI RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format); // Parse size bytes of atlas text (RblAtlasFormat, 0 = detect); invalid + log on failure
-RBLAPI bool RblIsAtlasValid(const RblAtlas *atlas);                           // Check it is a loaded atlas (not zero, not unloaded)
+RBLAPI bool RblIsAtlasValid(RblAtlas atlas);                                  // Check it is a loaded atlas (not zero, not unloaded)
 RBLAPI void RblUnloadAtlas(RblAtlas *atlas);                                  // Free the atlas's tables and zero it
 RBLAPI int RblAtlasFindFrame(const RblAtlas *atlas, const char *name);        // First frame of that name; -1 when none
 RBLAPI int RblAtlasFindTag(const RblAtlas *atlas, const char *name);          // First tag of that name; -1 when none
@@ -1182,6 +1212,7 @@ RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *insta
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
 RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
+#endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
 }
@@ -1487,8 +1518,10 @@ typedef struct rbl__State {
     RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
+#if defined(RBL_INSTRUMENTS)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
+#endif
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     char failure[512];              // The last refusal line without "RBL: " (RblGetFailureReason)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
@@ -1498,6 +1531,11 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+#if defined(RBL_INSTRUMENTS)
+    #define RBL__HOOK(name) (rbl__state.name)
+#else
+    #define RBL__HOOK(name) false
+#endif
 
 static void rbl__traceLog(int level, const char *text, ...)
 {
@@ -2300,7 +2338,7 @@ static const char *const rbl__shader_lit_fs[] = {
     "#include \"output.glsl\"\n",
     "#include \"soft.glsl\"\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
-    "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
+    "//   RBL_DEBUG_OUTPUT v         RblDebugOutput: 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
     "#if RBL_GLSL >= 300\n",
     "out vec4 finalColor;\n",
@@ -5372,6 +5410,7 @@ Vector3 RblDecodeNormal(const unsigned char in[3], int encoding)
     return rbl__decode(in, encoding);
 }
 
+#if defined(RBL_INSTRUMENTS)
 // k-th smallest of v[0..n-1] (quickselect with Hoare partitioning; reorders v; expected O(n))
 static double rbl__selectKth(double *v, long long n, long long k)
 {
@@ -5443,6 +5482,7 @@ RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normal
     RBL_FREE(errors);
     return stats;
 }
+#endif
 
 //----------------------------------------------------------------------------------
 // Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat
@@ -6432,7 +6472,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
     if (!rbl__finiteNonNegative(in.gamma) || (in.gamma > 16.0f) || ((in.gamma > 0.0f) && (in.gamma < 0.0625f))) return "gamma outside 1/16..16 (0 = sRGB)";
-    if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
+    if ((in.debugOutput < 0) || (in.debugOutput >= RBL_DEBUG_OUTPUT_COUNT)) return "debugOutput not an RblDebugOutput";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
@@ -6446,7 +6486,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->material.occlusion = m.occlusion;
     out->material.premultipliedAlpha = m.premultipliedAlpha;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
-    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == 3));
+    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == RBL_DEBUG_OUTPUT_SPECULAR));
     out->brdf = in.brdf;
     out->fog = in.fog;
     out->tonemap = in.tonemap;
@@ -7726,9 +7766,9 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
-    if ((g->depth.id != 0) && !rbl__state.gbufferDriverDepth) rbl__floatDepth(g->depth.id, width, height);
+    if ((g->depth.id != 0) && !RBL__HOOK(gbufferDriverDepth)) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
-    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__state.gbufferForceFailure;
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !RBL__HOOK(gbufferForceFailure);
     if (ok)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
@@ -7981,11 +8021,13 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     return g;
 }
 
-bool RblIsGBufferValid(const RblGBuffer *gbuffer)
+// Membership first: a stale copy's state (its G-buffer unloaded) is never read
+static bool rbl__gbufferValid(const RblGBuffer *gbuffer)
 {
-    // Membership first: a stale copy's state (its G-buffer unloaded) is never read
     return (gbuffer != NULL) && rbl__isLive(gbuffer->id, gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
 }
+
+bool RblIsGBufferValid(RblGBuffer gbuffer) { return rbl__gbufferValid(&gbuffer); }
 
 // New targets at width x height (passes kept); false (logged by rbl__loadTargets) keeps the old ones
 static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
@@ -8010,7 +8052,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 {
-    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
+    if (!rbl__gbufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
     {
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
@@ -8040,7 +8082,7 @@ void RblUnloadGBuffer(RblGBuffer *gbuffer)
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
+    if (!rbl__gbufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
     return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
 }
 
@@ -8067,7 +8109,7 @@ static void rbl__sceneAmbient(float out[9])
 bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
 {
     const char *bad = NULL;
-    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    if (!rbl__gbufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
@@ -8211,12 +8253,17 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
 
 // A packed light goes through a full-screen pass when it has no range (directional, range 0) or the
 // naive loop is asked for
-static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || g->naiveFullscreen; }
+#if defined(RBL_INSTRUMENTS)
+    #define RBL__NAIVE(g) ((g)->naiveFullscreen)
+#else
+    #define RBL__NAIVE(g) ((void)(g), false)
+#endif
+static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || RBL__NAIVE(g); }
 
 bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 {
     const char *bad = NULL;
-    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    if (!rbl__gbufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
@@ -8231,7 +8278,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) uncompiled++;
         else if (rbl__fullscreenLight(g, &s->lights[i*RBL__LIGHT_FLOATS])) unbounded++;
     }
-    if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
+    if (!RBL__NAIVE(g) && (unbounded > RBL_MAX_LIGHTS))
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
         return false;
@@ -8293,7 +8340,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     // Volumes: bounded lights gathered in order, then one instanced draw of sphere proxies, back
     // faces only (correct with the eye inside one)
     int v = 0;
-    for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
+    for (int i = 0; (i < count) && !RBL__NAIVE(g); i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
         if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
@@ -8328,7 +8375,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 
 void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 {
-    if (!RblIsGBufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
+    if (!rbl__gbufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
     {
         TraceLog(LOG_WARNING, "RBL: RblSetGBufferOutput: G-buffer not loaded, unknown view %i or bad scale", view);
         return;
@@ -8339,7 +8386,7 @@ void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    const char *bad = !RblIsGBufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
+    const char *bad = !rbl__gbufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
                       (rbl__state.shadowPass != NULL)? "inside a shadow pass" : (rbl__state.gbufferPass != NULL)? "inside another G-buffer's geometry pass" : NULL;
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
@@ -8703,6 +8750,7 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
     return NULL;
 }
 
+#if !defined(RBL_NO_ATLAS)
 //----------------------------------------------------------------------------------
 // Module Functions Definition: sprite-sheet atlases and animation
 //----------------------------------------------------------------------------------
@@ -8722,7 +8770,6 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
 #if (RBL_MAX_ATLAS_ENTRIES < 1) || (RBL_MAX_ATLAS_ENTRIES > 67108864)
     #error "RBL_MAX_ATLAS_ENTRIES must be in 1..2^26"
 #endif
-#define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // seconds per frame where the atlas gives no duration
 
 static inline Rectangle rbl__rect(float x, float y, float w, float h) { Rectangle r; r.x = x; r.y = y; r.width = w; r.height = h; return r; }
 static inline Vector2 rbl__v2(float x, float y) { Vector2 v; v.x = x; v.y = y; return v; }
@@ -9986,10 +10033,7 @@ RblAtlas RblLoadAtlas(const char *fileName)
     return a;
 }
 
-bool RblIsAtlasValid(const RblAtlas *atlas)
-{
-    return (atlas != NULL) && rbl__atlasLive(atlas);
-}
+bool RblIsAtlasValid(RblAtlas atlas) { return rbl__atlasLive(&atlas); }
 
 void RblUnloadAtlas(RblAtlas *atlas)
 {
@@ -10478,5 +10522,7 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     int k = (int)floor((rel + 0.5*width)/width);
     return k % directions;
 }
+
+#endif // RBL_NO_ATLAS
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

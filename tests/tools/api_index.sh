@@ -69,7 +69,8 @@ case "$mode" in
     if [ "$gen" = "$have" ]; then echo "  ok    README API index matches the header ($(printf '%s\n' "$gen" | grep -c '^- `') entries)"; pass=$((pass + 1))
     else echo "  FAIL  README API index differs from the header (make api-index rewrites it):"; diff <(printf '%s\n' "$have") <(printf '%s\n' "$gen") | head -20; fail=$((fail + 1)); fi
     # Configuration: code defaults vs the doc block's CONFIGURATION list
-    code=$(sed -n 's/^#ifndef \(RBL_[A-Z0-9_]*\)$/\1/p' "$header" | sort -u)
+    # (defaults: #ifndef RBL_X; switches: RBL_X tested with defined(), listed without a value)
+    code=$( { sed -n 's/^#ifndef \(RBL_[A-Z0-9_]*\)$/\1/p' "$header"; grep -E '^ *# *(if|elif)' "$header" | grep -o 'defined(RBL_[A-Z0-9_]*)' | grep -o 'RBL_[A-Z0-9_]*'; } | sort -u)
     doc=$(sed -n '/^\*   CONFIGURATION:/,/^\*   [A-Z ]*:$/p' "$header" | grep '^\*       #define ' | grep -o 'RBL_[A-Z0-9_]*' | sort -u)
     missing=$(comm -23 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | tr '\n' ' ')
     stale=$(comm -13 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | grep -v -E '^RBL_(MALLOC|CALLOC|REALLOC|FREE)$' | tr '\n' ' ')
