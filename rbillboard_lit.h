@@ -16,20 +16,27 @@
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
 *       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY,
 *       DEPENDENCIES, LICENSE.
-*       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
-*         Types and Structures Definition (private)   registry entry, packed scene, header state
-*         material maps                     packing, normal encodings, mips, generators (CPU, load time)
-*         (Embedded shaders, RBL-SHADERS-BEGIN/END)   shaders/ files, includes resolved (make shaders)
-*         lights and the forward lit shader variant #defines before the embedded sources, compilation
-*         the program registry              one entry per compiled program, shared by equal keys
-*         lit programs and per-draw material values   Shader handles; Material -> uniforms per draw
-*         the scene                         RblSetScene: validate, pack, upload to every live program
-*         small vector helpers, geometry    camera frame, facing frames, quad corners (CPU)
-*         batched and immediate paths       vertex buffers, material runs, draws
-*         instanced path                    per-instance data, quads expanded in the vertex shader
-*         shadows                           light cameras, caster passes (before the colour pass)
-*         deferred G-buffer                 geometry pass, light passes, resolve
-*         sprite-sheet atlases and animation   readers (JSON, libGDX), frame table, player, N-way (CPU)
+*       The file, in order (each section's banner ends with its tag: search ">>geometry" to jump there;
+*       make test checks this list against the banners):
+*         >>config      Defines and Macros: configuration defaults (CONFIGURATION), RBL_ZERO
+*         >>types       public types, in the order the stages use them
+*         >>api         public functions, one group per stage (README's API index is made from them)
+*         >>private     private types: uniform table, registry entry, packed scene, the header's state
+*         >>shaders     generated data: the shaders/ sources as strings, includes resolved (make shaders; a
+*                       test fails if they differ; skip it when reading the code)
+*         >>vec         small vector helpers
+*         >>geometry    camera frame, facing frames, quad corners (CPU)
+*         >>batch       batched and immediate paths: vertex buffers, material runs, sorting, draws
+*         >>instanced   instanced path: per-instance data, quads expanded in the vertex shader
+*         >>maps        material maps: texel access, sRGB and mips, packing, authoring help (CPU)
+*         >>lit         lit shader variants: #defines before the embedded sources, compilation
+*         >>registry    the program registry: one entry per compiled program, shared by equal keys
+*         >>programs    lit programs and per-draw material values (Shader handles, Material -> uniforms)
+*         >>scene       RblSetScene: validate, pack, upload to every live program; scene depth
+*         >>deferred    deferred G-buffer: geometry pass, light passes, resolve
+*         >>shadows     shadow maps: light cameras, caster passes, caster identities
+*         >>atlas       sprite-sheet atlases and animation: JSON, sheet files, libGDX, slices, a page's
+*                       textures, the player (RBL_NO_ATLAS leaves it out)
 *
 *   INTEGRATION:
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
@@ -599,7 +606,7 @@
 #endif
 
 //----------------------------------------------------------------------------------
-// Defines and Macros
+// Defines and Macros   >>config
 //----------------------------------------------------------------------------------
 // Zero initialiser valid in C99 and C++11 alike (`RblBillboard card = RBL_ZERO;`, then set fields):
 // C's universal `{ 0 }` draws -Wmissing-field-initializers in C++, whose `{}` is not C99
@@ -665,7 +672,7 @@
 #endif
 
 //----------------------------------------------------------------------------------
-// Types and Structures Definition
+// Types and Structures Definition   >>types
 //----------------------------------------------------------------------------------
 // How a billboard orients itself
 typedef enum {
@@ -1119,7 +1126,7 @@ extern "C" {            // Prevents name mangling of functions
 #endif
 
 //----------------------------------------------------------------------------------
-// Module Functions Declaration
+// Module Functions Declaration   >>api
 //----------------------------------------------------------------------------------
 // Module lifetime
 RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
@@ -1273,7 +1280,7 @@ typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(R
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
 
 //----------------------------------------------------------------------------------
-// Module Types and Structures Definition (private)
+// Module Types and Structures Definition (private)   >>private
 //----------------------------------------------------------------------------------
 // Uniforms of every program the header compiles, looked up once per program into rbl__Program.loc
 // (-1 where a variant has none): one location mechanism for forward, deferred and shadow passes
@@ -1661,7 +1668,7 @@ static bool rbl__unloadable(const void *holder, unsigned int id, const void *sta
 }
 
 //----------------------------------------------------------------------------------
-// Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
+// Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)   >>shaders
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_ambient[] = {
@@ -3519,7 +3526,7 @@ static const struct { const char *file; const char *const *const *parts; } rbl__
 // RBL-SHADERS-END
 
 //----------------------------------------------------------------------------------
-// Module Internal Functions: small vector helpers (C and C++ without compound literals)
+// Module Internal Functions: small vector helpers (C and C++ without compound literals)   >>vec
 //----------------------------------------------------------------------------------
 static inline Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
 static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
@@ -3726,7 +3733,7 @@ static inline Vector3 rbl__blendOffAxis(Vector3 vp, float w, Vector3 f, Vector3 
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: geometry
+// Module Functions Definition: geometry   >>geometry
 //----------------------------------------------------------------------------------
 // Camera frame as raymath's MatrixLookAt builds it, in double: the float inputs subtract and
 // multiply exactly there, so the frame is right to float however close camera.up comes to the view
@@ -4202,7 +4209,7 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: batched and immediate paths
+// Module Functions Definition: batched and immediate paths   >>batch
 //----------------------------------------------------------------------------------
 // Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
 // default and not visible here), so the array is generously larger than any build's
@@ -4893,7 +4900,7 @@ void RblClose(void)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: instanced path
+// Module Functions Definition: instanced path   >>instanced
 //----------------------------------------------------------------------------------
 // Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
 #define RBL__INSTANCE_LOCATION 10
@@ -5224,7 +5231,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: material maps
+// Module Functions Definition: material maps   >>maps
 //----------------------------------------------------------------------------------
 // Normal decoding, exactly what the shaders compute (GLSL mirror; t = the sampled texel, each
 // channel in [0,1] = byte/255, then e = t*2 - 1):
@@ -5484,9 +5491,7 @@ RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normal
 }
 #endif
 
-//----------------------------------------------------------------------------------
-// Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat
-//----------------------------------------------------------------------------------
+// ---- Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat ----
 typedef struct rbl__Texels {
     const unsigned char *u8;        // 8-bit data in place (GRAYSCALE, GRAY_ALPHA, R8G8B8, R8G8B8A8)
     const float *f32;               // Float data: in place (R32, R32G32B32, R32G32B32A32) or a converted RGBA copy
@@ -5612,9 +5617,7 @@ static inline Vector3 rbl__sourceNormal(const rbl__Texels *t, size_t i, bool dir
     return (x*x + y*y + z*z >= RBL__NORMAL_MIN_LEN2)? rbl__v3(x, y, z) : rbl__flatNormal();
 }
 
-//----------------------------------------------------------------------------------
-// sRGB, mip chains and gutter dilation
-//----------------------------------------------------------------------------------
+// ---- sRGB, mip chains and gutter dilation -----------------------------------------------------------
 static double rbl__srgbToLinear(double s)
 {
     return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4);
@@ -5902,9 +5905,7 @@ static void rbl__applyDilation(unsigned char *level, int bytesPerTexel, const in
         if (nearest[i] != (int)i) memcpy(level + i*(size_t)bytesPerTexel, level + (size_t)nearest[i]*(size_t)bytesPerTexel, (size_t)bytesPerTexel);
 }
 
-//----------------------------------------------------------------------------------
-// Packing
-//----------------------------------------------------------------------------------
+// ---- Packing ----------------------------------------------------------------------------------------
 // A map's size and format; false (logged) when it cannot be packed
 static bool rbl__checkMap(Image image, const char *name, int width, int height)
 {
@@ -6193,9 +6194,7 @@ void RblUnloadPackedMaterial(RblPackedMaterial *packed)
     memset(packed, 0, sizeof(*packed));
 }
 
-//----------------------------------------------------------------------------------
-// Authoring help: height -> normal, albedo -> height, height -> occlusion
-//----------------------------------------------------------------------------------
+// ---- Authoring help: height -> normal, albedo -> height, height -> occlusion ------------------------
 // A map for the Gen functions: present, sized and convertible; false (logged) otherwise
 static bool rbl__checkGenInput(Image image, const char *function)
 {
@@ -6381,7 +6380,7 @@ Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: lights and the forward lit shader
+// Module Functions Definition: lights and the forward lit shader   >>lit
 //----------------------------------------------------------------------------------
 // prefix + a stage's parts (rbl__pass_*: its includes resolved by the embed step, dependencies first)
 // in one allocated string, without the #include lines (GLSL has no include)
@@ -6533,7 +6532,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 }
 
 //----------------------------------------------------------------------------------
-// Module Internal Functions: the program registry
+// Module Internal Functions: the program registry   >>registry
 //----------------------------------------------------------------------------------
 // Every program the header compiles is one registry entry, keyed by what changes the code. Lit
 // programs go out one per RblLoadLitShader call, each its own GL program, so raylib's UnloadShader
@@ -6836,7 +6835,7 @@ static void rbl__keyFromDesc(const RblLitShaderDesc *normalised, int kind, int p
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: lit programs and per-draw material values
+// Module Functions Definition: lit programs and per-draw material values   >>programs
 //----------------------------------------------------------------------------------
 Shader RblLoadLitShader(RblLitShaderDesc desc)
 {
@@ -7152,7 +7151,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: the scene
+// Module Functions Definition: the scene   >>scene
 //----------------------------------------------------------------------------------
 #define RBL__LIGHT_FLOATS 16            // position, colour, spot (vec4 each), falloff (vec3) + shadow map index + 1
 
@@ -7621,7 +7620,7 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: deferred G-buffer
+// Module Functions Definition: deferred G-buffer   >>deferred
 //----------------------------------------------------------------------------------
 // Inverse of a view matrix (rotation + translation): transposed rotation, translation -R^T t
 static Matrix rbl__rigidInverse(Matrix view)
@@ -8411,7 +8410,7 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: shadows
+// Module Functions Definition: shadows   >>shadows
 //----------------------------------------------------------------------------------
 // The billboard frame of a shadow pass: the light's own frame (the default: casters face the light),
 // or the caller's camera (desc.faceCamera: the shadow matches what is seen); AXIS billboards get the
@@ -8752,7 +8751,7 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
 
 #if !defined(RBL_NO_ATLAS)
 //----------------------------------------------------------------------------------
-// Module Functions Definition: sprite-sheet atlases and animation
+// Module Functions Definition: sprite-sheet atlases and animation   >>atlas
 //----------------------------------------------------------------------------------
 // Every format lands in one frame table in TexturePacker's convention: a rotated frame is stored
 // turned 90 degrees clockwise in an h x w block; trim and pivot are upright, top-left origin.

@@ -76,6 +76,11 @@ case "$mode" in
     stale=$(comm -13 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | grep -v -E '^RBL_(MALLOC|CALLOC|REALLOC|FREE)$' | tr '\n' ' ')
     if [ -z "${missing// }" ] && [ -z "${stale// }" ]; then echo "  ok    CONFIGURATION lists every configuration macro ($(printf '%s\n' "$code" | wc -l))"; pass=$((pass + 1))
     else echo "  FAIL  CONFIGURATION drift: defaulted in code, not listed: ${missing:-none}; listed, not defaulted: ${stale:-none}"; fail=$((fail + 1)); fi
+    # The doc block's map of the file: the >>tags CONTENTS lists, in order, are the banners' tags
+    listed=$(sed -n '/^\*   CONTENTS:/,/^\*   INTEGRATION:/p' "$header" | grep -o '^\*         >>[a-z]*' | sed 's/.*>>//' | tr '\n' ' ')
+    banners=$(grep -E '^// .*   >>[a-z]+$' "$header" | sed 's/.*>>//' | tr '\n' ' ')
+    if [ -n "${listed// }" ] && [ "$listed" = "$banners" ]; then echo "  ok    CONTENTS maps every section banner in file order ($(echo $listed | wc -w) tags)"; pass=$((pass + 1))
+    else echo "  FAIL  CONTENTS drift: listed '$listed', banners '$banners'"; fail=$((fail + 1)); fi
     echo "api: $pass passed, $fail failed"
     ;;
   *) echo "usage: $0 index|write|check [header] [readme]" >&2; exit 2 ;;
