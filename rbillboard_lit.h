@@ -1128,15 +1128,15 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module Functions Declaration   >>api
 //----------------------------------------------------------------------------------
-// Module lifetime
+// Module lifetime (code: >>private, >>batch)
 RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
 RBLAPI const char *RblGetFailureReason(void);                                // Why the last refused call failed: its log line without "RBL: " ("" before any; kept until the next refusal)
 
-// Geometry (CPU, no GL needed)
+// Geometry (CPU, no GL needed; code: >>geometry)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
 
-// Batched and immediate paths (GL)
+// Batched and immediate paths (GL; code: >>batch)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
 RBLAPI bool RblIsBatchValid(RblBatch batch);                                  // Check the batch owns its GPU buffers
 RBLAPI void RblUnloadBatch(RblBatch *batch);                                  // Unload batch buffers
@@ -1145,13 +1145,13 @@ RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
 
-// Instanced path (GL): per-instance data only, quads expanded in the vertex shader
+// Instanced path (GL): per-instance data only, quads expanded in the vertex shader (code: >>instanced)
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
 RBLAPI bool RblIsInstanceBufferValid(RblInstanceBuffer buffer);               // Check the buffer owns its GPU objects
 RBLAPI void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer);               // Unload an instance buffer
 RBLAPI int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count); // Draw with one instanced call (material.shader: an instanced lit variant); returns instances drawn
 
-// Material maps (CPU, no GL needed): packing, encodings, authoring help
+// Material maps (CPU, no GL needed): packing, encodings, authoring help (code: >>maps)
 RBLAPI bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed); // Pack an atlas's maps; false = invalid input (logged), packed untouched
 RBLAPI void RblUnloadPackedMaterial(RblPackedMaterial *packed);               // Free packed Images
 RBLAPI void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3]); // Encode a unit tangent-space normal (RG used; RGB for RBL_NORMAL_RGB)
@@ -1164,8 +1164,7 @@ RBLAPI Image RblGenHeightFromLuminance(Image albedo);                         //
 RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength); // Cavity occlusion (grey) from a height map
 RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material); // Upload packed Images into material slots (GL): ALBEDO, NORMAL (material texture), EMISSION
 
-// Lights and the forward lit shader
-// Lit programs (compiled features only) and the frame's scene
+// Lit programs (compiled features only) and the frame's scene (code: >>programs, >>scene)
 RBLAPI Shader RblLoadLitShader(RblLitShaderDesc desc);                         // Lit program for Material.shader (equal descs share one program); id 0 + log on failure
 RBLAPI bool RblIsLitShaderValid(Shader shader);                                // Check it is a live lit program of this header (not raylib's fallback, not unloaded)
 RBLAPI void RblUnloadLitShader(Shader *shader);                                // Release this holder's reference and zero it (the program goes with its last holder)
@@ -1174,7 +1173,7 @@ RBLAPI bool RblSetScene(const RblScene *scene);                                /
 RBLAPI void RblDrawModel(Model model, Vector3 position, float scale, Color tint); // DrawModel with each material's lit values (colour, G-buffer or shadow pass)
 RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      // DrawMesh with the material's lit values (colour, G-buffer or shadow pass)
 
-// Deferred G-buffer
+// Deferred G-buffer (code: >>deferred)
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
 RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
@@ -1189,7 +1188,7 @@ RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // 
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
 
-// Shadows
+// Shadows (code: >>shadows)
 RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
 RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target loaded
 RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and zero it
@@ -1198,7 +1197,7 @@ RBLAPI void RblEndShadowMap(RblShadowMap *map);                               //
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
 #if !defined(RBL_NO_ATLAS)
-// Sprite-sheet atlases and animation (CPU, no GL needed)
+// Sprite-sheet atlases and animation (CPU, no GL needed; code: >>atlas)
 RBLAPI RblAtlas RblLoadAtlas(const char *fileName);                          // Load an atlas file (format detected; TexturePacker multipacks follow related_multi_packs); invalid + log on failure
 RBLAPI RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format); // Parse size bytes of atlas text (RblAtlasFormat, 0 = detect); invalid + log on failure
 RBLAPI bool RblIsAtlasValid(RblAtlas atlas);                                  // Check it is a loaded atlas (not zero, not unloaded)
