@@ -1550,8 +1550,10 @@ static void rbl__traceLog(int level, const char *text, ...)
     va_start(args, text);
     vsnprintf(line, sizeof(line), text, args);
     va_end(args);
-    if ((level >= LOG_WARNING) && (strncmp(line, "RBL: ", 5) == 0)) memcpy(rbl__state.failure, line + 5, strlen(line + 5) + 1);
-    (TraceLog)(level, "%s", line);
+    const bool ours = (strncmp(line, "RBL: ", 5) == 0);
+    if (ours && (level >= LOG_WARNING)) memcpy(rbl__state.failure, line + 5, strlen(line + 5) + 1);
+    if (ours) (TraceLog)(level, "RBL: %s", line + 5);       // a log callback still sees the format start with "RBL: "
+    else (TraceLog)(level, "%s", line);
 }
 
 const char *RblGetFailureReason(void) { return rbl__state.failure; }

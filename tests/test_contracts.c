@@ -56,6 +56,7 @@ static void contractLog(int level, const char *text, va_list args)
     {
         warnings++; memcpy(lastWarning, line, sizeof(line));
         if (strcmp(RblGetFailureReason(), line + 5) != 0) reasonMismatches++;     // the queryable reason is the line
+        if (strncmp(text, "RBL: ", 5) != 0) reasonMismatches++;     // a callback filtering the unformatted text sees it too
     }
     else if (strstr(line, "Matrix stack overflow") != NULL) raylibErrors++;
 }

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Keeps each GPU test registered beside its body: every tests/test_*.c that gpu_tests.h includes
 ends with `#define RBL_<FILE>_TESTS` listing its tests, and gpu_tests.h's rblGpuTests is the list of
-those macros. `fix` moves registrations found in gpu_tests.h into their files' macros (run it after
-merging a branch that registered tests there); `check` fails when a test function is registered
+those macros. `fix` moves registrations found in gpu_tests.h into their files' macros and appends tests
+registered nowhere (run it after merging a branch that registered tests there); `check` fails when a test function is registered
 nowhere, twice, or in another file's list.
    usage: test_lists.py check|fix"""
 import re, sys, os
@@ -29,6 +29,13 @@ if mode == 'fix':
         names, src, m = file_list(f)
         entries = [] if names is None else re.findall(r'RT_TEST(?:_GLSL3)?\(test_[a-z0-9_]+\)', m.group(1))
         entries += ['%s(%s)' % (kind, name) for kind, name in loose if defined.get(name) == f]
+        # test functions defined here and registered nowhere (a merge that kept neither list's line):
+        # appended as RT_TEST; one that needs GLSL 3 must be edited to RT_TEST_GLSL3 by hand
+        listed = set(re.findall(r'\((test_[a-z0-9_]+)\)', ' '.join(entries)))
+        for name, g in defined.items():
+            if g == f and name not in listed and name not in [x for _, x in loose]:
+                print('  note  %s was registered nowhere: appended to %s as RT_TEST' % (name, macro(f)))
+                entries.append('RT_TEST(%s)' % name)
         if not entries: continue
         block = '#define %s \\\n' % macro(f) + ', \\\n'.join('    ' + e for e in entries) + '\n'
         src = (src[:m.start()] + block + src[m.end():]) if m else (src.rstrip('\n') + '\n\n// The tests of this file, in order (gpu_tests.h lists every file\'s)\n' + block)
