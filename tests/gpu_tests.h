@@ -14,6 +14,7 @@
 #include "test_view.c"
 #include "test_shadows.c"
 #include "test_self_shadow.c"
+#include "test_omni_cascades.c"
 #include "test_skinning.c"
 #include "test_sprites.c"
 #include "test_atlas_render.c"
@@ -107,6 +108,11 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_order),
         RT_TEST(test_shadows_self_shadow_option_drops_the_identities),
         RT_TEST_GLSL3(test_shadows_deferred_sprites_never_shadow_themselves_and_match_forward),
+        RT_TEST(test_shadows_omni_cube_faces_hold_the_double_precision_distances),
+        RT_TEST(test_shadows_two_omni_lights_match_a_double_precision_lookup_forward_and_deferred),
+        RT_TEST(test_shadows_cascade_splits_and_spheres_match_the_double_reference),
+        RT_TEST(test_shadows_cascade_edges_hold_still_while_the_camera_pans_and_turns),
+        RT_TEST(test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly),
         RT_TEST(test_sprites_sorted_translucent_cards_draw_alike_in_any_submission_order),
         RT_TEST(test_sprites_hybrid_smoke_behind_a_tree_shows_through_its_holes),
         RT_TEST(test_sprites_bad_sort_settings_are_refused_and_draw_nothing),

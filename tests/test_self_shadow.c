@@ -1,7 +1,7 @@
 // Sprites never shadow themselves (GPU, headless; raylib's Y-up world). A 1 x 2 card standing on a
 // floor, with a normal map that bends the normal up to 60 degrees, is lit by one shadowing light
 // swept over azimuth 0..345 (15-degree steps; 0 = from the viewer's side, 90 = from +X) and
-// elevation 5..85, directional and spot, in every facing mode, pivot at the bottom or the centre,
+// elevation 5..85, directional, spot and point (an omni map), in every facing mode, pivot at the bottom or the centre,
 // casters facing the light (default) or the camera. Each case is rendered with and without the
 // sprite in the shadow pass (the floor casts in both):
 //   self      the sprite's own pixels darkened by its own caster (goal 0)
@@ -121,13 +121,20 @@ static Texture2D ssNormalTexture(void)
 static RblLight ssLight(int type, Vector3 L)
 {
     if (type == RBL_LIGHT_DIRECTIONAL) return litDirectional((Vector3){ -L.x, -L.y, -L.z }, 1.0f);
+    if (type == RBL_LIGHT_POINT)
+    {
+        // Point light 5 units from the card's centre toward the light (omni map: six cube faces)
+        RblLight l = litPoint((Vector3){ 5.0f*L.x, 1.0f + 5.0f*L.y, 5.0f*L.z }, 25.0f, 14.0f);
+        l.color = WHITE;
+        return l;
+    }
     // Spot 5 units from the card's centre toward the light, aimed at it: irradiance about 1 there
     RblLight l = litSpot((Vector3){ 5.0f*L.x, 1.0f + 5.0f*L.y, 5.0f*L.z }, (Vector3){ -L.x, -L.y, -L.z }, 45.0f, 60.0f, 25.0f);
     l.color = WHITE; l.range = 14.0f;
     return l;
 }
 
-static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize)
+static bool ssRigLoadMaps(SsRig *r, int lightFeatures, int mapSize, bool omni)
 {
     memset(r, 0, sizeof(*r));
     RblLitShaderDesc desc;
@@ -151,6 +158,7 @@ static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize)
         RblShadowDesc sd;
         memset(&sd, 0, sizeof(sd));
         sd.size = mapSize;
+        sd.omni = omni;
         ssSetCasterFacing(&sd, k == 1);
         r->maps[k] = RblLoadShadowMap(sd);
     }
@@ -158,6 +166,8 @@ static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize)
     r->top = LoadRenderTexture(SS_TOP, SS_TOP);
     return RblIsLitShaderValid(r->lit) && RblIsShadowMapValid(r->maps[0]) && RblIsShadowMapValid(r->maps[1]);
 }
+
+static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize) { return ssRigLoadMaps(r, lightFeatures, mapSize, false); }
 
 static void ssRigUnload(SsRig *r)
 {
@@ -178,11 +188,15 @@ static void ssPass(SsRig *r, RblShadowMap *map, RblLight *light, SsVariant v, bo
     memset(&scene, 0, sizeof(scene));
     scene.lights = light; scene.lightCount = 1; scene.ambient = (Color){ SS_AMBIENT, SS_AMBIENT, SS_AMBIENT, 255 };
     Camera3D viewer = ssViewer();
-    RT_CHECK(RblBeginShadowMap(map, &scene, 0, (Vector3){ 0.0f, 1.0f, 0.0f }, SS_RADIUS), "shadow pass refused");
-    RblDrawBillboard(viewer, r->floor, ssFloor());
-    if (sprite) RblDrawBillboard(viewer, r->sprite, ssSprite(v));
-    if (extra != NULL) extra(ctx);
-    RblEndShadowMap(map);
+    // Every pass of the map (an omni map: its six cube faces), each drawing the same casters
+    for (int pass = 0; pass < RblShadowMapPasses(*map); pass++)
+    {
+        RT_CHECK(RblBeginShadowMapPass(map, &scene, 0, pass, (Vector3){ 0.0f, 1.0f, 0.0f }, SS_RADIUS), "shadow pass %d refused", pass);
+        RblDrawBillboard(viewer, r->floor, ssFloor());
+        if (sprite) RblDrawBillboard(viewer, r->sprite, ssSprite(v));
+        if (extra != NULL) extra(ctx);
+        RblEndShadowMap(map);
+    }
     scene.shadowMaps = map; scene.shadowMapCount = 1;
     RT_CHECK(RblSetScene(&scene), "scene rejected");
 }
@@ -275,7 +289,7 @@ static SsPoly ssShadowPolygon(const RblShadowMap *map, const RblLight *light, Ve
     {
         double t;
         if (light->type == RBL_LIGHT_DIRECTIONAL) { t = p[i][1]/(double)L.y; out.x[i] = p[i][0] - t*L.x; out.z[i] = p[i][2] - t*L.z; }
-        else
+        else        // spot and point: from the light's position
         {
             double s[3] = { light->position.x, light->position.y, light->position.z };
             if (p[i][1] >= s[1] - 1e-6) { out.n = 0; return out; }       // the card reaches the light's height: no bounded shadow
@@ -327,13 +341,17 @@ static SsGround ssGroundCompare(Image shadowed, Image base, const SsPoly *inner,
             if (b < SS_AMBIENT + 40) continue;              // too dimly lit to tell (spot cone edge)
             bool dark = s < (b + SS_AMBIENT)/2;
             Vector2 f = ssFloorAt(x, y);
-            // Only where the map covers the floor (a low sun's shadow runs past its focus: lit there)
+            // Only where the map covers the floor (a low sun's shadow runs past its focus: lit there);
+            // an omni map covers every direction, its texel growing with the distance along the
+            // face's axis (the major axis of the offset from the light)
             const Matrix *m = &map->state->matrix;
             double w = m->m3*f.x + m->m11*f.y + m->m15, u = (m->m0*f.x + m->m8*f.y + m->m12)/w, v = (m->m1*f.x + m->m9*f.y + m->m13)/w;
             double margin = 3.0/map->size;
-            if (!(w > 0.0) || (u < margin) || (u > 1.0 - margin) || (v < margin) || (v > 1.0 - margin)) continue;
+            if (!map->desc.omni && (!(w > 0.0) || (u < margin) || (u > 1.0 - margin) || (v < margin) || (v > 1.0 - margin))) continue;
             double texel = map->state->texelWorld;
-            if (light->type == RBL_LIGHT_SPOT)
+            if (light->type == RBL_LIGHT_POINT)
+                texel *= fmax(fabs(f.x - light->position.x), fmax(fabs(light->position.y), fabs(f.y - light->position.z)));
+            else if (light->type == RBL_LIGHT_SPOT)
             {
                 Vector3 axis = map->state->lightView.back;
                 texel *= -((f.x - light->position.x)*axis.x + (0.0 - light->position.y)*axis.y + (f.y - light->position.z)*axis.z);
@@ -363,6 +381,8 @@ static int ssAzimuthStep(void)
 #endif
 }
 
+static const char *const ssTypeNames[3] = { "directional", "spot", "point" };
+static const int ssTypes[3] = { RBL_LIGHT_DIRECTIONAL, RBL_LIGHT_SPOT, RBL_LIGHT_POINT };
 static const int ssFacings[4] = { RBL_FACING_CAMERA_PLANE, RBL_FACING_CAMERA_POSITION, RBL_FACING_AXIS, RBL_FACING_FIXED };
 static const char *const ssFacingNames[4] = { "camera-plane", "camera-position", "axis", "fixed" };
 
@@ -373,12 +393,12 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
     const int step = ssAzimuthStep(), directions = 5*(360/step);
     int cases = 0, selfCases = 0, selfWorst = 0, groundWrongCases = 0, judged = 0, contactCases = 0, contactWorst = 0, contactTop = SS_VIEW;
     double areaMin = 1e9, areaMax = 0.0;
-    for (int type = 0; type < 2; type++)
+    for (int type = 0; type < 3; type++)
     {
-        int lightType = type? RBL_LIGHT_SPOT : RBL_LIGHT_DIRECTIONAL;
+        int lightType = ssTypes[type];
         SsRig rig;
         RblLight probe = ssLight(lightType, ssToLight(0, 45));
-        RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
+        RT_CHECK(ssRigLoadMaps(&rig, RblLightFeatures(&probe, 1), SS_MAP, lightType == RBL_LIGHT_POINT), "rig failed to load");
         int typeSelf[4][2][2] = { { { 0 } } }, typeWorst[4][2][2] = { { { 0 } } };
         for (int el = 5; el <= 85; el += 20)
             for (int az = 0; az < 360; az += step)
@@ -417,7 +437,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                             ssPass(&rig, map, &light, v, true, NULL, NULL);
                             Image with = ssFront(&rig, v), top = ssTop(&rig);
                             SsSelf s = ssSelfCompare(with, without);
-                            RT_CHECK(s.covered > 150, "%s %s az %d el %d: the sprite covers %d pixels only", ssFacingNames[f], type? "spot" : "directional", az, el, s.covered);
+                            RT_CHECK(s.covered > 150, "%s %s az %d el %d: the sprite covers %d pixels only", ssFacingNames[f], ssTypeNames[type], az, el, s.covered);
                             if (s.darkened > 0) { selfCases++; typeSelf[f][centre][cam]++; }
                             if (s.worst > typeWorst[f][centre][cam]) typeWorst[f][centre][cam] = s.worst;
                             if (s.worst > selfWorst) selfWorst = s.worst;
@@ -427,7 +447,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                             // tan I <= 10, and the normal offset 0.25 texel sin I; I = 90 - elevation on the
                             // floor) a caster shows on the floor as nothing: twice that is the inner clip
                             double e = el*PI/180.0, texel = map->state->texelWorld;
-                            if (lightType == RBL_LIGHT_SPOT) texel *= sqrt(pow(light.position.x, 2) + pow(light.position.y - 1.0, 2) + pow(light.position.z, 2));
+                            if (lightType != RBL_LIGHT_DIRECTIONAL) texel *= sqrt(pow(light.position.x, 2) + pow(light.position.y - 1.0, 2) + pow(light.position.z, 2));
                             double hmin = 2.0*texel*(0.25*cos(e) + sin(e)*(0.2 + 0.1*fmin(cos(e)/sin(e), 10.0)));
                             SsPoly poly = ssShadowPolygon(map, &light, L, v, 0.0), inner = ssShadowPolygon(map, &light, L, v, hmin);
                             // (a card reaching the spot's height casts an unbounded shadow: not judged)
@@ -436,7 +456,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                             {
                                 g = ssGroundCompare(top, base, &inner, &poly, map, &light);
                                 // Most of the window is lit and inside the map (a floor shadowing itself would leave nothing to judge)
-                                RT_CHECK(g.judged > SS_TOP*SS_TOP/4, "%s az %d el %d: only %d floor pixels judged", type? "spot" : "directional", az, el, g.judged);
+                                RT_CHECK(g.judged > SS_TOP*SS_TOP/4, "%s az %d el %d: only %d floor pixels judged", ssTypeNames[type], az, el, g.judged);
                             }
                             if ((g.wrong > 0) && (groundWrongCases < 3))
                             {
@@ -455,7 +475,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                                 }
                             }
                             RT_CHECK(g.wrong == 0, "%s %s pivot %s casters %s, az %d el %d: %d floor pixels misclassified beyond %.3f of the analytic shadow",
-                                     type? "spot" : "directional", ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", az, el, g.wrong, g.band);
+                                     ssTypeNames[type], ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", az, el, g.wrong, g.band);
                             if ((s.darkened > 0) && (typeSelf[f][centre][cam] == 1)) { rtSaveImage(with, "self-with"); rtSaveImage(without, "self-without"); }
                             if ((g.wrong > 0) && (groundWrongCases == 1)) rtSaveImage(top, "ground");
                             UnloadImage(with); UnloadImage(top);
@@ -470,9 +490,9 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                 for (int cam = 0; cam < 2; cam++)
                 {
                     if ((ssFacings[f] == RBL_FACING_FIXED) && cam) continue;
-                    printf("    %-11s %-15s pivot %-6s casters face %-6s: %3d of %d directions self-darken, worst %3d/255\n", type? "spot" : "directional",
+                    printf("    %-11s %-15s pivot %-6s casters face %-6s: %3d of %d directions self-darken, worst %3d/255\n", ssTypeNames[type],
                            ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", typeSelf[f][centre][cam], directions, typeWorst[f][centre][cam]);
-                    RT_CHECK(typeSelf[f][centre][cam] == 0, "%s %s pivot %s casters face %s: the sprite darkens itself in %d directions (worst %d/255)", type? "spot" : "directional",
+                    RT_CHECK(typeSelf[f][centre][cam] == 0, "%s %s pivot %s casters face %s: the sprite darkens itself in %d directions (worst %d/255)", ssTypeNames[type],
                              ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", typeSelf[f][centre][cam], typeWorst[f][centre][cam]);
                 }
         ssRigUnload(&rig);
