@@ -1239,6 +1239,8 @@ RBLAPI void RblEndShadowMap(RblShadowMap *map);                               //
 RBLAPI int RblShadowMapPasses(RblShadowMap map);                              // Passes one frame of the map takes: 1, 6 (omni: a cube face each) or desc.cascades; 0 = invalid
 RBLAPI bool RblBeginShadowMapPass(RblShadowMap *map, const RblScene *scene, int lightIndex, int pass, Vector3 focusCenter, float focusRadius); // Pass 0..RblShadowMapPasses-1 (a cube face, a cascade: its focus is the fit's); false = rejected
 RBLAPI bool RblFitShadowCascades(RblShadowMap *map, Camera3D camera, float aspect, float nearDistance, float farDistance); // Cascaded map: split near..far (practical split) and fit each cascade to this camera, before its passes
+RBLAPI void RblDrawShadowCascades(RblShadowMap map);                          // Debug view (inside BeginMode3D): each cascade's camera slice and light window in RblShadowCascadeColor(c)
+RBLAPI Color RblShadowCascadeColor(int cascade);                              // Debug colour of cascade 0..3: red, green, blue, yellow (grey otherwise)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
 // Sprite-sheet atlases and animation (CPU, no GL needed)
@@ -1487,6 +1489,9 @@ typedef struct rbl__ShadowMapState {
     double fitCenter[4][3], fitRadius[4];  // ... each cascade's bounding sphere (its slice, widened by the blend band below)
     double blend;                   // ... the blend band's share of a cascade's depth range
     bool fitted;                    // ... RblFitShadowCascades ran
+    RblCameraFrame fitView;         // ... its camera frame, tan of half its vertical view (orthographic: half height), aspect
+    double fitTan, fitAspect;
+    bool fitOrthographic;
     RblCameraFrame lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
     Matrix view;                    // Light camera matrices of the last pass
     Matrix projection;
@@ -8977,10 +8982,63 @@ bool RblFitShadowCascades(RblShadowMap *map, Camera3D camera, float aspect, floa
         if (i > 0) lo -= st->blend*(st->split[i] - st->split[i - 1]);
         rbl__sliceSphere(&v, camera, aspect, lo, st->split[i + 1], st->fitCenter[i], &st->fitRadius[i]);
     }
+    st->fitView = v;
+    st->fitOrthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
+    st->fitTan = st->fitOrthographic? 0.5*camera.fovy : tan(camera.fovy*0.5*PI/180.0);
+    st->fitAspect = aspect;
     Vector3 fwd = rbl__neg(v.back);
     st->cascadeRows[3][0] = fwd.x; st->cascadeRows[3][1] = fwd.y; st->cascadeRows[3][2] = fwd.z; st->cascadeRows[3][3] = -rbl__dot(fwd, camera.position);
     st->fitted = true;
     return true;
+}
+
+Color RblShadowCascadeColor(int cascade)
+{
+    const Color colors[4] = { { 230, 41, 55, 255 }, { 0, 228, 48, 255 }, { 0, 121, 241, 255 }, { 253, 249, 0, 255 } };
+    return ((cascade >= 0) && (cascade < 4))? colors[cascade] : GRAY;
+}
+
+// The debug view: per cascade the slice of the fitted camera's view it serves (near and far
+// rectangles and the edges between; from cascade 1 the near one widened by the blend band) and the
+// light-space box its pass rendered (the snapped window x the shared depth range), as lines
+void RblDrawShadowCascades(RblShadowMap map)
+{
+    if (!RblIsShadowMapValid(map) || (map.state->kind <= RBL__SHADOW_OMNI) || !map.state->fitted || (map.state->tiles[0][0] == 0.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawShadowCascades: needs a cascaded map fitted and rendered (RblFitShadowCascades, its passes)");
+        return;
+    }
+    const rbl__ShadowMapState *st = map.state;
+    const RblCameraFrame *v = &st->fitView, *l = &st->lightView;
+    Vector3 a = rbl__neg(l->back);
+    for (int c = 0; c < st->kind; c++)
+    {
+        Color col = RblShadowCascadeColor(c);
+        Vector3 q[8];
+        for (int k = 0; k < 8; k++)
+        {
+            double d = (k & 4)? st->split[c + 1] : ((c > 0)? st->split[c] - st->blend*(st->split[c] - st->split[c - 1]) : st->split[c]);
+            double hy = st->fitOrthographic? st->fitTan : d*st->fitTan, hx = hy*st->fitAspect;
+            double sx = (k & 1)? hx : -hx, sy = (k & 2)? hy : -hy;
+            q[k] = rbl__v3((float)(v->eye.x - v->back.x*d + v->right.x*sx + v->up.x*sy), (float)(v->eye.y - v->back.y*d + v->right.y*sx + v->up.y*sy),
+                           (float)(v->eye.z - v->back.z*d + v->right.z*sx + v->up.z*sy));
+        }
+        // The window in world space: (x, y) along right and up, depth along the light's axis
+        double inv = st->tiles[c][0], left = -st->tiles[c][1]/inv, bottom = -st->tiles[c][2]/inv, side = 1.0/inv;
+        double z0 = -(double)st->cascadeRows[2][3]*st->farPlane, z1 = z0 + st->farPlane;
+        Vector3 b[8];
+        for (int k = 0; k < 8; k++)
+        {
+            double x = left + ((k & 1)? side : 0.0), y = bottom + ((k & 2)? side : 0.0), z = (k & 4)? z1 : z0;
+            b[k] = rbl__v3((float)(l->right.x*x + l->up.x*y + a.x*z), (float)(l->right.y*x + l->up.y*y + a.y*z), (float)(l->right.z*x + l->up.z*y + a.z*z));
+        }
+        const int edges[12][2] = { { 0, 1 }, { 1, 3 }, { 3, 2 }, { 2, 0 }, { 4, 5 }, { 5, 7 }, { 7, 6 }, { 6, 4 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+        for (int e = 0; e < 12; e++)
+        {
+            DrawLine3D(q[edges[e][0]], q[edges[e][1]], col);
+            DrawLine3D(b[edges[e][0]], b[edges[e][1]], Fade(col, 0.5f));
+        }
+    }
 }
 
 // What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8), tiles (16).

@@ -1145,6 +1145,11 @@ static void c_shadow_omni_cascades(void)
     EXPECT_REFUSED(RblFitShadowCascades(NULL, camera(), 1.0f, 0.1f, 10.0f));
     EXPECT_REFUSED(RblFitShadowCascades(&zero, camera(), 1.0f, 0.1f, 10.0f));
     EXPECT_REFUSED(RblFitShadowCascades(&single, camera(), 1.0f, 0.1f, 10.0f));
+    EXPECT_REFUSED(V(RblDrawShadowCascades(single)));
+    EXPECT_REFUSED(V(RblDrawShadowCascades(zero)));
+    EXPECT_REFUSED(V(RblDrawShadowCascades(casc)));                              // not fitted
+    EXPECT_QUIET(RblShadowCascadeColor(2).b == 241, true);
+    EXPECT_QUIET(RblShadowCascadeColor(-1).r == GRAY.r && RblShadowCascadeColor(4).r == GRAY.r, true);
     EXPECT_REFUSED(RblFitShadowCascades(&omni, camera(), 1.0f, 0.1f, 10.0f));
     EVERY_BAD_CAMERA(RblFitShadowCascades(&casc, cam, 1.0f, 0.1f, 10.0f));
     for (int vi = 0; vi < 5; vi++)
@@ -1164,11 +1169,12 @@ static void c_shadow_omni_cascades(void)
         RblEndShadowMap(&casc);
     }
     for (int f = 0; f < 6; f++) { ck(RblBeginShadowMapPass(&omni, &scene, 1, f, o, 5.0f), "face %d refused: %s", f, lastWarning); RblEndShadowMap(&omni); }
-    RblShadowMap stale = omni;
+    RblShadowMap stale = omni, staleCasc = casc;
     RblUnloadShadowMap(&omni);
     EXPECT_QUIET(RblShadowMapPasses(stale) == 0, true);
     EXPECT_REFUSED(RblBeginShadowMapPass(&stale, &scene, 1, 0, o, 5.0f));
     RblUnloadShadowMap(&casc);
+    EXPECT_REFUSED(V(RblDrawShadowCascades(staleCasc)));
     RblUnloadShadowMap(&single);
 }
 
@@ -2121,7 +2127,7 @@ static const Case cases[] = {
     { "RblLoadShadowMap RblIsShadowMapValid RblUnloadShadowMap", "sizes, desc floats, zero, stale, double", c_shadow_load, "counts floats stale-header" },
     { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes, "null nesting stale-header floats" },
     { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus, "null floats" },
-    { "RblShadowMapPasses RblBeginShadowMapPass RblFitShadowCascades", "omni/cascade descs, pass indices, light types, unfitted, fit inputs, stale", c_shadow_omni_cascades, "null counts floats nesting stale-header" },
+    { "RblShadowMapPasses RblBeginShadowMapPass RblFitShadowCascades RblDrawShadowCascades RblShadowCascadeColor", "omni/cascade descs, pass indices, light types, unfitted, fit inputs, stale", c_shadow_omni_cascades, "null counts floats nesting stale-header" },
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load, "null counts" },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle, "null stale-header" },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads, "null stale-header" },
