@@ -81,7 +81,7 @@
 *          transpose); a vertex with all four weights zero keeps its bind pose. Refused with a log line:
 *          boneMatrices NULL, skeleton.boneCount outside 1..RBL_MAX_BONES, NaN/huge bones, meshes
 *          without GPU bone data, RblDrawMesh and billboards with a skinned program.
-*       6. Shadows (directional and spot lights): before BeginMode3D, draw the casters with the same
+*       6. Shadows (directional, spot and point lights): before BeginMode3D, draw the casters with the same
 *          calls and materials as the colour pass, then list the maps in the scene.
 *            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shadowMaps = 1
 *            RblShadowFocusFromCamera(camera, aspect, 0.1f, 30.0f, &focus, &radius);
@@ -92,6 +92,10 @@
 *                scene.shadowMaps = &sun; scene.shadowMapCount = 1;
 *            }
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
+*          Point lights (desc.omni) and cascaded suns (desc.cascades) take RblShadowMapPasses(map)
+*          passes a frame, each drawing the same casters (cascades: RblFitShadowCascades first):
+*            for (int i = 0; i < RblShadowMapPasses(map); i++)
+*                if (RblBeginShadowMapPass(&map, &scene, light, i, focus, radius)) { ... RblEndShadowMap(&map); }
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
 *            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
@@ -265,6 +269,23 @@
 *       0..3r: casters up to 2r toward the light), moved in whole texels of a world-fixed grid so edges
 *       do not crawl as the focus follows the camera; spot = perspective over the outer cone (<= 80
 *       degrees), depth range/1000..range (range 0: out to the focus sphere).
+*       Point lights (RblShadowDesc.omni): six cube faces in one target, tiles 3 x 2 (+X -X +Y / -Y +Z
+*       -Z; up +Z for the Y faces, else +Y; right = axis x up), each a perspective camera at the light
+*       over 90 degrees widened by RBL_SHADOW_MAX_FILTER/2 + 2 guard texels per side, depth as a spot's.
+*       The lookup takes the face of the point's major axis from the light and builds that face's
+*       transform in the shader: one map slot per light, the same bias, PCF and identities as a spot
+*       (a 2D target, not a cube texture: texel fetches with identities, on every dialect). Light-
+*       facing casters turn toward the light in all six faces (CAMERA_PLANE cards too), so a card
+*       drawn into two faces is the same card; a frame draws the casters six times (six passes).
+*       Cascades (RblShadowDesc.cascades 2..4, a directional light; tiles in a row): RblFitShadowCascades
+*       splits the camera's near..far by the practical split (lambda x logarithmic + (1 - lambda) x
+*       uniform, cascadeLambda 0.75) and fits each cascade the smallest sphere around its slice of the
+*       view (from the second on, widened by the previous one's blend band): a pan or turn moves the
+*       sphere, never resizes it, and its window moves in whole texels of a world-fixed grid, so
+*       edges hold still (tests/test_omni_cascades.c: edges and pixels over a pan and a turn).
+*       One light frame and depth range serve all cascades; the receiver takes the first cascade
+*       whose far split lies beyond its view depth and, inside the last cascadeBlend (0.1) of its
+*       depth range, mixes the next cascade's lookup in linearly. Debug view: RblDrawShadowCascades.
 *       Casters: inside a pass every header draw swaps in a caster program keeping the material's
 *       albedo map, colDiffuse, tint and alpha cutoff (a cut-out casts a cut-out); culling is off.
 *       Billboards never shadow themselves: each caster writes its identity with its distance into
@@ -434,8 +455,9 @@
 *         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
 *         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
 *         use of it and logged once per program.
-*       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
-*         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
+*       - Shadows: an omni map's frame is six passes drawing the casters six times, a cascaded map's
+*         one pass per cascade (rlgl has no layered or geometry-shader rendering); cascades fit one
+*         camera per map, directional lights only; comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
 *         the target, viewport and matrices it found but leaves the depth test off, culling on and
 *         colour blending on (as EndMode3D and raylib's default): run shadow passes before BeginMode3D
 *         (inside BeginTextureMode is fine).
