@@ -88,10 +88,13 @@ float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 pr
     // Receiver plane: distance change per texel step along the map's x and y. A perspective map's
     // texel is a ray (along + right x + up y, x and y its tangents at the texel centre): the plane's
     // distance changes with the ray's angle to it, not the axis's (a floor seen by a cube side face
-    // lies along the axis). The plane's gradient is the same for n and -n
-    vec3 ray = along;
-    if (perspective) ray += (right*(2.0*q.x - 1.0) + up*(2.0*q.y - 1.0))*(0.5*prm.x*bias.w);
-    vec3 nf = (dot(n, ray) > 0.0)? -n : n;
+    // lies along the axis), and is the same for n and -n
+    vec3 ray = along, nf = n;
+    if (perspective)
+    {
+        ray += (right*(2.0*q.x - 1.0) + up*(2.0*q.y - 1.0))*(0.5*prm.x*bias.w);
+        nf = (dot(n, ray) > 0.0)? -n : n;
+    }
     vec2 slope = vec2(dot(nf, right), dot(nf, up))/max(-dot(nf, ray), 1e-4);
     slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;
     float size = bias.w;
@@ -133,40 +136,49 @@ float rblShadowMap(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, 
                    vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec3 position, vec3 n, float NdotL, float side, vec2 caster)
 {
     float kind = floor(prm.y/4.0 + 0.01);
-    vec4 p = vec4(prm.x, prm.y - 4.0*kind, prm.zw);
     float size = bias.w;
-    if (kind < 0.5) return rblShadowLookup(map, r0, r1, r2, r3, p, bias, ax0.xyz, ax1.xyz, vec4(0.0, 0.0, size, size), position, n, NdotL, side, caster);
-    if (kind < 1.5)
+    vec4 p = vec4(prm.x, prm.y - 4.0*kind, prm.zw), tile = vec4(0.0, 0.0, size, size);
+    vec3 right = ax0.xyz, up = ax1.xyz;
+    float c = 0.0, mixing = 0.0;
+    if (kind > 1.5)
+    {
+        float depth = dot(r3, vec4(position, 1.0));
+        c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));
+        float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));
+        if (!(c < kind) || !(depth < end)) return 1.0;
+        float band = ax1.w*(end - ((c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w))));
+        mixing = ((c + 1.0 < kind) && (band > 0.0))? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;
+    }
+    else if (kind > 0.5)
     {
         vec3 d = position - t0.xyz, a = abs(d);
         float face = (a.x >= a.y && a.x >= a.z)? ((d.x < 0.0)? 1.0 : 0.0) : ((a.y >= a.z)? ((d.y < 0.0)? 3.0 : 2.0) : ((d.z < 0.0)? 5.0 : 4.0));
         vec3 along = (face < 1.5)? vec3(1.0, 0.0, 0.0) : ((face < 3.5)? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
         along *= (mod(face, 2.0) > 0.5)? -1.0 : 1.0;
-        vec3 up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
-        vec3 right = cross(along, up);
+        up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
+        right = cross(along, up);
         float e = dot(along, t0.xyz), s = 0.5/t0.w, g = p.w/(p.w - p.z);
-        vec4 w = vec4(along, -e);
-        vec4 u = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*w, v = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*w;
-        vec4 z = g*w - vec4(0.0, 0.0, 0.0, g*p.z);
-        vec4 tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);
-        return rblShadowLookup(map, u, v, z, w, p, bias, right, up, tile, position, n, NdotL, side, caster);
+        r3 = vec4(along, -e);
+        r0 = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*r3;
+        r1 = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*r3;
+        r2 = g*r3 - vec4(0.0, 0.0, 0.0, g*p.z);
+        tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);
     }
-    float depth = dot(r3, vec4(position, 1.0));
-    float c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));
-    if (!(c < kind) || !(depth < ((c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w))))) return 1.0;
-    float start = (c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w));
-    float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));
-    float band = ax1.w*(end - start);
-    float mixing = (c + 1.0 < kind && band > 0.0)? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;
-    float lit = 1.0, first = 1.0;
+    // One lookup call (one PCF loop in the program, whatever the kind); a second pass in a blend band
+    vec4 c0 = r0, c1 = r1, c3 = r3;
+    float first = 1.0, lit = 1.0;
     for (int i = 0; i < 2; i++)
     {
         if ((i == 1) && !(mixing > 0.0)) break;
-        float ci = c + float(i);
-        vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));
-        vec4 tp = vec4(1.0/(t.x*size), p.yzw);
-        lit = rblShadowLookup(map, vec4(r0.xyz*t.x, t.y), vec4(r1.xyz*t.x, t.z), r2, vec4(0.0, 0.0, 0.0, 1.0), tp, bias, ax0.xyz, ax1.xyz,
-                              vec4(ci*size, 0.0, kind*size, size), position, n, NdotL, side, caster);
+        if (kind > 1.5)
+        {
+            float ci = c + float(i);
+            vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));
+            c0 = vec4(r0.xyz*t.x, t.y); c1 = vec4(r1.xyz*t.x, t.z); c3 = vec4(0.0, 0.0, 0.0, 1.0);
+            p.x = 1.0/(t.x*size);
+            tile = vec4(ci*size, 0.0, kind*size, size);
+        }
+        lit = rblShadowLookup(map, c0, c1, r2, c3, p, bias, right, up, tile, position, n, NdotL, side, caster);
         if (i == 0) first = lit;
     }
     return (mixing > 0.0)? mix(first, lit, mixing) : first;
