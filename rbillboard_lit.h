@@ -12,24 +12,31 @@
 *       sprite's cut-out casts its own shape.
 *
 *   CONTENTS:
-*       This block: INTEGRATION (seven stages, each building on the last), then reference: MATERIAL
+*       This block: INTEGRATION (nine stages, each building on the last), then reference: MATERIAL
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
-*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
-*       (with the 0.3 -> 0.4 migration), DEPENDENCIES, LICENSE.
-*       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
-*         Types and Structures Definition (private)   registry entry, packed scene, header state
-*         material maps                     packing, normal encodings, mips, generators (CPU, load time)
-*         (Embedded shaders, RBL-SHADERS-BEGIN/END)   shaders/ files, includes resolved (make shaders)
-*         lights and the forward lit shader variant #defines before the embedded sources, compilation
-*         the program registry              one entry per compiled program, shared by equal keys
-*         lit programs and per-draw material values   Shader handles; Material -> uniforms per draw
-*         the scene                         RblSetScene: validate, pack, upload to every live program
-*         small vector helpers, geometry    camera frame, facing frames, quad corners (CPU)
-*         batched and immediate paths       vertex buffers, material runs, draws
-*         instanced path                    per-instance data, quads expanded in the vertex shader
-*         shadows                           light cameras, caster passes (before the colour pass)
-*         deferred G-buffer                 geometry pass, light passes, resolve
-*         sprite-sheet atlases and animation   readers (JSON, libGDX), frame table, player, N-way (CPU)
+*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY,
+*       DEPENDENCIES, LICENSE.
+*       The file, in order (each section's banner ends with its tag: search ">>geometry" to jump there;
+*       make test checks this list against the banners):
+*         >>config      Defines and Macros: configuration defaults (CONFIGURATION), RBL_ZERO
+*         >>types       public types, in the order the stages use them
+*         >>api         public functions, one group per stage (README's API index is made from them)
+*         >>private     private types: uniform table, registry entry, packed scene, the header's state
+*         >>shaders     generated data: the shaders/ sources as strings, includes resolved (make shaders; a
+*                       test fails if they differ; skip it when reading the code)
+*         >>vec         small vector helpers
+*         >>geometry    camera frame, facing frames, quad corners (CPU)
+*         >>batch       batched and immediate paths: vertex buffers, material runs, sorting, draws
+*         >>instanced   instanced path: per-instance data, quads expanded in the vertex shader
+*         >>maps        material maps: texel access, sRGB and mips, packing, authoring help (CPU)
+*         >>lit         lit shader variants: #defines before the embedded sources, compilation
+*         >>registry    the program registry: one entry per compiled program, shared by equal keys
+*         >>programs    lit programs and per-draw material values (Shader handles, Material -> uniforms)
+*         >>scene       RblSetScene: validate, pack, upload to every live program; scene depth
+*         >>deferred    deferred G-buffer: geometry pass, light passes, resolve
+*         >>shadows     shadow maps: light cameras, caster passes, caster identities
+*         >>atlas       sprite-sheet atlases and animation: JSON, sheet files, libGDX, slices, a page's
+*                       textures, the player (RBL_NO_ATLAS leaves it out)
 *
 *   INTEGRATION:
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
@@ -111,6 +118,19 @@
 *            // forward draws (transparent billboards), depth-tested against the G-buffer's depth
 *          Forward fallback: without MRT, float targets or a depth texture, or if a pass fails to
 *          compile, the G-buffer is invalid (logged) and RblBeginGBuffer returns false: draw as in 1-6.
+*       8. Sprite sheets: an atlas file (TexturePacker, Aseprite, libGDX; SPRITE SHEETS) gives frames,
+*          tags and pivots; a player advances a tag; a frame sets a billboard or an instance.
+*            RblAtlas atlas = RblLoadAtlas("hero.json");
+*            RblLoadAtlasTextures(&atlas, 0, NULL, &mat, &desc.material);   // before RblLoadLitShader
+*            RblSpritePlayer walk = RblPlaySprite(&atlas, RblAtlasFindTag(&atlas, "walk"), 0);
+*            RblUpdateSprite(&walk, &atlas, GetFrameTime());                 // each frame
+*            RblAtlasBillboard(&atlas, walk.frame, 1.0f/32.0f, &sprite);     // 32 pixels a unit
+*       9. Translucent sprites: a batch (or instanced draw) sorts blended billboards; soft particles
+*          (desc.softParticles) fade into the opaque world drawn between two added calls.
+*            batch.sort = RBL_SORT_BACK_TO_FRONT;  // or RBL_SORT_HYBRID: solid texels opaque
+*            RblBeginSceneDepth();                 // inside BeginDrawing: the opaque world's depth kept
+*                ... BeginMode3D, opaque draws, EndMode3D ...
+*            RblEndSceneDepth();                   // shown; then the blended draws in BeginMode3D
 *
 *   MATERIAL VALUES (read from the raylib Material at each header draw; zero means default):
 *       maps[MATERIAL_MAP_ALBEDO].color      base colour x texture (raylib's colDiffuse; zero = black)
@@ -232,23 +252,11 @@
 *       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
 *       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (fog, exposure,
 *       tonemap, encoding; writes depth). Set the scene before the geometry pass: it adds the ambient.
-*       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
-*         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a bits 23..16
-*         RT1 RGBA8    bits 55..24 of one 56-bit word (RT1.r its most significant byte); RT2 RG8 bits 15..0
-*                      (RGBA8 where the G-buffer receives shadows: ba each pixel's caster identity, 12 B)
-*           GGX        normal 36 bits | roughness 12: log over [0.045, 1] | metalness 8: linear
-*           Blinn-P.   normal 32 bits | shininess 12: log2(n)/11 | intensity 12: log2(1 + 256 s)/9
-*                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
-*           Lambert    normal 36 bits | 0 | specular map 8 (debug view)
-*         normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate (odd: 0 and
-*                      +-1 are codes, axis-aligned normals exact), the nearest of the 4 codes around
-*                      the point; b = 18 (max 0.00061 deg), Blinn-Phong 16 (max 0.0025 deg: its lobe,
-*                      n <= 2048, is at least 25 times wider than GGX's sharpest, and a constant
-*                      material rounded to one code biases every pixel, so its fields take the bits)
-*       Steps are fixed relative changes of what the BRDF reads (a highlight's error is relative);
-*       shaders/gbuffer_codec.glsl has the packing, README "Deferred" the measured errors and limits.
-*       plus RT3 RGBA16F accumulation (emission and ambient from the geometry pass, then light; alpha:
-*       occlusion, for its debug view only) and a 32-bit float depth texture under raylib's
+*       Lighting and material decoding are the forward path's code. Colour targets: 10 bytes per pixel
+*       (12 where the G-buffer receives shadows: RT2 keeps each pixel's caster identity). Their layout
+*       has one home, the comment opening shaders/gbuffer_codec.glsl (embedded below: search for
+*       "G-buffer codec:"); README "Deferred" has the measured errors and limits. Depth is a 32-bit
+*       float depth texture under raylib's
 *       projection (rlgl's cull distances): rlLoadTextureDepth's texture respecified through
 *       rlGetProcAddress("glTexImage2D"), since an orthographic camera's depth is linear over the
 *       whole clip range (a 24-bit step is (far - near)/2^24 world units everywhere) and a driver's
@@ -259,7 +267,7 @@
 *       own, so later forward draws test against it; lighting tolerates its far-field error.
 *       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
-*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, kept for
+*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, RBL_INSTRUMENTS, kept for
 *       comparison). Debug views: RblSetGBufferOutput.
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
@@ -479,7 +487,6 @@
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
-*       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
 *       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
 *         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
 *         packer that interlocks polygons may leave another frame's texels inside a quad.
@@ -493,6 +500,12 @@
 *   CONFIGURATION:
 *       #define RBILLBOARD_LIT_IMPLEMENTATION
 *           Generates the implementation in the including file (exactly one translation unit).
+*       #define RBL_NO_ATLAS
+*           Leaves out the sprite-sheet module (atlas readers, player, sectors: SPRITE SHEETS); the
+*           rest of the header does not depend on it.
+*       #define RBL_INSTRUMENTS
+*           Adds what the tests and benchmarks measure with: RblMeasureNormalEncoding, the G-buffer's
+*           naiveFullscreen baseline and forced-failure hooks (not for games).
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
@@ -515,6 +528,8 @@
 *           1..2^26. The reader holds the text's values at once (20 bytes each).
 *           Input beyond any limit is refused with one log line; world positions and camera vectors
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
+*       #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f
+*           Seconds a frame shows where its atlas states no duration (libGDX, TexturePacker).
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
@@ -538,92 +553,29 @@
 *           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
 *           __declspec(dllexport/dllimport) on Windows, as in raylib.
 *
-*   VERSIONS HISTORY:
-*       0.1 (2026-11-22) First release: geometry (all facing modes, flips, rotated frames, rounded
-*                        normals), immediate, batched and instanced paths, packed material maps,
-*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog,
-*                        tonemap), deferred helper (10-byte G-buffer, light volumes, debug views).
-*       0.2 (2026-11-23) Shadows: directional and spot shadow maps cast by billboards (alpha-tested,
-*                        every path) and Models, received forward and deferred; RblView gained the
-*                        shadow pass's light and minimum cast angle (zero outside shadow passes).
-*       0.3 (2026-11-23) Faster CPU geometry: batches reuse a facing frame while facing and up repeat
-*                        (RblBatch gained RblFrameCache), rotation uses an exact-in-degrees sin/cos
-*                        (quadrant angles exact), instanced draws upload the caller's array directly
-*                        when every instance is valid; the instance bound is now |value| < 2^120.
-*       0.4 (2026-11-23) The 1.0 API shape: a lit program is a raylib Shader of compiled features only;
-*                        values travel with the Material; one RblScene a frame (lights, ambient, fog,
-*                        exposure, shadow maps) for every program and G-buffer; RblDrawModel/Mesh;
-*                        one program registry; raylib's UnloadShader on a lit program is survivable.
-*                        C++11..23 clean (g++, clang++); RBL_ZERO zero-initialises in C and C++.
-*         0.3 -> 0.4 (old -> new):
-*           RblLitShader lit = RblLoadLitShader(d)     Shader lit = RblLoadLitShader(d)
-*           material.shader = lit.shader               material.shader = lit
-*           RblIsLitShaderValid(lit)                   RblIsLitShaderValid(shader) (a Shader)
-*           RblUnloadLitShader(lit)                    RblUnloadLitShader(&shader) (zeroes it)
-*           RblSetLights(&lit, lights, n, ambient)     scene.lights, .lightCount, .ambient; RblSetScene
-*           RblSetHemisphereAmbient(&lit, sky, gr, up) scene.ambient = sky, .ambientGround, .ambientUp
-*           RblSetFog(&lit, fog)                       scene.fog
-*           RblSetExposure(&lit, e)                    scene.exposure
-*           RblSetShadows(&lit, maps, n)               scene.shadowMaps, .shadowMapCount (after passes)
-*           RblSetGBufferShadows(&g, maps, n)          scene.shadowMaps, .shadowMapCount
-*           RblSetGBufferHemisphere(&g, ground, up)    scene.ambientGround, .ambientUp
-*           RblLoadGBuffer(w, h, shadingDesc)          RblLoadGBuffer(gdesc), an RblGBufferDesc
-*           RblIsGBufferValid(g)                       RblIsGBufferValid(&g)
-*           RblGBufferBytesPerPixel(g)                 RblGBufferBytesPerPixel(&g)
-*           RblDrawDeferredLights(&g, l, n, ambient)   RblSetScene(&scene) before RblBeginGBuffer (the
-*                                                        geometry pass adds the ambient); then
-*                                                        RblDrawDeferredLights(&g)
-*           RblBeginShadowMap(&map, lights, i, c, r)   RblBeginShadowMap(&map, &scene, i, c, r)
-*           RblDrawModelShadow(model, p, s, tint)      RblDrawModel(model, p, s, tint) inside the pass
-*           desc.specular                              params[RBL_PARAM_SPECULAR]
-*           desc.specularColor                         maps[MATERIAL_MAP_SPECULAR].color
-*           desc.shininess                             maps[MATERIAL_MAP_NORMAL].value
-*           desc.roughness                             maps[MATERIAL_MAP_ROUGHNESS].value
-*           desc.metalness                             maps[MATERIAL_MAP_METALNESS].value
-*           desc.emissiveColor                         maps[MATERIAL_MAP_EMISSION].color
-*           desc.emissiveIntensity                     maps[MATERIAL_MAP_EMISSION].value
-*           desc.alphaCutoff                           params[RBL_PARAM_ALPHA_CUTOFF] (casters too)
-*           desc.hemisphereAmbient                     removed: always on; scene.ambientGround 0 = flat
-*           desc.fog (RblFog)                          desc.fog (RblFogMode compiled in) + scene.fog
-*           desc.exposure                              scene.exposure
-*           desc.maxLights 0 = 1                       desc.maxLights 0 = 4
-*           desc.shadowCaster                          removed (casters are the header's)
-*           gbuffer.shading (RblLitShaderDesc)         gbuffer.desc (RblGBufferDesc)
-*           RBL_LIGHTS_POINT, _DIRECTIONAL, _SPOT,     RBL_LIGHT_FEATURE_POINT, ... (RblLightFeature;
-*             _CLASSIC_FALLOFF                           RBL_LIGHT_POINT etc. stay the light types)
-*           RblView, RblGetView(camera)                RblCameraFrame, RblGetCameraFrame(camera)
-*           RblView.light, .minCastSin                 removed (the shadow pass's, private)
-*         After 0.4 (old -> new):
-*           RblShadowDesc.faceLight = true             the default (casters face the light)
-*           RblShadowDesc.faceLight = false            RblShadowDesc.faceCamera = true
-*           RblGBufferView, RBL_GBUFFER_VIEW_*         RblGBufferOutput, RBL_GBUFFER_OUTPUT_*
-*           RblSetGBufferView(&g, v, s); g.debugView,  RblSetGBufferOutput(&g, o, s); g.output,
-*             g.debugScale                               g.outputScale
-*           desc.debugView                             desc.debugOutput
-*           batch.vertices, .runs, .view, .frame, ...  private (batch.state); capacity, count and
-*                                                        skipped stay
-*           gbuffer.id, .lightId, .passes[], VAOs, ... private (gbuffer.state); targets, desc,
-*                                                        output, naiveFullscreen, light counts stay
-*           map.id, .lightView, .matrix, .begun, ...   private (map.state); depth, size, desc,
-*                                                        light stay
-*           map.caster, map.casterInstanced            removed (casters are the header's)
-*           instanceBuffer.shaderId, .shaderGeneration, .loc   removed (the registry keeps locations)
-*           instanceBuffer.staging, .vaoId, .vboId     private (buffer.state); capacity, skipped stay
-*           void RblBeginBatch(...)                    bool RblBeginBatch(...): refuses while billboards
-*                                                        are pending (was: dropped them)
-*           RblEncodeNormal(NaN/zero normal) = +Z      refused with a log line, out untouched
-*         Reliability (0.4): every refusal logs one line and changes nothing (a contract suite over
-*         all public functions, one process per case); limits RBL_MAX_BATCH_BILLBOARDS,
-*         RBL_MAX_INSTANCES, RBL_MAX_SCENE_LIGHTS, RBL_MAX_LIGHT_INTENSITY, RBL_MAX_TARGET_SIZE,
-*         RBL_MAX_OCCLUSION_RADIUS; allocation failures swept on every allocating path.
-*       0.5 (unreleased) Sprite sheets (TexturePacker, Aseprite, libGDX atlases; player, N-way,
-*                        cross-fades), GPU-skinned Models, translucent sorting and soft particles,
-*                        run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL), a 56-bit
-*                        G-buffer word, RBL_VERSION* (RBILLBOARD_LIT_VERSION* kept); no API removed.
-*                        Details: CHANGELOG.md.
+*   VERSIONS HISTORY: (migration tables: CHANGELOG.md)
+*       0.5 (unreleased)  ADDED: sprite-sheet atlases (TexturePacker, Aseprite, libGDX), the sprite player,
+*                                N-way sectors, cross-fades, slices, premultiplied pages, normal sheets
+*                         ADDED: GPU-skinned Models; translucent sorting; soft particles (RblBeginSceneDepth)
+*                         ADDED: run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL 1 and 2)
+*                         ADDED: sprites never shadow themselves (caster identities); orthographic cameras
+*                         ADDED: RblClose in any order; stale copies of every value type refused by id
+*                         ADDED: RBL_VERSION, RBL_VERSION_MAJOR/MINOR/PATCH
+*                         CHANGED: the G-buffer keeps one 56-bit word and a float depth
+*                         CHANGED: shadow casters face the light by default (RblShadowDesc.faceCamera)
+*                         CHANGED: RblGBufferView -> RblGBufferOutput; private members behind .state
+*                         REMOVED: RblShadowDesc.faceLight (the default now)
+*       0.4 (2026-11-23)  CHANGED: the 1.0 API shape: a lit program is a raylib Shader of compiled
+*                                  features; values travel with the Material; one RblScene a frame
+*                         ADDED: RblDrawModel, RblDrawMesh; RBL_ZERO; C++11..23; the contract suite
+*                         REMOVED: RblLitShader, RblSetLights, RblSetFog, RblSetExposure, RblSetShadows
+*       0.3 (2026-11-23)  CHANGED: faster CPU geometry (facing frames reused, exact-degree rotation)
+*       0.2 (2026-11-23)  ADDED: directional and spot shadow maps, cut-out casters, forward and deferred
+*       0.1 (2026-11-22)  ADDED: first release: facing modes, immediate/batched/instanced paths,
+*                                packed maps, forward lighting, the deferred helper
 *
 *   DEPENDENCIES:
-*       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
+*       raylib 6.0 or later (raylib.h, rlgl.h, raymath.h), any of its GL backends: 3.3, 4.3, ES 3, ES 2, 2.1
 *
 *   LICENSE: zlib/libpng
 *
@@ -676,7 +628,7 @@
 #endif
 
 //----------------------------------------------------------------------------------
-// Defines and Macros
+// Defines and Macros   >>config
 //----------------------------------------------------------------------------------
 // Zero initialiser valid in C99 and C++11 alike (`RblBillboard card = RBL_ZERO;`, then set fields):
 // C's universal `{ 0 }` draws -Wmissing-field-initializers in C++, whose `{}` is not C99
@@ -715,6 +667,9 @@
 #ifndef RBL_MAX_ATLAS_ENTRIES
     #define RBL_MAX_ATLAS_ENTRIES 16777216      // JSON values one atlas text may hold, and rows of each atlas table (2^24; at most 2^26)
 #endif
+#ifndef RBL_SPRITE_DEFAULT_FRAME_TIME
+    #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // Seconds a frame shows where the atlas gives no duration (libGDX, TexturePacker)
+#endif
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
 #endif
@@ -722,7 +677,7 @@
     #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11     // The scene depth soft particles read (RblScene.depth)
 #endif
 #ifndef RBL_SHADOW_TEXTURE_UNIT
-    #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's materials use 0..11)
+    #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's material maps use 0..10, the scene depth 11)
 #endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
@@ -739,7 +694,7 @@
 #endif
 
 //----------------------------------------------------------------------------------
-// Types and Structures Definition
+// Types and Structures Definition   >>types
 //----------------------------------------------------------------------------------
 // How a billboard orients itself
 typedef enum {
@@ -797,7 +752,6 @@ typedef struct RblCameraFrame {
     bool orthographic;              // Parallel view (CAMERA_ORTHOGRAPHIC): the eye is at infinity along back, facing modes turn toward back
 } RblCameraFrame;
 
-// Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 // How RblEndBatch orders and passes a batch's billboards (RblBatch.sort)
 typedef enum {
     RBL_SORT_NONE = 0,              // Submission order (opaque and alpha-tested billboards)
@@ -805,6 +759,7 @@ typedef enum {
     RBL_SORT_HYBRID                 // Solid texels first (depth tested and written), then the fringe back to front without depth writes
 } RblSortMode;
 
+// Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 typedef struct RblBatch {
     int sort;                       // RblSortMode, read by RblEndBatch (0 = submission order)
     float solidAlpha;               // RBL_SORT_HYBRID: alpha from which a texel is solid (0 = 1.0, fully opaque only)
@@ -893,13 +848,15 @@ typedef struct RblPackedMaterial {
     RblMaterialLayout layout;       // What is stored where
 } RblPackedMaterial;
 
-// Angular error of a normal encoding, in degrees
+#if defined(RBL_INSTRUMENTS)
+// Angular error of a normal encoding, in degrees (an instrument of the tests and benchmarks)
 typedef struct RblNormalErrorStats {
     double mean;                    // Mean angular error
     double p99;                     // 99th percentile
     double max;                     // Maximum
     int count;                      // Normals measured
 } RblNormalErrorStats;
+#endif
 
 // Light types (RblLight.type)
 typedef enum {
@@ -943,6 +900,16 @@ typedef enum {
     RBL_TONEMAP_REINHARD,           // c/(1 + c)
     RBL_TONEMAP_ACES                // ACES filmic fit (Narkowicz 2015)
 } RblTonemap;
+
+// What a lit program writes instead of the lit colour (RblLitShaderDesc.debugOutput)
+typedef enum {
+    RBL_DEBUG_OUTPUT_NONE = 0,      // The lit colour
+    RBL_DEBUG_OUTPUT_TANGENT_NORMAL, // The tangent-space normal the maps give
+    RBL_DEBUG_OUTPUT_WORLD_NORMAL,  // The shading normal in world space
+    RBL_DEBUG_OUTPUT_SPECULAR,      // The specular map
+    RBL_DEBUG_OUTPUT_OCCLUSION,     // The occlusion map
+    RBL_DEBUG_OUTPUT_COUNT
+} RblDebugOutput;
 
 // Light: a plain value; arrays of them are owned by the caller (no hidden global state)
 typedef struct RblLight {
@@ -988,21 +955,10 @@ typedef struct RblLitShaderDesc {
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBillboard.fade, RblInstancedDesc.fades): every map fetched twice
-    int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    int debugOutput;                // RblDebugOutput (0 = the lit colour)
 } RblLitShaderDesc;
 
-// Per-material values a lit program reads from raylib's Material at each draw (zero means default):
-//   maps[MATERIAL_MAP_ALBEDO].color      base colour x texture (raylib's colDiffuse)
-//   maps[MATERIAL_MAP_SPECULAR].color    Blinn-Phong specular colour (sRGB; zero = white; raylib uploads it as colSpecular)
-//   params[RBL_PARAM_SPECULAR]           Blinn-Phong specular intensity (0 = 0.5; with a specular map, its scale: 0 = 1)
-//   maps[MATERIAL_MAP_NORMAL].value      Blinn-Phong shininess (0 = 32; raylib's OBJ loader stores MTL Ns here)
-//   maps[MATERIAL_MAP_ROUGHNESS].value   GGX perceptual roughness without a map, 0..1 (0 = 0.5; below 0.045 clamps)
-//   maps[MATERIAL_MAP_METALNESS].value   GGX metalness 0..1 (raylib's glTF loader fills both)
-//   maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
-//   maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
-//   params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha (0 = 0.5; negative = never)
-// (raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS: its value holds the metalness, so the
-// Blinn-Phong intensity has a params slot of its own)
+// Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
 typedef enum {
     RBL_PARAM_ALPHA_CUTOFF = 0,     // Material.params index of the alpha cutoff
     RBL_PARAM_SPECULAR = 1,         // Material.params index of the Blinn-Phong specular intensity
@@ -1040,15 +996,17 @@ typedef struct RblGBufferDesc {
 typedef struct RblGBuffer {
     int width;                      // Size in pixels
     int height;
-    Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
-    Texture2D normal;               // RGBA8: bits 47..16 of the normal/material word (octahedral normal, ...)
+    Texture2D albedo;               // RGBA8: sRGB albedo; alpha: bits 23..16 of the normal/material word (DEFERRED)
+    Texture2D normal;               // RGBA8: bits 55..24 of the word
     Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear); alpha: occlusion
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
     RblGBufferDesc desc;            // Settings, defaults applied
     int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
     float outputScale;              // Range of the depth/position/light-count outputs
-    bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
+#if defined(RBL_INSTRUMENTS)
+    bool naiveFullscreen;           // Light every light in full-screen passes (the benchmarks' baseline)
+#endif
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
     unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
@@ -1095,6 +1053,7 @@ typedef struct RblScene {
     Texture2D depth;                // Opaque scene depth for soft particles: RblLoadSceneTarget's .depth or a G-buffer's (id 0 = none)
 } RblScene;
 
+#if !defined(RBL_NO_ATLAS)
 // Sprite-sheet atlas formats (RblLoadAtlasFromMemory; RblLoadAtlas detects by content)
 typedef enum {
     RBL_ATLAS_AUTO = 0,             // Detect: JSON (Aseprite when meta.app names it, else TexturePacker) or libGDX text
@@ -1186,22 +1145,24 @@ typedef struct RblSpritePlayer {
     int loops;                      // Passes to play (0 = forever)
     bool finished;                  // The last pass ended: the frame stays on its last frame
 } RblSpritePlayer;
+#endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
 #endif
 
 //----------------------------------------------------------------------------------
-// Module Functions Declaration
+// Module Functions Declaration   >>api
 //----------------------------------------------------------------------------------
-// Module lifetime
+// Module lifetime (code: >>private, >>batch)
 RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+RBLAPI const char *RblGetFailureReason(void);                                // Why the last refused call failed: its log line without "RBL: " ("" before any; kept until the next refusal)
 
-// Geometry (CPU, no GL needed)
+// Geometry (CPU, no GL needed; code: >>geometry)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
 
-// Batched and immediate paths (GL)
+// Batched and immediate paths (GL; code: >>batch)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
 RBLAPI bool RblIsBatchValid(RblBatch batch);                                  // Check the batch owns its GPU buffers
 RBLAPI void RblUnloadBatch(RblBatch *batch);                                  // Unload batch buffers
@@ -1210,25 +1171,26 @@ RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
 
-// Instanced path (GL): per-instance data only, quads expanded in the vertex shader
+// Instanced path (GL): per-instance data only, quads expanded in the vertex shader (code: >>instanced)
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
 RBLAPI bool RblIsInstanceBufferValid(RblInstanceBuffer buffer);               // Check the buffer owns its GPU objects
 RBLAPI void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer);               // Unload an instance buffer
 RBLAPI int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count); // Draw with one instanced call (material.shader: an instanced lit variant); returns instances drawn
 
-// Material maps (CPU, no GL needed): packing, encodings, authoring help
+// Material maps (CPU, no GL needed): packing, encodings, authoring help (code: >>maps)
 RBLAPI bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed); // Pack an atlas's maps; false = invalid input (logged), packed untouched
 RBLAPI void RblUnloadPackedMaterial(RblPackedMaterial *packed);               // Free packed Images
 RBLAPI void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3]); // Encode a unit tangent-space normal (RG used; RGB for RBL_NORMAL_RGB)
 RBLAPI Vector3 RblDecodeNormal(const unsigned char in[3], int encoding);     // Decode as the shaders do (unit length, never NaN)
-RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals
+#if defined(RBL_INSTRUMENTS)
+RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals (RBL_INSTRUMENTS)
+#endif
 RBLAPI Image RblGenNormalMapFromHeight(Image height, float strength, bool wrap); // Tangent-space normal map (OpenGL convention) from a height map (grey)
 RBLAPI Image RblGenHeightFromLuminance(Image albedo);                         // Height (grey) from albedo luminance, for RblGenNormalMapFromHeight
 RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength); // Cavity occlusion (grey) from a height map
 RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material); // Upload packed Images into material slots (GL): ALBEDO, NORMAL (material texture), EMISSION
 
-// Lights and the forward lit shader
-// Lit programs (compiled features only) and the frame's scene
+// Lit programs (compiled features only) and the frame's scene (code: >>programs, >>scene)
 RBLAPI Shader RblLoadLitShader(RblLitShaderDesc desc);                         // Lit program for Material.shader (equal descs share one program); id 0 + log on failure
 RBLAPI bool RblIsLitShaderValid(Shader shader);                                // Check it is a live lit program of this header (not raylib's fallback, not unloaded)
 RBLAPI void RblUnloadLitShader(Shader *shader);                                // Release this holder's reference and zero it (the program goes with its last holder)
@@ -1237,12 +1199,12 @@ RBLAPI bool RblSetScene(const RblScene *scene);                                /
 RBLAPI void RblDrawModel(Model model, Vector3 position, float scale, Color tint); // DrawModel with each material's lit values (colour, G-buffer or shadow pass)
 RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      // DrawMesh with the material's lit values (colour, G-buffer or shadow pass)
 
-// Deferred G-buffer
+// Deferred G-buffer (code: >>deferred)
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
 RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
 RBLAPI void RblEndSceneDepth(void);                                            // Show that world on the current target with its depth; soft particles read it (unless RblScene.depth is given)
-RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
+RBLAPI bool RblIsGBufferValid(RblGBuffer gbuffer);                             // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
 RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
@@ -1252,7 +1214,7 @@ RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // 
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
 
-// Shadows
+// Shadows (code: >>shadows)
 RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
 RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target loaded
 RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and zero it
@@ -1265,10 +1227,11 @@ RBLAPI void RblDrawShadowCascades(RblShadowMap map);                          //
 RBLAPI Color RblShadowCascadeColor(int cascade);                              // Debug colour of cascade 0..3: red, green, blue, yellow (grey otherwise)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
-// Sprite-sheet atlases and animation (CPU, no GL needed)
+#if !defined(RBL_NO_ATLAS)
+// Sprite-sheet atlases and animation (CPU, no GL needed; code: >>atlas)
 RBLAPI RblAtlas RblLoadAtlas(const char *fileName);                          // Load an atlas file (format detected; TexturePacker multipacks follow related_multi_packs); invalid + log on failure
 RBLAPI RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format); // Parse size bytes of atlas text (RblAtlasFormat, 0 = detect); invalid + log on failure
-RBLAPI bool RblIsAtlasValid(const RblAtlas *atlas);                           // Check it is a loaded atlas (not zero, not unloaded)
+RBLAPI bool RblIsAtlasValid(RblAtlas atlas);                                  // Check it is a loaded atlas (not zero, not unloaded)
 RBLAPI void RblUnloadAtlas(RblAtlas *atlas);                                  // Free the atlas's tables and zero it
 RBLAPI int RblAtlasFindFrame(const RblAtlas *atlas, const char *name);        // First frame of that name; -1 when none
 RBLAPI int RblAtlasFindTag(const RblAtlas *atlas, const char *name);          // First tag of that name; -1 when none
@@ -1286,6 +1249,7 @@ RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *insta
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
 RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
+#endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
 }
@@ -1320,6 +1284,11 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
     #define RBL_FREE(ptr)        free(ptr)
 #endif
 
+// Every header TraceLog goes through rbl__traceLog, which keeps the text of the last refusal
+// (warnings starting "RBL: ") for RblGetFailureReason and hands the same line to raylib's TraceLog
+static void rbl__traceLog(int level, const char *text, ...);
+#define TraceLog(...) rbl__traceLog(__VA_ARGS__)
+
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
 // Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
@@ -1341,7 +1310,7 @@ typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(R
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
 
 //----------------------------------------------------------------------------------
-// Module Types and Structures Definition (private)
+// Module Types and Structures Definition (private)   >>private
 //----------------------------------------------------------------------------------
 // Uniforms of every program the header compiles, looked up once per program into rbl__Program.loc
 // (-1 where a variant has none): one location mechanism for forward, deferred and shadow passes
@@ -1393,7 +1362,6 @@ typedef struct rbl__DeadHandle {
     const int *locs;
 } rbl__DeadHandle;
 
-// A run of billboards sharing one material inside a batch
 // A billboard's place in a sorted batch
 typedef struct rbl__SortKey {
     float depth;                    // Along the view axis (larger = farther)
@@ -1401,6 +1369,7 @@ typedef struct rbl__SortKey {
     int run;                        // Its material run
 } rbl__SortKey;
 
+// A run of billboards sharing one material inside a batch
 typedef struct rbl__BatchRun {
     Material material;              // Material the run draws with
     int first;                      // First billboard
@@ -1590,8 +1559,8 @@ typedef struct rbl__State {
     void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
     void *glGetUniformfv;           // ... and glGetUniformfv
     bool glLooked;
-    bool closed;
-    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target                    // RblClose ran: the tables go with the last object the caller holds
+    bool closed;                    // RblClose ran: the tables go with the last object the caller holds
+    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
@@ -1601,9 +1570,12 @@ typedef struct rbl__State {
     RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
+#if defined(RBL_INSTRUMENTS)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
+#endif
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
+    char failure[512];              // The last refusal line without "RBL: " (RblGetFailureReason)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
     int liveCount;                  // Slots used (free ones are reused)
@@ -1611,6 +1583,24 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+#if defined(RBL_INSTRUMENTS)
+    #define RBL__HOOK(name) (rbl__state.name)
+#else
+    #define RBL__HOOK(name) false
+#endif
+
+static void rbl__traceLog(int level, const char *text, ...)
+{
+    char line[sizeof(rbl__state.failure) + 5];
+    va_list args;
+    va_start(args, text);
+    vsnprintf(line, sizeof(line), text, args);
+    va_end(args);
+    if ((level >= LOG_WARNING) && (strncmp(line, "RBL: ", 5) == 0)) memcpy(rbl__state.failure, line + 5, strlen(line + 5) + 1);
+    (TraceLog)(level, "%s", line);
+}
+
+const char *RblGetFailureReason(void) { return rbl__state.failure; }
 
 // The GLSL dialect of rlgl's context (shaders/dialect.glsl): 330 desktop GL 3.3/4.3, 300 ES 3 and
 // WebGL2, 120 GL 2.1, 100 ES 2 and WebGL1; 0 for a context this header cannot shade (GL 1.1, software)
@@ -1723,7 +1713,7 @@ static bool rbl__unloadable(const void *holder, unsigned int id, const void *sta
 }
 
 //----------------------------------------------------------------------------------
-// Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
+// Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)   >>shaders
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_ambient[] = {
@@ -2400,7 +2390,7 @@ static const char *const rbl__shader_lit_fs[] = {
     "#include \"output.glsl\"\n",
     "#include \"soft.glsl\"\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
-    "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
+    "//   RBL_DEBUG_OUTPUT v         RblDebugOutput: 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
     "#if RBL_GLSL >= 300\n",
     "out vec4 finalColor;\n",
@@ -3655,7 +3645,7 @@ static const struct { const char *file; const char *const *const *parts; } rbl__
 // RBL-SHADERS-END
 
 //----------------------------------------------------------------------------------
-// Module Internal Functions: small vector helpers (C and C++ without compound literals)
+// Module Internal Functions: small vector helpers (C and C++ without compound literals)   >>vec
 //----------------------------------------------------------------------------------
 static inline Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
 static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
@@ -3862,7 +3852,7 @@ static inline Vector3 rbl__blendOffAxis(Vector3 vp, float w, Vector3 f, Vector3 
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: geometry
+// Module Functions Definition: geometry   >>geometry
 //----------------------------------------------------------------------------------
 // Camera frame as raymath's MatrixLookAt builds it, in double: the float inputs subtract and
 // multiply exactly there, so the frame is right to float however close camera.up comes to the view
@@ -4347,7 +4337,7 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: batched and immediate paths
+// Module Functions Definition: batched and immediate paths   >>batch
 //----------------------------------------------------------------------------------
 // Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
 // default and not visible here), so the array is generously larger than any build's
@@ -5038,7 +5028,7 @@ void RblClose(void)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: instanced path
+// Module Functions Definition: instanced path   >>instanced
 //----------------------------------------------------------------------------------
 // Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
 #define RBL__INSTANCE_LOCATION 10
@@ -5369,7 +5359,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: material maps
+// Module Functions Definition: material maps   >>maps
 //----------------------------------------------------------------------------------
 // Normal decoding, exactly what the shaders compute (GLSL mirror; t = the sampled texel, each
 // channel in [0,1] = byte/255, then e = t*2 - 1):
@@ -5555,6 +5545,7 @@ Vector3 RblDecodeNormal(const unsigned char in[3], int encoding)
     return rbl__decode(in, encoding);
 }
 
+#if defined(RBL_INSTRUMENTS)
 // k-th smallest of v[0..n-1] (quickselect with Hoare partitioning; reorders v; expected O(n))
 static double rbl__selectKth(double *v, long long n, long long k)
 {
@@ -5626,10 +5617,9 @@ RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normal
     RBL_FREE(errors);
     return stats;
 }
+#endif
 
-//----------------------------------------------------------------------------------
-// Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat
-//----------------------------------------------------------------------------------
+// ---- Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat ----
 typedef struct rbl__Texels {
     const unsigned char *u8;        // 8-bit data in place (GRAYSCALE, GRAY_ALPHA, R8G8B8, R8G8B8A8)
     const float *f32;               // Float data: in place (R32, R32G32B32, R32G32B32A32) or a converted RGBA copy
@@ -5755,9 +5745,7 @@ static inline Vector3 rbl__sourceNormal(const rbl__Texels *t, size_t i, bool dir
     return (x*x + y*y + z*z >= RBL__NORMAL_MIN_LEN2)? rbl__v3(x, y, z) : rbl__flatNormal();
 }
 
-//----------------------------------------------------------------------------------
-// sRGB, mip chains and gutter dilation
-//----------------------------------------------------------------------------------
+// ---- sRGB, mip chains and gutter dilation -----------------------------------------------------------
 static double rbl__srgbToLinear(double s)
 {
     return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4);
@@ -6045,9 +6033,7 @@ static void rbl__applyDilation(unsigned char *level, int bytesPerTexel, const in
         if (nearest[i] != (int)i) memcpy(level + i*(size_t)bytesPerTexel, level + (size_t)nearest[i]*(size_t)bytesPerTexel, (size_t)bytesPerTexel);
 }
 
-//----------------------------------------------------------------------------------
-// Packing
-//----------------------------------------------------------------------------------
+// ---- Packing ----------------------------------------------------------------------------------------
 // A map's size and format; false (logged) when it cannot be packed
 static bool rbl__checkMap(Image image, const char *name, int width, int height)
 {
@@ -6336,9 +6322,7 @@ void RblUnloadPackedMaterial(RblPackedMaterial *packed)
     memset(packed, 0, sizeof(*packed));
 }
 
-//----------------------------------------------------------------------------------
-// Authoring help: height -> normal, albedo -> height, height -> occlusion
-//----------------------------------------------------------------------------------
+// ---- Authoring help: height -> normal, albedo -> height, height -> occlusion ------------------------
 // A map for the Gen functions: present, sized and convertible; false (logged) otherwise
 static bool rbl__checkGenInput(Image image, const char *function)
 {
@@ -6524,7 +6508,7 @@ Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: lights and the forward lit shader
+// Module Functions Definition: lights and the forward lit shader   >>lit
 //----------------------------------------------------------------------------------
 // prefix + a stage's parts (rbl__pass_*: its includes resolved by the embed step, dependencies first)
 // in one allocated string, without the #include lines (GLSL has no include)
@@ -6615,7 +6599,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
     if (!rbl__finiteNonNegative(in.gamma) || (in.gamma > 16.0f) || ((in.gamma > 0.0f) && (in.gamma < 0.0625f))) return "gamma outside 1/16..16 (0 = sRGB)";
-    if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
+    if ((in.debugOutput < 0) || (in.debugOutput >= RBL_DEBUG_OUTPUT_COUNT)) return "debugOutput not an RblDebugOutput";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
@@ -6629,7 +6613,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->material.occlusion = m.occlusion;
     out->material.premultipliedAlpha = m.premultipliedAlpha;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
-    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == 3));
+    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == RBL_DEBUG_OUTPUT_SPECULAR));
     out->brdf = in.brdf;
     out->fog = in.fog;
     out->tonemap = in.tonemap;
@@ -6676,7 +6660,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 }
 
 //----------------------------------------------------------------------------------
-// Module Internal Functions: the program registry
+// Module Internal Functions: the program registry   >>registry
 //----------------------------------------------------------------------------------
 // Every program the header compiles is one registry entry, keyed by what changes the code. Lit
 // programs go out one per RblLoadLitShader call, each its own GL program, so raylib's UnloadShader
@@ -6979,7 +6963,7 @@ static void rbl__keyFromDesc(const RblLitShaderDesc *normalised, int kind, int p
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: lit programs and per-draw material values
+// Module Functions Definition: lit programs and per-draw material values   >>programs
 //----------------------------------------------------------------------------------
 Shader RblLoadLitShader(RblLitShaderDesc desc)
 {
@@ -7295,7 +7279,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: the scene
+// Module Functions Definition: the scene   >>scene
 //----------------------------------------------------------------------------------
 #define RBL__LIGHT_FLOATS 16            // position, colour, spot (vec4 each), falloff (vec3) + shadow map index + 1
 
@@ -7766,7 +7750,7 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: deferred G-buffer
+// Module Functions Definition: deferred G-buffer   >>deferred
 //----------------------------------------------------------------------------------
 // Inverse of a view matrix (rotation + translation): transposed rotation, translation -R^T t
 static Matrix rbl__rigidInverse(Matrix view)
@@ -7911,9 +7895,9 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
-    if ((g->depth.id != 0) && !rbl__state.gbufferDriverDepth) rbl__floatDepth(g->depth.id, width, height);
+    if ((g->depth.id != 0) && !RBL__HOOK(gbufferDriverDepth)) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
-    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__state.gbufferForceFailure;
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !RBL__HOOK(gbufferForceFailure);
     if (ok)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
@@ -8166,11 +8150,13 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     return g;
 }
 
-bool RblIsGBufferValid(const RblGBuffer *gbuffer)
+// Membership first: a stale copy's state (its G-buffer unloaded) is never read
+static bool rbl__gbufferValid(const RblGBuffer *gbuffer)
 {
-    // Membership first: a stale copy's state (its G-buffer unloaded) is never read
     return (gbuffer != NULL) && rbl__isLive(gbuffer->id, gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
 }
+
+bool RblIsGBufferValid(RblGBuffer gbuffer) { return rbl__gbufferValid(&gbuffer); }
 
 // New targets at width x height (passes kept); false (logged by rbl__loadTargets) keeps the old ones
 static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
@@ -8195,7 +8181,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 {
-    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
+    if (!rbl__gbufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
     {
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
@@ -8225,7 +8211,7 @@ void RblUnloadGBuffer(RblGBuffer *gbuffer)
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
+    if (!rbl__gbufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
     return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
 }
 
@@ -8252,7 +8238,7 @@ static void rbl__sceneAmbient(float out[9])
 bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
 {
     const char *bad = NULL;
-    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    if (!rbl__gbufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
@@ -8396,12 +8382,17 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
 
 // A packed light goes through a full-screen pass when it has no range (directional, range 0) or the
 // naive loop is asked for
-static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || g->naiveFullscreen; }
+#if defined(RBL_INSTRUMENTS)
+    #define RBL__NAIVE(g) ((g)->naiveFullscreen)
+#else
+    #define RBL__NAIVE(g) ((void)(g), false)
+#endif
+static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || RBL__NAIVE(g); }
 
 bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 {
     const char *bad = NULL;
-    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    if (!rbl__gbufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
@@ -8416,7 +8407,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) uncompiled++;
         else if (rbl__fullscreenLight(g, &s->lights[i*RBL__LIGHT_FLOATS])) unbounded++;
     }
-    if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
+    if (!RBL__NAIVE(g) && (unbounded > RBL_MAX_LIGHTS))
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
         return false;
@@ -8478,7 +8469,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     // Volumes: bounded lights gathered in order, then one instanced draw of sphere proxies, back
     // faces only (correct with the eye inside one)
     int v = 0;
-    for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
+    for (int i = 0; (i < count) && !RBL__NAIVE(g); i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
         if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
@@ -8513,7 +8504,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 
 void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 {
-    if (!RblIsGBufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
+    if (!rbl__gbufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
     {
         TraceLog(LOG_WARNING, "RBL: RblSetGBufferOutput: G-buffer not loaded, unknown view %i or bad scale", view);
         return;
@@ -8524,7 +8515,7 @@ void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    const char *bad = !RblIsGBufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
+    const char *bad = !rbl__gbufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
                       (rbl__state.shadowPass != NULL)? "inside a shadow pass" : (rbl__state.gbufferPass != NULL)? "inside another G-buffer's geometry pass" : NULL;
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
@@ -8549,7 +8540,7 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: shadows
+// Module Functions Definition: shadows   >>shadows
 //----------------------------------------------------------------------------------
 // The billboard frame of a shadow pass: the light's own frame (the default: casters face the light),
 // or the caller's camera (desc.faceCamera: the shadow matches what is seen); AXIS billboards get the
@@ -9115,8 +9106,9 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
     return NULL;
 }
 
+#if !defined(RBL_NO_ATLAS)
 //----------------------------------------------------------------------------------
-// Module Functions Definition: sprite-sheet atlases and animation
+// Module Functions Definition: sprite-sheet atlases and animation   >>atlas
 //----------------------------------------------------------------------------------
 // Every format lands in one frame table in TexturePacker's convention: a rotated frame is stored
 // turned 90 degrees clockwise in an h x w block; trim and pivot are upright, top-left origin.
@@ -9134,7 +9126,6 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
 #if (RBL_MAX_ATLAS_ENTRIES < 1) || (RBL_MAX_ATLAS_ENTRIES > 67108864)
     #error "RBL_MAX_ATLAS_ENTRIES must be in 1..2^26"
 #endif
-#define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // seconds per frame where the atlas gives no duration
 
 static inline Rectangle rbl__rect(float x, float y, float w, float h) { Rectangle r; r.x = x; r.y = y; r.width = w; r.height = h; return r; }
 static inline Vector2 rbl__v2(float x, float y) { Vector2 v; v.x = x; v.y = y; return v; }
@@ -10398,10 +10389,7 @@ RblAtlas RblLoadAtlas(const char *fileName)
     return a;
 }
 
-bool RblIsAtlasValid(const RblAtlas *atlas)
-{
-    return (atlas != NULL) && rbl__atlasLive(atlas);
-}
+bool RblIsAtlasValid(RblAtlas atlas) { return rbl__atlasLive(&atlas); }
 
 void RblUnloadAtlas(RblAtlas *atlas)
 {
@@ -10890,5 +10878,7 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     int k = (int)floor((rel + 0.5*width)/width);
     return k % directions;
 }
+
+#endif // RBL_NO_ATLAS
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

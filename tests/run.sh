@@ -47,6 +47,9 @@ for unit in header-decl header-impl readme examples/*.c; do
 "
   done
 done
+# The options (RBL_NO_ATLAS, RBL_INSTRUMENTS) once in C and once in C++
+for spec in gcc:c99 g++:c++11; do n=$((n + 1)); jobs="$jobs$spec header-options $BUILD/tests/matrix/cell$n.txt
+"; done
 rm -f "$BUILD"/tests/matrix/cell*.txt
 printf '%s' "$jobs" | BUILD=$BUILD RAYLIB_CFLAGS="$RAYLIB_CFLAGS" RAYLIB_LIBS="$RAYLIB_LIBS" xargs -P 2 -L 1 bash tests/tools/compile_matrix.sh
 for i in $(seq 1 $n); do
@@ -81,6 +84,8 @@ else
 fi
 
 # The README's API index and the doc block's CONFIGURATION list against the header
+echo "== test-lists (each GPU test registered beside its body)"
+out=$(python3 tests/tools/test_lists.py check 2>&1); printf '%s\n' "$out"; count "$out"
 echo "== api (README index, CONFIGURATION)"
 out=$(bash tests/tools/api_index.sh check rbillboard_lit.h README.md 2>&1); printf '%s\n' "$out"; count "$out"
 
@@ -160,6 +165,13 @@ if out=$("$BUILD/game_headless" "$BUILD/game.png" examples 2>&1) && [ -s "$BUILD
 else
   echo "  FAIL  lit sprite game example renders headlessly"; printf '%s\n' "$out" | grep -v '^INFO' | head -20; fail=$((fail + 1))
 fi
+
+# The README's code as printed (tests/tools/readme_run.c): the quick start and every how-to run
+# headlessly from examples/; each frame must show something lit, with no RBL warning logged
+echo "== readme (the quick start and each how-to, run as printed)"
+rr="$(cd "$BUILD" && pwd)/readme_run"
+out=$(cd examples && ASAN_OPTIONS=detect_leaks=0 "$rr" 2>&1); printf '%s\n' "$out" | grep -E '^  (ok|FAIL)|^readme:'; count "$out"
+if printf '%s\n' "$out" | grep -q "ERROR: AddressSanitizer\|runtime error:"; then echo "  FAIL  readme: sanitizer report"; printf '%s\n' "$out" | grep -A5 "ERROR: AddressSanitizer\|runtime error:" | head -20; fail=$((fail + 1)); fi
 
 # Static check of every spliced stage in every dialect (330, 300 es, 120, 100). glslangValidator
 # checks syntax and types per #version; it does not enforce GLSL ES 1.00's Appendix A indexing limits,

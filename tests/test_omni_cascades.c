@@ -264,7 +264,7 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
         memset(&ld, 0, sizeof(ld));
         ld.deferred = true;
         Shader geo = RblLoadLitShader(ld);
-        if (RblIsGBufferValid(&g) && RblIsLitShaderValid(geo))
+        if (RblIsGBufferValid(g) && RblIsLitShaderValid(geo))
         {
             scene.shadowMaps = maps; scene.shadowMapCount = 2; scene.lights = lights; scene.lightCount = 2;
             RT_CHECK(RblSetScene(&scene), "scene rejected");
@@ -601,3 +601,11 @@ static void test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly(void
     for (int k = 0; k < 3; k++) UnloadImage(img[k]);
     csUnload(&r);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_OMNI_CASCADES_TESTS \
+    RT_TEST(test_shadows_omni_cube_faces_hold_the_double_precision_distances), \
+    RT_TEST(test_shadows_two_omni_lights_match_a_double_precision_lookup_forward_and_deferred), \
+    RT_TEST(test_shadows_cascade_splits_and_spheres_match_the_double_reference), \
+    RT_TEST(test_shadows_cascade_edges_hold_still_while_the_camera_pans_and_turns), \
+    RT_TEST(test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly)
