@@ -612,6 +612,71 @@ static void test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_th
     ssRigUnload(&rig);
 }
 
+// The same scene under a point light (an omni map): the lamp 4 units from the sprite's middle toward
+// azimuth 60/90/120 at 37 degrees elevation, the crate between them; per pixel a double-precision
+// segment from the card point to the lamp against the crate's box decides the shadow (beyond the
+// PCF band: 2.5 texels at the lamp's distance along the face's axis, and a pixel)
+static void test_shadows_sprite_receives_a_crates_shadow_under_a_point_light(void)
+{
+    SsRig rig;
+    RblLight probe = ssLight(RBL_LIGHT_POINT, ssToLight(90, 37));
+    RT_CHECK(ssRigLoadMaps(&rig, RblLightFeatures(&probe, 1), 512, true), "rig failed to load");
+    SsCrate crate;
+    crate.size = 0.5f;          // its shadow, magnified by the lamp's perspective, covers part of the card
+    crate.model = LoadModelFromMesh(GenMeshCube(crate.size, crate.size, crate.size));
+    crate.model.materials[0].shader = rig.lit;
+    const int azimuths[3] = { 60, 90, 120 };
+    for (int a = 0; a < 3; a++)
+        for (int cam = 0; cam < 2; cam++)
+        {
+            Vector3 L = ssToLight(azimuths[a], 37.0);
+            RblLight light = litPoint((Vector3){ 4.0f*L.x, 1.0f + 4.0f*L.y, 4.0f*L.z }, 10.0f, 14.0f);
+            light.color = WHITE;
+            crate.centre = (Vector3){ 1.6f*L.x, 1.0f + 1.6f*L.y, 1.6f*L.z };
+            SsVariant v = { RBL_FACING_AXIS, false, cam != 0 };
+            RblShadowMap *map = &rig.maps[cam];
+            ssPass(&rig, map, &light, v, false, NULL, NULL);
+            Image alone = ssFront(&rig, v);
+            ssPass(&rig, map, &light, v, true, NULL, NULL);
+            Image own = ssFront(&rig, v);
+            ssPass(&rig, map, &light, v, true, ssCrateCaster, &crate);
+            Image both = ssFront(&rig, v);
+            double lo[3] = { crate.centre.x - 0.5*crate.size, crate.centre.y - 0.5*crate.size, crate.centre.z - 0.5*crate.size };
+            double hi[3] = { crate.centre.x + 0.5*crate.size, crate.centre.y + 0.5*crate.size, crate.centre.z + 0.5*crate.size };
+            double band = 2.5*map->state->texelWorld*4.0 + 3.0/SS_VIEW;
+            int inside = 0, insideWrong = 0, outside = 0, outsideWrong = 0, selfWrong = 0, sprite = 0;
+            for (int y = 0; y < SS_VIEW; y++)
+                for (int x = 0; x < SS_VIEW; x++)
+                {
+                    Color c0 = rtPixel(alone, x, y), c1 = rtPixel(own, x, y), c2 = rtPixel(both, x, y);
+                    if ((c0.a < 255) || (c2.a < 255)) continue;
+                    sprite++;
+                    if ((int)c0.r - c1.r > 2) selfWrong++;
+                    double p[3];
+                    if (!ssCardPoint(x, y, p)) continue;
+                    if (c0.r < SS_AMBIENT + 30) continue;
+                    // The segment to the lamp (parameter 0..1) against the box grown or shrunk by the band
+                    double d[3] = { light.position.x - p[0], light.position.y - p[1], light.position.z - p[2] };
+                    double tin = ssRayBox(p, d, lo, hi, -band), tout = ssRayBox(p, d, lo, hi, band);
+                    if ((tin >= 0.0) && (tin <= 1.0)) { inside++; if (c2.r > SS_AMBIENT + 6) insideWrong++; }
+                    else if ((tout < 0.0) || (tout > 1.0)) { outside++; if (abs((int)c2.r - c1.r) > 2) outsideWrong++; }
+                }
+            const char *mode = cam? "camera-facing" : "light-facing";
+            RT_CHECK(inside > sprite/10, "lamp azimuth %d, %s casters: only %d of %d sprite pixels lie clearly in the crate's shadow (test setup)", azimuths[a], mode, inside, sprite);
+            RT_CHECK(outside >= 16, "lamp azimuth %d, %s casters: only %d of %d sprite pixels lie clearly outside the crate's shadow (test setup)", azimuths[a], mode, outside, sprite);
+            RT_CHECK(insideWrong == 0, "lamp azimuth %d, %s casters: %d of %d pixels in the crate's shadow not darkened", azimuths[a], mode, insideWrong, inside);
+            RT_CHECK(outsideWrong == 0, "lamp azimuth %d, %s casters: %d of %d pixels outside the crate's shadow changed", azimuths[a], mode, outsideWrong, outside);
+            RT_CHECK(selfWrong == 0, "lamp azimuth %d, %s casters: %d pixels darkened by the sprite's own caster", azimuths[a], mode, selfWrong);
+            printf("    lamp azimuth %3d, elevation 37, %s casters: %d sprite pixels, %d (%.0f%%) in the crate's shadow all darkened, %d outside it unchanged, %d changed by its own caster\n",
+                   azimuths[a], mode, sprite, inside, 100.0*inside/sprite, outside, selfWrong);
+            if (rtFailuresInCurrentTest() > 0) { rtSaveImage(both, "crate-point"); rtSaveImage(alone, "alone-point"); }
+            UnloadImage(alone); UnloadImage(own); UnloadImage(both);
+        }
+    crate.model.materials[0].shader = (Shader){ 0 };
+    UnloadModel(crate.model);
+    ssRigUnload(&rig);
+}
+
 // ---- continuity where the light sits on the sprite's axis ----------------------------------------
 // A directional light passing over an AXIS sprite (axis +Y) from the front to behind, and from one side
 // to the other, in 0.5-degree steps through the zenith: the ground shadow (floor pixels, top view)
@@ -912,6 +977,7 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
 #define RBL_SELF_SHADOW_TESTS \
     RT_TEST(test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_light_direction), \
     RT_TEST(test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_the_users_scene), \
+    RT_TEST(test_shadows_sprite_receives_a_crates_shadow_under_a_point_light), \
     RT_TEST(test_shadows_light_over_an_axis_sprite_moves_its_shadow_continuously), \
     RT_TEST(test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_order), \
     RT_TEST(test_shadows_self_shadow_option_drops_the_identities), \
