@@ -88,7 +88,7 @@
 *          transpose); a vertex with all four weights zero keeps its bind pose. Refused with a log line:
 *          boneMatrices NULL, skeleton.boneCount outside 1..RBL_MAX_BONES, NaN/huge bones, meshes
 *          without GPU bone data, RblDrawMesh and billboards with a skinned program.
-*       6. Shadows (directional and spot lights): before BeginMode3D, draw the casters with the same
+*       6. Shadows (directional, spot and point lights): before BeginMode3D, draw the casters with the same
 *          calls and materials as the colour pass, then list the maps in the scene.
 *            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shadowMaps = 1
 *            RblShadowFocusFromCamera(camera, aspect, 0.1f, 30.0f, &focus, &radius);
@@ -99,6 +99,10 @@
 *                scene.shadowMaps = &sun; scene.shadowMapCount = 1;
 *            }
 *            RblSetScene(&scene);                  // after the passes: it reads their matrices
+*          Point lights (desc.omni) and cascaded suns (desc.cascades) take RblShadowMapPasses(map)
+*          passes a frame, each drawing the same casters (cascades: RblFitShadowCascades first):
+*            for (int i = 0; i < RblShadowMapPasses(map); i++)
+*                if (RblBeginShadowMapPass(&map, &scene, light, i, focus, radius)) { ... RblEndShadowMap(&map); }
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
 *          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
 *            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
@@ -273,6 +277,23 @@
 *       0..3r: casters up to 2r toward the light), moved in whole texels of a world-fixed grid so edges
 *       do not crawl as the focus follows the camera; spot = perspective over the outer cone (<= 80
 *       degrees), depth range/1000..range (range 0: out to the focus sphere).
+*       Point lights (RblShadowDesc.omni): six cube faces in one target, tiles 3 x 2 (+X -X +Y / -Y +Z
+*       -Z; up +Z for the Y faces, else +Y; right = axis x up), each a perspective camera at the light
+*       over 90 degrees widened by RBL_SHADOW_MAX_FILTER/2 + 2 guard texels per side, depth as a spot's.
+*       The lookup takes the face of the point's major axis from the light and builds that face's
+*       transform in the shader: one map slot per light, the same bias, PCF and identities as a spot
+*       (a 2D target, not a cube texture: texel fetches with identities, on every dialect). Light-
+*       facing casters turn toward the light in all six faces (CAMERA_PLANE cards too), so a card
+*       drawn into two faces is the same card; a frame draws the casters six times (six passes).
+*       Cascades (RblShadowDesc.cascades 2..4, a directional light; tiles in a row): RblFitShadowCascades
+*       splits the camera's near..far by the practical split (lambda x logarithmic + (1 - lambda) x
+*       uniform, cascadeLambda 0.75) and fits each cascade the smallest sphere around its slice of the
+*       view (from the second on, widened by the previous one's blend band): a pan or turn moves the
+*       sphere, never resizes it, and its window moves in whole texels of a world-fixed grid, so
+*       edges hold still (tests/test_omni_cascades.c: edges and pixels over a pan and a turn).
+*       One light frame and depth range serve all cascades; the receiver takes the first cascade
+*       whose far split lies beyond its view depth and, inside the last cascadeBlend (0.1) of its
+*       depth range, mixes the next cascade's lookup in linearly. Debug view: RblDrawShadowCascades.
 *       Casters: inside a pass every header draw swaps in a caster program keeping the material's
 *       albedo map, colDiffuse, tint and alpha cutoff (a cut-out casts a cut-out); culling is off.
 *       Billboards never shadow themselves: each caster writes its identity with its distance into
@@ -442,8 +463,9 @@
 *         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
 *         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
 *         use of it and logged once per program.
-*       - Shadows: directional and spot lights only (point lights need cube maps); no cascades;
-*         comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
+*       - Shadows: an omni map's frame is six passes drawing the casters six times, a cascaded map's
+*         one pass per cascade (rlgl has no layered or geometry-shader rendering); cascades fit one
+*         camera per map, directional lights only; comparison in the shader (rlgl exposes no GL_TEXTURE_COMPARE_MODE). RblEndShadowMap restores
 *         the target, viewport and matrices it found but leaves the depth test off, culling on and
 *         colour blending on (as EndMode3D and raylib's default): run shadow passes before BeginMode3D
 *         (inside BeginTextureMode is fine).
@@ -1000,13 +1022,17 @@ typedef struct RblShadowDesc {
     float minCastAngle;             // AXIS billboards tilt until the light sees them at >= this, degrees (0 = 30; negative = never)
     bool faceCamera;                // Billboards cast facing the billboard call's camera (default: facing the light; see SHADOWS)
     bool selfShadow;                // No caster identities: billboards may shadow themselves, no casters target (4 B/texel less)
+    bool omni;                      // Point light: six cube faces, 3 x 2 tiles of size texels (RblShadowMapPasses: 6)
+    int cascades;                   // Directional: 2..4 cascades fitted to a camera (RblFitShadowCascades), side by side (0 = one map)
+    float cascadeLambda;            // Practical split: 0..1 from uniform to logarithmic (0 = 0.75; negative = 0)
+    float cascadeBlend;             // Share of each cascade's depth range blended into the next (0 = 0.1; negative = none; <= 0.5)
 } RblShadowDesc;
 
-// Shadow map of one directional or spot light: a depth texture and its light camera (caster programs are the header's)
+// Shadow map of one light (directional, spot, or point with desc.omni): a depth texture and its light cameras (caster programs are the header's)
 typedef struct RblShadowMap {
-    Texture2D depth;                // Depth texture of the pass (receivers sample it only with desc.selfShadow)
+    Texture2D depth;                // Depth texture of the pass (receivers sample it only with desc.selfShadow); omni and cascades: every tile
     Texture2D casters;              // RGBA8: per texel the nearest caster's distance (16 bits) and identity (16 bits), what receivers sample (id 0 with desc.selfShadow)
-    int size;                       // Texels per side
+    int size;                       // Texels per side of one map (a cube face, a cascade)
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
     unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
@@ -1192,8 +1218,13 @@ RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // 
 RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
 RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target loaded
 RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and zero it
-RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex, Vector3 focusCenter, float focusRadius); // Shadow pass of scene->lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone; false = rejected
+RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex, Vector3 focusCenter, float focusRadius); // Shadow pass of scene->lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone (pass 0 of a map with more); false = rejected
 RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
+RBLAPI int RblShadowMapPasses(RblShadowMap map);                              // Passes one frame of the map takes: 1, 6 (omni: a cube face each) or desc.cascades; 0 = invalid
+RBLAPI bool RblBeginShadowMapPass(RblShadowMap *map, const RblScene *scene, int lightIndex, int pass, Vector3 focusCenter, float focusRadius); // Pass 0..RblShadowMapPasses-1 (a cube face, a cascade: its focus is the fit's); false = rejected
+RBLAPI bool RblFitShadowCascades(RblShadowMap *map, Camera3D camera, float aspect, float nearDistance, float farDistance); // Cascaded map: split near..far (practical split) and fit each cascade to this camera, before its passes
+RBLAPI void RblDrawShadowCascades(RblShadowMap map);                          // Debug view (inside BeginMode3D): each cascade's camera slice and light window in RblShadowCascadeColor(c)
+RBLAPI Color RblShadowCascadeColor(int cascade);                              // Debug colour of cascade 0..3: red, green, blue, yellow (grey otherwise)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
 #if !defined(RBL_NO_ATLAS)
@@ -1286,7 +1317,7 @@ typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(R
 typedef enum {
     RBL__U_LIGHT_COUNT = 0, RBL__U_LIGHT_POSITION, RBL__U_LIGHT_COLOR, RBL__U_LIGHT_SPOT, RBL__U_LIGHT_ATTENUATION,
     RBL__U_AMBIENT, RBL__U_AMBIENT_GROUND, RBL__U_AMBIENT_UP, RBL__U_FOG, RBL__U_FOG_START, RBL__U_EXPOSURE,
-    RBL__U_SHADOW_LIGHT, RBL__U_SHADOW_MATRIX, RBL__U_SHADOW_PARAMS, RBL__U_SHADOW_BIAS, RBL__U_SHADOW_AXES,
+    RBL__U_SHADOW_LIGHT, RBL__U_SHADOW_MATRIX, RBL__U_SHADOW_PARAMS, RBL__U_SHADOW_BIAS, RBL__U_SHADOW_AXES, RBL__U_SHADOW_TILES,
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
@@ -1435,9 +1466,23 @@ typedef struct rbl__GBufferState {
 } rbl__GBufferState;
 
 // A shadow map's own data (RblShadowMap.state)
+#define RBL__SHADOW_SINGLE 0            // rbl__ShadowMapState.kind: one map (directional, spot)
+#define RBL__SHADOW_OMNI 1              // six cube faces (point); 2..4: that many cascades
 typedef struct rbl__ShadowMapState {
     unsigned int id;                // Framebuffer (depth attachment only)
-    int lightType;                  // RBL_LIGHT_DIRECTIONAL or RBL_LIGHT_SPOT
+    int lightType;                  // RBL_LIGHT_DIRECTIONAL, RBL_LIGHT_SPOT or RBL_LIGHT_POINT (omni)
+    int kind;                       // RBL__SHADOW_SINGLE, RBL__SHADOW_OMNI or the cascade count (2..4)
+    int cols, rows;                 // Tiles of the targets: 1 x 1, 3 x 2 (cube faces), cascades x 1
+    int pass;                       // Tile of the pass in progress or last run
+    float tiles[4][4];              // Receivers' per-tile data: omni [0] light position, half-width tan; cascades (1/width, -left/width, -bottom/width, far split)
+    float cascadeRows[4][4];        // Cascades: world -> (x, y along right, up; window depth), camera view-depth plane
+    double split[5];                // Cascades: view-depth splits near..far (RblFitShadowCascades)
+    double fitCenter[4][3], fitRadius[4];  // ... each cascade's bounding sphere (its slice, widened by the blend band below)
+    double blend;                   // ... the blend band's share of a cascade's depth range
+    bool fitted;                    // ... RblFitShadowCascades ran
+    RblCameraFrame fitView;         // ... its camera frame, tan of half its vertical view (orthographic: half height), aspect
+    double fitTan, fitAspect;
+    bool fitOrthographic;
     RblCameraFrame lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
     Matrix view;                    // Light camera matrices of the last pass
     Matrix projection;
@@ -1457,6 +1502,7 @@ typedef struct rbl__Cast {
     Vector4 light;                  // xyz toward the light (w 0) or its position (w 1)
     float minSin;
     bool faceLight;                 // Casters face the light (the pass's frame is the light's: orthographic for a directional light, so CAMERA_POSITION and AXIS face along it): AXIS tilts turn the front face to it
+    bool radial;                    // An omni pass with light-facing casters: CAMERA_PLANE cards turn toward the light as CAMERA_POSITION ones (one frame for all six faces)
 } rbl__Cast;
 
 // The frame's scene, validated and packed once by RblSetScene
@@ -1478,7 +1524,7 @@ typedef struct rbl__Scene {
     bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
     bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
-    float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
+    float shadowUniforms[RBL_MAX_SHADOWS][48];      // Matrix rows, params, bias, axes, tiles as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
@@ -3220,16 +3266,23 @@ static const char *const rbl__shader_shadows[] = {
     "// light a map shadows is the lights' business (lights.glsl, deferred_volume.fs.glsl).\n",
     "//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light\n",
     "//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup\n",
+    "// A map is one light camera (directional, spot), six cube faces (a point light: tiles 3 x 2 of one\n",
+    "// target, +X -X +Y / -Y +Z -Z) or 2..4 cascades (tiles in a row); every tile is looked up alike.\n",
     "#include \"surface.glsl\"\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
     "uniform vec4 rblShadowMatrix[4*RBL_SHADOWS]; // rows 4k..4k+3: world -> (u, v, window depth, w) of map k (rows: no\n",
     "                                            // transpose convention to differ between GL and ES uploads)\n",
+    "                                            // cascades: light-frame rows (right, up, window depth), the camera plane\n",
     "uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: per unit distance), format, near, far; format:\n",
     "                                            // 0, 1 depth texture (orthographic, perspective); 2, 3 the casters\n",
-    "                                            // target (RGBA8: 16-bit distance code, caster identity)\n",
-    "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), map size in texels\n",
-    "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right))\n",
+    "                                            // target (RGBA8: 16-bit distance code, caster identity); + 4 x kind\n",
+    "                                            // (0 one camera, 1 omni, 2..4 cascades)\n",
+    "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), tile size in texels\n",
+    "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right));\n",
+    "                                            // cascades: w the first split, the blend band's share\n",
+    "uniform vec4 rblShadowTiles[4*RBL_SHADOWS]; // omni: [4k] light position, tan of a face's half width; cascade c:\n",
+    "                                            // [4k + c] 1/width, -left/width, -bottom/width, far split\n",
     "uniform sampler2D rblShadowMap0;            // casters targets or depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
     "#if RBL_SHADOWS > 1\n",
     "uniform sampler2D rblShadowMap1;\n",
@@ -3277,7 +3330,8 @@ static const char *const rbl__shader_shadows[] = {
     "    return vec4(dot(r0, h), dot(r1, h), dot(r2, h), dot(r3, h));\n",
     "}\n",
     "\n",
-    "float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec3 right, vec3 up,\n",
+    "// tile: the map's texel origin in its target, the target's size in texels\n",
+    "float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec3 right, vec3 up, vec4 tile,\n",
     "                      vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
     "{\n",
     "    bool coded = prm.y > 1.5;                  // the casters target (else a depth texture)\n",
@@ -3295,8 +3349,17 @@ static const char *const rbl__shader_shadows[] = {
     "    // The receiver's own distance from its window depth (a depth texture's format, whatever the map holds)\n",
     "    float z = rblShadowDistance(max(q.z, 0.0), vec4(prm.x, perspective? 1.0 : 0.0, prm.zw)) - texel*(bias.x + bias.y*tanI);\n",
     "    if (coded) z -= ((prm.y > 2.5)? z*log(prm.w/prm.z) : prm.w - prm.z)*(0.5/65535.0);\n",
-    "    // Receiver plane: distance change per texel step along the map's x and y\n",
-    "    vec2 slope = vec2(dot(n, right), dot(n, up))/max(-dot(n, along), 1e-4);\n",
+    "    // Receiver plane: distance change per texel step along the map's x and y. A perspective map's\n",
+    "    // texel is a ray (along + right x + up y, x and y its tangents at the texel centre): the plane's\n",
+    "    // distance changes with the ray's angle to it, not the axis's (a floor seen by a cube side face\n",
+    "    // lies along the axis), and is the same for n and -n\n",
+    "    vec3 ray = along, nf = n;\n",
+    "    if (perspective)\n",
+    "    {\n",
+    "        ray += (right*(2.0*q.x - 1.0) + up*(2.0*q.y - 1.0))*(0.5*prm.x*bias.w);\n",
+    "        nf = (dot(n, ray) > 0.0)? -n : n;\n",
+    "    }\n",
+    "    vec2 slope = vec2(dot(nf, right), dot(nf, up))/max(-dot(nf, ray), 1e-4);\n",
     "    slope *= min(1.0, 10.0/max(length(slope), 1e-20))*texel;\n",
     "    float size = bias.w;\n",
     "    vec2 st = q.xy*size - 0.5*float(RBL_SHADOW_FILTER);         // first bilinear tap's position - 0.5, in texels\n",
@@ -3312,7 +3375,7 @@ static const char *const rbl__shader_shadows[] = {
     "            float wx = (i == 0)? 1.0 - f.x : ((i == RBL_SHADOW_FILTER)? f.x : 1.0);\n",
     "            // Texels outside the map or never written (cleared to 1: beyond the far plane) hold no occluder\n",
     "            ivec2 at = b0 + ivec2(i, j);\n",
-    "            vec4 t = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at, size) : vec4(1.0);\n",
+    "            vec4 t = (all(greaterThanEqual(at, ivec2(0))) && all(lessThanEqual(at, top)))? rblFetch(map, at + ivec2(tile.xy), tile.zw) : vec4(1.0);\n",
     "            float raw = t.r;\n",
     "            bool through = raw >= 1.0;       // nothing drawn there (cleared to 1), or the point's own caster\n",
     "            if (coded)\n",
@@ -3328,21 +3391,78 @@ static const char *const rbl__shader_shadows[] = {
     "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
     "}\n",
     "\n",
+    "// Map k of any kind: picks the tile(s) and their transform, then looks up as one camera. Omni: the\n",
+    "// cube face of the point's major axis from the light (rows built as the CPU's face camera, the\n",
+    "// guard band keeping the PCF footprint inside the face). Cascades: the first whose far split lies\n",
+    "// beyond the point's view depth; inside the last blend share of its range the next cascade's lookup\n",
+    "// is mixed in linearly (each cascade's map covers the previous one's band)\n",
+    "float rblShadowMap(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec4 ax0, vec4 ax1,\n",
+    "                   vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
+    "{\n",
+    "    float kind = floor(prm.y/4.0 + 0.01);\n",
+    "    float size = bias.w;\n",
+    "    vec4 p = vec4(prm.x, prm.y - 4.0*kind, prm.zw), tile = vec4(0.0, 0.0, size, size);\n",
+    "    vec3 right = ax0.xyz, up = ax1.xyz;\n",
+    "    float c = 0.0, mixing = 0.0;\n",
+    "    if (kind > 1.5)\n",
+    "    {\n",
+    "        float depth = dot(r3, vec4(position, 1.0));\n",
+    "        c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));\n",
+    "        float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));\n",
+    "        if (!(c < kind) || !(depth < end)) return 1.0;\n",
+    "        float band = ax1.w*(end - ((c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w))));\n",
+    "        mixing = ((c + 1.0 < kind) && (band > 0.0))? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;\n",
+    "    }\n",
+    "    else if (kind > 0.5)\n",
+    "    {\n",
+    "        vec3 d = position - t0.xyz, a = abs(d);\n",
+    "        float face = (a.x >= a.y && a.x >= a.z)? ((d.x < 0.0)? 1.0 : 0.0) : ((a.y >= a.z)? ((d.y < 0.0)? 3.0 : 2.0) : ((d.z < 0.0)? 5.0 : 4.0));\n",
+    "        vec3 along = (face < 1.5)? vec3(1.0, 0.0, 0.0) : ((face < 3.5)? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));\n",
+    "        along *= (mod(face, 2.0) > 0.5)? -1.0 : 1.0;\n",
+    "        up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);\n",
+    "        right = cross(along, up);\n",
+    "        float e = dot(along, t0.xyz), s = 0.5/t0.w, g = p.w/(p.w - p.z);\n",
+    "        r3 = vec4(along, -e);\n",
+    "        r0 = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*r3;\n",
+    "        r1 = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*r3;\n",
+    "        r2 = g*r3 - vec4(0.0, 0.0, 0.0, g*p.z);\n",
+    "        tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);\n",
+    "    }\n",
+    "    // One lookup call (one PCF loop in the program, whatever the kind); a second pass in a blend band\n",
+    "    vec4 c0 = r0, c1 = r1, c3 = r3;\n",
+    "    float first = 1.0, lit = 1.0;\n",
+    "    for (int i = 0; i < 2; i++)\n",
+    "    {\n",
+    "        if ((i == 1) && !(mixing > 0.0)) break;\n",
+    "        if (kind > 1.5)\n",
+    "        {\n",
+    "            float ci = c + float(i);\n",
+    "            vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));\n",
+    "            c0 = vec4(r0.xyz*t.x, t.y); c1 = vec4(r1.xyz*t.x, t.z); c3 = vec4(0.0, 0.0, 0.0, 1.0);\n",
+    "            p.x = 1.0/(t.x*size);\n",
+    "            tile = vec4(ci*size, 0.0, kind*size, size);\n",
+    "        }\n",
+    "        lit = rblShadowLookup(map, c0, c1, r2, c3, p, bias, right, up, tile, position, n, NdotL, side, caster);\n",
+    "        if (i == 0) first = lit;\n",
+    "    }\n",
+    "    return (mixing > 0.0)? mix(first, lit, mixing) : first;\n",
+    "}\n",
+    "\n",
     "float rblShadow(int k, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
     "{\n",
-    "    if (k == 0) return rblShadowLookup(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3],\n",
-    "                                     rblShadowParams[0], rblShadowBias[0], rblShadowAxes[0].xyz, rblShadowAxes[1].xyz, position, n, NdotL, side, caster);\n",
+    "    if (k == 0) return rblShadowMap(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3], rblShadowParams[0], rblShadowBias[0],\n",
+    "                                    rblShadowAxes[0], rblShadowAxes[1], rblShadowTiles[0], rblShadowTiles[1], rblShadowTiles[2], rblShadowTiles[3], position, n, NdotL, side, caster);\n",
     "#if RBL_SHADOWS > 1\n",
-    "    if (k == 1) return rblShadowLookup(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7],\n",
-    "                                     rblShadowParams[1], rblShadowBias[1], rblShadowAxes[2].xyz, rblShadowAxes[3].xyz, position, n, NdotL, side, caster);\n",
+    "    if (k == 1) return rblShadowMap(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7], rblShadowParams[1], rblShadowBias[1],\n",
+    "                                    rblShadowAxes[2], rblShadowAxes[3], rblShadowTiles[4], rblShadowTiles[5], rblShadowTiles[6], rblShadowTiles[7], position, n, NdotL, side, caster);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 2\n",
-    "    if (k == 2) return rblShadowLookup(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11],\n",
-    "                                     rblShadowParams[2], rblShadowBias[2], rblShadowAxes[4].xyz, rblShadowAxes[5].xyz, position, n, NdotL, side, caster);\n",
+    "    if (k == 2) return rblShadowMap(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11], rblShadowParams[2], rblShadowBias[2],\n",
+    "                                    rblShadowAxes[4], rblShadowAxes[5], rblShadowTiles[8], rblShadowTiles[9], rblShadowTiles[10], rblShadowTiles[11], position, n, NdotL, side, caster);\n",
     "#endif\n",
     "#if RBL_SHADOWS > 3\n",
-    "    if (k == 3) return rblShadowLookup(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15],\n",
-    "                                     rblShadowParams[3], rblShadowBias[3], rblShadowAxes[6].xyz, rblShadowAxes[7].xyz, position, n, NdotL, side, caster);\n",
+    "    if (k == 3) return rblShadowMap(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15], rblShadowParams[3], rblShadowBias[3],\n",
+    "                                    rblShadowAxes[6], rblShadowAxes[7], rblShadowTiles[12], rblShadowTiles[13], rblShadowTiles[14], rblShadowTiles[15], position, n, NdotL, side, caster);\n",
     "#endif\n",
     "    return 1.0;\n",
     "}\n",
@@ -3840,6 +3960,13 @@ static inline Vector3 rbl__tame(Vector3 v)
     return rbl__v3(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
 }
 
+// The facing a billboard casts with: in an omni pass with light-facing casters CAMERA_PLANE cards
+// turn toward the light (no view plane is common to the six faces)
+static inline int rbl__castFacing(const rbl__Cast *cast, int facing)
+{
+    return ((cast != NULL) && cast->radial && (facing == RBL_FACING_CAMERA_PLANE))? RBL_FACING_CAMERA_POSITION : facing;
+}
+
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
 // takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
 // (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
@@ -3850,7 +3977,8 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
     Vector3 axis = r, v = u, f = u, a = rbl__v3(0.0f, 1.0f, 0.0f);
     Vector3 toEye = view->orthographic? view->back : rbl__sub(view->eye, b->position);     // a parallel view's eye is at infinity (a directional light's too)
     bool own = true;        // false: CAMERA_PLANE without an up, CAMERA_POSITION at the eye (the view's frame)
-    switch (b->facing)
+    int facing = rbl__castFacing(cast, b->facing);
+    switch (facing)
     {
         // normal = right x (the caller's up off right), toward the camera's up
         case RBL_FACING_CAMERA_PLANE: own = rbl__len2(b->up) > 1e-24f; v = b->up; break;
@@ -3880,7 +4008,7 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
     Vector3 p;
     float w = rbl__offAxis(v, axis, &p);
     Vector3 d = rbl__blendOffAxis(p, w, f, axis);
-    switch (b->facing)
+    switch (facing)
     {
         case RBL_FACING_CAMERA_PLANE:
         {
@@ -3944,12 +4072,13 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 // scales the quad's height by it).
 static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, rbl__FrameCache *cache)
 {
-    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) &&
+    int facing = rbl__castFacing(cast, b->facing);
+    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (facing == RBL_FACING_CAMERA_PLANE) &&
         (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
     Vector3 R, U, N;
     rbl__facingBasis(view, cast, b, &R, &U, &N);
     float ulen = 1.0f;
-    if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
+    if ((facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
     {
         ulen = sqrtf(rbl__len2(U));
         if (ulen > 0.0f) U = rbl__v3(U.x/ulen, U.y/ulen, U.z/ulen);
@@ -3959,7 +4088,7 @@ static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, 
     cache->normalXRight = rbl__cross(N, R);
     cache->normalXUp = rbl__cross(N, U);
     cache->upLength = ulen;
-    cache->facing = b->facing;
+    cache->facing = facing;
 }
 
 // The albedo texture's size; an empty slot draws raylib's 1x1 default texture
@@ -5191,7 +5320,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     RblCameraFrame view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     const float frame[28] = {
-        view.eye.x, view.eye.y, view.eye.z, (float)(desc.facing + (rbl__state.cast.faceLight? 8 : 0)),
+        view.eye.x, view.eye.y, view.eye.z, (float)(rbl__castFacing(&rbl__state.cast, desc.facing) + (rbl__state.cast.faceLight? 8 : 0)),
         view.right.x, view.right.y, view.right.z, desc.roundness,
         view.up.x, view.up.y, view.up.z, (float)texW,
         view.back.x, view.back.y, view.back.z, (float)texH,
@@ -6448,7 +6577,7 @@ static Shader rbl__loadShaderVariant(const char *const *const *vs, const char *c
 static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblLightCount", "rblLightPosition", "rblLightColor", "rblLightSpot", "rblLightAttenuation",
     "rblAmbient", "rblAmbientGround", "rblAmbientUp", "rblFog", "rblFogStart", "rblExposure",
-    "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
+    "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes", "rblShadowTiles",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth" };
@@ -7132,7 +7261,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         // The casters target's distance code (shadow_caster.fs.glsl): perspective, near, far, log(far/near)
         const rbl__ShadowMapState *st = rbl__state.shadowPass->state;
-        bool perspective = (st->lightType == RBL_LIGHT_SPOT);
+        bool perspective = (st->lightType != RBL_LIGHT_DIRECTIONAL);
         float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
         rlEnableShader(caster->shader.id);
         rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
@@ -7203,7 +7332,7 @@ static const char *rbl__packLight(const RblLight *l, float p[4], float c[4], flo
     return NULL;
 }
 
-static void rbl__shadowUniformData(const RblShadowMap *map, float out[32]);
+static void rbl__shadowUniformData(const RblShadowMap *map, float out[48]);
 static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int lightCount);
 
 // Bind the scene's shadow maps to their texture units (every receiver reads units 12 + k)
@@ -7261,18 +7390,20 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     for (int k = 0; k < n; k++) lightOf[k] = slotOf[k];
     rlSetUniform(loc[RBL__U_SHADOW_LIGHT], lightOf, SHADER_UNIFORM_IVEC4, 1);
     if (n == 0) return;
-    float rows[RBL_MAX_SHADOWS*16], params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8];
+    float rows[RBL_MAX_SHADOWS*16], params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8], tiles[RBL_MAX_SHADOWS*16];
     for (int k = 0; k < n; k++)
     {
         memcpy(&rows[k*16], &s->shadowUniforms[k][0], 16*sizeof(float));
         memcpy(&params[k*4], &s->shadowUniforms[k][16], 4*sizeof(float));
         memcpy(&bias[k*4], &s->shadowUniforms[k][20], 4*sizeof(float));
         memcpy(&axes[k*8], &s->shadowUniforms[k][24], 8*sizeof(float));
+        memcpy(&tiles[k*16], &s->shadowUniforms[k][32], 16*sizeof(float));
     }
     rlSetUniform(loc[RBL__U_SHADOW_MATRIX], rows, SHADER_UNIFORM_VEC4, 4*n);
     rlSetUniform(loc[RBL__U_SHADOW_PARAMS], params, SHADER_UNIFORM_VEC4, n);
     rlSetUniform(loc[RBL__U_SHADOW_BIAS], bias, SHADER_UNIFORM_VEC4, n);
     rlSetUniform(loc[RBL__U_SHADOW_AXES], axes, SHADER_UNIFORM_VEC4, 2*n);
+    if (loc[RBL__U_SHADOW_TILES] != -1) rlSetUniform(loc[RBL__U_SHADOW_TILES], tiles, SHADER_UNIFORM_VEC4, 4*n);
 }
 
 // Ambient, fog and exposure of the scene, where the program declares them (the G-buffer's light
@@ -8426,10 +8557,11 @@ static rbl__Cast rbl__castOf(const RblShadowMap *map)
 {
     rbl__Cast cast;
     Vector3 toLight = rbl__neg(rbl__cross(map->state->lightView.up, map->state->lightView.right));    // = back
-    if (map->state->lightType == RBL_LIGHT_SPOT) { cast.light.x = map->state->lightView.eye.x; cast.light.y = map->state->lightView.eye.y; cast.light.z = map->state->lightView.eye.z; cast.light.w = 1.0f; }
+    if (map->state->lightType != RBL_LIGHT_DIRECTIONAL) { cast.light.x = map->state->lightView.eye.x; cast.light.y = map->state->lightView.eye.y; cast.light.z = map->state->lightView.eye.z; cast.light.w = 1.0f; }
     else { cast.light.x = toLight.x; cast.light.y = toLight.y; cast.light.z = toLight.z; cast.light.w = 0.0f; }
     cast.minSin = (map->desc.minCastAngle > 0.0f)? sinf(map->desc.minCastAngle*(PI/180.0f)) : 0.0f;
     cast.faceLight = !map->desc.faceCamera;
+    cast.radial = cast.faceLight && (map->state->kind == RBL__SHADOW_OMNI);
     return cast;
 }
 
@@ -8440,6 +8572,15 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     if ((in.size != 0) && ((in.size < 16) || (in.size > RBL_MAX_TARGET_SIZE))) return "size outside 16..RBL_MAX_TARGET_SIZE";
     if (!rbl__finite(in.constantBias) || !rbl__finite(in.slopeBias) || !rbl__finite(in.normalBias) || !rbl__finite(in.minCastAngle)) return "NaN/Inf bias or angle";
     if (in.minCastAngle > 80.0f) return "minCastAngle above 80 degrees";
+    if (!rbl__finite(in.cascadeLambda) || !rbl__finite(in.cascadeBlend) || (in.cascadeLambda > 1.0f) || (in.cascadeBlend > 0.5f)) return "cascadeLambda above 1 or cascadeBlend above 0.5 (or NaN/Inf)";
+    if ((in.cascades < 0) || (in.cascades > 4)) return "cascades outside 0..4";
+    if (in.omni && (in.cascades > 1)) return "omni and cascades together";
+    int tiles = in.omni? 3 : ((in.cascades > 1)? in.cascades : 1), side = (in.size == 0)? 1024 : in.size;
+    if ((side < 16) || (side*tiles > RBL_MAX_TARGET_SIZE)) return "size x tiles across (3 omni, the cascades) above RBL_MAX_TARGET_SIZE";
+    out->omni = in.omni;
+    out->cascades = (in.cascades > 1)? in.cascades : 0;
+    out->cascadeLambda = (in.cascadeLambda == 0.0f)? 0.75f : ((in.cascadeLambda < 0.0f)? 0.0f : in.cascadeLambda);
+    out->cascadeBlend = (in.cascadeBlend == 0.0f)? 0.1f : ((in.cascadeBlend < 0.0f)? 0.0f : in.cascadeBlend);
     out->size = (in.size == 0)? 1024 : in.size;
     out->constantBias = (in.constantBias == 0.0f)? 0.2f : ((in.constantBias < 0.0f)? 0.0f : in.constantBias);
     out->slopeBias = (in.slopeBias == 0.0f)? 0.1f : ((in.slopeBias < 0.0f)? 0.0f : in.slopeBias);
@@ -8499,15 +8640,20 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     }
     map.size = map.desc.size;
     map.light = -1;
+    // Tiles side by side in one target: cube faces 3 x 2 (+X -X +Y / -Y +Z -Z), cascades in a row
+    map.state->kind = map.desc.omni? RBL__SHADOW_OMNI : ((map.desc.cascades > 1)? map.desc.cascades : RBL__SHADOW_SINGLE);
+    map.state->cols = map.desc.omni? 3 : ((map.desc.cascades > 1)? map.desc.cascades : 1);
+    map.state->rows = map.desc.omni? 2 : 1;
+    int width = map.size*map.state->cols, height = map.size*map.state->rows;
     unsigned int callerTarget = rbl__activeFramebuffer();
-    map.depth.id = rlLoadTextureDepth(map.size, map.size, false);
-    map.depth.width = map.size; map.depth.height = map.size; map.depth.mipmaps = 1;
+    map.depth.id = rlLoadTextureDepth(width, height, false);
+    map.depth.width = width; map.depth.height = height; map.depth.mipmaps = 1;
     bool ok = (map.depth.id != 0);
     if (ok && !map.desc.selfShadow)
     {
         // The casters target: what receivers sample (distance code and identity, unfiltered)
-        map.casters.id = rlLoadTexture(NULL, map.size, map.size, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
-        map.casters.width = map.size; map.casters.height = map.size; map.casters.mipmaps = 1; map.casters.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
+        map.casters.id = rlLoadTexture(NULL, width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
+        map.casters.width = width; map.casters.height = height; map.casters.mipmaps = 1; map.casters.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
         ok = (map.casters.id != 0);
         if (ok)
         {
@@ -8527,11 +8673,12 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
     rbl__restoreTarget(callerTarget);
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %ix%i depth target unavailable", map.size, map.size);
+        TraceLog(LOG_WARNING, "RBL: RblLoadShadowMap: %ix%i depth target unavailable", width, height);
         RblUnloadShadowMap(&map);
         return map;
     }
-    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s)", map.size, map.size, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target");
+    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s%s)", width, height, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target",
+             map.desc.omni? ", six cube faces" : ((map.desc.cascades > 1)? ", cascades" : ""));
     return map;
 }
 
@@ -8588,22 +8735,53 @@ static Matrix rbl__frustum(double l, double r, double b, double t, double n, dou
     return m;
 }
 
+// Texels each omni face and cascade keeps beyond what it must cover: the widest PCF footprint's
+// half and the normal offset stay inside the tile, so a lookup never reads a neighbour's texels
+#define RBL__SHADOW_GUARD (RBL_SHADOW_MAX_FILTER/2 + 2)
+
+// Omni face f (+X -X +Y -Y +Z -Z, tile (f % 3, f / 3)): its axis away from the light, up (+Z for
+// the Y faces, else +Y) and right = axis x up; shadows.glsl picks and builds the same
+static void rbl__cubeFace(int f, Vector3 *axis, Vector3 *up, Vector3 *right)
+{
+    float s = (f & 1)? -1.0f : 1.0f;
+    *axis = rbl__v3((f/2 == 0)? s : 0.0f, (f/2 == 1)? s : 0.0f, (f/2 == 2)? s : 0.0f);
+    *up = (f/2 == 1)? rbl__v3(0.0f, 0.0f, 1.0f) : rbl__v3(0.0f, 1.0f, 0.0f);
+    *right = rbl__cross(*axis, *up);
+}
+
+int RblShadowMapPasses(RblShadowMap map)
+{
+    if (!RblIsShadowMapValid(map)) return 0;
+    return map.desc.omni? 6 : ((map.desc.cascades > 1)? map.desc.cascades : 1);
+}
+
 bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex, Vector3 focusCenter, float focusRadius)
+{
+    return RblBeginShadowMapPass(map, scene, lightIndex, 0, focusCenter, focusRadius);
+}
+
+bool RblBeginShadowMapPass(RblShadowMap *map, const RblScene *scene, int lightIndex, int pass, Vector3 focusCenter, float focusRadius)
 {
     const char *bad = NULL;
     float p[4], c[4], spot[4], k[3];
     const RblLight *lights = (scene != NULL)? scene->lights : NULL;
+    int kind = ((map != NULL) && RblIsShadowMapValid(*map))? map->state->kind : RBL__SHADOW_SINGLE;
+    int type = ((lights != NULL) && (lightIndex >= 0) && (lightIndex < scene->lightCount))? lights[lightIndex].type : -1;
     if ((map == NULL) || !RblIsShadowMapValid(*map)) bad = "invalid shadow map";
     else if (map->state->begun || (rbl__state.shadowPass != NULL)) bad = "a shadow pass is already in progress";
     else if (rbl__state.gbufferPass != NULL) bad = "inside a G-buffer pass";
     else if ((scene == NULL) || (lights == NULL) || (lightIndex < 0) || (lightIndex >= scene->lightCount)) bad = "no scene, or lightIndex outside 0..scene->lightCount-1";
-    else if ((lights[lightIndex].type != RBL_LIGHT_DIRECTIONAL) && (lights[lightIndex].type != RBL_LIGHT_SPOT)) bad = "only directional and spot lights cast shadows";
+    else if ((pass < 0) || (pass >= RblShadowMapPasses(*map))) bad = "pass outside 0..RblShadowMapPasses-1";
+    else if ((type != RBL_LIGHT_DIRECTIONAL) && (type != RBL_LIGHT_SPOT) && (type != RBL_LIGHT_POINT)) bad = "only directional, spot and point lights cast shadows";
+    else if ((type == RBL_LIGHT_POINT) != (kind == RBL__SHADOW_OMNI)) bad = "point lights cast through omni maps (RblShadowDesc.omni), other lights through other maps";
+    else if ((kind > RBL__SHADOW_OMNI) && (type != RBL_LIGHT_DIRECTIONAL)) bad = "cascaded maps shadow directional lights only";
+    else if ((kind > RBL__SHADOW_OMNI) && !map->state->fitted) bad = "cascaded map not fitted to a camera (RblFitShadowCascades first)";
     else if ((bad = rbl__packLight(&lights[lightIndex], p, c, spot, k)) != NULL) {}
     else if (!rbl__bounded3(focusCenter) || !rbl__finite(focusRadius) || (focusRadius < 0.0f) || (focusRadius > 1e17f)) bad = "focus centre not finite or >= 1.15e18, radius outside 0..1e17";
-    else if ((lights[lightIndex].type == RBL_LIGHT_DIRECTIONAL) && !(focusRadius > 0.0f)) bad = "a directional shadow needs a focus radius > 0";
-    else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && (lights[lightIndex].outerAngle > 80.0f)) bad = "spot shadows need outerAngle <= 80 degrees";
-    else if ((lights[lightIndex].type == RBL_LIGHT_SPOT) && !(lights[lightIndex].range > 0.0f) && !(focusRadius > 0.0f)) bad = "a spot shadow without a range needs a focus radius > 0";
-    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginShadowMap: %s", bad); return false; }
+    else if ((kind == RBL__SHADOW_SINGLE) && (type == RBL_LIGHT_DIRECTIONAL) && !(focusRadius > 0.0f)) bad = "a directional shadow needs a focus radius > 0";
+    else if ((type == RBL_LIGHT_SPOT) && (lights[lightIndex].outerAngle > 80.0f)) bad = "spot shadows need outerAngle <= 80 degrees";
+    else if ((type != RBL_LIGHT_DIRECTIONAL) && !(lights[lightIndex].range > 0.0f) && !(focusRadius > 0.0f)) bad = "a spot or point shadow without a range needs a focus radius > 0";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginShadowMapPass: %s", bad); return false; }
 
     const RblLight *light = &lights[lightIndex];
     Vector3 dir = rbl__v3(-p[0], -p[1], -p[2]);            // directional: p holds the unit vector toward the light
@@ -8613,7 +8791,50 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     cam.up = rbl__v3(0.0f, 1.0f, 0.0f);                     // RblGetCameraFrame falls back when the light is vertical
     double size = (double)map->size;
     Matrix projection;
-    if (light->type == RBL_LIGHT_DIRECTIONAL)
+    rbl__ShadowMapState *st = map->state;
+    RblCameraFrame passView;                                // the camera the pass renders with (omni: the face's)
+    if (kind > RBL__SHADOW_OMNI)
+    {
+        // Cascade `pass`: one light frame and depth range for all (every cascade's sphere, casters up
+        // to 2r toward the light), each window snapped to whole texels of its own world-fixed grid
+        int n = kind;
+        double nearD = 1e300, farD = -1e300;
+        for (int i = 0; i < n; i++)
+        {
+            double along = dir.x*st->fitCenter[i][0] + dir.y*st->fitCenter[i][1] + dir.z*st->fitCenter[i][2];
+            nearD = fmin(nearD, along - 2.0*st->fitRadius[i]); farD = fmax(farD, along + st->fitRadius[i]);
+        }
+        const double *last = st->fitCenter[n - 1];
+        double back = dir.x*last[0] + dir.y*last[1] + dir.z*last[2] - nearD;
+        cam.target = rbl__v3((float)last[0], (float)last[1], (float)last[2]);
+        cam.position = rbl__v3((float)(last[0] - dir.x*back), (float)(last[1] - dir.y*back), (float)(last[2] - dir.z*back));
+        cam.projection = CAMERA_ORTHOGRAPHIC;
+        st->lightView = rbl__cameraFrame(cam);
+        const RblCameraFrame *f = &st->lightView;
+        double ex = rbl__dot(f->right, cam.position), ey = rbl__dot(f->up, cam.position), ez = rbl__dot(rbl__neg(f->back), cam.position);
+        double range = farD - ez;
+        for (int i = 0; i < n; i++)
+        {
+            double r = st->fitRadius[i], texel = 2.0*r/(size - 2.0*RBL__SHADOW_GUARD);
+            double cx = f->right.x*st->fitCenter[i][0] + f->right.y*st->fitCenter[i][1] + f->right.z*st->fitCenter[i][2];
+            double cy = f->up.x*st->fitCenter[i][0] + f->up.y*st->fitCenter[i][1] + f->up.z*st->fitCenter[i][2];
+            double left = (floor((cx - r)/texel) - RBL__SHADOW_GUARD)*texel, bottom = (floor((cy - r)/texel) - RBL__SHADOW_GUARD)*texel;
+            double inv = 1.0/(texel*size);
+            st->tiles[i][0] = (float)inv; st->tiles[i][1] = (float)(-left*inv); st->tiles[i][2] = (float)(-bottom*inv); st->tiles[i][3] = (float)st->split[i + 1];
+            if (i == pass)
+            {
+                st->texelWorld = (float)texel;
+                projection = rbl__ortho(left - ex, left - ex + texel*size, bottom - ey, bottom - ey + texel*size, 0.0, range);
+            }
+        }
+        Vector3 a = rbl__neg(f->back);
+        float rows[3][4] = { { f->right.x, f->right.y, f->right.z, 0.0f }, { f->up.x, f->up.y, f->up.z, 0.0f },
+                             { (float)(a.x/range), (float)(a.y/range), (float)(a.z/range), (float)(-ez/range) } };
+        memcpy(st->cascadeRows, rows, sizeof(rows));       // [3] the camera plane, from the fit
+        st->nearPlane = 0.0f; st->farPlane = (float)range;
+        passView = st->lightView;
+    }
+    else if (light->type == RBL_LIGHT_DIRECTIONAL)
     {
         // Orthographic over the focus sphere, eye 2r before its centre: casters up to 2r toward the light
         // from the centre and receivers up to r beyond it. The window moves in whole texels of a grid
@@ -8629,6 +8850,26 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         map->state->nearPlane = 0.0f; map->state->farPlane = (float)(3.0*r);
         map->state->texelWorld = (float)texel;
         projection = rbl__ortho(left, left + texel*size, bottom, bottom + texel*size, 0.0, 3.0*r);
+        passView = st->lightView;
+    }
+    else if (light->type == RBL_LIGHT_POINT)
+    {
+        // Cube face `pass`: a 90-degree perspective widened by the guard texels on each side (tan t);
+        // billboards turn in one frame for all six faces (toward the light), so a card drawn into two
+        // faces is the same card in both
+        double farPlane = (light->range > 0.0f)? light->range : sqrt(rbl__len2(rbl__sub(focusCenter, light->position))) + focusRadius;
+        double nearPlane = farPlane*1e-3, t = size/(size - 2.0*RBL__SHADOW_GUARD);
+        Vector3 axis, up, right;
+        rbl__cubeFace(pass, &axis, &up, &right);
+        memset(&passView, 0, sizeof(passView));
+        passView.eye = light->position; passView.right = right; passView.up = up; passView.back = rbl__neg(axis);
+        memset(&st->lightView, 0, sizeof(st->lightView));
+        st->lightView.eye = light->position;
+        st->lightView.right = rbl__v3(1.0f, 0.0f, 0.0f); st->lightView.up = rbl__v3(0.0f, 1.0f, 0.0f); st->lightView.back = rbl__v3(0.0f, 0.0f, 1.0f);
+        st->nearPlane = (float)nearPlane; st->farPlane = (float)farPlane;
+        st->texelWorld = (float)(2.0*t/size);
+        st->tiles[0][0] = light->position.x; st->tiles[0][1] = light->position.y; st->tiles[0][2] = light->position.z; st->tiles[0][3] = (float)t;
+        projection = rbl__frustum(-t*nearPlane, t*nearPlane, -t*nearPlane, t*nearPlane, nearPlane, farPlane);
     }
     else
     {
@@ -8642,14 +8883,16 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
         map->state->nearPlane = (float)nearPlane; map->state->farPlane = (float)farPlane;
         map->state->texelWorld = (float)(2.0*t/size);
         projection = rbl__frustum(-t*nearPlane, t*nearPlane, -t*nearPlane, t*nearPlane, nearPlane, farPlane);
+        passView = st->lightView;
     }
     Matrix bias = rbl__identity();
     bias.m0 = bias.m5 = bias.m10 = 0.5f; bias.m12 = bias.m13 = bias.m14 = 0.5f;
-    map->state->view = rbl__viewMatrix(&map->state->lightView);
+    map->state->view = rbl__viewMatrix(&passView);
     map->state->projection = projection;
     map->state->matrix = rbl__matMul(rbl__matMul(map->state->view, projection), bias);
     map->light = lightIndex;
     map->state->lightType = light->type;
+    st->pass = pass;
 
     rlDrawRenderBatchActive();
     for (int u = 0; u < RBL_MAX_SHADOWS; u++) { rlActiveTextureSlot(RBL_SHADOW_TEXTURE_UNIT + u); rlDisableTexture(); }   // nothing may sample the target
@@ -8658,11 +8901,15 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     map->state->savedProjection = rlGetMatrixProjection();
     map->state->savedFramebuffer = rbl__activeFramebuffer();
     rlEnableFramebuffer(map->state->id);
-    rlViewport(0, 0, map->size, map->size);
+    int x0 = (pass%st->cols)*map->size, y0 = (pass/st->cols)*map->size;
+    rlViewport(x0, y0, map->size, map->size);
     rlEnableDepthTest();
     rlEnableDepthMask();
     rlClearColor(255, 255, 0, 0);           // casters target: distance code 1 (nothing), identity 0
+    bool tiled = (st->cols*st->rows > 1);
+    if (tiled) { rlEnableScissorTest(); rlScissor(x0, y0, map->size, map->size); }      // this tile only
     rlClearScreenBuffers();
+    if (tiled) rlDisableScissorTest();
     rlDisableColorBlend();                  // the identity's low byte is the target's alpha
     rlDisableBackfaceCulling();             // a billboard facing the viewer may show the light its back
     rlSetMatrixProjection(projection);
@@ -8720,19 +8967,130 @@ bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance,
     return true;
 }
 
-// What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8)
-static void rbl__shadowUniformData(const RblShadowMap *map, float out[32])
+// Smallest sphere holding the slice near..far of a camera's view (double): centred on the axis,
+// equally far from both end caps' rims, kept between the caps. A rotation or pan of the camera
+// moves it without changing its radius (what lets cascades snap to texels without shimmer)
+static void rbl__sliceSphere(const RblCameraFrame *v, Camera3D camera, double aspect, double n, double f, double centre[3], double *radius)
 {
-    // The matrix as four rows (vec4s): rlSetUniformMatrices would transpose on desktop GL and not on ES
-    const Matrix *m = &map->state->matrix;
-    const float rows[16] = { m->m0, m->m4, m->m8, m->m12, m->m1, m->m5, m->m9, m->m13, m->m2, m->m6, m->m10, m->m14, m->m3, m->m7, m->m11, m->m15 };
-    memcpy(out, rows, sizeof(rows));
-    // Format (shadows.glsl): perspective + 2 where receivers sample the casters target
-    out[16] = map->state->texelWorld; out[17] = ((map->state->lightType == RBL_LIGHT_SPOT)? 1.0f : 0.0f) + ((map->casters.id != 0)? 2.0f : 0.0f);
-    out[18] = map->state->nearPlane; out[19] = map->state->farPlane;
+    double k = sqrt(1.0 + aspect*aspect), rn, rf;
+    if (camera.projection == CAMERA_ORTHOGRAPHIC) rn = rf = 0.5*camera.fovy*k;
+    else { double t = tan(camera.fovy*0.5*PI/180.0); rn = n*t*k; rf = f*t*k; }
+    double c = (f*f + rf*rf - n*n - rn*rn)/(2.0*(f - n));
+    c = fmin(fmax(c, n), f);
+    *radius = fmax(sqrt((c - n)*(c - n) + rn*rn), sqrt((f - c)*(f - c) + rf*rf));
+    centre[0] = camera.position.x - v->back.x*c; centre[1] = camera.position.y - v->back.y*c; centre[2] = camera.position.z - v->back.z*c;
+}
+
+bool RblFitShadowCascades(RblShadowMap *map, Camera3D camera, float aspect, float nearDistance, float farDistance)
+{
+    const char *bad = NULL;
+    if ((map == NULL) || !RblIsShadowMapValid(*map) || (map->state->kind <= RBL__SHADOW_OMNI)) bad = "not a cascaded shadow map (RblShadowDesc.cascades 2..4)";
+    else if (map->state->begun) bad = "its shadow pass is in progress";
+    else if (!rbl__cameraOk(camera) || !rbl__finite(aspect) || !(aspect > 0.0f) || !(aspect < 1e6f)) bad = "needs a valid camera (0 < fovy < 180 perspective) and 0 < aspect < 1e6";
+    else if (!rbl__finite(nearDistance) || !rbl__finite(farDistance) || !(nearDistance > 0.0f) || !(farDistance > nearDistance) || !(farDistance < 1e17f)) bad = "needs 0 < near < far < 1e17";
+    else if (!rbl__bounded3(camera.position)) bad = "camera position not finite or >= 1.15e18";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblFitShadowCascades: %s", bad); return false; }
+    rbl__ShadowMapState *st = map->state;
+    int n = st->kind;
+    double nd = nearDistance, fd = farDistance, lambda = map->desc.cascadeLambda;
+    // Practical split: a mix of the logarithmic split (even texel density in depth) and the uniform one
+    for (int i = 0; i <= n; i++)
+    {
+        double x = (double)i/n;
+        st->split[i] = (i == 0)? nd : ((i == n)? fd : lambda*nd*pow(fd/nd, x) + (1.0 - lambda)*(nd + (fd - nd)*x));
+    }
+    // Cascade i covers its slice and, from i = 1, the previous slice's blend band (both lookups of a
+    // point in the band land inside their maps)
+    RblCameraFrame v = rbl__cameraFrame(camera);
+    st->blend = map->desc.cascadeBlend;
+    for (int i = 0; i < n; i++)
+    {
+        double lo = st->split[i];
+        if (i > 0) lo -= st->blend*(st->split[i] - st->split[i - 1]);
+        rbl__sliceSphere(&v, camera, aspect, lo, st->split[i + 1], st->fitCenter[i], &st->fitRadius[i]);
+    }
+    st->fitView = v;
+    st->fitOrthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
+    st->fitTan = st->fitOrthographic? 0.5*camera.fovy : tan(camera.fovy*0.5*PI/180.0);
+    st->fitAspect = aspect;
+    Vector3 fwd = rbl__neg(v.back);
+    st->cascadeRows[3][0] = fwd.x; st->cascadeRows[3][1] = fwd.y; st->cascadeRows[3][2] = fwd.z; st->cascadeRows[3][3] = -rbl__dot(fwd, camera.position);
+    st->fitted = true;
+    return true;
+}
+
+Color RblShadowCascadeColor(int cascade)
+{
+    const Color colors[4] = { { 230, 41, 55, 255 }, { 0, 228, 48, 255 }, { 0, 121, 241, 255 }, { 253, 249, 0, 255 } };
+    return ((cascade >= 0) && (cascade < 4))? colors[cascade] : GRAY;
+}
+
+// The debug view: per cascade the slice of the fitted camera's view it serves (near and far
+// rectangles and the edges between; from cascade 1 the near one widened by the blend band) and the
+// light-space box its pass rendered (the snapped window x the shared depth range), as lines
+void RblDrawShadowCascades(RblShadowMap map)
+{
+    if (!RblIsShadowMapValid(map) || (map.state->kind <= RBL__SHADOW_OMNI) || !map.state->fitted || (map.state->tiles[0][0] == 0.0f))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawShadowCascades: needs a cascaded map fitted and rendered (RblFitShadowCascades, its passes)");
+        return;
+    }
+    const rbl__ShadowMapState *st = map.state;
+    const RblCameraFrame *v = &st->fitView, *l = &st->lightView;
+    Vector3 a = rbl__neg(l->back);
+    for (int c = 0; c < st->kind; c++)
+    {
+        Color col = RblShadowCascadeColor(c);
+        Vector3 q[8];
+        for (int k = 0; k < 8; k++)
+        {
+            double d = (k & 4)? st->split[c + 1] : ((c > 0)? st->split[c] - st->blend*(st->split[c] - st->split[c - 1]) : st->split[c]);
+            double hy = st->fitOrthographic? st->fitTan : d*st->fitTan, hx = hy*st->fitAspect;
+            double sx = (k & 1)? hx : -hx, sy = (k & 2)? hy : -hy;
+            q[k] = rbl__v3((float)(v->eye.x - v->back.x*d + v->right.x*sx + v->up.x*sy), (float)(v->eye.y - v->back.y*d + v->right.y*sx + v->up.y*sy),
+                           (float)(v->eye.z - v->back.z*d + v->right.z*sx + v->up.z*sy));
+        }
+        // The window in world space: (x, y) along right and up, depth along the light's axis
+        double inv = st->tiles[c][0], left = -st->tiles[c][1]/inv, bottom = -st->tiles[c][2]/inv, side = 1.0/inv;
+        double z0 = -(double)st->cascadeRows[2][3]*st->farPlane, z1 = z0 + st->farPlane;
+        Vector3 b[8];
+        for (int k = 0; k < 8; k++)
+        {
+            double x = left + ((k & 1)? side : 0.0), y = bottom + ((k & 2)? side : 0.0), z = (k & 4)? z1 : z0;
+            b[k] = rbl__v3((float)(l->right.x*x + l->up.x*y + a.x*z), (float)(l->right.y*x + l->up.y*y + a.y*z), (float)(l->right.z*x + l->up.z*y + a.z*z));
+        }
+        const int edges[12][2] = { { 0, 1 }, { 1, 3 }, { 3, 2 }, { 2, 0 }, { 4, 5 }, { 5, 7 }, { 7, 6 }, { 6, 4 }, { 0, 4 }, { 1, 5 }, { 2, 6 }, { 3, 7 } };
+        for (int e = 0; e < 12; e++)
+        {
+            DrawLine3D(q[edges[e][0]], q[edges[e][1]], col);
+            DrawLine3D(b[edges[e][0]], b[edges[e][1]], Fade(col, 0.5f));
+        }
+    }
+}
+
+// What shadows.glsl reads of one map: matrix (16), params (4), bias (4), axes (8), tiles (16).
+// params.y = format (perspective + 2 for the casters target) + 4 x kind (0 one map, 1 omni, 2..4 cascades)
+static void rbl__shadowUniformData(const RblShadowMap *map, float out[48])
+{
+    const rbl__ShadowMapState *st = map->state;
+    memset(out, 0, 48*sizeof(float));
+    if (st->kind > RBL__SHADOW_OMNI) memcpy(out, st->cascadeRows, 16*sizeof(float));   // light frame rows; the camera plane
+    else
+    {
+        // The matrix as four rows (vec4s): rlSetUniformMatrices would transpose on desktop GL and not on ES
+        const Matrix *m = &st->matrix;
+        const float rows[16] = { m->m0, m->m4, m->m8, m->m12, m->m1, m->m5, m->m9, m->m13, m->m2, m->m6, m->m10, m->m14, m->m3, m->m7, m->m11, m->m15 };
+        memcpy(out, rows, sizeof(rows));
+    }
+    out[16] = st->texelWorld;
+    out[17] = ((st->lightType != RBL_LIGHT_DIRECTIONAL)? 1.0f : 0.0f) + ((map->casters.id != 0)? 2.0f : 0.0f) + 4.0f*(float)st->kind;
+    out[18] = st->nearPlane; out[19] = st->farPlane;
     out[20] = map->desc.constantBias; out[21] = map->desc.slopeBias; out[22] = map->desc.normalBias; out[23] = (float)map->size;
-    out[24] = map->state->lightView.right.x; out[25] = map->state->lightView.right.y; out[26] = map->state->lightView.right.z; out[27] = 0.0f;
-    out[28] = map->state->lightView.up.x; out[29] = map->state->lightView.up.y; out[30] = map->state->lightView.up.z; out[31] = 0.0f;
+    out[24] = st->lightView.right.x; out[25] = st->lightView.right.y; out[26] = st->lightView.right.z;
+    out[27] = (st->kind > RBL__SHADOW_OMNI)? (float)st->split[0] : 0.0f;
+    out[28] = st->lightView.up.x; out[29] = st->lightView.up.y; out[30] = st->lightView.up.z;
+    out[31] = (st->kind > RBL__SHADOW_OMNI)? (float)st->blend : 0.0f;
+    memcpy(&out[32], st->tiles, 16*sizeof(float));
 }
 
 // Maps a scene may list: valid, rendered for one of its lights, not being rendered, one per light

@@ -14,6 +14,7 @@
 #include "test_view.c"
 #include "test_shadows.c"
 #include "test_self_shadow.c"
+#include "test_omni_cascades.c"
 #include "test_skinning.c"
 #include "test_translucent.c"
 #include "test_atlas_render.c"
@@ -30,6 +31,7 @@ static const RtTest rblGpuTests[] = {
         RBL_VIEW_TESTS,
         RBL_SHADOWS_TESTS,
         RBL_SELF_SHADOW_TESTS,
+        RBL_OMNI_CASCADES_TESTS,
         RBL_SKINNING_TESTS,
         RBL_TRANSLUCENT_TESTS,
         RBL_ATLAS_RENDER_TESTS,

@@ -222,7 +222,8 @@ static const Field sceneFloats[] = {
     FIELD(RblScene, ambientUp.x), FIELD(RblScene, ambientUp.y), FIELD(RblScene, ambientUp.z), FIELD(RblScene, fog.start),
     FIELD(RblScene, fog.end), FIELD(RblScene, fog.density), FIELD(RblScene, exposure) };
 static const Field shadowDescFloats[] = {
-    FIELD(RblShadowDesc, constantBias), FIELD(RblShadowDesc, slopeBias), FIELD(RblShadowDesc, normalBias), FIELD(RblShadowDesc, minCastAngle) };
+    FIELD(RblShadowDesc, constantBias), FIELD(RblShadowDesc, slopeBias), FIELD(RblShadowDesc, normalBias), FIELD(RblShadowDesc, minCastAngle),
+    FIELD(RblShadowDesc, cascadeLambda), FIELD(RblShadowDesc, cascadeBlend) };
 #define COUNT_OF(a) ((int)(sizeof(a)/sizeof((a)[0])))
 #define SET_FIELD(obj, field, value) memcpy((char *)&(obj) + (field).offset, &(value), sizeof(float))
 
@@ -1121,6 +1122,84 @@ static void c_shadow_passes(void)
     EXPECT_REFUSED(V(RblEndShadowMap(&stale)));
     RblUnloadGBuffer(&g);
     RblUnloadShadowMap(&other);
+}
+
+// Omni and cascaded maps: desc combinations, pass indices, light types, the fit's inputs
+static void c_shadow_omni_cascades(void)
+{
+    RblShadowMap m;
+    int cascades[3] = { -1, 5, 1 << 30 };
+    for (int i = 0; i < 3; i++) { RblShadowDesc d; memset(&d, 0, sizeof(d)); d.size = 64; d.cascades = cascades[i]; EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m))); }
+    {
+        RblShadowDesc d; memset(&d, 0, sizeof(d)); d.size = 64; d.omni = true; d.cascades = 2;
+        EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m)));                 // both at once
+        d.cascades = 0; d.size = RBL_MAX_TARGET_SIZE/3 + 1;
+        EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m)));                 // three faces across exceed the target size
+        d.omni = false; d.cascades = 4; d.size = RBL_MAX_TARGET_SIZE/4 + 1;
+        EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m)));
+        d.size = 64; d.cascadeLambda = 1.5f;
+        EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m)));
+        d.cascadeLambda = 0.0f; d.cascadeBlend = 0.75f;
+        EXPECT_REFUSED((m = RblLoadShadowMap(d), RblIsShadowMapValid(m)));
+    }
+    RblShadowDesc od; memset(&od, 0, sizeof(od)); od.size = 32; od.omni = true;
+    RblShadowDesc cd; memset(&cd, 0, sizeof(cd)); cd.size = 32; cd.cascades = 3;
+    RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 32;
+    RblShadowMap omni = RblLoadShadowMap(od), casc = RblLoadShadowMap(cd), single = RblLoadShadowMap(sd), zero;
+    memset(&zero, 0, sizeof(zero));
+    EXPECT_QUIET(RblShadowMapPasses(omni) == 6, true);
+    EXPECT_QUIET(RblShadowMapPasses(casc) == 3, true);
+    EXPECT_QUIET(RblShadowMapPasses(single) == 1, true);
+    EXPECT_QUIET(RblShadowMapPasses(zero) == 0, true);
+    RblLight l[3] = { pointLight(), pointLight(), pointLight() };
+    l[0].type = RBL_LIGHT_DIRECTIONAL; l[0].direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    l[2].type = RBL_LIGHT_SPOT; l[2].direction = (Vector3){ 0.0f, -1.0f, 0.0f }; l[2].outerAngle = 30.0f;
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = l; scene.lightCount = 3;
+    Vector3 o = { 0, 0, 0 };
+    EXPECT_REFUSED(RblBeginShadowMapPass(&omni, &scene, 1, -1, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMapPass(&omni, &scene, 1, 6, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMapPass(&single, &scene, 0, 1, o, 5.0f));
+    EXPECT_REFUSED(RblBeginShadowMapPass(&omni, &scene, 0, 0, o, 5.0f));          // omni map, directional light
+    EXPECT_REFUSED(RblBeginShadowMapPass(&omni, &scene, 2, 0, o, 5.0f));          // omni map, spot light
+    EXPECT_REFUSED(RblBeginShadowMapPass(&casc, &scene, 1, 0, o, 5.0f));          // cascades, point light
+    EXPECT_REFUSED(RblBeginShadowMapPass(&casc, &scene, 0, 0, o, 5.0f));          // not fitted
+    RblLight unbounded = pointLight(); unbounded.range = 0.0f;
+    RblScene s2 = scene; s2.lights = &unbounded; s2.lightCount = 1;
+    EXPECT_REFUSED(RblBeginShadowMapPass(&omni, &s2, 0, 0, o, 0.0f));            // no range, no focus
+    EXPECT_REFUSED(RblFitShadowCascades(NULL, camera(), 1.0f, 0.1f, 10.0f));
+    EXPECT_REFUSED(RblFitShadowCascades(&zero, camera(), 1.0f, 0.1f, 10.0f));
+    EXPECT_REFUSED(RblFitShadowCascades(&single, camera(), 1.0f, 0.1f, 10.0f));
+    EXPECT_REFUSED(V(RblDrawShadowCascades(single)));
+    EXPECT_REFUSED(V(RblDrawShadowCascades(zero)));
+    EXPECT_REFUSED(V(RblDrawShadowCascades(casc)));                              // not fitted
+    EXPECT_QUIET(RblShadowCascadeColor(2).b == 241, true);
+    EXPECT_QUIET(RblShadowCascadeColor(-1).r == GRAY.r && RblShadowCascadeColor(4).r == GRAY.r, true);
+    EXPECT_REFUSED(RblFitShadowCascades(&omni, camera(), 1.0f, 0.1f, 10.0f));
+    EVERY_BAD_CAMERA(RblFitShadowCascades(&casc, cam, 1.0f, 0.1f, 10.0f));
+    for (int vi = 0; vi < 5; vi++)
+    {
+        EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), badFloats[vi], 0.1f, 10.0f));
+        EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), 1.0f, badFloats[vi], 10.0f));
+        if (vi != 3) EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), 1.0f, 0.1f, badFloats[vi]));
+    }
+    EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), 1.0f, 0.0f, 10.0f));      // near 0: no logarithmic split
+    EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), 1.0f, 10.0f, 10.0f));
+    EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), 1.0f, 0.1f, 3.0e38f));
+    EXPECT_QUIET(RblFitShadowCascades(&casc, camera(), 1.0f, 0.1f, 10.0f), true);
+    for (int c = 0; c < 3; c++)
+    {
+        ck(RblBeginShadowMapPass(&casc, &scene, 0, c, o, 0.0f), "cascade %d refused: %s", c, lastWarning);
+        if (c == 1) EXPECT_REFUSED(RblFitShadowCascades(&casc, camera(), 1.0f, 0.1f, 10.0f));    // during its pass
+        RblEndShadowMap(&casc);
+    }
+    for (int f = 0; f < 6; f++) { ck(RblBeginShadowMapPass(&omni, &scene, 1, f, o, 5.0f), "face %d refused: %s", f, lastWarning); RblEndShadowMap(&omni); }
+    RblShadowMap stale = omni, staleCasc = casc;
+    RblUnloadShadowMap(&omni);
+    EXPECT_QUIET(RblShadowMapPasses(stale) == 0, true);
+    EXPECT_REFUSED(RblBeginShadowMapPass(&stale, &scene, 1, 0, o, 5.0f));
+    RblUnloadShadowMap(&casc);
+    EXPECT_REFUSED(V(RblDrawShadowCascades(staleCasc)));
+    RblUnloadShadowMap(&single);
 }
 
 static void c_shadow_focus(void)
@@ -2072,6 +2151,7 @@ static const Case cases[] = {
     { "RblLoadShadowMap RblIsShadowMapValid RblUnloadShadowMap", "sizes, desc floats, zero, stale, double", c_shadow_load, "counts floats stale-header" },
     { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes, "null nesting stale-header floats" },
     { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus, "null floats" },
+    { "RblShadowMapPasses RblBeginShadowMapPass RblFitShadowCascades RblDrawShadowCascades RblShadowCascadeColor", "omni/cascade descs, pass indices, light types, unfitted, fit inputs, stale", c_shadow_omni_cascades, "null counts floats nesting stale-header" },
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load, "null counts" },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle, "null stale-header" },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads, "null stale-header" },

@@ -1,7 +1,7 @@
 // Sprites never shadow themselves (GPU, headless; raylib's Y-up world). A 1 x 2 card standing on a
 // floor, with a normal map that bends the normal up to 60 degrees, is lit by one shadowing light
 // swept over azimuth 0..345 (15-degree steps; 0 = from the viewer's side, 90 = from +X) and
-// elevation 5..85, directional and spot, in every facing mode, pivot at the bottom or the centre,
+// elevation 5..85, directional, spot and point (an omni map), in every facing mode, pivot at the bottom or the centre,
 // casters facing the light (default) or the camera. Each case is rendered with and without the
 // sprite in the shadow pass (the floor casts in both):
 //   self      the sprite's own pixels darkened by its own caster (goal 0)
@@ -121,13 +121,20 @@ static Texture2D ssNormalTexture(void)
 static RblLight ssLight(int type, Vector3 L)
 {
     if (type == RBL_LIGHT_DIRECTIONAL) return litDirectional((Vector3){ -L.x, -L.y, -L.z }, 1.0f);
+    if (type == RBL_LIGHT_POINT)
+    {
+        // Point light 5 units from the card's centre toward the light (omni map: six cube faces)
+        RblLight l = litPoint((Vector3){ 5.0f*L.x, 1.0f + 5.0f*L.y, 5.0f*L.z }, 25.0f, 14.0f);
+        l.color = WHITE;
+        return l;
+    }
     // Spot 5 units from the card's centre toward the light, aimed at it: irradiance about 1 there
     RblLight l = litSpot((Vector3){ 5.0f*L.x, 1.0f + 5.0f*L.y, 5.0f*L.z }, (Vector3){ -L.x, -L.y, -L.z }, 45.0f, 60.0f, 25.0f);
     l.color = WHITE; l.range = 14.0f;
     return l;
 }
 
-static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize)
+static bool ssRigLoadMaps(SsRig *r, int lightFeatures, int mapSize, bool omni)
 {
     memset(r, 0, sizeof(*r));
     RblLitShaderDesc desc;
@@ -151,6 +158,7 @@ static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize)
         RblShadowDesc sd;
         memset(&sd, 0, sizeof(sd));
         sd.size = mapSize;
+        sd.omni = omni;
         ssSetCasterFacing(&sd, k == 1);
         r->maps[k] = RblLoadShadowMap(sd);
     }
@@ -158,6 +166,8 @@ static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize)
     r->top = LoadRenderTexture(SS_TOP, SS_TOP);
     return RblIsLitShaderValid(r->lit) && RblIsShadowMapValid(r->maps[0]) && RblIsShadowMapValid(r->maps[1]);
 }
+
+static bool ssRigLoad(SsRig *r, int lightFeatures, int mapSize) { return ssRigLoadMaps(r, lightFeatures, mapSize, false); }
 
 static void ssRigUnload(SsRig *r)
 {
@@ -178,11 +188,15 @@ static void ssPass(SsRig *r, RblShadowMap *map, RblLight *light, SsVariant v, bo
     memset(&scene, 0, sizeof(scene));
     scene.lights = light; scene.lightCount = 1; scene.ambient = (Color){ SS_AMBIENT, SS_AMBIENT, SS_AMBIENT, 255 };
     Camera3D viewer = ssViewer();
-    RT_CHECK(RblBeginShadowMap(map, &scene, 0, (Vector3){ 0.0f, 1.0f, 0.0f }, SS_RADIUS), "shadow pass refused");
-    RblDrawBillboard(viewer, r->floor, ssFloor());
-    if (sprite) RblDrawBillboard(viewer, r->sprite, ssSprite(v));
-    if (extra != NULL) extra(ctx);
-    RblEndShadowMap(map);
+    // Every pass of the map (an omni map: its six cube faces), each drawing the same casters
+    for (int pass = 0; pass < RblShadowMapPasses(*map); pass++)
+    {
+        RT_CHECK(RblBeginShadowMapPass(map, &scene, 0, pass, (Vector3){ 0.0f, 1.0f, 0.0f }, SS_RADIUS), "shadow pass %d refused", pass);
+        RblDrawBillboard(viewer, r->floor, ssFloor());
+        if (sprite) RblDrawBillboard(viewer, r->sprite, ssSprite(v));
+        if (extra != NULL) extra(ctx);
+        RblEndShadowMap(map);
+    }
     scene.shadowMaps = map; scene.shadowMapCount = 1;
     RT_CHECK(RblSetScene(&scene), "scene rejected");
 }
@@ -275,7 +289,7 @@ static SsPoly ssShadowPolygon(const RblShadowMap *map, const RblLight *light, Ve
     {
         double t;
         if (light->type == RBL_LIGHT_DIRECTIONAL) { t = p[i][1]/(double)L.y; out.x[i] = p[i][0] - t*L.x; out.z[i] = p[i][2] - t*L.z; }
-        else
+        else        // spot and point: from the light's position
         {
             double s[3] = { light->position.x, light->position.y, light->position.z };
             if (p[i][1] >= s[1] - 1e-6) { out.n = 0; return out; }       // the card reaches the light's height: no bounded shadow
@@ -327,13 +341,17 @@ static SsGround ssGroundCompare(Image shadowed, Image base, const SsPoly *inner,
             if (b < SS_AMBIENT + 40) continue;              // too dimly lit to tell (spot cone edge)
             bool dark = s < (b + SS_AMBIENT)/2;
             Vector2 f = ssFloorAt(x, y);
-            // Only where the map covers the floor (a low sun's shadow runs past its focus: lit there)
+            // Only where the map covers the floor (a low sun's shadow runs past its focus: lit there);
+            // an omni map covers every direction, its texel growing with the distance along the
+            // face's axis (the major axis of the offset from the light)
             const Matrix *m = &map->state->matrix;
             double w = m->m3*f.x + m->m11*f.y + m->m15, u = (m->m0*f.x + m->m8*f.y + m->m12)/w, v = (m->m1*f.x + m->m9*f.y + m->m13)/w;
             double margin = 3.0/map->size;
-            if (!(w > 0.0) || (u < margin) || (u > 1.0 - margin) || (v < margin) || (v > 1.0 - margin)) continue;
+            if (!map->desc.omni && (!(w > 0.0) || (u < margin) || (u > 1.0 - margin) || (v < margin) || (v > 1.0 - margin))) continue;
             double texel = map->state->texelWorld;
-            if (light->type == RBL_LIGHT_SPOT)
+            if (light->type == RBL_LIGHT_POINT)
+                texel *= fmax(fabs(f.x - light->position.x), fmax(fabs(light->position.y), fabs(f.y - light->position.z)));
+            else if (light->type == RBL_LIGHT_SPOT)
             {
                 Vector3 axis = map->state->lightView.back;
                 texel *= -((f.x - light->position.x)*axis.x + (0.0 - light->position.y)*axis.y + (f.y - light->position.z)*axis.z);
@@ -363,6 +381,8 @@ static int ssAzimuthStep(void)
 #endif
 }
 
+static const char *const ssTypeNames[3] = { "directional", "spot", "point" };
+static const int ssTypes[3] = { RBL_LIGHT_DIRECTIONAL, RBL_LIGHT_SPOT, RBL_LIGHT_POINT };
 static const int ssFacings[4] = { RBL_FACING_CAMERA_PLANE, RBL_FACING_CAMERA_POSITION, RBL_FACING_AXIS, RBL_FACING_FIXED };
 static const char *const ssFacingNames[4] = { "camera-plane", "camera-position", "axis", "fixed" };
 
@@ -373,12 +393,12 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
     const int step = ssAzimuthStep(), directions = 5*(360/step);
     int cases = 0, selfCases = 0, selfWorst = 0, groundWrongCases = 0, judged = 0, contactCases = 0, contactWorst = 0, contactTop = SS_VIEW;
     double areaMin = 1e9, areaMax = 0.0;
-    for (int type = 0; type < 2; type++)
+    for (int type = 0; type < 3; type++)
     {
-        int lightType = type? RBL_LIGHT_SPOT : RBL_LIGHT_DIRECTIONAL;
+        int lightType = ssTypes[type];
         SsRig rig;
         RblLight probe = ssLight(lightType, ssToLight(0, 45));
-        RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
+        RT_CHECK(ssRigLoadMaps(&rig, RblLightFeatures(&probe, 1), SS_MAP, lightType == RBL_LIGHT_POINT), "rig failed to load");
         int typeSelf[4][2][2] = { { { 0 } } }, typeWorst[4][2][2] = { { { 0 } } };
         for (int el = 5; el <= 85; el += 20)
             for (int az = 0; az < 360; az += step)
@@ -417,7 +437,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                             ssPass(&rig, map, &light, v, true, NULL, NULL);
                             Image with = ssFront(&rig, v), top = ssTop(&rig);
                             SsSelf s = ssSelfCompare(with, without);
-                            RT_CHECK(s.covered > 150, "%s %s az %d el %d: the sprite covers %d pixels only", ssFacingNames[f], type? "spot" : "directional", az, el, s.covered);
+                            RT_CHECK(s.covered > 150, "%s %s az %d el %d: the sprite covers %d pixels only", ssFacingNames[f], ssTypeNames[type], az, el, s.covered);
                             if (s.darkened > 0) { selfCases++; typeSelf[f][centre][cam]++; }
                             if (s.worst > typeWorst[f][centre][cam]) typeWorst[f][centre][cam] = s.worst;
                             if (s.worst > selfWorst) selfWorst = s.worst;
@@ -427,7 +447,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                             // tan I <= 10, and the normal offset 0.25 texel sin I; I = 90 - elevation on the
                             // floor) a caster shows on the floor as nothing: twice that is the inner clip
                             double e = el*PI/180.0, texel = map->state->texelWorld;
-                            if (lightType == RBL_LIGHT_SPOT) texel *= sqrt(pow(light.position.x, 2) + pow(light.position.y - 1.0, 2) + pow(light.position.z, 2));
+                            if (lightType != RBL_LIGHT_DIRECTIONAL) texel *= sqrt(pow(light.position.x, 2) + pow(light.position.y - 1.0, 2) + pow(light.position.z, 2));
                             double hmin = 2.0*texel*(0.25*cos(e) + sin(e)*(0.2 + 0.1*fmin(cos(e)/sin(e), 10.0)));
                             SsPoly poly = ssShadowPolygon(map, &light, L, v, 0.0), inner = ssShadowPolygon(map, &light, L, v, hmin);
                             // (a card reaching the spot's height casts an unbounded shadow: not judged)
@@ -436,7 +456,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                             {
                                 g = ssGroundCompare(top, base, &inner, &poly, map, &light);
                                 // Most of the window is lit and inside the map (a floor shadowing itself would leave nothing to judge)
-                                RT_CHECK(g.judged > SS_TOP*SS_TOP/4, "%s az %d el %d: only %d floor pixels judged", type? "spot" : "directional", az, el, g.judged);
+                                RT_CHECK(g.judged > SS_TOP*SS_TOP/4, "%s az %d el %d: only %d floor pixels judged", ssTypeNames[type], az, el, g.judged);
                             }
                             if ((g.wrong > 0) && (groundWrongCases < 3))
                             {
@@ -455,7 +475,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                                 }
                             }
                             RT_CHECK(g.wrong == 0, "%s %s pivot %s casters %s, az %d el %d: %d floor pixels misclassified beyond %.3f of the analytic shadow",
-                                     type? "spot" : "directional", ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", az, el, g.wrong, g.band);
+                                     ssTypeNames[type], ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", az, el, g.wrong, g.band);
                             if ((s.darkened > 0) && (typeSelf[f][centre][cam] == 1)) { rtSaveImage(with, "self-with"); rtSaveImage(without, "self-without"); }
                             if ((g.wrong > 0) && (groundWrongCases == 1)) rtSaveImage(top, "ground");
                             UnloadImage(with); UnloadImage(top);
@@ -470,9 +490,9 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
                 for (int cam = 0; cam < 2; cam++)
                 {
                     if ((ssFacings[f] == RBL_FACING_FIXED) && cam) continue;
-                    printf("    %-11s %-15s pivot %-6s casters face %-6s: %3d of %d directions self-darken, worst %3d/255\n", type? "spot" : "directional",
+                    printf("    %-11s %-15s pivot %-6s casters face %-6s: %3d of %d directions self-darken, worst %3d/255\n", ssTypeNames[type],
                            ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", typeSelf[f][centre][cam], directions, typeWorst[f][centre][cam]);
-                    RT_CHECK(typeSelf[f][centre][cam] == 0, "%s %s pivot %s casters face %s: the sprite darkens itself in %d directions (worst %d/255)", type? "spot" : "directional",
+                    RT_CHECK(typeSelf[f][centre][cam] == 0, "%s %s pivot %s casters face %s: the sprite darkens itself in %d directions (worst %d/255)", ssTypeNames[type],
                              ssFacingNames[f], centre? "centre" : "bottom", cam? "camera" : "light", typeSelf[f][centre][cam], typeWorst[f][centre][cam]);
                 }
         ssRigUnload(&rig);
@@ -585,6 +605,71 @@ static void test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_th
             printf("    sun azimuth %3d, elevation 37, %s casters: %d sprite pixels, %d (%.0f%%) in the crate's shadow all darkened, %d outside it unchanged, %d changed by its own caster\n",
                    azimuths[a], mode, sprite, inside, 100.0*inside/sprite, outside, selfWrong);
             if (rtFailuresInCurrentTest() > 0) { rtSaveImage(both, "crate"); rtSaveImage(alone, "alone"); }
+            UnloadImage(alone); UnloadImage(own); UnloadImage(both);
+        }
+    crate.model.materials[0].shader = (Shader){ 0 };
+    UnloadModel(crate.model);
+    ssRigUnload(&rig);
+}
+
+// The same scene under a point light (an omni map): the lamp 4 units from the sprite's middle toward
+// azimuth 60/90/120 at 37 degrees elevation, the crate between them; per pixel a double-precision
+// segment from the card point to the lamp against the crate's box decides the shadow (beyond the
+// PCF band: 2.5 texels at the lamp's distance along the face's axis, and a pixel)
+static void test_shadows_sprite_receives_a_crates_shadow_under_a_point_light(void)
+{
+    SsRig rig;
+    RblLight probe = ssLight(RBL_LIGHT_POINT, ssToLight(90, 37));
+    RT_CHECK(ssRigLoadMaps(&rig, RblLightFeatures(&probe, 1), 512, true), "rig failed to load");
+    SsCrate crate;
+    crate.size = 0.5f;          // its shadow, magnified by the lamp's perspective, covers part of the card
+    crate.model = LoadModelFromMesh(GenMeshCube(crate.size, crate.size, crate.size));
+    crate.model.materials[0].shader = rig.lit;
+    const int azimuths[3] = { 60, 90, 120 };
+    for (int a = 0; a < 3; a++)
+        for (int cam = 0; cam < 2; cam++)
+        {
+            Vector3 L = ssToLight(azimuths[a], 37.0);
+            RblLight light = litPoint((Vector3){ 4.0f*L.x, 1.0f + 4.0f*L.y, 4.0f*L.z }, 10.0f, 14.0f);
+            light.color = WHITE;
+            crate.centre = (Vector3){ 1.6f*L.x, 1.0f + 1.6f*L.y, 1.6f*L.z };
+            SsVariant v = { RBL_FACING_AXIS, false, cam != 0 };
+            RblShadowMap *map = &rig.maps[cam];
+            ssPass(&rig, map, &light, v, false, NULL, NULL);
+            Image alone = ssFront(&rig, v);
+            ssPass(&rig, map, &light, v, true, NULL, NULL);
+            Image own = ssFront(&rig, v);
+            ssPass(&rig, map, &light, v, true, ssCrateCaster, &crate);
+            Image both = ssFront(&rig, v);
+            double lo[3] = { crate.centre.x - 0.5*crate.size, crate.centre.y - 0.5*crate.size, crate.centre.z - 0.5*crate.size };
+            double hi[3] = { crate.centre.x + 0.5*crate.size, crate.centre.y + 0.5*crate.size, crate.centre.z + 0.5*crate.size };
+            double band = 2.5*map->state->texelWorld*4.0 + 3.0/SS_VIEW;
+            int inside = 0, insideWrong = 0, outside = 0, outsideWrong = 0, selfWrong = 0, sprite = 0;
+            for (int y = 0; y < SS_VIEW; y++)
+                for (int x = 0; x < SS_VIEW; x++)
+                {
+                    Color c0 = rtPixel(alone, x, y), c1 = rtPixel(own, x, y), c2 = rtPixel(both, x, y);
+                    if ((c0.a < 255) || (c2.a < 255)) continue;
+                    sprite++;
+                    if ((int)c0.r - c1.r > 2) selfWrong++;
+                    double p[3];
+                    if (!ssCardPoint(x, y, p)) continue;
+                    if (c0.r < SS_AMBIENT + 30) continue;
+                    // The segment to the lamp (parameter 0..1) against the box grown or shrunk by the band
+                    double d[3] = { light.position.x - p[0], light.position.y - p[1], light.position.z - p[2] };
+                    double tin = ssRayBox(p, d, lo, hi, -band), tout = ssRayBox(p, d, lo, hi, band);
+                    if ((tin >= 0.0) && (tin <= 1.0)) { inside++; if (c2.r > SS_AMBIENT + 6) insideWrong++; }
+                    else if ((tout < 0.0) || (tout > 1.0)) { outside++; if (abs((int)c2.r - c1.r) > 2) outsideWrong++; }
+                }
+            const char *mode = cam? "camera-facing" : "light-facing";
+            RT_CHECK(inside > sprite/10, "lamp azimuth %d, %s casters: only %d of %d sprite pixels lie clearly in the crate's shadow (test setup)", azimuths[a], mode, inside, sprite);
+            RT_CHECK(outside >= 16, "lamp azimuth %d, %s casters: only %d of %d sprite pixels lie clearly outside the crate's shadow (test setup)", azimuths[a], mode, outside, sprite);
+            RT_CHECK(insideWrong == 0, "lamp azimuth %d, %s casters: %d of %d pixels in the crate's shadow not darkened", azimuths[a], mode, insideWrong, inside);
+            RT_CHECK(outsideWrong == 0, "lamp azimuth %d, %s casters: %d of %d pixels outside the crate's shadow changed", azimuths[a], mode, outsideWrong, outside);
+            RT_CHECK(selfWrong == 0, "lamp azimuth %d, %s casters: %d pixels darkened by the sprite's own caster", azimuths[a], mode, selfWrong);
+            printf("    lamp azimuth %3d, elevation 37, %s casters: %d sprite pixels, %d (%.0f%%) in the crate's shadow all darkened, %d outside it unchanged, %d changed by its own caster\n",
+                   azimuths[a], mode, sprite, inside, 100.0*inside/sprite, outside, selfWrong);
+            if (rtFailuresInCurrentTest() > 0) { rtSaveImage(both, "crate-point"); rtSaveImage(alone, "alone-point"); }
             UnloadImage(alone); UnloadImage(own); UnloadImage(both);
         }
     crate.model.materials[0].shader = (Shader){ 0 };
@@ -892,6 +977,7 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
 #define RBL_SELF_SHADOW_TESTS \
     RT_TEST(test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_light_direction), \
     RT_TEST(test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_the_users_scene), \
+    RT_TEST(test_shadows_sprite_receives_a_crates_shadow_under_a_point_light), \
     RT_TEST(test_shadows_light_over_an_axis_sprite_moves_its_shadow_continuously), \
     RT_TEST(test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_order), \
     RT_TEST(test_shadows_self_shadow_option_drops_the_identities), \

@@ -844,6 +844,287 @@ static void SelfBenchSummary(const SelfBench *sb)
         printf("    %-26s %3d of %3d, worst %3d/255, at most %.0f%% of its pixels\n", selfModeName[m], sb->darkened[m], sb->cases[m], sb->worst[m], 100.0*sb->worstShare[m]);
 }
 
+//----------------------------------------------------------------------------------
+// Omni (point-light) maps and cascades
+//----------------------------------------------------------------------------------
+// omni pass: one omni map (six faces of OC_FACE texels, one casters target) against six spot maps
+// of the same size (outer angle 45: the six cube faces), every face/spot drawing the same N
+// billboards (batched) from a point light at the billboard box's centre; alternating per round.
+// lookup: ms per 1280x720 frame of the receiver floor (the receiver section's view and card) with
+// pcf 2 through one variant (point and directional features), against the same variant without
+// shadow maps: a directional light with one map, a point light with an omni map, a directional
+// light with 4 cascades (fitted to a camera looking obliquely over the floor: depths 5..25, so
+// cascades and blend bands spread over the frame); order rotating per run.
+// cascades at equal memory: one 2048 map over a camera's 0.5..100 (RblShadowFocusFromCamera)
+// against 2, 3, 4 cascades of 2048/sqrt(n) texels (the same texel count); the texel's world size
+// where a point 5 and 50 units ahead falls; the pass time of all cascades against the one map (10k
+// billboards, batched).
+#define OC_FACE             512
+#define OC_CASCADE_MEMORY   2048
+typedef struct OmniBench {
+    PassScene *p;
+    Receiver *r;
+    RblShadowMap omni, spots[6];
+    RblLight point, spotLights[6];
+    RblScene pointScene, spotScene;
+    int count;
+    // lookup
+    Shader shader[2];                  // unshadowed, shadowed (pcf 2)
+    Material material[2];
+    RblShadowMap rxOmni, rxCascades;
+    RblLight rxPoint, rxSun;
+    RblScene rxScenes[4];              // none (sun), sun + map, point + omni, sun + cascades
+    bool ok;
+} OmniBench;
+
+static double OmniPassFrame(OmniBench *ob, bool omni)
+{
+    PassScene *p = ob->p;
+    rtFinish();
+    double t0 = BenchNowNs();
+    for (int f = 0; f < 6; f++)
+    {
+        bool begun = omni? RblBeginShadowMapPass(&ob->omni, &ob->pointScene, 0, f, p->focus, 0.0f) : RblBeginShadowMap(&ob->spots[f], &ob->spotScene, f, p->focus, 0.0f);
+        if (!begun) { ob->ok = false; continue; }
+        RblBeginBatch(&p->batch, p->viewer);
+        for (int i = 0; i < ob->count; i++) RblBatchAdd(&p->batch, p->material, &p->billboards[i]);
+        RblEndBatch(&p->batch);
+        RblEndShadowMap(omni? &ob->omni : &ob->spots[f]);
+    }
+    rtFinish();
+    return (BenchNowNs() - t0)/ob->count;
+}
+
+static void OmniPassRound(void *ctx, double *out)
+{
+    static int flip = 0;
+    OmniBench *ob = (OmniBench *)ctx;
+    flip ^= 1;
+    double a = OmniPassFrame(ob, flip), b = OmniPassFrame(ob, !flip);
+    out[0] = flip? a : b; out[1] = flip? b : a; out[2] = out[0]/out[1];
+}
+
+static double OmniLookupFrame(OmniBench *ob, int k)
+{
+    Receiver *r = ob->r;
+    RblSetScene(&ob->rxScenes[k]);
+    rtFinish();
+    double t0 = BenchNowNs();
+    BeginTextureMode(r->target);
+    ClearBackground(BLANK);
+    BeginMode3D(r->camera);
+    RblDrawBillboard(r->camera, ob->material[(k == 0)? 0 : 1], r->floor);
+    EndMode3D();
+    EndTextureMode();
+    rtFinish();
+    return (BenchNowNs() - t0)*1e-6;
+}
+
+static void OmniLookupRound(void *ctx, double *out)
+{
+    static int rot = 0;
+    OmniBench *ob = (OmniBench *)ctx;
+    double ms[4];
+    for (int i = 0; i < 4; i++) { int k = (i + rot)%4; ms[k] = OmniLookupFrame(ob, k); }
+    rot++;
+    for (int k = 0; k < 4; k++) { out[k] = ms[k]; out[4 + k] = ms[k]/ms[0]; }
+}
+
+// Texel world size where view depth d falls, for a cascaded map after a pass (tiles set)
+static double CascadeTexelAt(const RblShadowMap *m, double d)
+{
+    const rbl__ShadowMapState *st = m->state;
+    for (int c = 0; c < st->kind; c++) if (d < st->split[c + 1]) return 1.0/(st->tiles[c][0]*m->size);
+    return -1.0;
+}
+
+static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
+{
+    static OmniBench obs;
+    OmniBench *ob = &obs;
+    memset(ob, 0, sizeof(*ob));
+    ob->p = p; ob->r = r; ob->ok = true;
+    *why = NULL;
+    // ---- omni pass vs six spot passes
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = OC_FACE; sd.faceCamera = true;
+    RblShadowDesc od = sd;
+    od.omni = true;
+    ob->omni = RblLoadShadowMap(od);
+    memset(&ob->point, 0, sizeof(ob->point));
+    ob->point.type = RBL_LIGHT_POINT; ob->point.position = p->focus; ob->point.color = WHITE; ob->point.intensity = 1.0f; ob->point.range = PASS_FOCUS_RADIUS;
+    ob->pointScene.lights = &ob->point; ob->pointScene.lightCount = 1;
+    const Vector3 axes[6] = { { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 0, 0, -1 } };
+    for (int f = 0; f < 6; f++)
+    {
+        ob->spots[f] = RblLoadShadowMap(sd);
+        ob->spotLights[f] = ob->point;
+        ob->spotLights[f].type = RBL_LIGHT_SPOT; ob->spotLights[f].direction = axes[f];
+        ob->spotLights[f].innerAngle = 40.0f; ob->spotLights[f].outerAngle = 45.0f;
+        if (!RblIsShadowMapValid(ob->spots[f])) ob->ok = false;
+    }
+    ob->spotScene.lights = ob->spotLights; ob->spotScene.lightCount = 6;
+    if (!RblIsShadowMapValid(ob->omni) || !ob->ok) { *why = "omni or spot maps failed to load"; return 0; }
+    double passMed[PASS_COUNTS][3];
+    int passRuns[PASS_COUNTS];
+    const BenchTiming timing = { 1, 5, 11, 2.5e9 };
+    for (int c = 0; c < PASS_COUNTS; c++)
+    {
+        ob->count = passCounts[c];
+        passRuns[c] = BenchMedianOfRuns(OmniPassRound, ob, 3, timing, passMed[c]);
+    }
+    if (!ob->ok) { *why = "an omni or spot pass was refused"; return 0; }
+
+    // ---- lookup cost per fragment
+    ob->rxSun = r->light;
+    memset(&ob->rxPoint, 0, sizeof(ob->rxPoint));
+    ob->rxPoint.type = RBL_LIGHT_POINT; ob->rxPoint.position = (Vector3){ 0.5f, -0.3f, 4.0f }; ob->rxPoint.color = WHITE; ob->rxPoint.intensity = 12.0f; ob->rxPoint.range = 30.0f;
+    RblLight both[2] = { ob->rxSun, ob->rxPoint };
+    RblLitShaderDesc ld;
+    memset(&ld, 0, sizeof(ld));
+    ld.maxLights = 1; ld.lightFeatures = RblLightFeatures(both, 2); ld.brdf = RBL_BRDF_LAMBERT;
+    for (int v = 0; v < 2; v++)
+    {
+        ld.shadowMaps = v; ld.shadowFilter = v? 2 : 0;
+        ob->shader[v] = RblLoadLitShader(ld);
+        ob->material[v] = LoadMaterialDefault();
+        ob->material[v].shader = ob->shader[v];
+        ob->material[v].maps[MATERIAL_MAP_ALBEDO].texture = r->white;
+        if (!RblIsLitShaderValid(ob->shader[v])) ob->ok = false;
+    }
+    RblShadowDesc rod;
+    memset(&rod, 0, sizeof(rod));
+    rod.size = RX_MAP; rod.omni = true;
+    ob->rxOmni = RblLoadShadowMap(rod);
+    RblShadowDesc rcd;
+    memset(&rcd, 0, sizeof(rcd));
+    rcd.size = RX_MAP; rcd.cascades = 4;
+    ob->rxCascades = RblLoadShadowMap(rcd);
+    RblBillboard card = Card();
+    RblScene pointOnly; memset(&pointOnly, 0, sizeof(pointOnly)); pointOnly.lights = &ob->rxPoint; pointOnly.lightCount = 1; pointOnly.ambient = r->ambient;
+    RblScene sunOnly; memset(&sunOnly, 0, sizeof(sunOnly)); sunOnly.lights = &ob->rxSun; sunOnly.lightCount = 1; sunOnly.ambient = r->ambient;
+    for (int f = 0; f < RblShadowMapPasses(ob->rxOmni); f++)
+        if (RblBeginShadowMapPass(&ob->rxOmni, &pointOnly, 0, f, (Vector3){ 0 }, 0.0f)) { RblDrawBillboard(r->camera, ob->material[0], card); RblEndShadowMap(&ob->rxOmni); }
+        else ob->ok = false;
+    Camera3D oblique;
+    memset(&oblique, 0, sizeof(oblique));
+    oblique.position = (Vector3){ 0.0f, -12.0f, 6.0f }; oblique.target = (Vector3){ 0.0f, 2.0f, 0.0f }; oblique.up = (Vector3){ 0.0f, 0.0f, 1.0f };
+    oblique.fovy = 60.0f; oblique.projection = CAMERA_PERSPECTIVE;
+    if (!RblFitShadowCascades(&ob->rxCascades, oblique, 16.0f/9.0f, 0.5f, 40.0f)) ob->ok = false;
+    for (int c = 0; c < RblShadowMapPasses(ob->rxCascades); c++)
+        if (RblBeginShadowMapPass(&ob->rxCascades, &sunOnly, 0, c, (Vector3){ 0 }, 0.0f)) { RblDrawBillboard(r->camera, ob->material[0], card); RblEndShadowMap(&ob->rxCascades); }
+        else ob->ok = false;
+    ob->rxScenes[0] = sunOnly;
+    ob->rxScenes[1] = r->scene;                      // the receiver section's sun and map
+    ob->rxScenes[2] = pointOnly; ob->rxScenes[2].shadowMaps = &ob->rxOmni; ob->rxScenes[2].shadowMapCount = 1;
+    ob->rxScenes[3] = sunOnly; ob->rxScenes[3].shadowMaps = &ob->rxCascades; ob->rxScenes[3].shadowMapCount = 1;
+    double lookMed[8] = { 0 };
+    int lookRuns = 0;
+    if (ob->ok)
+    {
+        const BenchTiming lt = { 2, 7, 21, 3e9 };
+        lookRuns = BenchMedianOfRuns(OmniLookupRound, ob, 8, lt, lookMed);
+    }
+    else *why = "lookup variants or maps failed";
+
+    // ---- cascades at equal memory
+    double texel5[5] = { 0 }, texel50[5] = { 0 }, passMs[5] = { 0 }, passRatio[5] = { 0 };
+    int sizes[5] = { 0 };
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 2.0f, 10.0f }; cam.target = (Vector3){ 0.0f, 1.0f, -10.0f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 60.0f; cam.projection = CAMERA_PERSPECTIVE;
+    RblShadowMap eq[5];
+    memset(eq, 0, sizeof(eq));
+    Vector3 focus; float radius = 0.0f;
+    RblShadowFocusFromCamera(cam, 16.0f/9.0f, 0.5f, 100.0f, &focus, &radius);
+    for (int n = 1; n <= 4; n++)
+    {
+        RblShadowDesc cd;
+        memset(&cd, 0, sizeof(cd));
+        cd.size = sizes[n] = (int)floor(OC_CASCADE_MEMORY/sqrt((double)n));
+        cd.cascades = (n > 1)? n : 0; cd.faceCamera = true;
+        eq[n] = RblLoadShadowMap(cd);
+        if (!RblIsShadowMapValid(eq[n])) { ob->ok = false; continue; }
+        if (n > 1) RblFitShadowCascades(&eq[n], cam, 16.0f/9.0f, 0.5f, 100.0f);
+        // Pass time: every cascade (or the one map) drawing the 10k billboards, three runs, median
+        double runs[3];
+        for (int k = 0; k < 3; k++)
+        {
+            rtFinish();
+            double t0 = BenchNowNs();
+            for (int c = 0; c < RblShadowMapPasses(eq[n]); c++)
+            {
+                if (!RblBeginShadowMapPass(&eq[n], &p->scene, 0, c, focus, radius)) { ob->ok = false; continue; }
+                RblBeginBatch(&p->batch, p->viewer);
+                for (int i = 0; i < PASS_MAX; i++) RblBatchAdd(&p->batch, p->material, &p->billboards[i]);
+                RblEndBatch(&p->batch);
+                RblEndShadowMap(&eq[n]);
+            }
+            rtFinish();
+            runs[k] = (BenchNowNs() - t0)*1e-6;
+        }
+        passMs[n] = BenchMedian(runs, 3);
+        if (n == 1) { texel5[n] = texel50[n] = eq[n].state->texelWorld; }
+        else { texel5[n] = CascadeTexelAt(&eq[n], 5.0); texel50[n] = CascadeTexelAt(&eq[n], 50.0); }
+        passRatio[n] = passMs[n]/passMs[1];
+    }
+
+    // ---- rows and summary
+    char name[96];
+    for (int c = 0; c < PASS_COUNTS; c++)
+    {
+        snprintf(name, sizeof(name), "omni_pass_%d_%d", passCounts[c], OC_FACE);
+        BenchCsvRow(SUITE, name, "ns_per_billboard_six_faces", passMed[c][0], "ns");
+        BenchCsvRow(SUITE, name, "ratio_to_six_spot_passes", passMed[c][2], "x");
+        BenchCsvRow(SUITE, name, "runs", passRuns[c], "runs");
+        snprintf(name, sizeof(name), "six_spot_passes_%d_%d", passCounts[c], OC_FACE);
+        BenchCsvRow(SUITE, name, "ns_per_billboard_six_maps", passMed[c][1], "ns");
+    }
+    const char *lookName[4] = { "lookup_unshadowed", "lookup_directional_map", "lookup_omni", "lookup_cascades4" };
+    if (lookRuns > 0)
+        for (int k = 0; k < 4; k++)
+        {
+            BenchCsvRow(SUITE, lookName[k], "ms_per_frame_1280x720", lookMed[k], "ms");
+            BenchCsvRow(SUITE, lookName[k], "ratio_to_unshadowed", lookMed[4 + k], "x");
+        }
+    for (int n = 1; n <= 4; n++)
+    {
+        snprintf(name, sizeof(name), "cascades_%d_equal_memory", n);
+        BenchCsvRow(SUITE, name, "tile_texels_per_side", sizes[n], "texels");
+        BenchCsvRow(SUITE, name, "texel_at_5", texel5[n], "world");
+        BenchCsvRow(SUITE, name, "texel_at_50", texel50[n], "world");
+        BenchCsvRow(SUITE, name, "texel_at_5_vs_one_map", texel5[n]/texel5[1], "x");
+        BenchCsvRow(SUITE, name, "pass_ms_10000", passMs[n], "ms");
+        BenchCsvRow(SUITE, name, "pass_ratio_to_one_map", passRatio[n], "x");
+    }
+    printf("\nshadows: omni maps and cascades\n");
+    printf("  omni pass (6 faces of %d into one target) vs six spot maps (45-degree cones, %d each), batched, ns per billboard per frame:\n", OC_FACE, OC_FACE);
+    for (int c = 0; c < PASS_COUNTS; c++)
+        printf("    N %5d: omni %8.0f, six spots %8.0f, ratio %.2fx (%d runs)\n", passCounts[c], passMed[c][0], passMed[c][1], passMed[c][2], passRuns[c]);
+    if (lookRuns > 0)
+    {
+        printf("  lookup (pcf 2, 1280x720 floor, %d runs): ms per frame and ratio to the same variant without maps\n", lookRuns);
+        for (int k = 0; k < 4; k++) printf("    %-24s %8.2f  %5.2fx\n", lookName[k], lookMed[k], lookMed[4 + k]);
+    }
+    printf("  equal memory (%d^2 texels), camera fovy 60, 16:9, 0.5..100: texel world size at 5 and 50 units, pass time (10k billboards)\n", OC_CASCADE_MEMORY);
+    for (int n = 1; n <= 4; n++)
+        printf("    %d %-8s tile %4d: texel at 5 %.4f (%.2fx one map), at 50 %.4f; pass %.1f ms (%.2fx)\n", n, (n == 1)? "map" : "cascades", sizes[n],
+               texel5[n], texel5[n]/texel5[1], texel50[n], passMs[n], passRatio[n]);
+    // ---- release
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
+    for (int n = 1; n <= 4; n++) RblUnloadShadowMap(&eq[n]);
+    RblUnloadShadowMap(&ob->rxOmni); RblUnloadShadowMap(&ob->rxCascades);
+    for (int v = 0; v < 2; v++) { if (RblIsLitShaderValid(ob->shader[v])) RblUnloadLitShader(&ob->shader[v]); MemFree(ob->material[v].maps); }
+    RblUnloadShadowMap(&ob->omni);
+    for (int f = 0; f < 6; f++) RblUnloadShadowMap(&ob->spots[f]);
+    if (!ob->ok && (*why == NULL)) *why = "a cascade map failed";
+    return ob->ok? 1 : 0;
+}
+
 int main(void)
 {
     double benchStart = BenchNowNs();
@@ -1134,6 +1415,10 @@ int main(void)
     if (noMapErr >= 0) BenchCsvRow(SUITE, name, "max_err_lit", noMapErr, "1/255");
 
     if (selfOk) SelfBenchRows(&sb);
+
+    // ---- omni and cascades ---------------------------------------------------------------------------
+    const char *ocWhy = NULL;
+    if (passOk && !OmniCascadeBench(p, r, &ocWhy)) { printf("bench_shadows: omni/cascade rows: %s\n", (ocWhy != NULL)? ocWhy : "failed"); problems++; }
 
     // ---- release -------------------------------------------------------------------------------------
     for (int s = 0; s < MAP_SIZES; s++) { RblUnloadShadowMap(&p->maps[s]); UnloadRenderTexture(p->targets[s]); }

@@ -503,6 +503,213 @@ static bool sweepPicture(const char *dir)
     return ok;
 }
 
+// Point-light shadows (omni maps): a warm lamp and a blue lamp, each with an omni map (six cube
+// faces of 512), over character sprites (AXIS, light-facing casters), a cut-out tree and crates on a
+// floor; the shadows radiate from each lamp in every direction, across the cube faces' seams
+static bool omniPicture(const char *dir)
+{
+    const int w = 640, h = 320;
+    Image ci = characterImage(false), ti = treeImage();
+    Image fi = GenImageChecked(256, 256, 32, 32, (Color){ 196, 190, 178, 255 }, (Color){ 172, 166, 154, 255 });
+    Texture2D character = LoadTextureFromImage(ci), tree = LoadTextureFromImage(ti), floorTexture = LoadTextureFromImage(fi);
+    UnloadImage(ci); UnloadImage(ti); UnloadImage(fi);
+    GenTextureMipmaps(&floorTexture);
+    SetTextureFilter(floorTexture, TEXTURE_FILTER_TRILINEAR);
+    RblLight lamps[2];
+    memset(lamps, 0, sizeof(lamps));
+    lamps[0].type = lamps[1].type = RBL_LIGHT_POINT;
+    lamps[0].position = (Vector3){ -1.2f, 1.6f, 0.2f }; lamps[0].color = (Color){ 255, 190, 120, 255 }; lamps[0].intensity = 5.0f; lamps[0].range = 12.0f;
+    lamps[1].position = (Vector3){ 2.0f, 1.1f, -0.8f }; lamps[1].color = (Color){ 120, 170, 255, 255 }; lamps[1].intensity = 3.0f; lamps[1].range = 12.0f;
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 2; d.lightFeatures = RblLightFeatures(lamps, 2); d.shadowMaps = 2;
+    Shader lit = RblLoadLitShader(d);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 512; sd.omni = true;
+    RblShadowMap maps[2] = { RblLoadShadowMap(sd), RblLoadShadowMap(sd) };
+    if (!RblIsLitShaderValid(lit) || !RblIsShadowMapValid(maps[0]) || !RblIsShadowMapValid(maps[1])) { printf("pictures: omni shadows unavailable\n"); return false; }
+    Material mc = LoadMaterialDefault(), mt = LoadMaterialDefault();
+    mc.shader = mt.shader = lit;
+    mc.maps[MATERIAL_MAP_ALBEDO].texture = character; mt.maps[MATERIAL_MAP_ALBEDO].texture = tree;
+    Model ground = LoadModelFromMesh(GenMeshPlane(14.0f, 10.0f, 1, 1));
+    ground.materials[0].shader = lit;
+    ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    Model crate = LoadModelFromMesh(GenMeshCube(0.6f, 0.6f, 0.6f));
+    crate.materials[0].shader = lit;
+    crate.materials[0].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 170, 120, 70, 255 };
+    const Vector3 people[4] = { { -2.4f, 0.0f, 0.9f }, { 0.3f, 0.0f, 0.6f }, { 0.9f, 0.0f, -1.9f }, { -1.0f, 0.0f, -1.6f } };
+    const Vector3 crates[2] = { { -0.2f, 0.3f, -0.5f }, { 3.0f, 0.3f, 0.4f } };
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 4.6f, 6.6f }; cam.target = (Vector3){ 0.2f, 0.3f, -0.4f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 48.0f; cam.projection = CAMERA_PERSPECTIVE;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lamps; scene.lightCount = 2; scene.ambient = (Color){ 34, 36, 46, 255 };
+    bool ok = true;
+    for (int l = 0; l < 2; l++)
+        for (int f = 0; f < RblShadowMapPasses(maps[l]); f++)
+        {
+            if (!RblBeginShadowMapPass(&maps[l], &scene, l, f, (Vector3){ 0 }, 0.0f)) { ok = false; continue; }
+            for (int i = 0; i < 4; i++)
+            {
+                RblBillboard b;
+                memset(&b, 0, sizeof(b));
+                b.position = people[i]; b.size = (i == 3)? (Vector2){ 1.3f, 1.95f } : (Vector2){ 0.6f, 1.2f }; b.origin = (Vector2){ b.size.x*0.5f, 0.0f }; b.facing = RBL_FACING_AXIS;
+                RblDrawBillboard(cam, (i == 3)? mt : mc, b);
+            }
+            for (int i = 0; i < 2; i++) RblDrawModel(crate, crates[i], 1.0f, WHITE);
+            RblDrawModel(ground, (Vector3){ 0 }, 1.0f, WHITE);
+            RblEndShadowMap(&maps[l]);
+        }
+    scene.shadowMaps = maps; scene.shadowMapCount = 2;
+    ok = ok && RblSetScene(&scene);
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 20, 22, 28, 255 });
+    BeginMode3D(cam);
+    RblDrawModel(ground, (Vector3){ 0 }, 1.0f, WHITE);
+    for (int i = 0; i < 2; i++) RblDrawModel(crate, crates[i], 1.0f, WHITE);
+    for (int i = 0; i < 4; i++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.position = people[i]; b.size = (i == 3)? (Vector2){ 1.3f, 1.95f } : (Vector2){ 0.6f, 1.2f }; b.origin = (Vector2){ b.size.x*0.5f, 0.0f }; b.facing = RBL_FACING_AXIS;
+        RblDrawBillboard(cam, (i == 3)? mt : mc, b);
+    }
+    for (int l = 0; l < 2; l++) DrawSphere(lamps[l].position, 0.06f, lamps[l].color);
+    EndMode3D();
+    DrawText("two point lights, an omni map each (six cube faces of 512): sprites, a cut-out tree, crates", 8, h - 16, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_omni_shadows.png", dir);
+    ok = ok && ExportImage(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
+    UnloadRenderTexture(rt);
+    RblUnloadShadowMap(&maps[0]); RblUnloadShadowMap(&maps[1]);
+    MemFree(mc.maps); MemFree(mt.maps);
+    UnloadModel(ground); UnloadModel(crate);
+    RblUnloadLitShader(&lit);
+    UnloadTexture(character); UnloadTexture(tree); UnloadTexture(floorTexture);
+    return ok;
+}
+
+// Cascaded sun shadows: a street of trees and characters 60 units long seen from eye height.
+// Top left: 4 cascades of 1024 (4096 x 1024 texels); top right: one 2048 map over the same 0.3..60
+// (the same memory); bottom: the 4 cascades' debug view (RblDrawShadowCascades) from above and
+// behind, over the same street
+static bool cascadesPicture(const char *dir)
+{
+    const int w = 640, h = 520, pw = w/2, ph = 240;
+    Image ci = characterImage(false), ti = treeImage();
+    Image fi = GenImageChecked(256, 256, 32, 32, (Color){ 196, 190, 178, 255 }, (Color){ 172, 166, 154, 255 });
+    Texture2D character = LoadTextureFromImage(ci), tree = LoadTextureFromImage(ti), floorTexture = LoadTextureFromImage(fi);
+    UnloadImage(ci); UnloadImage(ti); UnloadImage(fi);
+    GenTextureMipmaps(&floorTexture);
+    SetTextureFilter(floorTexture, TEXTURE_FILTER_TRILINEAR);
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ -0.55f, -0.6f, -0.35f }; sun.color = (Color){ 255, 236, 210, 255 }; sun.intensity = 1.0f;
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.shadowMaps = 1;
+    Shader lit = RblLoadLitShader(d);
+    RblShadowDesc cd, od;
+    memset(&cd, 0, sizeof(cd)); memset(&od, 0, sizeof(od));
+    cd.size = 1024; cd.cascades = 4; od.size = 2048;
+    RblShadowMap cascades = RblLoadShadowMap(cd), one = RblLoadShadowMap(od);
+    if (!RblIsLitShaderValid(lit) || !RblIsShadowMapValid(cascades) || !RblIsShadowMapValid(one)) { printf("pictures: cascades unavailable\n"); return false; }
+    Material mc = LoadMaterialDefault(), mt = LoadMaterialDefault();
+    mc.shader = mt.shader = lit;
+    mc.maps[MATERIAL_MAP_ALBEDO].texture = character; mt.maps[MATERIAL_MAP_ALBEDO].texture = tree;
+    Model ground = LoadModelFromMesh(GenMeshPlane(30.0f, 140.0f, 1, 1));
+    ground.materials[0].shader = lit;
+    ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 1.7f, 4.0f }; cam.target = (Vector3){ 0.0f, 1.0f, -6.0f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 50.0f; cam.projection = CAMERA_PERSPECTIVE;
+    Camera3D over = cam;
+    over.position = (Vector3){ 30.0f, 38.0f, 24.0f }; over.target = (Vector3){ 0.0f, 0.0f, -18.0f }; over.fovy = 55.0f;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 70, 76, 92, 255 };
+    bool ok = RblFitShadowCascades(&cascades, cam, (float)pw/ph, 0.3f, 60.0f);
+    Vector3 focus; float radius;
+    ok = ok && RblShadowFocusFromCamera(cam, (float)pw/ph, 0.3f, 60.0f, &focus, &radius);
+    RblShadowMap *maps[2] = { &cascades, &one };
+    RenderTexture2D rt = LoadRenderTexture(pw, ph), big = LoadRenderTexture(w, h - 2*ph + ph), out = LoadRenderTexture(w, h);
+    BeginTextureMode(out); ClearBackground(BLACK); EndTextureMode();
+    for (int k = 0; k < 3; k++)
+    {
+        RblShadowMap *m = maps[(k == 1)? 1 : 0];
+        if (k < 2)
+            for (int pass = 0; pass < RblShadowMapPasses(*m); pass++)
+            {
+                if (!RblBeginShadowMapPass(m, &scene, 0, pass, focus, radius)) { ok = false; continue; }
+                for (int i = 0; i < 24; i++)
+                {
+                    RblBillboard b;
+                    memset(&b, 0, sizeof(b));
+                    float z = 2.0f - 2.6f*i, x = (i & 1)? 2.6f : -2.6f;
+                    b.position = (Vector3){ x + ((i%3) - 1)*0.4f, 0.0f, z }; b.facing = RBL_FACING_AXIS;
+                    b.size = (i%4 == 1)? (Vector2){ 0.6f, 1.2f } : (Vector2){ 2.0f, 3.0f }; b.origin = (Vector2){ b.size.x*0.5f, 0.0f };
+                    RblDrawBillboard(cam, (i%4 == 1)? mc : mt, b);
+                }
+                RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, -60.0f }, 1.0f, WHITE);
+                RblEndShadowMap(m);
+            }
+        scene.shadowMaps = m; scene.shadowMapCount = 1;
+        ok = ok && RblSetScene(&scene);
+        Camera3D view = (k == 2)? over : cam;
+        RenderTexture2D *target = (k == 2)? &big : &rt;
+        BeginTextureMode(*target);
+        ClearBackground((Color){ 150, 180, 215, 255 });
+        BeginMode3D(view);
+        RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, -60.0f }, 1.0f, WHITE);
+        for (int i = 0; i < 24; i++)
+        {
+            RblBillboard b;
+            memset(&b, 0, sizeof(b));
+            float z = 2.0f - 2.6f*i, x = (i & 1)? 2.6f : -2.6f;
+            b.position = (Vector3){ x + ((i%3) - 1)*0.4f, 0.0f, z }; b.facing = RBL_FACING_AXIS;
+            b.size = (i%4 == 1)? (Vector2){ 0.6f, 1.2f } : (Vector2){ 2.0f, 3.0f }; b.origin = (Vector2){ b.size.x*0.5f, 0.0f };
+            RblDrawBillboard(view, (i%4 == 1)? mc : mt, b);
+        }
+        if (k == 2) RblDrawShadowCascades(cascades);
+        EndMode3D();
+        DrawText((k == 0)? "4 cascades of 1024 (fitted, snapped, blended)" : ((k == 1)? "one 2048 map over the same 0.3..60 (equal memory)" :
+                 "debug view: each cascade's camera slice and light window (red, green, blue, yellow)"), 8, 6, 10, (k == 2)? BLACK : RAYWHITE);
+        EndTextureMode();
+        BeginTextureMode(out);
+        if (k < 2) DrawTextureRec(rt.texture, (Rectangle){ 0.0f, 0.0f, (float)pw, (float)-ph }, (Vector2){ (float)(k*pw), 0.0f }, WHITE);
+        else DrawTextureRec(big.texture, (Rectangle){ 0.0f, 0.0f, (float)w, (float)-(h - ph) }, (Vector2){ 0.0f, (float)ph }, WHITE);
+        EndTextureMode();
+    }
+    Image img = rtReadTarget(out);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_shadow_cascades.png", dir);
+    ok = ok && ExportImage(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    RblScene none;
+    memset(&none, 0, sizeof(none));
+    RblSetScene(&none);
+    UnloadRenderTexture(rt); UnloadRenderTexture(big); UnloadRenderTexture(out);
+    RblUnloadShadowMap(&cascades); RblUnloadShadowMap(&one);
+    MemFree(mc.maps); MemFree(mt.maps);
+    UnloadModel(ground);
+    RblUnloadLitShader(&lit);
+    UnloadTexture(character); UnloadTexture(tree); UnloadTexture(floorTexture);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = (argc > 1)? argv[1] : "examples/resources";
@@ -581,6 +788,8 @@ int main(int argc, char **argv)
     if (!shadowsPicture(dir)) return 1;
     if (!spriteShadowsPicture(dir)) return 1;
     if (!sweepPicture(dir)) return 1;
+    if (!omniPicture(dir)) return 1;
+    if (!cascadesPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(&lit);
