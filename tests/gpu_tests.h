@@ -19,6 +19,7 @@
 #include "test_atlas_render.c"
 #include "test_fade.c"
 #include "test_held.c"
+#include "test_sprite_buffer.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_API_TESTS,
@@ -43,6 +44,8 @@ static const RtTest rblGpuTests[] = {
         RT_TEST_GLSL3(test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances),
         RT_TEST_GLSL3(test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float_field),
         RT_TEST_GLSL3(test_paths_instanced_location_cache_survives_program_id_reuse),
+        RT_TEST_GLSL3(test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step),
+        RT_TEST_GLSL3(test_sprite_buffer_draw_equals_draw_instanced_and_culls_what_the_view_cannot_see),
         RT_TEST(test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214),
         RT_TEST(test_materials_shader_decodes_every_encoding_like_the_cpu),
         RT_TEST(test_materials_absent_maps_are_not_declared_or_sampled),
