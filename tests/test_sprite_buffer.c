@@ -171,7 +171,7 @@ static void test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step
     RblCameraFrame view = RblGetCameraFrame(cam);
     const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
     int frameOff = 0, nextOff = 0, weightOff = 0, shown = 0;
-    double worstPos = 0.0, worstWeight = 0.0;
+    double worstPos = 0.0, worstWeight = 0.0, worstRef = 0.0, refScale = 0.0;
     for (int i = 0; i < n; i++)
     {
         RblBillboard b = sbBillboard(&atlas, &sprites[i], cpuFrame[i]), b2 = b;
@@ -189,6 +189,15 @@ static void test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step
             for (int k = 0; k < 3; k++) worstPos = fmax(worstPos, fabs(g[k] - c->position[k])/scale);
             for (int k = 0; k < 2; k++) { if (!(fabs(g[3 + k] - c->texcoord[k]) < 1e-5)) f = true; if (!(fabs(g[5 + k] - c2->texcoord[k]) < 1e-5)) nx = true; }
         }
+        // the double-precision reference of the decoded sprite (tests/reference.h)
+        D3 ref[4], normal;
+        refQuad(cam, &b, &ref[0], &normal);
+        for (int v = 0; v < 6; v++)
+        {
+            const float *g = gpu + ((size_t)i*6 + v)*SB_TF_FLOATS;
+            worstRef = fmax(worstRef, dLen(dSub(d3(g[0], g[1], g[2]), ref[cornerOf[v]])));
+            refScale = fmax(refScale, dLen(ref[cornerOf[v]]));
+        }
         double dw = fabs(gpu[(size_t)i*6*SB_TF_FLOATS + 7] - cpuWeight[i]);
         worstWeight = fmax(worstWeight, dw);
         w = !(dw <= 1e-6);
@@ -202,8 +211,9 @@ static void test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step
     RT_CHECK(nextOff == 0, "%d of %d sprites fade toward another frame than RblSpriteBlend's", nextOff, n);
     RT_CHECK(weightOff == 0, "%d of %d sprites' weights differ from RblSpriteBlend's by more than 1e-6 (worst %.3g)", weightOff, n, worstWeight);
     RT_CHECK(worstPos < 1e-5, "worst relative corner difference sprite buffer vs RblBillboardVertices %.3g", worstPos);
-    printf("    %d sprite states (%d tag/loop/speed combinations x %d steps): frame, next and weight equal the CPU player; worst weight %.2g, worst relative corner %.2e\n",
-           n, combos, STEPS, worstWeight, worstPos);
+    RT_CHECK(worstRef/refScale < 4.0*1.1920929e-07, "corner error vs the double reference %.3g (%.3g of the largest corner distance)", worstRef, worstRef/refScale);
+    printf("    %d sprite states (%d tag/loop/speed combinations x %d steps): frame, next and weight equal the CPU player; worst weight %.2g, worst relative corner %.2e;"
+           " vs the double reference %.3g world units (%.3g rel)\n", n, combos, STEPS, worstWeight, worstPos, worstRef, worstRef/refScale);
     free(gpu); free(sprites); free(cpuFrame); free(cpuNext); free(cpuWeight);
     gl.DeleteProgram(prog);
     RblUnloadSpriteBuffer(&buf);
@@ -305,4 +315,118 @@ static void test_sprite_buffer_draw_equals_draw_instanced_and_culls_what_the_vie
     sprUnloadMaterial(&m);
     UnloadTexture(sheet);
     RblUnloadAtlas(&atlas);
+}
+
+// Ranges: an update of one sprite changes its pixels only (the image equals RblDrawInstanced of the
+// new set), a range holding one bad sprite is refused whole with one line and changes nothing, and
+// the resident set draws the same every frame without being touched. ES 2 / GL 2.1: refused with
+// one line, the zeroed result unloads with one more.
+static void test_sprite_buffer_range_updates_change_only_their_sprites(void)
+{
+    RblAtlas atlas = sbAtlas();
+    if (!rtGlsl3())
+    {
+        warnings = 0;
+        RblSpriteBuffer none = RblLoadSpriteBuffer(&atlas, 4);
+        RT_CHECK(!RblIsSpriteBufferValid(none) && (warnings == 1), "sprite buffer on a GLSL 1 context: %d log lines, want 1", warnings);
+        warnings = 0;
+        RblUnloadSpriteBuffer(&none);
+        RT_CHECK(warnings == 1, "unloading the refused sprite buffer: %d log lines, want 1", warnings);
+        RblUnloadAtlas(&atlas);
+        return;
+    }
+    Texture2D sheet = sbSheet();
+    Material m = sprMaterialOf(sheet, 0.0f, true);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene rejected");
+    RblSpriteInstance s[3];
+    for (int i = 0; i < 3; i++) s[i] = RblMakeSprite((Vector3){ -1.2f + 1.2f*(float)i, -0.5f, 0.0f }, 1.0f/16.0f, 0.0f, i, WHITE);
+    RblSpriteBuffer buf = RblLoadSpriteBuffer(&atlas, 3);
+    RT_CHECK(RblUpdateSprites(&buf, 0, 3, s), "sprites refused");
+    RblInstanceBuffer ib = RblLoadInstanceBuffer(3);
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    Camera3D cam = frontCamera();
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    Image img[5];
+    for (int k = 0; k < 5; k++)
+    {
+        if (k == 2) { RblSpriteInstance one = s[1]; one.frame = 4; one.mode = RBL_SPRITE_FLIP_X; RT_CHECK(RblUpdateSprites(&buf, 1, 1, &one), "one sprite refused"); s[1] = one; }
+        if (k == 3)
+        {
+            RblSpriteInstance bad[3] = { s[2], s[1], s[0] };
+            bad[2].position.y = NAN;
+            warnings = 0;
+            RT_CHECK(!RblUpdateSprites(&buf, 0, 3, bad) && (warnings == 1), "a range with a NaN sprite: accepted or %d lines", warnings);
+        }
+        BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+        if (k < 4) RblDrawSpriteBuffer(&buf, cam, m, d, 0.0f);
+        else
+        {
+            RblInstance in[3];
+            for (int i = 0; i < 3; i++) { RblBillboard b = sbBillboard(&atlas, &s[i], s[i].frame); in[i] = sbInstance(&b); }
+            RblDrawInstanced(&ib, cam, m, d, in, 3);
+        }
+        EndMode3D(); EndTextureMode();
+        img[k] = rtReadTarget(rt);
+    }
+    int same01 = 0, changedOutside = 0, changedInside = 0, same23 = 0, same24 = 0, lit = 0;
+    for (int y = 0; y < TARGET; y++) for (int x = 0; x < TARGET; x++)
+    {
+        Color c0 = rtPixel(img[0], x, y), c1 = rtPixel(img[1], x, y), c2 = rtPixel(img[2], x, y), c3 = rtPixel(img[3], x, y), c4 = rtPixel(img[4], x, y);
+        same01 += (c0.r == c1.r) && (c0.g == c1.g) && (c0.b == c1.b);
+        same23 += (c2.r == c3.r) && (c2.g == c3.g) && (c2.b == c3.b);
+        same24 += (c2.r == c4.r) && (c2.g == c4.g) && (c2.b == c4.b);
+        bool diff = (c0.r != c2.r) || (c0.g != c2.g) || (c0.b != c2.b);
+        bool middle = (x >= TARGET/3) && (x < 2*TARGET/3);
+        if (diff) { if (middle) changedInside++; else changedOutside++; }
+        lit += c0.r > 0;
+    }
+    RT_CHECK(lit > 100, "nothing drawn (%d lit)", lit);
+    RT_CHECK(same01 == TARGET*TARGET, "an untouched resident set drew differently the next frame (%d pixels)", TARGET*TARGET - same01);
+    RT_CHECK((changedInside > 20) && (changedOutside == 0), "updating sprite 1 changed %d pixels around it and %d elsewhere", changedInside, changedOutside);
+    RT_CHECK(same23 == TARGET*TARGET, "a refused update changed %d pixels", TARGET*TARGET - same23);
+    RT_CHECK(same24 == TARGET*TARGET, "%d pixels differ from RblDrawInstanced of the updated set", TARGET*TARGET - same24);
+    if (rtFailuresInCurrentTest() > 0) for (int k = 0; k < 5; k++) { char name[24]; snprintf(name, sizeof(name), "range_%d", k); rtSaveImage(img[k], name); }
+    for (int k = 0; k < 5; k++) UnloadImage(img[k]);
+    UnloadRenderTexture(rt);
+    RblUnloadInstanceBuffer(&ib);
+    RblUnloadSpriteBuffer(&buf);
+    sprUnloadMaterial(&m);
+    UnloadTexture(sheet);
+    RblUnloadAtlas(&atlas);
+}
+
+// Quantisation of the 32-byte sprite: rotation to 360/65536 degrees (error at most half a step over
+// a sweep of angles, negative and beyond a turn included), speed to a half float (relative error
+// at most 2^-11 over its normal range, subnormals to 2^-25 absolute); position and scale are stored
+// as given (float)
+static void test_sprite_buffer_quantisation_is_within_half_a_step(void)
+{
+    double worstRot = 0.0, worstSpeed = 0.0, worstSub = 0.0;
+    for (int i = -20000; i <= 20000; i++)
+    {
+        float deg = 0.0371f*(float)i;
+        RblSpriteInstance s = RblMakeSprite((Vector3){ 1.5f, -2.25f, 3.0f }, 0.3f, deg, 0, WHITE);
+        double back = (double)s.rotation*(360.0/65536.0), want = fmod((double)deg, 360.0);
+        if (want < 0.0) want += 360.0;
+        double e = fabs(back - want);
+        if (e > 180.0) e = 360.0 - e;
+        worstRot = fmax(worstRot, e);
+        RT_CHECK((s.position.x == 1.5f) && (s.position.y == -2.25f) && (s.position.z == 3.0f) && (s.scale == 0.3f), "position or scale not kept exactly");
+    }
+    for (int i = 0; i <= 4000; i++)
+    {
+        float speed = (i < 2000)? 6.1035156e-05f*powf(2.0f, (float)i/2000.0f*30.0f) : 6.1035156e-05f*(float)(i - 2000)/2000.0f;
+        if (speed > 65504.0f) continue;
+        RblSpriteInstance s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, 0.0f, 0, WHITE);
+        RT_CHECK(RblAnimateSprite(&s, -1, -1, 0.0f, speed), "speed %g refused", speed);
+        unsigned int h = s.speed, e = (h >> 10) & 31u, mant = h & 1023u;
+        double v = (e == 0u)? mant*ldexp(1.0, -24) : ldexp(1.0 + mant/1024.0, (int)e - 15);
+        if (speed >= 6.1035156e-05f) worstSpeed = fmax(worstSpeed, fabs(v - speed)/speed);
+        else worstSub = fmax(worstSub, fabs(v - speed));
+    }
+    RT_CHECK(worstRot <= 180.0/65536.0 + 1e-9, "rotation off by %.3g degrees (half a step is %.3g)", worstRot, 180.0/65536.0);
+    RT_CHECK(worstSpeed <= ldexp(1.0, -11) + 1e-12, "speed off by %.3g relative (half a half-float step is %.3g)", worstSpeed, ldexp(1.0, -11));
+    RT_CHECK(worstSub <= ldexp(1.0, -25) + 1e-15, "subnormal speed off by %.3g (half a step is %.3g)", worstSub, ldexp(1.0, -25));
+    printf("    rotation within %.3g degrees (step 360/65536), speed within %.3g relative (%.3g absolute below 2^-14); position and scale exact\n", worstRot, worstSpeed, worstSub);
 }
