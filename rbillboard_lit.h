@@ -70,6 +70,15 @@
 *            RblInstancedDesc idesc = RBL_ZERO;
 *            idesc.facing = RBL_FACING_AXIS;
 *            RblDrawInstanced(&ib, camera, instMat, idesc, instances, count);   // inside BeginMode3D
+*          Resident sprites (RblSpriteBuffer, same programs): 32 bytes a sprite, uploaded once and
+*          updated by range; frames, trims, pivots and per-frame times come from the atlas's frame
+*          table on the GPU, tags play from one clock (RblSpritePlayer's rules), chunks of 256 the
+*          view cannot see are skipped. A draw reads nothing per sprite on the CPU.
+*            RblSpriteBuffer sb = RblLoadSpriteBuffer(&atlas, count);
+*            sprites[i] = RblMakeSprite(position, worldScale, degrees, frame, WHITE);
+*            RblAnimateSprite(&sprites[i], tag, -1, startTime, 1.0f);     // or leave it a frame
+*            RblUpdateSprites(&sb, 0, count, sprites);                  // again for ranges that change
+*            RblDrawSpriteBuffer(&sb, camera, instMat, idesc, time);    // inside BeginMode3D
 *       5. raylib Models: a lit program in model.materials[i].shader (GenMeshTangents for normal maps).
 *          RblSetScene uploads the scene to every live lit program (later ones get it at load), so even
 *          raylib's DrawModel is lit; the Material's values need these (they then call DrawMesh):
@@ -400,6 +409,21 @@
 *         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
 *         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
 *         skipped. RblSpriteBlend: next frame and time/duration.
+*       - Resident sprites (RblSpriteBuffer; tests/test_sprite_buffer.c): RblLoadSpriteBuffer copies the
+*         atlas's frames (source, trimmed quad and pivot per unit of scale, duration) and each tag's
+*         timeline (one period in play order, pass ends) into an RGBA32F texture the instanced stage
+*         reads with texelFetch (GL 3.3, ES 3, WebGL2; unit RBL_FRAME_TABLE_TEXTURE_UNIT). A sprite
+*         with RBL_SPRITE_ANIMATED shows RblUpdateSprite's frame after (time - start) x speed seconds
+*         of play (0 before start), with RblSpriteBlend's next frame and weight for crossFade programs
+*         (RblSpriteFade's zero clips: frames of equal trim); loops as RblPlaySprite's, 1..254 or 255
+*         forever. Packing: position, scale and start float; rotation in 65536ths of a turn (0.0027
+*         degrees at most off), speed a half float (2^-11 relative); tags < 65535, frames < 65536;
+*         the clock is a float: keep it small (offset it per level) for millisecond steps past hours.
+*         Chunks of 256 sprites keep pivot bounds (updated by RblUpdateSprites); a draw tests them
+*         against the pass's clip volume grown by the farthest frame corner x the chunk's largest
+*         scale (x |up| for a long CAMERA_PLANE up, x 3 in shadow passes for the AXIS tilt) and draws
+*         the visible runs. Draws take no sort (buffer order) and no fades; back faces are drawn in
+*         the modes that can show them. Hidden sprites: scale 0.
 *       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblAtlasBillboardFade(&atlas,
 *         player.frame, next, w, scale, &billboard) with next and w from RblSpriteBlend (instances:
 *         RblAtlasInstanceFade, an RblFade beside each) mixes the next frame in by time/duration. The

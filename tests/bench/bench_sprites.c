@@ -566,9 +566,11 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
             double own[RES_ROUNDS], one[RES_ROUNDS];
             for (int r = 0; r < RES_ROUNDS; r++)
             {
+                EndMode3D(); BeginMode3D(away);         // culling reads the pass's matrices
                 double t0 = BenchNowNs();
                 for (int k = 0; k < 100; k++) RblDrawSpriteBuffer(&sb, away, m, d, 0.0f);
                 own[r] = (BenchNowNs() - t0)/100.0/1000.0;
+                EndMode3D(); BeginMode3D(cam);
                 drawNs = 0.0;
                 t0 = BenchNowNs();
                 RblDrawInstanced(&ib, cam, m, d, inst, 1);
