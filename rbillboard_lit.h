@@ -1396,6 +1396,7 @@ typedef struct rbl__ProgramKey {
     RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
+    int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
 } rbl__ProgramKey;
 
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
@@ -2550,9 +2551,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// shadow_caster.fs.glsl.\n",
     "#include \"common.glsl\"\n",
     "\n",
-    "// An RblInstance (rblInstancing[7].x 0), or a resident RblSpriteInstance (rblInstancing[7].x 1) whose\n",
-    "// 32 bytes the same locations read as: 10 pivot, scale; 11 start (x); 12 rotation, frame, speed\n",
-    "// (half-float bits), mode, as unsigned shorts; 13 tint\n",
+    "// An RblInstance, or in the resident-sprite variant (RBL_SPRITE_BUFFER, compiled by the header for\n",
+    "// RblDrawSpriteBuffer) an RblSpriteInstance whose 32 bytes the same locations read as: 10 pivot,\n",
+    "// scale; 11 start (x); 12 rotation, frame, speed (half-float bits), mode, as unsigned shorts; 13 tint\n",
     "layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees\n",
     "layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin\n",
     "layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)\n",
@@ -2583,8 +2584,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
     "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera\n",
     "//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes\n",
-    "//   [7] x: 1 resident sprites (RblDrawSpriteBuffer), y: their clock (seconds), z: frame table width,\n",
-    "//       w: the atlas's frame count\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "//   [7] (the resident-sprite variant only) x: 1, y: the sprites' clock (seconds), z: frame table\n",
+    "//       width, w: the atlas's frame count\n",
     "uniform vec4 rblInstancing[8];\n",
     "\n",
     "// A sprite buffer's frame table (RGBA32F, read with texelFetch; rbl__buildFrameTable writes it):\n",
@@ -2594,6 +2596,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "//   repeat, a pingpong's first frame duration or 0); then the timeline entries\n",
     "//   (frame, start within the period)\n",
     "uniform highp sampler2D rblFrameTable;\n",
+    "#else\n",
+    "uniform vec4 rblInstancing[7];\n",
+    "#endif\n",
     "\n",
     "// The instance being expanded, from either layout (main reads it once)\n",
     "vec4 rblPivot;          // xyz pivot, w rotation in degrees\n",
@@ -2878,6 +2883,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "}\n",
     "#endif\n",
     "\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
     "// Texel i of the frame table (rows of rblInstancing[7].z texels)\n",
     "vec4 rblTable(int i)\n",
     "{\n",
@@ -2955,18 +2961,19 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblFadeClip0 = vec4(0.0); rblFadeClip1 = vec4(0.0);\n",
     "#endif\n",
     "}\n",
+    "#endif\n",
     "\n",
     "void main()\n",
     "{\n",
-    "    if (rblInstancing[7].x > 0.5) rblReadSprite();\n",
-    "    else\n",
-    "    {\n",
-    "        rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "    rblReadSprite();\n",
+    "#else\n",
+    "    rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;\n",
     "#ifdef RBL_CROSS_FADE\n",
-    "        rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;\n",
-    "        rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;\n",
+    "    rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;\n",
+    "    rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;\n",
     "#endif\n",
-    "    }\n",
+    "#endif\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
     "    int code = int(rblInstancing[0].w + 0.5);\n",
@@ -5072,6 +5079,13 @@ void RblClose(void)
     // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
     // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
     for (int i = rbl__state.programCount - 1; i >= 0; i--)
+        if ((rbl__state.programs[i]->key.kind == RBL__KIND_LIT) && rbl__state.programs[i]->key.sprites)
+        {
+            if (rbl__glUsable()) rlUnloadShaderProgram(rbl__state.programs[i]->shader.id);     // resident-sprite variants are the header's
+            rbl__removeProgram(rbl__state.programs[i]);
+            i = rbl__state.programCount;
+        }
+    for (int i = rbl__state.programCount - 1; i >= 0; i--)
         if (rbl__state.programs[i]->key.kind == RBL__KIND_LIT) rbl__removeProgram(rbl__state.programs[i]);
     for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
     RBL_FREE(rbl__state.quarantine); RBL_FREE(rbl__state.dead);
@@ -5252,8 +5266,8 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
     for (int i = 0; i < 5; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
 }
 
-// The per-draw frame of the instanced stage, rblInstancing[8] (layout in lit_instanced.vs.glsl); [7]
-// zero: RblInstance attributes (a sprite buffer's draw sets it)
+// The per-draw frame of the instanced stage, rblInstancing[7] (layout in lit_instanced.vs.glsl); the
+// resident-sprite variant's [7] (frame[28..31]) zero here, set by its draw
 static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFrame *view, int texW, int texH, float frame[32])
 {
     const float f[32] = {
@@ -5383,8 +5397,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     rbl__albedoSize(&material, &texW, &texH);
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: albedo texture size %ix%i", texW, texH); return 0; }
 
-    // The per-draw frame in one vec4[8] upload (layout documented in lit_instanced.vs.glsl; [7] zero:
-    // RblInstance attributes, not resident sprites)
+    // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
     RblCameraFrame view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
     float frame[32];
@@ -5394,7 +5407,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rbl__applyMaterialValues(program, &material);
-    rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 8);
+    rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
 
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
@@ -6847,6 +6860,20 @@ static void rbl__removeProgram(rbl__Program *p)
         rbl__state.programs[i] = rbl__state.programs[--rbl__state.programCount];
         break;
     }
+    // An instanced program's resident-sprite variant is the header's: it goes with the program
+    if (p->key.desc.instanced && !p->key.sprites)
+    {
+        rbl__ProgramKey key = p->key;
+        key.sprites = 1;
+        for (int i = 0; i < rbl__state.programCount; i++)
+        {
+            rbl__Program *v = rbl__state.programs[i];
+            if (memcmp(&v->key, &key, sizeof(key)) != 0) continue;
+            if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
+            rbl__removeProgram(v);
+            break;
+        }
+    }
     if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
     RBL_FREE(p);
 }
@@ -6914,6 +6941,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
+    if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_COMPOSITE)
@@ -10733,6 +10761,17 @@ typedef struct rbl__SpriteBufferState {
     unsigned int vaoId, vboId, tableId;
 } rbl__SpriteBufferState;
 
+// The resident-sprite variant of an instanced program (lit, G-buffer or caster): the registry's, or
+// compiled now (held until its program goes); NULL (problem set) on failure
+static rbl__Program *rbl__spriteVariant(const rbl__Program *p)
+{
+    rbl__ProgramKey key = p->key;
+    key.sprites = 1;
+    for (int i = 0; i < rbl__state.programCount; i++)
+        if (memcmp(&rbl__state.programs[i]->key, &key, sizeof(key)) == 0) return rbl__state.programs[i];
+    return rbl__compileProgram(&key);
+}
+
 static rbl__SpriteBufferState *rbl__spriteState(const RblSpriteBuffer *buffer)
 {
     return ((buffer != NULL) && rbl__isLive(buffer->id, buffer->state))? buffer->state : NULL;
@@ -11074,6 +11113,13 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
     if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, false, "RblDrawSpriteBuffer", &program)) return 0;
+    // The program's resident-sprite variant (compiled at its first sprite draw): the plain instanced
+    // stage pays nothing for reading sprites
+    rbl__Program *variant = rbl__spriteVariant(program);
+    if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: resident-sprite variant unavailable (%s)", rbl__state.problem); return 0; }
+    program = variant;
+    material.shader = variant->shader;
+    if (variant->key.desc.softParticles && (rbl__state.shadowPass == NULL)) rbl__bindSoftDepth(variant, &material);
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: albedo texture size %ix%i", texW, texH); return 0; }

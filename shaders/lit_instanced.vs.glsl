@@ -6,9 +6,9 @@
 // shadow_caster.fs.glsl.
 #include "common.glsl"
 
-// An RblInstance (rblInstancing[7].x 0), or a resident RblSpriteInstance (rblInstancing[7].x 1) whose
-// 32 bytes the same locations read as: 10 pivot, scale; 11 start (x); 12 rotation, frame, speed
-// (half-float bits), mode, as unsigned shorts; 13 tint
+// An RblInstance, or in the resident-sprite variant (RBL_SPRITE_BUFFER, compiled by the header for
+// RblDrawSpriteBuffer) an RblSpriteInstance whose 32 bytes the same locations read as: 10 pivot,
+// scale; 11 start (x); 12 rotation, frame, speed (half-float bits), mode, as unsigned shorts; 13 tint
 layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees
 layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin
 layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)
@@ -39,8 +39,9 @@ uniform mat4 mvp;
 //       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
 //   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera
 //   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes
-//   [7] x: 1 resident sprites (RblDrawSpriteBuffer), y: their clock (seconds), z: frame table width,
-//       w: the atlas's frame count
+#ifdef RBL_SPRITE_BUFFER
+//   [7] (the resident-sprite variant only) x: 1, y: the sprites' clock (seconds), z: frame table
+//       width, w: the atlas's frame count
 uniform vec4 rblInstancing[8];
 
 // A sprite buffer's frame table (RGBA32F, read with texelFetch; rbl__buildFrameTable writes it):
@@ -50,6 +51,9 @@ uniform vec4 rblInstancing[8];
 //   repeat, a pingpong's first frame duration or 0); then the timeline entries
 //   (frame, start within the period)
 uniform highp sampler2D rblFrameTable;
+#else
+uniform vec4 rblInstancing[7];
+#endif
 
 // The instance being expanded, from either layout (main reads it once)
 vec4 rblPivot;          // xyz pivot, w rotation in degrees
@@ -334,6 +338,7 @@ float rblFadeCode(vec2 t1, vec2 v1, vec2 t2, vec2 v2)
 }
 #endif
 
+#ifdef RBL_SPRITE_BUFFER
 // Texel i of the frame table (rows of rblInstancing[7].z texels)
 vec4 rblTable(int i)
 {
@@ -411,18 +416,19 @@ void rblReadSprite()
     rblFadeClip0 = vec4(0.0); rblFadeClip1 = vec4(0.0);
 #endif
 }
+#endif
 
 void main()
 {
-    if (rblInstancing[7].x > 0.5) rblReadSprite();
-    else
-    {
-        rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;
+#ifdef RBL_SPRITE_BUFFER
+    rblReadSprite();
+#else
+    rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;
 #ifdef RBL_CROSS_FADE
-        rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;
-        rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;
+    rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;
+    rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;
 #endif
-    }
+#endif
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     vec3 eye = rblInstancing[0].xyz;
     int code = int(rblInstancing[0].w + 0.5);

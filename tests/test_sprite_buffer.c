@@ -59,7 +59,7 @@ static GLu sbTfProgram(TfGl *gl)
 {
     bool es = (rbl__glsl() == 300);
     char prologue[256];
-    rbl__stagePrologue(es? 300 : 330, true, "#define RBL_LIGHTS 1\n#define RBL_CROSS_FADE\n", prologue, sizeof(prologue));
+    rbl__stagePrologue(es? 300 : 330, true, "#define RBL_LIGHTS 1\n#define RBL_CROSS_FADE\n#define RBL_SPRITE_BUFFER\n", prologue, sizeof(prologue));
     char *vs = rbl__joinStage(prologue, rbl__pass_lit_instanced_vs);
     GLu vsh = tfShader(gl, 0x8B31, vs);
     RBL_FREE(vs);
