@@ -524,6 +524,9 @@
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
 *           Scene shadow map k goes to texture unit 12 + k (raylib's material maps use 0..10, the
 *           scene depth 11; GL 3.3 promises 16).
+*       #define RBL_FRAME_TABLE_TEXTURE_UNIT 16
+*           Texture unit a sprite buffer's frame table is read from by the vertex stage (GL 3.3, ES 3
+*           and WebGL2 promise 32 units in all).
 *       #define RBL_MAX_BONES 128
 *           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
 *       #define RBL_GPU_SKINNING 1
@@ -7289,6 +7292,17 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     if (captured) memset(&sc->depth, 0, sizeof(sc->depth));
 }
 
+// The casters target's distance code (shadow_caster.fs.glsl) for a caster program in this shadow
+// pass: perspective, near, far, log(far/near)
+static void rbl__casterDepth(const rbl__Program *caster)
+{
+    const rbl__ShadowMapState *st = rbl__state.shadowPass->state;
+    bool perspective = (st->lightType == RBL_LIGHT_SPOT);
+    float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
+    rlEnableShader(caster->shader.id);
+    rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
+}
+
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
 {
     const char *bad = rbl__materialProblem(material, path, program);
@@ -7301,12 +7315,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
-        // The casters target's distance code (shadow_caster.fs.glsl): perspective, near, far, log(far/near)
-        const rbl__ShadowMapState *st = rbl__state.shadowPass->state;
-        bool perspective = (st->lightType == RBL_LIGHT_SPOT);
-        float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
-        rlEnableShader(caster->shader.id);
-        rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
+        rbl__casterDepth(caster);
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
@@ -11012,7 +11021,7 @@ static int rbl__visibleSpriteRuns(rbl__SpriteBufferState *b, Matrix m, float rea
         { m.m3 + m.m1, m.m7 + m.m5, m.m11 + m.m9, m.m15 + m.m13 }, { m.m3 - m.m1, m.m7 - m.m5, m.m11 - m.m9, m.m15 - m.m13 },
         { m.m3 + m.m2, m.m7 + m.m6, m.m11 + m.m10, m.m15 + m.m14 }, { m.m3 - m.m2, m.m7 - m.m6, m.m11 - m.m10, m.m15 - m.m14 } };
     int runs = 0, chunks = (b->count + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
-    bool open = false;
+    bool open = false, cull = rbl__allFinite(planes, 24);      // a degenerate pass (no viewport yet): nothing culled
     for (int c = 0; c < chunks; c++)
     {
         const float *o = b->bounds + (size_t)c*7;
@@ -11020,7 +11029,7 @@ static int rbl__visibleSpriteRuns(rbl__SpriteBufferState *b, Matrix m, float rea
         if (seen)
         {
             double r = (double)reach*o[6];
-            for (int k = 0; (k < 6) && seen; k++)
+            for (int k = 0; cull && (k < 6) && seen; k++)
             {
                 const float *p = planes[k];
                 double d = p[3];
@@ -11065,7 +11074,8 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: resident-sprite variant unavailable (%s)", rbl__state.problem); return 0; }
     program = variant;
     material.shader = variant->shader;
-    if (variant->key.desc.softParticles && (rbl__state.shadowPass == NULL)) rbl__bindSoftDepth(variant, &material);
+    if (rbl__state.shadowPass != NULL) rbl__casterDepth(variant);
+    else if (variant->key.desc.softParticles) rbl__bindSoftDepth(variant, &material);
     int texW, texH;
     rbl__albedoSize(&material, &texW, &texH);
     if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: albedo texture size %ix%i", texW, texH); return 0; }

@@ -48,6 +48,7 @@ static const RtTest rblGpuTests[] = {
         RT_TEST_GLSL3(test_sprite_buffer_draw_equals_draw_instanced_and_culls_what_the_view_cannot_see),
         RT_TEST(test_sprite_buffer_range_updates_change_only_their_sprites),
         RT_TEST(test_sprite_buffer_quantisation_is_within_half_a_step),
+        RT_TEST_GLSL3(test_sprite_buffer_casts_the_shadow_draw_instanced_casts),
         RT_TEST(test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214),
         RT_TEST(test_materials_shader_decodes_every_encoding_like_the_cpu),
         RT_TEST(test_materials_absent_maps_are_not_declared_or_sampled),

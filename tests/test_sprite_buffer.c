@@ -430,3 +430,49 @@ static void test_sprite_buffer_quantisation_is_within_half_a_step(void)
     RT_CHECK(worstSub <= ldexp(1.0, -25) + 1e-15, "subnormal speed off by %.3g (half a step is %.3g)", worstSub, ldexp(1.0, -25));
     printf("    rotation within %.3g degrees (step 360/65536), speed within %.3g relative (%.3g absolute below 2^-14); position and scale exact\n", worstRot, worstSpeed, worstSub);
 }
+
+// In a shadow pass a sprite buffer casts through the caster program's resident-sprite variant (its
+// depth code set for the pass): the holed card of test_shadows' hole test, as one resident sprite,
+// shades the floor exactly as RblDrawInstanced's card does, hole included
+static const char sbCardAtlasText[] = "{\"frames\": [{\"filename\": \"card\", \"frame\": {\"x\":0,\"y\":0,\"w\":64,\"h\":64}, \"pivot\": {\"x\":0.5,\"y\":0.5}}], \"meta\": {\"size\": {\"w\":64,\"h\":64}}}";
+static void sbCardCaster(Material m, Camera3D viewer, void *ctx)
+{
+    int *drawn = (int *)ctx;
+    RblAtlas atlas = RblLoadAtlasFromMemory(sbCardAtlasText, (int)strlen(sbCardAtlasText), RBL_ATLAS_AUTO);
+    RblSpriteBuffer buf = RblLoadSpriteBuffer(&atlas, 2);
+    RblSpriteInstance s[2] = { RblMakeSprite((Vector3){ 0.0f, 0.0f, 1.0f }, 2.0f/64.0f, 0.0f, 0, WHITE),
+                               RblMakeSprite((Vector3){ 500.0f, 0.0f, 1.0f }, 2.0f/64.0f, 0.0f, 0, WHITE) };     // far outside the light's focus
+    RblUpdateSprites(&buf, 0, 1, &s[0]);
+    RblUpdateSprites(&buf, 300, 0, NULL);
+    RblInstancedDesc d;
+    memset(&d, 0, sizeof(d));
+    d.facing = RBL_FACING_FIXED; d.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; d.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    *drawn = RblDrawSpriteBuffer(&buf, viewer, m, d, 0.0f);
+    RblUnloadSpriteBuffer(&buf);
+    RblUnloadAtlas(&atlas);
+}
+
+static void test_sprite_buffer_casts_the_shadow_draw_instanced_casts(void)
+{
+    ShSetup s = shSetup((Vector3){ 0.0f, 0.0f, -1.0f });
+    s.lights[0].direction = (Vector3){ 0.4f, 0.0f, -1.0f };
+    Image img = GenImageColor(64, 64, WHITE);
+    ImageDrawCircle(&img, 32, 32, 14, BLANK);
+    Texture2D holed = LoadTextureFromImage(img);
+    UnloadImage(img);
+    ShCard card = { { 0.0f, 0.0f, 1.0f }, 2.0f, 2 };
+    Image ref = shRender(&s, shCardCasters, &card, holed, false);
+    int drawn = -1;
+    Image out = shRender(&s, sbCardCaster, &drawn, holed, false);
+    int off = 0;
+    for (int y = 0; y < SH_TARGET; y++) for (int x = 0; x < SH_TARGET; x++) off += abs(rtPixel(out, x, y).r - rtPixel(ref, x, y).r) > 1;
+    int cx = (int)((0.4f + SH_VIEW*0.5f)/SH_VIEW*SH_TARGET), cy = SH_TARGET/2;
+    int hole = rtPixel(out, cx, cy).r, ring = rtPixel(out, cx + 11, cy).r, outside = rtPixel(out, cx + 24, cy).r;
+    RT_CHECK(drawn == 1, "shadow pass drew %d resident sprites, want 1", drawn);
+    RT_CHECK(hole > outside - 3 && ring < outside - 40, "hole %d, ring %d, unshadowed %d: the sprite's shadow (and its hole) missing", hole, ring, outside);
+    RT_CHECK(off == 0, "%d floor pixels differ by more than 1/255 from RblDrawInstanced's shadow", off);
+    printf("    resident sprite's shadow: hole %d, ring %d, unshadowed %d; %d pixels off RblDrawInstanced's\n", hole, ring, outside, off);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(out, "sprite_shadow"); rtSaveImage(ref, "instanced_shadow"); }
+    UnloadImage(out); UnloadImage(ref);
+    UnloadTexture(holed);
+}
