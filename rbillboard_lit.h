@@ -1306,6 +1306,10 @@ typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256
 typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(Rectangle) - offsetof(RblBillboard, position) == 12*sizeof(float)) &&
                                       (offsetof(RblBillboard, roundness) + sizeof(float) - offsetof(RblBillboard, up) == 7*sizeof(float)) &&
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
+// A resident sprite is 32 bytes, read by lit_instanced.vs.glsl as four attributes: pivot and scale
+// (4 floats), start, tint, then rotation .. mode (4 unsigned shorts)
+typedef char rbl__spriteLayout[((sizeof(RblSpriteInstance) == 32) && (offsetof(RblSpriteInstance, scale) == 12) && (offsetof(RblSpriteInstance, start) == 16) &&
+                                (offsetof(RblSpriteInstance, tint) == 20) && (offsetof(RblSpriteInstance, rotation) == 24) && (offsetof(RblSpriteInstance, mode) == 30))? 1 : -1];
 
 //----------------------------------------------------------------------------------
 // Module Types and Structures Definition (private)
@@ -1352,6 +1356,7 @@ typedef struct rbl__Program {
     int casterIdLoc;                // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
     bool valuesValid;
     bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
+    struct rbl__Program *spriteVariant; // Instanced programs: the resident-sprite variant once compiled (goes with this one)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -6809,19 +6814,15 @@ static void rbl__removeProgram(rbl__Program *p)
         rbl__state.programs[i] = rbl__state.programs[--rbl__state.programCount];
         break;
     }
-    // An instanced program's resident-sprite variant is the header's: it goes with the program
-    if (p->key.desc.instanced && !p->key.sprites)
+    // An instanced program's resident-sprite variant is the header's: it goes with the program (and
+    // a variant going alone, forgotten, is no longer its program's)
+    if (p->key.sprites) { for (int i = 0; i < rbl__state.programCount; i++) if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL; }
+    else if (p->spriteVariant != NULL)
     {
-        rbl__ProgramKey key = p->key;
-        key.sprites = 1;
-        for (int i = 0; i < rbl__state.programCount; i++)
-        {
-            rbl__Program *v = rbl__state.programs[i];
-            if (memcmp(&v->key, &key, sizeof(key)) != 0) continue;
-            if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
-            rbl__removeProgram(v);
-            break;
-        }
+        rbl__Program *v = p->spriteVariant;
+        p->spriteVariant = NULL;
+        if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
+        rbl__removeProgram(v);
     }
     if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
     RBL_FREE(p);
@@ -10718,13 +10719,13 @@ typedef struct rbl__SpriteBufferState {
 
 // The resident-sprite variant of an instanced program (lit, G-buffer or caster): the registry's, or
 // compiled now (held until its program goes); NULL (problem set) on failure
-static rbl__Program *rbl__spriteVariant(const rbl__Program *p)
+static rbl__Program *rbl__spriteVariant(rbl__Program *p)
 {
+    if (p->spriteVariant != NULL) return p->spriteVariant;
     rbl__ProgramKey key = p->key;
     key.sprites = 1;
-    for (int i = 0; i < rbl__state.programCount; i++)
-        if (memcmp(&rbl__state.programs[i]->key, &key, sizeof(key)) == 0) return rbl__state.programs[i];
-    return rbl__compileProgram(&key);
+    p->spriteVariant = rbl__compileProgram(&key);
+    return p->spriteVariant;
 }
 
 static rbl__SpriteBufferState *rbl__spriteState(const RblSpriteBuffer *buffer)
