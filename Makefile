@@ -15,8 +15,8 @@ BUILD    ?= build
 CC       ?= cc
 WARN     := -Wall -Wextra -pedantic -Werror
 CSTD     := -std=c99 -D_DEFAULT_SOURCE
-TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
-BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
+TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests -DRBL_INSTRUMENTS
+BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests -DRBL_INSTRUMENTS
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
 .PHONY: all run quickstart test test-quick bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
@@ -261,7 +261,7 @@ clean-all:
 # (its -o page.html minifier crashes on Debian's node): the pages are tests/web/*.html.
 WEB_SHOWCASE := examples/shaders_lit_billboards.c
 WEBCC        := NODE_PATH=/usr/share/nodejs emcc
-WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests -DSUPPORT_GPU_SKINNING=1
+WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests -DSUPPORT_GPU_SKINNING=1 -DRBL_INSTRUMENTS
 WEB_LDFLAGS  := -sALLOW_MEMORY_GROWTH=1 -sTOTAL_STACK=16777216 -sINITIAL_MEMORY=67108864
 WEB_ES3      := $(BUILD)/web/raylib-es3/libraylib.web.a
 WEB_ES2      := $(BUILD)/web/raylib-es2/libraylib.web.a

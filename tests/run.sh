@@ -47,6 +47,9 @@ for unit in header-decl header-impl readme examples/*.c; do
 "
   done
 done
+# The options (RBL_NO_ATLAS, RBL_INSTRUMENTS) once in C and once in C++
+for spec in gcc:c99 g++:c++11; do n=$((n + 1)); jobs="$jobs$spec header-options $BUILD/tests/matrix/cell$n.txt
+"; done
 rm -f "$BUILD"/tests/matrix/cell*.txt
 printf '%s' "$jobs" | BUILD=$BUILD RAYLIB_CFLAGS="$RAYLIB_CFLAGS" RAYLIB_LIBS="$RAYLIB_LIBS" xargs -P 2 -L 1 bash tests/tools/compile_matrix.sh
 for i in $(seq 1 $n); do

@@ -105,7 +105,7 @@ static bool runLoadShadow(void) { RblShadowDesc d; memset(&d, 0, sizeof(d)); d.s
 static void cleanShadow(void) { RblUnloadShadowMap(&shadowMap); }
 
 static RblGBuffer gbuffer;
-static bool runLoadGBuffer(void) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = RBL_BRDF_GGX; gbuffer = RblLoadGBuffer(d); return RblIsGBufferValid(&gbuffer); }
+static bool runLoadGBuffer(void) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = RBL_BRDF_GGX; gbuffer = RblLoadGBuffer(d); return RblIsGBufferValid(gbuffer); }
 static void cleanGBuffer(void) { RblUnloadGBuffer(&gbuffer); }
 
 static Shader lit;
@@ -172,8 +172,8 @@ static RblAtlas atlas;
 static const char *atlasFile = NULL;
 static char *atlasText = NULL;
 static int atlasSize = 0;
-static bool runLoadAtlasMemory(void) { atlas = RblLoadAtlasFromMemory(atlasText, atlasSize, RBL_ATLAS_AUTO); return RblIsAtlasValid(&atlas); }
-static bool runLoadAtlasFile(void) { atlas = RblLoadAtlas(atlasFile); return RblIsAtlasValid(&atlas); }
+static bool runLoadAtlasMemory(void) { atlas = RblLoadAtlasFromMemory(atlasText, atlasSize, RBL_ATLAS_AUTO); return RblIsAtlasValid(atlas); }
+static bool runLoadAtlasFile(void) { atlas = RblLoadAtlas(atlasFile); return RblIsAtlasValid(atlas); }
 static void cleanAtlas(void) { RblUnloadAtlas(&atlas); }
 
 // ---- tests --------------------------------------------------------------------------------------
@@ -201,7 +201,7 @@ static void test_alloc_every_loading_path_fails_cleanly_at_every_allocation(void
     sweep("RblLoadInstanceBuffer", runLoadInstances, cleanInstances);
     failAfter(-1);
     spriteAtlas = RblLoadAtlasFromMemory(spriteAtlasText, (int)strlen(spriteAtlasText), RBL_ATLAS_AUTO);
-    RT_CHECK(RblIsAtlasValid(&spriteAtlas), "sprite atlas refused (%s)", lastWarning);
+    RT_CHECK(RblIsAtlasValid(spriteAtlas), "sprite atlas refused (%s)", lastWarning);
     sweep("RblLoadSpriteBuffer", runLoadSprites, cleanSprites);
     drawnBuffer = RblLoadSpriteBuffer(&spriteAtlas, 4);
     RblSpriteInstance four[4];

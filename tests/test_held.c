@@ -231,7 +231,7 @@ static void test_held_gbuffer_loaded_at_size_0_follows_every_target_size(void)
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
     RblGBuffer follow = RblLoadGBuffer(gd);
-    RT_CHECK(RblIsGBufferValid(&follow), "size-0 G-buffer not loaded");
+    RT_CHECK(RblIsGBufferValid(follow), "size-0 G-buffer not loaded");
     static const int sizes[7][2] = { { 64, 64 }, { 32, 48 }, { 97, 31 }, { 1, 1 }, { 128, 72 }, { 3, 200 }, { 64, 64 } };
     int worst = 0;
     for (int i = 0; i < 7; i++)

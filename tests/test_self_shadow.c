@@ -826,7 +826,7 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
     memset(&ld, 0, sizeof(ld));
     ld.deferred = true; ld.material.normalEncoding = RBL_NORMAL_RGB;
     Shader geo = RblLoadLitShader(ld);
-    RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
+    RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
     RT_CHECK(RblGBufferBytesPerPixel(&g) == 12, "a G-buffer receiving shadows stores %d bytes per pixel (expected 12: RT2 RGBA8 with the caster identity)", RblGBufferBytesPerPixel(&g));
     Material dm = rig.sprite;
     dm.shader = geo;

@@ -123,7 +123,7 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
         RblGBuffer g = RblLoadGBuffer(shading);
         desc.deferred = true;
         Shader geo = RblLoadLitShader(desc);
-        RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
+        RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
         RT_CHECK(RblSetScene(&scene), "scene (lights, G-buffer shadow map) rejected");
         floor.shader = geo;
         if (RblBeginGBuffer(&g, s->camera))

@@ -137,8 +137,8 @@ static void test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step
     GLu prog = sbTfProgram(&gl);
     RT_CHECK(prog != 0, "instanced stage with cross-fade did not link with transform feedback");
     RblAtlas atlas = sbAtlas();
-    RT_CHECK(RblIsAtlasValid(&atlas), "atlas did not load");
-    if ((prog == 0) || !RblIsAtlasValid(&atlas)) { if (prog) gl.DeleteProgram(prog); return; }
+    RT_CHECK(RblIsAtlasValid(atlas), "atlas did not load");
+    if ((prog == 0) || !RblIsAtlasValid(atlas)) { if (prog) gl.DeleteProgram(prog); return; }
     enum { STEPS = 800, LOOPS = 5, SPEEDS = 3 };
     const int loopsOf[LOOPS] = { 0, -1, 1, 2, 3 };
     const float speedOf[SPEEDS] = { 1.0f, 2.0f, 0.5f };

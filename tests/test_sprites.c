@@ -482,7 +482,7 @@ static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
     wall.shader = RblLoadLitShader(geoDesc);
     wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
     Material puff = sprSoftPuff(white);
-    RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
+    RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
     Camera3D cam = sprCamera();
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
     RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass refused");

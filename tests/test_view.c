@@ -35,7 +35,7 @@ static Image viewRenderDeferredPlane(const LitScene *sc, bool *ok)
     desc.deferred = true;
     Shader geo = RblLoadLitShader(desc);
     RblScene scene = litSceneOf(sc);
-    *ok = RblIsGBufferValid(&g) && RblIsLitShaderValid(geo) && RblSetScene(&scene);
+    *ok = RblIsGBufferValid(g) && RblIsLitShaderValid(geo) && RblSetScene(&scene);
     Texture2D albedo = solidTexture(sc->albedo), normal = solidTexture(sc->normal);
     Material m = LoadMaterialDefault();
     m.shader = geo;
@@ -202,7 +202,7 @@ static Image viewRenderSphere(const ViewSphere *vs, Model *model, int path, bool
     RblScene scene;
     memset(&scene, 0, sizeof(scene));
     scene.lights = vs->lights; scene.lightCount = vs->count; scene.ambient = vs->ambient; scene.fog = vs->fog;
-    *ok = RblIsLitShaderValid(lit) && RblSetScene(&scene) && ((path != 2) || RblIsGBufferValid(&g));
+    *ok = RblIsLitShaderValid(lit) && RblSetScene(&scene) && ((path != 2) || RblIsGBufferValid(g));
     Texture2D albedo = solidTexture(vs->albedo);
     Material keep = model->materials[0];
     Material m = LoadMaterialDefault();
