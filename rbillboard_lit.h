@@ -79,15 +79,6 @@
 *            RblInstancedDesc idesc = RBL_ZERO;
 *            idesc.facing = RBL_FACING_AXIS;
 *            RblDrawInstanced(&ib, camera, instMat, idesc, instances, count);   // inside BeginMode3D
-*          Resident sprites (RblSpriteBuffer, same programs): 32 bytes a sprite, uploaded once and
-*          updated by range; frames, trims, pivots and per-frame times come from the atlas's frame
-*          table on the GPU, tags play from one clock (RblSpritePlayer's rules), chunks of 256 the
-*          view cannot see are skipped. A draw reads nothing per sprite on the CPU.
-*            RblSpriteBuffer sb = RblLoadSpriteBuffer(&atlas, count);
-*            sprites[i] = RblMakeSprite(position, worldScale, degrees, frame, WHITE);
-*            RblAnimateSprite(&sprites[i], tag, -1, startTime, 1.0f);     // or leave it a frame
-*            RblUpdateSprites(&sb, 0, count, sprites);                  // again for ranges that change
-*            RblDrawSpriteBuffer(&sb, camera, instMat, idesc, time);    // inside BeginMode3D
 *       5. raylib Models: a lit program in model.materials[i].shader (GenMeshTangents for normal maps).
 *          RblSetScene uploads the scene to every live lit program (later ones get it at load), so even
 *          raylib's DrawModel is lit; the Material's values need these (they then call DrawMesh):
@@ -132,6 +123,15 @@
 *            RblSpritePlayer walk = RblPlaySprite(&atlas, RblAtlasFindTag(&atlas, "walk"), 0);
 *            RblUpdateSprite(&walk, &atlas, GetFrameTime());                 // each frame
 *            RblAtlasBillboard(&atlas, walk.frame, 1.0f/32.0f, &sprite);     // 32 pixels a unit
+*          Resident sprites (RblSpriteBuffer; stage 4's instanced programs): 32 bytes a sprite,
+*          uploaded once and updated by range; frames, trims, pivots and per-frame times come from
+*          the atlas's frame table on the GPU, tags play from one clock (RblSpritePlayer's rules),
+*          chunks of 256 the view cannot see are skipped. A draw reads nothing per sprite on the CPU.
+*            RblSpriteBuffer sb = RblLoadSpriteBuffer(&atlas, count);
+*            sprites[i] = RblMakeSprite(position, worldScale, degrees, frame, WHITE);
+*            RblAnimateSprite(&sprites[i], tag, -1, startTime, 1.0f);     // or leave it a frame
+*            RblUpdateSprites(&sb, 0, count, sprites);                  // again for ranges that change
+*            RblDrawSpriteBuffer(&sb, camera, instMat, idesc, time);    // inside BeginMode3D
 *       9. Translucent sprites: a batch (or instanced draw) sorts blended billboards; soft particles
 *          (desc.softParticles) fade into the opaque world drawn between two added calls.
 *            batch.sort = RBL_SORT_BACK_TO_FRONT;  // or RBL_SORT_HYBRID: solid texels opaque
