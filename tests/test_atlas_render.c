@@ -447,3 +447,53 @@ static void test_atlas_premultiplied_pages_light_and_blend_as_their_straight_col
     RblUnloadAtlas(&atlas);
     UnloadImage(straight); UnloadImage(pma);
 }
+
+
+// (uses test_translucent.c's card helpers, included before this file)
+// Packed maps of a non-power-of-two atlas: full mip chains where the context samples them (GL, ES 3),
+// level 0 alone with clamped edges on ES 2 / WebGL1 (which read such a texture with mips as black);
+// the card renders its colour either way
+static void test_atlas_npot_packed_sheet_uploads_what_the_context_can_sample(void)
+{
+    Image albedo = GenImageColor(24, 20, (Color){ 200, 100, 50, 255 });
+    RblMaterialSource src;
+    memset(&src, 0, sizeof(src));
+    src.albedo = albedo;
+    src.mipmaps = true;
+    RblPackedMaterial packed;
+    RT_CHECK(RblPackMaterial(&src, &packed), "pack");
+    Material m = sprMaterial(solidTexture(WHITE), 0.0f);
+    UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
+    RT_CHECK(RblLoadPackedTextures(&packed, &m), "upload");
+    int want = (rlGetVersion() == RL_OPENGL_ES_20)? 1 : packed.albedo.mipmaps;
+    RT_CHECK(m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps == want, "albedo uploaded with %d levels, expected %d", m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps, want);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
+    RenderTexture2D rt = LoadRenderTexture(SPR_TARGET, SPR_TARGET);
+    BeginTextureMode(rt);
+    ClearBackground(BLACK);
+    BeginMode3D(sprCamera());
+    RblBillboard b = sprCard(0.0f, 0.0f);
+    b.size = (Vector2){ 0.3f, 0.3f }; b.origin = (Vector2){ 0.15f, 0.15f };     // minified: mips would be read
+    RblDrawBillboard(sprCamera(), m, b);
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+    RT_CHECK((abs(c.r - 200) <= 2) && (abs(c.g - 100) <= 2) && (abs(c.b - 50) <= 2), "minified NPOT card (%d %d %d), expected (200 100 50)", c.r, c.g, c.b);
+    printf("    24x20 packed atlas: %d levels uploaded, minified card (%d %d %d)\n", m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps, c.r, c.g, c.b);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
+    m.maps[MATERIAL_MAP_ALBEDO].texture.id = 0;
+    sprUnloadMaterial(&m);
+    RblUnloadPackedMaterial(&packed);
+    UnloadImage(albedo);
+}
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_ATLAS_RENDER_TESTS \
+    RT_TEST(test_atlas_npot_packed_sheet_uploads_what_the_context_can_sample), \
+    RT_TEST(test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases), \
+    RT_TEST(test_atlas_rotated_frames_light_like_the_upright_frame), \
+    RT_TEST(test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_the_reference), \
+    RT_TEST(test_atlas_premultiplied_pages_light_and_blend_as_their_straight_colour)

@@ -1897,3 +1897,25 @@ static void test_deferred_debug_views_show_what_they_name(void)
     RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_DEFERRED_TESTS \
+    RT_TEST_GLSL3(test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing), \
+    RT_TEST_GLSL3(test_deferred_matches_forward_within_2_of_255_for_billboards_and_models), \
+    RT_TEST_GLSL3(test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_forward), \
+    RT_TEST_GLSL3(test_deferred_matches_forward_with_an_orthographic_camera), \
+    RT_TEST_GLSL3(test_deferred_eye_inside_a_light_volume_is_lit_like_forward), \
+    RT_TEST_GLSL3(test_deferred_1024_lights_match_the_double_reference), \
+    RT_TEST_GLSL3(test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved), \
+    RT_TEST_GLSL3(test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255), \
+    RT_TEST_GLSL3(test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255), \
+    RT_TEST_GLSL3(test_deferred_every_brdf_matches_the_double_reference_on_8_bit_and_float_targets), \
+    RT_TEST_GLSL3(test_deferred_normal_encoding_error_table_against_published_figures), \
+    RT_TEST_GLSL3(test_deferred_position_from_depth_error_at_near_middle_far), \
+    RT_TEST_GLSL3(test_deferred_distance_view_matches_the_true_plane_within_24_bit_depth_steps), \
+    RT_TEST_GLSL3(test_deferred_orthographic_float_depth_rebuilds_the_view_distance_within_1_5_steps), \
+    RT_TEST_GLSL3(test_raster_interpolated_position_and_window_depth_match_the_true_plane), \
+    RT_TEST_GLSL3(test_deferred_forced_failure_logs_and_the_forward_fallback_renders), \
+    RT_TEST_GLSL3(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth), \
+    RT_TEST_GLSL3(test_deferred_debug_views_show_what_they_name), \
+    RT_TEST_GLSL3(test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_and_writes_nothing)

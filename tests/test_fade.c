@@ -941,14 +941,14 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
 }
 
 #define RBL_FADE_TESTS \
-        RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
-        RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
-        RT_TEST(test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes), \
-        RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
-        RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
-        RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
-        RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
-        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
-        RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
-        RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters), \
-        RT_TEST(test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror)
+    RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
+    RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
+    RT_TEST(test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes), \
+    RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
+    RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
+    RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
+    RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
+    RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
+    RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
+    RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters), \
+    RT_TEST(test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror)

@@ -386,6 +386,6 @@ static void test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values(
 }
 
 #define RBL_HELD_TESTS \
-        RT_TEST(test_held_orthographic_facing_is_parallel_across_the_whole_view), \
-        RT_TEST_GLSL3(test_held_gbuffer_loaded_at_size_0_follows_every_target_size), \
-        RT_TEST(test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values)
+    RT_TEST(test_held_orthographic_facing_is_parallel_across_the_whole_view), \
+    RT_TEST_GLSL3(test_held_gbuffer_loaded_at_size_0_follows_every_target_size), \
+    RT_TEST(test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values)

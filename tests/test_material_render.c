@@ -238,3 +238,12 @@ static void test_materials_packed_atlas_renders_like_its_separate_maps(void)
     UnloadImage(src.albedo); UnloadImage(src.normal); UnloadImage(src.occlusion);
     sceneUnload(s);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_MATERIAL_RENDER_TESTS \
+    RT_TEST(test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214), \
+    RT_TEST(test_materials_shader_decodes_every_encoding_like_the_cpu), \
+    RT_TEST(test_materials_absent_maps_are_not_declared_or_sampled), \
+    RT_TEST(test_materials_occlusion_dims_ambient_only), \
+    RT_TEST(test_materials_emission_adds_after_lighting), \
+    RT_TEST(test_materials_packed_atlas_renders_like_its_separate_maps)

@@ -887,3 +887,12 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
     RblUnloadGBuffer(&g);
     ssRigUnload(&rig);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_SELF_SHADOW_TESTS \
+    RT_TEST(test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_light_direction), \
+    RT_TEST(test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_the_users_scene), \
+    RT_TEST(test_shadows_light_over_an_axis_sprite_moves_its_shadow_continuously), \
+    RT_TEST(test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_order), \
+    RT_TEST(test_shadows_self_shadow_option_drops_the_identities), \
+    RT_TEST_GLSL3(test_shadows_deferred_sprites_never_shadow_themselves_and_match_forward)

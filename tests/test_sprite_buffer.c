@@ -476,3 +476,11 @@ static void test_sprite_buffer_casts_the_shadow_draw_instanced_casts(void)
     UnloadImage(out); UnloadImage(ref);
     UnloadTexture(holed);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_SPRITE_BUFFER_TESTS \
+    RT_TEST_GLSL3(test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step), \
+    RT_TEST_GLSL3(test_sprite_buffer_draw_equals_draw_instanced_and_culls_what_the_view_cannot_see), \
+    RT_TEST(test_sprite_buffer_range_updates_change_only_their_sprites), \
+    RT_TEST(test_sprite_buffer_quantisation_is_within_half_a_step), \
+    RT_TEST_GLSL3(test_sprite_buffer_casts_the_shadow_draw_instanced_casts)
