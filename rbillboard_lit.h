@@ -37,6 +37,8 @@
 *         >>shadows     shadow maps: light cameras, caster passes, caster identities
 *         >>atlas       sprite-sheet atlases and animation: JSON, sheet files, libGDX, slices, a page's
 *                       textures, the player (RBL_NO_ATLAS leaves it out)
+*         >>sprites     resident sprite buffers: the frame table, range updates, chunk culling, the draw with
+*                       the instanced program's sprite variant (RBL_NO_ATLAS leaves it out)
 *
 *   INTEGRATION:
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
@@ -125,6 +127,15 @@
 *            RblSpritePlayer walk = RblPlaySprite(&atlas, RblAtlasFindTag(&atlas, "walk"), 0);
 *            RblUpdateSprite(&walk, &atlas, GetFrameTime());                 // each frame
 *            RblAtlasBillboard(&atlas, walk.frame, 1.0f/32.0f, &sprite);     // 32 pixels a unit
+*          Resident sprites (RblSpriteBuffer; stage 4's instanced programs): 32 bytes a sprite,
+*          uploaded once and updated by range; frames, trims, pivots and per-frame times come from
+*          the atlas's frame table on the GPU, tags play from one clock (RblSpritePlayer's rules),
+*          chunks of 256 the view cannot see are skipped. A draw reads nothing per sprite on the CPU.
+*            RblSpriteBuffer sb = RblLoadSpriteBuffer(&atlas, count);
+*            sprites[i] = RblMakeSprite(position, worldScale, degrees, frame, WHITE);
+*            RblAnimateSprite(&sprites[i], tag, -1, startTime, 1.0f);     // or leave it a frame
+*            RblUpdateSprites(&sb, 0, count, sprites);                  // again for ranges that change
+*            RblDrawSpriteBuffer(&sb, camera, instMat, idesc, time);    // inside BeginMode3D
 *       9. Translucent sprites: a batch (or instanced draw) sorts blended billboards; soft particles
 *          (desc.softParticles) fade into the opaque world drawn between two added calls.
 *            batch.sort = RBL_SORT_BACK_TO_FRONT;  // or RBL_SORT_HYBRID: solid texels opaque
@@ -429,6 +440,21 @@
 *         forward / reverse / pingpong / pingpong_reverse, a pingpong leg is one pass and the turn
 *         frame shows once; loops 0 = the tag's repeat (0 = forever). Whole periods of a large dt are
 *         skipped. RblSpriteBlend: next frame and time/duration.
+*       - Resident sprites (RblSpriteBuffer; tests/test_sprite_buffer.c): RblLoadSpriteBuffer copies the
+*         atlas's frames (source, trimmed quad and pivot per unit of scale, duration) and each tag's
+*         timeline (one period in play order, pass ends) into an RGBA32F texture the instanced stage
+*         reads with texelFetch (GL 3.3, ES 3, WebGL2; unit RBL_FRAME_TABLE_TEXTURE_UNIT). A sprite
+*         with RBL_SPRITE_ANIMATED shows RblUpdateSprite's frame after (time - start) x speed seconds
+*         of play (0 before start), with RblSpriteBlend's next frame and weight for crossFade programs
+*         (RblSpriteFade's zero clips: frames of equal trim); loops as RblPlaySprite's, 1..254 or 255
+*         forever. Packing: position, scale and start float; rotation in 65536ths of a turn (0.0027
+*         degrees at most off), speed a half float (2^-11 relative); tags < 65535, frames < 65536;
+*         the clock is a float: keep it small (offset it per level) for millisecond steps past hours.
+*         Chunks of 256 sprites keep pivot bounds (updated by RblUpdateSprites); a draw tests them
+*         against the pass's clip volume grown by the farthest frame corner x the chunk's largest
+*         scale (x |up| for a long CAMERA_PLANE up, x 3 in shadow passes for the AXIS tilt) and draws
+*         the visible runs. Draws take no sort (buffer order) and no fades; back faces are drawn in
+*         the modes that can show them. Hidden sprites: scale 0.
 *       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblAtlasBillboardFade(&atlas,
 *         player.frame, next, w, scale, &billboard) with next and w from RblSpriteBlend (instances:
 *         RblAtlasInstanceFade, an RblFade beside each) mixes the next frame in by time/duration. The
@@ -537,6 +563,9 @@
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
 *           Scene shadow map k goes to texture unit 12 + k (raylib's material maps use 0..10, the
 *           scene depth 11; GL 3.3 promises 16).
+*       #define RBL_FRAME_TABLE_TEXTURE_UNIT 16
+*           Texture unit a sprite buffer's frame table is read from by the vertex stage (GL 3.3, ES 3
+*           and WebGL2 promise 32 units in all).
 *       #define RBL_MAX_BONES 128
 *           Bone matrices a skinned program holds (4 vertex uniform vectors each; 1..256).
 *       #define RBL_GPU_SKINNING 1
@@ -679,6 +708,9 @@
 #ifndef RBL_SHADOW_TEXTURE_UNIT
     #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's material maps use 0..10, the scene depth 11)
 #endif
+#ifndef RBL_FRAME_TABLE_TEXTURE_UNIT
+    #define RBL_FRAME_TABLE_TEXTURE_UNIT 16     // A sprite buffer's frame table (vertex stage; above the shadow maps' units)
+#endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
 #endif
@@ -799,6 +831,35 @@ typedef struct RblInstanceBuffer {
     unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__InstanceBufferState *state; // The header's: GPU buffers, staging copy (NULL = not loaded)
 } RblInstanceBuffer;
+
+// One resident sprite of an RblSpriteBuffer (32 bytes): an atlas frame, or a tag played on the GPU
+// from the draw's clock; size, origin, source and per-frame times come from the buffer's frame table
+typedef struct RblSpriteInstance {
+    Vector3 position;               // World position of the pivot (float: corners keep float precision)
+    float scale;                    // World units per pixel of the art, as worldScale (0 = hidden)
+    float start;                    // Clock time (RblDrawSpriteBuffer's) the tag started at
+    Color tint;                     // Vertex colour (all zero = WHITE)
+    unsigned short rotation;        // Degrees x 65536/360 (RblMakeSprite rounds; 0.0027 degrees at most off)
+    unsigned short frame;           // Atlas frame; RBL_SPRITE_ANIMATED: tag (0xFFFF = every frame, forward)
+    unsigned short speed;           // Playback rate, IEEE half-float bits (finite, >= 0; 0 = held on its first frame)
+    unsigned short mode;            // RblSpriteMode bits, loops << 8 (0 = the tag's repeat, 255 = forever)
+} RblSpriteInstance;
+
+// RblSpriteInstance.mode bits
+typedef enum {
+    RBL_SPRITE_FLIP_X = 1,          // Mirror left-right about the pivot
+    RBL_SPRITE_FLIP_Y = 2,          // Mirror top-bottom about the pivot
+    RBL_SPRITE_ROUND_CYLINDER = 4,  // As RBL_ROUND_CYLINDER
+    RBL_SPRITE_ANIMATED = 8         // frame is a tag played from start at speed (RblSpritePlayer's rules)
+} RblSpriteMode;
+
+// Resident sprites: uploaded once, ranges updated, drawn (culled by chunk, animated on the GPU) per call
+typedef struct RblSpriteBuffer {
+    int capacity;                   // Sprites it holds (fixed at load)
+    int count;                      // Sprites drawn: one past the highest index updated
+    unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
+    struct rbl__SpriteBufferState *state; // The header's: GPU buffer, frame table, chunk bounds (NULL = not loaded)
+} RblSpriteBuffer;
 
 // Normal encodings (packed material texture, or a plain normal map)
 typedef enum {
@@ -1249,6 +1310,15 @@ RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *insta
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
 RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
+
+// Resident sprites of an atlas (GL 3.3 / ES 3 / WebGL2, as the instanced path; code: >>sprites)
+RBLAPI RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity); // Load resident sprites of an atlas (its frame table goes to the GPU); invalid + log on failure
+RBLAPI bool RblIsSpriteBufferValid(RblSpriteBuffer buffer);                   // Check the buffer owns its GPU objects
+RBLAPI void RblUnloadSpriteBuffer(RblSpriteBuffer *buffer);                   // Unload a sprite buffer and zero it
+RBLAPI bool RblUpdateSprites(RblSpriteBuffer *buffer, int first, int count, const RblSpriteInstance *sprites); // Write sprites [first, first + count) (one upload); false + log: any bad sprite, nothing written
+RBLAPI int RblDrawSpriteBuffer(RblSpriteBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, float time); // Draw the resident sprites the view can see at clock time (desc: no sort, no fades); returns sprites drawn
+RBLAPI RblSpriteInstance RblMakeSprite(Vector3 position, float scale, float rotation, int frame, Color tint); // A static sprite (rotation in degrees, rounded to 360/65536)
+RBLAPI bool RblAnimateSprite(RblSpriteInstance *sprite, int tag, int loops, float start, float speed); // Play tag (-1 = every frame) from clock start at speed; loops as RblPlaySprite (0 = the tag's repeat, -1 = forever, else 1..254)
 #endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
@@ -1308,6 +1378,10 @@ typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256
 typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(Rectangle) - offsetof(RblBillboard, position) == 12*sizeof(float)) &&
                                       (offsetof(RblBillboard, roundness) + sizeof(float) - offsetof(RblBillboard, up) == 7*sizeof(float)) &&
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
+// A resident sprite is 32 bytes, read by lit_instanced.vs.glsl as four attributes: pivot and scale
+// (4 floats), start, tint, then rotation .. mode (4 unsigned shorts)
+typedef char rbl__spriteLayout[((sizeof(RblSpriteInstance) == 32) && (offsetof(RblSpriteInstance, scale) == 12) && (offsetof(RblSpriteInstance, start) == 16) &&
+                                (offsetof(RblSpriteInstance, tint) == 20) && (offsetof(RblSpriteInstance, rotation) == 24) && (offsetof(RblSpriteInstance, mode) == 30))? 1 : -1];
 
 //----------------------------------------------------------------------------------
 // Module Types and Structures Definition (private)   >>private
@@ -1321,7 +1395,7 @@ typedef enum {
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
-    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH,
+    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1333,6 +1407,7 @@ typedef struct rbl__ProgramKey {
     RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
+    int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
 } rbl__ProgramKey;
 
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
@@ -1353,6 +1428,7 @@ typedef struct rbl__Program {
     int casterIdLoc;                // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
     bool valuesValid;
     bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
+    struct rbl__Program *spriteVariant; // Instanced programs: the resident-sprite variant once compiled (goes with this one)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -2525,6 +2601,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// shadow_caster.fs.glsl.\n",
     "#include \"common.glsl\"\n",
     "\n",
+    "// An RblInstance, or in the resident-sprite variant (RBL_SPRITE_BUFFER, compiled by the header for\n",
+    "// RblDrawSpriteBuffer) an RblSpriteInstance whose 32 bytes the same locations read as: 10 pivot,\n",
+    "// scale; 11 start (x); 12 rotation, frame, speed (half-float bits), mode, as unsigned shorts; 13 tint\n",
     "layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees\n",
     "layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin\n",
     "layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)\n",
@@ -2555,7 +2634,31 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
     "//   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera\n",
     "//   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "//   [7] (the resident-sprite variant only) x: 1, y: the sprites' clock (seconds), z: frame table\n",
+    "//       width, w: the atlas's frame count\n",
+    "uniform vec4 rblInstancing[8];\n",
+    "\n",
+    "// A sprite buffer's frame table (RGBA32F, read with texelFetch; rbl__buildFrameTable writes it):\n",
+    "//   frame k at texels 3k (source), 3k + 1 (size, origin per unit of scale), 3k + 2 (duration, rotated)\n",
+    "//   tag t (-1: every frame, forward) at texels 3 frameCount + 2(t + 1): (first timeline entry,\n",
+    "//   entries, period, first pass) and (last frame after an odd / an even count of passes, the tag's\n",
+    "//   repeat, a pingpong's first frame duration or 0); then the timeline entries\n",
+    "//   (frame, start within the period)\n",
+    "uniform highp sampler2D rblFrameTable;\n",
+    "#else\n",
     "uniform vec4 rblInstancing[7];\n",
+    "#endif\n",
+    "\n",
+    "// The instance being expanded, from either layout (main reads it once)\n",
+    "vec4 rblPivot;          // xyz pivot, w rotation in degrees\n",
+    "vec4 rblSizeOrigin;     // size (negative mirrors), origin\n",
+    "vec4 rblSource;         // texels (all zero = whole texture)\n",
+    "float rblFlagBits;      // RblBillboardFlags\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;\n",
+    "float rblFadeWeight, rblFadeFlagBits;\n",
+    "#endif\n",
     "\n",
     "RBL_VARYING vec3 fragPosition;\n",
     "RBL_VARYING vec2 fragTexCoord;\n",
@@ -2753,8 +2856,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,\n",
     "                        out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)\n",
     "{\n",
-    "    int flags = int(rblInstanceFlags + 0.5);\n",
-    "    vec2 size = rblInstanceSize.xy, origin = rblInstanceSize.zw;\n",
+    "    int flags = int(rblFlagBits + 0.5);\n",
+    "    vec2 size = rblSizeOrigin.xy, origin = rblSizeOrigin.zw;\n",
     "    float sx = abs(size.x), sy = abs(size.y);\n",
     "    vec3 un = u;\n",
     "    rblNormalizeTo(u, un);\n",
@@ -2763,9 +2866,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    float ct = (corner < 2)? 1.0 : 0.0;                      // sprite-space t (down)\n",
     "    float x = (cs > 0.5)? sx - origin.x : -origin.x;\n",
     "    float y = (ct < 0.5)? sy*ulen - origin.y : -origin.y;\n",
-    "    position = rblInstancePosition.xyz + r*x + un*y;\n",
+    "    position = rblPivot.xyz + r*x + un*y;\n",
     "\n",
-    "    vec4 src = rblInstanceSource;\n",
+    "    vec4 src = rblSource;\n",
     "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);\n",
     "    bool flipU = (size.x < 0.0) != (src.z < 0.0);\n",
     "    bool flipV = (size.y < 0.0) != (src.w < 0.0);\n",
@@ -2830,29 +2933,118 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "}\n",
     "#endif\n",
     "\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "// Texel i of the frame table (rows of rblInstancing[7].z texels)\n",
+    "vec4 rblTable(int i)\n",
+    "{\n",
+    "    int w = int(rblInstancing[7].z + 0.5);\n",
+    "    return texelFetch(rblFrameTable, ivec2(i % w, i / w), 0);\n",
+    "}\n",
+    "\n",
+    "// An IEEE half float from its 16 bits (the CPU writes finite, non-negative speeds only)\n",
+    "float rblHalfBits(uint h)\n",
+    "{\n",
+    "    uint e = (h >> 10) & 31u, m = h & 1023u;\n",
+    "    float v = (e == 0u)? float(m)*exp2(-24.0) : exp2(float(int(e) - 15))*(1.0 + float(m)*(1.0/1024.0));\n",
+    "    return ((h & 0x8000u) != 0u)? -v : v;\n",
+    "}\n",
+    "\n",
+    "// The frame tag t shows local seconds into its play, the frame after it and the weight time /\n",
+    "// duration (RblSpriteBlend's): the CPU's RblUpdateSprite over loops passes (0 = forever), with the\n",
+    "// period's frames as a timeline found by bisection\n",
+    "void rblSpriteFrame(int t, int loops, float local, out int frame, out int next, out float weight)\n",
+    "{\n",
+    "    int base = 3*int(rblInstancing[7].w + 0.5) + 2*(t + 1);   // tag -1 (every frame) is the first row\n",
+    "    vec4 row = rblTable(base), ends = rblTable(base + 1);\n",
+    "    int first = int(row.x + 0.5), count = int(row.y + 0.5);\n",
+    "    float period = row.z;\n",
+    "    if (loops < 0) loops = int(ends.z + 0.5);                  // the tag's repeat (0 = forever)\n",
+    "    if (loops > 0)\n",
+    "    {\n",
+    "        // A pingpong pass ends on a turn frame: pass 2m + 1 at m periods + the first pass, pass 2m\n",
+    "        // at m periods + the first frame (ends.w; 0: one pass per period)\n",
+    "        float end = (ends.w > 0.0)? float(loops/2)*period + (((loops & 1) != 0)? row.w : ends.w) : float(loops)*period;\n",
+    "        int last = int((((loops & 1) != 0)? ends.x : ends.y) + 0.5);\n",
+    "        if (local >= end - rblTable(3*last + 2).x) { frame = last; next = last; weight = 0.0; return; }\n",
+    "    }\n",
+    "    float tp = local - floor(local/period)*period;\n",
+    "    if (!(tp < period) || (tp < 0.0)) tp = 0.0;\n",
+    "    int lo = 0, hi = count;                                     // entries [lo, hi): start(lo) <= tp\n",
+    "    for (int i = 0; (i < 16) && (hi - lo > 1); i++)\n",
+    "    {\n",
+    "        int mid = (lo + hi)/2;\n",
+    "        if (rblTable(first + mid).y <= tp) lo = mid; else hi = mid;\n",
+    "    }\n",
+    "    vec4 entry = rblTable(first + lo);\n",
+    "    frame = int(entry.x + 0.5);\n",
+    "    next = int(rblTable(first + ((lo + 1 < count)? lo + 1 : 0)).x + 0.5);\n",
+    "    weight = clamp((tp - entry.y)/rblTable(3*frame + 2).x, 0.0, 1.0);\n",
+    "}\n",
+    "\n",
+    "// A resident sprite into the instance globals: its frame (animated on the clock rblInstancing[7].y)\n",
+    "// from the table, the quad scaled from the frame's, flips about the pivot\n",
+    "void rblReadSprite()\n",
+    "{\n",
+    "    vec4 word = rblInstanceSource;                              // rotation, frame, speed bits, mode\n",
+    "    uint mode = uint(word.w + 0.5);\n",
+    "    int frame = int(word.y + 0.5), next = frame;\n",
+    "    float weight = 0.0;\n",
+    "    if ((mode & 8u) != 0u)\n",
+    "    {\n",
+    "        int tag = (frame == 65535)? -1 : frame;\n",
+    "        int loops = int(mode >> 8);\n",
+    "        loops = (loops == 0)? -1 : ((loops == 255)? 0 : loops);\n",
+    "        float local = max((rblInstancing[7].y - rblInstanceSize.x)*rblHalfBits(uint(word.z + 0.5)), 0.0);\n",
+    "        rblSpriteFrame(tag, loops, local, frame, next, weight);\n",
+    "    }\n",
+    "    vec4 quad = rblTable(3*frame + 1)*rblInstancePosition.w;   // size, origin\n",
+    "    if ((mode & 1u) != 0u) quad.xz = vec2(-quad.x, quad.x - quad.z);\n",
+    "    if ((mode & 2u) != 0u) quad.yw = vec2(-quad.y, quad.y - quad.w);\n",
+    "    rblPivot = vec4(rblInstancePosition.xyz, word.x*(360.0/65536.0));\n",
+    "    rblSizeOrigin = quad;\n",
+    "    rblSource = rblTable(3*frame);\n",
+    "    rblFlagBits = rblTable(3*frame + 2).y + (((mode & 4u) != 0u)? 2.0 : 0.0);\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    rblFadeSource = rblTable(3*next);\n",
+    "    rblFadeFlagBits = rblTable(3*next + 2).y;\n",
+    "    rblFadeWeight = weight;\n",
+    "    rblFadeClip0 = vec4(0.0); rblFadeClip1 = vec4(0.0);\n",
+    "#endif\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "void main()\n",
     "{\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "    rblReadSprite();\n",
+    "#else\n",
+    "    rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;\n",
+    "#ifdef RBL_CROSS_FADE\n",
+    "    rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;\n",
+    "    rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;\n",
+    "#endif\n",
+    "#endif\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
     "    int code = int(rblInstancing[0].w + 0.5);\n",
     "    vec3 r, u, n;\n",
-    "    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
+    "    rblFacingBasis(code, rblPivot.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
     "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
     "    // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the\n",
     "    // axis (rbl__billboardVertices)\n",
     "    vec3 shift = vec3(0.0);\n",
     "    vec2 sc = vec2(0.0, 1.0);\n",
-    "    if (rblInstancePosition.w != 0.0) sc = rblSinCosDeg(rblInstancePosition.w);\n",
+    "    if (rblPivot.w != 0.0) sc = rblSinCosDeg(rblPivot.w);\n",
     "    if (((code & 3) == 2) && (rblInstancing[4].w > 0.0))\n",
     "    {\n",
     "        vec3 a = vec3(0.0, 1.0, 0.0), l = a;\n",
     "        if (dot(rblInstancing[5].xyz, rblInstancing[5].xyz) > 1e-24) rblNormalizeTo(rblInstancing[5].xyz, a);\n",
     "        vec3 d = a - u;\n",
     "        vec4 light = rblInstancing[6];\n",
-    "        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblInstancePosition.xyz*light.w, l))\n",
+    "        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblPivot.xyz*light.w, l))\n",
     "        {\n",
-    "            float x0 = -rblInstanceSize.z, x1 = abs(rblInstanceSize.x) - rblInstanceSize.z;\n",
-    "            float y0 = -rblInstanceSize.w, y1 = abs(rblInstanceSize.y) - rblInstanceSize.w;\n",
+    "            float x0 = -rblSizeOrigin.z, x1 = abs(rblSizeOrigin.x) - rblSizeOrigin.z;\n",
+    "            float y0 = -rblSizeOrigin.w, y1 = abs(rblSizeOrigin.y) - rblSizeOrigin.w;\n",
     "            vec4 e = vec4(sc.x*x0 + sc.y*y0, sc.x*x1 + sc.y*y0, sc.x*x1 + sc.y*y1, sc.x*x0 + sc.y*y1);\n",
     "            float lo = min(min(e.x, e.y), min(e.z, e.w)), hi = max(max(e.x, e.y), max(e.z, e.w));\n",
     "            float t = clamp((abs(dot(l, a)) - 0.8660254)*(1.0/(1.0 - 0.8660254)), 0.0, 1.0);\n",
@@ -2860,7 +3052,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        }\n",
     "    }\n",
     "    // Rotate the frame around the normal (raylib rotates the corners; same result)\n",
-    "    if (rblInstancePosition.w != 0.0)\n",
+    "    if (rblPivot.w != 0.0)\n",
     "    {\n",
     "        vec3 nr = cross(n, r), nu = cross(n, u);\n",
     "        r = r*sc.y + nr*sc.x;\n",
@@ -2872,18 +3064,18 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    p += shift;\n",
     "    fragPosition = p;\n",
     "#ifdef RBL_CASTER_ID\n",
-    "    fragCasterId = rblCasterIdOf(rblInstancePosition.xyz, rblInstanceSize);\n",
+    "    fragCasterId = rblCasterIdOf(rblPivot.xyz, rblSizeOrigin);\n",
     "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    int corner = cornerOf[gl_VertexID % 6];\n",
     "    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;\n",
     "    vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;\n",
-    "    rblFrameTexCoord(rblInstanceSource, (int(rblInstanceFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t1, v1);\n",
-    "    fragTexCoord2 = rblFrameTexCoord(rblInstanceFadeSource, (int(rblInstanceFadeFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t2, v2);\n",
-    "    fragFade = vec2(rblInstanceFadeWeight, rblFadeCode(t1, v1, t2, v2));\n",
+    "    rblFrameTexCoord(rblSource, (int(rblFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t1, v1);\n",
+    "    fragTexCoord2 = rblFrameTexCoord(rblFadeSource, (int(rblFadeFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t2, v2);\n",
+    "    fragFade = vec2(rblFadeWeight, rblFadeCode(t1, v1, t2, v2));\n",
     "    // Clip rectangles are in the picture: a mirrored quad mirrors them with it\n",
-    "    vec2 picture = vec2((rblInstanceSize.x < 0.0)? 1.0 - cs : cs, (rblInstanceSize.y < 0.0)? 1.0 - ct : ct);\n",
-    "    fragFadeClip = vec4(rblFadeClipLocal(rblInstanceFadeClip, picture), rblFadeClipLocal(rblInstanceFadeClip2, picture));\n",
+    "    vec2 picture = vec2((rblSizeOrigin.x < 0.0)? 1.0 - cs : cs, (rblSizeOrigin.y < 0.0)? 1.0 - ct : ct);\n",
+    "    fragFadeClip = vec4(rblFadeClipLocal(rblFadeClip0, picture), rblFadeClipLocal(rblFadeClip1, picture));\n",
     "#endif\n",
     "    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
     "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex\n",
@@ -5020,6 +5212,13 @@ void RblClose(void)
     // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
     // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
     for (int i = rbl__state.programCount - 1; i >= 0; i--)
+        if ((rbl__state.programs[i]->key.kind == RBL__KIND_LIT) && rbl__state.programs[i]->key.sprites)
+        {
+            if (rbl__glUsable()) rlUnloadShaderProgram(rbl__state.programs[i]->shader.id);     // resident-sprite variants are the header's
+            rbl__removeProgram(rbl__state.programs[i]);
+            i = rbl__state.programCount;
+        }
+    for (int i = rbl__state.programCount - 1; i >= 0; i--)
         if (rbl__state.programs[i]->key.kind == RBL__KIND_LIT) rbl__removeProgram(rbl__state.programs[i]);
     for (int i = 0; i < rbl__state.quarantineCount; i++) MemFree(rbl__state.quarantine[i]);
     RBL_FREE(rbl__state.quarantine); RBL_FREE(rbl__state.dead);
@@ -5200,6 +5399,21 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
     for (int i = 0; i < 5; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
 }
 
+// The per-draw frame of the instanced stage, rblInstancing[7] (layout in lit_instanced.vs.glsl); the
+// resident-sprite variant's [7] (frame[28..31]) zero here, set by its draw
+static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFrame *view, int texW, int texH, float frame[32])
+{
+    const float f[32] = {
+        view->eye.x, view->eye.y, view->eye.z, (float)(rbl__castFacing(&rbl__state.cast, desc->facing) + (rbl__state.cast.faceLight? 8 : 0)),
+        view->right.x, view->right.y, view->right.z, desc->roundness,
+        view->up.x, view->up.y, view->up.z, (float)texW,
+        view->back.x, view->back.y, view->back.z, (float)texH,
+        desc->up.x, desc->up.y, desc->up.z, rbl__state.cast.minSin,
+        desc->axis.x, desc->axis.y, desc->axis.z, view->orthographic? 1.0f : 0.0f,
+        rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w, 0.0f, 0.0f, 0.0f, 0.0f };
+    memcpy(frame, f, sizeof(f));
+}
+
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
@@ -5319,14 +5533,8 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     // The per-draw frame in one vec4[7] upload (layout documented in lit_instanced.vs.glsl)
     RblCameraFrame view = rbl__cameraFrame(camera);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
-    const float frame[28] = {
-        view.eye.x, view.eye.y, view.eye.z, (float)(rbl__castFacing(&rbl__state.cast, desc.facing) + (rbl__state.cast.faceLight? 8 : 0)),
-        view.right.x, view.right.y, view.right.z, desc.roundness,
-        view.up.x, view.up.y, view.up.z, (float)texW,
-        view.back.x, view.back.y, view.back.z, (float)texH,
-        desc.up.x, desc.up.y, desc.up.z, rbl__state.cast.minSin,
-        desc.axis.x, desc.axis.y, desc.axis.z, view.orthographic? 1.0f : 0.0f,
-        rbl__state.cast.light.x, rbl__state.cast.light.y, rbl__state.cast.light.z, rbl__state.cast.light.w };
+    float frame[32];
+    rbl__instancingFrame(&desc, &view, texW, texH, frame);
     // Quads seen from behind are drawn, as in the batch: culling off for this draw only
     bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
     rlDrawRenderBatchActive();
@@ -6580,7 +6788,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes", "rblShadowTiles",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -6779,6 +6987,16 @@ static void rbl__removeProgram(rbl__Program *p)
         rbl__state.programs[i] = rbl__state.programs[--rbl__state.programCount];
         break;
     }
+    // An instanced program's resident-sprite variant is the header's: it goes with the program (and
+    // a variant going alone, forgotten, is no longer its program's)
+    if (p->key.sprites) { for (int i = 0; i < rbl__state.programCount; i++) if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL; }
+    else if (p->spriteVariant != NULL)
+    {
+        rbl__Program *v = p->spriteVariant;
+        p->spriteVariant = NULL;
+        if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
+        rbl__removeProgram(v);
+    }
     if ((p->shader.locs != NULL) && (p->shader.locs != rlGetShaderLocsDefault())) MemFree(p->shader.locs);
     RBL_FREE(p);
 }
@@ -6846,6 +7064,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
+    if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_COMPOSITE)
@@ -7247,6 +7466,18 @@ static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material)
     if (captured) memset(&sc->depth, 0, sizeof(sc->depth));
 }
 
+// The casters target's distance code (shadow_caster.fs.glsl) for a caster program in this shadow
+// pass: perspective, near, far, log(far/near)
+// The casters target's distance code (shadow_caster.fs.glsl): perspective, near, far, log(far/near)
+static void rbl__casterDepth(const rbl__Program *caster)
+{
+    const rbl__ShadowMapState *st = rbl__state.shadowPass->state;
+    bool perspective = (st->lightType != RBL_LIGHT_DIRECTIONAL);
+    float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
+    rlEnableShader(caster->shader.id);
+    rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
+}
+
 static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
 {
     const char *bad = rbl__materialProblem(material, path, program);
@@ -7259,12 +7490,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
-        // The casters target's distance code (shadow_caster.fs.glsl): perspective, near, far, log(far/near)
-        const rbl__ShadowMapState *st = rbl__state.shadowPass->state;
-        bool perspective = (st->lightType != RBL_LIGHT_DIRECTIONAL);
-        float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
-        rlEnableShader(caster->shader.id);
-        rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
+        rbl__casterDepth(caster);
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
@@ -10879,6 +11105,433 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     double width = 360.0/directions;
     int k = (int)floor((rel + 0.5*width)/width);
     return k % directions;
+}
+
+//----------------------------------------------------------------------------------
+// Module Functions Definition: resident sprite buffers   >>sprites
+//----------------------------------------------------------------------------------
+#define RBL__SPRITE_CHUNK 256               // Sprites per culling chunk (bounds kept per chunk)
+#define RBL__FRAME_TABLE_WIDTH 1024         // Texels per frame-table row (rows: at most 2048, ES 3's least texture size)
+
+typedef struct rbl__SpriteBufferState {
+    RblSpriteInstance *sprites;     // CPU copy: chunk bounds are rebuilt from it after an update
+    float *bounds;                  // Per chunk: pivots' min xyz, max xyz, largest scale (-1: nothing to draw)
+    int *runs;                      // Draw scratch: first sprite and count of each visible run of chunks
+    int capacity, count, chunks;
+    int frameCount, tagCount;       // Of the atlas the table was built from (what updates are checked against)
+    float radius;                   // Farthest quad corner from the pivot over every frame, per unit of scale
+    int tableWidth;
+    unsigned int vaoId, vboId, tableId;
+} rbl__SpriteBufferState;
+
+// The resident-sprite variant of an instanced program (lit, G-buffer or caster): the registry's, or
+// compiled now (held until its program goes); NULL (problem set) on failure
+static rbl__Program *rbl__spriteVariant(rbl__Program *p)
+{
+    if (p->spriteVariant != NULL) return p->spriteVariant;
+    rbl__ProgramKey key = p->key;
+    key.sprites = 1;
+    p->spriteVariant = rbl__compileProgram(&key);
+    return p->spriteVariant;
+}
+
+static rbl__SpriteBufferState *rbl__spriteState(const RblSpriteBuffer *buffer)
+{
+    return ((buffer != NULL) && rbl__isLive(buffer->id, buffer->state))? buffer->state : NULL;
+}
+
+static void rbl__freeSpriteState(rbl__SpriteBufferState *b)
+{
+    if (!rbl__glUsable()) b->vaoId = b->vboId = b->tableId = 0;      // gone with the context
+    if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
+    if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
+    if (b->tableId != 0) rlUnloadTexture(b->tableId);
+    RBL_FREE(b->sprites);
+    RBL_FREE(b->bounds);
+    RBL_FREE(b->runs);
+    RBL_FREE(b);
+}
+
+// One pass's frames in play order and the period's timeline: forward from..to, reverse to..from,
+// pingpong from..to then to-1..from+1 (reverse: to..from, from+1..to-1); RblUpdateSprite's order
+static int rbl__spriteTimeline(int from, int to, int dir, int *out)
+{
+    int n = 0;
+    bool reverse = (dir == RBL_SPRITE_REVERSE) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
+    bool pingpong = ((dir == RBL_SPRITE_PINGPONG) || (dir == RBL_SPRITE_PINGPONG_REVERSE)) && (to > from);
+    for (int i = 0; i <= to - from; i++) { if (out != NULL) out[n] = reverse? to - i : from + i; n++; }
+    if (pingpong) for (int i = 1; i < to - from; i++) { if (out != NULL) out[n] = reverse? from + i : to - i; n++; }
+    return n;
+}
+
+// The frame table of lit_instanced.vs.glsl (RGBA32F texels, layout documented there); NULL when out
+// of memory. *texels: texels used; *radius: farthest quad corner from the pivot per unit of scale
+static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float *radius)
+{
+    int entries = 0;
+    for (int t = -1; t < s->tagCount; t++)
+    {
+        int from, to, dir, repeat;
+        rbl__spriteRange(s, t, &from, &to, &dir, &repeat);
+        entries += rbl__spriteTimeline(from, to, dir, NULL);
+    }
+    int base = 3*s->frameCount, entryBase = base + 2*(s->tagCount + 1);
+    int n = entryBase + entries;
+    float *table = (float *)RBL_CALLOC((size_t)n*4, sizeof(float));
+    int *order = (int *)RBL_MALLOC((size_t)(2*s->frameCount + 2)*sizeof(int));
+    if ((table == NULL) || (order == NULL)) { RBL_FREE(table); RBL_FREE(order); return NULL; }
+    double far = 0.0;
+    for (int k = 0; k < s->frameCount; k++)
+    {
+        const RblAtlasFrame *f = &s->frames[k];
+        Rectangle src; Vector2 size, origin; unsigned int flags;
+        rbl__atlasFrameQuad(f, rbl__atlasUnit(s, f, 1.0f), &src, &size, &origin, &flags);
+        float *t = table + (size_t)k*12;
+        t[0] = src.x; t[1] = src.y; t[2] = src.width; t[3] = src.height;
+        t[4] = size.x; t[5] = size.y; t[6] = origin.x; t[7] = origin.y;
+        t[8] = (float)rbl__spriteDuration(s, k); t[9] = (float)(flags & RBL_FRAME_ROTATED);
+        // Either flip mirrors the quad about the pivot: the corner reach is the same
+        double x = fmax(fabs((double)origin.x), fabs((double)size.x - origin.x)), y = fmax(fabs((double)origin.y), fabs((double)size.y - origin.y));
+        far = fmax(far, sqrt(x*x + y*y));
+    }
+    int e = entryBase;
+    for (int t = -1; t < s->tagCount; t++)
+    {
+        int from, to, dir, repeat;
+        rbl__spriteRange(s, t, &from, &to, &dir, &repeat);
+        int count = rbl__spriteTimeline(from, to, dir, order);
+        bool pingpong = count > to - from + 1;
+        double at = 0.0, firstPass = 0.0;
+        for (int i = 0; i < count; i++)
+        {
+            float *x = table + (size_t)(e + i)*4;
+            x[0] = (float)order[i]; x[1] = (float)at;
+            at += rbl__spriteDuration(s, order[i]);
+            if (i == to - from) firstPass = at;
+        }
+        bool reverse = (dir == RBL_SPRITE_REVERSE) || (dir == RBL_SPRITE_PINGPONG_REVERSE);
+        int odd = reverse? from : to, even = odd;                   // the last frame after an odd / even count of passes
+        if (pingpong) even = reverse? to : from;
+        float *row = table + (size_t)(base + 2*(t + 1))*4;
+        row[0] = (float)e; row[1] = (float)count; row[2] = (float)at; row[3] = (float)firstPass;
+        row[4] = (float)odd; row[5] = (float)even; row[6] = (float)((t < 0)? 0 : repeat); row[7] = pingpong? (float)rbl__spriteDuration(s, order[0]) : 0.0f;
+        e += count;
+    }
+    RBL_FREE(order);
+    *texels = n;
+    *radius = (float)far;
+    return table;
+}
+
+// The GPU buffer's attributes (lit_instanced.vs.glsl's sprite reading) from sprite first on
+static void rbl__spriteAttributes(const rbl__SpriteBufferState *b, int first)
+{
+    const int stride = (int)sizeof(RblSpriteInstance), at = first*stride;
+    const unsigned int loc = RBL__INSTANCE_LOCATION;
+    rlEnableVertexBuffer(b->vboId);
+    rlSetVertexAttribute(loc + 0, 4, RL_FLOAT, false, stride, at + (int)offsetof(RblSpriteInstance, position));
+    rlSetVertexAttribute(loc + 1, 1, RL_FLOAT, false, stride, at + (int)offsetof(RblSpriteInstance, start));
+    rlSetVertexAttribute(loc + 2, 4, 0x1403 /* GL_UNSIGNED_SHORT, converted to float */, false, stride, at + (int)offsetof(RblSpriteInstance, rotation));
+    rlSetVertexAttribute(loc + 3, 4, RL_UNSIGNED_BYTE, true, stride, at + (int)offsetof(RblSpriteInstance, tint));
+}
+
+RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
+{
+    RblSpriteBuffer buffer;
+    memset(&buffer, 0, sizeof(buffer));
+    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblLoadSpriteBuffer");
+    if (s == NULL) return buffer;
+    if ((capacity < 0) || (capacity > RBL_MAX_INSTANCES)) { TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: capacity %i outside 0..%i", capacity, RBL_MAX_INSTANCES); return buffer; }
+    if (rbl__needsGlsl3("sprite buffers") != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: %s", rbl__state.problem); return buffer; }
+    if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
+    int texels = 0;
+    float radius = 0.0f;
+    float *table = rbl__buildFrameTable(s, &texels, &radius);
+    int rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
+    if ((table != NULL) && (rows > 2048)) { RBL_FREE(table); TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: frame table of %i texels exceeds 1024 x 2048", texels); return buffer; }
+    int chunks = (capacity + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
+    rbl__SpriteBufferState *b = (rbl__SpriteBufferState *)RBL_CALLOC(1, sizeof(rbl__SpriteBufferState));
+    if (b != NULL)
+    {
+        b->sprites = (RblSpriteInstance *)RBL_CALLOC((size_t)capacity, sizeof(RblSpriteInstance));
+        b->bounds = (float *)RBL_MALLOC((size_t)chunks*7*sizeof(float));
+        b->runs = (int *)RBL_MALLOC((size_t)chunks*2*sizeof(int));
+    }
+    float *padded = (table != NULL)? (float *)RBL_CALLOC((size_t)rows*RBL__FRAME_TABLE_WIDTH*4, sizeof(float)) : NULL;
+    if ((b == NULL) || (b->sprites == NULL) || (b->bounds == NULL) || (b->runs == NULL) || (padded == NULL))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: out of memory for %i sprites", capacity);
+        if (b != NULL) { RBL_FREE(b->sprites); RBL_FREE(b->bounds); RBL_FREE(b->runs); RBL_FREE(b); }
+        RBL_FREE(table); RBL_FREE(padded);
+        return buffer;
+    }
+    for (int c = 0; c < chunks; c++) b->bounds[c*7 + 6] = -1.0f;
+    memcpy(padded, table, (size_t)texels*4*sizeof(float));
+    RBL_FREE(table);
+    b->capacity = capacity; b->chunks = chunks; b->radius = radius;
+    b->frameCount = s->frameCount; b->tagCount = s->tagCount; b->tableWidth = RBL__FRAME_TABLE_WIDTH;
+    b->tableId = rlLoadTexture(padded, RBL__FRAME_TABLE_WIDTH, rows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
+    RBL_FREE(padded);
+    if (b->tableId != 0)
+    {
+        // texelFetch only, but a float texture must be complete (no linear filter) to be read on ES 3
+        rlTextureParameters(b->tableId, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlTextureParameters(b->tableId, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+    }
+    b->vaoId = rlLoadVertexArray();
+    rlEnableVertexArray(b->vaoId);
+    b->vboId = rlLoadVertexBuffer(b->sprites, capacity*(int)sizeof(RblSpriteInstance), true);
+    rbl__spriteAttributes(b, 0);
+    for (unsigned int i = 0; i < 4; i++) { rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + i); rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + i, 1); }
+    rlDisableVertexArray();
+    unsigned int id = ((b->vaoId != 0) && (b->vboId != 0) && (b->tableId != 0))? rbl__liveAdd(b) : 0;
+    if (id == 0)
+    {
+        TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: GPU buffer or frame table could not be created (no GL context?)");
+        rbl__freeSpriteState(b);
+        return buffer;
+    }
+    buffer.capacity = capacity;
+    buffer.state = b;
+    buffer.id = id;
+    return buffer;
+}
+
+bool RblIsSpriteBufferValid(RblSpriteBuffer buffer)
+{
+    return rbl__spriteState(&buffer) != NULL;
+}
+
+void RblUnloadSpriteBuffer(RblSpriteBuffer *buffer)
+{
+    if (!rbl__unloadable(buffer, (buffer != NULL)? buffer->id : 0, (buffer != NULL)? buffer->state : NULL, "RblUnloadSpriteBuffer", "sprite buffer")) { if (buffer != NULL) memset(buffer, 0, sizeof(*buffer)); return; }
+    rbl__liveRemove(buffer->id);
+    rbl__freeSpriteState(buffer->state);
+    memset(buffer, 0, sizeof(*buffer));
+    rbl__tidyAfterClose();
+}
+
+// Half-float bits of a finite value in [0, 65504], rounded to nearest (ties away); 0xFFFF when it does not fit
+static unsigned short rbl__halfBits(float value)
+{
+    double v = value;
+    if (!(v >= 0.0) || !(v <= 65504.0)) return 0xFFFF;
+    if (v < 6.103515625e-05)
+    {
+        double m = floor(v*16777216.0 + 0.5);                       // subnormal: units of 2^-24 (1024 is the least normal)
+        return (unsigned short)m;
+    }
+    int e = 0;
+    double mant = frexp(v, &e);                                     // v = mant 2^e, mant in [0.5, 1)
+    double m = floor((mant*2.0 - 1.0)*1024.0 + 0.5);
+    e -= 1;
+    if (m >= 1024.0) { m = 0.0; e++; }
+    if (e + 15 >= 31) return 0xFFFF;
+    return (unsigned short)(((unsigned int)(e + 15) << 10) | (unsigned int)m);
+}
+
+RblSpriteInstance RblMakeSprite(Vector3 position, float scale, float rotation, int frame, Color tint)
+{
+    RblSpriteInstance sprite;
+    memset(&sprite, 0, sizeof(sprite));
+    if (!rbl__exponentsBelow(&position, 3, RBL__INSTANCE_LIMIT_EXPONENT) || !rbl__finite(scale) || (scale < 0.0f) || (scale > 1e15f) ||
+        !rbl__finite(rotation) || (frame < 0) || (frame > 65535))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblMakeSprite: NaN/Inf or |value| >= 2^120 position, scale outside [0, 1e15], NaN/Inf rotation or frame %i outside 0..65535 (hidden sprite returned)", frame);
+        return sprite;
+    }
+    double turns = fmod((double)rotation, 360.0);
+    if (turns < 0.0) turns += 360.0;
+    sprite.position = position; sprite.scale = scale; sprite.tint = tint;
+    sprite.rotation = (unsigned short)((unsigned int)floor(turns*(65536.0/360.0) + 0.5) & 0xFFFFu);
+    sprite.frame = (unsigned short)frame;
+    return sprite;
+}
+
+bool RblAnimateSprite(RblSpriteInstance *sprite, int tag, int loops, float start, float speed)
+{
+    if (sprite == NULL) { TraceLog(LOG_WARNING, "RBL: RblAnimateSprite: NULL sprite"); return false; }
+    unsigned short bits = rbl__halfBits(speed);
+    if ((tag < -1) || (tag > 65534) || (loops < -1) || (loops > 254) || !rbl__exponentsBelow(&start, 1, RBL__INSTANCE_LIMIT_EXPONENT) || (bits == 0xFFFF))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblAnimateSprite: tag %i outside -1..65534, loops %i outside -1..254, NaN/Inf start or speed outside [0, 65504]", tag, loops);
+        return false;
+    }
+    sprite->frame = (unsigned short)((tag < 0)? 0xFFFF : tag);
+    sprite->start = start;
+    sprite->speed = bits;
+    unsigned int l = (loops < 0)? 255u : (unsigned int)loops;
+    sprite->mode = (unsigned short)((sprite->mode & 7u) | RBL_SPRITE_ANIMATED | (l << 8));
+    return true;
+}
+
+// NULL, or why a sprite cannot be drawn by a buffer of this atlas
+static const char *rbl__spriteProblem(const rbl__SpriteBufferState *b, const RblSpriteInstance *p)
+{
+    if (!rbl__exponentsBelow(&p->position, 3, RBL__INSTANCE_LIMIT_EXPONENT)) return "NaN/Inf or |value| >= 2^120 position";
+    if (!rbl__finite(p->scale) || (p->scale < 0.0f) || (p->scale > 1e15f)) return "scale outside [0, 1e15]";
+    if (!rbl__exponentsBelow(&p->start, 1, RBL__INSTANCE_LIMIT_EXPONENT)) return "NaN/Inf or |value| >= 2^120 start";
+    if (((p->speed >> 10) & 31u) == 31u) return "speed is a half-float Inf/NaN";
+    if ((p->speed & 0x8000u) != 0u) return "negative speed";
+    if ((p->mode & 0xF0u) != 0u) return "unknown mode bits (4..7)";
+    if ((p->mode & RBL_SPRITE_ANIMATED) != 0u) { if ((p->frame != 0xFFFF) && (p->frame >= b->tagCount)) return "tag not in the buffer's atlas"; }
+    else if (p->frame >= b->frameCount) return "frame not in the buffer's atlas";
+    return NULL;
+}
+
+// Chunk c's pivot bounds and largest scale from the CPU copy
+static void rbl__spriteChunkBounds(rbl__SpriteBufferState *b, int c)
+{
+    float *o = b->bounds + (size_t)c*7;
+    o[6] = -1.0f;
+    int end = (c + 1)*RBL__SPRITE_CHUNK;
+    if (end > b->count) end = b->count;
+    for (int i = c*RBL__SPRITE_CHUNK; i < end; i++)
+    {
+        const RblSpriteInstance *p = &b->sprites[i];
+        if (p->scale == 0.0f) continue;                 // hidden
+        const float v[3] = { p->position.x, p->position.y, p->position.z };
+        if (o[6] < 0.0f) { for (int k = 0; k < 3; k++) o[k] = o[3 + k] = v[k]; o[6] = p->scale; continue; }
+        for (int k = 0; k < 3; k++) { if (v[k] < o[k]) o[k] = v[k]; if (v[k] > o[3 + k]) o[3 + k] = v[k]; }
+        if (p->scale > o[6]) o[6] = p->scale;
+    }
+}
+
+bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSpriteInstance *sprites)
+{
+    rbl__SpriteBufferState *b = rbl__spriteState(pub);
+    if (b == NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: sprite buffer not loaded"); return false; }
+    if ((first < 0) || (count < 0) || (count > b->capacity - first) || ((count > 0) && (sprites == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: range first %i count %i outside the capacity %i, or NULL sprites", first, count, b->capacity);
+        return false;
+    }
+    for (int i = 0; i < count; i++)
+    {
+        const char *bad = rbl__spriteProblem(b, &sprites[i]);
+        if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: sprite %i: %s (nothing written)", first + i, bad); return false; }
+    }
+    if (count == 0) return true;
+    memcpy(b->sprites + first, sprites, (size_t)count*sizeof(RblSpriteInstance));
+    rlUpdateVertexBuffer(b->vboId, sprites, count*(int)sizeof(RblSpriteInstance), first*(int)sizeof(RblSpriteInstance));
+    if (first + count > b->count) b->count = first + count;
+    for (int c = first/RBL__SPRITE_CHUNK; c <= (first + count - 1)/RBL__SPRITE_CHUNK; c++) rbl__spriteChunkBounds(b, c);
+    pub->count = b->count;
+    return true;
+}
+
+// Runs of chunks whose bounds (pivots grown by reach x their largest scale) meet the clip volume of
+// mvp (each plane's farthest box corner inside): into b->runs; returns the run count
+static int rbl__visibleSpriteRuns(rbl__SpriteBufferState *b, Matrix m, float reach)
+{
+    const float planes[6][4] = {
+        { m.m3 + m.m0, m.m7 + m.m4, m.m11 + m.m8, m.m15 + m.m12 }, { m.m3 - m.m0, m.m7 - m.m4, m.m11 - m.m8, m.m15 - m.m12 },
+        { m.m3 + m.m1, m.m7 + m.m5, m.m11 + m.m9, m.m15 + m.m13 }, { m.m3 - m.m1, m.m7 - m.m5, m.m11 - m.m9, m.m15 - m.m13 },
+        { m.m3 + m.m2, m.m7 + m.m6, m.m11 + m.m10, m.m15 + m.m14 }, { m.m3 - m.m2, m.m7 - m.m6, m.m11 - m.m10, m.m15 - m.m14 } };
+    int runs = 0, chunks = (b->count + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
+    bool open = false, cull = rbl__allFinite(planes, 24);      // a degenerate pass (no viewport yet): nothing culled
+    for (int c = 0; c < chunks; c++)
+    {
+        const float *o = b->bounds + (size_t)c*7;
+        bool seen = o[6] >= 0.0f;
+        if (seen)
+        {
+            double r = (double)reach*o[6];
+            for (int k = 0; cull && (k < 6) && seen; k++)
+            {
+                const float *p = planes[k];
+                double d = p[3];
+                for (int a = 0; a < 3; a++) d += (double)p[a]*((p[a] >= 0.0f)? o[3 + a] + r : o[a] - r);
+                seen = d >= 0.0;
+            }
+        }
+        if (!seen) { open = false; continue; }
+        int end = (c + 1)*RBL__SPRITE_CHUNK;
+        if (end > b->count) end = b->count;
+        if (open) b->runs[2*(runs - 1) + 1] = end - b->runs[2*(runs - 1)];
+        else { b->runs[2*runs] = c*RBL__SPRITE_CHUNK; b->runs[2*runs + 1] = end - c*RBL__SPRITE_CHUNK; runs++; open = true; }
+    }
+    return runs;
+}
+
+int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, float time)
+{
+    rbl__SpriteBufferState *b = rbl__spriteState(pub);
+    if (b == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: sprite buffer not loaded"); return 0; }
+    if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
+    if (!rbl__exponentsBelow(&time, 1, RBL__INSTANCE_LIMIT_EXPONENT)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: NaN/Inf or |value| >= 2^120 time"); return 0; }
+    if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
+        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort != RBL_SORT_NONE) || (desc.fades != NULL) ||
+        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: bad RblInstancedDesc (facing %i, sort %i (resident sprites draw in buffer order), fades (the frame table's), NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
+        return 0;
+    }
+    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
+    desc.axis = rbl__tame(desc.axis);
+    rbl__Program *checked = NULL;
+    const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: %s", bad); return 0; }
+    if (b->count == 0) return 0;
+    MaterialMap casterMaps[RBL__CASTER_MAPS];
+    rbl__Program *program = NULL;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, false, "RblDrawSpriteBuffer", &program)) return 0;
+    // The program's resident-sprite variant (compiled at its first sprite draw): the plain instanced
+    // stage pays nothing for reading sprites
+    rbl__Program *variant = rbl__spriteVariant(program);
+    if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: resident-sprite variant unavailable (%s)", rbl__state.problem); return 0; }
+    program = variant;
+    material.shader = variant->shader;
+    if (rbl__state.shadowPass != NULL) rbl__casterDepth(variant);
+    else if (variant->key.desc.softParticles) rbl__bindSoftDepth(variant, &material);
+    int texW, texH;
+    rbl__albedoSize(&material, &texW, &texH);
+    if ((texW <= 0) || (texH <= 0)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: albedo texture size %ix%i", texW, texH); return 0; }
+
+    // Cull by chunk against this pass's clip volume: a caller up longer than 1 stretches the quad up,
+    // a shadow pass's AXIS tilt moves it by up to twice its reach
+    float reach = b->radius;
+    if (desc.facing == RBL_FACING_CAMERA_PLANE) reach *= fmaxf(1.0f, sqrtf(rbl__dot(desc.up, desc.up)));
+    if (rbl__state.shadowPass != NULL) reach *= 3.0f;
+    reach *= 1.0f + 1e-5f;
+    int runs = rbl__visibleSpriteRuns(b, rbl__matMul(rlGetMatrixModelview(), rlGetMatrixProjection()), reach);
+    if (runs == 0) return 0;
+
+    RblCameraFrame view = rbl__cameraFrame(camera);
+    if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&view);
+    float frame[32];
+    rbl__instancingFrame(&desc, &view, texW, texH, frame);
+    frame[28] = 1.0f; frame[29] = time; frame[30] = (float)b->tableWidth; frame[31] = (float)b->frameCount;
+    // Back faces drawn whenever the mode could show one (RblDrawInstanced tests each instance; a
+    // resident set is not read per draw): front faces come out the same
+    bool cullOff = (rbl__state.shadowPass == NULL) && ((desc.facing == RBL_FACING_FIXED) || ((desc.facing == RBL_FACING_AXIS) && (camera.projection == CAMERA_ORTHOGRAPHIC)) ||
+                   ((desc.facing == RBL_FACING_CAMERA_PLANE) && ((desc.up.x != 0.0f) || (desc.up.y != 0.0f) || (desc.up.z != 0.0f))));
+    rlDrawRenderBatchActive();
+    unsigned int bound = rbl__bindMaterial(&material);
+    rbl__applyMaterialValues(program, &material);
+    rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 8);
+    int unit = RBL_FRAME_TABLE_TEXTURE_UNIT;
+    rlActiveTextureSlot(unit);
+    rlEnableTexture(b->tableId);
+    rlSetUniform(program->loc[RBL__U_FRAME_TABLE], &unit, SHADER_UNIFORM_INT, 1);
+    if (cullOff) rlDisableBackfaceCulling();
+    rlEnableVertexArray(b->vaoId);
+    int drawn = 0;
+    for (int r = 0; r < runs; r++)
+    {
+        rbl__spriteAttributes(b, b->runs[2*r]);
+        rlDrawVertexArrayInstanced(0, 6, b->runs[2*r + 1]);
+        drawn += b->runs[2*r + 1];
+    }
+    if (b->runs[0] != 0) rbl__spriteAttributes(b, 0);
+    rbl__markDrawn(program);
+    rlDisableVertexArray();
+    rlDisableVertexBuffer();
+    if (cullOff) rlEnableBackfaceCulling();
+    rlActiveTextureSlot(unit);
+    rlDisableTexture();
+    rbl__unbindMaterial(bound);
+    return drawn;
 }
 
 #endif // RBL_NO_ATLAS

@@ -6,6 +6,9 @@
 // shadow_caster.fs.glsl.
 #include "common.glsl"
 
+// An RblInstance, or in the resident-sprite variant (RBL_SPRITE_BUFFER, compiled by the header for
+// RblDrawSpriteBuffer) an RblSpriteInstance whose 32 bytes the same locations read as: 10 pivot,
+// scale; 11 start (x); 12 rotation, frame, speed (half-float bits), mode, as unsigned shorts; 13 tint
 layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees
 layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin
 layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)
@@ -36,7 +39,31 @@ uniform mat4 mvp;
 //       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
 //   [5] facing axis (AXIS: locked axis, zero = +Y; FIXED: normal, zero = +Z), w: 1 orthographic camera
 //   [6] shadow pass light: xyz toward the light (w 0) or its position (w 1); zero outside shadow passes
+#ifdef RBL_SPRITE_BUFFER
+//   [7] (the resident-sprite variant only) x: 1, y: the sprites' clock (seconds), z: frame table
+//       width, w: the atlas's frame count
+uniform vec4 rblInstancing[8];
+
+// A sprite buffer's frame table (RGBA32F, read with texelFetch; rbl__buildFrameTable writes it):
+//   frame k at texels 3k (source), 3k + 1 (size, origin per unit of scale), 3k + 2 (duration, rotated)
+//   tag t (-1: every frame, forward) at texels 3 frameCount + 2(t + 1): (first timeline entry,
+//   entries, period, first pass) and (last frame after an odd / an even count of passes, the tag's
+//   repeat, a pingpong's first frame duration or 0); then the timeline entries
+//   (frame, start within the period)
+uniform highp sampler2D rblFrameTable;
+#else
 uniform vec4 rblInstancing[7];
+#endif
+
+// The instance being expanded, from either layout (main reads it once)
+vec4 rblPivot;          // xyz pivot, w rotation in degrees
+vec4 rblSizeOrigin;     // size (negative mirrors), origin
+vec4 rblSource;         // texels (all zero = whole texture)
+float rblFlagBits;      // RblBillboardFlags
+#ifdef RBL_CROSS_FADE
+vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;
+float rblFadeWeight, rblFadeFlagBits;
+#endif
 
 RBL_VARYING vec3 fragPosition;
 RBL_VARYING vec2 fragTexCoord;
@@ -234,8 +261,8 @@ vec2 rblCasterIdOf(vec3 pivot, vec4 sizeOrigin)
 void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,
                         out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)
 {
-    int flags = int(rblInstanceFlags + 0.5);
-    vec2 size = rblInstanceSize.xy, origin = rblInstanceSize.zw;
+    int flags = int(rblFlagBits + 0.5);
+    vec2 size = rblSizeOrigin.xy, origin = rblSizeOrigin.zw;
     float sx = abs(size.x), sy = abs(size.y);
     vec3 un = u;
     rblNormalizeTo(u, un);
@@ -244,9 +271,9 @@ void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, fl
     float ct = (corner < 2)? 1.0 : 0.0;                      // sprite-space t (down)
     float x = (cs > 0.5)? sx - origin.x : -origin.x;
     float y = (ct < 0.5)? sy*ulen - origin.y : -origin.y;
-    position = rblInstancePosition.xyz + r*x + un*y;
+    position = rblPivot.xyz + r*x + un*y;
 
-    vec4 src = rblInstanceSource;
+    vec4 src = rblSource;
     if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);
     bool flipU = (size.x < 0.0) != (src.z < 0.0);
     bool flipV = (size.y < 0.0) != (src.w < 0.0);
@@ -311,29 +338,118 @@ float rblFadeCode(vec2 t1, vec2 v1, vec2 t2, vec2 v2)
 }
 #endif
 
+#ifdef RBL_SPRITE_BUFFER
+// Texel i of the frame table (rows of rblInstancing[7].z texels)
+vec4 rblTable(int i)
+{
+    int w = int(rblInstancing[7].z + 0.5);
+    return texelFetch(rblFrameTable, ivec2(i % w, i / w), 0);
+}
+
+// An IEEE half float from its 16 bits (the CPU writes finite, non-negative speeds only)
+float rblHalfBits(uint h)
+{
+    uint e = (h >> 10) & 31u, m = h & 1023u;
+    float v = (e == 0u)? float(m)*exp2(-24.0) : exp2(float(int(e) - 15))*(1.0 + float(m)*(1.0/1024.0));
+    return ((h & 0x8000u) != 0u)? -v : v;
+}
+
+// The frame tag t shows local seconds into its play, the frame after it and the weight time /
+// duration (RblSpriteBlend's): the CPU's RblUpdateSprite over loops passes (0 = forever), with the
+// period's frames as a timeline found by bisection
+void rblSpriteFrame(int t, int loops, float local, out int frame, out int next, out float weight)
+{
+    int base = 3*int(rblInstancing[7].w + 0.5) + 2*(t + 1);   // tag -1 (every frame) is the first row
+    vec4 row = rblTable(base), ends = rblTable(base + 1);
+    int first = int(row.x + 0.5), count = int(row.y + 0.5);
+    float period = row.z;
+    if (loops < 0) loops = int(ends.z + 0.5);                  // the tag's repeat (0 = forever)
+    if (loops > 0)
+    {
+        // A pingpong pass ends on a turn frame: pass 2m + 1 at m periods + the first pass, pass 2m
+        // at m periods + the first frame (ends.w; 0: one pass per period)
+        float end = (ends.w > 0.0)? float(loops/2)*period + (((loops & 1) != 0)? row.w : ends.w) : float(loops)*period;
+        int last = int((((loops & 1) != 0)? ends.x : ends.y) + 0.5);
+        if (local >= end - rblTable(3*last + 2).x) { frame = last; next = last; weight = 0.0; return; }
+    }
+    float tp = local - floor(local/period)*period;
+    if (!(tp < period) || (tp < 0.0)) tp = 0.0;
+    int lo = 0, hi = count;                                     // entries [lo, hi): start(lo) <= tp
+    for (int i = 0; (i < 16) && (hi - lo > 1); i++)
+    {
+        int mid = (lo + hi)/2;
+        if (rblTable(first + mid).y <= tp) lo = mid; else hi = mid;
+    }
+    vec4 entry = rblTable(first + lo);
+    frame = int(entry.x + 0.5);
+    next = int(rblTable(first + ((lo + 1 < count)? lo + 1 : 0)).x + 0.5);
+    weight = clamp((tp - entry.y)/rblTable(3*frame + 2).x, 0.0, 1.0);
+}
+
+// A resident sprite into the instance globals: its frame (animated on the clock rblInstancing[7].y)
+// from the table, the quad scaled from the frame's, flips about the pivot
+void rblReadSprite()
+{
+    vec4 word = rblInstanceSource;                              // rotation, frame, speed bits, mode
+    uint mode = uint(word.w + 0.5);
+    int frame = int(word.y + 0.5), next = frame;
+    float weight = 0.0;
+    if ((mode & 8u) != 0u)
+    {
+        int tag = (frame == 65535)? -1 : frame;
+        int loops = int(mode >> 8);
+        loops = (loops == 0)? -1 : ((loops == 255)? 0 : loops);
+        float local = max((rblInstancing[7].y - rblInstanceSize.x)*rblHalfBits(uint(word.z + 0.5)), 0.0);
+        rblSpriteFrame(tag, loops, local, frame, next, weight);
+    }
+    vec4 quad = rblTable(3*frame + 1)*rblInstancePosition.w;   // size, origin
+    if ((mode & 1u) != 0u) quad.xz = vec2(-quad.x, quad.x - quad.z);
+    if ((mode & 2u) != 0u) quad.yw = vec2(-quad.y, quad.y - quad.w);
+    rblPivot = vec4(rblInstancePosition.xyz, word.x*(360.0/65536.0));
+    rblSizeOrigin = quad;
+    rblSource = rblTable(3*frame);
+    rblFlagBits = rblTable(3*frame + 2).y + (((mode & 4u) != 0u)? 2.0 : 0.0);
+#ifdef RBL_CROSS_FADE
+    rblFadeSource = rblTable(3*next);
+    rblFadeFlagBits = rblTable(3*next + 2).y;
+    rblFadeWeight = weight;
+    rblFadeClip0 = vec4(0.0); rblFadeClip1 = vec4(0.0);
+#endif
+}
+#endif
+
 void main()
 {
+#ifdef RBL_SPRITE_BUFFER
+    rblReadSprite();
+#else
+    rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;
+#ifdef RBL_CROSS_FADE
+    rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;
+    rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;
+#endif
+#endif
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     vec3 eye = rblInstancing[0].xyz;
     int code = int(rblInstancing[0].w + 0.5);
     vec3 r, u, n;
-    rblFacingBasis(code, rblInstancePosition.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
+    rblFacingBasis(code, rblPivot.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
                    rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);
     // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the
     // axis (rbl__billboardVertices)
     vec3 shift = vec3(0.0);
     vec2 sc = vec2(0.0, 1.0);
-    if (rblInstancePosition.w != 0.0) sc = rblSinCosDeg(rblInstancePosition.w);
+    if (rblPivot.w != 0.0) sc = rblSinCosDeg(rblPivot.w);
     if (((code & 3) == 2) && (rblInstancing[4].w > 0.0))
     {
         vec3 a = vec3(0.0, 1.0, 0.0), l = a;
         if (dot(rblInstancing[5].xyz, rblInstancing[5].xyz) > 1e-24) rblNormalizeTo(rblInstancing[5].xyz, a);
         vec3 d = a - u;
         vec4 light = rblInstancing[6];
-        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblInstancePosition.xyz*light.w, l))
+        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblPivot.xyz*light.w, l))
         {
-            float x0 = -rblInstanceSize.z, x1 = abs(rblInstanceSize.x) - rblInstanceSize.z;
-            float y0 = -rblInstanceSize.w, y1 = abs(rblInstanceSize.y) - rblInstanceSize.w;
+            float x0 = -rblSizeOrigin.z, x1 = abs(rblSizeOrigin.x) - rblSizeOrigin.z;
+            float y0 = -rblSizeOrigin.w, y1 = abs(rblSizeOrigin.y) - rblSizeOrigin.w;
             vec4 e = vec4(sc.x*x0 + sc.y*y0, sc.x*x1 + sc.y*y0, sc.x*x1 + sc.y*y1, sc.x*x0 + sc.y*y1);
             float lo = min(min(e.x, e.y), min(e.z, e.w)), hi = max(max(e.x, e.y), max(e.z, e.w));
             float t = clamp((abs(dot(l, a)) - 0.8660254)*(1.0/(1.0 - 0.8660254)), 0.0, 1.0);
@@ -341,7 +457,7 @@ void main()
         }
     }
     // Rotate the frame around the normal (raylib rotates the corners; same result)
-    if (rblInstancePosition.w != 0.0)
+    if (rblPivot.w != 0.0)
     {
         vec3 nr = cross(n, r), nu = cross(n, u);
         r = r*sc.y + nr*sc.x;
@@ -353,18 +469,18 @@ void main()
     p += shift;
     fragPosition = p;
 #ifdef RBL_CASTER_ID
-    fragCasterId = rblCasterIdOf(rblInstancePosition.xyz, rblInstanceSize);
+    fragCasterId = rblCasterIdOf(rblPivot.xyz, rblSizeOrigin);
 #endif
 #ifdef RBL_CROSS_FADE
     int corner = cornerOf[gl_VertexID % 6];
     float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;
     vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;
-    rblFrameTexCoord(rblInstanceSource, (int(rblInstanceFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t1, v1);
-    fragTexCoord2 = rblFrameTexCoord(rblInstanceFadeSource, (int(rblInstanceFadeFlags + 0.5) & 1) != 0, rblInstanceSize.xy, cs, ct, textureSize, t2, v2);
-    fragFade = vec2(rblInstanceFadeWeight, rblFadeCode(t1, v1, t2, v2));
+    rblFrameTexCoord(rblSource, (int(rblFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t1, v1);
+    fragTexCoord2 = rblFrameTexCoord(rblFadeSource, (int(rblFadeFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t2, v2);
+    fragFade = vec2(rblFadeWeight, rblFadeCode(t1, v1, t2, v2));
     // Clip rectangles are in the picture: a mirrored quad mirrors them with it
-    vec2 picture = vec2((rblInstanceSize.x < 0.0)? 1.0 - cs : cs, (rblInstanceSize.y < 0.0)? 1.0 - ct : ct);
-    fragFadeClip = vec4(rblFadeClipLocal(rblInstanceFadeClip, picture), rblFadeClipLocal(rblInstanceFadeClip2, picture));
+    vec2 picture = vec2((rblSizeOrigin.x < 0.0)? 1.0 - cs : cs, (rblSizeOrigin.y < 0.0)? 1.0 - ct : ct);
+    fragFadeClip = vec4(rblFadeClipLocal(rblFadeClip0, picture), rblFadeClipLocal(rblFadeClip1, picture));
 #endif
     vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
     fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex

@@ -20,6 +20,7 @@
 #include "test_atlas_render.c"
 #include "test_fade.c"
 #include "test_held.c"
+#include "test_sprite_buffer.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_RENDER_TESTS,
@@ -37,6 +38,7 @@ static const RtTest rblGpuTests[] = {
         RBL_ATLAS_RENDER_TESTS,
         RBL_FADE_TESTS,
         RBL_HELD_TESTS,
+        RBL_SPRITE_BUFFER_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

@@ -139,6 +139,35 @@ static bool runGenHeight(void) { genOut = RblGenHeightFromLuminance(packSource.a
 static bool runGenOcclusion(void) { genOut = RblGenOcclusionFromHeight(heightImage, 3, 1.0f); return genOut.data != NULL; }
 static void cleanGen(void) { UnloadImage(genOut); memset(&genOut, 0, sizeof(genOut)); }
 
+// Resident sprites: the buffer's load (tables, CPU copy, chunk bounds, GL buffer and frame table),
+// and a draw's first use of an instanced program, which compiles its resident-sprite variant
+static const char spriteAtlasText[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}, \"duration\": 100},"
+    "{\"filename\": \"b\", \"frame\": {\"x\":4,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"app\": \"aseprite\", \"frameTags\": [{\"name\": \"t\", \"from\": 0, \"to\": 1, \"direction\": \"pingpong\"}]}}";
+static RblAtlas spriteAtlas;
+static RblSpriteBuffer spriteBuffer, drawnBuffer;
+static Shader spriteLit;
+static RenderTexture2D spriteTarget;
+static bool runLoadSprites(void) { spriteBuffer = RblLoadSpriteBuffer(&spriteAtlas, 300); return RblIsSpriteBufferValid(spriteBuffer); }
+static void cleanSprites(void) { RblUnloadSpriteBuffer(&spriteBuffer); }
+static bool runDrawSprites(void)
+{
+    RblLitShaderDesc d; memset(&d, 0, sizeof(d)); d.instanced = true;
+    spriteLit = RblLoadLitShader(d);
+    if (!RblIsLitShaderValid(spriteLit)) return false;
+    Material m = LoadMaterialDefault();
+    m.shader = spriteLit;
+    RblInstancedDesc id; memset(&id, 0, sizeof(id));
+    Camera3D cam; memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 0.0f, 5.0f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f }; cam.fovy = 45.0f; cam.projection = CAMERA_PERSPECTIVE;
+    BeginTextureMode(spriteTarget); BeginMode3D(cam);
+    int n = RblDrawSpriteBuffer(&drawnBuffer, cam, m, id, 0.5f);
+    EndMode3D(); EndTextureMode();
+    MemFree(m.maps);
+    if (n == 0) RblUnloadLitShader(&spriteLit);
+    return n > 0;
+}
+static void cleanDrawSprites(void) { RblUnloadLitShader(&spriteLit); }
+
 static RblAtlas atlas;
 static const char *atlasFile = NULL;
 static char *atlasText = NULL;
@@ -170,6 +199,19 @@ static void test_alloc_every_loading_path_fails_cleanly_at_every_allocation(void
 
     sweep("RblLoadBatch", runLoadBatch, cleanBatch);
     sweep("RblLoadInstanceBuffer", runLoadInstances, cleanInstances);
+    failAfter(-1);
+    spriteAtlas = RblLoadAtlasFromMemory(spriteAtlasText, (int)strlen(spriteAtlasText), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(spriteAtlas), "sprite atlas refused (%s)", lastWarning);
+    sweep("RblLoadSpriteBuffer", runLoadSprites, cleanSprites);
+    drawnBuffer = RblLoadSpriteBuffer(&spriteAtlas, 4);
+    RblSpriteInstance four[4];
+    for (int i = 0; i < 4; i++) { four[i] = RblMakeSprite((Vector3){ 0.3f*(float)i, 0.0f, 0.0f }, 0.05f, 0.0f, 0, WHITE); RblAnimateSprite(&four[i], 0, -1, 0.0f, 1.0f); }
+    RT_CHECK(RblUpdateSprites(&drawnBuffer, 0, 4, four), "sprites refused");
+    spriteTarget = LoadRenderTexture(32, 32);
+    sweep("RblDrawSpriteBuffer (variant compile)", runDrawSprites, cleanDrawSprites);
+    UnloadRenderTexture(spriteTarget);
+    RblUnloadSpriteBuffer(&drawnBuffer);
+    RblUnloadAtlas(&spriteAtlas);
     sweep("RblLoadShadowMap", runLoadShadow, cleanShadow);
     sweep("RblLoadGBuffer", runLoadGBuffer, cleanGBuffer);
     for (litVariant = 0; litVariant < 1; litVariant++) sweep("RblLoadLitShader", runLoadLit, cleanLit);

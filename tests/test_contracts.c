@@ -568,6 +568,7 @@ static void c_instances_draw(void)
     EXPECT_REFUSED(RblDrawInstanced(&stale, camera(), inst, d, in, 4) > 0);
 }
 
+
 // ---- cases: materials -----------------------------------------------------------------------------
 static Image greyImage(int w, int h) { return GenImageColor(w, h, GRAY); }
 
@@ -1672,6 +1673,176 @@ static void expectInstancedRefused(Material m)
     RblUnloadInstanceBuffer(&buf);
 }
 
+// ---- resident sprite buffers ------------------------------------------------------------------------
+static RblSpriteInstance sprite(void) { return RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 0.05f, 10.0f, 1, WHITE); }
+
+static void c_sprite_buffer_load(void)
+{
+    RblAtlas a = goodAtlas(), zero; memset(&zero, 0, sizeof(zero));
+    int bad[4] = { -1, -2147483647 - 1, RBL_MAX_INSTANCES + 1, 2147483647 };
+    RblSpriteBuffer b;
+    for (int i = 0; i < 4; i++) EXPECT_REFUSED((b = RblLoadSpriteBuffer(&a, bad[i]), RblIsSpriteBufferValid(b)));
+    EXPECT_REFUSED((b = RblLoadSpriteBuffer(NULL, 4), RblIsSpriteBufferValid(b)));
+    EXPECT_REFUSED((b = RblLoadSpriteBuffer(&zero, 4), RblIsSpriteBufferValid(b)));
+    RblSpriteBuffer none; memset(&none, 0, sizeof(none));
+    EXPECT_QUIET(RblIsSpriteBufferValid(none), false);
+    b = RblLoadSpriteBuffer(&a, 4);
+    RblSpriteBuffer stale = b;
+    EXPECT_QUIET(RblIsSpriteBufferValid(b), true);
+    EXPECT_REFUSED(V(RblUnloadSpriteBuffer(NULL)));
+    EXPECT_REFUSED(V(RblUnloadSpriteBuffer(&none)));
+    RblUnloadSpriteBuffer(&b);
+    EXPECT_QUIET(RblIsSpriteBufferValid(stale), false);
+    EXPECT_REFUSED(V(RblUnloadSpriteBuffer(&b)));
+    EXPECT_REFUSED(V(RblUnloadSpriteBuffer(&stale)));
+    // the buffer outlives its atlas: the table is its own
+    b = RblLoadSpriteBuffer(&a, 4);
+    RblUnloadAtlas(&a);
+    RblSpriteInstance s[2] = { sprite(), sprite() };
+    EXPECT_QUIET(RblUpdateSprites(&b, 0, 2, s), true);
+    RblUnloadSpriteBuffer(&b);
+}
+
+// A refused update writes nothing: the buffer's copy and count stay as they were
+static void c_sprite_buffer_update(void)
+{
+    RblAtlas a = goodAtlas();
+    RblSpriteBuffer b = RblLoadSpriteBuffer(&a, 8), zero, stale;
+    memset(&zero, 0, sizeof(zero));
+    RblSpriteInstance s[8];
+    for (int i = 0; i < 8; i++) s[i] = sprite();
+    EXPECT_QUIET(RblUpdateSprites(&b, 0, 3, s), true);
+    RblSpriteInstance kept[8];
+    memcpy(kept, b.state->sprites, sizeof(kept));
+    EXPECT_REFUSED(RblUpdateSprites(NULL, 0, 1, s));
+    EXPECT_REFUSED(RblUpdateSprites(&zero, 0, 1, s));
+    const int ranges[][2] = { { -1, 1 }, { 0, -1 }, { 0, 9 }, { 8, 1 }, { 7, 2 }, { 1, 2147483647 }, { 2147483647, 1 }, { -2147483647 - 1, 2 } };
+    for (int r = 0; r < COUNT_OF(ranges); r++) EXPECT_REFUSED(RblUpdateSprites(&b, ranges[r][0], ranges[r][1], s));
+    EXPECT_REFUSED(RblUpdateSprites(&b, 0, 2, NULL));
+    EXPECT_QUIET(RblUpdateSprites(&b, 0, 0, NULL), true);           // an empty range is no update
+    // every float field NaN/Inf/huge, negative scale, half-float speeds Inf, NaN, negative; unknown
+    // mode bits; a frame or tag the atlas lacks: refused, even as the last of a good range
+    const size_t floats[5] = { offsetof(RblSpriteInstance, position.x), offsetof(RblSpriteInstance, position.y), offsetof(RblSpriteInstance, position.z),
+                               offsetof(RblSpriteInstance, scale), offsetof(RblSpriteInstance, start) };
+    for (int f = 0; f < 5; f++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblSpriteInstance x[3] = { sprite(), sprite(), sprite() };
+        memcpy((char *)&x[2] + floats[f], &badFloats[vi], sizeof(float));
+        EXPECT_REFUSED(RblUpdateSprites(&b, 0, 3, x));
+    }
+    RblSpriteInstance x = sprite();
+    x.scale = -0.05f; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
+    x = sprite(); x.speed = 0x7C00; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
+    x = sprite(); x.speed = 0x7E00; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
+    x = sprite(); x.speed = 0xBC00; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
+    x = sprite(); x.mode = 0x10; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
+    x = sprite(); x.frame = 2; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));           // the atlas has frames 0, 1
+    x = sprite(); RblAnimateSprite(&x, 0, 0, 0.0f, 1.0f); x.frame = 1; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));  // and tag 0
+    ck(memcmp(kept, b.state->sprites, sizeof(kept)) == 0 && b.count == 3 && b.state->count == 3, "a refused update changed the buffer");
+    // at the capacity: accepted; scale 0 (hidden), every tag and the every-frame tag
+    x = sprite(); x.scale = 0.0f; s[7] = x;
+    RblAnimateSprite(&s[6], -1, -1, 0.0f, 65504.0f);
+    RblAnimateSprite(&s[5], 0, 254, -5.0f, 0.0f);
+    EXPECT_QUIET(RblUpdateSprites(&b, 0, 8, s), true);
+    stale = b;
+    RblUnloadSpriteBuffer(&b);
+    EXPECT_REFUSED(RblUpdateSprites(&stale, 0, 1, s));
+    RblUnloadAtlas(&a);
+}
+
+static void c_sprite_buffer_draw(void)
+{
+    RblAtlas a = goodAtlas();
+    Material inst = litMaterial(descOf(RBL_BRDF_LAMBERT, true, false));
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    RblSpriteBuffer b = RblLoadSpriteBuffer(&a, 4), zero, stale;
+    memset(&zero, 0, sizeof(zero));
+    RblSpriteInstance s[4] = { sprite(), sprite(), sprite(), sprite() };
+    RblUpdateSprites(&b, 0, 4, s);
+    EXPECT_REFUSED(RblDrawSpriteBuffer(NULL, camera(), inst, d, 0.0f) > 0);
+    EXPECT_REFUSED(RblDrawSpriteBuffer(&zero, camera(), inst, d, 0.0f) > 0);
+    EVERY_BAD_CAMERA(RblDrawSpriteBuffer(&b, cam, inst, d, 0.0f) > 0);
+    for (int vi = 0; vi < 5; vi++) if (fabsf(badFloats[vi]) > 1e38f || !isfinite(badFloats[vi])) EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), inst, d, badFloats[vi]) > 0);
+    for (int fi = 0; fi < COUNT_OF(instancedDescFloats); fi++) for (int vi = 0; vi < 3; vi++)
+    {
+        RblInstancedDesc x = d; SET_FIELD(x, instancedDescFloats[fi], badFloats[vi]);
+        EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), inst, x, 0.0f) > 0);
+    }
+    RblInstancedDesc x = d;
+    x.facing = 4; EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), inst, x, 0.0f) > 0);
+    x.facing = -1; EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), inst, x, 0.0f) > 0);
+    x = d; x.sort = RBL_SORT_BACK_TO_FRONT; EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), inst, x, 0.0f) > 0);
+    RblFade fades[4]; memset(fades, 0, sizeof(fades));
+    x = d; x.fades = fades; EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), inst, x, 0.0f) > 0);
+    Material z; memset(&z, 0, sizeof(z));
+    EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), z, d, 0.0f) > 0);
+    EXPECT_REFUSED(RblDrawSpriteBuffer(&b, camera(), material, d, 0.0f) > 0);    // a vertex-buffer variant
+    warnings = 0;
+    int n = RblDrawSpriteBuffer(&b, camera(), inst, d, 1.0e30f);                    // any finite clock below 2^120
+    ck(n == 4 && warnings == 0, "good draw: %d drawn, %d lines (%s)", n, warnings, lastWarning);
+    stale = b;
+    RblUnloadSpriteBuffer(&b);
+    EXPECT_REFUSED(RblDrawSpriteBuffer(&stale, camera(), inst, d, 0.0f) > 0);
+    RblUnloadAtlas(&a);
+}
+
+// Constructors: bad values give one line and a hidden sprite / an untouched one
+static void c_sprite_values(void)
+{
+    RblSpriteInstance s;
+    const float bad[3] = { NAN, INFINITY, -INFINITY };
+    for (int vi = 0; vi < 3; vi++)
+    {
+        EXPECT_REFUSED((s = RblMakeSprite((Vector3){ bad[vi], 0.0f, 0.0f }, 1.0f, 0.0f, 0, WHITE), s.scale != 0.0f));
+        EXPECT_REFUSED((s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, bad[vi], 0.0f, 0, WHITE), s.scale != 0.0f));
+        EXPECT_REFUSED((s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, bad[vi], 0, WHITE), s.scale != 0.0f));
+    }
+    EXPECT_REFUSED((s = RblMakeSprite((Vector3){ 3.0e38f, 0.0f, 0.0f }, 1.0f, 0.0f, 0, WHITE), s.scale != 0.0f));
+    EXPECT_REFUSED((s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, -1.0f, 0.0f, 0, WHITE), s.scale != 0.0f));
+    EXPECT_REFUSED((s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, 0.0f, -1, WHITE), s.scale != 0.0f));
+    EXPECT_REFUSED((s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, 0.0f, 65536, WHITE), s.scale != 0.0f));
+    s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, -90.0f, 65535, WHITE);
+    ck(s.rotation == 49152 && s.frame == 65535, "rotation -90 degrees packs as %u (want 49152)", s.rotation);
+    s = RblMakeSprite((Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, 1.0e30f, 0, WHITE);     // any finite angle, reduced
+    ck(s.scale == 1.0f, "a huge finite rotation was refused");
+    RblSpriteInstance kept = sprite(), t = kept;
+    EXPECT_REFUSED(RblAnimateSprite(NULL, 0, 0, 0.0f, 1.0f));
+    EXPECT_REFUSED(RblAnimateSprite(&t, -2, 0, 0.0f, 1.0f));
+    EXPECT_REFUSED(RblAnimateSprite(&t, 65535, 0, 0.0f, 1.0f));
+    EXPECT_REFUSED(RblAnimateSprite(&t, 0, -2, 0.0f, 1.0f));
+    EXPECT_REFUSED(RblAnimateSprite(&t, 0, 255, 0.0f, 1.0f));
+    for (int vi = 0; vi < 5; vi++) EXPECT_REFUSED(RblAnimateSprite(&t, 0, 0, badFloats[vi], 1.0f));
+    for (int vi = 0; vi < 5; vi++) EXPECT_REFUSED(RblAnimateSprite(&t, 0, 0, 0.0f, badFloats[vi]));
+    EXPECT_REFUSED(RblAnimateSprite(&t, 0, 0, 0.0f, -1.0f));
+    EXPECT_REFUSED(RblAnimateSprite(&t, 0, 0, 0.0f, 65520.0f));                 // rounds past the largest half
+    ck(memcmp(&t, &kept, sizeof(t)) == 0, "a refused RblAnimateSprite changed the sprite");
+    EXPECT_QUIET(RblAnimateSprite(&t, 65534, 254, -1.0e30f, 65504.0f), true);
+    ck(t.speed == 0x7BFF && (t.mode >> 8) == 254 && (t.mode & RBL_SPRITE_ANIMATED), "limits packed as speed %04x mode %04x", t.speed, t.mode);
+    EXPECT_QUIET(RblAnimateSprite(&t, 0, 0, 0.0f, 5.9604645e-08f), true);           // the least subnormal half
+    ck(t.speed == 1, "least subnormal speed packed as %04x", t.speed);
+}
+
+// Capacities at the limit and one past; an update of the whole capacity; a draw of it
+static void c_sprite_buffer_counts(void)
+{
+    RblAtlas a = goodAtlas();
+    RblSpriteBuffer b;
+    EXPECT_REFUSED((b = RblLoadSpriteBuffer(&a, RBL_MAX_INSTANCES + 1), RblIsSpriteBufferValid(b)));
+    b = RblLoadSpriteBuffer(&a, RBL_MAX_INSTANCES);
+    ck(RblIsSpriteBufferValid(b), "a buffer of RBL_MAX_INSTANCES did not load");
+    static RblSpriteInstance s[RBL_MAX_INSTANCES];
+    for (int i = 0; i < RBL_MAX_INSTANCES; i++) s[i] = sprite();
+    EXPECT_QUIET(RblUpdateSprites(&b, 0, RBL_MAX_INSTANCES, s), true);
+    EXPECT_REFUSED(RblUpdateSprites(&b, 1, RBL_MAX_INSTANCES, s));
+    Material inst = litMaterial(descOf(RBL_BRDF_LAMBERT, true, false));
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    warnings = 0;
+    int n = RblDrawSpriteBuffer(&b, camera(), inst, d, 0.0f);
+    ck(n == RBL_MAX_INSTANCES && warnings == 0, "draw at the limit: %d drawn, %d lines", n, warnings);
+    RblUnloadSpriteBuffer(&b);
+    RblUnloadAtlas(&a);
+}
+
 // A lit Shader copy after each way its program can die (the header's unload, raylib's UnloadShader,
 // raylib's UnloadMaterial), then with nothing loaded since, another lit program loaded (GL hands out
 // the deleted id again) and a raylib shader of the caller's loaded: every draw refuses the copy
@@ -2129,6 +2300,11 @@ static const Case cases[] = {
     { "RblGetFailureReason", "none yet, after refusals, kept through successes", c_failure_reason, "lifetime" },
     { "RblLoadInstanceBuffer RblIsInstanceBufferValid RblUnloadInstanceBuffer", "counts, zero, stale, double", c_instances_load, "counts null stale-header" },
     { "RblLoadSceneTarget RblSetScene", "sizes; the scene's depth field", c_scene_target, "counts" },
+    { "RblLoadSpriteBuffer RblIsSpriteBufferValid RblUnloadSpriteBuffer", "atlas NULL/zero, counts, zero, stale, double; the atlas unloaded first", c_sprite_buffer_load, "counts null stale-header" },
+    { "RblUpdateSprites", "NULL, zero, stale; ranges past the end and overflowing; NaN/Inf/huge floats, half-float speeds, mode bits, frames and tags outside the atlas", c_sprite_buffer_update, "null stale-header counts floats" },
+    { "RblDrawSpriteBuffer", "NULL, zero, stale; camera, clock, desc (sort, fades), materials", c_sprite_buffer_draw, "null stale-header floats variants" },
+    { "RblMakeSprite RblAnimateSprite", "NaN/Inf/huge fields, frame/tag/loops outside their ranges, speeds past the largest half", c_sprite_values, "floats counts null" },
+    { "RblLoadSpriteBuffer RblUpdateSprites RblDrawSpriteBuffer", "capacity at RBL_MAX_INSTANCES and one past; a full update and draw", c_sprite_buffer_counts, "counts" },
     { "RblDrawInstanced", "NULL, stale, counts, camera, desc, materials, bad instances", c_instances_draw, "null stale-header counts floats variants" },
     { "RblDrawInstanced RblDrawBillboard", BARE "zero and raylib-default materials", c_instances_bare, "null variants" },
     { "RblPackMaterial", "NULL, sizes, formats, encodings, frames", c_pack_material, "null counts" },

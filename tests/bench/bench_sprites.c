@@ -423,6 +423,211 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
     RblUnloadLitShader(&plain.shader); RblUnloadLitShader(&fade.shader); RblUnloadLitShader(&fadeInst.shader);
 }
 
+// ---- resident sprite buffers (RblSpriteBuffer) vs re-uploaded instances -------------------------
+// Four ways to draw n sprites each frame: resident and unchanged; resident and animated on the GPU
+// (the clock moves); re-uploaded (RblDrawInstanced, 56 B an instance, unchanged); animated on the
+// CPU (RblUpdateSpriteInstances + RblDrawInstanced). Rounds interleave the four (order rotating),
+// medians per way. Values: CPU ns per sprite, the same excluding glDraw* (llvmpipe does its vertex
+// work there), and microseconds per draw excluding glDraw*.
+enum { RES_STATIC = 0, RES_GPU_ANIM, RES_REUPLOAD, RES_CPU_ANIM, RES_WAYS };
+static const char *const resNames[RES_WAYS] = { "resident", "resident_gpu_animated", "reuploaded", "cpu_animated" };
+typedef struct {
+    int way, n;
+    RblSpriteBuffer *still, *moving;
+    RblInstanceBuffer *buffer;
+    RblInstance *instances;
+    RblSpritePlayer *players;
+    const RblAtlas *atlas;
+    Camera3D camera;
+    Material material;
+    float clock;
+} ResCtx;
+
+static void runResident(void *ctx, double *out)
+{
+    ResCtx *c = (ResCtx *)ctx;
+    RblInstancedDesc d; memset(&d, 0, sizeof(d));
+    drawNs = 0.0;
+    double t0 = BenchNowNs();
+    switch (c->way)
+    {
+        case RES_STATIC: RblDrawSpriteBuffer(c->still, c->camera, c->material, d, c->clock); break;
+        case RES_GPU_ANIM: c->clock += 1.0f/60.0f; RblDrawSpriteBuffer(c->moving, c->camera, c->material, d, c->clock); break;
+        case RES_REUPLOAD: RblDrawInstanced(c->buffer, c->camera, c->material, d, c->instances, c->n); break;
+        default:
+            RblUpdateSpriteInstances(c->players, c->instances, c->n, c->atlas, 1.0f/60.0f, 0.005f);
+            RblDrawInstanced(c->buffer, c->camera, c->material, d, c->instances, c->n);
+            break;
+    }
+    double t = BenchNowNs() - t0;
+    out[0] = t/c->n;
+    out[1] = (t - drawNs)/c->n;
+    out[2] = (t - drawNs)/1000.0;
+    rtFinish();       // untimed: the next run starts with the GPU idle
+}
+
+#define RES_ROUNDS 9
+static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
+{
+    static const int sizes[3] = { 1000, 10000, 100000 };
+    const int most = 100000;
+    RblSpriteInstance *still = (RblSpriteInstance *)calloc((size_t)most, sizeof(RblSpriteInstance));
+    RblSpriteInstance *moving = (RblSpriteInstance *)calloc((size_t)most, sizeof(RblSpriteInstance));
+    RblInstance *inst = (RblInstance *)calloc((size_t)most, sizeof(RblInstance));
+    RblSpritePlayer *players = (RblSpritePlayer *)malloc((size_t)most*sizeof(RblSpritePlayer));
+    for (int i = 0; i < most; i++)
+    {
+        // a 20 x 20 field in view (the camera at z 30 sees about 25 units)
+        Vector3 p = { -10.0f + 20.0f*(float)(i%317)/317.0f, -10.0f + 20.0f*(float)((i/317)%311)/311.0f, -0.0001f*(float)(i%1000) };
+        int tag = i%anim->tagCount;
+        players[i] = RblPlaySprite(anim, tag, -1);
+        RblUpdateSprite(&players[i], anim, 0.0137f*(float)(i%97));
+        still[i] = RblMakeSprite(p, 0.005f, 0.0f, players[i].frame, WHITE);     // small: llvmpipe's fill stays out of the way
+        moving[i] = still[i];
+        RblAnimateSprite(&moving[i], tag, -1, -0.0137f*(float)(i%97), 1.0f);
+        memset(&inst[i], 0, sizeof(inst[i]));
+        inst[i].position = p;
+        RblAtlasInstance(anim, players[i].frame, 0.005f, &inst[i]);
+    }
+    // memcpy bandwidth, this run: the floor of writing B bytes per sprite is B x ns per byte
+    double nsPerByte = 1e30;
+    {
+        size_t bytes = (size_t)most*sizeof(RblInstance);
+        char *a = (char *)malloc(bytes), *b = (char *)malloc(bytes);
+        memset(a, 1, bytes); memset(b, 2, bytes);
+        for (int r = 0; r < 20; r++)
+        {
+            double t0 = BenchNowNs();
+            memcpy(b, a, bytes);
+            double ns = (BenchNowNs() - t0)/(double)bytes;
+            if (ns < nsPerByte) nsPerByte = ns;
+            a[r] = b[bytes - 1 - (size_t)r];
+        }
+        free(a); free(b);
+        printf("  %-34s %8.3f ns per byte (%.1f GB/s, best of 20 copies of %.1f MB)\n", "memcpy_bandwidth", nsPerByte, 1.0/nsPerByte, bytes/1e6);
+        BenchCsvRow("sprites", "memcpy_bandwidth", "ns_per_byte", nsPerByte, "ns");
+    }
+    printf("  %-34s %8d B RblSpriteInstance (resident, animated on the GPU) vs %d B RblInstance (%.2fx)\n", "struct_sizes", (int)sizeof(RblSpriteInstance), (int)sizeof(RblInstance), (double)sizeof(RblSpriteInstance)/sizeof(RblInstance));
+    BenchCsvRow("sprites", "struct_sizes", "sprite_instance_bytes", (double)sizeof(RblSpriteInstance), "B");
+    BenchCsvRow("sprites", "struct_sizes", "instance_bytes", (double)sizeof(RblInstance), "B");
+    // Its own target and 3D mode: the rows before leave other matrices behind
+    RenderTexture2D rt = LoadRenderTexture(256, 256);
+    BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+    const double bytesWritten[RES_WAYS] = { 0.0, 0.0, (double)sizeof(RblInstance), (double)(sizeof(RblInstance) + 36 + sizeof(RblSpritePlayer)) };
+    for (int s = 0; s < 3; s++)
+    {
+        int n = sizes[s];
+        RblSpriteBuffer sb = RblLoadSpriteBuffer(anim, n), mb = RblLoadSpriteBuffer(anim, n);
+        RblInstanceBuffer ib = RblLoadInstanceBuffer(n);
+        if (!RblUpdateSprites(&sb, 0, n, still) || !RblUpdateSprites(&mb, 0, n, moving)) { printf("bench_sprites: sprites refused\n"); exit(1); }
+        RblSpritePlayer *pl = (RblSpritePlayer *)malloc((size_t)n*sizeof(RblSpritePlayer));
+        RblInstance *in = (RblInstance *)malloc((size_t)n*sizeof(RblInstance));
+        memcpy(pl, players, (size_t)n*sizeof(RblSpritePlayer));
+        memcpy(in, inst, (size_t)n*sizeof(RblInstance));
+        ResCtx c[RES_WAYS];
+        for (int w = 0; w < RES_WAYS; w++)
+        {
+            memset(&c[w], 0, sizeof(c[w]));
+            c[w].way = w; c[w].n = n; c[w].still = &sb; c[w].moving = &mb; c[w].buffer = &ib;
+            c[w].instances = (w == RES_CPU_ANIM)? in : inst; c[w].players = pl; c[w].atlas = anim; c[w].camera = cam; c[w].material = m;
+        }
+        double v[RES_WAYS][3][RES_ROUNDS], out[3];
+        for (int w = 0; w < RES_WAYS; w++) runResident(&c[w], out);       // warm-up
+        for (int r = 0; r < RES_ROUNDS; r++)
+            for (int k = 0; k < RES_WAYS; k++)
+            {
+                int w = (k + r)%RES_WAYS;
+                runResident(&c[w], out);
+                for (int j = 0; j < 3; j++) v[w][j][r] = out[j];
+            }
+        double med[RES_WAYS][3];
+        for (int w = 0; w < RES_WAYS; w++) for (int j = 0; j < 3; j++) med[w][j] = BenchMedian(v[w][j], RES_ROUNDS);
+        for (int w = 0; w < RES_WAYS; w++)
+        {
+            char name[48]; snprintf(name, sizeof(name), "%s_%d", resNames[w], n);
+            double floor = bytesWritten[w]*nsPerByte;
+            printf("  %-34s %8.2f ns per sprite (CPU), %7.2f excl draw calls, %7.1f us per draw excl; floor %3.0f B x bw = %.2f ns%s\n", name, med[w][0], med[w][1], med[w][2],
+                   bytesWritten[w], floor, (floor > 0.0)? "" : " (nothing written per frame)");
+            BenchCsvRow("sprites", name, "cpu_ns_per_sprite", med[w][0], "ns");
+            BenchCsvRow("sprites", name, "excl_draw_ns_per_sprite", med[w][1], "ns");
+            BenchCsvRow("sprites", name, "excl_draw_us_per_draw", med[w][2], "us");
+            if (floor > 0.0) BenchCsvRow("sprites", name, "excl_draw_over_floor", med[w][1]/floor, "x");
+        }
+        printf("  %-34s %8.3f x resident, %.3f x GPU-animated, %.3f x CPU-animated (CPU excl draw calls, medians of %d interleaved rounds)\n", "", med[RES_STATIC][1]/med[RES_REUPLOAD][1],
+               med[RES_GPU_ANIM][1]/med[RES_REUPLOAD][1], med[RES_CPU_ANIM][1]/med[RES_REUPLOAD][1], RES_ROUNDS);
+        char name[48]; snprintf(name, sizeof(name), "resident_%d", n);
+        BenchCsvRow("sprites", name, "excl_draw_over_reuploaded", med[RES_STATIC][1]/med[RES_REUPLOAD][1], "x");
+        // What of a resident draw is this header's own CPU (checks and chunk culling, no GL: the
+        // camera turned away), and what any draw costs the driver (RblDrawInstanced of 1 instance)
+        {
+            Camera3D away = cam;
+            away.target = (Vector3){ cam.position.x, cam.position.y, cam.position.z + 1.0f };
+            RblInstancedDesc d; memset(&d, 0, sizeof(d));
+            double own[RES_ROUNDS], one[RES_ROUNDS];
+            for (int r = 0; r < RES_ROUNDS; r++)
+            {
+                EndMode3D(); BeginMode3D(away);         // culling reads the pass's matrices
+                double t0 = BenchNowNs();
+                for (int k = 0; k < 100; k++) RblDrawSpriteBuffer(&sb, away, m, d, 0.0f);
+                own[r] = (BenchNowNs() - t0)/100.0/1000.0;
+                EndMode3D(); BeginMode3D(cam);
+                drawNs = 0.0;
+                t0 = BenchNowNs();
+                RblDrawInstanced(&ib, cam, m, d, inst, 1);
+                one[r] = (BenchNowNs() - t0 - drawNs)/1000.0;
+                rtFinish();
+            }
+            double o = BenchMedian(own, RES_ROUNDS), g = BenchMedian(one, RES_ROUNDS);
+            snprintf(name, sizeof(name), "resident_%d_own_cpu", n);
+            printf("  %-34s %8.2f us per draw: checks and culling of %d chunks (no GL); a 1-instance RblDrawInstanced costs %.1f us excl draw calls (driver state)\n", name, o, (n + 255)/256, g);
+            BenchCsvRow("sprites", name, "us_per_draw", o, "us");
+            BenchCsvRow("sprites", "instanced_1", "excl_draw_us_per_draw", g, "us");
+        }
+        snprintf(name, sizeof(name), "resident_gpu_animated_%d", n);
+        BenchCsvRow("sprites", name, "excl_draw_over_cpu_animated", med[RES_GPU_ANIM][1]/med[RES_CPU_ANIM][1], "x");
+        free(pl); free(in);
+        RblUnloadSpriteBuffer(&sb); RblUnloadSpriteBuffer(&mb); RblUnloadInstanceBuffer(&ib);
+    }
+    // Culling: 100000 resident sprites all in view, and the same with 90 % moved far to the side
+    // (in buffer order, as tiles of a level would lie); wall time with glFinish (llvmpipe's vertex
+    // work included) and CPU excluding glDraw*
+    {
+        int n = most;
+        RblSpriteBuffer seen = RblLoadSpriteBuffer(anim, n), side = RblLoadSpriteBuffer(anim, n);
+        RblUpdateSprites(&seen, 0, n, still);
+        for (int i = n/10; i < n; i++) still[i].position.x += 1000.0f + 0.01f*(float)i;
+        RblUpdateSprites(&side, 0, n, still);
+        RblInstancedDesc d; memset(&d, 0, sizeof(d));
+        double wall[2][RES_ROUNDS], cpu[2][RES_ROUNDS];
+        int drawn[2] = { 0, 0 };
+        for (int r = 0; r < RES_ROUNDS + 1; r++)
+            for (int k = 0; k < 2; k++)
+            {
+                int w = (k + r)%2;
+                rtFinish();
+                drawNs = 0.0;
+                double t0 = BenchNowNs();
+                drawn[w] = RblDrawSpriteBuffer(w? &side : &seen, cam, m, d, 0.0f);
+                double t1 = BenchNowNs();
+                rtFinish();
+                if (r == 0) continue;            // warm-up
+                wall[w][r - 1] = (BenchNowNs() - t0)/1e6;
+                cpu[w][r - 1] = (t1 - t0 - drawNs)/1000.0;
+            }
+        double wv = BenchMedian(wall[0], RES_ROUNDS), wo = BenchMedian(wall[1], RES_ROUNDS), cv = BenchMedian(cpu[0], RES_ROUNDS), co = BenchMedian(cpu[1], RES_ROUNDS);
+        printf("  %-34s %8.2f ms per frame (glFinish), %6.1f us CPU excl draw calls; %d drawn\n", "cull_100000_visible", wv, cv, drawn[0]);
+        printf("  %-34s %8.2f ms per frame (glFinish), %6.1f us CPU excl draw calls; %d drawn\n", "cull_100000_offscreen90", wo, co, drawn[1]);
+        printf("  %-34s %8.3f x wall, %.3f x CPU excl draw calls (medians of %d interleaved rounds)\n", "cull_100000 offscreen90/visible", wo/wv, co/cv, RES_ROUNDS);
+        BenchCsvRow("sprites", "cull_100000_visible", "ms_per_frame", wv, "ms");
+        BenchCsvRow("sprites", "cull_100000_offscreen90", "ms_per_frame", wo, "ms");
+        BenchCsvRow("sprites", "cull_100000", "offscreen90_over_visible", wo/wv, "x");
+        RblUnloadSpriteBuffer(&seen); RblUnloadSpriteBuffer(&side);
+    }
+    EndMode3D(); EndTextureMode();
+    UnloadRenderTexture(rt);
+    free(still); free(moving); free(inst); free(players);
+}
+
 int main(void)
 {
     SetTraceLogLevel(LOG_WARNING);
@@ -645,6 +850,8 @@ int main(void)
             free(src); free(pos);
         }
         fadeBench(&anim, players, instances, n, &buf, cam, m, timing);
+        if (wrapped) residentBench(&anim, cam, m);
+        else printf("  (glDraw* not wrapped: resident rows skipped)\n");
         EndMode3D(); EndTextureMode();
         printf("  %-34s %8.3f x\n", "instanced_10000 animated/plain", med[1]/med[0]);
         BenchCsvRow("sprites", "instanced_10000", "animated_over_plain", med[1]/med[0], "x");
