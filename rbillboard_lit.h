@@ -507,6 +507,8 @@
 *           else 0, and desc.skinning is refused: without it Mesh.vboId has no bone buffers).
 *       #define RBL_SHADOW_MAX_FILTER 6
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
+*       #define RBL_MAX_RELIEF_STEPS 64
+*           Largest relief self-shadow march (desc.reliefSteps), samples per light.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
 *       RBL_ZERO (defined by the header)
@@ -705,6 +707,9 @@
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
 #endif
+#ifndef RBL_MAX_RELIEF_STEPS
+    #define RBL_MAX_RELIEF_STEPS 64             // Largest relief march (desc.reliefSteps), samples per light
+#endif
 #ifndef RBL_MAX_BONES
     #define RBL_MAX_BONES 128                   // Bone matrices a skinned program holds (4 uniform vectors each; at most 256)
 #endif
@@ -831,6 +836,13 @@ typedef enum {
     RBL_NORMAL_RGB                  // Plain RGB tangent-space map (raylib's MATERIAL_MAP_NORMAL as authored)
 } RblNormalEncoding;
 
+// A channel of the packed material texture holding a scalar map (RblMaterialLayout.height, .thickness)
+typedef enum {
+    RBL_CHANNEL_NONE = 0,           // Absent: nothing sampled
+    RBL_CHANNEL_B,                  // Blue (free when the layout has no specular map and the normal is two-channel)
+    RBL_CHANNEL_A                   // Alpha (free when the layout has no occlusion)
+} RblMaterialChannel;
+
 // Emissive representations of a packed material
 typedef enum {
     RBL_EMISSIVE_NONE = 0,          // No emission, nothing sampled
@@ -845,6 +857,8 @@ typedef struct RblMaterialLayout {
     bool occlusion;                 // Material texture A: ambient occlusion, linear
     int emissive;                   // RblEmissiveLayout of the emissive texture
     bool premultipliedAlpha;        // Albedo texels hold colour x alpha (libGDX pma): divided back after filtering, before lighting
+    int height;                     // RblMaterialChannel of the material texture holding height 0..1 (relief self-shadow; 0 = none)
+    int thickness;                  // RblMaterialChannel holding thickness 0..1 (transmission x (1 - thickness); 0 = none)
 } RblMaterialLayout;
 
 // Packing input: raylib Images of one size (any format raylib converts); data == NULL = absent
@@ -967,6 +981,9 @@ typedef struct RblLitShaderDesc {
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBillboard.fade, RblInstancedDesc.fades): every map fetched twice
     int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (forward only)
+    bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (forward only)
+    int reliefSteps;                // Relief samples per light, 1..RBL_MAX_RELIEF_STEPS (0 = 16)
 } RblLitShaderDesc;
 
 // Per-material values a lit program reads from raylib's Material at each draw (zero means default):
@@ -979,12 +996,15 @@ typedef struct RblLitShaderDesc {
 //   maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
 //   maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
 //   params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha (0 = 0.5; negative = never)
+//   params[RBL_PARAM_TRANSMISSION]       transmission programs: share of the light on a card's back let through, 0..1 (0 = none)
+//   maps[MATERIAL_MAP_HEIGHT].value      relief programs: height of height 1, in texels of the material texture (0 = 4)
 // (raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS: its value holds the metalness, so the
 // Blinn-Phong intensity has a params slot of its own)
 typedef enum {
     RBL_PARAM_ALPHA_CUTOFF = 0,     // Material.params index of the alpha cutoff
     RBL_PARAM_SPECULAR = 1,         // Material.params index of the Blinn-Phong specular intensity
-    RBL_PARAM_SOFT_DISTANCE = 2     // Material.params index of the soft-particle fade distance (world units; 0 = 0.5)
+    RBL_PARAM_SOFT_DISTANCE = 2,    // Material.params index of the soft-particle fade distance (world units; 0 = 0.5)
+    RBL_PARAM_TRANSMISSION = 3      // Material.params index of the transmission share (transmission programs; 0 = none)
 } RblMaterialParam;
 
 // Deferred debug views (RblSetGBufferOutput)
@@ -1321,7 +1341,7 @@ typedef enum {
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
-    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH,
+    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_TRANSMISSION, RBL__U_RELIEF,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1339,6 +1359,7 @@ typedef struct rbl__ProgramKey {
 typedef struct rbl__MaterialValues {
     Color specularColor, emissiveColor;
     float specular, shininess, roughness, metalness, emissive, alphaCutoff, alphaCeiling;
+    float transmission, relief[4];  // transmission share; relief height (texels), 0, 1/width, 1/height of the material texture
 } rbl__MaterialValues;
 
 // One entry of the program registry
@@ -2174,6 +2195,7 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    s.face = s.normal;\n",
     "#endif\n",
     "    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales\n",
+    "    s.transmission = 0.0;               // forward only: not stored\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
     "    s.metalness = 0.0;\n",
@@ -2201,9 +2223,12 @@ static const char *const rbl__shader_lights[] = {
     "//   RBL_LIGHT_SPOT            spot cones\n",
     "//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation\n",
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
+    "//   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)\n",
+    "//   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)\n",
     "#include \"surface.glsl\"\n",
     "#include \"ambient.glsl\"\n",
     "#include \"shadows.glsl\"\n",
+    "#include \"transmission.glsl\"\n",
     "\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
     "#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite\n",
@@ -2269,6 +2294,9 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    if (s.transmission > 0.0) NdotL = 1.0;          // the light behind the card is shadowed on its way too\n",
+    "#endif\n",
     "    return (NdotL > 0.0)? rblShadowAt(k, s, l) : 1.0;\n",
     "}\n",
     "#endif\n",
@@ -2286,7 +2314,11 @@ static const char *const rbl__shader_lights[] = {
     "    float d2 = dot(toLight, toLight);\n",
     "    vec3 l = rblSafeNormalize(toLight, s.normal);      // a light on the surface lights it head-on\n",
     "    float NdotL = dot(s.normal, l);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    if ((NdotL <= 0.0) && !(s.transmission > 0.0)) return vec3(0.0);\n",
+    "#else\n",
     "    if (NdotL <= 0.0) return vec3(0.0);\n",
+    "#endif\n",
     "    // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)\n",
     "    float x2 = d2*c.a*c.a;\n",
     "    float window = clamp(1.0 - x2*x2, 0.0, 1.0);\n",
@@ -2300,7 +2332,18 @@ static const char *const rbl__shader_lights[] = {
     "    attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone\n",
     "#endif\n",
     "    attenuation *= shadow;\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    vec3 through = rblTransmitted(s, NdotL);\n",
+    "    if (NdotL <= 0.0) return c.rgb*attenuation*through;\n",
+    "#endif\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "    attenuation *= rblReliefShadow(l);              // transmitted light is not: it comes through the card\n",
+    "#endif\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    return c.rgb*attenuation*(NdotL*rblBrdf(s, v, l, NdotL) + through);\n",
+    "#else\n",
     "    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);\n",
+    "#endif\n",
     "}\n",
     "\n",
     "// Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)\n",
@@ -2877,7 +2920,11 @@ static const char *const rbl__shader_material[] = {
     "//                            the cutoff applies to the mixed alpha; the normal as a world vector (each\n",
     "//                            fetch decoded in its own frame's tangent axes), then renormalised;\n",
     "//                            specular, occlusion and emission with the colour's coverage weight\n",
+    "//   RBL_TRANSMISSION, RBL_THICKNESS_CHANNEL   the card lets light through (transmission.glsl)\n",
+    "//   RBL_RELIEF_STEPS, RBL_HEIGHT_CHANNEL      relief self-shadow (relief.glsl): the tangent frame kept for the lights\n",
     "#include \"surface.glsl\"\n",
+    "#include \"transmission.glsl\"\n",
+    "#include \"relief.glsl\"\n",
     "\n",
     "RBL_VARYING vec3 fragPosition;\n",
     "RBL_VARYING vec2 fragTexCoord;\n",
@@ -2904,7 +2951,7 @@ static const char *const rbl__shader_material[] = {
     "#endif\n",
     "\n",
     "uniform sampler2D texture0;     // albedo (sRGB)\n",
-    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION) || defined(RBL_HEIGHT_CHANNEL) || defined(RBL_THICKNESS_CHANNEL)\n",
     "#define RBL_MATERIAL_TEXTURE\n",
     "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
     "#endif\n",
@@ -3026,13 +3073,18 @@ static const char *const rbl__shader_material[] = {
     "#endif\n",
     "#endif\n",
     "    tangentNormal = vec3(0.0, 0.0, 1.0);\n",
-    "#if RBL_NORMAL_ENCODING > 0\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_RELIEF_STEPS)\n",
     "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n",
     "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n",
     "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n",
     "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n",
     "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
     "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "    rblReliefSetup(texture2, fragTexCoord, t, b, n*side);\n",
+    "#endif\n",
+    "#endif\n",
+    "#if RBL_NORMAL_ENCODING > 0\n",
     "    tangentNormal = rblDecodeNormal(material);\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    // Each fetch in its own frame's axes, mixed as world vectors, renormalised (opposite normals\n",
@@ -3089,6 +3141,13 @@ static const char *const rbl__shader_material[] = {
     "#ifdef RBL_OCCLUSION\n",
     "    sp.occlusion = material.a;\n",
     "#endif\n",
+    "    sp.transmission = 0.0;\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    sp.transmission = rblTransmission;\n",
+    "#ifdef RBL_THICKNESS_CHANNEL\n",
+    "    sp.transmission *= 1.0 - material[RBL_THICKNESS_CHANNEL - 1];\n",
+    "#endif\n",
+    "#endif\n",
     "    alpha = albedo.a;\n",
     "    emission = vec3(0.0);\n",
     "#if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)\n",
@@ -3103,6 +3162,14 @@ static const char *const rbl__shader_material[] = {
     "    emission += rblEmissiveColor;\n",
     "    return sp;\n",
     "}\n",
+    "\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "// The relief's light factor toward unit l at the point rblMaterialSurface last decoded (lights.glsl)\n",
+    "float rblReliefShadow(vec3 l)\n",
+    "{\n",
+    "    return rblReliefMarch(texture2, l);\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_output[] = {
     "// Output: fog, half-float clamp, exposure, tonemap and the display encoding, in that order (the\n",
@@ -3150,6 +3217,61 @@ static const char *const rbl__shader_output[] = {
     "    return rblLinearToSrgb(color);\n",
     "#endif\n",
     "}\n",
+    NULL };
+static const char *const rbl__shader_relief[] = {
+    "// Relief self-shadow: embossed detail shadows the sprite itself. The material texture's height\n",
+    "// channel (0..1, scaled by rblRelief.x texels) is marched from the shaded texel toward each light in\n",
+    "// the card's tangent space, at RBL_RELIEF_STEPS evenly spaced samples of the ray up to where it\n",
+    "// clears the highest height; a sample whose texel stands above the ray shadows the light. Heights are\n",
+    "// read texel by texel (unfiltered, base level; the mirror of tests' double-precision march). The ray's\n",
+    "// horizontal reach is capped at 8 climbs (light below 7 degrees), and a texel is taken as square:\n",
+    "// a sprite drawn stretched sees its shadows stretched with it.\n",
+    "// Included by material.glsl; compiled only with:\n",
+    "//   RBL_RELIEF_STEPS n      samples per light (RblLitShaderDesc.reliefSteps)\n",
+    "//   RBL_HEIGHT_CHANNEL c    material texture component holding height (3 b, 4 a)\n",
+    "#include \"surface.glsl\"\n",
+    "\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "uniform vec4 rblRelief;     // x height 1 in texels (0 = flat: nothing marched), zw 1/size of the material texture\n",
+    "vec2 rblReliefAt;           // the shaded point in texels of the material texture (set by rblMaterialSurface)\n",
+    "float rblReliefBase;        // its height in texels\n",
+    "vec3 rblReliefU, rblReliefV, rblReliefN;   // world directions of +U, +V (down the image) and out of the card's shaded side\n",
+    "\n",
+    "float rblReliefHeight(sampler2D map, vec2 texel)\n",
+    "{\n",
+    "    vec2 at = clamp(floor(texel), vec2(0.0), floor(1.0/rblRelief.zw + 0.5) - 1.0);\n",
+    "#if RBL_GLSL >= 300\n",
+    "    vec4 m = texelFetch(map, ivec2(at), 0);\n",
+    "#else\n",
+    "    vec4 m = texture2D(map, (at + 0.5)*rblRelief.zw);\n",
+    "#endif\n",
+    "    return m[RBL_HEIGHT_CHANNEL - 1]*rblRelief.x;\n",
+    "}\n",
+    "\n",
+    "// The shaded point: uv, its tangent frame (unit world +U, +V, shaded-side normal)\n",
+    "void rblReliefSetup(sampler2D map, vec2 uv, vec3 u, vec3 v, vec3 n)\n",
+    "{\n",
+    "    rblReliefAt = uv/rblRelief.zw;\n",
+    "    rblReliefU = u; rblReliefV = v; rblReliefN = n;\n",
+    "    rblReliefBase = rblReliefHeight(map, rblReliefAt);\n",
+    "}\n",
+    "\n",
+    "// Light let through toward unit direction l: 0 behind relief, else 1\n",
+    "float rblReliefMarch(sampler2D map, vec3 l)\n",
+    "{\n",
+    "    vec3 d = vec3(dot(l, rblReliefU), dot(l, rblReliefV), dot(l, rblReliefN));\n",
+    "    float rise = rblRelief.x - rblReliefBase;          // texels to the top\n",
+    "    if (!(d.z > 0.0) || !(rise > 0.0)) return 1.0;    // behind the card (the lights decide), or nothing above\n",
+    "    vec2 reach = d.xy*(rise/max(d.z, 0.125));\n",
+    "    float delta = 1.0/float(RBL_RELIEF_STEPS);\n",
+    "    for (int i = 1; i <= RBL_RELIEF_STEPS; i++)\n",
+    "    {\n",
+    "        float f = float(i)*delta;\n",
+    "        if (rblReliefHeight(map, rblReliefAt + reach*f) > rblReliefBase + rise*f) return 0.0;\n",
+    "    }\n",
+    "    return 1.0;\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_scene_composite_fs[] = {
     "// The opaque world drawn between RblBeginSceneDepth and RblEndSceneDepth, shown on the caller's target\n",
@@ -3451,7 +3573,32 @@ static const char *const rbl__shader_surface[] = {
     "    float metalness;    // GGX\n",
     "    vec2 caster;        // identity of the billboard the point lies on (two bytes /255; 0 = a Model): its own caster never shadows it\n",
     "    vec3 face;          // unit normal of the rasterised surface (the card's plane, a Model's triangle), either sign: shadow biasing\n",
+    "    float transmission; // share of the light on the card's back let through (transmission.glsl; 0 = none)\n",
     "};\n",
+    NULL };
+static const char *const rbl__shader_transmission[] = {
+    "// Transmission: light through a thin card (leaves, paper, cloth) from a light on its other side. The\n",
+    "// card is a thin diffuse sheet: of the irradiance reaching its back it lets through the share t\n",
+    "// (the material's rblTransmission x (1 - thickness)) and spreads it diffusely over the front, in\n",
+    "// its own colour (albedo). The back's cosine is wrapped by RBL_TRANSMISSION_WRAP: a light edge-on\n",
+    "// to the card still shows through its rim, fading to nothing at N.L = wrap on the lit side.\n",
+    "// Included by material.glsl (the uniform) and lights.glsl (the term); compiled only with:\n",
+    "//   RBL_TRANSMISSION            RblLitShaderDesc.transmission (forward variants)\n",
+    "//   RBL_THICKNESS_CHANNEL c     material texture component (3 b, 4 a) holding thickness 0..1\n",
+    "#include \"surface.glsl\"\n",
+    "\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "#define RBL_TRANSMISSION_WRAP 0.25\n",
+    "uniform float rblTransmission;      // share of the back's light let through, 0..1 (0: the term costs one compare)\n",
+    "\n",
+    "// Radiance toward the viewer per unit irradiance (pi folded in, as rblBrdf) from a light at\n",
+    "// cos(incidence) NdotL on the shaded side (negative: behind the card)\n",
+    "vec3 rblTransmitted(RblShadingPoint s, float NdotL)\n",
+    "{\n",
+    "    float back = clamp((RBL_TRANSMISSION_WRAP - NdotL)/(1.0 + RBL_TRANSMISSION_WRAP), 0.0, 1.0);\n",
+    "    return s.albedo*(s.transmission*back);\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_volume_vs[] = {
     "// Deferred light volume, vertex stage: a sphere proxy per bounded point/spot light, one instanced\n",
@@ -3496,6 +3643,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
     { "output.glsl", rbl__shader_output },
+    { "relief.glsl", rbl__shader_relief },
     { "scene_composite.fs.glsl", rbl__shader_scene_composite_fs },
     { "scene_composite.vs.glsl", rbl__shader_scene_composite_vs },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
@@ -3503,6 +3651,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "skinning.glsl", rbl__shader_skinning },
     { "soft.glsl", rbl__shader_soft },
     { "surface.glsl", rbl__shader_surface },
+    { "transmission.glsl", rbl__shader_transmission },
     { "volume.vs.glsl", rbl__shader_volume_vs },
 };
 // Each stage with its includes resolved, dependencies first (the loader joins these)
@@ -3511,13 +3660,13 @@ static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl_
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
 static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
+static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
-static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
+static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
@@ -6465,7 +6614,8 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth",
+    "rblTransmission", "rblRelief" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -6492,6 +6642,16 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
     if (in.softParticles && in.deferred) return "soft particles blend: a forward variant, not a G-buffer one";
     if (in.skinning && !RBL_GPU_SKINNING) return "skinning needs raylib built with SUPPORT_GPU_SKINNING (then define RBL_GPU_SKINNING 1 before the header)";
+    if ((m.height < RBL_CHANNEL_NONE) || (m.height > RBL_CHANNEL_A) || (m.thickness < RBL_CHANNEL_NONE) || (m.thickness > RBL_CHANNEL_A)) return "unknown material.height or material.thickness channel";
+    // A scalar map takes a channel nothing else of the layout uses
+    for (int c = RBL_CHANNEL_B; c <= RBL_CHANNEL_A; c++)
+    {
+        int users = (m.height == c) + (m.thickness == c) + ((c == RBL_CHANNEL_B)? (m.specular || (m.normalEncoding == RBL_NORMAL_RGB)) : m.occlusion);
+        if (users > 1) return "material.height/thickness share a channel with another map (B: specular, RGB normal; A: occlusion)";
+    }
+    if ((in.reliefSteps < 0) || (in.reliefSteps > RBL_MAX_RELIEF_STEPS)) return "reliefSteps outside 0..RBL_MAX_RELIEF_STEPS";
+    if (in.relief && (m.height == RBL_CHANNEL_NONE)) return "relief needs a height channel (material.height)";
+    if ((in.relief || in.transmission) && in.deferred) return "relief and transmission are forward-only (the G-buffer carries neither)";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
@@ -6512,6 +6672,12 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->softParticles = in.softParticles;
     out->crossFade = in.crossFade;
     out->debugOutput = in.debugOutput;
+    // Height and thickness are sampled only by the feature that reads them
+    out->transmission = in.transmission;
+    out->material.thickness = in.transmission? m.thickness : RBL_CHANNEL_NONE;
+    out->relief = in.relief;
+    out->material.height = in.relief? m.height : RBL_CHANNEL_NONE;
+    out->reliefSteps = in.relief? ((in.reliefSteps == 0)? 16 : in.reliefSteps) : 0;
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
@@ -6543,6 +6709,10 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     // The caster identity: shadow receivers and G-buffer geometry variants (rbl__compileProgram adds it to casters)
     if ((n > 0) && ((size_t)n < size) && ((d->shadowMaps > 0) || d->deferred)) n += snprintf(out + n, size - (size_t)n, "#define RBL_CASTER_ID\n");
     if ((n > 0) && ((size_t)n < size) && m->premultipliedAlpha) n += snprintf(out + n, size - (size_t)n, "#define RBL_PREMULTIPLIED_ALPHA\n");
+    if ((n > 0) && ((size_t)n < size) && d->transmission) n += snprintf(out + n, size - (size_t)n, "#define RBL_TRANSMISSION\n");
+    if ((n > 0) && ((size_t)n < size) && (m->thickness != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_THICKNESS_CHANNEL %i\n", m->thickness + 2);
+    if ((n > 0) && ((size_t)n < size) && (m->height != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_HEIGHT_CHANNEL %i\n", m->height + 2);
+    if ((n > 0) && ((size_t)n < size) && d->relief) n += snprintf(out + n, size - (size_t)n, "#define RBL_RELIEF_STEPS %i\n", d->reliefSteps);
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -6989,6 +7159,20 @@ static void rbl__materialValues(const rbl__Program *p, const Material *material,
         v->alphaCeiling = rbl__state.alphaBand.y;
     }
     v->emissiveColor.a = 0;                         // only rgb matters
+    if (p->key.desc.transmission)
+    {
+        float t = material->params[RBL_PARAM_TRANSMISSION];
+        v->transmission = !rbl__finite(t)? 0.0f : ((t < 0.0f)? 0.0f : ((t > 1.0f)? 1.0f : t));
+    }
+    if (p->key.desc.relief && (material->maps != NULL))
+    {
+        float h = material->maps[MATERIAL_MAP_HEIGHT].value;
+        Texture2D m = material->maps[MATERIAL_MAP_NORMAL].texture;
+        v->relief[0] = (!rbl__finite(h) || (h == 0.0f))? 4.0f : ((h < 0.0f)? 0.0f : ((h > 65536.0f)? 65536.0f : h));
+        v->relief[2] = (m.width > 0)? 1.0f/(float)m.width : 1.0f;
+        v->relief[3] = (m.height > 0)? 1.0f/(float)m.height : 1.0f;
+        if (m.id == 0) v->relief[0] = 0.0f;          // no material texture bound: no height to march
+    }
 }
 
 // Upload the material's values into bound program p, unless the last draw with p used the same ones
@@ -7014,6 +7198,8 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
         rlSetUniform(loc[RBL__U_EMISSIVE_COLOR], e, SHADER_UNIFORM_VEC3, 1);
     }
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_TRANSMISSION] != -1) rlSetUniform(loc[RBL__U_TRANSMISSION], &v.transmission, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_RELIEF] != -1) rlSetUniform(loc[RBL__U_RELIEF], v.relief, SHADER_UNIFORM_VEC4, 1);
 }
 
 

@@ -19,10 +19,12 @@
 #include "test_atlas_render.c"
 #include "test_fade.c"
 #include "test_held.c"
+#include "test_thin.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_API_TESTS,
         RBL_HELD_TESTS,
+        RBL_THIN_TESTS,
         RT_TEST(test_shaders_every_lit_variant_compiles_and_links),
         RT_TEST(test_shaders_compile_failure_is_reported_not_replaced_by_the_default),
         RT_TEST(test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u),

@@ -1,0 +1,289 @@
+// Thin sprites (issue #26 items 4 and 5), GPU, headless:
+// - transmission (RblLitShaderDesc.transmission, Material.params[RBL_PARAM_TRANSMISSION], thickness
+//   from a material channel): a card lit from behind against refTransmitted in lighting_reference.h
+//   (every light type, both BRDFs, the wrap zone, thickness), value 0 renders as the plain program;
+// - relief self-shadow (RblLitShaderDesc.relief): a step, a dome and a ridge marched toward
+//   directional lights, against a double-precision march of the same definition (every pixel whose
+//   decision is not within 1/500 texel of a texel edge or of the ray must agree) and against the
+//   continuous ray (the bounded march's error, stated).
+// Included by gpu_tests.h after test_lighting.c (its LitScene helpers).
+
+// ---- transmission ---------------------------------------------------------------------------
+static void test_thin_transmission_matches_the_double_reference(void)
+{
+    struct { const char *name; int brdf; int light; float transmission; int thickness; int view; } cases[] = {
+        { "directional behind", RBL_BRDF_LAMBERT, 0, 0.6f, 0, 0 },
+        { "point behind", RBL_BRDF_LAMBERT, 1, 0.8f, 0, 0 },
+        { "spot behind", RBL_BRDF_GGX, 2, 1.0f, 0, 0 },
+        { "front grazing (wrap)", RBL_BRDF_BLINN_PHONG, 3, 0.7f, 0, 0 },
+        { "front and behind", RBL_BRDF_GGX, 4, 0.5f, 0, 1 },
+        { "thickness in A", RBL_BRDF_LAMBERT, 1, 0.9f, RBL_CHANNEL_A, 0 },
+        { "thickness in B", RBL_BRDF_LAMBERT, 0, 1.0f, RBL_CHANNEL_B, 1 },
+        { "value above 1 clamps", RBL_BRDF_LAMBERT, 0, 7.0f, 0, 0 },
+    };
+    for (int i = 0; i < (int)(sizeof(cases)/sizeof(cases[0])); i++)
+    {
+        LitScene sc = litScene(cases[i].brdf);
+        sc.desc.transmission = true;
+        sc.values.transmission = cases[i].transmission;
+        sc.values.roughness = 0.5f;
+        switch (cases[i].light)
+        {
+            case 0: sc.lights[0] = litDirectional((Vector3){ 0.3f, -0.2f, 1.0f }, 2.0f); sc.count = 1; break;
+            case 1: sc.lights[0] = litPoint((Vector3){ 0.4f, 0.3f, -1.2f }, 3.0f, 6.0f); sc.count = 1; break;
+            case 2: sc.lights[0] = litSpot((Vector3){ 0.2f, 0.0f, -2.0f }, (Vector3){ -0.1f, 0.0f, 1.0f }, 15.0f, 35.0f, 9.0f); sc.count = 1; break;
+            case 3: sc.lights[0] = litDirectional((Vector3){ -1.0f, 0.0f, -0.12f }, 3.0f); sc.count = 1; break;      // N.L = 0.12: reflected and wrapped
+            default:
+                sc.lights[0] = litPoint((Vector3){ 0.5f, 0.5f, 1.5f }, 2.0f, 8.0f);
+                sc.lights[1] = litDirectional((Vector3){ -0.2f, 0.1f, 1.0f }, 1.5f);
+                sc.count = 2; break;
+        }
+        if (cases[i].thickness != RBL_CHANNEL_NONE)
+        {
+            sc.materialMap = true;
+            sc.thickness = cases[i].thickness;
+            sc.normal = (cases[i].thickness == RBL_CHANNEL_A)? (Color){ 0, 0, 0, 102 } : (Color){ 0, 0, 153, 255 };
+        }
+        if (cases[i].view) sc.camera = grazingCamera();
+        char name[64];
+        snprintf(name, sizeof(name), "transmission-%d", i);
+        LitError e = litCheckAgainstReference(&sc, name, 2.0, 0.25);
+        printf("    %-24s max %.0f mean %.4f /255 over %d pixels, reference %.1f..%.1f\n", cases[i].name, e.max, e.mean, e.pixels, e.refMin, e.refMax);
+        // Behind-lit cases: the term is what lights the card (ambient alone is 20..30/255)
+        if (cases[i].light <= 2) RT_CHECK(e.refMax > 60.0, "%s: the reference hardly transmits (%.1f): the case tests nothing", cases[i].name, e.refMax);
+    }
+}
+
+static void test_thin_transmission_zero_renders_as_the_program_without_it(void)
+{
+    LitScene sc = litScene(RBL_BRDF_GGX);
+    sc.lights[0] = litPoint((Vector3){ 0.4f, 0.3f, 1.0f }, 2.0f, 6.0f);
+    sc.lights[1] = litDirectional((Vector3){ 0.3f, -0.2f, 1.0f }, 2.0f);       // behind: lets nothing through at 0
+    sc.count = 2;
+    LitRender plain = litRender(&sc, 0);
+    sc.desc.transmission = true;
+    LitRender zero = litRender(&sc, 0);
+    int differ = litDifferingPixels(plain.image, zero.image);
+    RT_CHECK(differ == 0, "%d pixels differ between transmission 0 and no transmission compiled", differ);
+    sc.values.transmission = 0.5f;
+    LitRender some = litRender(&sc, 0);
+    RT_CHECK(litDifferingPixels(plain.image, some.image) > LIT_TARGET*LIT_TARGET/2, "transmission 0.5 changed too few pixels");
+    // Rejections: forward only; a thickness channel another map uses
+    int before = warnings;
+    RblLitShaderDesc bad;
+    memset(&bad, 0, sizeof(bad));
+    bad.transmission = true; bad.deferred = true;
+    Shader s = RblLoadLitShader(bad);
+    RT_CHECK(!RblIsLitShaderValid(s) && (warnings == before + 1), "a deferred transmission variant was not refused with one log line");
+    memset(&bad, 0, sizeof(bad));
+    bad.transmission = true; bad.material.occlusion = true; bad.material.thickness = RBL_CHANNEL_A;
+    s = RblLoadLitShader(bad);
+    RT_CHECK(!RblIsLitShaderValid(s) && (warnings == before + 2), "thickness in occlusion's channel was not refused with one log line");
+    litRenderUnload(&plain); litRenderUnload(&zero); litRenderUnload(&some);
+}
+
+// ---- relief self-shadow ---------------------------------------------------------------------
+#define THIN_TARGET 128
+#define THIN_TEXELS 32
+#define THIN_CARD 3.0f
+enum { THIN_STEP = 0, THIN_DOME, THIN_RIDGE, THIN_FIELDS };
+static const char *const thinFieldNames[THIN_FIELDS] = { "step", "dome", "ridge" };
+
+// 8-bit height of field f at texel (x, y) (row 0 at the top of the image)
+static int thinHeight(int f, int x, int y)
+{
+    double cx = x + 0.5, cy = y + 0.5, h;
+    if (f == THIN_STEP) h = (x >= 16)? 1.0 : 0.0;
+    else if (f == THIN_DOME) { double r2 = ((cx - 16.0)*(cx - 16.0) + (cy - 16.0)*(cy - 16.0))/100.0; h = (r2 < 1.0)? sqrt(1.0 - r2) : 0.0; }
+    else h = fmax(0.0, 1.0 - fabs(cx + 0.5*cy - 20.0)/4.0);
+    return (int)floor(h*255.0 + 0.5);
+}
+
+typedef struct ThinMarch { bool lit, fragile; } ThinMarch;
+
+// The relief march in doubles: from texel point t (texel units), heights in texels (8-bit h x depth),
+// toward tangent-space direction d = (+U, +V, out of the card); `steps` evenly spaced samples up to
+// the top (0 = the continuous ray: every texel crossed). fragile: a sample within 1/500 texel of a
+// texel edge or of the ray's height (float rounding may go either way there)
+static ThinMarch thinMarch(int f, double tx, double ty, D3 d, double depth, int steps)
+{
+    ThinMarch m = { true, false };
+    const double eps = 0.002;
+    int x0 = (int)floor(tx), y0 = (int)floor(ty);
+    double fx = tx - x0, fy = ty - y0;
+    if ((fmin(fx, 1.0 - fx) < eps) || (fmin(fy, 1.0 - fy) < eps)) m.fragile = true;
+    x0 = (x0 < 0)? 0 : ((x0 > THIN_TEXELS - 1)? THIN_TEXELS - 1 : x0);
+    y0 = (y0 < 0)? 0 : ((y0 > THIN_TEXELS - 1)? THIN_TEXELS - 1 : y0);
+    double base = thinHeight(f, x0, y0)/255.0*depth, rise = depth - base;
+    if (!(d.z > 0.0) || !(rise > 0.0)) return m;
+    double rx = d.x*rise/fmax(d.z, 0.125), ry = d.y*rise/fmax(d.z, 0.125);
+    int n = (steps > 0)? steps : 8192;
+    for (int i = 1; i <= n; i++)
+    {
+        double s = (double)i/n, px = tx + rx*s, py = ty + ry*s;
+        double gx = floor(px), gy = floor(py);
+        if ((steps > 0) && ((fmin(px - gx, gx + 1.0 - px) < eps) || (fmin(py - gy, gy + 1.0 - py) < eps))) m.fragile = true;
+        int xi = (int)gx, yi = (int)gy;
+        xi = (xi < 0)? 0 : ((xi > THIN_TEXELS - 1)? THIN_TEXELS - 1 : xi);
+        yi = (yi < 0)? 0 : ((yi > THIN_TEXELS - 1)? THIN_TEXELS - 1 : yi);
+        double h = thinHeight(f, xi, yi)/255.0*depth, z = base + rise*s;
+        if ((steps > 0) && (fabs(h - z) < eps)) m.fragile = true;
+        if (h > z) { m.lit = false; break; }
+    }
+    return m;
+}
+
+static Camera3D thinCamera(void)
+{
+    Camera3D c;
+    memset(&c, 0, sizeof(c));
+    c.position = (Vector3){ 0.0f, 0.0f, 4.0f };
+    c.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    c.fovy = THIN_CARD*1.04f;
+    c.projection = CAMERA_ORTHOGRAPHIC;
+    return c;
+}
+
+// Renders the card (height field f in the material texture's A, albedo grey) lit by one directional
+// light travelling along dir; steps 0 = a program without relief
+static Image thinRenderRelief(int f, Vector3 dir, float depth, int steps)
+{
+    Image heights = GenImageColor(THIN_TEXELS, THIN_TEXELS, BLANK);
+    for (int y = 0; y < THIN_TEXELS; y++)
+        for (int x = 0; x < THIN_TEXELS; x++) ImageDrawPixel(&heights, x, y, (Color){ 0, 0, 0, (unsigned char)thinHeight(f, x, y) });
+    Texture2D material = LoadTextureFromImage(heights);
+    UnloadImage(heights);
+    Texture2D albedo = solidTexture((Color){ 200, 200, 200, 255 });
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1;
+    desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+    desc.material.height = RBL_CHANNEL_A;
+    desc.relief = steps > 0;
+    desc.reliefSteps = steps;
+    Shader lit = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(lit), "relief variant (%d steps) failed to load", steps);
+    RblLight light;
+    memset(&light, 0, sizeof(light));
+    light.type = RBL_LIGHT_DIRECTIONAL; light.direction = dir; light.color = WHITE; light.intensity = 1.0f;
+    RT_CHECK(renderSetLights(&light, 1, (Color){ 40, 40, 40, 255 }), "scene rejected");
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m.maps[MATERIAL_MAP_NORMAL].texture = material;
+    m.maps[MATERIAL_MAP_HEIGHT].value = depth;
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ THIN_CARD, THIN_CARD };
+    b.origin = (Vector2){ THIN_CARD*0.5f, THIN_CARD*0.5f };
+    b.facing = RBL_FACING_FIXED;
+    b.axis = (Vector3){ 0.0f, 0.0f, 1.0f };
+    b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    RenderTexture2D rt = LoadRenderTexture(THIN_TARGET, THIN_TARGET);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(thinCamera());
+    RblDrawBillboard(thinCamera(), m, b);
+    EndMode3D();
+    EndTextureMode();
+    Image out = rtReadTarget(rt);
+    UnloadRenderTexture(rt);
+    UnloadTexture(material); UnloadTexture(albedo);
+    MemFree(m.maps);
+    RblUnloadLitShader(&lit);
+    return out;
+}
+
+typedef struct ThinReliefStats { int compared, fragile, mirrorMismatch, valueOff, continuousMismatch, shadowed; } ThinReliefStats;
+
+// Compares a render against the double march: pixel (px, py) -> texel point, expected lit/shadowed
+// colour (Lambert, flat card facing +Z, ambient 40 grey, albedo 200 grey)
+static ThinReliefStats thinCompareRelief(Image img, int f, Vector3 dir, double depth, int steps)
+{
+    ThinReliefStats st;
+    memset(&st, 0, sizeof(st));
+    D3 l = dNorm(dScale(d3f(dir), -1.0));
+    D3 d = d3(l.x, -l.y, l.z);                   // +U = +X, +V = -Y (down the image), out = +Z
+    double albedo = srgbDecode(200/255.0), ambient = srgbDecode(40/255.0);
+    double litValue = srgbEncode(albedo*(ambient + fmax(l.z, 0.0)))*255.0, darkValue = srgbEncode(albedo*ambient)*255.0;
+    Camera3D cam = thinCamera();
+    for (int py = 0; py < THIN_TARGET; py++)
+        for (int px = 0; px < THIN_TARGET; px++)
+        {
+            D3 p;
+            if (!refPixelOnPlane(cam, THIN_TARGET, THIN_TARGET, px, py, d3(0, 0, 0), d3(0, 0, 1), &p)) continue;
+            double u = (p.x + THIN_CARD*0.5)/THIN_CARD, v = (THIN_CARD*0.5 - p.y)/THIN_CARD;
+            if ((u < 0.005) || (u > 0.995) || (v < 0.005) || (v > 0.995)) continue;
+            ThinMarch want = thinMarch(f, u*THIN_TEXELS, v*THIN_TEXELS, d, depth, steps);
+            ThinMarch exact = thinMarch(f, u*THIN_TEXELS, v*THIN_TEXELS, d, depth, 0);
+            Color c = rtPixel(img, px, py);
+            bool gotLit = fabs(c.g - litValue) < fabs(c.g - darkValue);
+            double off = fabs(c.g - floor((gotLit? litValue : darkValue) + 0.5));
+            st.compared++;
+            if (!gotLit) st.shadowed++;
+            if (off > 2.0) st.valueOff++;
+            if (gotLit != exact.lit) st.continuousMismatch++;
+            if (want.fragile) { st.fragile++; continue; }
+            if (gotLit != want.lit) st.mirrorMismatch++;
+        }
+    return st;
+}
+
+static void test_thin_relief_matches_the_double_march_on_a_step_a_dome_and_a_ridge(void)
+{
+    const Vector3 dirs[5] = { { -1.0f, 0.0f, -1.0f }, { 0.0f, 1.0f, -0.6f }, { 0.7f, -0.5f, -0.9f }, { -0.3f, -1.0f, -0.5f }, { 0.9f, 0.4f, -2.5f } };
+    const int stepsOf[3] = { 16, 5, 48 };
+    const double depth = 6.0;
+    int worstContinuous = 0, compared = 0, fragile = 0, shadowed = 0;
+    printf("    %-6s %-5s %-22s %8s %8s %9s %9s %10s\n", "field", "steps", "light direction", "pixels", "shadowed", "fragile", "mismatch", "vs exact");
+    for (int f = 0; f < THIN_FIELDS; f++)
+        for (int di = 0; di < 5; di++)
+            for (int si = 0; si < 3; si++)
+            {
+                if ((si > 0) && (di > 1)) continue;        // other step counts on two lights
+                Image img = thinRenderRelief(f, dirs[di], (float)depth, stepsOf[si]);
+                ThinReliefStats st = thinCompareRelief(img, f, dirs[di], depth, stepsOf[si]);
+                printf("    %-6s %5d (%5.2f,%5.2f,%5.2f)     %8d %8d %9d %9d %10d\n", thinFieldNames[f], stepsOf[si], dirs[di].x, dirs[di].y, dirs[di].z,
+                       st.compared, st.shadowed, st.fragile, st.mirrorMismatch, st.continuousMismatch);
+                RT_CHECK(st.compared > THIN_TARGET*THIN_TARGET/2, "%s: only %d pixels compared", thinFieldNames[f], st.compared);
+                RT_CHECK(st.mirrorMismatch == 0, "%s dir %d, %d steps: %d pixels decide unlike the double march", thinFieldNames[f], di, stepsOf[si], st.mirrorMismatch);
+                RT_CHECK(st.valueOff == 0, "%s dir %d: %d pixels more than 2/255 from the lit or shadowed value", thinFieldNames[f], di, st.valueOff);
+                // The bounded march against the continuous ray (it steps over thin features): at 16 steps
+                // at most 2 % of the card's pixels decide otherwise, at 48 at most 0.5 %
+                if (stepsOf[si] >= 16) RT_CHECK(st.continuousMismatch*((stepsOf[si] >= 48)? 200 : 50) <= st.compared, "%s dir %d, %d steps: %d of %d pixels differ from the continuous ray",
+                                                thinFieldNames[f], di, stepsOf[si], st.continuousMismatch, st.compared);
+                if (rtFailuresInCurrentTest() > 0) { char tag[48]; snprintf(tag, sizeof(tag), "relief-%s-%d-%d", thinFieldNames[f], di, stepsOf[si]); rtSaveImage(img, tag); }
+                if ((stepsOf[si] >= 16) && (st.continuousMismatch > worstContinuous)) worstContinuous = st.continuousMismatch;
+                compared += st.compared; fragile += st.fragile; shadowed += st.shadowed;
+                UnloadImage(img);
+            }
+    printf("    %d pixels compared, %d shadowed by relief, %d fragile (within 1/500 texel: not judged); worst vs the continuous ray at >= 16 steps: %d pixels\n",
+           compared, shadowed, fragile, worstContinuous);
+    RT_CHECK(shadowed > compared/20, "relief shadowed only %d of %d pixels: the fields test nothing", shadowed, compared);
+}
+
+static void test_thin_relief_off_and_flat_relief_shadow_nothing(void)
+{
+    // The same field without the flag, and with relief height 0 (negative clamps): every pixel lit
+    const Vector3 dir = { -1.0f, 0.0f, -1.0f };
+    Image off = thinRenderRelief(THIN_STEP, dir, 6.0f, 0);
+    Image flat = thinRenderRelief(THIN_STEP, dir, -3.0f, 16);
+    ThinReliefStats a = thinCompareRelief(off, THIN_STEP, dir, 0.0, 16), b = thinCompareRelief(flat, THIN_STEP, dir, 0.0, 16);
+    RT_CHECK((a.shadowed == 0) && (b.shadowed == 0), "relief off / height <= 0 shadowed %d / %d pixels", a.shadowed, b.shadowed);
+    UnloadImage(off); UnloadImage(flat);
+    int before = warnings;
+    RblLitShaderDesc bad;
+    memset(&bad, 0, sizeof(bad));
+    bad.relief = true;                                  // no height channel
+    Shader s = RblLoadLitShader(bad);
+    RT_CHECK(!RblIsLitShaderValid(s) && (warnings == before + 1), "relief without a height channel was not refused with one log line");
+    bad.material.height = RBL_CHANNEL_B; bad.reliefSteps = RBL_MAX_RELIEF_STEPS + 1;
+    s = RblLoadLitShader(bad);
+    RT_CHECK(!RblIsLitShaderValid(s) && (warnings == before + 2), "reliefSteps above the maximum was not refused with one log line");
+}
+
+#define RBL_THIN_TESTS \
+        RT_TEST(test_thin_transmission_matches_the_double_reference), \
+        RT_TEST(test_thin_transmission_zero_renders_as_the_program_without_it), \
+        RT_TEST(test_thin_relief_matches_the_double_march_on_a_step_a_dome_and_a_ridge), \
+        RT_TEST(test_thin_relief_off_and_flat_relief_shadow_nothing)
