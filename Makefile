@@ -205,6 +205,10 @@ $(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h te
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_shadows.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
+$(BUILD)/bench/bench_thin: tests/bench/bench_thin.c tests/bench/bench.h tests/relief_reference.h tests/reference.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_thin.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
 $(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_skinning.c tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -246,7 +250,7 @@ $(BUILD)/bench/bench_blend: tests/bench/bench_blend.c tests/bench/bench.h $(HARN
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_blend.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:
