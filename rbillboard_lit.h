@@ -507,6 +507,10 @@
 *           else 0, and desc.skinning is refused: without it Mesh.vboId has no bone buffers).
 *       #define RBL_SHADOW_MAX_FILTER 6
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
+*       #define RBL_SHADOW_TINT_TEXTURE_UNIT 6
+*           Shadow map k's transmittance target goes to unit 6 + k in programs with
+*           desc.shadowTransmittance (bound at each of their draws; a Model material with textures
+*           in raylib's HEIGHT..PREFILTER slots would take those units while DrawMesh draws it).
 *       #define RBL_MAX_RELIEF_STEPS 64
 *           Largest relief self-shadow march (desc.reliefSteps), samples per light.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
@@ -706,6 +710,9 @@
 #endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
+#endif
+#ifndef RBL_SHADOW_TINT_TEXTURE_UNIT
+    #define RBL_SHADOW_TINT_TEXTURE_UNIT 6      // Map k's transmittance target on unit 6 + k (shadowTransmittance receivers; raylib's HEIGHT..PREFILTER slots)
 #endif
 #ifndef RBL_MAX_RELIEF_STEPS
     #define RBL_MAX_RELIEF_STEPS 64             // Largest relief march (desc.reliefSteps), samples per light
@@ -984,6 +991,7 @@ typedef struct RblLitShaderDesc {
     bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (forward only)
     bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (forward only)
     int reliefSteps;                // Relief samples per light, 1..RBL_MAX_RELIEF_STEPS (0 = 16)
+    bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward only)
 } RblLitShaderDesc;
 
 // Per-material values a lit program reads from raylib's Material at each draw (zero means default):
@@ -1062,12 +1070,14 @@ typedef struct RblShadowDesc {
     float minCastAngle;             // AXIS billboards tilt until the light sees them at >= this, degrees (0 = 30; negative = never)
     bool faceCamera;                // Billboards cast facing the billboard call's camera (default: facing the light; see SHADOWS)
     bool selfShadow;                // No caster identities: billboards may shadow themselves, no casters target (4 B/texel less)
+    bool transmittance;             // RGBA8 transmittance target for blended casters (RblBeginShadowBlend; +4 B/texel; not on ES 2)
 } RblShadowDesc;
 
 // Shadow map of one directional or spot light: a depth texture and its light camera (caster programs are the header's)
 typedef struct RblShadowMap {
     Texture2D depth;                // Depth texture of the pass (receivers sample it only with desc.selfShadow)
     Texture2D casters;              // RGBA8: per texel the nearest caster's distance (16 bits) and identity (16 bits), what receivers sample (id 0 with desc.selfShadow)
+    Texture2D transmittance;        // RGBA8: rgb the light blended casters let through (product), a the nearest one's distance (8 bits) (id 0 without desc.transmittance)
     int size;                       // Texels per side
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
@@ -1252,6 +1262,8 @@ RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            //
 RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and zero it
 RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex, Vector3 focusCenter, float focusRadius); // Shadow pass of scene->lights[lightIndex]: directional = orthographic over the focus sphere, spot = its cone; false = rejected
 RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
+RBLAPI bool RblBeginShadowBlend(bool coloured);                                // Inside a shadow pass of a map with desc.transmittance: draws are blended casters (coverage; coloured: x their colour); false = rejected
+RBLAPI void RblEndShadowBlend(void);                                           // Back to opaque casters (RblEndShadowMap ends it too)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
 // Sprite-sheet atlases and animation (CPU, no GL needed)
@@ -1341,7 +1353,7 @@ typedef enum {
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
-    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_TRANSMISSION, RBL__U_RELIEF,
+    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1500,7 +1512,11 @@ typedef struct rbl__ShadowMapState {
     Matrix savedView;               // rlgl state restored by RblEndShadowMap: matrices and framebuffer
     Matrix savedProjection;
     unsigned int savedFramebuffer;
+    unsigned int blendId;           // Framebuffer of the transmittance target (and the same depth texture), 0 = none
     bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
+    bool blending;                  // Between RblBeginShadowBlend() and RblEndShadowBlend()
+    bool coloured;                  // ... and the blended casters tint by their colour
+    Vector2 savedAlphaBand;         // rbl__state.alphaBand outside the blended casters
 } rbl__ShadowMapState;
 
 // What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
@@ -1530,6 +1546,7 @@ typedef struct rbl__Scene {
     bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
     bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
+    unsigned int shadowTint[RBL_MAX_SHADOWS];       // Each map's transmittance target (0 = none)
     float shadowUniforms[RBL_MAX_SHADOWS][32];      // Matrix rows, params, bias, axes as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
@@ -1575,7 +1592,7 @@ typedef struct rbl__State {
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
     RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
-    unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
+    unsigned int casterIds[7];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced, blended vertex buffers and instanced: compiled on first use)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
@@ -2225,9 +2242,11 @@ static const char *const rbl__shader_lights[] = {
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
     "//   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)\n",
     "//   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)\n",
+    "//   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)\n",
     "#include \"surface.glsl\"\n",
     "#include \"ambient.glsl\"\n",
     "#include \"shadows.glsl\"\n",
+    "#include \"shadow_tint.glsl\"\n",
     "#include \"transmission.glsl\"\n",
     "\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
@@ -2363,6 +2382,18 @@ static const char *const rbl__shader_lights[] = {
     "#if RBL_SHADOWS > 3\n",
     "    shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);\n",
     "#endif\n",
+    "#ifdef RBL_SHADOW_TINT\n",
+    "    vec3 tint0 = rblShadowTint(0, s.position), tint1 = vec3(1.0), tint2 = vec3(1.0), tint3 = vec3(1.0);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    tint1 = rblShadowTint(1, s.position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    tint2 = rblShadowTint(2, s.position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    tint3 = rblShadowTint(3, s.position);\n",
+    "#endif\n",
+    "#endif\n",
     "#endif\n",
     "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
     "    {\n",
@@ -2383,7 +2414,12 @@ static const char *const rbl__shader_lights[] = {
     "#else\n",
     "        float shadow = 1.0;\n",
     "#endif\n",
+    "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
+    "        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));\n",
+    "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow)*tint;\n",
+    "#else\n",
     "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);\n",
+    "#endif\n",
     "    }\n",
     "#endif\n",
     "    return sum;\n",
@@ -3324,9 +3360,15 @@ static const char *const rbl__shader_shadow_caster_fs[] = {
     "//        window depth (linear over near..far); perspective, log(d/near)/log(far/near), a step a fixed\n",
     "//        share of the distance, as a perspective texel is\n",
     "//   ba   its caster identity: a billboard's from its pivot, 0 for Models (shadows.glsl)\n",
+    "// Blended casters (RBL_CASTER_TRANSMIT, RblBeginShadowBlend) write the transmittance target instead\n",
+    "// (shadow_tint.glsl): rgb what they let through, multiplied in by the blending (1 - alpha, or\n",
+    "// mix(1, colour, alpha) with rblCasterTint 1), a the distance code's top 8 bits (kept by min blending)\n",
     "#include \"material.glsl\"\n",
     "\n",
     "uniform vec4 rblCasterDepth;    // perspective (0/1), near, far, log(far/near)\n",
+    "#ifdef RBL_CASTER_TRANSMIT\n",
+    "uniform float rblCasterTint;    // 1: tinted by the caster's colour, 0: grey (coverage only)\n",
+    "#endif\n",
     "#if RBL_GLSL >= 300\n",
     "out vec4 rblOutCaster;\n",
     "#else\n",
@@ -3340,10 +3382,78 @@ static const char *const rbl__shader_shadow_caster_fs[] = {
     "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff\n",
     "    float code = gl_FragCoord.z;\n",
     "    if (rblCasterDepth.x > 0.5) code = log(max(1.0/gl_FragCoord.w, rblCasterDepth.y)/rblCasterDepth.y)/rblCasterDepth.w;\n",
+    "#ifdef RBL_CASTER_TRANSMIT\n",
+    "    vec3 through = (rblCasterTint > 0.5)? sp.albedo : vec3(0.0);\n",
+    "    rblOutCaster = vec4(mix(vec3(1.0), through, clamp(alpha, 0.0, 1.0)), floor(clamp(code, 0.0, 1.0)*255.0)/255.0);\n",
+    "    return;\n",
+    "#endif\n",
     "    float v = floor(clamp(code, 0.0, 1.0)*65535.0 + 0.5);\n",
     "    float high = floor(v/256.0);\n",
     "    rblOutCaster = vec4(high/255.0, (v - high*256.0)/255.0, sp.caster);\n",
     "}\n",
+    NULL };
+static const char *const rbl__shader_shadow_tint[] = {
+    "// Shadow tint: what blended casters (smoke, coloured glass; RblBeginShadowBlend) let through to a\n",
+    "// receiver behind them. Each map with RblShadowDesc.transmittance has an RGBA8 target: rgb the product\n",
+    "// of the blended casters' transmittance over that texel (coverage a: 1 - a, or mix(1, colour, a)\n",
+    "// coloured), a the nearest one's distance code in 8 bits (shadow_caster.fs.glsl); only casters in\n",
+    "// front of the opaque depth were kept. A receiver more than 1.5 code steps behind that distance\n",
+    "// takes the texel's tint: a caster never tints itself or what lies in front of it. Bilinear over the\n",
+    "// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers only.\n",
+    "//   RBL_SHADOW_TINT          RblLitShaderDesc.shadowTransmittance (needs RBL_SHADOWS > 0)\n",
+    "#include \"shadows.glsl\"\n",
+    "\n",
+    "#if defined(RBL_SHADOW_TINT) && (RBL_SHADOWS > 0)\n",
+    "uniform sampler2D rblShadowTint0;           // units RBL_SHADOW_TINT_TEXTURE_UNIT + k (white 1 x 1 where a map has none)\n",
+    "#if RBL_SHADOWS > 1\n",
+    "uniform sampler2D rblShadowTint1;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "uniform sampler2D rblShadowTint2;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "uniform sampler2D rblShadowTint3;\n",
+    "#endif\n",
+    "\n",
+    "vec3 rblTintLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, float size, vec3 position)\n",
+    "{\n",
+    "    vec4 c = rblShadowTransform(r0, r1, r2, r3, position);\n",
+    "    if (!(c.w > 0.0)) return vec3(1.0);\n",
+    "    vec3 q = c.xyz/c.w;\n",
+    "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return vec3(1.0);\n",
+    "    bool perspective = mod(prm.y, 2.0) > 0.5;\n",
+    "    float d = rblShadowDistance(max(q.z, 0.0), vec4(prm.x, perspective? 1.0 : 0.0, prm.zw));\n",
+    "    float code = perspective? log(max(d, prm.z)/prm.z)/log(prm.w/prm.z) : (d - prm.z)/(prm.w - prm.z);\n",
+    "    vec2 st = q.xy*size - 0.5;\n",
+    "    vec2 base = floor(st), f = st - base;\n",
+    "    vec3 sum = vec3(0.0);\n",
+    "    for (int j = 0; j < 2; j++)\n",
+    "        for (int i = 0; i < 2; i++)\n",
+    "        {\n",
+    "            vec2 at = clamp(base + vec2(float(i), float(j)), vec2(0.0), vec2(size - 1.0));\n",
+    "            vec4 t = rblFetch(map, ivec2(at), size);\n",
+    "            float w = ((i == 0)? 1.0 - f.x : f.x)*((j == 0)? 1.0 - f.y : f.y);\n",
+    "            sum += w*((code > t.a + 1.5/255.0)? t.rgb : vec3(1.0));\n",
+    "        }\n",
+    "    return sum;\n",
+    "}\n",
+    "\n",
+    "// Map k's tint at a world position (1: untinted)\n",
+    "vec3 rblShadowTint(int k, vec3 position)\n",
+    "{\n",
+    "    if (k == 0) return rblTintLookup(rblShadowTint0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3], rblShadowParams[0], rblShadowBias[0].w, position);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    if (k == 1) return rblTintLookup(rblShadowTint1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7], rblShadowParams[1], rblShadowBias[1].w, position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    if (k == 2) return rblTintLookup(rblShadowTint2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11], rblShadowParams[2], rblShadowBias[2].w, position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    if (k == 3) return rblTintLookup(rblShadowTint3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15], rblShadowParams[3], rblShadowBias[3].w, position);\n",
+    "#endif\n",
+    "    return vec3(1.0);\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_shadows[] = {
     "// Shadows: the shadow maps a receiver samples and the lookup (bias, receiver plane, PCF). Which\n",
@@ -3647,6 +3757,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "scene_composite.fs.glsl", rbl__shader_scene_composite_fs },
     { "scene_composite.vs.glsl", rbl__shader_scene_composite_vs },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
+    { "shadow_tint.glsl", rbl__shader_shadow_tint },
     { "shadows.glsl", rbl__shader_shadows },
     { "skinning.glsl", rbl__shader_skinning },
     { "soft.glsl", rbl__shader_soft },
@@ -3660,11 +3771,11 @@ static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl_
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
 static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
+static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
 static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
@@ -6615,7 +6726,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth",
-    "rblTransmission", "rblRelief" };
+    "rblTransmission", "rblRelief", "rblCasterTint" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -6652,6 +6763,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.reliefSteps < 0) || (in.reliefSteps > RBL_MAX_RELIEF_STEPS)) return "reliefSteps outside 0..RBL_MAX_RELIEF_STEPS";
     if (in.relief && (m.height == RBL_CHANNEL_NONE)) return "relief needs a height channel (material.height)";
     if ((in.relief || in.transmission) && in.deferred) return "relief and transmission are forward-only (the G-buffer carries neither)";
+    if (in.shadowTransmittance && ((in.shadowMaps == 0) || in.deferred)) return "shadowTransmittance needs shadowMaps > 0 in a forward variant";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
@@ -6678,6 +6790,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->relief = in.relief;
     out->material.height = in.relief? m.height : RBL_CHANNEL_NONE;
     out->reliefSteps = in.relief? ((in.reliefSteps == 0)? 16 : in.reliefSteps) : 0;
+    out->shadowTransmittance = in.shadowTransmittance;
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
@@ -6713,6 +6826,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     if ((n > 0) && ((size_t)n < size) && (m->thickness != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_THICKNESS_CHANNEL %i\n", m->thickness + 2);
     if ((n > 0) && ((size_t)n < size) && (m->height != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_HEIGHT_CHANNEL %i\n", m->height + 2);
     if ((n > 0) && ((size_t)n < size) && d->relief) n += snprintf(out + n, size - (size_t)n, "#define RBL_RELIEF_STEPS %i\n", d->reliefSteps);
+    if ((n > 0) && ((size_t)n < size) && d->shadowTransmittance) n += snprintf(out + n, size - (size_t)n, "#define RBL_SHADOW_TINT\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -6898,7 +7012,8 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
     size_t used = strlen(defines);
-    if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
+    if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
+    if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
@@ -6957,6 +7072,13 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
         char name[32];
         snprintf(name, sizeof(name), "rblShadowMap%i", k);
         int unit = RBL_SHADOW_TEXTURE_UNIT + k;
+        rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
+    }
+    for (int k = 0; d->shadowTransmittance && (k < d->shadowMaps); k++)
+    {
+        char name[32];
+        snprintf(name, sizeof(name), "rblShadowTint%i", k);
+        int unit = RBL_SHADOW_TINT_TEXTURE_UNIT + k;
         rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
     }
     int none[4] = { -1, -1, -1, -1 };
@@ -7290,6 +7412,37 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
     return caster;
 }
 
+// The blended casters (vertex buffers, instanced: RblBeginShadowBlend), compiled on first use and held
+// (one holder each) until the last shadow map goes; NULL (problem set) on failure
+static rbl__Program *rbl__blendCaster(bool instanced)
+{
+    unsigned int *id = &rbl__state.casterIds[instanced? 6 : 5];
+    rbl__Program *caster = rbl__findCaster(*id);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc desc, normalised;
+    memset(&desc, 0, sizeof(desc));
+    desc.instanced = instanced;
+    rbl__normaliseLitDesc(desc, &normalised);
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 1, &key);
+    caster = rbl__acquireProgram(&key);
+    *id = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
+// A shadowTransmittance program's per-draw inputs: map k's transmittance target on its unit (the
+// default white texture where the scene's map has none: nothing tinted)
+static void rbl__bindSceneTints(const rbl__Program *p)
+{
+    for (int k = 0; k < p->key.desc.shadowMaps; k++)
+    {
+        unsigned int id = (k < rbl__state.scene.shadowCount)? rbl__state.scene.shadowTint[k] : 0;
+        rlActiveTextureSlot(RBL_SHADOW_TINT_TEXTURE_UNIT + k);
+        rlEnableTexture((id != 0)? id : rlGetTextureIdDefault());
+    }
+    rlActiveTextureSlot(0);
+}
+
 // A soft-particle program's per-draw depth inputs: the scene's depth texture on its unit, the current
 // projection's depth row (as the fragment's own depth was made), its texel size and the material's
 // fade distance
@@ -7324,9 +7477,13 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
-        // Billboards with fade data cast the mixed cut-out (a crossFade caster); others the plain one
-        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : fade? rbl__fadeCaster(path == RBL__PATH_INSTANCED) :
-                               rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        // Billboards with fade data cast the mixed cut-out (a crossFade caster); others the plain one;
+        // blended casters (RblBeginShadowBlend) their coverage, the first frame's
+        const rbl__ShadowMapState *pass = rbl__state.shadowPass->state;
+        if (pass->blending && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned Models cannot be blended casters (RblEndShadowBlend first)", fn); return false; }
+        rbl__Program *caster = pass->blending? rbl__blendCaster(path == RBL__PATH_INSTANCED) : (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() :
+                               fade? rbl__fadeCaster(path == RBL__PATH_INSTANCED) : rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        if ((caster == NULL) && pass->blending) { TraceLog(LOG_WARNING, "RBL: %s: blended shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
@@ -7336,6 +7493,8 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         float depth[4] = { perspective? 1.0f : 0.0f, st->nearPlane, st->farPlane, perspective? logf(st->farPlane/st->nearPlane) : 1.0f };
         rlEnableShader(caster->shader.id);
         rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
+        float tint = pass->coloured? 1.0f : 0.0f;
+        if (caster->loc[RBL__U_CASTER_TINT] != -1) rlSetUniform(caster->loc[RBL__U_CASTER_TINT], &tint, SHADER_UNIFORM_FLOAT, 1);
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
@@ -7348,6 +7507,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
     if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
+    if ((*program)->key.desc.shadowTransmittance) rbl__bindSceneTints(*program);
     return true;
 }
 
@@ -7433,7 +7593,7 @@ static void rbl__dropSceneShadow(unsigned int id)
     if (k == s->shadowCount) return;
     for (int j = k; j + 1 < s->shadowCount; j++)
     {
-        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1];
+        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1]; s->shadowTint[j] = s->shadowTint[j + 1];
         memcpy(s->shadowUniforms[j], s->shadowUniforms[j + 1], sizeof(s->shadowUniforms[j]));
     }
     s->shadowCount--;
@@ -7628,6 +7788,7 @@ bool RblSetScene(const RblScene *scene)
         s->shadowLight[k] = map->light;
         s->shadowId[k] = map->id;
         s->shadowTexture[k] = (map->casters.id != 0)? map->casters.id : map->depth.id;
+        s->shadowTint[k] = map->transmittance.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
@@ -8640,6 +8801,9 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     out->minCastAngle = (in.minCastAngle == 0.0f)? 30.0f : ((in.minCastAngle < 0.0f)? 0.0f : in.minCastAngle);
     out->faceCamera = in.faceCamera;
     out->selfShadow = in.selfShadow;
+    // The nearest blended caster's distance is kept by min blending (EXT_blend_minmax on ES 2: not asked for)
+    if (in.transmittance && (rlGetVersion() == RL_OPENGL_ES_20)) return "transmittance needs min blending (GL, ES 3, WebGL2)";
+    out->transmittance = in.transmittance;
     return NULL;
 }
 
@@ -8717,6 +8881,26 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
         if (map.casters.id != 0) rlFramebufferAttach(map.state->id, map.casters.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
         ok = (map.state->id != 0) && rlFramebufferComplete(map.state->id);
     }
+    if (ok && map.desc.transmittance)
+    {
+        // The transmittance target: blended casters multiply its rgb (cleared to 1) and keep the
+        // nearest one's distance code in a (min), depth-tested against the opaque casters' depth
+        map.transmittance.id = rlLoadTexture(NULL, map.size, map.size, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
+        map.transmittance.width = map.size; map.transmittance.height = map.size; map.transmittance.mipmaps = 1;
+        map.transmittance.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
+        ok = (map.transmittance.id != 0);
+        if (ok)
+        {
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_WRAP_S, RL_TEXTURE_WRAP_CLAMP);
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_WRAP_T, RL_TEXTURE_WRAP_CLAMP);
+            map.state->blendId = rlLoadFramebuffer();
+            rlFramebufferAttach(map.state->blendId, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+            rlFramebufferAttach(map.state->blendId, map.transmittance.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+            ok = (map.state->blendId != 0) && rlFramebufferComplete(map.state->blendId);
+        }
+    }
     rbl__restoreTarget(callerTarget);
     if (!ok)
     {
@@ -8724,14 +8908,16 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
         RblUnloadShadowMap(&map);
         return map;
     }
-    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s)", map.size, map.size, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target");
+    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s%s)", map.size, map.size, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target",
+             map.desc.transmittance? " + RGBA8 transmittance target" : "");
     return map;
 }
 
 bool RblIsShadowMapValid(RblShadowMap map)
 {
     // Membership first: a stale copy's state (its map unloaded) is never read
-    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow);
+    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow) &&
+           ((map.transmittance.id != 0) == map.desc.transmittance);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
@@ -8739,6 +8925,13 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (!rbl__unloadable(map, (map != NULL)? map->id : 0, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
     if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
     rbl__dropSceneShadow(map->id);
+    if (rbl__glUsable() && (map->state->blendId != 0))
+    {
+        // The depth texture is the other framebuffer's to delete: detached first
+        rlFramebufferAttach(map->state->blendId, 0, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlUnloadFramebuffer(map->state->blendId);                          // deletes the transmittance target
+    }
+    else if (rbl__glUsable() && (map->transmittance.id != 0)) rlUnloadTexture(map->transmittance.id);
     if (!rbl__glUsable()) {}                                                // gone with the context
     else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture (and casters target) too
     else
@@ -8750,7 +8943,7 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
     if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the on-demand casters go too
     {
-        for (int k = 2; k < 5; k++)                                          // skinned and cross-fade casters
+        for (int k = 2; k < 7; k++)                                          // skinned, cross-fade and blended casters
         {
             if (rbl__state.casterIds[k] != 0) rbl__releaseProgram(rbl__state.casterIds[k], RBL__KIND_CASTER);
             rbl__state.casterIds[k] = 0;
@@ -8850,10 +9043,16 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
     map->state->savedView = rlGetMatrixModelview();
     map->state->savedProjection = rlGetMatrixProjection();
     map->state->savedFramebuffer = rbl__activeFramebuffer();
-    rlEnableFramebuffer(map->state->id);
     rlViewport(0, 0, map->size, map->size);
-    rlEnableDepthTest();
     rlEnableDepthMask();
+    if (map->state->blendId != 0)
+    {
+        rlEnableFramebuffer(map->state->blendId);
+        rlClearColor(255, 255, 255, 255);   // transmittance 1, nearest blended caster beyond the far plane
+        rlClearScreenBuffers();
+    }
+    rlEnableFramebuffer(map->state->id);
+    rlEnableDepthTest();
     rlClearColor(255, 255, 0, 0);           // casters target: distance code 1 (nothing), identity 0
     rlClearScreenBuffers();
     rlDisableColorBlend();                  // the identity's low byte is the target's alpha
@@ -8870,6 +9069,7 @@ bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int lightIndex,
 void RblEndShadowMap(RblShadowMap *map)
 {
     if ((map == NULL) || !rbl__isLive(map->id, map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
+    if (map->state->blending) RblEndShadowBlend();
     rlDrawRenderBatchActive();
     rbl__restoreTarget(map->state->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->state->savedProjection);
@@ -8881,6 +9081,41 @@ void RblEndShadowMap(RblShadowMap *map)
     rbl__state.shadowPass = NULL;
     memset(&rbl__state.cast, 0, sizeof(rbl__state.cast));
     rbl__bindSceneShadows();        // the pass unbound the receivers' units
+}
+
+bool RblBeginShadowBlend(bool coloured)
+{
+    RblShadowMap *map = rbl__state.shadowPass;
+    const char *bad = (map == NULL)? "outside a shadow pass" : (map->state->blendId == 0)? "the map has no transmittance target (RblShadowDesc.transmittance)" :
+                      map->state->blending? "already blending (RblEndShadowBlend first)" : NULL;
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginShadowBlend: %s", bad); return false; }
+    rlDrawRenderBatchActive();
+    rlEnableFramebuffer(map->state->blendId);
+    // Behind the opaque casters nothing counts (depth test, no writes); rgb multiplies by each
+    // caster's transmittance, a keeps the smallest distance code (0x0300 GL_SRC_COLOR, 0x8006 add, 0x8007 min)
+    rlDisableDepthMask();
+    rlSetBlendFactorsSeparate(0, 0x0300, 1, 1, 0x8006, 0x8007);
+    rlSetBlendMode(RL_BLEND_CUSTOM_SEPARATE);
+    rlEnableColorBlend();
+    map->state->blending = true;
+    map->state->coloured = coloured;
+    // Every texel with any coverage casts (the material's cutoff is for opaque casters)
+    map->state->savedAlphaBand = rbl__state.alphaBand;
+    rbl__state.alphaBand.x = 1.0f/512.0f; rbl__state.alphaBand.y = 2.0f;
+    return true;
+}
+
+void RblEndShadowBlend(void)
+{
+    RblShadowMap *map = rbl__state.shadowPass;
+    if ((map == NULL) || !map->state->blending) { TraceLog(LOG_WARNING, "RBL: RblEndShadowBlend: no blended casters in progress"); return; }
+    rlDrawRenderBatchActive();
+    rlSetBlendMode(RL_BLEND_ALPHA);
+    rlDisableColorBlend();
+    rlEnableDepthMask();
+    rlEnableFramebuffer(map->state->id);
+    rbl__state.alphaBand = map->state->savedAlphaBand;
+    map->state->blending = false;
 }
 
 bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius)

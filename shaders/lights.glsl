@@ -9,9 +9,11 @@
 //   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)
 //   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)
 //   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)
+//   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)
 #include "surface.glsl"
 #include "ambient.glsl"
 #include "shadows.glsl"
+#include "shadow_tint.glsl"
 #include "transmission.glsl"
 
 #define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
@@ -147,6 +149,18 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 #if RBL_SHADOWS > 3
     shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);
 #endif
+#ifdef RBL_SHADOW_TINT
+    vec3 tint0 = rblShadowTint(0, s.position), tint1 = vec3(1.0), tint2 = vec3(1.0), tint3 = vec3(1.0);
+#if RBL_SHADOWS > 1
+    tint1 = rblShadowTint(1, s.position);
+#endif
+#if RBL_SHADOWS > 2
+    tint2 = rblShadowTint(2, s.position);
+#endif
+#if RBL_SHADOWS > 3
+    tint3 = rblShadowTint(3, s.position);
+#endif
+#endif
 #endif
     for (int i = 0; i < RBL_LIGHTS; i++)
     {
@@ -167,7 +181,12 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 #else
         float shadow = 1.0;
 #endif
+#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)
+        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));
+        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow)*tint;
+#else
         sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);
+#endif
     }
 #endif
     return sum;

@@ -234,8 +234,163 @@ static void test_thin_relief_off_and_flat_relief_shadow_nothing(void)
     RT_CHECK(!RblIsLitShaderValid(s) && (warnings == before + 2), "reliefSteps above the maximum was not refused with one log line");
 }
 
+// ---- blended casters: partial, coloured shadows ----------------------------------------------
+// A white floor seen from above (test_shadows.c's set-up); a directional light; an opaque card and
+// a red glass card (alpha 128) at height 1. The glass is drawn between RblBeginShadowBlend and
+// RblEndShadowBlend on each billboard path; the floor's receiver reads the transmittance target.
+// Expected in double precision: lit = Lambert(ambient + E cos), under the glass the light x T with
+// T = mix(1, glass colour (linear), alpha) coloured or 1 - alpha grey, under the opaque card ambient
+// only; every pixel more than 2 texels from a footprint's analytic edge within 2/255
+static Image thinBlendRender(int path, int mode, bool receiverReads)
+{
+    // mode: 0 coloured, 1 grey (coverage only), 2 the glass drawn as an opaque caster would be (no blend pass)
+    RblLight light = litDirectional((Vector3){ 0.5f, 0.3f, -1.0f }, 1.0f);
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shadowMaps = 1;
+    desc.shadowTransmittance = receiverReads;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = SH_MAP; sd.transmittance = true;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(map) && (map.transmittance.id != 0), "receiver or transmittance shadow map failed to load");
+    Texture2D white = solidTexture(WHITE), glass = solidTexture((Color){ 255, 40, 40, 128 });
+    Material opaqueMat = LoadMaterialDefault(), glassMat = LoadMaterialDefault();
+    opaqueMat.shader = glassMat.shader = lit;
+    opaqueMat.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    glassMat.maps[MATERIAL_MAP_ALBEDO].texture = glass;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 40, 40, 40, 255 };
+    Camera3D viewer = shTopDown();
+    RT_CHECK(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, SH_FOCUS), "shadow pass refused");
+    ShCard opaqueCard = { { 1.8f, 0.0f, 1.0f }, 1.4f, 0 }, glassCard = { { -1.5f, 0.0f, 1.0f }, 1.6f, path };
+    shCardCasters(opaqueMat, viewer, &opaqueCard);
+    if (mode < 2)
+    {
+        RT_CHECK(RblBeginShadowBlend(mode == 0), "blend pass refused");
+        shCardCasters(glassMat, viewer, &glassCard);
+        RblEndShadowBlend();
+    }
+    RblEndShadowMap(&map);
+    scene.shadowMaps = &map; scene.shadowMapCount = 1;
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
+    Material floor = LoadMaterialDefault();
+    floor.shader = lit;
+    floor.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RenderTexture2D rt = LoadRenderTexture(SH_TARGET, SH_TARGET);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(shTopDown());
+    RblDrawBillboard(shTopDown(), floor, litPlane());
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    shClearScene();
+    UnloadRenderTexture(rt);
+    MemFree(floor.maps); MemFree(opaqueMat.maps); MemFree(glassMat.maps);
+    UnloadTexture(white); UnloadTexture(glass);
+    RblUnloadShadowMap(&map);
+    RblUnloadLitShader(&lit);
+    return img;
+}
+
+typedef struct ThinTint { int judged, glass, opaque, worst; } ThinTint;
+
+static ThinTint thinCompareTint(Image img, int mode, bool receiverReads)
+{
+    ThinTint t = { 0, 0, 0, 0 };
+    D3 l = dNorm(d3(-0.5, -0.3, 1.0));
+    double ambient = srgbDecode(40/255.0), cosL = l.z, a = 128/255.0;
+    double glassLin[3] = { srgbDecode(1.0), srgbDecode(40/255.0), srgbDecode(40/255.0) };
+    float texel = 2.0f*SH_FOCUS/(SH_MAP - 1);
+    Vector2 shift = { 0.5f, 0.3f };                     // height 1 x (D.x, D.y)/-D.z
+    for (int y = 0; y < SH_TARGET; y++)
+        for (int x = 0; x < SH_TARGET; x++)
+        {
+            Vector2 p = shFloorAt(x, y);
+            float dg = shSquareDistance(p, (Vector2){ -1.5f - 0.8f + shift.x, -0.8f + shift.y }, (Vector2){ -1.5f + 0.8f + shift.x, 0.8f + shift.y });
+            float dopq = shSquareDistance(p, (Vector2){ 1.8f - 0.7f + shift.x, -0.7f + shift.y }, (Vector2){ 1.8f + 0.7f + shift.x, 0.7f + shift.y });
+            if ((fabsf(dg) < 2.0f*texel) || (fabsf(dopq) < 2.0f*texel)) continue;
+            double T[3] = { 1.0, 1.0, 1.0 };
+            if ((dg < 0.0f) && receiverReads && (mode < 2))
+                for (int c = 0; c < 3; c++) T[c] = (mode == 0)? (1.0 - a + a*glassLin[c]) : (1.0 - a);
+            if (dopq < 0.0f) T[0] = T[1] = T[2] = 0.0;
+            Color got = rtPixel(img, x, y);
+            const int g[3] = { got.r, got.g, got.b };
+            for (int c = 0; c < 3; c++)
+            {
+                int want = (int)floor(srgbEncode(ambient + cosL*T[c])*255.0 + 0.5);
+                int off = abs(g[c] - want);
+                if (off > t.worst) t.worst = off;
+            }
+            t.judged++;
+            t.glass += (dg < 0.0f);
+            t.opaque += (dopq < 0.0f);
+        }
+    return t;
+}
+
+static void test_thin_blended_casters_cast_partial_coloured_shadows(void)
+{
+    const char *paths[3] = { "immediate", "batched", "instanced" };
+    const char *modes[3] = { "coloured", "grey", "no blend pass" };
+    for (int mode = 0; mode < 3; mode++)
+        for (int path = 0; path < 3; path++)
+        {
+            if ((mode > 0) && (path > 0)) continue;
+            Image img = thinBlendRender(path, mode, true);
+            ThinTint t = thinCompareTint(img, mode, true);
+            printf("    %-14s %-10s %6d pixels judged (%d under the glass, %d under the opaque card): worst %d/255\n", modes[mode], paths[path], t.judged, t.glass, t.opaque, t.worst);
+            RT_CHECK((t.glass > 300) && (t.opaque > 300), "%s %s: footprints too small to judge", modes[mode], paths[path]);
+            RT_CHECK(t.worst <= 2, "%s %s: worst %d/255 from the double reference", modes[mode], paths[path], t.worst);
+            if (rtFailuresInCurrentTest() > 0) { char tag[48]; snprintf(tag, sizeof(tag), "tint-%d-%d", mode, path); rtSaveImage(img, tag); }
+            if ((mode == 0) && (path == 0))
+            {
+                // Under the glass: red kept, green and blue dimmed to about half
+                Vector2 c = { -1.0f, 0.3f };
+                int px = (int)((c.x + SH_VIEW*0.5f)/SH_VIEW*SH_TARGET), py = (int)((SH_VIEW*0.5f - c.y)/SH_VIEW*SH_TARGET);
+                Color under = rtPixel(img, px, py);
+                printf("    floor under the red glass: (%d, %d, %d)\n", under.r, under.g, under.b);
+                RT_CHECK((under.r > under.g + 40) && (under.g == under.b), "the glass's shadow is not red: (%d, %d, %d)", under.r, under.g, under.b);
+            }
+            UnloadImage(img);
+        }
+    // A receiver that does not read the target is untinted (the glass casts nothing opaque)
+    Image img = thinBlendRender(0, 0, false);
+    ThinTint t = thinCompareTint(img, 0, false);
+    RT_CHECK(t.worst <= 2, "receiver without shadowTransmittance: worst %d/255 from the untinted reference", t.worst);
+    UnloadImage(img);
+    // Refusals: outside a pass, a map without the target; the ES 2 refusal is in the desc check
+    int before = warnings;
+    RT_CHECK(!RblBeginShadowBlend(true) && (warnings == before + 1), "RblBeginShadowBlend outside a shadow pass was not refused with one log line");
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 64;
+    RblShadowMap plain = RblLoadShadowMap(sd);
+    RblLight light = litDirectional((Vector3){ 0.0f, 0.0f, -1.0f }, 1.0f);
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light; scene.lightCount = 1;
+    if (RblBeginShadowMap(&plain, &scene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f))
+    {
+        before = warnings;
+        RT_CHECK(!RblBeginShadowBlend(false) && (warnings == before + 1), "RblBeginShadowBlend on a map without a transmittance target was not refused");
+        RblEndShadowMap(&plain);
+    }
+    RblUnloadShadowMap(&plain);
+    RblLitShaderDesc bad;
+    memset(&bad, 0, sizeof(bad));
+    bad.shadowTransmittance = true;
+    before = warnings;
+    Shader s = RblLoadLitShader(bad);
+    RT_CHECK(!RblIsLitShaderValid(s) && (warnings == before + 1), "shadowTransmittance without shadow maps was not refused with one log line");
+}
+
 #define RBL_THIN_TESTS \
         RT_TEST(test_thin_transmission_matches_the_double_reference), \
         RT_TEST(test_thin_transmission_zero_renders_as_the_program_without_it), \
         RT_TEST(test_thin_relief_matches_the_double_march_on_a_step_a_dome_and_a_ridge), \
-        RT_TEST(test_thin_relief_off_and_flat_relief_shadow_nothing)
+        RT_TEST(test_thin_relief_off_and_flat_relief_shadow_nothing), \
+        RT_TEST_GLSL3(test_thin_blended_casters_cast_partial_coloured_shadows)
