@@ -119,6 +119,8 @@
 *       maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
 *       maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
 *       params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha, casters too (0 = 0.5; <0 = never)
+*       params[RBL_PARAM_TRANSMISSION]       desc.transmission: light let through from behind, 0..1 (0 = none)
+*       maps[MATERIAL_MAP_HEIGHT].value      desc.relief: height of height 1, in material texels (0 = 4)
 *       raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS (one slot): its value is the metalness,
 *       so the Blinn-Phong intensity has a params slot of its own. NaN/Inf take the default;
 *       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
@@ -319,6 +321,31 @@
 *       Contact: where a sprite meets the ground, the ground's texels inside the PCF footprint (k/2 +
 *       1 texels) darken its base, as for any receiver meeting another surface (measured: README).
 *
+*   THIN SPRITES (shaders/transmission.glsl, relief.glsl, shadow_tint.glsl; tests/test_thin.c):
+*       Transmission (desc.transmission): a card lit from behind shows the light through it as a thin
+*       diffuse sheet: radiance albedo x t x E x clamp((1/4 - N.L)/(5/4), 0, 1) per light (E its
+*       irradiance on a surface facing it, N the shading normal on the viewer's side: the back's
+*       cosine wrapped so a light edge-on still lights the rim), t = params[RBL_PARAM_TRANSMISSION]
+*       x (1 - thickness), thickness from material.thickness (B or A of the material texture; none =
+*       0). Lights behind a transmitting card are looked up in their shadow maps (its own caster
+*       lets them through). A program without the flag compiles none of it; with it, a material
+*       value of 0 returns before any of it per light. Forward only (the G-buffer has no byte free).
+*       Relief (desc.relief, reliefSteps): the material texture's height channel (material.height)
+*       is marched from each shaded texel toward each light in the card's tangent space: reliefSteps
+*       evenly spaced samples (16) of the ray up to where it clears height 1 (maps[HEIGHT].value
+*       texels, 4); a texel above the ray takes that light away (hard-edged, texel by texel, base
+*       level). The reach is capped at 8 climbs (light below 7 degrees over the card), texels are
+*       taken as square, the march may read past a frame's edge into its gutter; cross-fading
+*       programs march the first frame. Forward only.
+*       Blended casters (RblShadowDesc.transmittance; receivers desc.shadowTransmittance): between
+*       RblBeginShadowBlend(coloured) and RblEndShadowBlend inside a shadow pass, draws are smoke or
+*       glass: depth-tested against the opaque casters already drawn, they multiply the map's
+*       RGBA8 transmittance target by 1 - alpha (grey) or mix(1, colour, alpha) (coloured) and keep
+*       the nearest one's distance (8 bits) by min blending; every texel with alpha >= 1/512 casts.
+*       A receiver more than 1.5/255 of the depth range behind that distance takes the light times
+*       the tint (bilinear over 2 x 2 texels); opaque casters shadow as before. Not on ES 2 (no min
+*       blending); forward receivers only; skinned Models cannot be blended casters.
+*
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
 *       material  RGBA8, linear: RG normal, B specular, A occlusion                                 4 B
@@ -466,6 +493,10 @@
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
+*       - Thin sprites: transmission, relief and shadow tint are forward-only (the G-buffer's 10 bytes
+*         hold none of them; a deferred variant asking is refused); a relief height comes from a packed
+*         channel (RblPackMaterial does not derive one from the normal map: pack the height as the
+*         specular or occlusion source into B or A).
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:

@@ -82,6 +82,72 @@ static void test_thin_transmission_zero_renders_as_the_program_without_it(void)
     litRenderUnload(&plain); litRenderUnload(&zero); litRenderUnload(&some);
 }
 
+// A transmitting card lit from behind, with an opaque card between it and the light: the light
+// reaching the back is shadow-mapped too (its own caster lets it through). Inside the occluder's
+// footprint ambient only; elsewhere ambient + refTransmitted; pixels within 2 texels of the
+// footprint's edge not judged
+static void test_thin_transmission_behind_an_occluder_is_shadowed(void)
+{
+    RblLight light = litDirectional((Vector3){ 0.5f, 0.3f, 1.0f }, 1.0f);        // travels +Z: behind the card
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shadowMaps = 1; desc.transmission = true;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = SH_MAP;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(map), "receiver or shadow map failed to load");
+    Texture2D white = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    m.params[RBL_PARAM_TRANSMISSION] = 0.8f;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 40, 40, 40, 255 };
+    RT_CHECK(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, SH_FOCUS), "shadow pass refused");
+    ShCard occluder = { { 0.0f, 0.0f, -1.0f }, 2.0f, 0 };
+    shCardCasters(m, shTopDown(), &occluder);
+    RblDrawBillboard(shTopDown(), m, litPlane());                                   // the card casts too: never on itself
+    RblEndShadowMap(&map);
+    scene.shadowMaps = &map; scene.shadowMapCount = 1;
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
+    RenderTexture2D rt = LoadRenderTexture(SH_TARGET, SH_TARGET);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(shTopDown());
+    RblDrawBillboard(shTopDown(), m, litPlane());
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    shClearScene();
+    D3 l = dNorm(d3(-0.5, -0.3, -1.0));
+    double ambient = srgbDecode(40/255.0), back = refClamp((0.25 - l.z)/1.25, 0.0, 1.0)*0.8;
+    int litWant = (int)floor(srgbEncode(ambient + back)*255.0 + 0.5), darkWant = (int)floor(srgbEncode(ambient)*255.0 + 0.5);
+    float texel = 2.0f*SH_FOCUS/(SH_MAP - 1);
+    int inside = 0, outside = 0, worst = 0;
+    for (int y = 0; y < SH_TARGET; y++)
+        for (int x = 0; x < SH_TARGET; x++)
+        {
+            float d = shSquareDistance(shFloorAt(x, y), (Vector2){ -0.5f, -0.7f }, (Vector2){ 1.5f, 1.3f });
+            if (fabsf(d) < 2.0f*texel) continue;
+            int off = abs(rtPixel(img, x, y).g - ((d < 0.0f)? darkWant : litWant));
+            if (off > worst) worst = off;
+            if (d < 0.0f) inside++; else outside++;
+        }
+    printf("    transmitted %d/255, shadowed %d/255: %d pixels in the occluder's footprint, %d outside, worst %d/255\n", litWant, darkWant, inside, outside, worst);
+    RT_CHECK((inside > 500) && (outside > 500), "footprint too small or too large to judge (%d in, %d out)", inside, outside);
+    RT_CHECK(worst <= 2, "worst %d/255 from the shadowed transmission reference", worst);
+    if (rtFailuresInCurrentTest() > 0) rtSaveImage(img, "occluded-transmission");
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    MemFree(m.maps);
+    UnloadTexture(white);
+    RblUnloadShadowMap(&map);
+    RblUnloadLitShader(&lit);
+}
+
 // ---- relief self-shadow ---------------------------------------------------------------------
 #include "relief_reference.h"
 #define THIN_TARGET 128
@@ -391,6 +457,7 @@ static void test_thin_blended_casters_cast_partial_coloured_shadows(void)
 #define RBL_THIN_TESTS \
         RT_TEST(test_thin_transmission_matches_the_double_reference), \
         RT_TEST(test_thin_transmission_zero_renders_as_the_program_without_it), \
+        RT_TEST(test_thin_transmission_behind_an_occluder_is_shadowed), \
         RT_TEST(test_thin_relief_matches_the_double_march_on_a_step_a_dome_and_a_ridge), \
         RT_TEST(test_thin_relief_off_and_flat_relief_shadow_nothing), \
         RT_TEST_GLSL3(test_thin_blended_casters_cast_partial_coloured_shadows)
