@@ -345,7 +345,9 @@
 *       the nearest one's distance (8 bits) by min blending; every texel with alpha >= 1/512 casts.
 *       A receiver more than 1.5/255 of the depth range behind that distance takes the light times
 *       the tint (bilinear over 2 x 2 texels); opaque casters shadow as before. Not on ES 2 (no min
-*       blending); forward receivers only; skinned Models cannot be blended casters.
+*       blending); forward receivers only; skinned Models cannot be blended casters. The target has
+*       no caster identities: a blended billboard that receives shadows is tinted where its own
+*       light-facing caster card lies in front of it (draw smoke with a program that receives none).
 *
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B

@@ -645,6 +645,117 @@ static bool thinPictures(const char *dir)
     return ok;
 }
 
+// Blended casters: a red and a blue glass pane, a grey smoke puff and an opaque crate on a checked
+// floor under a low sun; the glass and smoke are drawn between RblBeginShadowBlend/RblEndShadowBlend
+// (coloured for the glass, coverage only for the smoke) and blended in the colour pass; the smoke's
+// program receives no shadows (a blended billboard's light-facing caster would tint the billboard)
+static bool glassPicture(const char *dir)
+{
+    const int w = 640, h = 360;
+    Image fi = GenImageChecked(256, 256, 32, 32, (Color){ 200, 196, 186, 255 }, (Color){ 176, 170, 160, 255 });
+    Texture2D floorTexture = LoadTextureFromImage(fi);
+    UnloadImage(fi);
+    Image pi = GenImageColor(64, 64, BLANK);
+    ImageDrawCircle(&pi, 32, 32, 30, (Color){ 120, 120, 120, 90 });
+    ImageDrawCircle(&pi, 32, 32, 20, (Color){ 110, 110, 110, 150 });
+    Texture2D puff = LoadTextureFromImage(pi);
+    UnloadImage(pi);
+    SetTextureFilter(puff, TEXTURE_FILTER_BILINEAR);
+    Image ri = GenImageColor(4, 4, (Color){ 230, 40, 40, 140 }), bi = GenImageColor(4, 4, (Color){ 40, 90, 240, 140 }), wi = GenImageColor(4, 4, WHITE);
+    Texture2D red = LoadTextureFromImage(ri), blue = LoadTextureFromImage(bi), white = LoadTextureFromImage(wi);
+    UnloadImage(ri); UnloadImage(bi); UnloadImage(wi);
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ -0.6f, -0.75f, -0.45f };
+    sun.color = (Color){ 255, 240, 220, 255 }; sun.intensity = 1.2f;
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.shadowMaps = 1; d.shadowTransmittance = true;
+    Shader lit = RblLoadLitShader(d);
+    d.shadowMaps = 0; d.shadowTransmittance = false;
+    Shader unshadowed = RblLoadLitShader(d);            // the smoke receives nothing (its light-facing caster would tint it)
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 2048; sd.transmittance = true;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    if (!RblIsLitShaderValid(lit) || !RblIsShadowMapValid(map)) { printf("pictures: blended casters unavailable\n"); return false; }
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 60, 64, 78, 255 };
+    Material glass[2] = { LoadMaterialDefault(), LoadMaterialDefault() }, smoke = LoadMaterialDefault(), crateMat = LoadMaterialDefault();
+    glass[0].maps[MATERIAL_MAP_ALBEDO].texture = red; glass[1].maps[MATERIAL_MAP_ALBEDO].texture = blue;
+    smoke.maps[MATERIAL_MAP_ALBEDO].texture = puff;
+    crateMat.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    crateMat.maps[MATERIAL_MAP_ALBEDO].color = (Color){ 180, 130, 80, 255 };
+    glass[0].shader = glass[1].shader = crateMat.shader = lit;
+    smoke.shader = unshadowed;
+    glass[0].params[RBL_PARAM_ALPHA_CUTOFF] = glass[1].params[RBL_PARAM_ALPHA_CUTOFF] = smoke.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;   // blended in the colour pass
+    Model ground = LoadModelFromMesh(GenMeshPlane(12.0f, 12.0f, 1, 1));
+    ground.materials[0].shader = lit;
+    ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    Model crate = LoadModelFromMesh(GenMeshCube(0.9f, 0.9f, 0.9f));
+    crate.materials[0].shader = lit;
+    crate.materials[0].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 180, 130, 80, 255 };
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.5f, 4.2f, 6.5f }; cam.target = (Vector3){ -0.6f, 0.4f, -0.4f };
+    cam.up = (Vector3){ 0.0f, 1.0f, 0.0f }; cam.fovy = 45.0f; cam.projection = CAMERA_PERSPECTIVE;
+    RblBillboard panes[2], puffs[3];
+    for (int i = 0; i < 2; i++)
+    {
+        memset(&panes[i], 0, sizeof(panes[i]));
+        panes[i].facing = RBL_FACING_FIXED; panes[i].axis = (Vector3){ 0.0f, 0.0f, 1.0f }; panes[i].up = (Vector3){ 0.0f, 1.0f, 0.0f };
+        panes[i].position = (Vector3){ -2.2f + i*1.6f, 0.0f, -0.6f + i*0.4f };
+        panes[i].size = (Vector2){ 1.2f, 1.6f }; panes[i].origin = (Vector2){ 0.6f, 0.0f };
+    }
+    for (int i = 0; i < 3; i++)
+    {
+        memset(&puffs[i], 0, sizeof(puffs[i]));
+        puffs[i].facing = RBL_FACING_CAMERA_PLANE;
+        puffs[i].position = (Vector3){ 1.6f + 0.3f*i, 0.6f + 0.55f*i, 0.6f - 0.2f*i };
+        puffs[i].size = (Vector2){ 1.1f - 0.15f*i, 1.1f - 0.15f*i }; puffs[i].origin = (Vector2){ puffs[i].size.x*0.5f, puffs[i].size.y*0.5f };
+    }
+    const Vector3 crateAt = { -0.4f, 0.45f, 1.3f };
+    if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ -0.3f, 0.5f, 0.0f }, 4.5f))
+    {
+        RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+        RblDrawModel(crate, crateAt, 1.0f, WHITE);
+        RblBeginShadowBlend(true);
+        for (int i = 0; i < 2; i++) RblDrawBillboard(cam, glass[i], panes[i]);
+        RblEndShadowBlend();
+        RblBeginShadowBlend(false);
+        for (int i = 0; i < 3; i++) RblDrawBillboard(cam, smoke, puffs[i]);
+        RblEndShadowBlend();
+        RblEndShadowMap(&map);
+    }
+    scene.shadowMaps = &map; scene.shadowMapCount = 1;
+    RblSetScene(&scene);
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 24, 26, 32, 255 });
+    BeginMode3D(cam);
+    RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    RblDrawModel(crate, crateAt, 1.0f, WHITE);
+    for (int i = 0; i < 3; i++) RblDrawBillboard(cam, smoke, puffs[2 - i]);
+    for (int i = 0; i < 2; i++) RblDrawBillboard(cam, glass[i], panes[i]);
+    EndMode3D();
+    DrawText("blended casters: coloured glass, grey smoke, opaque crate", 8, 8, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_glass_shadow.png", dir);
+    bool ok = ExportOpaque(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    RblUnloadShadowMap(&map);
+    MemFree(glass[0].maps); MemFree(glass[1].maps); MemFree(smoke.maps); MemFree(crateMat.maps);
+    UnloadModel(ground); UnloadModel(crate);             // meshes and material maps, not the shader or textures
+    RblUnloadLitShader(&lit); RblUnloadLitShader(&unshadowed);
+    UnloadTexture(floorTexture); UnloadTexture(puff); UnloadTexture(red); UnloadTexture(blue); UnloadTexture(white);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = (argc > 1)? argv[1] : "examples/resources";
@@ -724,6 +835,7 @@ int main(int argc, char **argv)
     if (!spriteShadowsPicture(dir)) return 1;
     if (!sweepPicture(dir)) return 1;
     if (!thinPictures(dir)) return 1;
+    if (!glassPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(&lit);
