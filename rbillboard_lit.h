@@ -14,7 +14,7 @@
 *   CONTENTS:
 *       This block: INTEGRATION (nine stages, each building on the last), then reference: MATERIAL
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
-*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY,
+*       LIGHTING, DEFERRED, SHADOWS, THIN SPRITES, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY,
 *       DEPENDENCIES, LICENSE.
 *       The file, in order (each section's banner ends with its tag: search ">>geometry" to jump there;
 *       make test checks this list against the banners):
@@ -154,6 +154,8 @@
 *       maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
 *       maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
 *       params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha, casters too (0 = 0.5; <0 = never)
+*       params[RBL_PARAM_TRANSMISSION]       desc.transmission: light let through from behind, 0..1 (0 = none)
+*       maps[MATERIAL_MAP_HEIGHT].value      desc.relief: height of height 1, in material texels (0 = 4)
 *       raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS (one slot): its value is the metalness,
 *       so the Blinn-Phong intensity has a params slot of its own. NaN/Inf take the default;
 *       shininess clamps to >= 1, roughness and metalness to 0..1, specular and emission to >= 0.
@@ -359,6 +361,34 @@
 *       Contact: where a sprite meets the ground, the ground's texels inside the PCF footprint (k/2 +
 *       1 texels) darken its base, as for any receiver meeting another surface (measured: README).
 *
+*   THIN SPRITES (shaders/transmission.glsl, relief.glsl, shadow_tint.glsl; tests/test_thin.c):
+*       Transmission (desc.transmission): a card lit from behind shows the light through it as a thin
+*       diffuse sheet: radiance albedo x t x E x clamp((1/4 - N.L)/(5/4), 0, 1) per light (E its
+*       irradiance on a surface facing it, N the shading normal on the viewer's side: the back's
+*       cosine wrapped so a light edge-on still lights the rim), t = params[RBL_PARAM_TRANSMISSION]
+*       x (1 - thickness), thickness from material.thickness (B or A of the material texture; none =
+*       0). Lights behind a transmitting card are looked up in their shadow maps (its own caster
+*       lets them through). A program without the flag compiles none of it; with it, a material
+*       value of 0 returns before any of it per light. Forward only (the G-buffer has no byte free).
+*       Relief (desc.relief, reliefSteps): the material texture's height channel (material.height)
+*       is marched from each shaded texel toward each light in the card's tangent space: reliefSteps
+*       evenly spaced samples (16) of the ray up to where it clears height 1 (maps[HEIGHT].value
+*       texels, 4); a texel above the ray takes that light away (hard-edged, texel by texel, base
+*       level). The reach is capped at 8 climbs (light below 7 degrees over the card), texels are
+*       taken as square, the march may read past a frame's edge into its gutter; cross-fading
+*       programs march the first frame. Forward only.
+*       Blended casters (RblShadowDesc.transmittance; receivers desc.shadowTransmittance): between
+*       RblBeginShadowBlend(coloured) and RblEndShadowBlend inside a shadow pass, draws are smoke or
+*       glass: depth-tested against the opaque casters already drawn, they multiply the map's
+*       RGBA8 transmittance target by 1 - alpha (grey) or mix(1, colour, alpha) (coloured) and keep
+*       the nearest one's distance (8 bits) by min blending; every texel with alpha >= 1/512 casts.
+*       A receiver more than 1.5/255 of the depth range behind that distance takes the light times
+*       the tint (bilinear over 2 x 2 texels); opaque casters shadow as before. Not on ES 2 (no min
+*       blending); single maps only (not omni or cascaded: refused); forward receivers only; skinned
+*       Models cannot be blended casters. The target has
+*       no caster identities: a blended billboard that receives shadows is tinted where its own
+*       light-facing caster card lies in front of it (draw smoke with a program that receives none).
+*
 *   MATERIAL LAYOUT (RblPackMaterial; bytes per texel at level 0, a mip chain adds 1/3):
 *       albedo    RGBA8: sRGB colour, linear alpha                                                  4 B
 *       material  RGBA8, linear: RG normal, B specular, A occlusion                                 4 B
@@ -521,6 +551,10 @@
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
+*       - Thin sprites: transmission, relief and shadow tint are forward-only (the G-buffer's 10 bytes
+*         hold none of them; a deferred variant asking is refused); a relief height comes from a packed
+*         channel (RblPackMaterial does not derive one from the normal map: pack the height as the
+*         specular or occlusion source into B or A).
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
 *
 *   CONFIGURATION:
@@ -573,6 +607,12 @@
 *           else 0, and desc.skinning is refused: without it Mesh.vboId has no bone buffers).
 *       #define RBL_SHADOW_MAX_FILTER 6
 *           Largest PCF footprint (desc.shadowFilter), in texels per side.
+*       #define RBL_SHADOW_TINT_TEXTURE_UNIT 6
+*           Shadow map k's transmittance target goes to unit 6 + k in programs with
+*           desc.shadowTransmittance (bound at each of their draws; a Model material with textures
+*           in raylib's HEIGHT..PREFILTER slots would take those units while DrawMesh draws it).
+*       #define RBL_MAX_RELIEF_STEPS 64
+*           Largest relief self-shadow march (desc.reliefSteps), samples per light.
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
 *       RBL_ZERO (defined by the header)
@@ -713,6 +753,12 @@
 #endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
+#endif
+#ifndef RBL_SHADOW_TINT_TEXTURE_UNIT
+    #define RBL_SHADOW_TINT_TEXTURE_UNIT 6      // Map k's transmittance target on unit 6 + k (shadowTransmittance receivers; raylib's HEIGHT..PREFILTER slots)
+#endif
+#ifndef RBL_MAX_RELIEF_STEPS
+    #define RBL_MAX_RELIEF_STEPS 64             // Largest relief march (desc.reliefSteps), samples per light
 #endif
 #ifndef RBL_MAX_BONES
     #define RBL_MAX_BONES 128                   // Bone matrices a skinned program holds (4 uniform vectors each; at most 256)
@@ -869,6 +915,13 @@ typedef enum {
     RBL_NORMAL_RGB                  // Plain RGB tangent-space map (raylib's MATERIAL_MAP_NORMAL as authored)
 } RblNormalEncoding;
 
+// A channel of the packed material texture holding a scalar map (RblMaterialLayout.height, .thickness)
+typedef enum {
+    RBL_CHANNEL_NONE = 0,           // Absent: nothing sampled
+    RBL_CHANNEL_B,                  // Blue (free when the layout has no specular map and the normal is two-channel)
+    RBL_CHANNEL_A                   // Alpha (free when the layout has no occlusion)
+} RblMaterialChannel;
+
 // Emissive representations of a packed material
 typedef enum {
     RBL_EMISSIVE_NONE = 0,          // No emission, nothing sampled
@@ -883,6 +936,8 @@ typedef struct RblMaterialLayout {
     bool occlusion;                 // Material texture A: ambient occlusion, linear
     int emissive;                   // RblEmissiveLayout of the emissive texture
     bool premultipliedAlpha;        // Albedo texels hold colour x alpha (libGDX pma): divided back after filtering, before lighting
+    int height;                     // RblMaterialChannel of the material texture holding height 0..1 (relief self-shadow; 0 = none)
+    int thickness;                  // RblMaterialChannel holding thickness 0..1 (transmission x (1 - thickness); 0 = none)
 } RblMaterialLayout;
 
 // Packing input: raylib Images of one size (any format raylib converts); data == NULL = absent
@@ -1017,13 +1072,18 @@ typedef struct RblLitShaderDesc {
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBillboard.fade, RblInstancedDesc.fades): every map fetched twice
     int debugOutput;                // RblDebugOutput (0 = the lit colour)
+    bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (forward only)
+    bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (forward only)
+    int reliefSteps;                // Relief samples per light, 1..RBL_MAX_RELIEF_STEPS (0 = 16)
+    bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward only)
 } RblLitShaderDesc;
 
 // Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
 typedef enum {
     RBL_PARAM_ALPHA_CUTOFF = 0,     // Material.params index of the alpha cutoff
     RBL_PARAM_SPECULAR = 1,         // Material.params index of the Blinn-Phong specular intensity
-    RBL_PARAM_SOFT_DISTANCE = 2     // Material.params index of the soft-particle fade distance (world units; 0 = 0.5)
+    RBL_PARAM_SOFT_DISTANCE = 2,    // Material.params index of the soft-particle fade distance (world units; 0 = 0.5)
+    RBL_PARAM_TRANSMISSION = 3      // Material.params index of the transmission share (transmission programs; 0 = none)
 } RblMaterialParam;
 
 // Deferred debug views (RblSetGBufferOutput)
@@ -1087,12 +1147,14 @@ typedef struct RblShadowDesc {
     int cascades;                   // Directional: 2..4 cascades fitted to a camera (RblFitShadowCascades), side by side (0 = one map)
     float cascadeLambda;            // Practical split: 0..1 from uniform to logarithmic (0 = 0.75; negative = 0)
     float cascadeBlend;             // Share of each cascade's depth range blended into the next (0 = 0.1; negative = none; <= 0.5)
+    bool transmittance;             // RGBA8 transmittance target for blended casters (RblBeginShadowBlend; +4 B/texel; not on ES 2)
 } RblShadowDesc;
 
 // Shadow map of one light (directional, spot, or point with desc.omni): a depth texture and its light cameras (caster programs are the header's)
 typedef struct RblShadowMap {
     Texture2D depth;                // Depth texture of the pass (receivers sample it only with desc.selfShadow); omni and cascades: every tile
     Texture2D casters;              // RGBA8: per texel the nearest caster's distance (16 bits) and identity (16 bits), what receivers sample (id 0 with desc.selfShadow)
+    Texture2D transmittance;        // RGBA8: rgb the light blended casters let through (product), a the nearest one's distance (8 bits) (id 0 without desc.transmittance)
     int size;                       // Texels per side of one map (a cube face, a cascade)
     RblShadowDesc desc;             // Settings, defaults applied
     int light;                      // Scene light index of the last RblBeginShadowMap (-1 before the first)
@@ -1286,6 +1348,8 @@ RBLAPI bool RblBeginShadowMapPass(RblShadowMap *map, const RblScene *scene, int 
 RBLAPI bool RblFitShadowCascades(RblShadowMap *map, Camera3D camera, float aspect, float nearDistance, float farDistance); // Cascaded map: split near..far (practical split) and fit each cascade to this camera, before its passes
 RBLAPI void RblDrawShadowCascades(RblShadowMap map);                          // Debug view (inside BeginMode3D): each cascade's camera slice and light window in RblShadowCascadeColor(c)
 RBLAPI Color RblShadowCascadeColor(int cascade);                              // Debug colour of cascade 0..3: red, green, blue, yellow (grey otherwise)
+RBLAPI bool RblBeginShadowBlend(bool coloured);                                // Inside a shadow pass of a map with desc.transmittance: draws are blended casters (coverage; coloured: x their colour); false = rejected
+RBLAPI void RblEndShadowBlend(void);                                           // Back to opaque casters (RblEndShadowMap ends it too)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
 #if !defined(RBL_NO_ATLAS)
@@ -1395,7 +1459,7 @@ typedef enum {
     RBL__U_ALPHA_CUTOFF, RBL__U_SPECULAR, RBL__U_ROUGH_METAL, RBL__U_EMISSIVE_COLOR, RBL__U_EMISSIVE_INTENSITY, RBL__U_INSTANCING,
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
-    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE,
+    RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1414,6 +1478,7 @@ typedef struct rbl__ProgramKey {
 typedef struct rbl__MaterialValues {
     Color specularColor, emissiveColor;
     float specular, shininess, roughness, metalness, emissive, alphaCutoff, alphaCeiling;
+    float transmission, relief[4];  // transmission share; relief height (texels), 0, 1/width, 1/height of the material texture
 } rbl__MaterialValues;
 
 // One entry of the program registry
@@ -1569,7 +1634,11 @@ typedef struct rbl__ShadowMapState {
     Matrix savedView;               // rlgl state restored by RblEndShadowMap: matrices and framebuffer
     Matrix savedProjection;
     unsigned int savedFramebuffer;
+    unsigned int blendId;           // Framebuffer of the transmittance target (and the same depth texture), 0 = none
     bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
+    bool blending;                  // Between RblBeginShadowBlend() and RblEndShadowBlend()
+    bool coloured;                  // ... and the blended casters tint by their colour
+    Vector2 savedAlphaBand;         // rbl__state.alphaBand outside the blended casters
 } rbl__ShadowMapState;
 
 // What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
@@ -1600,6 +1669,7 @@ typedef struct rbl__Scene {
     bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
     bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
+    unsigned int shadowTint[RBL_MAX_SHADOWS];       // Each map's transmittance target (0 = none)
     float shadowUniforms[RBL_MAX_SHADOWS][48];      // Matrix rows, params, bias, axes, tiles as shadows.glsl reads them
     Texture2D depth;                // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
@@ -1645,7 +1715,7 @@ typedef struct rbl__State {
     RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
     RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
-    unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
+    unsigned int casterIds[7];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced, blended vertex buffers and instanced: compiled on first use)
 #if defined(RBL_INSTRUMENTS)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
@@ -2288,6 +2358,7 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    s.face = s.normal;\n",
     "#endif\n",
     "    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales\n",
+    "    s.transmission = 0.0;               // forward only: not stored\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
     "    s.metalness = 0.0;\n",
@@ -2315,9 +2386,14 @@ static const char *const rbl__shader_lights[] = {
     "//   RBL_LIGHT_SPOT            spot cones\n",
     "//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation\n",
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
+    "//   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)\n",
+    "//   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)\n",
+    "//   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)\n",
     "#include \"surface.glsl\"\n",
     "#include \"ambient.glsl\"\n",
     "#include \"shadows.glsl\"\n",
+    "#include \"shadow_tint.glsl\"\n",
+    "#include \"transmission.glsl\"\n",
     "\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
     "#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite\n",
@@ -2383,6 +2459,9 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "    vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    if (s.transmission > 0.0) NdotL = 1.0;          // the light behind the card is shadowed on its way too\n",
+    "#endif\n",
     "    return (NdotL > 0.0)? rblShadowAt(k, s, l) : 1.0;\n",
     "}\n",
     "#endif\n",
@@ -2400,7 +2479,11 @@ static const char *const rbl__shader_lights[] = {
     "    float d2 = dot(toLight, toLight);\n",
     "    vec3 l = rblSafeNormalize(toLight, s.normal);      // a light on the surface lights it head-on\n",
     "    float NdotL = dot(s.normal, l);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    if ((NdotL <= 0.0) && !(s.transmission > 0.0)) return vec3(0.0);\n",
+    "#else\n",
     "    if (NdotL <= 0.0) return vec3(0.0);\n",
+    "#endif\n",
     "    // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)\n",
     "    float x2 = d2*c.a*c.a;\n",
     "    float window = clamp(1.0 - x2*x2, 0.0, 1.0);\n",
@@ -2414,7 +2497,18 @@ static const char *const rbl__shader_lights[] = {
     "    attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone\n",
     "#endif\n",
     "    attenuation *= shadow;\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    vec3 through = rblTransmitted(s, NdotL);\n",
+    "    if (NdotL <= 0.0) return c.rgb*attenuation*through;\n",
+    "#endif\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "    attenuation *= rblReliefShadow(l);              // transmitted light is not: it comes through the card\n",
+    "#endif\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    return c.rgb*attenuation*(NdotL*rblBrdf(s, v, l, NdotL) + through);\n",
+    "#else\n",
     "    return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);\n",
+    "#endif\n",
     "}\n",
     "\n",
     "// Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)\n",
@@ -2433,6 +2527,18 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "#if RBL_SHADOWS > 3\n",
     "    shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);\n",
+    "#endif\n",
+    "#ifdef RBL_SHADOW_TINT\n",
+    "    vec3 tint0 = rblShadowTint(0, s.position), tint1 = vec3(1.0), tint2 = vec3(1.0), tint3 = vec3(1.0);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    tint1 = rblShadowTint(1, s.position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    tint2 = rblShadowTint(2, s.position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    tint3 = rblShadowTint(3, s.position);\n",
+    "#endif\n",
     "#endif\n",
     "#endif\n",
     "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
@@ -2454,7 +2560,12 @@ static const char *const rbl__shader_lights[] = {
     "#else\n",
     "        float shadow = 1.0;\n",
     "#endif\n",
+    "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
+    "        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));\n",
+    "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow)*tint;\n",
+    "#else\n",
     "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);\n",
+    "#endif\n",
     "    }\n",
     "#endif\n",
     "    return sum;\n",
@@ -3107,7 +3218,11 @@ static const char *const rbl__shader_material[] = {
     "//                            the cutoff applies to the mixed alpha; the normal as a world vector (each\n",
     "//                            fetch decoded in its own frame's tangent axes), then renormalised;\n",
     "//                            specular, occlusion and emission with the colour's coverage weight\n",
+    "//   RBL_TRANSMISSION, RBL_THICKNESS_CHANNEL   the card lets light through (transmission.glsl)\n",
+    "//   RBL_RELIEF_STEPS, RBL_HEIGHT_CHANNEL      relief self-shadow (relief.glsl): the tangent frame kept for the lights\n",
     "#include \"surface.glsl\"\n",
+    "#include \"transmission.glsl\"\n",
+    "#include \"relief.glsl\"\n",
     "\n",
     "RBL_VARYING vec3 fragPosition;\n",
     "RBL_VARYING vec2 fragTexCoord;\n",
@@ -3134,7 +3249,7 @@ static const char *const rbl__shader_material[] = {
     "#endif\n",
     "\n",
     "uniform sampler2D texture0;     // albedo (sRGB)\n",
-    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION) || defined(RBL_HEIGHT_CHANNEL) || defined(RBL_THICKNESS_CHANNEL)\n",
     "#define RBL_MATERIAL_TEXTURE\n",
     "uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion\n",
     "#endif\n",
@@ -3256,13 +3371,18 @@ static const char *const rbl__shader_material[] = {
     "#endif\n",
     "#endif\n",
     "    tangentNormal = vec3(0.0, 0.0, 1.0);\n",
-    "#if RBL_NORMAL_ENCODING > 0\n",
+    "#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_RELIEF_STEPS)\n",
     "    // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's\n",
     "    // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.\n",
     "    vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);\n",
     "    vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);\n",
     "    t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));\n",
     "    vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "    rblReliefSetup(texture2, fragTexCoord, t, b, n*side);\n",
+    "#endif\n",
+    "#endif\n",
+    "#if RBL_NORMAL_ENCODING > 0\n",
     "    tangentNormal = rblDecodeNormal(material);\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    // Each fetch in its own frame's axes, mixed as world vectors, renormalised (opposite normals\n",
@@ -3319,6 +3439,13 @@ static const char *const rbl__shader_material[] = {
     "#ifdef RBL_OCCLUSION\n",
     "    sp.occlusion = material.a;\n",
     "#endif\n",
+    "    sp.transmission = 0.0;\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    sp.transmission = rblTransmission;\n",
+    "#ifdef RBL_THICKNESS_CHANNEL\n",
+    "    sp.transmission *= 1.0 - material[RBL_THICKNESS_CHANNEL - 1];\n",
+    "#endif\n",
+    "#endif\n",
     "    alpha = albedo.a;\n",
     "    emission = vec3(0.0);\n",
     "#if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)\n",
@@ -3333,6 +3460,14 @@ static const char *const rbl__shader_material[] = {
     "    emission += rblEmissiveColor;\n",
     "    return sp;\n",
     "}\n",
+    "\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "// The relief's light factor toward unit l at the point rblMaterialSurface last decoded (lights.glsl)\n",
+    "float rblReliefShadow(vec3 l)\n",
+    "{\n",
+    "    return rblReliefMarch(texture2, l);\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_output[] = {
     "// Output: fog, half-float clamp, exposure, tonemap and the display encoding, in that order (the\n",
@@ -3380,6 +3515,61 @@ static const char *const rbl__shader_output[] = {
     "    return rblLinearToSrgb(color);\n",
     "#endif\n",
     "}\n",
+    NULL };
+static const char *const rbl__shader_relief[] = {
+    "// Relief self-shadow: embossed detail shadows the sprite itself. The material texture's height\n",
+    "// channel (0..1, scaled by rblRelief.x texels) is marched from the shaded texel toward each light in\n",
+    "// the card's tangent space, at RBL_RELIEF_STEPS evenly spaced samples of the ray up to where it\n",
+    "// clears the highest height; a sample whose texel stands above the ray shadows the light. Heights are\n",
+    "// read texel by texel (unfiltered, base level; the mirror of tests' double-precision march). The ray's\n",
+    "// horizontal reach is capped at 8 climbs (light below 7 degrees), and a texel is taken as square:\n",
+    "// a sprite drawn stretched sees its shadows stretched with it.\n",
+    "// Included by material.glsl; compiled only with:\n",
+    "//   RBL_RELIEF_STEPS n      samples per light (RblLitShaderDesc.reliefSteps)\n",
+    "//   RBL_HEIGHT_CHANNEL c    material texture component holding height (3 b, 4 a)\n",
+    "#include \"surface.glsl\"\n",
+    "\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "uniform vec4 rblRelief;     // x height 1 in texels (0 = flat: nothing marched), zw 1/size of the material texture\n",
+    "vec2 rblReliefAt;           // the shaded point in texels of the material texture (set by rblMaterialSurface)\n",
+    "float rblReliefBase;        // its height in texels\n",
+    "vec3 rblReliefU, rblReliefV, rblReliefN;   // world directions of +U, +V (down the image) and out of the card's shaded side\n",
+    "\n",
+    "float rblReliefHeight(sampler2D map, vec2 texel)\n",
+    "{\n",
+    "    vec2 at = clamp(floor(texel), vec2(0.0), floor(1.0/rblRelief.zw + 0.5) - 1.0);\n",
+    "#if RBL_GLSL >= 300\n",
+    "    vec4 m = texelFetch(map, ivec2(at), 0);\n",
+    "#else\n",
+    "    vec4 m = texture2D(map, (at + 0.5)*rblRelief.zw);\n",
+    "#endif\n",
+    "    return m[RBL_HEIGHT_CHANNEL - 1]*rblRelief.x;\n",
+    "}\n",
+    "\n",
+    "// The shaded point: uv, its tangent frame (unit world +U, +V, shaded-side normal)\n",
+    "void rblReliefSetup(sampler2D map, vec2 uv, vec3 u, vec3 v, vec3 n)\n",
+    "{\n",
+    "    rblReliefAt = uv/rblRelief.zw;\n",
+    "    rblReliefU = u; rblReliefV = v; rblReliefN = n;\n",
+    "    rblReliefBase = rblReliefHeight(map, rblReliefAt);\n",
+    "}\n",
+    "\n",
+    "// Light let through toward unit direction l: 0 behind relief, else 1\n",
+    "float rblReliefMarch(sampler2D map, vec3 l)\n",
+    "{\n",
+    "    vec3 d = vec3(dot(l, rblReliefU), dot(l, rblReliefV), dot(l, rblReliefN));\n",
+    "    float rise = rblRelief.x - rblReliefBase;          // texels to the top\n",
+    "    if (!(d.z > 0.0) || !(rise > 0.0)) return 1.0;    // behind the card (the lights decide), or nothing above\n",
+    "    vec2 reach = d.xy*(rise/max(d.z, 0.125));\n",
+    "    float delta = 1.0/float(RBL_RELIEF_STEPS);\n",
+    "    for (int i = 1; i <= RBL_RELIEF_STEPS; i++)\n",
+    "    {\n",
+    "        float f = float(i)*delta;\n",
+    "        if (rblReliefHeight(map, rblReliefAt + reach*f) > rblReliefBase + rise*f) return 0.0;\n",
+    "    }\n",
+    "    return 1.0;\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_scene_composite_fs[] = {
     "// The opaque world drawn between RblBeginSceneDepth and RblEndSceneDepth, shown on the caller's target\n",
@@ -3432,9 +3622,15 @@ static const char *const rbl__shader_shadow_caster_fs[] = {
     "//        window depth (linear over near..far); perspective, log(d/near)/log(far/near), a step a fixed\n",
     "//        share of the distance, as a perspective texel is\n",
     "//   ba   its caster identity: a billboard's from its pivot, 0 for Models (shadows.glsl)\n",
+    "// Blended casters (RBL_CASTER_TRANSMIT, RblBeginShadowBlend) write the transmittance target instead\n",
+    "// (shadow_tint.glsl): rgb what they let through, multiplied in by the blending (1 - alpha, or\n",
+    "// mix(1, colour, alpha) with rblCasterTint 1), a the distance code's top 8 bits (kept by min blending)\n",
     "#include \"material.glsl\"\n",
     "\n",
     "uniform vec4 rblCasterDepth;    // perspective (0/1), near, far, log(far/near)\n",
+    "#ifdef RBL_CASTER_TRANSMIT\n",
+    "uniform float rblCasterTint;    // 1: tinted by the caster's colour, 0: grey (coverage only)\n",
+    "#endif\n",
     "#if RBL_GLSL >= 300\n",
     "out vec4 rblOutCaster;\n",
     "#else\n",
@@ -3448,10 +3644,78 @@ static const char *const rbl__shader_shadow_caster_fs[] = {
     "    RblShadingPoint sp = rblMaterialSurface(alpha, emission, tangentNormal);     // discards below the cutoff\n",
     "    float code = gl_FragCoord.z;\n",
     "    if (rblCasterDepth.x > 0.5) code = log(max(1.0/gl_FragCoord.w, rblCasterDepth.y)/rblCasterDepth.y)/rblCasterDepth.w;\n",
+    "#ifdef RBL_CASTER_TRANSMIT\n",
+    "    vec3 through = (rblCasterTint > 0.5)? sp.albedo : vec3(0.0);\n",
+    "    rblOutCaster = vec4(mix(vec3(1.0), through, clamp(alpha, 0.0, 1.0)), floor(clamp(code, 0.0, 1.0)*255.0)/255.0);\n",
+    "    return;\n",
+    "#endif\n",
     "    float v = floor(clamp(code, 0.0, 1.0)*65535.0 + 0.5);\n",
     "    float high = floor(v/256.0);\n",
     "    rblOutCaster = vec4(high/255.0, (v - high*256.0)/255.0, sp.caster);\n",
     "}\n",
+    NULL };
+static const char *const rbl__shader_shadow_tint[] = {
+    "// Shadow tint: what blended casters (smoke, coloured glass; RblBeginShadowBlend) let through to a\n",
+    "// receiver behind them. Each map with RblShadowDesc.transmittance has an RGBA8 target: rgb the product\n",
+    "// of the blended casters' transmittance over that texel (coverage a: 1 - a, or mix(1, colour, a)\n",
+    "// coloured), a the nearest one's distance code in 8 bits (shadow_caster.fs.glsl); only casters in\n",
+    "// front of the opaque depth were kept. A receiver more than 1.5 code steps behind that distance\n",
+    "// takes the texel's tint: a caster never tints itself or what lies in front of it. Bilinear over the\n",
+    "// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers only.\n",
+    "//   RBL_SHADOW_TINT          RblLitShaderDesc.shadowTransmittance (needs RBL_SHADOWS > 0)\n",
+    "#include \"shadows.glsl\"\n",
+    "\n",
+    "#if defined(RBL_SHADOW_TINT) && (RBL_SHADOWS > 0)\n",
+    "uniform sampler2D rblShadowTint0;           // units RBL_SHADOW_TINT_TEXTURE_UNIT + k (white 1 x 1 where a map has none)\n",
+    "#if RBL_SHADOWS > 1\n",
+    "uniform sampler2D rblShadowTint1;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "uniform sampler2D rblShadowTint2;\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "uniform sampler2D rblShadowTint3;\n",
+    "#endif\n",
+    "\n",
+    "vec3 rblTintLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, float size, vec3 position)\n",
+    "{\n",
+    "    vec4 c = rblShadowTransform(r0, r1, r2, r3, position);\n",
+    "    if (!(c.w > 0.0)) return vec3(1.0);\n",
+    "    vec3 q = c.xyz/c.w;\n",
+    "    if (!((q.x >= 0.0) && (q.x <= 1.0) && (q.y >= 0.0) && (q.y <= 1.0) && (q.z < 1.0))) return vec3(1.0);\n",
+    "    bool perspective = mod(prm.y, 2.0) > 0.5;\n",
+    "    float d = rblShadowDistance(max(q.z, 0.0), vec4(prm.x, perspective? 1.0 : 0.0, prm.zw));\n",
+    "    float code = perspective? log(max(d, prm.z)/prm.z)/log(prm.w/prm.z) : (d - prm.z)/(prm.w - prm.z);\n",
+    "    vec2 st = q.xy*size - 0.5;\n",
+    "    vec2 base = floor(st), f = st - base;\n",
+    "    vec3 sum = vec3(0.0);\n",
+    "    for (int j = 0; j < 2; j++)\n",
+    "        for (int i = 0; i < 2; i++)\n",
+    "        {\n",
+    "            vec2 at = clamp(base + vec2(float(i), float(j)), vec2(0.0), vec2(size - 1.0));\n",
+    "            vec4 t = rblFetch(map, ivec2(at), size);\n",
+    "            float w = ((i == 0)? 1.0 - f.x : f.x)*((j == 0)? 1.0 - f.y : f.y);\n",
+    "            sum += w*((code > t.a + 1.5/255.0)? t.rgb : vec3(1.0));\n",
+    "        }\n",
+    "    return sum;\n",
+    "}\n",
+    "\n",
+    "// Map k's tint at a world position (1: untinted)\n",
+    "vec3 rblShadowTint(int k, vec3 position)\n",
+    "{\n",
+    "    if (k == 0) return rblTintLookup(rblShadowTint0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3], rblShadowParams[0], rblShadowBias[0].w, position);\n",
+    "#if RBL_SHADOWS > 1\n",
+    "    if (k == 1) return rblTintLookup(rblShadowTint1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7], rblShadowParams[1], rblShadowBias[1].w, position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 2\n",
+    "    if (k == 2) return rblTintLookup(rblShadowTint2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11], rblShadowParams[2], rblShadowBias[2].w, position);\n",
+    "#endif\n",
+    "#if RBL_SHADOWS > 3\n",
+    "    if (k == 3) return rblTintLookup(rblShadowTint3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15], rblShadowParams[3], rblShadowBias[3].w, position);\n",
+    "#endif\n",
+    "    return vec3(1.0);\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_shadows[] = {
     "// Shadows: the shadow maps a receiver samples and the lookup (bias, receiver plane, PCF). Which\n",
@@ -3755,7 +4019,32 @@ static const char *const rbl__shader_surface[] = {
     "    float metalness;    // GGX\n",
     "    vec2 caster;        // identity of the billboard the point lies on (two bytes /255; 0 = a Model): its own caster never shadows it\n",
     "    vec3 face;          // unit normal of the rasterised surface (the card's plane, a Model's triangle), either sign: shadow biasing\n",
+    "    float transmission; // share of the light on the card's back let through (transmission.glsl; 0 = none)\n",
     "};\n",
+    NULL };
+static const char *const rbl__shader_transmission[] = {
+    "// Transmission: light through a thin card (leaves, paper, cloth) from a light on its other side. The\n",
+    "// card is a thin diffuse sheet: of the irradiance reaching its back it lets through the share t\n",
+    "// (the material's rblTransmission x (1 - thickness)) and spreads it diffusely over the front, in\n",
+    "// its own colour (albedo). The back's cosine is wrapped by RBL_TRANSMISSION_WRAP: a light edge-on\n",
+    "// to the card still shows through its rim, fading to nothing at N.L = wrap on the lit side.\n",
+    "// Included by material.glsl (the uniform) and lights.glsl (the term); compiled only with:\n",
+    "//   RBL_TRANSMISSION            RblLitShaderDesc.transmission (forward variants)\n",
+    "//   RBL_THICKNESS_CHANNEL c     material texture component (3 b, 4 a) holding thickness 0..1\n",
+    "#include \"surface.glsl\"\n",
+    "\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "#define RBL_TRANSMISSION_WRAP 0.25\n",
+    "uniform float rblTransmission;      // share of the back's light let through, 0..1 (0: the term costs one compare)\n",
+    "\n",
+    "// Radiance toward the viewer per unit irradiance (pi folded in, as rblBrdf) from a light at\n",
+    "// cos(incidence) NdotL on the shaded side (negative: behind the card)\n",
+    "vec3 rblTransmitted(RblShadingPoint s, float NdotL)\n",
+    "{\n",
+    "    float back = clamp((RBL_TRANSMISSION_WRAP - NdotL)/(1.0 + RBL_TRANSMISSION_WRAP), 0.0, 1.0);\n",
+    "    return s.albedo*(s.transmission*back);\n",
+    "}\n",
+    "#endif\n",
     NULL };
 static const char *const rbl__shader_volume_vs[] = {
     "// Deferred light volume, vertex stage: a sphere proxy per bounded point/spot light, one instanced\n",
@@ -3800,13 +4089,16 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "lit_instanced.vs.glsl", rbl__shader_lit_instanced_vs },
     { "material.glsl", rbl__shader_material },
     { "output.glsl", rbl__shader_output },
+    { "relief.glsl", rbl__shader_relief },
     { "scene_composite.fs.glsl", rbl__shader_scene_composite_fs },
     { "scene_composite.vs.glsl", rbl__shader_scene_composite_vs },
     { "shadow_caster.fs.glsl", rbl__shader_shadow_caster_fs },
+    { "shadow_tint.glsl", rbl__shader_shadow_tint },
     { "shadows.glsl", rbl__shader_shadows },
     { "skinning.glsl", rbl__shader_skinning },
     { "soft.glsl", rbl__shader_soft },
     { "surface.glsl", rbl__shader_surface },
+    { "transmission.glsl", rbl__shader_transmission },
     { "volume.vs.glsl", rbl__shader_volume_vs },
 };
 // Each stage with its includes resolved, dependencies first (the loader joins these)
@@ -3815,13 +4107,13 @@ static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl_
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
 static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
+static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
-static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
+static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
     { "fullscreen.vs.glsl", rbl__pass_fullscreen_vs },
     { "lit.vs.glsl", rbl__pass_lit_vs },
@@ -6788,7 +7080,8 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblShadowLight", "rblShadowMatrix", "rblShadowParams", "rblShadowBias", "rblShadowAxes", "rblShadowTiles",
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
-    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable" };
+    "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable",
+    "rblTransmission", "rblRelief", "rblCasterTint" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -6815,6 +7108,17 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
     if (in.softParticles && in.deferred) return "soft particles blend: a forward variant, not a G-buffer one";
     if (in.skinning && !RBL_GPU_SKINNING) return "skinning needs raylib built with SUPPORT_GPU_SKINNING (then define RBL_GPU_SKINNING 1 before the header)";
+    if ((m.height < RBL_CHANNEL_NONE) || (m.height > RBL_CHANNEL_A) || (m.thickness < RBL_CHANNEL_NONE) || (m.thickness > RBL_CHANNEL_A)) return "unknown material.height or material.thickness channel";
+    // A scalar map takes a channel nothing else of the layout uses
+    for (int c = RBL_CHANNEL_B; c <= RBL_CHANNEL_A; c++)
+    {
+        int users = (m.height == c) + (m.thickness == c) + ((c == RBL_CHANNEL_B)? (m.specular || (m.normalEncoding == RBL_NORMAL_RGB)) : m.occlusion);
+        if (users > 1) return "material.height/thickness share a channel with another map (B: specular, RGB normal; A: occlusion)";
+    }
+    if ((in.reliefSteps < 0) || (in.reliefSteps > RBL_MAX_RELIEF_STEPS)) return "reliefSteps outside 0..RBL_MAX_RELIEF_STEPS";
+    if (in.relief && (m.height == RBL_CHANNEL_NONE)) return "relief needs a height channel (material.height)";
+    if ((in.relief || in.transmission) && in.deferred) return "relief and transmission are forward-only (the G-buffer carries neither)";
+    if (in.shadowTransmittance && ((in.shadowMaps == 0) || in.deferred)) return "shadowTransmittance needs shadowMaps > 0 in a forward variant";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
     out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
@@ -6835,6 +7139,13 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->softParticles = in.softParticles;
     out->crossFade = in.crossFade;
     out->debugOutput = in.debugOutput;
+    // Height and thickness are sampled only by the feature that reads them
+    out->transmission = in.transmission;
+    out->material.thickness = in.transmission? m.thickness : RBL_CHANNEL_NONE;
+    out->relief = in.relief;
+    out->material.height = in.relief? m.height : RBL_CHANNEL_NONE;
+    out->reliefSteps = in.relief? ((in.reliefSteps == 0)? 16 : in.reliefSteps) : 0;
+    out->shadowTransmittance = in.shadowTransmittance;
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
@@ -6866,6 +7177,11 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     // The caster identity: shadow receivers and G-buffer geometry variants (rbl__compileProgram adds it to casters)
     if ((n > 0) && ((size_t)n < size) && ((d->shadowMaps > 0) || d->deferred)) n += snprintf(out + n, size - (size_t)n, "#define RBL_CASTER_ID\n");
     if ((n > 0) && ((size_t)n < size) && m->premultipliedAlpha) n += snprintf(out + n, size - (size_t)n, "#define RBL_PREMULTIPLIED_ALPHA\n");
+    if ((n > 0) && ((size_t)n < size) && d->transmission) n += snprintf(out + n, size - (size_t)n, "#define RBL_TRANSMISSION\n");
+    if ((n > 0) && ((size_t)n < size) && (m->thickness != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_THICKNESS_CHANNEL %i\n", m->thickness + 2);
+    if ((n > 0) && ((size_t)n < size) && (m->height != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_HEIGHT_CHANNEL %i\n", m->height + 2);
+    if ((n > 0) && ((size_t)n < size) && d->relief) n += snprintf(out + n, size - (size_t)n, "#define RBL_RELIEF_STEPS %i\n", d->reliefSteps);
+    if ((n > 0) && ((size_t)n < size) && d->shadowTransmittance) n += snprintf(out + n, size - (size_t)n, "#define RBL_SHADOW_TINT\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -7061,7 +7377,8 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
     size_t used = strlen(defines);
-    if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
+    if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
+    if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
@@ -7121,6 +7438,13 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
         char name[32];
         snprintf(name, sizeof(name), "rblShadowMap%i", k);
         int unit = RBL_SHADOW_TEXTURE_UNIT + k;
+        rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
+    }
+    for (int k = 0; d->shadowTransmittance && (k < d->shadowMaps); k++)
+    {
+        char name[32];
+        snprintf(name, sizeof(name), "rblShadowTint%i", k);
+        int unit = RBL_SHADOW_TINT_TEXTURE_UNIT + k;
         rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
     }
     int none[4] = { -1, -1, -1, -1 };
@@ -7323,6 +7647,20 @@ static void rbl__materialValues(const rbl__Program *p, const Material *material,
         v->alphaCeiling = rbl__state.alphaBand.y;
     }
     v->emissiveColor.a = 0;                         // only rgb matters
+    if (p->key.desc.transmission)
+    {
+        float t = material->params[RBL_PARAM_TRANSMISSION];
+        v->transmission = !rbl__finite(t)? 0.0f : ((t < 0.0f)? 0.0f : ((t > 1.0f)? 1.0f : t));
+    }
+    if (p->key.desc.relief && (material->maps != NULL))
+    {
+        float h = material->maps[MATERIAL_MAP_HEIGHT].value;
+        Texture2D m = material->maps[MATERIAL_MAP_NORMAL].texture;
+        v->relief[0] = (!rbl__finite(h) || (h == 0.0f))? 4.0f : ((h < 0.0f)? 0.0f : ((h > 65536.0f)? 65536.0f : h));
+        v->relief[2] = (m.width > 0)? 1.0f/(float)m.width : 1.0f;
+        v->relief[3] = (m.height > 0)? 1.0f/(float)m.height : 1.0f;
+        if (m.id == 0) v->relief[0] = 0.0f;          // no material texture bound: no height to march
+    }
 }
 
 // Upload the material's values into bound program p, unless the last draw with p used the same ones
@@ -7348,6 +7686,8 @@ static void rbl__applyMaterialValues(rbl__Program *p, const Material *material)
         rlSetUniform(loc[RBL__U_EMISSIVE_COLOR], e, SHADER_UNIFORM_VEC3, 1);
     }
     if (loc[RBL__U_EMISSIVE_INTENSITY] != -1) rlSetUniform(loc[RBL__U_EMISSIVE_INTENSITY], &v.emissive, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_TRANSMISSION] != -1) rlSetUniform(loc[RBL__U_TRANSMISSION], &v.transmission, SHADER_UNIFORM_FLOAT, 1);
+    if (loc[RBL__U_RELIEF] != -1) rlSetUniform(loc[RBL__U_RELIEF], v.relief, SHADER_UNIFORM_VEC4, 1);
 }
 
 
@@ -7438,6 +7778,37 @@ static rbl__Program *rbl__fadeCaster(bool instanced)
     return caster;
 }
 
+// The blended casters (vertex buffers, instanced: RblBeginShadowBlend), compiled on first use and held
+// (one holder each) until the last shadow map goes; NULL (problem set) on failure
+static rbl__Program *rbl__blendCaster(bool instanced)
+{
+    unsigned int *id = &rbl__state.casterIds[instanced? 6 : 5];
+    rbl__Program *caster = rbl__findCaster(*id);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc desc, normalised;
+    memset(&desc, 0, sizeof(desc));
+    desc.instanced = instanced;
+    rbl__normaliseLitDesc(desc, &normalised);
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 1, &key);
+    caster = rbl__acquireProgram(&key);
+    *id = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
+// A shadowTransmittance program's per-draw inputs: map k's transmittance target on its unit (the
+// default white texture where the scene's map has none: nothing tinted)
+static void rbl__bindSceneTints(const rbl__Program *p)
+{
+    for (int k = 0; k < p->key.desc.shadowMaps; k++)
+    {
+        unsigned int id = (k < rbl__state.scene.shadowCount)? rbl__state.scene.shadowTint[k] : 0;
+        rlActiveTextureSlot(RBL_SHADOW_TINT_TEXTURE_UNIT + k);
+        rlEnableTexture((id != 0)? id : rlGetTextureIdDefault());
+    }
+    rlActiveTextureSlot(0);
+}
+
 // A soft-particle program's per-draw depth inputs: the scene's depth texture on its unit, the current
 // projection's depth row (as the fragment's own depth was made), its texel size and the material's
 // fade distance
@@ -7484,13 +7855,19 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
     if (rbl__state.shadowPass != NULL)
     {
-        // Billboards with fade data cast the mixed cut-out (a crossFade caster); others the plain one
-        rbl__Program *caster = (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() : fade? rbl__fadeCaster(path == RBL__PATH_INSTANCED) :
-                               rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        // Billboards with fade data cast the mixed cut-out (a crossFade caster); others the plain one;
+        // blended casters (RblBeginShadowBlend) their coverage, the first frame's
+        const rbl__ShadowMapState *pass = rbl__state.shadowPass->state;
+        if (pass->blending && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned Models cannot be blended casters (RblEndShadowBlend first)", fn); return false; }
+        rbl__Program *caster = pass->blending? rbl__blendCaster(path == RBL__PATH_INSTANCED) : (path == RBL__PATH_SKINNED)? rbl__skinnedCaster() :
+                               fade? rbl__fadeCaster(path == RBL__PATH_INSTANCED) : rbl__findCaster(rbl__state.casterIds[(path == RBL__PATH_INSTANCED)? 1 : 0]);
+        if ((caster == NULL) && pass->blending) { TraceLog(LOG_WARNING, "RBL: %s: blended shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
         rbl__casterDepth(caster);
+        float tint = pass->coloured? 1.0f : 0.0f;
+        if (caster->loc[RBL__U_CASTER_TINT] != -1) rlSetUniform(caster->loc[RBL__U_CASTER_TINT], &tint, SHADER_UNIFORM_FLOAT, 1);
         memset(casterMaps, 0, sizeof(MaterialMap)*RBL__CASTER_MAPS);
         casterMaps[MATERIAL_MAP_ALBEDO] = material->maps[MATERIAL_MAP_ALBEDO];
         material->maps = casterMaps;
@@ -7503,6 +7880,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
     if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
+    if ((*program)->key.desc.shadowTransmittance) rbl__bindSceneTints(*program);
     return true;
 }
 
@@ -7588,7 +7966,7 @@ static void rbl__dropSceneShadow(unsigned int id)
     if (k == s->shadowCount) return;
     for (int j = k; j + 1 < s->shadowCount; j++)
     {
-        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1];
+        s->shadowLight[j] = s->shadowLight[j + 1]; s->shadowId[j] = s->shadowId[j + 1]; s->shadowTexture[j] = s->shadowTexture[j + 1]; s->shadowTint[j] = s->shadowTint[j + 1];
         memcpy(s->shadowUniforms[j], s->shadowUniforms[j + 1], sizeof(s->shadowUniforms[j]));
     }
     s->shadowCount--;
@@ -7785,6 +8163,7 @@ bool RblSetScene(const RblScene *scene)
         s->shadowLight[k] = map->light;
         s->shadowId[k] = map->id;
         s->shadowTexture[k] = (map->casters.id != 0)? map->casters.id : map->depth.id;
+        s->shadowTint[k] = map->transmittance.id;
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
@@ -8814,6 +9193,10 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     out->minCastAngle = (in.minCastAngle == 0.0f)? 30.0f : ((in.minCastAngle < 0.0f)? 0.0f : in.minCastAngle);
     out->faceCamera = in.faceCamera;
     out->selfShadow = in.selfShadow;
+    // The nearest blended caster's distance is kept by min blending (EXT_blend_minmax on ES 2: not asked for)
+    if (in.transmittance && (rlGetVersion() == RL_OPENGL_ES_20)) return "transmittance needs min blending (GL, ES 3, WebGL2)";
+    if (in.transmittance && (in.omni || (in.cascades > 1))) return "transmittance works on single maps (not omni or cascaded ones)";
+    out->transmittance = in.transmittance;
     return NULL;
 }
 
@@ -8896,6 +9279,26 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
         if (map.casters.id != 0) rlFramebufferAttach(map.state->id, map.casters.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
         ok = (map.state->id != 0) && rlFramebufferComplete(map.state->id);
     }
+    if (ok && map.desc.transmittance)
+    {
+        // The transmittance target: blended casters multiply its rgb (cleared to 1) and keep the
+        // nearest one's distance code in a (min), depth-tested against the opaque casters' depth
+        map.transmittance.id = rlLoadTexture(NULL, map.size, map.size, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8, 1);
+        map.transmittance.width = map.size; map.transmittance.height = map.size; map.transmittance.mipmaps = 1;
+        map.transmittance.format = PIXELFORMAT_UNCOMPRESSED_R8G8B8A8;
+        ok = (map.transmittance.id != 0);
+        if (ok)
+        {
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_WRAP_S, RL_TEXTURE_WRAP_CLAMP);
+            rlTextureParameters(map.transmittance.id, RL_TEXTURE_WRAP_T, RL_TEXTURE_WRAP_CLAMP);
+            map.state->blendId = rlLoadFramebuffer();
+            rlFramebufferAttach(map.state->blendId, map.depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+            rlFramebufferAttach(map.state->blendId, map.transmittance.id, RL_ATTACHMENT_COLOR_CHANNEL0, RL_ATTACHMENT_TEXTURE2D, 0);
+            ok = (map.state->blendId != 0) && rlFramebufferComplete(map.state->blendId);
+        }
+    }
     rbl__restoreTarget(callerTarget);
     if (!ok)
     {
@@ -8903,15 +9306,16 @@ RblShadowMap RblLoadShadowMap(RblShadowDesc desc)
         RblUnloadShadowMap(&map);
         return map;
     }
-    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s%s)", width, height, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target",
-             map.desc.omni? ", six cube faces" : ((map.desc.cascades > 1)? ", cascades" : ""));
+    TraceLog(LOG_INFO, "RBL: shadow map %ix%i loaded (%s%s%s)", width, height, map.desc.selfShadow? "depth" : "depth + RGBA8 casters target",
+             map.desc.omni? ", six cube faces" : ((map.desc.cascades > 1)? ", cascades" : ""), map.desc.transmittance? " + RGBA8 transmittance target" : "");
     return map;
 }
 
 bool RblIsShadowMapValid(RblShadowMap map)
 {
     // Membership first: a stale copy's state (its map unloaded) is never read
-    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow);
+    return rbl__isLive(map.id, map.state) && (map.state->id != 0) && (map.depth.id != 0) && (map.size > 0) && ((map.casters.id != 0) != map.desc.selfShadow) &&
+           ((map.transmittance.id != 0) == map.desc.transmittance);
 }
 
 void RblUnloadShadowMap(RblShadowMap *map)
@@ -8919,6 +9323,13 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (!rbl__unloadable(map, (map != NULL)? map->id : 0, (map != NULL)? map->state : NULL, "RblUnloadShadowMap", "shadow map")) { if (map != NULL) memset(map, 0, sizeof(*map)); return; }
     if (map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblUnloadShadowMap: its shadow pass is in progress (RblEndShadowMap first)"); return; }
     rbl__dropSceneShadow(map->id);
+    if (rbl__glUsable() && (map->state->blendId != 0))
+    {
+        // The depth texture is the other framebuffer's to delete: detached first
+        rlFramebufferAttach(map->state->blendId, 0, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
+        rlUnloadFramebuffer(map->state->blendId);                          // deletes the transmittance target
+    }
+    else if (rbl__glUsable() && (map->transmittance.id != 0)) rlUnloadTexture(map->transmittance.id);
     if (!rbl__glUsable()) {}                                                // gone with the context
     else if (map->state->id != 0) rlUnloadFramebuffer(map->state->id);    // deletes its depth texture (and casters target) too
     else
@@ -8930,7 +9341,7 @@ void RblUnloadShadowMap(RblShadowMap *map)
     if (rbl__state.casterIds[1] != 0) rbl__releaseProgram(rbl__state.casterIds[1], RBL__KIND_CASTER);
     if (rbl__findCaster(rbl__state.casterIds[0]) == NULL)                 // the last map: the on-demand casters go too
     {
-        for (int k = 2; k < 5; k++)                                          // skinned and cross-fade casters
+        for (int k = 2; k < 7; k++)                                          // skinned, cross-fade and blended casters
         {
             if (rbl__state.casterIds[k] != 0) rbl__releaseProgram(rbl__state.casterIds[k], RBL__KIND_CASTER);
             rbl__state.casterIds[k] = 0;
@@ -9126,11 +9537,17 @@ bool RblBeginShadowMapPass(RblShadowMap *map, const RblScene *scene, int lightIn
     map->state->savedView = rlGetMatrixModelview();
     map->state->savedProjection = rlGetMatrixProjection();
     map->state->savedFramebuffer = rbl__activeFramebuffer();
-    rlEnableFramebuffer(map->state->id);
     int x0 = (pass%st->cols)*map->size, y0 = (pass/st->cols)*map->size;
     rlViewport(x0, y0, map->size, map->size);
-    rlEnableDepthTest();
     rlEnableDepthMask();
+    if (map->state->blendId != 0)
+    {
+        rlEnableFramebuffer(map->state->blendId);
+        rlClearColor(255, 255, 255, 255);   // transmittance 1, nearest blended caster beyond the far plane
+        rlClearScreenBuffers();
+    }
+    rlEnableFramebuffer(map->state->id);
+    rlEnableDepthTest();
     rlClearColor(255, 255, 0, 0);           // casters target: distance code 1 (nothing), identity 0
     bool tiled = (st->cols*st->rows > 1);
     if (tiled) { rlEnableScissorTest(); rlScissor(x0, y0, map->size, map->size); }      // this tile only
@@ -9150,6 +9567,7 @@ bool RblBeginShadowMapPass(RblShadowMap *map, const RblScene *scene, int lightIn
 void RblEndShadowMap(RblShadowMap *map)
 {
     if ((map == NULL) || !rbl__isLive(map->id, map->state) || !map->state->begun) { TraceLog(LOG_WARNING, "RBL: RblEndShadowMap: no shadow pass of this map in progress"); return; }
+    if (map->state->blending) RblEndShadowBlend();
     rlDrawRenderBatchActive();
     rbl__restoreTarget(map->state->savedFramebuffer);      // e.g. inside BeginTextureMode
     rlSetMatrixProjection(map->state->savedProjection);
@@ -9161,6 +9579,41 @@ void RblEndShadowMap(RblShadowMap *map)
     rbl__state.shadowPass = NULL;
     memset(&rbl__state.cast, 0, sizeof(rbl__state.cast));
     rbl__bindSceneShadows();        // the pass unbound the receivers' units
+}
+
+bool RblBeginShadowBlend(bool coloured)
+{
+    RblShadowMap *map = rbl__state.shadowPass;
+    const char *bad = (map == NULL)? "outside a shadow pass" : (map->state->blendId == 0)? "the map has no transmittance target (RblShadowDesc.transmittance)" :
+                      map->state->blending? "already blending (RblEndShadowBlend first)" : NULL;
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBeginShadowBlend: %s", bad); return false; }
+    rlDrawRenderBatchActive();
+    rlEnableFramebuffer(map->state->blendId);
+    // Behind the opaque casters nothing counts (depth test, no writes); rgb multiplies by each
+    // caster's transmittance, a keeps the smallest distance code (0x0300 GL_SRC_COLOR, 0x8006 add, 0x8007 min)
+    rlDisableDepthMask();
+    rlSetBlendFactorsSeparate(0, 0x0300, 1, 1, 0x8006, 0x8007);
+    rlSetBlendMode(RL_BLEND_CUSTOM_SEPARATE);
+    rlEnableColorBlend();
+    map->state->blending = true;
+    map->state->coloured = coloured;
+    // Every texel with any coverage casts (the material's cutoff is for opaque casters)
+    map->state->savedAlphaBand = rbl__state.alphaBand;
+    rbl__state.alphaBand.x = 1.0f/512.0f; rbl__state.alphaBand.y = 2.0f;
+    return true;
+}
+
+void RblEndShadowBlend(void)
+{
+    RblShadowMap *map = rbl__state.shadowPass;
+    if ((map == NULL) || !map->state->blending) { TraceLog(LOG_WARNING, "RBL: RblEndShadowBlend: no blended casters in progress"); return; }
+    rlDrawRenderBatchActive();
+    rlSetBlendMode(RL_BLEND_ALPHA);
+    rlDisableColorBlend();
+    rlEnableDepthMask();
+    rlEnableFramebuffer(map->state->id);
+    rbl__state.alphaBand = map->state->savedAlphaBand;
+    map->state->blending = false;
 }
 
 bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius)

@@ -7,9 +7,14 @@
 //   RBL_LIGHT_SPOT            spot cones
 //   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation
 //   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)
+//   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)
+//   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)
+//   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)
 #include "surface.glsl"
 #include "ambient.glsl"
 #include "shadows.glsl"
+#include "shadow_tint.glsl"
+#include "transmission.glsl"
 
 #define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
 #define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite
@@ -75,6 +80,9 @@ float rblShadowOfMap(int k, RblShadingPoint s, int light)
 #endif
     vec3 l = rblSafeNormalize(p.xyz - s.position*p.w, s.normal);
     float NdotL = dot(s.normal, l);
+#ifdef RBL_TRANSMISSION
+    if (s.transmission > 0.0) NdotL = 1.0;          // the light behind the card is shadowed on its way too
+#endif
     return (NdotL > 0.0)? rblShadowAt(k, s, l) : 1.0;
 }
 #endif
@@ -92,7 +100,11 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, 
     float d2 = dot(toLight, toLight);
     vec3 l = rblSafeNormalize(toLight, s.normal);      // a light on the surface lights it head-on
     float NdotL = dot(s.normal, l);
+#ifdef RBL_TRANSMISSION
+    if ((NdotL <= 0.0) && !(s.transmission > 0.0)) return vec3(0.0);
+#else
     if (NdotL <= 0.0) return vec3(0.0);
+#endif
     // Windowed inverse square (UE4/Filament): saturate(1 - (d/r)^4)^2/max(d^2, eps)
     float x2 = d2*c.a*c.a;
     float window = clamp(1.0 - x2*x2, 0.0, 1.0);
@@ -106,7 +118,18 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, 
     attenuation *= t*t*(3.0 - 2.0*t);               // smoothstep from the outer to the inner cone
 #endif
     attenuation *= shadow;
+#ifdef RBL_TRANSMISSION
+    vec3 through = rblTransmitted(s, NdotL);
+    if (NdotL <= 0.0) return c.rgb*attenuation*through;
+#endif
+#ifdef RBL_RELIEF_STEPS
+    attenuation *= rblReliefShadow(l);              // transmitted light is not: it comes through the card
+#endif
+#ifdef RBL_TRANSMISSION
+    return c.rgb*attenuation*(NdotL*rblBrdf(s, v, l, NdotL) + through);
+#else
     return c.rgb*(attenuation*NdotL)*rblBrdf(s, v, l, NdotL);
+#endif
 }
 
 // Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)
@@ -125,6 +148,18 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 #endif
 #if RBL_SHADOWS > 3
     shadowed.w = rblShadowOfMap(3, s, rblShadowLight.w);
+#endif
+#ifdef RBL_SHADOW_TINT
+    vec3 tint0 = rblShadowTint(0, s.position), tint1 = vec3(1.0), tint2 = vec3(1.0), tint3 = vec3(1.0);
+#if RBL_SHADOWS > 1
+    tint1 = rblShadowTint(1, s.position);
+#endif
+#if RBL_SHADOWS > 2
+    tint2 = rblShadowTint(2, s.position);
+#endif
+#if RBL_SHADOWS > 3
+    tint3 = rblShadowTint(3, s.position);
+#endif
 #endif
 #endif
     for (int i = 0; i < RBL_LIGHTS; i++)
@@ -146,7 +181,12 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 #else
         float shadow = 1.0;
 #endif
+#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)
+        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));
+        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow)*tint;
+#else
         sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);
+#endif
     }
 #endif
     return sum;

@@ -18,7 +18,11 @@
 //                            the cutoff applies to the mixed alpha; the normal as a world vector (each
 //                            fetch decoded in its own frame's tangent axes), then renormalised;
 //                            specular, occlusion and emission with the colour's coverage weight
+//   RBL_TRANSMISSION, RBL_THICKNESS_CHANNEL   the card lets light through (transmission.glsl)
+//   RBL_RELIEF_STEPS, RBL_HEIGHT_CHANNEL      relief self-shadow (relief.glsl): the tangent frame kept for the lights
 #include "surface.glsl"
+#include "transmission.glsl"
+#include "relief.glsl"
 
 RBL_VARYING vec3 fragPosition;
 RBL_VARYING vec2 fragTexCoord;
@@ -45,7 +49,7 @@ RBL_VARYING vec4 fragFadeClip;
 #endif
 
 uniform sampler2D texture0;     // albedo (sRGB)
-#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION)
+#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_SPECULAR) || defined(RBL_OCCLUSION) || defined(RBL_HEIGHT_CHANNEL) || defined(RBL_THICKNESS_CHANNEL)
 #define RBL_MATERIAL_TEXTURE
 uniform sampler2D texture2;     // packed material (MATERIAL_MAP_NORMAL slot): RG normal, B specular, A occlusion
 #endif
@@ -167,13 +171,18 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
 #endif
 #endif
     tangentNormal = vec3(0.0, 0.0, 1.0);
-#if RBL_NORMAL_ENCODING > 0
+#if (RBL_NORMAL_ENCODING > 0) || defined(RBL_RELIEF_STEPS)
     // Re-orthogonalise the interpolated tangent; cross(N,T)*w is the +V direction (raylib's
     // GenMeshTangents convention), and +V runs down the image, so the map's +Y is -B.
     vec3 t = fragTangent.xyz - n*dot(n, fragTangent.xyz);
     vec3 anyPerp = (abs(n.z) < 0.9)? vec3(-n.y, n.x, 0.0) : vec3(0.0, -n.z, n.y);
     t = rblSafeNormalize(t, rblSafeNormalize(anyPerp, vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(n, t)*((fragTangent.w < 0.0)? -1.0 : 1.0);
+#ifdef RBL_RELIEF_STEPS
+    rblReliefSetup(texture2, fragTexCoord, t, b, n*side);
+#endif
+#endif
+#if RBL_NORMAL_ENCODING > 0
     tangentNormal = rblDecodeNormal(material);
 #ifdef RBL_CROSS_FADE
     // Each fetch in its own frame's axes, mixed as world vectors, renormalised (opposite normals
@@ -230,6 +239,13 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
 #ifdef RBL_OCCLUSION
     sp.occlusion = material.a;
 #endif
+    sp.transmission = 0.0;
+#ifdef RBL_TRANSMISSION
+    sp.transmission = rblTransmission;
+#ifdef RBL_THICKNESS_CHANNEL
+    sp.transmission *= 1.0 - material[RBL_THICKNESS_CHANNEL - 1];
+#endif
+#endif
     alpha = albedo.a;
     emission = vec3(0.0);
 #if defined(RBL_CROSS_FADE) && (RBL_EMISSIVE == 1)
@@ -244,3 +260,11 @@ RblShadingPoint rblMaterialSurface(out float alpha, out vec3 emission, out vec3 
     emission += rblEmissiveColor;
     return sp;
 }
+
+#ifdef RBL_RELIEF_STEPS
+// The relief's light factor toward unit l at the point rblMaterialSurface last decoded (lights.glsl)
+float rblReliefShadow(vec3 l)
+{
+    return rblReliefMarch(texture2, l);
+}
+#endif

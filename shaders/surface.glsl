@@ -15,4 +15,5 @@ struct RblShadingPoint {
     float metalness;    // GGX
     vec2 caster;        // identity of the billboard the point lies on (two bytes /255; 0 = a Model): its own caster never shadows it
     vec3 face;          // unit normal of the rasterised surface (the card's plane, a Model's triangle), either sign: shadow biasing
+    float transmission; // share of the light on the card's back let through (transmission.glsl; 0 = none)
 };

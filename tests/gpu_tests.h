@@ -21,6 +21,7 @@
 #include "test_fade.c"
 #include "test_held.c"
 #include "test_sprite_buffer.c"
+#include "test_thin.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_RENDER_TESTS,
@@ -39,6 +40,7 @@ static const RtTest rblGpuTests[] = {
         RBL_FADE_TESTS,
         RBL_HELD_TESTS,
         RBL_SPRITE_BUFFER_TESTS,
+        RBL_THIN_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

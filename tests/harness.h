@@ -79,6 +79,7 @@ typedef struct RtMaterialValues {
     Color emissiveColor;     // MATERIAL_MAP_EMISSION.color
     float emissiveIntensity; // MATERIAL_MAP_EMISSION.value
     float alphaCutoff;       // params[0]
+    float transmission;      // params[3] (RBL_PARAM_TRANSMISSION)
 } RtMaterialValues;
 static inline void rtSetMaterialValues(Material *m, RtMaterialValues v)
 {
@@ -90,6 +91,7 @@ static inline void rtSetMaterialValues(Material *m, RtMaterialValues v)
     m->maps[MATERIAL_MAP_EMISSION].value = v.emissiveIntensity;
     m->params[0] = v.alphaCutoff;
     m->params[1] = v.specular;
+    m->params[3] = v.transmission;
 }
 
 #endif

@@ -34,6 +34,7 @@ typedef struct RefParams {
     float exposure;             // the scene's exposure
     float gamma;                // display encoding (0 = sRGB)
     bool linearOutput;
+    double transmission;        // share of a card's back irradiance let through (params[RBL_PARAM_TRANSMISSION] x (1 - thickness); 0 = none)
 } RefParams;
 
 // Environment of a shading point besides its lights
@@ -51,8 +52,8 @@ typedef struct RefSurface {
     double occlusion;           // 1 without a map
 } RefSurface;
 
-// Irradiance delivered by one light to point p with normal n (NdotL included), and the unit direction to it
-static inline RefRgb refLightIrradiance(const RblLight *L, D3 p, D3 n, D3 *toLight)
+// Irradiance one light delivers to point p on a surface facing it (NdotL not included), and the unit direction to it
+static inline RefRgb refLightIncident(const RblLight *L, D3 p, D3 n, D3 *toLight)
 {
     double attenuation = 1.0;
     D3 l;
@@ -84,11 +85,29 @@ static inline RefRgb refLightIrradiance(const RblLight *L, D3 p, D3 n, D3 *toLig
         }
     }
     *toLight = l;
-    double ndotl = dDot(n, l);
-    if (ndotl <= 0.0) return refRgb(0, 0, 0);
     RefRgb c = refLinear(L->color);
-    double s = L->intensity*attenuation*ndotl;
+    double s = L->intensity*attenuation;
     return refRgb(c.r*s, c.g*s, c.b*s);
+}
+
+// Irradiance delivered by one light to point p with normal n (NdotL included), and the unit direction to it
+static inline RefRgb refLightIrradiance(const RblLight *L, D3 p, D3 n, D3 *toLight)
+{
+    RefRgb e = refLightIncident(L, p, n, toLight);
+    double ndotl = dDot(n, *toLight);
+    if (ndotl <= 0.0) return refRgb(0, 0, 0);
+    return refRgb(e.r*ndotl, e.g*ndotl, e.b*ndotl);
+}
+
+// Light through a thin diffuse card (RblLitShaderDesc.transmission): of the irradiance E on its back
+// (the light's incident irradiance x the back's cosine, wrapped by w = 1/4 so a light edge-on still
+// shows through the rim) the share t leaves the front diffusely in the card's colour:
+// L = albedo x t x E0 x clamp((w - N.L)/(1 + w), 0, 1), N the shading normal on the viewer's side
+static inline RefRgb refTransmitted(const RefParams *d, const RefSurface *s, RefRgb incident, D3 l)
+{
+    const double w = 0.25;
+    double back = refClamp((w - dDot(s->normal, l))/(1.0 + w), 0.0, 1.0)*d->transmission;
+    return refRgb(s->albedo.r*incident.r*back, s->albedo.g*incident.g*back, s->albedo.b*incident.b*back);
 }
 
 // pi * BRDF for one channel set: diffuse + specular, given unit n, v, l
@@ -171,6 +190,11 @@ static inline RefRgb refShadeView(const RefParams *d, const RblLight *lights, in
     for (int i = 0; i < count; i++)
     {
         D3 l;
+        if (d->transmission > 0.0)
+        {
+            RefRgb incident = refLightIncident(&lights[i], s->position, s->normal, &l);
+            out = refAddScaled(out, refTransmitted(d, s, incident, l), 1.0);
+        }
         RefRgb e = refLightIrradiance(&lights[i], s->position, s->normal, &l);
         if ((e.r == 0.0) && (e.g == 0.0) && (e.b == 0.0)) continue;
         out = refAddScaled(out, refMul(e, refBrdf(d, s, v, l)), 1.0);

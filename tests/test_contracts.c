@@ -712,7 +712,8 @@ static void c_load_lit_shader(void)
     const size_t ints[] = { offsetof(RblLitShaderDesc, maxLights), offsetof(RblLitShaderDesc, lightFeatures), offsetof(RblLitShaderDesc, material.normalEncoding),
                             offsetof(RblLitShaderDesc, material.emissive), offsetof(RblLitShaderDesc, brdf), offsetof(RblLitShaderDesc, fog),
                             offsetof(RblLitShaderDesc, tonemap), offsetof(RblLitShaderDesc, shadowMaps), offsetof(RblLitShaderDesc, shadowFilter),
-                            offsetof(RblLitShaderDesc, debugOutput) };
+                            offsetof(RblLitShaderDesc, debugOutput), offsetof(RblLitShaderDesc, material.height), offsetof(RblLitShaderDesc, material.thickness),
+                            offsetof(RblLitShaderDesc, reliefSteps) };
     const int values[3] = { -1, 1000, -2147483647 - 1 };
     for (size_t i = 0; i < sizeof(ints)/sizeof(ints[0]); i++) for (int v = 0; v < 3; v++)
     {
@@ -1201,6 +1202,36 @@ static void c_shadow_omni_cascades(void)
     RblUnloadShadowMap(&casc);
     EXPECT_REFUSED(V(RblDrawShadowCascades(staleCasc)));
     RblUnloadShadowMap(&single);
+}
+
+static void c_shadow_blend(void)
+{
+    RblShadowDesc d; memset(&d, 0, sizeof(d)); d.size = 64;
+    RblShadowMap plain = RblLoadShadowMap(d);
+    d.transmittance = true;
+    RblShadowMap map = RblLoadShadowMap(d);
+    RblLight l = pointLight();
+    l.type = RBL_LIGHT_DIRECTIONAL; l.direction = (Vector3){ 0.2f, -1.0f, 0.1f };
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = &l; scene.lightCount = 1;
+    Vector3 o = { 0, 0, 0 };
+    EXPECT_REFUSED(RblBeginShadowBlend(true));                             // outside a pass
+    EXPECT_REFUSED(V(RblEndShadowBlend()));
+    ck(RblBeginShadowMap(&plain, &scene, 0, o, 5.0f), "good pass refused: %s", lastWarning);
+    EXPECT_REFUSED(RblBeginShadowBlend(false));                            // no transmittance target
+    RblEndShadowMap(&plain);
+    ck(RblBeginShadowMap(&map, &scene, 0, o, 5.0f), "good pass refused: %s", lastWarning);
+    EXPECT_REFUSED(V(RblEndShadowBlend()));                                // never begun
+    ck(RblBeginShadowBlend(true), "good blend refused: %s", lastWarning);
+    EXPECT_REFUSED(RblBeginShadowBlend(true));                             // nested
+    RblEndShadowMap(&map);                                                 // ends the blend too
+    EXPECT_REFUSED(V(RblEndShadowBlend()));
+    RblShadowMap tiled;
+    d.omni = true;                                                         // transmittance: single maps only
+    EXPECT_REFUSED((tiled = RblLoadShadowMap(d), RblIsShadowMapValid(tiled)));
+    d.omni = false; d.cascades = 2;
+    EXPECT_REFUSED((tiled = RblLoadShadowMap(d), RblIsShadowMapValid(tiled)));
+    RblUnloadShadowMap(&map);
+    RblUnloadShadowMap(&plain);
 }
 
 static void c_shadow_focus(void)
@@ -2328,6 +2359,7 @@ static const Case cases[] = {
     { "RblBeginShadowMap RblEndShadowMap", "NULL, indices, focus, imbalance, nesting, stale", c_shadow_passes, "null nesting stale-header floats" },
     { "RblShadowFocusFromCamera", "NULL outputs, camera, aspect, range", c_shadow_focus, "null floats" },
     { "RblShadowMapPasses RblBeginShadowMapPass RblFitShadowCascades RblDrawShadowCascades RblShadowCascadeColor", "omni/cascade descs, pass indices, light types, unfitted, fit inputs, stale", c_shadow_omni_cascades, "null counts floats nesting stale-header" },
+    { "RblBeginShadowBlend RblEndShadowBlend", "outside a pass, no target, nesting, imbalance", c_shadow_blend, "nesting" },
     { "RblLoadAtlas RblLoadAtlasFromMemory", "NULL, sizes, formats, truncated, missing file", c_atlas_load, "null counts" },
     { "RblIsAtlasValid RblUnloadAtlas RblAtlasFindFrame RblAtlasFindTag", "NULL, zero, double, stale, NULL names", c_atlas_lifecycle, "null stale-header" },
     { "RblAtlasBillboard RblAtlasInstance", "NULL, frames, scales, stale; outputs untouched", c_atlas_quads, "null stale-header" },

@@ -50,6 +50,8 @@ typedef struct LitScene {
     Camera3D camera;
     int facing;                 // the plane's facing mode: RBL_FACING_FIXED (litScene's; +Z) or RBL_FACING_CAMERA_PLANE
     int path;                   // LIT_PATH_*: how the plane is drawn
+    bool materialMap;           // bind `normal` as the material texture without a normal encoding (scalar channels only)
+    int thickness;              // RblMaterialChannel of `normal` holding the card's thickness (transmission)
 } LitScene;
 
 enum { LIT_PATH_IMMEDIATE = 0, LIT_PATH_BATCHED, LIT_PATH_INSTANCED };
@@ -134,6 +136,7 @@ static RblLitShaderDesc litProgramDesc(const LitScene *sc, int floatFormat)
     desc.lightFeatures = RblLightFeatures(sc->lights, sc->count);
     desc.fog = sc->fog.mode;
     if (sc->normalMap) desc.material.normalEncoding = RBL_NORMAL_RGB;
+    desc.material.thickness = sc->thickness;
     if (floatFormat != 0) desc.linearOutput = true;
     if (sc->path == LIT_PATH_INSTANCED) desc.instanced = true;
     return desc;
@@ -211,6 +214,8 @@ static RefParams litShading(const LitScene *sc)
     d.exposure = sc->exposure;
     d.gamma = sc->desc.gamma;
     d.linearOutput = false;
+    double thickness = (sc->thickness == RBL_CHANNEL_B)? sc->normal.b/255.0 : ((sc->thickness == RBL_CHANNEL_A)? sc->normal.a/255.0 : 0.0);
+    d.transmission = sc->desc.transmission? refClamp(sc->values.transmission, 0.0, 1.0)*(1.0 - thickness) : 0.0;
     return d;
 }
 
@@ -269,7 +274,7 @@ static LitRender litRenderShared(const LitScene *sc, int floatFormat, bool setSc
     m.shader = lit;
     rtSetMaterialValues(&m, sc->values);
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
-    if (sc->normalMap) m.maps[MATERIAL_MAP_NORMAL].texture = normal;
+    if (sc->normalMap || sc->materialMap) m.maps[MATERIAL_MAP_NORMAL].texture = normal;
     RenderTexture2D rt = (floatFormat != 0)? litTarget(floatFormat) : LoadRenderTexture(LIT_TARGET, LIT_TARGET);
     BeginTextureMode(rt);
     ClearBackground(BLANK);

@@ -28,6 +28,10 @@ echo "== bench_shadows"
 BENCH_CSV="$csv" "$BUILD/bench/bench_shadows"
 
 echo
+echo "== bench_thin"
+BENCH_CSV="$csv" "$BUILD/bench/bench_thin"
+
+echo
 echo "== bench_skinning"
 BENCH_CSV="$csv" "$BUILD/bench/bench_skinning"
 

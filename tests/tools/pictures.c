@@ -710,6 +710,259 @@ static bool cascadesPicture(const char *dir)
     return ok;
 }
 
+// Thin sprites: a row of leafy trees lit from behind by a low sun (transmission 0 on the left, 0.7
+// on the right: the leaves glow through; the trunks are thick, a thickness of 1 in the material
+// texture's alpha, and stay dark), and an embossed stone tile under a
+// grazing light without and with the relief self-shadow march (16 steps)
+static bool thinPictures(const char *dir)
+{
+    const int w = 640, h = 300;
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    // ---- transmission
+    Image ti = treeImage();
+    Texture2D tree = LoadTextureFromImage(ti);
+    // Thickness: 1 where the bark is (brown texels), 0 in the leaves
+    Image thick = ImageCopy(ti);
+    ImageFormat(&thick, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+    Color *tp = (Color *)thick.data;
+    for (int i = 0; i < thick.width*thick.height; i++) tp[i] = (Color){ 0, 0, 0, (unsigned char)((tp[i].r > tp[i].g)? 255 : 0) };
+    Texture2D thickness = LoadTextureFromImage(thick);
+    UnloadImage(thick);
+    UnloadImage(ti);
+    SetTextureFilter(tree, TEXTURE_FILTER_BILINEAR);
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ 0.3f, -0.35f, 1.0f };     // low, behind the trees
+    sun.color = (Color){ 255, 220, 160, 255 }; sun.intensity = 2.2f;
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.transmission = true; d.material.thickness = RBL_CHANNEL_A;
+    Shader lit = RblLoadLitShader(d);
+    if (!RblIsLitShaderValid(lit)) { printf("pictures: transmission variant unavailable\n"); return false; }
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 36, 42, 56, 255 };
+    RblSetScene(&scene);
+    Material mats[2] = { LoadMaterialDefault(), LoadMaterialDefault() };
+    for (int i = 0; i < 2; i++) { mats[i].shader = lit; mats[i].maps[MATERIAL_MAP_ALBEDO].texture = tree; mats[i].maps[MATERIAL_MAP_NORMAL].texture = thickness; mats[i].params[RBL_PARAM_TRANSMISSION] = i? 0.7f : 0.0f; }
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 1.6f, 7.0f }; cam.target = (Vector3){ 0.0f, 1.4f, 0.0f };
+    cam.up = (Vector3){ 0.0f, 1.0f, 0.0f }; cam.fovy = 45.0f; cam.projection = CAMERA_PERSPECTIVE;
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 20, 22, 30, 255 });
+    BeginMode3D(cam);
+    for (int i = 0; i < 6; i++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+        b.position = (Vector3){ -4.1f + i*1.64f, 0.0f, 0.0f };
+        b.size = (Vector2){ 1.6f, 2.4f }; b.origin = (Vector2){ 0.8f, 0.0f };
+        RblDrawBillboard(cam, mats[i >= 3], b);
+    }
+    EndMode3D();
+    DrawText("transmission 0", 8, 8, 10, RAYWHITE);
+    DrawText("transmission 0.7 (sun behind the trees)", w/2 + 8, 8, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_transmission.png", dir);
+    bool ok = ExportOpaque(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    MemFree(mats[0].maps); MemFree(mats[1].maps);
+    RblUnloadLitShader(&lit);
+    UnloadTexture(tree); UnloadTexture(thickness);
+    if (!ok) return false;
+
+    // ---- relief: bricks and a raised disc; normals from the height, the height in the alpha
+    const int ts = 128;
+    Image height = GenImageColor(ts, ts, BLACK);
+    for (int row = 0; row < 8; row++)
+        for (int col = -1; col < 5; col++)
+        {
+            int x0 = col*32 + ((row & 1)? 16 : 0) + 2, y0 = row*16 + 2;
+            ImageDrawRectangle(&height, x0, y0, 28, 12, (Color){ 150, 150, 150, 255 });
+        }
+    ImageDrawCircle(&height, 64, 64, 26, (Color){ 255, 255, 255, 255 });
+    ImageDrawCircle(&height, 64, 64, 14, (Color){ 90, 90, 90, 255 });
+    Image normals = RblGenNormalMapFromHeight(height, 6.0f, true);
+    ImageFormat(&normals, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+    Color *np = (Color *)normals.data, *hp = NULL;
+    Image hcopy = ImageCopy(height);
+    ImageFormat(&hcopy, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
+    hp = (Color *)hcopy.data;
+    for (int i = 0; i < ts*ts; i++) np[i].a = hp[i].r;
+    Texture2D material = LoadTextureFromImage(normals);
+    UnloadImage(normals); UnloadImage(hcopy); UnloadImage(height);
+    Image stone = GenImageColor(4, 4, (Color){ 186, 170, 150, 255 });
+    Texture2D albedo = LoadTextureFromImage(stone);
+    UnloadImage(stone);
+    RblLight graze;
+    memset(&graze, 0, sizeof(graze));
+    graze.type = RBL_LIGHT_DIRECTIONAL; graze.direction = (Vector3){ 0.8f, -0.45f, -0.75f };    // 39 degrees up, from the upper left
+    graze.color = (Color){ 255, 236, 210, 255 }; graze.intensity = 1.6f;
+    scene.lights = &graze;
+    scene.ambient = (Color){ 70, 74, 86, 255 };
+    RblSetScene(&scene);
+    Shader relief[2];
+    for (int i = 0; i < 2; i++)
+    {
+        memset(&d, 0, sizeof(d));
+        d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+        d.material.normalEncoding = RBL_NORMAL_RGB; d.material.height = RBL_CHANNEL_A;
+        d.relief = (i == 1);
+        relief[i] = RblLoadLitShader(d);
+        if (!RblIsLitShaderValid(relief[i])) { printf("pictures: relief variant unavailable\n"); return false; }
+    }
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 0.0f, 6.0f }; cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 3.0f; cam.projection = CAMERA_ORTHOGRAPHIC;
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 20, 22, 30, 255 });
+    BeginMode3D(cam);
+    for (int i = 0; i < 2; i++)
+    {
+        Material m = LoadMaterialDefault();
+        m.shader = relief[i];
+        m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+        m.maps[MATERIAL_MAP_NORMAL].texture = material;
+        m.maps[MATERIAL_MAP_HEIGHT].value = 6.0f;
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+        b.position = (Vector3){ i? 1.6f : -1.6f, 0.0f, 0.0f };
+        b.size = (Vector2){ 2.8f, 2.8f }; b.origin = (Vector2){ 1.4f, 1.4f };
+        RblDrawBillboard(cam, m, b);
+        MemFree(m.maps);
+    }
+    EndMode3D();
+    DrawText("normal map only", 8, 8, 10, RAYWHITE);
+    DrawText("+ relief self-shadow (16 steps, height 6 texels)", w/2 + 8, 8, 10, RAYWHITE);
+    EndTextureMode();
+    img = rtReadTarget(rt);
+    snprintf(path, sizeof(path), "%s/rbl_relief.png", dir);
+    ok = ExportOpaque(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    RblUnloadLitShader(&relief[0]); RblUnloadLitShader(&relief[1]);
+    UnloadTexture(material); UnloadTexture(albedo);
+    UnloadRenderTexture(rt);
+    return ok;
+}
+
+// Blended casters: a red and a blue glass pane, a grey smoke puff and an opaque crate on a checked
+// floor under a low sun; the glass and smoke are drawn between RblBeginShadowBlend/RblEndShadowBlend
+// (coloured for the glass, coverage only for the smoke) and blended in the colour pass; the smoke's
+// program receives no shadows (a blended billboard's light-facing caster would tint the billboard)
+static bool glassPicture(const char *dir)
+{
+    const int w = 640, h = 360;
+    Image fi = GenImageChecked(256, 256, 32, 32, (Color){ 200, 196, 186, 255 }, (Color){ 176, 170, 160, 255 });
+    Texture2D floorTexture = LoadTextureFromImage(fi);
+    UnloadImage(fi);
+    Image pi = GenImageColor(64, 64, BLANK);
+    ImageDrawCircle(&pi, 32, 32, 30, (Color){ 120, 120, 120, 90 });
+    ImageDrawCircle(&pi, 32, 32, 20, (Color){ 110, 110, 110, 150 });
+    Texture2D puff = LoadTextureFromImage(pi);
+    UnloadImage(pi);
+    SetTextureFilter(puff, TEXTURE_FILTER_BILINEAR);
+    Image ri = GenImageColor(4, 4, (Color){ 230, 40, 40, 140 }), bi = GenImageColor(4, 4, (Color){ 40, 90, 240, 140 }), wi = GenImageColor(4, 4, WHITE);
+    Texture2D red = LoadTextureFromImage(ri), blue = LoadTextureFromImage(bi), white = LoadTextureFromImage(wi);
+    UnloadImage(ri); UnloadImage(bi); UnloadImage(wi);
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ -0.6f, -0.75f, -0.45f };
+    sun.color = (Color){ 255, 240, 220, 255 }; sun.intensity = 1.2f;
+    RblLitShaderDesc d;
+    memset(&d, 0, sizeof(d));
+    d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.shadowMaps = 1; d.shadowTransmittance = true;
+    Shader lit = RblLoadLitShader(d);
+    d.shadowMaps = 0; d.shadowTransmittance = false;
+    Shader unshadowed = RblLoadLitShader(d);            // the smoke receives nothing (its light-facing caster would tint it)
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 2048; sd.transmittance = true;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    if (!RblIsLitShaderValid(lit) || !RblIsShadowMapValid(map)) { printf("pictures: blended casters unavailable\n"); return false; }
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 60, 64, 78, 255 };
+    Material glass[2] = { LoadMaterialDefault(), LoadMaterialDefault() }, smoke = LoadMaterialDefault(), crateMat = LoadMaterialDefault();
+    glass[0].maps[MATERIAL_MAP_ALBEDO].texture = red; glass[1].maps[MATERIAL_MAP_ALBEDO].texture = blue;
+    smoke.maps[MATERIAL_MAP_ALBEDO].texture = puff;
+    crateMat.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    crateMat.maps[MATERIAL_MAP_ALBEDO].color = (Color){ 180, 130, 80, 255 };
+    glass[0].shader = glass[1].shader = crateMat.shader = lit;
+    smoke.shader = unshadowed;
+    glass[0].params[RBL_PARAM_ALPHA_CUTOFF] = glass[1].params[RBL_PARAM_ALPHA_CUTOFF] = smoke.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;   // blended in the colour pass
+    Model ground = LoadModelFromMesh(GenMeshPlane(12.0f, 12.0f, 1, 1));
+    ground.materials[0].shader = lit;
+    ground.materials[0].maps[MATERIAL_MAP_ALBEDO].texture = floorTexture;
+    Model crate = LoadModelFromMesh(GenMeshCube(0.9f, 0.9f, 0.9f));
+    crate.materials[0].shader = lit;
+    crate.materials[0].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 180, 130, 80, 255 };
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.5f, 4.2f, 6.5f }; cam.target = (Vector3){ -0.6f, 0.4f, -0.4f };
+    cam.up = (Vector3){ 0.0f, 1.0f, 0.0f }; cam.fovy = 45.0f; cam.projection = CAMERA_PERSPECTIVE;
+    RblBillboard panes[2], puffs[3];
+    for (int i = 0; i < 2; i++)
+    {
+        memset(&panes[i], 0, sizeof(panes[i]));
+        panes[i].facing = RBL_FACING_FIXED; panes[i].axis = (Vector3){ 0.0f, 0.0f, 1.0f }; panes[i].up = (Vector3){ 0.0f, 1.0f, 0.0f };
+        panes[i].position = (Vector3){ -2.2f + i*1.6f, 0.0f, -0.6f + i*0.4f };
+        panes[i].size = (Vector2){ 1.2f, 1.6f }; panes[i].origin = (Vector2){ 0.6f, 0.0f };
+    }
+    for (int i = 0; i < 3; i++)
+    {
+        memset(&puffs[i], 0, sizeof(puffs[i]));
+        puffs[i].facing = RBL_FACING_CAMERA_PLANE;
+        puffs[i].position = (Vector3){ 1.6f + 0.3f*i, 0.6f + 0.55f*i, 0.6f - 0.2f*i };
+        puffs[i].size = (Vector2){ 1.1f - 0.15f*i, 1.1f - 0.15f*i }; puffs[i].origin = (Vector2){ puffs[i].size.x*0.5f, puffs[i].size.y*0.5f };
+    }
+    const Vector3 crateAt = { -0.4f, 0.45f, 1.3f };
+    if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ -0.3f, 0.5f, 0.0f }, 4.5f))
+    {
+        RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+        RblDrawModel(crate, crateAt, 1.0f, WHITE);
+        RblBeginShadowBlend(true);
+        for (int i = 0; i < 2; i++) RblDrawBillboard(cam, glass[i], panes[i]);
+        RblEndShadowBlend();
+        RblBeginShadowBlend(false);
+        for (int i = 0; i < 3; i++) RblDrawBillboard(cam, smoke, puffs[i]);
+        RblEndShadowBlend();
+        RblEndShadowMap(&map);
+    }
+    scene.shadowMaps = &map; scene.shadowMapCount = 1;
+    RblSetScene(&scene);
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 24, 26, 32, 255 });
+    BeginMode3D(cam);
+    RblDrawModel(ground, (Vector3){ 0.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+    RblDrawModel(crate, crateAt, 1.0f, WHITE);
+    for (int i = 0; i < 3; i++) RblDrawBillboard(cam, smoke, puffs[2 - i]);
+    for (int i = 0; i < 2; i++) RblDrawBillboard(cam, glass[i], panes[i]);
+    EndMode3D();
+    DrawText("blended casters: coloured glass, grey smoke, opaque crate", 8, 8, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_glass_shadow.png", dir);
+    bool ok = ExportOpaque(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    RblUnloadShadowMap(&map);
+    MemFree(glass[0].maps); MemFree(glass[1].maps); MemFree(smoke.maps); MemFree(crateMat.maps);
+    UnloadModel(ground); UnloadModel(crate);             // meshes and material maps, not the shader or textures
+    RblUnloadLitShader(&lit); RblUnloadLitShader(&unshadowed);
+    UnloadTexture(floorTexture); UnloadTexture(puff); UnloadTexture(red); UnloadTexture(blue); UnloadTexture(white);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = (argc > 1)? argv[1] : "examples/resources";
@@ -790,6 +1043,8 @@ int main(int argc, char **argv)
     if (!sweepPicture(dir)) return 1;
     if (!omniPicture(dir)) return 1;
     if (!cascadesPicture(dir)) return 1;
+    if (!thinPictures(dir)) return 1;
+    if (!glassPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(&lit);
