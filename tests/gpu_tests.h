@@ -19,6 +19,7 @@
 #include "test_atlas_render.c"
 #include "test_fade.c"
 #include "test_held.c"
+#include "test_cull.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_API_TESTS,
@@ -34,6 +35,8 @@ static const RtTest rblGpuTests[] = {
         RT_TEST(test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_the_reference),
         RT_TEST(test_atlas_premultiplied_pages_light_and_blend_as_their_straight_colour),
         RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate),
+        RT_TEST(test_cull_batches_skip_what_the_camera_cannot_see_and_draw_the_same_picture),
+        RT_TEST(test_cull_shadow_pass_batches_skip_casters_outside_the_light_and_cast_the_same_shadows),
         RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro),
         RT_TEST_GLSL3(test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode),
         RT_TEST_GLSL3(test_paths_instanced_hard_cases_stay_finite),
