@@ -185,9 +185,20 @@ run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	fi
 
 # ---- benchmarks ---------------------------------------------------------------------------
-$(BUILD)/bench/bench_geometry: tests/bench/bench_geometry.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+# bench_geometry's 0.3 baseline: that header (the commit before the 0.4 API change) from git history,
+# compiled in its own translation unit; without the history the baseline rows are left out
+BENCH_V03_COMMIT := ba3c89d~1
+$(BUILD)/bench/v03/bench_geometry_v03.o: tests/bench/bench_geometry_v03.c tests/bench/bench_geometry_v03.h $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_geometry.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+	@if git show $(BENCH_V03_COMMIT):rbillboard_lit.h > $(@D)/rbillboard_lit.h 2>/dev/null; then \
+	  echo "$(CC) ... bench_geometry_v03.c (0.3 header from $(BENCH_V03_COMMIT))"; \
+	  $(CC) $(CSTD) -O2 -Wall -Wextra -Werror -Wno-unused-function -I$(@D) -Itests/bench $(RAYLIB_CFLAGS) -c $< -o $@; \
+	else echo "bench_geometry: no git history for the 0.3 baseline; its rows are left out"; \
+	  $(CC) $(BENCH_CFLAGS) -DBENCH_NO_V03 -Itests/bench $(RAYLIB_CFLAGS) -c $< -o $@; fi
+
+$(BUILD)/bench/bench_geometry: tests/bench/bench_geometry.c tests/bench/bench.h tests/bench/bench_geometry_v03.h $(BUILD)/bench/v03/bench_geometry_v03.o $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_geometry.c tests/harness.c $(BUILD)/bench/v03/bench_geometry_v03.o -o $@ $(RAYLIB_LIBS)
 
 $(BUILD)/bench/bench_materials: tests/bench/bench_materials.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
