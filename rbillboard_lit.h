@@ -1381,6 +1381,7 @@ typedef struct rbl__BatchRun {
     Material material;              // Material the run draws with
     int first;                      // First billboard
     int count;                      // Billboards in the run
+    int textureWidth, textureHeight; // Its albedo's size (rbl__albedoSize), read once per run
 } rbl__BatchRun;
 
 // A billboard's facing frame before its rotation, kept by a batch for the next billboard with the
@@ -1655,7 +1656,7 @@ static unsigned int rbl__liveAdd(const void *state)
 }
 
 // The slot id names, or -1 (id 0 and ids of empty or reused slots included)
-static int rbl__liveSlot(unsigned int id)
+static inline int rbl__liveSlot(unsigned int id)
 {
     unsigned int slot = (id & 0xFFFFu) - 1u;
     return ((id != 0u) && (slot < (unsigned int)rbl__state.liveCount) && (rbl__state.live[slot].id == id))? (int)slot : -1;
@@ -1668,7 +1669,7 @@ static void rbl__liveRemove(unsigned int id)
 }
 
 // Whether (id, state) is a loaded object: the id first, then its state pointer compared (not read)
-static bool rbl__isLive(unsigned int id, const void *state)
+static inline bool rbl__isLive(unsigned int id, const void *state)
 {
     int slot = rbl__liveSlot(id);
     return (slot >= 0) && (state != NULL) && (rbl__state.live[slot].state == state);
@@ -3588,6 +3589,14 @@ static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsB
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
+// The same bits (a cache key: -0 and 0, NaNs told apart), without a library call per billboard
+static inline bool rbl__sameBits3(const Vector3 *a, const Vector3 *b)
+{
+    unsigned int x[3], y[3];
+    memcpy(x, a, sizeof(x));
+    memcpy(y, b, sizeof(y));
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2])) == 0u;
+}
 static inline float rbl__dot(Vector3 a, Vector3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
 static inline Vector3 rbl__sub(Vector3 a, Vector3 b) { return rbl__v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline Vector3 rbl__neg(Vector3 a) { return rbl__v3(-a.x, -a.y, -a.z); }
@@ -3962,8 +3971,7 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 // scales the quad's height by it).
 static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, rbl__FrameCache *cache)
 {
-    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) &&
-        (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
+    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (b->facing == RBL_FACING_CAMERA_PLANE) && rbl__sameBits3(&cache->key, &b->up)) return;
     Vector3 R, U, N;
     rbl__facingBasis(view, cast, b, &R, &U, &N);
     float ulen = 1.0f;
@@ -4011,7 +4019,7 @@ static bool rbl__fadeOk(const RblFade *f, unsigned int limitExponent)
     return rbl__finite(f->weight) && (f->weight >= 0.0f) && (f->weight <= 1.0f) && rbl__exponentsBelow(&f->source, 4, limitExponent);
 }
 
-static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
+static inline bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
@@ -4146,8 +4154,9 @@ static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *ca
     p[1] = rbl__v3(P.x + R.x*x1 + U.x*y0, P.y + R.y*x1 + U.y*y0, P.z + R.z*x1 + U.z*y0);
     p[2] = rbl__v3(P.x + R.x*x1 + U.x*y1, P.y + R.y*x1 + U.y*y1, P.z + R.z*x1 + U.z*y1);
     p[3] = rbl__v3(P.x + R.x*x0 + U.x*y1, P.y + R.y*x0 + U.y*y1, P.z + R.z*x0 + U.z*y1);
-    // Huge sizes overflowing float: skip, never write Inf (the output stays untouched)
-    if (!rbl__allFinite(p, 12)) return false;
+    // No corner can overflow: rbl__billboardOk bounds the pivot, size and origin below 2^60 and
+    // CAMERA_PLANE's up below 2^30, R and U are unit and an AXIS caster's tilt moves the pivot by
+    // less than twice the footprint, so every sum stays below 2^93 (no check per corner here)
 
     // Source frame (zero = whole texture); flips mirror inside it. As raylib's DrawTexturePro, a
     // negative extent flips and the rectangle still starts at (x, y).
@@ -4324,11 +4333,11 @@ static unsigned int rbl__casterId(Vector3 pivot, Vector2 size, Vector2 origin)
     return (h == 0u)? 1u : h;
 }
 
-static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const RblFade *fade, const char *fn);
+static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn);
 
 // The pass in progress: the shadow map's or G-buffer's id, 0 for a colour pass. A batch collects for
 // one pass (its frame and programs are that pass's)
-static unsigned int rbl__passNow(void)
+static inline unsigned int rbl__passNow(void)
 {
     if (rbl__state.shadowPass != NULL) return rbl__state.shadowPass->id;
     if (rbl__state.gbufferPass != NULL) return rbl__state.gbufferPass->id;
@@ -4336,7 +4345,7 @@ static unsigned int rbl__passNow(void)
 }
 
 // The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
-static rbl__BatchState *rbl__batchState(const RblBatch *batch)
+static inline rbl__BatchState *rbl__batchState(const RblBatch *batch)
 {
     return ((batch != NULL) && rbl__isLive(batch->id, batch->state))? batch->state : NULL;
 }
@@ -4454,7 +4463,7 @@ static bool rbl__culled(const rbl__BatchState *batch, const RblBillboard *b)
     float ulen = 1.0f;
     if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
     {
-        if ((batch->frame.facing == RBL_FACING_CAMERA_PLANE) && (memcmp(&batch->frame.key, &b->up, sizeof(Vector3)) == 0)) ulen = batch->frame.upLength;
+        if ((batch->frame.facing == RBL_FACING_CAMERA_PLANE) && rbl__sameBits3(&batch->frame.key, &b->up)) ulen = batch->frame.upLength;
         else ulen = sqrtf(rbl__len2(b->up));
     }
     float sx = fabsf(b->size.x), sy = fabsf(b->size.y)*ulen;
@@ -4500,13 +4509,14 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
 }
 
 // Whether b continues a's run: compares pointers before reading a's maps (b's are the same array)
-static bool rbl__sameMaterial(const Material *a, const Material *b)
+static inline bool rbl__sameMaterial(const Material *a, const Material *b)
 {
     if ((a->shader.id != b->shader.id) || (a->shader.locs != b->shader.locs) || (a->maps != b->maps) || (a->maps == NULL)) return false;
+    const Color ca = a->maps[MATERIAL_MAP_ALBEDO].color, cb = b->maps[MATERIAL_MAP_ALBEDO].color;
     return (a->maps[MATERIAL_MAP_ALBEDO].texture.id == b->maps[MATERIAL_MAP_ALBEDO].texture.id) &&
            (a->maps[MATERIAL_MAP_METALNESS].texture.id == b->maps[MATERIAL_MAP_METALNESS].texture.id) &&
            (a->maps[MATERIAL_MAP_NORMAL].texture.id == b->maps[MATERIAL_MAP_NORMAL].texture.id) &&
-           (memcmp(&a->maps[MATERIAL_MAP_ALBEDO].color, &b->maps[MATERIAL_MAP_ALBEDO].color, sizeof(Color)) == 0);
+           (ca.r == cb.r) && (ca.g == cb.g) && (ca.b == cb.b) && (ca.a == cb.a);
 }
 
 // Grow CPU storage by doubling; the GPU buffer follows at the next RblEndBatch()
@@ -4535,7 +4545,7 @@ static bool rbl__growBatch(rbl__BatchState *batch)
 }
 
 // The batch an add goes to, or NULL (logged under fn)
-static rbl__BatchState *rbl__batchForAdd(RblBatch *pub, const char *fn)
+static inline rbl__BatchState *rbl__batchForAdd(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
     if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
@@ -4551,7 +4561,7 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
 {
     rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAdd");
     if (batch == NULL) return false;
-    bool added = rbl__batchAdd(batch, material, billboard, NULL, "RblBatchAdd");
+    bool added = rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
     pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
@@ -4566,13 +4576,13 @@ bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billb
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: RblBatchAddFade: billboard skipped (%s); further skips this batch are not logged", (fade == NULL)? "NULL fade" : "fade weight outside 0..1, NaN/Inf or huge source, or bad clip");
     }
-    else added = rbl__batchAdd(batch, material, billboard, fade, "RblBatchAddFade");
+    else added = rbl__batchAdd(batch, &material, billboard, fade, "RblBatchAddFade");
     pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
 
 // fade: NULL for a plain billboard (checked by the caller otherwise)
-static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
+static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
 {
     if ((batch->count == batch->capacity) && !rbl__growBatch(batch))
     {
@@ -4581,11 +4591,12 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     }
 
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
-    const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
+    const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, material);
     rbl__Program *program = NULL;
-    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
+    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(material, RBL__PATH_BILLBOARD, &program) : NULL;
     int texW = 1, texH = 1;
-    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);       // the maps are read once the shader is known live
+    if ((bad == NULL) && newRun) rbl__albedoSize(material, &texW, &texH);       // the maps are read once the shader is known live
+    else if (bad == NULL) { texW = run->textureWidth; texH = run->textureHeight; }   // the same maps (rbl__sameMaterial)
     if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && (batch->planeCount > 0) && rbl__culled(batch, billboard)) { batch->culled++; return true; }
     if ((bad == NULL) && !rbl__expandBillboard(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
@@ -4636,8 +4647,11 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
-    Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
-    if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
+    if (!batch->backFacing)
+    {
+        Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
+        if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
+    }
 
     if (newRun)
     {
@@ -4649,9 +4663,10 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
             batch->runCapacity *= 2;
         }
         run = &batch->runs[batch->runCount++];
-        run->material = material;
+        run->material = *material;
         run->first = batch->count;
         run->count = 0;
+        run->textureWidth = texW; run->textureHeight = texH;
     }
     run->count++;
     batch->count++;
@@ -4988,7 +5003,7 @@ static void rbl__drawBillboard(Camera3D camera, Material material, const RblBill
         if (!RblIsBatchValid(*immediate)) return;
     }
     RblBeginBatch(immediate, camera);
-    rbl__batchAdd(immediate->state, material, billboard, fade, fn);
+    rbl__batchAdd(immediate->state, &material, billboard, fade, fn);
     rbl__endBatch(immediate, fn);
 }
 
