@@ -19,7 +19,7 @@ TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
 BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
-.PHONY: all run test bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
+.PHONY: all run quickstart test test-quick bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
 all: test
 
 # ---- raylib (located or built once; the result is cached in $(BUILD)/raylib.mk) -----------
@@ -114,17 +114,21 @@ GPU_CONTEXTS := gles3 gles2 gl21
 $(BUILD)/raylib-%/libraylib.a: tests/tools/raylib-variant.sh $(BUILD)/raylib.mk
 	@BUILD=$(BUILD) RAYLIB_SRC="$(RAYLIB_SRC)" bash tests/tools/raylib-variant.sh $*
 
-$(BUILD)/tests/test_gpu_gles3: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es3/libraylib.a
+# Per context: its raylib build folder, GL library and sanitizers (ES 3 under ASan+UBSan, as before;
+# ES 2 and GL 2.1 without)
+VARIANT_DIR_gles3 := raylib-es3
+VARIANT_DIR_gles2 := raylib-es2
+VARIANT_DIR_gl21  := raylib-gl21
+VARIANT_GL_gles3  := -lGLESv2
+VARIANT_GL_gles2  := -lGLESv2
+VARIANT_GL_gl21   := -lGL
+VARIANT_SAN_gles3 := $(SAN)
+VARIANT_FLAGS = -I$(BUILD)/$(VARIANT_DIR_$*) -DSUPPORT_GPU_SKINNING=1
+VARIANT_LIBS = $(BUILD)/$(VARIANT_DIR_$*)/libraylib.a $(VARIANT_GL_$*) -lm -lpthread -ldl
+.SECONDEXPANSION:
+$(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)): $(BUILD)/tests/test_gpu_%: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/$$(VARIANT_DIR_$$*)/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) $(SAN) -I$(BUILD)/raylib-es3 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
-
-$(BUILD)/tests/test_gpu_gles2: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-es2/libraylib.a
-	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-es2 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
-
-$(BUILD)/tests/test_gpu_gl21: tests/test_gpu_main.c $(GPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib-gl21/libraylib.a
-	@mkdir -p $(@D)
-	$(CC) $(TEST_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/test_gpu_main.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
+	$(CC) $(TEST_CFLAGS) $(VARIANT_SAN_$*) $(VARIANT_FLAGS) tests/test_gpu_main.c tests/harness.c -o $@ $(VARIANT_LIBS)
 
 # Atlas readers under libFuzzer (clang; libclang-rt-dev), one binary per format; tests/run.sh runs
 # each for a bounded time over its hand-written seed corpus (tests/fuzz/corpus/<format>/)
@@ -141,8 +145,13 @@ $(BUILD)/tests/splice_shaders: tests/tools/splice_shaders.c $(HEADER) $(BUILD)/r
 	@mkdir -p $(@D)
 	$(CC) $(TEST_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/splice_shaders.c -o $@ $(RAYLIB_LIBS)
 
-test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
+test: $(addprefix $(BUILD)/fuzz/fuzz_,$(FUZZ_FORMATS)) $(BUILD)/tests/splice_shaders $(addprefix $(BUILD)/tests/test_gpu_,$(GPU_CONTEXTS)) $(BUILD)/tests/test_cpu $(BUILD)/tests/test_cpu_san $(BUILD)/tests/test_api_san $(BUILD)/tests/test_contracts $(BUILD)/tests/test_alloc $(BUILD)/tests/test_teardown $(BUILD)/tests/test_teardown_cpp $(BUILD)/tests/test_gpu $(BUILD)/showcase $(BUILD)/deferred $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/readme_run $(BUILD)/web/test/test_web.js $(WEB_PAGE_FILES)
 	@BUILD=$(BUILD) RAYLIB_CFLAGS="$(RAYLIB_CFLAGS)" RAYLIB_LIBS="$(RAYLIB_LIBS)" RAYLIB_MASTER="$(RAYLIB_MASTER)" bash tests/run.sh
+
+# The edit loop: the CPU suite, the contracts, the GPU suite on EGL, the API index and the README's
+# programs (tests/run_quick.sh); make test runs everything
+test-quick: $(BUILD)/tests/test_cpu $(BUILD)/tests/test_contracts $(BUILD)/tests/test_gpu $(BUILD)/readme_run
+	@BUILD=$(BUILD) bash tests/run_quick.sh
 
 # raylib master's source for make test's optional check against its headers (needs the network;
 # under $(BUILD), so never committed). RAYLIB_MASTER=<tree> names one already on disk instead.
@@ -152,29 +161,22 @@ raylib-master:
 	@echo "raylib-master: $(BUILD)/raylib-master at $$(git -C $(BUILD)/raylib-master log -1 --format='%h %cs')"
 
 # ---- showcase -----------------------------------------------------------------------------
+# Each example rendered headlessly by its tool (tests/tools/<name>_headless.c includes the example)
+$(BUILD)/showcase_headless: examples/shaders_lit_billboards.c
+$(BUILD)/deferred_headless: examples/shaders_deferred_billboards.c
+$(BUILD)/sprites_headless: examples/shaders_lit_sprite_sheet.c
+$(BUILD)/game_headless: examples/shaders_lit_sprite_game.c
+$(BUILD)/%_headless: tests/tools/%_headless.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< tests/harness.c -o $@ $(RAYLIB_LIBS)
+
 $(BUILD)/showcase: examples/shaders_lit_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
 
-$(BUILD)/showcase_headless: tests/tools/showcase_headless.c examples/shaders_lit_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/showcase_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
 $(BUILD)/deferred: examples/shaders_deferred_billboards.c $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/deferred_headless: tests/tools/deferred_headless.c examples/shaders_deferred_billboards.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/deferred_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/sprites_headless: tests/tools/sprites_headless.c examples/shaders_lit_sprite_sheet.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/sprites_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/game_headless: tests/tools/game_headless.c examples/shaders_lit_sprite_game.c $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/game_headless.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
@@ -184,7 +186,41 @@ run: $(BUILD)/showcase $(BUILD)/showcase_headless
 	  $(BUILD)/showcase_headless $(BUILD)/showcase.png; \
 	fi
 
+# The README's code as printed: the quick start and every how-to, run headlessly (make test checks
+# each picture); make quickstart builds the quick start alone and runs it in examples/ (a window when
+# a display exists, else build/quickstart.png through the headless runner)
+$(BUILD)/tests/readme_code.inc: README.md tests/tools/readme_code.sh
+	@mkdir -p $(@D)
+	@bash tests/tools/readme_code.sh README.md $@
+
+$(BUILD)/readme_run: tests/tools/readme_run.c $(BUILD)/tests/readme_code.inc $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(TEST_CFLAGS) $(SAN) $(RAYLIB_CFLAGS) -I$(BUILD)/tests tests/tools/readme_run.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+$(BUILD)/quickstart.c: README.md
+	@mkdir -p $(@D)
+	@awk '/^<!-- run: quickstart -->$$/ {m=1; next} m && /^```c$$/ {f=1; next} f && /^```$$/ {exit} f' README.md > $@
+
+$(BUILD)/quickstart: $(BUILD)/quickstart.c $(HEADER) $(BUILD)/raylib.mk
+	$(CC) $(BENCH_CFLAGS) -I. $(RAYLIB_CFLAGS) $< -o $@ $(RAYLIB_LIBS)
+
+quickstart: $(BUILD)/quickstart $(BUILD)/readme_run
+	@if [ -n "$$DISPLAY" ] && { command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1 || [ -S /tmp/.X11-unix/X$${DISPLAY#*:} ]; }; then \
+	  cd examples && $(abspath $(BUILD))/quickstart; \
+	else \
+	  echo "quickstart: no display; running it headlessly"; \
+	  cd examples && ASAN_OPTIONS=detect_leaks=0 $(abspath $(BUILD))/readme_run $(abspath $(BUILD)) | grep quickstart; \
+	fi
+
 # ---- benchmarks ---------------------------------------------------------------------------
+# One rule for every suite's binary (tests/bench/bench_<suite>.c); the headers a suite shares with
+# the tests are named as extra prerequisites
+$(addprefix $(BUILD)/bench/bench_,lighting deferred shadows): tests/lighting_reference.h tests/reference.h
+$(BUILD)/bench/bench_skinning: tests/skin_rig.h
+$(BUILD)/bench/bench_%: tests/bench/bench_%.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< tests/harness.c -o $@ $(RAYLIB_LIBS)
+
 # bench_geometry's 0.3 baseline: that header (the commit before the 0.4 API change) from git history,
 # compiled in its own translation unit; without the history the baseline rows are left out
 BENCH_V03_COMMIT := ba3c89d~1
@@ -199,30 +235,6 @@ $(BUILD)/bench/v03/bench_geometry_v03.o: tests/bench/bench_geometry_v03.c tests/
 $(BUILD)/bench/bench_geometry: tests/bench/bench_geometry.c tests/bench/bench.h tests/bench/bench_geometry_v03.h $(BUILD)/bench/v03/bench_geometry_v03.o $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_geometry.c tests/harness.c $(BUILD)/bench/v03/bench_geometry_v03.o -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/bench/bench_materials: tests/bench/bench_materials.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_materials.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/bench/bench_lighting: tests/bench/bench_lighting.c tests/bench/bench.h tests/lighting_reference.h tests/reference.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_lighting.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/bench/bench_deferred: tests/bench/bench_deferred.c tests/bench/bench.h tests/lighting_reference.h tests/reference.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_deferred.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/bench/bench_shadows: tests/bench/bench_shadows.c tests/bench/bench.h tests/lighting_reference.h tests/reference.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_shadows.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/bench/bench_skinning: tests/bench/bench_skinning.c tests/bench/bench.h tests/skin_rig.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_skinning.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-
-$(BUILD)/bench/bench_sprites: tests/bench/bench_sprites.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_sprites.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
 # bench_api: one binary from three compilations of bench_api.c (main, the showcase and the deferred example,
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*
@@ -243,19 +255,9 @@ PF_DEPS := tests/bench/bench_platforms.c tests/bench/bench.h examples/shaders_li
 $(BUILD)/bench/bench_platforms_egl: $(PF_DEPS) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(RAYLIB_LIBS)
-$(BUILD)/bench/bench_platforms_gles3: $(PF_DEPS) $(BUILD)/raylib-es3/libraylib.a
+$(addprefix $(BUILD)/bench/bench_platforms_,$(GPU_CONTEXTS)): $(BUILD)/bench/bench_platforms_%: $(PF_DEPS) $(BUILD)/$$(VARIANT_DIR_$$*)/libraylib.a
 	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es3 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es3/libraylib.a -lGLESv2 -lm -lpthread -ldl
-$(BUILD)/bench/bench_platforms_gles2: $(PF_DEPS) $(BUILD)/raylib-es2/libraylib.a
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-es2 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-es2/libraylib.a -lGLESv2 -lm -lpthread -ldl
-$(BUILD)/bench/bench_platforms_gl21: $(PF_DEPS) $(BUILD)/raylib-gl21/libraylib.a
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) -I$(BUILD)/raylib-gl21 -DSUPPORT_GPU_SKINNING=1 tests/bench/bench_platforms.c tests/harness.c -o $@ $(BUILD)/raylib-gl21/libraylib.a -lGL -lm -lpthread -ldl
-
-$(BUILD)/bench/bench_blend: tests/bench/bench_blend.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
-	@mkdir -p $(@D)
-	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_blend.c tests/harness.c -o $@ $(RAYLIB_LIBS)
+	$(CC) $(BENCH_CFLAGS) $(VARIANT_FLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(VARIANT_LIBS)
 
 bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
@@ -346,8 +348,9 @@ $(BUILD)/pictures: tests/tools/pictures.c $(HARNESS) $(HEADER) $(BUILD)/raylib.m
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/tools/pictures.c tests/harness.c -o $@ $(RAYLIB_LIBS)
 
-pictures: $(BUILD)/pictures $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless run
+pictures: $(BUILD)/pictures $(BUILD)/deferred_headless $(BUILD)/sprites_headless $(BUILD)/game_headless $(BUILD)/readme_run run
 	@mkdir -p examples/resources
+	@cd examples && ASAN_OPTIONS=detect_leaks=0 $(abspath $(BUILD))/readme_run resources | sed -n 's/^    wrote /pictures: wrote examples\//p'
 	@$(BUILD)/pictures examples/resources
 	@cp $(BUILD)/showcase.png examples/resources/rbl_showcase.png 2>/dev/null && echo "pictures: wrote examples/resources/rbl_showcase.png" || true
 	@$(BUILD)/deferred_headless examples/resources/rbl_deferred.png examples/resources/rbl_deferred_views.png

@@ -12,10 +12,10 @@
 *       sprite's cut-out casts its own shape.
 *
 *   CONTENTS:
-*       This block: INTEGRATION (seven stages, each building on the last), then reference: MATERIAL
+*       This block: INTEGRATION (nine stages, each building on the last), then reference: MATERIAL
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
-*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY
-*       (with the 0.3 -> 0.4 migration), DEPENDENCIES, LICENSE.
+*       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY,
+*       DEPENDENCIES, LICENSE.
 *       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
 *         Types and Structures Definition (private)   registry entry, packed scene, header state
 *         material maps                     packing, normal encodings, mips, generators (CPU, load time)
@@ -107,6 +107,19 @@
 *            // forward draws (transparent billboards), depth-tested against the G-buffer's depth
 *          Forward fallback: without MRT, float targets or a depth texture, or if a pass fails to
 *          compile, the G-buffer is invalid (logged) and RblBeginGBuffer returns false: draw as in 1-6.
+*       8. Sprite sheets: an atlas file (TexturePacker, Aseprite, libGDX; SPRITE SHEETS) gives frames,
+*          tags and pivots; a player advances a tag; a frame sets a billboard or an instance.
+*            RblAtlas atlas = RblLoadAtlas("hero.json");
+*            RblLoadAtlasTextures(&atlas, 0, NULL, &mat, &desc.material);   // before RblLoadLitShader
+*            RblSpritePlayer walk = RblPlaySprite(&atlas, RblAtlasFindTag(&atlas, "walk"), 0);
+*            RblUpdateSprite(&walk, &atlas, GetFrameTime());                 // each frame
+*            RblAtlasBillboard(&atlas, walk.frame, 1.0f/32.0f, &sprite);     // 32 pixels a unit
+*       9. Translucent sprites: a batch (or instanced draw) sorts blended billboards; soft particles
+*          (desc.softParticles) fade into the opaque world drawn between two added calls.
+*            batch.sort = RBL_SORT_BACK_TO_FRONT;  // or RBL_SORT_HYBRID: solid texels opaque
+*            RblBeginSceneDepth();                 // inside BeginDrawing: the opaque world's depth kept
+*                ... BeginMode3D, opaque draws, EndMode3D ...
+*            RblEndSceneDepth();                   // shown; then the blended draws in BeginMode3D
 *
 *   MATERIAL VALUES (read from the raylib Material at each header draw; zero means default):
 *       maps[MATERIAL_MAP_ALBEDO].color      base colour x texture (raylib's colDiffuse; zero = black)
@@ -228,23 +241,11 @@
 *       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
 *       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (fog, exposure,
 *       tonemap, encoding; writes depth). Set the scene before the geometry pass: it adds the ambient.
-*       Lighting and material decoding are the forward path's code. Colour targets, 10 bytes per pixel:
-*         RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye sees them), a bits 23..16
-*         RT1 RGBA8    bits 55..24 of one 56-bit word (RT1.r its most significant byte); RT2 RG8 bits 15..0
-*                      (RGBA8 where the G-buffer receives shadows: ba each pixel's caster identity, 12 B)
-*           GGX        normal 36 bits | roughness 12: log over [0.045, 1] | metalness 8: linear
-*           Blinn-P.   normal 32 bits | shininess 12: log2(n)/11 | intensity 12: log2(1 + 256 s)/9
-*                      (s = intensity x specular colour luminance, <= 1.996; n <= 2048)
-*           Lambert    normal 36 bits | 0 | specular map 8 (debug view)
-*         normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate (odd: 0 and
-*                      +-1 are codes, axis-aligned normals exact), the nearest of the 4 codes around
-*                      the point; b = 18 (max 0.00061 deg), Blinn-Phong 16 (max 0.0025 deg: its lobe,
-*                      n <= 2048, is at least 25 times wider than GGX's sharpest, and a constant
-*                      material rounded to one code biases every pixel, so its fields take the bits)
-*       Steps are fixed relative changes of what the BRDF reads (a highlight's error is relative);
-*       shaders/gbuffer_codec.glsl has the packing, README "Deferred" the measured errors and limits.
-*       plus RT3 RGBA16F accumulation (emission and ambient from the geometry pass, then light; alpha:
-*       occlusion, for its debug view only) and a 32-bit float depth texture under raylib's
+*       Lighting and material decoding are the forward path's code. Colour targets: 10 bytes per pixel
+*       (12 where the G-buffer receives shadows: RT2 keeps each pixel's caster identity). Their layout
+*       has one home, the comment opening shaders/gbuffer_codec.glsl (embedded below: search for
+*       "G-buffer codec:"); README "Deferred" has the measured errors and limits. Depth is a 32-bit
+*       float depth texture under raylib's
 *       projection (rlgl's cull distances): rlLoadTextureDepth's texture respecified through
 *       rlGetProcAddress("glTexImage2D"), since an orthographic camera's depth is linear over the
 *       whole clip range (a 24-bit step is (far - near)/2^24 world units everywhere) and a driver's
@@ -458,7 +459,6 @@
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
-*       - Billboards are not sorted: draw alpha-blended ones back to front yourself.
 *       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
 *         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
 *         packer that interlocks polygons may leave another frame's texels inside a quad.
@@ -517,95 +517,32 @@
 *           Decoration for public functions; BUILD_LIBTYPE_SHARED / USE_LIBTYPE_SHARED select
 *           __declspec(dllexport/dllimport) on Windows, as in raylib.
 *
-*   VERSIONS HISTORY:
-*       0.1 (2026-11-22) First release: geometry (all facing modes, flips, rotated frames, rounded
-*                        normals), immediate, batched and instanced paths, packed material maps,
-*                        forward lighting (point/directional/spot, Lambert/Blinn-Phong/GGX, fog,
-*                        tonemap), deferred helper (10-byte G-buffer, light volumes, debug views).
-*       0.2 (2026-11-23) Shadows: directional and spot shadow maps cast by billboards (alpha-tested,
-*                        every path) and Models, received forward and deferred; RblView gained the
-*                        shadow pass's light and minimum cast angle (zero outside shadow passes).
-*       0.3 (2026-11-23) Faster CPU geometry: batches reuse a facing frame while facing and up repeat
-*                        (RblBatch gained RblFrameCache), rotation uses an exact-in-degrees sin/cos
-*                        (quadrant angles exact), instanced draws upload the caller's array directly
-*                        when every instance is valid; the instance bound is now |value| < 2^120.
-*       0.4 (2026-11-23) The 1.0 API shape: a lit program is a raylib Shader of compiled features only;
-*                        values travel with the Material; one RblScene a frame (lights, ambient, fog,
-*                        exposure, shadow maps) for every program and G-buffer; RblDrawModel/Mesh;
-*                        one program registry; raylib's UnloadShader on a lit program is survivable.
-*                        C++11..23 clean (g++, clang++); RBL_ZERO zero-initialises in C and C++.
-*         0.3 -> 0.4 (old -> new):
-*           RblLitShader lit = RblLoadLitShader(d)     Shader lit = RblLoadLitShader(d)
-*           material.shader = lit.shader               material.shader = lit
-*           RblIsLitShaderValid(lit)                   RblIsLitShaderValid(shader) (a Shader)
-*           RblUnloadLitShader(lit)                    RblUnloadLitShader(&shader) (zeroes it)
-*           RblSetLights(&lit, lights, n, ambient)     scene.lights, .lightCount, .ambient; RblSetScene
-*           RblSetHemisphereAmbient(&lit, sky, gr, up) scene.ambient = sky, .ambientGround, .ambientUp
-*           RblSetFog(&lit, fog)                       scene.fog
-*           RblSetExposure(&lit, e)                    scene.exposure
-*           RblSetShadows(&lit, maps, n)               scene.shadowMaps, .shadowMapCount (after passes)
-*           RblSetGBufferShadows(&g, maps, n)          scene.shadowMaps, .shadowMapCount
-*           RblSetGBufferHemisphere(&g, ground, up)    scene.ambientGround, .ambientUp
-*           RblLoadGBuffer(w, h, shadingDesc)          RblLoadGBuffer(gdesc), an RblGBufferDesc
-*           RblIsGBufferValid(g)                       RblIsGBufferValid(&g)
-*           RblGBufferBytesPerPixel(g)                 RblGBufferBytesPerPixel(&g)
-*           RblDrawDeferredLights(&g, l, n, ambient)   RblSetScene(&scene) before RblBeginGBuffer (the
-*                                                        geometry pass adds the ambient); then
-*                                                        RblDrawDeferredLights(&g)
-*           RblBeginShadowMap(&map, lights, i, c, r)   RblBeginShadowMap(&map, &scene, i, c, r)
-*           RblDrawModelShadow(model, p, s, tint)      RblDrawModel(model, p, s, tint) inside the pass
-*           desc.specular                              params[RBL_PARAM_SPECULAR]
-*           desc.specularColor                         maps[MATERIAL_MAP_SPECULAR].color
-*           desc.shininess                             maps[MATERIAL_MAP_NORMAL].value
-*           desc.roughness                             maps[MATERIAL_MAP_ROUGHNESS].value
-*           desc.metalness                             maps[MATERIAL_MAP_METALNESS].value
-*           desc.emissiveColor                         maps[MATERIAL_MAP_EMISSION].color
-*           desc.emissiveIntensity                     maps[MATERIAL_MAP_EMISSION].value
-*           desc.alphaCutoff                           params[RBL_PARAM_ALPHA_CUTOFF] (casters too)
-*           desc.hemisphereAmbient                     removed: always on; scene.ambientGround 0 = flat
-*           desc.fog (RblFog)                          desc.fog (RblFogMode compiled in) + scene.fog
-*           desc.exposure                              scene.exposure
-*           desc.maxLights 0 = 1                       desc.maxLights 0 = 4
-*           desc.shadowCaster                          removed (casters are the header's)
-*           gbuffer.shading (RblLitShaderDesc)         gbuffer.desc (RblGBufferDesc)
-*           RBL_LIGHTS_POINT, _DIRECTIONAL, _SPOT,     RBL_LIGHT_FEATURE_POINT, ... (RblLightFeature;
-*             _CLASSIC_FALLOFF                           RBL_LIGHT_POINT etc. stay the light types)
-*           RblView, RblGetView(camera)                RblCameraFrame, RblGetCameraFrame(camera)
-*           RblView.light, .minCastSin                 removed (the shadow pass's, private)
-*         After 0.4 (old -> new):
-*           RblShadowDesc.faceLight = true             the default (casters face the light)
-*           RblShadowDesc.faceLight = false            RblShadowDesc.faceCamera = true
-*           RblGBufferView, RBL_GBUFFER_VIEW_*         RblGBufferOutput, RBL_GBUFFER_OUTPUT_*
-*           RblSetGBufferView(&g, v, s); g.debugView,  RblSetGBufferOutput(&g, o, s); g.output,
-*             g.debugScale                               g.outputScale
-*           desc.debugView                             desc.debugOutput
-*           batch.vertices, .runs, .view, .frame, ...  private (batch.state); capacity, count and
-*                                                        skipped stay
-*           gbuffer.id, .lightId, .passes[], VAOs, ... private (gbuffer.state); targets, desc,
-*                                                        output, naiveFullscreen, light counts stay
-*           map.id, .lightView, .matrix, .begun, ...   private (map.state); depth, size, desc,
-*                                                        light stay
-*           map.caster, map.casterInstanced            removed (casters are the header's)
-*           instanceBuffer.shaderId, .shaderGeneration, .loc   removed (the registry keeps locations)
-*           instanceBuffer.staging, .vaoId, .vboId     private (buffer.state); capacity, skipped stay
-*           void RblBeginBatch(...)                    bool RblBeginBatch(...): refuses while billboards
-*                                                        are pending (was: dropped them)
-*           RblEncodeNormal(NaN/zero normal) = +Z      refused with a log line, out untouched
-*           billboard.fade (RblBillboard 144 bytes)    out of line (88 bytes): RblBatchAddFade(&batch,
-*                                                        m, &billboard, &fade), RblDrawBillboardFade
-*           RblAtlasBillboardFade(..., &billboard)     RblAtlasBillboardFade(..., &billboard, &fade)
-*         Reliability (0.4): every refusal logs one line and changes nothing (a contract suite over
-*         all public functions, one process per case); limits RBL_MAX_BATCH_BILLBOARDS,
-*         RBL_MAX_INSTANCES, RBL_MAX_SCENE_LIGHTS, RBL_MAX_LIGHT_INTENSITY, RBL_MAX_TARGET_SIZE,
-*         RBL_MAX_OCCLUSION_RADIUS; allocation failures swept on every allocating path.
-*       0.5 (unreleased) Sprite sheets (TexturePacker, Aseprite, libGDX atlases; player, N-way,
-*                        cross-fades), GPU-skinned Models, translucent sorting and soft particles,
-*                        run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL), a 56-bit
-*                        G-buffer word, RBL_VERSION* (RBILLBOARD_LIT_VERSION* kept); no API removed.
-*                        Details: CHANGELOG.md.
+*   VERSIONS HISTORY: (migration tables: CHANGELOG.md)
+*       0.5 (unreleased)  ADDED: sprite-sheet atlases (TexturePacker, Aseprite, libGDX), the sprite player,
+*                                N-way sectors, cross-fades, slices, premultiplied pages, normal sheets
+*                         ADDED: GPU-skinned Models; translucent sorting; soft particles (RblBeginSceneDepth)
+*                         ADDED: run-time GLSL dialects (GL 3.3, ES 3, ES 2, GL 2.1, WebGL 1 and 2)
+*                         ADDED: sprites never shadow themselves (caster identities); orthographic cameras
+*                         ADDED: RblClose in any order; stale copies of every value type refused by id
+*                         ADDED: RBL_VERSION, RBL_VERSION_MAJOR/MINOR/PATCH
+*                         CHANGED: the G-buffer keeps one 56-bit word and a float depth
+*                         CHANGED: shadow casters face the light by default (RblShadowDesc.faceCamera)
+*                         ADDED: batch culling (RblBatch.culled, .noCull): off-view billboards never expanded
+*                         CHANGED: RblGBufferView -> RblGBufferOutput; private members behind .state
+*                         CHANGED: a cross-fade travels beside the billboard (RblBatchAddFade,
+*                                  RblDrawBillboardFade): RblBillboard back to 0.3's 88 bytes
+*                         REMOVED: RblShadowDesc.faceLight (the default now)
+*       0.4 (2026-11-23)  CHANGED: the 1.0 API shape: a lit program is a raylib Shader of compiled
+*                                  features; values travel with the Material; one RblScene a frame
+*                         ADDED: RblDrawModel, RblDrawMesh; RBL_ZERO; C++11..23; the contract suite
+*                         REMOVED: RblLitShader, RblSetLights, RblSetFog, RblSetExposure, RblSetShadows
+*       0.3 (2026-11-23)  CHANGED: faster CPU geometry (facing frames reused, exact-degree rotation)
+*       0.2 (2026-11-23)  ADDED: directional and spot shadow maps, cut-out casters, forward and deferred
+*       0.1 (2026-11-22)  ADDED: first release: facing modes, immediate/batched/instanced paths,
+*                                packed maps, forward lighting, the deferred helper
 *
 *   DEPENDENCIES:
-*       raylib 6.0 (raylib.h, rlgl.h, raymath.h), OpenGL 3.3 backend
+*       raylib 6.0 or later (raylib.h, rlgl.h, raymath.h), any of its GL backends: 3.3, 4.3, ES 3, ES 2, 2.1
 *
 *   LICENSE: zlib/libpng
 *
@@ -704,7 +641,7 @@
     #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11     // The scene depth soft particles read (RblScene.depth)
 #endif
 #ifndef RBL_SHADOW_TEXTURE_UNIT
-    #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's materials use 0..11)
+    #define RBL_SHADOW_TEXTURE_UNIT 12          // Shadow map k is bound to unit 12 + k (raylib's material maps use 0..10, the scene depth 11)
 #endif
 #ifndef RBL_SHADOW_MAX_FILTER
     #define RBL_SHADOW_MAX_FILTER 6             // Largest PCF footprint in texels per side
@@ -778,7 +715,6 @@ typedef struct RblCameraFrame {
     bool orthographic;              // Parallel view (CAMERA_ORTHOGRAPHIC): the eye is at infinity along back, facing modes turn toward back
 } RblCameraFrame;
 
-// Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 // How RblEndBatch orders and passes a batch's billboards (RblBatch.sort)
 typedef enum {
     RBL_SORT_NONE = 0,              // Submission order (opaque and alpha-tested billboards)
@@ -786,6 +722,7 @@ typedef enum {
     RBL_SORT_HYBRID                 // Solid texels first (depth tested and written), then the fringe back to front without depth writes
 } RblSortMode;
 
+// Batched billboards: CPU vertices, one GPU upload per RblEndBatch(), one draw per material run
 typedef struct RblBatch {
     int sort;                       // RblSortMode, read by RblEndBatch (0 = submission order)
     float solidAlpha;               // RBL_SORT_HYBRID: alpha from which a texel is solid (0 = 1.0, fully opaque only)
@@ -971,21 +908,10 @@ typedef struct RblLitShaderDesc {
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBatchAddFade, RblDrawBillboardFade, RblInstancedDesc.fades): every map fetched twice
-    int debugOutput;                  // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    int debugOutput;                // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
 } RblLitShaderDesc;
 
-// Per-material values a lit program reads from raylib's Material at each draw (zero means default):
-//   maps[MATERIAL_MAP_ALBEDO].color      base colour x texture (raylib's colDiffuse)
-//   maps[MATERIAL_MAP_SPECULAR].color    Blinn-Phong specular colour (sRGB; zero = white; raylib uploads it as colSpecular)
-//   params[RBL_PARAM_SPECULAR]           Blinn-Phong specular intensity (0 = 0.5; with a specular map, its scale: 0 = 1)
-//   maps[MATERIAL_MAP_NORMAL].value      Blinn-Phong shininess (0 = 32; raylib's OBJ loader stores MTL Ns here)
-//   maps[MATERIAL_MAP_ROUGHNESS].value   GGX perceptual roughness without a map, 0..1 (0 = 0.5; below 0.045 clamps)
-//   maps[MATERIAL_MAP_METALNESS].value   GGX metalness 0..1 (raylib's glTF loader fills both)
-//   maps[MATERIAL_MAP_EMISSION].color    constant emission (sRGB; zero = none)
-//   maps[MATERIAL_MAP_EMISSION].value    scale of the constant and mapped emission (0 = 1)
-//   params[RBL_PARAM_ALPHA_CUTOFF]       discard below this alpha (0 = 0.5; negative = never)
-// (raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS: its value holds the metalness, so the
-// Blinn-Phong intensity has a params slot of its own)
+// Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
 typedef enum {
     RBL_PARAM_ALPHA_CUTOFF = 0,     // Material.params index of the alpha cutoff
     RBL_PARAM_SPECULAR = 1,         // Material.params index of the Blinn-Phong specular intensity
@@ -1023,8 +949,8 @@ typedef struct RblGBufferDesc {
 typedef struct RblGBuffer {
     int width;                      // Size in pixels
     int height;
-    Texture2D albedo;               // RGBA8: sRGB albedo, occlusion
-    Texture2D normal;               // RGBA8: bits 47..16 of the normal/material word (octahedral normal, ...)
+    Texture2D albedo;               // RGBA8: sRGB albedo; alpha: bits 23..16 of the normal/material word (DEFERRED)
+    Texture2D normal;               // RGBA8: bits 55..24 of the word
     Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear); alpha: occlusion
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
@@ -1175,6 +1101,7 @@ extern "C" {            // Prevents name mangling of functions
 //----------------------------------------------------------------------------------
 // Module lifetime
 RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
+RBLAPI const char *RblGetFailureReason(void);                                // Why the last refused call failed: its log line without "RBL: " ("" before any; kept until the next refusal)
 
 // Geometry (CPU, no GL needed)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
@@ -1296,6 +1223,11 @@ RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int d
     #define RBL_FREE(ptr)        free(ptr)
 #endif
 
+// Every header TraceLog goes through rbl__traceLog, which keeps the text of the last refusal
+// (warnings starting "RBL: ") for RblGetFailureReason and hands the same line to raylib's TraceLog
+static void rbl__traceLog(int level, const char *text, ...);
+#define TraceLog(...) rbl__traceLog(__VA_ARGS__)
+
 typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256))? 1 : -1];   // bone indices are bytes
 
 // Material map slots raylib's DrawMesh binds (MAX_MATERIAL_MAPS of its default config)
@@ -1369,7 +1301,6 @@ typedef struct rbl__DeadHandle {
     const int *locs;
 } rbl__DeadHandle;
 
-// A run of billboards sharing one material inside a batch
 // A billboard's place in a sorted batch
 typedef struct rbl__SortKey {
     float depth;                    // Along the view axis (larger = farther)
@@ -1377,6 +1308,7 @@ typedef struct rbl__SortKey {
     int run;                        // Its material run
 } rbl__SortKey;
 
+// A run of billboards sharing one material inside a batch
 typedef struct rbl__BatchRun {
     Material material;              // Material the run draws with
     int first;                      // First billboard
@@ -1555,8 +1487,8 @@ typedef struct rbl__State {
     void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
     void *glGetUniformfv;           // ... and glGetUniformfv
     bool glLooked;
-    bool closed;
-    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target                    // RblClose ran: the tables go with the last object the caller holds
+    bool closed;                    // RblClose ran: the tables go with the last object the caller holds
+    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target
     rbl__Scene scene;
     RblBatch immediate;             // The immediate path's one-quad batch
     RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
@@ -1569,6 +1501,7 @@ typedef struct rbl__State {
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
+    char failure[512];              // The last refusal line without "RBL: " (RblGetFailureReason)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
     rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
     int liveCount;                  // Slots used (free ones are reused)
@@ -1576,6 +1509,19 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+
+static void rbl__traceLog(int level, const char *text, ...)
+{
+    char line[sizeof(rbl__state.failure) + 5];
+    va_list args;
+    va_start(args, text);
+    vsnprintf(line, sizeof(line), text, args);
+    va_end(args);
+    if ((level >= LOG_WARNING) && (strncmp(line, "RBL: ", 5) == 0)) memcpy(rbl__state.failure, line + 5, strlen(line + 5) + 1);
+    (TraceLog)(level, "%s", line);
+}
+
+const char *RblGetFailureReason(void) { return rbl__state.failure; }
 
 // The GLSL dialect of rlgl's context (shaders/dialect.glsl): 330 desktop GL 3.3/4.3, 300 ES 3 and
 // WebGL2, 120 GL 2.1, 100 ES 2 and WebGL1; 0 for a context this header cannot shade (GL 1.1, software)

@@ -161,6 +161,13 @@ else
   echo "  FAIL  lit sprite game example renders headlessly"; printf '%s\n' "$out" | grep -v '^INFO' | head -20; fail=$((fail + 1))
 fi
 
+# The README's code as printed (tests/tools/readme_run.c): the quick start and every how-to run
+# headlessly from examples/; each frame must show something lit, with no RBL warning logged
+echo "== readme (the quick start and each how-to, run as printed)"
+rr="$(cd "$BUILD" && pwd)/readme_run"
+out=$(cd examples && ASAN_OPTIONS=detect_leaks=0 "$rr" 2>&1); printf '%s\n' "$out" | grep -E '^  (ok|FAIL)|^readme:'; count "$out"
+if printf '%s\n' "$out" | grep -q "ERROR: AddressSanitizer\|runtime error:"; then echo "  FAIL  readme: sanitizer report"; printf '%s\n' "$out" | grep -A5 "ERROR: AddressSanitizer\|runtime error:" | head -20; fail=$((fail + 1)); fi
+
 # Static check of every spliced stage in every dialect (330, 300 es, 120, 100). glslangValidator
 # checks syntax and types per #version; it does not enforce GLSL ES 1.00's Appendix A indexing limits,
 # which the strict ES 2.0 run below exercises on Mesa.

@@ -46,12 +46,17 @@ static void ck(bool ok, const char *fmt, ...)
 }
 
 // Counts the header's warnings (and rlgl's matrix-stack errors) at LOG_WARNING and above
+static int reasonMismatches = 0;      // refusal lines whose text RblGetFailureReason() did not return
 static void contractLog(int level, const char *text, va_list args)
 {
     char line[512];
     vsnprintf(line, sizeof(line), text, args);
     if (level < LOG_WARNING) return;
-    if (strncmp(line, "RBL:", 4) == 0) { warnings++; memcpy(lastWarning, line, sizeof(line)); }
+    if (strncmp(line, "RBL:", 4) == 0)
+    {
+        warnings++; memcpy(lastWarning, line, sizeof(line));
+        if (strcmp(RblGetFailureReason(), line + 5) != 0) reasonMismatches++;     // the queryable reason is the line
+    }
     else if (strstr(line, "Matrix stack overflow") != NULL) raylibErrors++;
 }
 
@@ -107,6 +112,8 @@ static void refusedEnd(bool ok, const char *what)
     snapTake(&after);
     ck(!ok, "%s: returned success", what);
     ck(warnings == 1, "%s: %d RBL log lines, expected 1 (last: %s)", what, warnings, lastWarning);
+    ck((reasonMismatches == 0) && ((warnings == 0) || (strcmp(RblGetFailureReason(), lastWarning + 5) == 0)),
+       "%s: RblGetFailureReason() \"%s\" is not the logged line", what, RblGetFailureReason());
     snapCompare(&before, &after, what);
 }
 // expr yields true on success; V(call) turns a void call into "no success"
@@ -462,6 +469,23 @@ static void c_close_twice(void)
     RblDrawBillboard(camera(), material, bb);
     EXPECT_QUIET(V(RblClose()), false);
     EXPECT_QUIET(V(RblClose()), false);
+}
+
+// The reason a caller can read: "" before any refusal, then each refusal's line (every
+// EXPECT_REFUSED also checks it), kept through calls that succeed
+static void c_failure_reason(void)
+{
+    ck(strcmp(RblGetFailureReason(), "") == 0, "before any refusal: \"%s\"", RblGetFailureReason());
+    EXPECT_REFUSED(V(RblUnloadBatch(NULL)));
+    ck(strstr(RblGetFailureReason(), "RblUnloadBatch") == RblGetFailureReason(), "after RblUnloadBatch(NULL): \"%s\"", RblGetFailureReason());
+    char kept[512];
+    snprintf(kept, sizeof(kept), "%s", RblGetFailureReason());
+    RblBatch b = RblLoadBatch(4);
+    EXPECT_QUIET(RblIsBatchValid(b), true);
+    ck(strcmp(RblGetFailureReason(), kept) == 0, "a successful call changed the reason to \"%s\"", RblGetFailureReason());
+    EXPECT_REFUSED(V(RblEndBatch(&b)));                            // never begun
+    ck(strstr(RblGetFailureReason(), "RblEndBatch") == RblGetFailureReason(), "after RblEndBatch unbegun: \"%s\"", RblGetFailureReason());
+    RblUnloadBatch(&b);
 }
 
 // ---- cases: instanced -----------------------------------------------------------------------------
@@ -2058,6 +2082,7 @@ static const Case cases[] = {
     { "RblEndBatch", "NULL, zero, unbegun, twice, stale", c_batch_end, "null nesting stale-header" },
     { "RblDrawBillboard", "bad camera, materials, variants", c_draw_billboard, "floats variants" },
     { "RblClose", "twice", c_close_twice, "lifetime" },
+    { "RblGetFailureReason", "none yet, after refusals, kept through successes", c_failure_reason, "lifetime" },
     { "RblLoadInstanceBuffer RblIsInstanceBufferValid RblUnloadInstanceBuffer", "counts, zero, stale, double", c_instances_load, "counts null stale-header" },
     { "RblLoadSceneTarget RblSetScene", "sizes; the scene's depth field", c_scene_target, "counts" },
     { "RblDrawInstanced", "NULL, stale, counts, camera, desc, materials, bad instances", c_instances_draw, "null stale-header counts floats variants" },
