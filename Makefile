@@ -15,8 +15,8 @@ BUILD    ?= build
 CC       ?= cc
 WARN     := -Wall -Wextra -pedantic -Werror
 CSTD     := -std=c99 -D_DEFAULT_SOURCE
-TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests
-BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests
+TEST_CFLAGS  := $(CSTD) $(WARN) -O1 -g -I. -Itests -DRBL_INSTRUMENTS
+BENCH_CFLAGS := $(CSTD) $(WARN) -O2 -I. -Itests -DRBL_INSTRUMENTS
 SAN      := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
 
 .PHONY: all run quickstart test test-quick bench shaders check-shaders pictures clean clean-all deps web test-web test-page web-deps web-shot api-index raylib-master
@@ -69,7 +69,7 @@ WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
-GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_sprites.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_cull.c
+GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_cull.c
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -276,7 +276,7 @@ clean-all:
 # (its -o page.html minifier crashes on Debian's node): the pages are tests/web/*.html.
 WEB_SHOWCASE := examples/shaders_lit_billboards.c
 WEBCC        := NODE_PATH=/usr/share/nodejs emcc
-WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests -DSUPPORT_GPU_SKINNING=1
+WEB_CFLAGS   := $(CSTD) $(WARN) -O2 -I. -Itests -DSUPPORT_GPU_SKINNING=1 -DRBL_INSTRUMENTS
 WEB_LDFLAGS  := -sALLOW_MEMORY_GROWTH=1 -sTOTAL_STACK=16777216 -sINITIAL_MEMORY=67108864
 WEB_ES3      := $(BUILD)/web/raylib-es3/libraylib.web.a
 WEB_ES2      := $(BUILD)/web/raylib-es2/libraylib.web.a

@@ -16,20 +16,27 @@
 *       VALUES, OWNERSHIP, FACING MODES, DEGENERATE FRAMES, CONVENTIONS, DEVIATIONS FROM raylib,
 *       LIGHTING, DEFERRED, SHADOWS, MATERIAL LAYOUT, SPRITE SHEETS, LIMITATIONS, CONFIGURATION, VERSIONS HISTORY,
 *       DEPENDENCIES, LICENSE.
-*       Implementation sections (banner "// Module ...: <name>"), in data-flow order, not file order:
-*         Types and Structures Definition (private)   registry entry, packed scene, header state
-*         material maps                     packing, normal encodings, mips, generators (CPU, load time)
-*         (Embedded shaders, RBL-SHADERS-BEGIN/END)   shaders/ files, includes resolved (make shaders)
-*         lights and the forward lit shader variant #defines before the embedded sources, compilation
-*         the program registry              one entry per compiled program, shared by equal keys
-*         lit programs and per-draw material values   Shader handles; Material -> uniforms per draw
-*         the scene                         RblSetScene: validate, pack, upload to every live program
-*         small vector helpers, geometry    camera frame, facing frames, quad corners (CPU)
-*         batched and immediate paths       vertex buffers, material runs, draws
-*         instanced path                    per-instance data, quads expanded in the vertex shader
-*         shadows                           light cameras, caster passes (before the colour pass)
-*         deferred G-buffer                 geometry pass, light passes, resolve
-*         sprite-sheet atlases and animation   readers (JSON, libGDX), frame table, player, N-way (CPU)
+*       The file, in order (each section's banner ends with its tag: search ">>geometry" to jump there;
+*       make test checks this list against the banners):
+*         >>config      Defines and Macros: configuration defaults (CONFIGURATION), RBL_ZERO
+*         >>types       public types, in the order the stages use them
+*         >>api         public functions, one group per stage (README's API index is made from them)
+*         >>private     private types: uniform table, registry entry, packed scene, the header's state
+*         >>shaders     generated data: the shaders/ sources as strings, includes resolved (make shaders; a
+*                       test fails if they differ; skip it when reading the code)
+*         >>vec         small vector helpers
+*         >>geometry    camera frame, facing frames, quad corners (CPU)
+*         >>batch       batched and immediate paths: vertex buffers, material runs, sorting, draws
+*         >>instanced   instanced path: per-instance data, quads expanded in the vertex shader
+*         >>maps        material maps: texel access, sRGB and mips, packing, authoring help (CPU)
+*         >>lit         lit shader variants: #defines before the embedded sources, compilation
+*         >>registry    the program registry: one entry per compiled program, shared by equal keys
+*         >>programs    lit programs and per-draw material values (Shader handles, Material -> uniforms)
+*         >>scene       RblSetScene: validate, pack, upload to every live program; scene depth
+*         >>deferred    deferred G-buffer: geometry pass, light passes, resolve
+*         >>shadows     shadow maps: light cameras, caster passes, caster identities
+*         >>atlas       sprite-sheet atlases and animation: JSON, sheet files, libGDX, slices, a page's
+*                       textures, the player (RBL_NO_ATLAS leaves it out)
 *
 *   INTEGRATION:
 *       1. One lit billboard. `#define RBILLBOARD_LIT_IMPLEMENTATION` before the #include in exactly
@@ -256,7 +263,7 @@
 *       own, so later forward draws test against it; lighting tolerates its far-field error.
 *       Lights: directional and range-0 lights in full-screen passes; bounded point/spot lights as one
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
-*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, kept for
+*       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, RBL_INSTRUMENTS, kept for
 *       comparison). Debug views: RblSetGBufferOutput.
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
@@ -472,6 +479,12 @@
 *   CONFIGURATION:
 *       #define RBILLBOARD_LIT_IMPLEMENTATION
 *           Generates the implementation in the including file (exactly one translation unit).
+*       #define RBL_NO_ATLAS
+*           Leaves out the sprite-sheet module (atlas readers, player, sectors: SPRITE SHEETS); the
+*           rest of the header does not depend on it.
+*       #define RBL_INSTRUMENTS
+*           Adds what the tests and benchmarks measure with: RblMeasureNormalEncoding, the G-buffer's
+*           naiveFullscreen baseline and forced-failure hooks (not for games).
 *       #define RBL_MAX_LIGHTS 64
 *           Light slots a lit program may compile (a slot costs 2 vec4 uniforms, 3-4 with spot cones /
 *           classic falloff); also the unbounded lights one RblDrawDeferredLights accepts.
@@ -494,6 +507,8 @@
 *           1..2^26. The reader holds the text's values at once (20 bytes each).
 *           Input beyond any limit is refused with one log line; world positions and camera vectors
 *           must stay below 1.15e18 (2^60) in magnitude, so squared lengths fit in a float.
+*       #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f
+*           Seconds a frame shows where its atlas states no duration (libGDX, TexturePacker).
 *       #define RBL_MAX_SHADOWS 4
 *           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
 *       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
@@ -595,7 +610,7 @@
 #endif
 
 //----------------------------------------------------------------------------------
-// Defines and Macros
+// Defines and Macros   >>config
 //----------------------------------------------------------------------------------
 // Zero initialiser valid in C99 and C++11 alike (`RblBillboard card = RBL_ZERO;`, then set fields):
 // C's universal `{ 0 }` draws -Wmissing-field-initializers in C++, whose `{}` is not C99
@@ -634,6 +649,9 @@
 #ifndef RBL_MAX_ATLAS_ENTRIES
     #define RBL_MAX_ATLAS_ENTRIES 16777216      // JSON values one atlas text may hold, and rows of each atlas table (2^24; at most 2^26)
 #endif
+#ifndef RBL_SPRITE_DEFAULT_FRAME_TIME
+    #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // Seconds a frame shows where the atlas gives no duration (libGDX, TexturePacker)
+#endif
 #ifndef RBL_MAX_SHADOWS
     #define RBL_MAX_SHADOWS 4                   // Shadow maps one lit shader may sample (at most 4)
 #endif
@@ -658,7 +676,7 @@
 #endif
 
 //----------------------------------------------------------------------------------
-// Types and Structures Definition
+// Types and Structures Definition   >>types
 //----------------------------------------------------------------------------------
 // How a billboard orients itself
 typedef enum {
@@ -813,13 +831,15 @@ typedef struct RblPackedMaterial {
     RblMaterialLayout layout;       // What is stored where
 } RblPackedMaterial;
 
-// Angular error of a normal encoding, in degrees
+#if defined(RBL_INSTRUMENTS)
+// Angular error of a normal encoding, in degrees (an instrument of the tests and benchmarks)
 typedef struct RblNormalErrorStats {
     double mean;                    // Mean angular error
     double p99;                     // 99th percentile
     double max;                     // Maximum
     int count;                      // Normals measured
 } RblNormalErrorStats;
+#endif
 
 // Light types (RblLight.type)
 typedef enum {
@@ -863,6 +883,16 @@ typedef enum {
     RBL_TONEMAP_REINHARD,           // c/(1 + c)
     RBL_TONEMAP_ACES                // ACES filmic fit (Narkowicz 2015)
 } RblTonemap;
+
+// What a lit program writes instead of the lit colour (RblLitShaderDesc.debugOutput)
+typedef enum {
+    RBL_DEBUG_OUTPUT_NONE = 0,      // The lit colour
+    RBL_DEBUG_OUTPUT_TANGENT_NORMAL, // The tangent-space normal the maps give
+    RBL_DEBUG_OUTPUT_WORLD_NORMAL,  // The shading normal in world space
+    RBL_DEBUG_OUTPUT_SPECULAR,      // The specular map
+    RBL_DEBUG_OUTPUT_OCCLUSION,     // The occlusion map
+    RBL_DEBUG_OUTPUT_COUNT
+} RblDebugOutput;
 
 // Light: a plain value; arrays of them are owned by the caller (no hidden global state)
 typedef struct RblLight {
@@ -908,7 +938,7 @@ typedef struct RblLitShaderDesc {
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBatchAddFade, RblDrawBillboardFade, RblInstancedDesc.fades): every map fetched twice
-    int debugOutput;                // 0 off; 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion
+    int debugOutput;                // RblDebugOutput (0 = the lit colour)
 } RblLitShaderDesc;
 
 // Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
@@ -957,7 +987,9 @@ typedef struct RblGBuffer {
     RblGBufferDesc desc;            // Settings, defaults applied
     int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
     float outputScale;              // Range of the depth/position/light-count outputs
-    bool naiveFullscreen;           // Light every light in full-screen passes (comparison baseline; default false)
+#if defined(RBL_INSTRUMENTS)
+    bool naiveFullscreen;           // Light every light in full-screen passes (the benchmarks' baseline)
+#endif
     int lightsInVolumes;            // Last RblDrawDeferredLights: lights drawn as volumes
     int lightsFullscreen;           // ... and in full-screen passes
     unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
@@ -1000,6 +1032,7 @@ typedef struct RblScene {
     Texture2D depth;                // Opaque scene depth for soft particles: RblLoadSceneTarget's .depth or a G-buffer's (id 0 = none)
 } RblScene;
 
+#if !defined(RBL_NO_ATLAS)
 // Sprite-sheet atlas formats (RblLoadAtlasFromMemory; RblLoadAtlas detects by content)
 typedef enum {
     RBL_ATLAS_AUTO = 0,             // Detect: JSON (Aseprite when meta.app names it, else TexturePacker) or libGDX text
@@ -1091,23 +1124,24 @@ typedef struct RblSpritePlayer {
     int loops;                      // Passes to play (0 = forever)
     bool finished;                  // The last pass ended: the frame stays on its last frame
 } RblSpritePlayer;
+#endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
 extern "C" {            // Prevents name mangling of functions
 #endif
 
 //----------------------------------------------------------------------------------
-// Module Functions Declaration
+// Module Functions Declaration   >>api
 //----------------------------------------------------------------------------------
-// Module lifetime
+// Module lifetime (code: >>private, >>batch)
 RBLAPI void RblClose(void);                                                   // End the module: free what the header owns (your objects stay yours; any order with your unloads and CloseWindow)
 RBLAPI const char *RblGetFailureReason(void);                                // Why the last refused call failed: its log line without "RBL: " ("" before any; kept until the next refusal)
 
-// Geometry (CPU, no GL needed)
+// Geometry (CPU, no GL needed; code: >>geometry)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
 
-// Batched and immediate paths (GL)
+// Batched and immediate paths (GL; code: >>batch)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
 RBLAPI bool RblIsBatchValid(RblBatch batch);                                  // Check the batch owns its GPU buffers
 RBLAPI void RblUnloadBatch(RblBatch *batch);                                  // Unload batch buffers
@@ -1118,25 +1152,26 @@ RBLAPI void RblEndBatch(RblBatch *batch);                                     //
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
 RBLAPI void RblDrawBillboardFade(Camera3D camera, Material material, RblBillboard billboard, RblFade fade); // Draw one cross-faded billboard now (immediate path)
 
-// Instanced path (GL): per-instance data only, quads expanded in the vertex shader
+// Instanced path (GL): per-instance data only, quads expanded in the vertex shader (code: >>instanced)
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
 RBLAPI bool RblIsInstanceBufferValid(RblInstanceBuffer buffer);               // Check the buffer owns its GPU objects
 RBLAPI void RblUnloadInstanceBuffer(RblInstanceBuffer *buffer);               // Unload an instance buffer
 RBLAPI int RblDrawInstanced(RblInstanceBuffer *buffer, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count); // Draw with one instanced call (material.shader: an instanced lit variant); returns instances drawn
 
-// Material maps (CPU, no GL needed): packing, encodings, authoring help
+// Material maps (CPU, no GL needed): packing, encodings, authoring help (code: >>maps)
 RBLAPI bool RblPackMaterial(const RblMaterialSource *source, RblPackedMaterial *packed); // Pack an atlas's maps; false = invalid input (logged), packed untouched
 RBLAPI void RblUnloadPackedMaterial(RblPackedMaterial *packed);               // Free packed Images
 RBLAPI void RblEncodeNormal(Vector3 normal, int encoding, unsigned char out[3]); // Encode a unit tangent-space normal (RG used; RGB for RBL_NORMAL_RGB)
 RBLAPI Vector3 RblDecodeNormal(const unsigned char in[3], int encoding);     // Decode as the shaders do (unit length, never NaN)
-RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals
+#if defined(RBL_INSTRUMENTS)
+RBLAPI RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normals, int count); // Angular error of encode+decode over unit normals (RBL_INSTRUMENTS)
+#endif
 RBLAPI Image RblGenNormalMapFromHeight(Image height, float strength, bool wrap); // Tangent-space normal map (OpenGL convention) from a height map (grey)
 RBLAPI Image RblGenHeightFromLuminance(Image albedo);                         // Height (grey) from albedo luminance, for RblGenNormalMapFromHeight
 RBLAPI Image RblGenOcclusionFromHeight(Image height, int radius, float strength); // Cavity occlusion (grey) from a height map
 RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material); // Upload packed Images into material slots (GL): ALBEDO, NORMAL (material texture), EMISSION
 
-// Lights and the forward lit shader
-// Lit programs (compiled features only) and the frame's scene
+// Lit programs (compiled features only) and the frame's scene (code: >>programs, >>scene)
 RBLAPI Shader RblLoadLitShader(RblLitShaderDesc desc);                         // Lit program for Material.shader (equal descs share one program); id 0 + log on failure
 RBLAPI bool RblIsLitShaderValid(Shader shader);                                // Check it is a live lit program of this header (not raylib's fallback, not unloaded)
 RBLAPI void RblUnloadLitShader(Shader *shader);                                // Release this holder's reference and zero it (the program goes with its last holder)
@@ -1145,12 +1180,12 @@ RBLAPI bool RblSetScene(const RblScene *scene);                                /
 RBLAPI void RblDrawModel(Model model, Vector3 position, float scale, Color tint); // DrawModel with each material's lit values (colour, G-buffer or shadow pass)
 RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      // DrawMesh with the material's lit values (colour, G-buffer or shadow pass)
 
-// Deferred G-buffer
+// Deferred G-buffer (code: >>deferred)
 RBLAPI RblGBuffer RblLoadGBuffer(RblGBufferDesc desc);                         // Load a G-buffer and its lighting passes; invalid + log when MRT/float targets/shaders fail
 RBLAPI RenderTexture2D RblLoadSceneTarget(int width, int height);                // Render texture with a depth texture (soft particles read it via RblScene.depth); UnloadRenderTexture frees it
 RBLAPI bool RblBeginSceneDepth(void);                                          // Draw the opaque world into the header's scene target (its depth readable; follows the current target's size); false = refused
 RBLAPI void RblEndSceneDepth(void);                                            // Show that world on the current target with its depth; soft particles read it (unless RblScene.depth is given)
-RBLAPI bool RblIsGBufferValid(const RblGBuffer *gbuffer);                      // Check every target and pass loaded (false: render forward instead)
+RBLAPI bool RblIsGBufferValid(RblGBuffer gbuffer);                             // Check every target and pass loaded (false: render forward instead)
 RBLAPI bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height);    // Recreate the targets at a new size (passes kept); false = unchanged
 RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // Unload every GL object of the G-buffer and zero it
 RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
@@ -1160,7 +1195,7 @@ RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // 
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
 
-// Shadows
+// Shadows (code: >>shadows)
 RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
 RBLAPI bool RblIsShadowMapValid(RblShadowMap map);                            // Check the target loaded
 RBLAPI void RblUnloadShadowMap(RblShadowMap *map);                            // Unload the target and zero it
@@ -1168,10 +1203,11 @@ RBLAPI bool RblBeginShadowMap(RblShadowMap *map, const RblScene *scene, int ligh
 RBLAPI void RblEndShadowMap(RblShadowMap *map);                               // End the shadow pass (restores target, viewport, matrices; culling on, depth test off)
 RBLAPI bool RblShadowFocusFromCamera(Camera3D camera, float aspect, float nearDistance, float farDistance, Vector3 *center, float *radius); // Bounding sphere of a camera's frustum slice (a directional shadow's focus)
 
-// Sprite-sheet atlases and animation (CPU, no GL needed)
+#if !defined(RBL_NO_ATLAS)
+// Sprite-sheet atlases and animation (CPU, no GL needed; code: >>atlas)
 RBLAPI RblAtlas RblLoadAtlas(const char *fileName);                          // Load an atlas file (format detected; TexturePacker multipacks follow related_multi_packs); invalid + log on failure
 RBLAPI RblAtlas RblLoadAtlasFromMemory(const char *text, int size, int format); // Parse size bytes of atlas text (RblAtlasFormat, 0 = detect); invalid + log on failure
-RBLAPI bool RblIsAtlasValid(const RblAtlas *atlas);                           // Check it is a loaded atlas (not zero, not unloaded)
+RBLAPI bool RblIsAtlasValid(RblAtlas atlas);                                  // Check it is a loaded atlas (not zero, not unloaded)
 RBLAPI void RblUnloadAtlas(RblAtlas *atlas);                                  // Free the atlas's tables and zero it
 RBLAPI int RblAtlasFindFrame(const RblAtlas *atlas, const char *name);        // First frame of that name; -1 when none
 RBLAPI int RblAtlasFindTag(const RblAtlas *atlas, const char *name);          // First tag of that name; -1 when none
@@ -1189,6 +1225,7 @@ RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *insta
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
 RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
+#endif // RBL_NO_ATLAS
 
 #if defined(__cplusplus)
 }
@@ -1249,7 +1286,7 @@ typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(R
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
 
 //----------------------------------------------------------------------------------
-// Module Types and Structures Definition (private)
+// Module Types and Structures Definition (private)   >>private
 //----------------------------------------------------------------------------------
 // Uniforms of every program the header compiles, looked up once per program into rbl__Program.loc
 // (-1 where a variant has none): one location mechanism for forward, deferred and shadow passes
@@ -1498,8 +1535,10 @@ typedef struct rbl__State {
     RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
     Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
     unsigned int casterIds[5];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced: compiled on first use)
+#if defined(RBL_INSTRUMENTS)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
+#endif
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
     char failure[512];              // The last refusal line without "RBL: " (RblGetFailureReason)
     Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
@@ -1509,6 +1548,11 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+#if defined(RBL_INSTRUMENTS)
+    #define RBL__HOOK(name) (rbl__state.name)
+#else
+    #define RBL__HOOK(name) false
+#endif
 
 static void rbl__traceLog(int level, const char *text, ...)
 {
@@ -1634,7 +1678,7 @@ static bool rbl__unloadable(const void *holder, unsigned int id, const void *sta
 }
 
 //----------------------------------------------------------------------------------
-// Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)
+// Embedded shaders (generated from the .glsl files in shaders/ by `make shaders`; do not edit by hand)   >>shaders
 //----------------------------------------------------------------------------------
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_ambient[] = {
@@ -2311,7 +2355,7 @@ static const char *const rbl__shader_lit_fs[] = {
     "#include \"output.glsl\"\n",
     "#include \"soft.glsl\"\n",
     "//   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display\n",
-    "//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
+    "//   RBL_DEBUG_OUTPUT v         RblDebugOutput: 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)\n",
     "\n",
     "#if RBL_GLSL >= 300\n",
     "out vec4 finalColor;\n",
@@ -3492,7 +3536,7 @@ static const struct { const char *file; const char *const *const *parts; } rbl__
 // RBL-SHADERS-END
 
 //----------------------------------------------------------------------------------
-// Module Internal Functions: small vector helpers (C and C++ without compound literals)
+// Module Internal Functions: small vector helpers (C and C++ without compound literals)   >>vec
 //----------------------------------------------------------------------------------
 static inline Vector3 rbl__v3(float x, float y, float z) { Vector3 v; v.x = x; v.y = y; v.z = z; return v; }
 static inline bool rbl__finite(float x) { return (x == x) && (x - x == 0.0f); }    // false for NaN and +-Inf
@@ -3707,7 +3751,7 @@ static inline Vector3 rbl__blendOffAxis(Vector3 vp, float w, Vector3 f, Vector3 
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: geometry
+// Module Functions Definition: geometry   >>geometry
 //----------------------------------------------------------------------------------
 // Camera frame as raymath's MatrixLookAt builds it, in double: the float inputs subtract and
 // multiply exactly there, so the frame is right to float however close camera.up comes to the view
@@ -4190,7 +4234,7 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: batched and immediate paths
+// Module Functions Definition: batched and immediate paths   >>batch
 //----------------------------------------------------------------------------------
 // Map slots of a caster material: DrawMesh reads MAX_MATERIAL_MAPS of them (raylib's config.h, 12 by
 // default and not visible here), so the array is generously larger than any build's
@@ -4993,7 +5037,7 @@ void RblClose(void)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: instanced path
+// Module Functions Definition: instanced path   >>instanced
 //----------------------------------------------------------------------------------
 // Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
 #define RBL__INSTANCE_LOCATION 10
@@ -5324,7 +5368,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: material maps
+// Module Functions Definition: material maps   >>maps
 //----------------------------------------------------------------------------------
 // Normal decoding, exactly what the shaders compute (GLSL mirror; t = the sampled texel, each
 // channel in [0,1] = byte/255, then e = t*2 - 1):
@@ -5510,6 +5554,7 @@ Vector3 RblDecodeNormal(const unsigned char in[3], int encoding)
     return rbl__decode(in, encoding);
 }
 
+#if defined(RBL_INSTRUMENTS)
 // k-th smallest of v[0..n-1] (quickselect with Hoare partitioning; reorders v; expected O(n))
 static double rbl__selectKth(double *v, long long n, long long k)
 {
@@ -5581,10 +5626,9 @@ RblNormalErrorStats RblMeasureNormalEncoding(int encoding, const Vector3 *normal
     RBL_FREE(errors);
     return stats;
 }
+#endif
 
-//----------------------------------------------------------------------------------
-// Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat
-//----------------------------------------------------------------------------------
+// ---- Texel access: every uncompressed raylib format, 8-bit ones in place, others through ImageFormat ----
 typedef struct rbl__Texels {
     const unsigned char *u8;        // 8-bit data in place (GRAYSCALE, GRAY_ALPHA, R8G8B8, R8G8B8A8)
     const float *f32;               // Float data: in place (R32, R32G32B32, R32G32B32A32) or a converted RGBA copy
@@ -5710,9 +5754,7 @@ static inline Vector3 rbl__sourceNormal(const rbl__Texels *t, size_t i, bool dir
     return (x*x + y*y + z*z >= RBL__NORMAL_MIN_LEN2)? rbl__v3(x, y, z) : rbl__flatNormal();
 }
 
-//----------------------------------------------------------------------------------
-// sRGB, mip chains and gutter dilation
-//----------------------------------------------------------------------------------
+// ---- sRGB, mip chains and gutter dilation -----------------------------------------------------------
 static double rbl__srgbToLinear(double s)
 {
     return (s <= 0.04045)? s/12.92 : pow((s + 0.055)/1.055, 2.4);
@@ -6000,9 +6042,7 @@ static void rbl__applyDilation(unsigned char *level, int bytesPerTexel, const in
         if (nearest[i] != (int)i) memcpy(level + i*(size_t)bytesPerTexel, level + (size_t)nearest[i]*(size_t)bytesPerTexel, (size_t)bytesPerTexel);
 }
 
-//----------------------------------------------------------------------------------
-// Packing
-//----------------------------------------------------------------------------------
+// ---- Packing ----------------------------------------------------------------------------------------
 // A map's size and format; false (logged) when it cannot be packed
 static bool rbl__checkMap(Image image, const char *name, int width, int height)
 {
@@ -6291,9 +6331,7 @@ void RblUnloadPackedMaterial(RblPackedMaterial *packed)
     memset(packed, 0, sizeof(*packed));
 }
 
-//----------------------------------------------------------------------------------
-// Authoring help: height -> normal, albedo -> height, height -> occlusion
-//----------------------------------------------------------------------------------
+// ---- Authoring help: height -> normal, albedo -> height, height -> occlusion ------------------------
 // A map for the Gen functions: present, sized and convertible; false (logged) otherwise
 static bool rbl__checkGenInput(Image image, const char *function)
 {
@@ -6479,7 +6517,7 @@ Image RblGenOcclusionFromHeight(Image height, int radius, float strength)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: lights and the forward lit shader
+// Module Functions Definition: lights and the forward lit shader   >>lit
 //----------------------------------------------------------------------------------
 // prefix + a stage's parts (rbl__pass_*: its includes resolved by the embed step, dependencies first)
 // in one allocated string, without the #include lines (GLSL has no include)
@@ -6570,7 +6608,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
     if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
     if (!rbl__finiteNonNegative(in.gamma) || (in.gamma > 16.0f) || ((in.gamma > 0.0f) && (in.gamma < 0.0625f))) return "gamma outside 1/16..16 (0 = sRGB)";
-    if ((in.debugOutput < 0) || (in.debugOutput > 4)) return "debugOutput outside 0..4";
+    if ((in.debugOutput < 0) || (in.debugOutput >= RBL_DEBUG_OUTPUT_COUNT)) return "debugOutput not an RblDebugOutput";
     if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
     if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
@@ -6584,7 +6622,7 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->material.occlusion = m.occlusion;
     out->material.premultipliedAlpha = m.premultipliedAlpha;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
-    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == 3));
+    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == RBL_DEBUG_OUTPUT_SPECULAR));
     out->brdf = in.brdf;
     out->fog = in.fog;
     out->tonemap = in.tonemap;
@@ -6631,7 +6669,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 }
 
 //----------------------------------------------------------------------------------
-// Module Internal Functions: the program registry
+// Module Internal Functions: the program registry   >>registry
 //----------------------------------------------------------------------------------
 // Every program the header compiles is one registry entry, keyed by what changes the code. Lit
 // programs go out one per RblLoadLitShader call, each its own GL program, so raylib's UnloadShader
@@ -6934,7 +6972,7 @@ static void rbl__keyFromDesc(const RblLitShaderDesc *normalised, int kind, int p
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: lit programs and per-draw material values
+// Module Functions Definition: lit programs and per-draw material values   >>programs
 //----------------------------------------------------------------------------------
 Shader RblLoadLitShader(RblLitShaderDesc desc)
 {
@@ -7250,7 +7288,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: the scene
+// Module Functions Definition: the scene   >>scene
 //----------------------------------------------------------------------------------
 #define RBL__LIGHT_FLOATS 16            // position, colour, spot (vec4 each), falloff (vec3) + shadow map index + 1
 
@@ -7719,7 +7757,7 @@ bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *material)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: deferred G-buffer
+// Module Functions Definition: deferred G-buffer   >>deferred
 //----------------------------------------------------------------------------------
 // Inverse of a view matrix (rotation + translation): transposed rotation, translation -R^T t
 static Matrix rbl__rigidInverse(Matrix view)
@@ -7864,9 +7902,9 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
-    if ((g->depth.id != 0) && !rbl__state.gbufferDriverDepth) rbl__floatDepth(g->depth.id, width, height);
+    if ((g->depth.id != 0) && !RBL__HOOK(gbufferDriverDepth)) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
-    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !rbl__state.gbufferForceFailure;
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !RBL__HOOK(gbufferForceFailure);
     if (ok)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
@@ -8119,11 +8157,13 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     return g;
 }
 
-bool RblIsGBufferValid(const RblGBuffer *gbuffer)
+// Membership first: a stale copy's state (its G-buffer unloaded) is never read
+static bool rbl__gbufferValid(const RblGBuffer *gbuffer)
 {
-    // Membership first: a stale copy's state (its G-buffer unloaded) is never read
     return (gbuffer != NULL) && rbl__isLive(gbuffer->id, gbuffer->state) && (gbuffer->state->id != 0) && (gbuffer->state->lightId != 0) && (gbuffer->state->passes[RBL__PASS_RESOLVE] != 0) && (gbuffer->state->volumeVao != 0);
 }
+
+bool RblIsGBufferValid(RblGBuffer gbuffer) { return rbl__gbufferValid(&gbuffer); }
 
 // New targets at width x height (passes kept); false (logged by rbl__loadTargets) keeps the old ones
 static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
@@ -8148,7 +8188,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
 
 bool RblResizeGBuffer(RblGBuffer *gbuffer, int width, int height)
 {
-    if (!RblIsGBufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
+    if (!rbl__gbufferValid(gbuffer) || (width <= 0) || (height <= 0) || (width > RBL_MAX_TARGET_SIZE) || (height > RBL_MAX_TARGET_SIZE) || gbuffer->state->begun)
     {
         TraceLog(LOG_WARNING, "RBL: RblResizeGBuffer: invalid G-buffer (or inside its pass) or size %ix%i outside 1..%i", width, height, RBL_MAX_TARGET_SIZE);
         return false;
@@ -8178,7 +8218,7 @@ void RblUnloadGBuffer(RblGBuffer *gbuffer)
 
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
-    if (!RblIsGBufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
+    if (!rbl__gbufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
     return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
 }
 
@@ -8205,7 +8245,7 @@ static void rbl__sceneAmbient(float out[9])
 bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera)
 {
     const char *bad = NULL;
-    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    if (!rbl__gbufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun || (rbl__state.gbufferPass != NULL)) bad = "a G-buffer pass is already in progress (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (!rbl__cameraOk(camera)) bad = "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection";
@@ -8349,12 +8389,17 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
 
 // A packed light goes through a full-screen pass when it has no range (directional, range 0) or the
 // naive loop is asked for
-static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || g->naiveFullscreen; }
+#if defined(RBL_INSTRUMENTS)
+    #define RBL__NAIVE(g) ((g)->naiveFullscreen)
+#else
+    #define RBL__NAIVE(g) ((void)(g), false)
+#endif
+static bool rbl__fullscreenLight(const RblGBuffer *g, const float *slot) { return !(slot[7] > 0.0f) || RBL__NAIVE(g); }
 
 bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 {
     const char *bad = NULL;
-    if (!RblIsGBufferValid(gbuffer)) bad = "invalid G-buffer";
+    if (!rbl__gbufferValid(gbuffer)) bad = "invalid G-buffer";
     else if (gbuffer->state->begun) bad = "inside the geometry pass (RblEndGBuffer first)";
     else if (rbl__state.shadowPass != NULL) bad = "inside a shadow pass";
     else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
@@ -8369,7 +8414,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) uncompiled++;
         else if (rbl__fullscreenLight(g, &s->lights[i*RBL__LIGHT_FLOATS])) unbounded++;
     }
-    if (!g->naiveFullscreen && (unbounded > RBL_MAX_LIGHTS))
+    if (!RBL__NAIVE(g) && (unbounded > RBL_MAX_LIGHTS))
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %i unbounded lights (directional or range 0), at most RBL_MAX_LIGHTS (%i)", unbounded, RBL_MAX_LIGHTS);
         return false;
@@ -8431,7 +8476,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     // Volumes: bounded lights gathered in order, then one instanced draw of sphere proxies, back
     // faces only (correct with the eye inside one)
     int v = 0;
-    for (int i = 0; (i < count) && !g->naiveFullscreen; i++)
+    for (int i = 0; (i < count) && !RBL__NAIVE(g); i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
         if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
@@ -8466,7 +8511,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
 
 void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 {
-    if (!RblIsGBufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
+    if (!rbl__gbufferValid(gbuffer) || (view < 0) || (view >= RBL_GBUFFER_OUTPUT_COUNT) || !rbl__finite(scale) || (scale < 0.0f))
     {
         TraceLog(LOG_WARNING, "RBL: RblSetGBufferOutput: G-buffer not loaded, unknown view %i or bad scale", view);
         return;
@@ -8477,7 +8522,7 @@ void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale)
 
 void RblResolveGBuffer(RblGBuffer *gbuffer)
 {
-    const char *bad = !RblIsGBufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
+    const char *bad = !rbl__gbufferValid(gbuffer)? "invalid G-buffer" : gbuffer->state->begun? "inside its geometry pass" :
                       (rbl__state.shadowPass != NULL)? "inside a shadow pass" : (rbl__state.gbufferPass != NULL)? "inside another G-buffer's geometry pass" : NULL;
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblResolveGBuffer: %s", bad); return; }
     RblGBuffer *g = gbuffer;
@@ -8502,7 +8547,7 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
 }
 
 //----------------------------------------------------------------------------------
-// Module Functions Definition: shadows
+// Module Functions Definition: shadows   >>shadows
 //----------------------------------------------------------------------------------
 // The billboard frame of a shadow pass: the light's own frame (the default: casters face the light),
 // or the caller's camera (desc.faceCamera: the shadow matches what is seen); AXIS billboards get the
@@ -8841,8 +8886,9 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
     return NULL;
 }
 
+#if !defined(RBL_NO_ATLAS)
 //----------------------------------------------------------------------------------
-// Module Functions Definition: sprite-sheet atlases and animation
+// Module Functions Definition: sprite-sheet atlases and animation   >>atlas
 //----------------------------------------------------------------------------------
 // Every format lands in one frame table in TexturePacker's convention: a rotated frame is stored
 // turned 90 degrees clockwise in an h x w block; trim and pivot are upright, top-left origin.
@@ -8860,7 +8906,6 @@ static const char *rbl__checkShadowMaps(const RblShadowMap *maps, int count, int
 #if (RBL_MAX_ATLAS_ENTRIES < 1) || (RBL_MAX_ATLAS_ENTRIES > 67108864)
     #error "RBL_MAX_ATLAS_ENTRIES must be in 1..2^26"
 #endif
-#define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f  // seconds per frame where the atlas gives no duration
 
 static inline Rectangle rbl__rect(float x, float y, float w, float h) { Rectangle r; r.x = x; r.y = y; r.width = w; r.height = h; return r; }
 static inline Vector2 rbl__v2(float x, float y) { Vector2 v; v.x = x; v.y = y; return v; }
@@ -10124,10 +10169,7 @@ RblAtlas RblLoadAtlas(const char *fileName)
     return a;
 }
 
-bool RblIsAtlasValid(const RblAtlas *atlas)
-{
-    return (atlas != NULL) && rbl__atlasLive(atlas);
-}
+bool RblIsAtlasValid(RblAtlas atlas) { return rbl__atlasLive(&atlas); }
 
 void RblUnloadAtlas(RblAtlas *atlas)
 {
@@ -10616,5 +10658,7 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
     int k = (int)floor((rel + 0.5*width)/width);
     return k % directions;
 }
+
+#endif // RBL_NO_ATLAS
 
 #endif // RBILLBOARD_LIT_IMPLEMENTATION

@@ -12,7 +12,7 @@
 *   instanced billboard "lanterns" (rounded normals) go through one G-buffer (10 bytes per pixel
 *   + depth); 400 moving point lights are drawn as light volumes (each costs only the pixels it
 *   touches) and a moonlight full screen; glow sprites are drawn forward after the resolve.
-*   D cycles the debug views, N toggles the naive full-screen light loop, SPACE pauses the lights.
+*   D cycles the debug views, SPACE pauses the lights.
 *   Without MRT / float targets the scene is drawn forward with 63 point lights and the moon.
 *
 *   Example licensed under an unmodified zlib/libpng license, which is an OSI-certified,
@@ -99,7 +99,6 @@ int main(void)
         //----------------------------------------------------------------------------------
         UpdateCamera(&deferredCamera, CAMERA_ORBITAL);
         if (IsKeyPressed(KEY_SPACE)) paused = !paused;
-        if (IsKeyPressed(KEY_N)) gbuffer.naiveFullscreen = !gbuffer.naiveFullscreen;
         if (IsKeyPressed(KEY_D))
         {
             int view = (gbuffer.output + 1)%RBL_GBUFFER_OUTPUT_COUNT;
@@ -116,8 +115,8 @@ int main(void)
         BeginDrawing();
             DeferredCompose();          // Resolve into the screen, then forward glows
 
-            DrawText(TextFormat("%s: %i lights, view: %s (D), %s (N)", deferredValid? "deferred" : "forward fallback", DEFERRED_LIGHTS + 1,
-                                viewNames[gbuffer.output], gbuffer.naiveFullscreen? "naive full-screen loop" : "light volumes"), 10, 40, 20, RAYWHITE);
+            DrawText(TextFormat("%s: %i lights, view: %s (D)", deferredValid? "deferred" : "forward fallback", DEFERRED_LIGHTS + 1,
+                                viewNames[gbuffer.output]), 10, 40, 20, RAYWHITE);
             DrawFPS(10, 10);
         EndDrawing();
         //----------------------------------------------------------------------------------
@@ -175,7 +174,7 @@ static void DeferredInit(int width, int height)
     shading.tonemap = RBL_TONEMAP_ACES;
     shading.fog = RBL_FOG_EXP2;
     gbuffer = RblLoadGBuffer(shading);
-    deferredValid = RblIsGBufferValid(&gbuffer);
+    deferredValid = RblIsGBufferValid(gbuffer);
 
     // Programs: geometry-pass variants of the G-buffer's BRDF, or forward ones when there is no G-buffer
     RblLitShaderDesc desc = RBL_ZERO;

@@ -5,7 +5,7 @@
 #include "output.glsl"
 #include "soft.glsl"
 //   RBL_LINEAR_OUTPUT        write linear light (float targets); default: encode for display
-//   RBL_DEBUG_OUTPUT v         1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
+//   RBL_DEBUG_OUTPUT v         RblDebugOutput: 1 tangent-space normal, 2 world normal, 3 specular, 4 occlusion (raw)
 
 #if RBL_GLSL >= 300
 out vec4 finalColor;

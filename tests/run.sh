@@ -47,6 +47,9 @@ for unit in header-decl header-impl readme examples/*.c; do
 "
   done
 done
+# The options (RBL_NO_ATLAS, RBL_INSTRUMENTS) once in C and once in C++
+for spec in gcc:c99 g++:c++11; do n=$((n + 1)); jobs="$jobs$spec header-options $BUILD/tests/matrix/cell$n.txt
+"; done
 rm -f "$BUILD"/tests/matrix/cell*.txt
 printf '%s' "$jobs" | BUILD=$BUILD RAYLIB_CFLAGS="$RAYLIB_CFLAGS" RAYLIB_LIBS="$RAYLIB_LIBS" xargs -P 2 -L 1 bash tests/tools/compile_matrix.sh
 for i in $(seq 1 $n); do
@@ -81,6 +84,8 @@ else
 fi
 
 # The README's API index and the doc block's CONFIGURATION list against the header
+echo "== test-lists (each GPU test registered beside its body)"
+out=$(python3 tests/tools/test_lists.py check 2>&1); printf '%s\n' "$out"; count "$out"
 echo "== api (README index, CONFIGURATION)"
 out=$(bash tests/tools/api_index.sh check rbillboard_lit.h README.md 2>&1); printf '%s\n' "$out"; count "$out"
 

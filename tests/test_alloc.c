@@ -105,7 +105,7 @@ static bool runLoadShadow(void) { RblShadowDesc d; memset(&d, 0, sizeof(d)); d.s
 static void cleanShadow(void) { RblUnloadShadowMap(&shadowMap); }
 
 static RblGBuffer gbuffer;
-static bool runLoadGBuffer(void) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = RBL_BRDF_GGX; gbuffer = RblLoadGBuffer(d); return RblIsGBufferValid(&gbuffer); }
+static bool runLoadGBuffer(void) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = RBL_BRDF_GGX; gbuffer = RblLoadGBuffer(d); return RblIsGBufferValid(gbuffer); }
 static void cleanGBuffer(void) { RblUnloadGBuffer(&gbuffer); }
 
 static Shader lit;
@@ -143,8 +143,8 @@ static RblAtlas atlas;
 static const char *atlasFile = NULL;
 static char *atlasText = NULL;
 static int atlasSize = 0;
-static bool runLoadAtlasMemory(void) { atlas = RblLoadAtlasFromMemory(atlasText, atlasSize, RBL_ATLAS_AUTO); return RblIsAtlasValid(&atlas); }
-static bool runLoadAtlasFile(void) { atlas = RblLoadAtlas(atlasFile); return RblIsAtlasValid(&atlas); }
+static bool runLoadAtlasMemory(void) { atlas = RblLoadAtlasFromMemory(atlasText, atlasSize, RBL_ATLAS_AUTO); return RblIsAtlasValid(atlas); }
+static bool runLoadAtlasFile(void) { atlas = RblLoadAtlas(atlasFile); return RblIsAtlasValid(atlas); }
 static void cleanAtlas(void) { RblUnloadAtlas(&atlas); }
 
 // ---- tests --------------------------------------------------------------------------------------

@@ -300,19 +300,19 @@ static void test_api_double_and_stale_unloads_are_refused_with_one_log_line(void
         // ES 2 / GL 2.1: no G-buffer; refused with one line, and the zeroed result unloads harmlessly
         warnings = 0;
         RblGBuffer none = RblLoadGBuffer(gd);
-        RT_CHECK(!RblIsGBufferValid(&none) && (warnings == 1), "G-buffer on a GLSL 1 context: %d log lines, want 1", warnings);
+        RT_CHECK(!RblIsGBufferValid(none) && (warnings == 1), "G-buffer on a GLSL 1 context: %d log lines, want 1", warnings);
         warnings = 0;
         RblUnloadGBuffer(&none);
         RT_CHECK(warnings == 1, "unloading the refused G-buffer: %d log lines, want 1", warnings);
         return;
     }
     RblGBuffer g = RblLoadGBuffer(gd);
-    RT_CHECK(RblIsGBufferValid(&g), "G-buffer did not load");
+    RT_CHECK(RblIsGBufferValid(g), "G-buffer did not load");
     RblGBuffer gCopy = g;
     RblUnloadGBuffer(&g);
     RblUnloadGBuffer(&g);
-    RT_CHECK(!RblIsGBufferValid(&g), "unloaded G-buffer reports valid");
-    RT_CHECK(!RblIsGBufferValid(&gCopy), "a stale copy of an unloaded G-buffer reports valid");
+    RT_CHECK(!RblIsGBufferValid(g), "unloaded G-buffer reports valid");
+    RT_CHECK(!RblIsGBufferValid(gCopy), "a stale copy of an unloaded G-buffer reports valid");
     warnings = 0;
     RblUnloadGBuffer(&gCopy);
     RT_CHECK((warnings == 1) && (gCopy.state == NULL), "unloading a stale G-buffer copy: %d log lines, want 1", warnings);

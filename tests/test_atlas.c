@@ -71,7 +71,7 @@ static void test_atlas_texturepacker_hash_and_array_give_the_hand_derived_frames
     for (int k = 0; k < 2; k++)
     {
         RblAtlas a = RblLoadAtlas(atlasFixture(files[k]));
-        RT_CHECK(RblIsAtlasValid(&a) && (a.format == RBL_ATLAS_TEXTUREPACKER) && (a.frameCount == 3) && (a.pageCount == 1) && (a.tagCount == 0), "%s: valid %d format %d frames %d", files[k], RblIsAtlasValid(&a), a.format, a.frameCount);
+        RT_CHECK(RblIsAtlasValid(a) && (a.format == RBL_ATLAS_TEXTUREPACKER) && (a.frameCount == 3) && (a.pageCount == 1) && (a.tagCount == 0), "%s: valid %d format %d frames %d", files[k], RblIsAtlasValid(a), a.format, a.frameCount);
         if (a.frameCount != 3) { RblUnloadAtlas(&a); continue; }
         RT_CHECK(strcmp(a.pages[0].image, "build/tests/atlas/texturepacker/sheet.png") == 0 && a.pages[0].scale == 1.0f && a.pages[0].normalImage == NULL && !a.pages[0].premultiplied && a.pages[0].width == 128 && a.pages[0].height == 64, "%s: page %s %dx%d", files[k], a.pages[0].image, a.pages[0].width, a.pages[0].height);
         // "a": trimmed, pivot bottom-centre of the untrimmed 50x60
@@ -108,7 +108,7 @@ static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
 {
     // each pack names the other: both load once, in order, each frame on its own sheet
     RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/multi-0.json"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 2 && a.frameCount == 2, "pages %d frames %d", a.pageCount, a.frameCount);
+    RT_CHECK(RblIsAtlasValid(a) && a.pageCount == 2 && a.frameCount == 2, "pages %d frames %d", a.pageCount, a.frameCount);
     if (a.pageCount == 2 && a.frameCount == 2)
     {
         RT_CHECK(strcmp(a.pages[1].image, "build/tests/atlas/texturepacker/multi-1.png") == 0 && a.frames[0].page == 0 && a.frames[1].page == 1, "page of each frame");
@@ -120,13 +120,13 @@ static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
     SetTraceLogCallback(atlasCountingLog);
     atlasWarnings = 0;
     a = RblLoadAtlas("build/tests/atlas_related_escape.json");
-    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnings == 1, "related pack outside the folder: valid %d, %d lines", RblIsAtlasValid(&a), atlasWarnings);
+    RT_CHECK(!RblIsAtlasValid(a) && atlasWarnings == 1, "related pack outside the folder: valid %d, %d lines", RblIsAtlasValid(a), atlasWarnings);
     SetTraceLogCallback(NULL);
     // from memory nothing else is read: one sheet
     int size = 0;
     unsigned char *text = LoadFileData("tests/fuzz/corpus/texturepacker/multi-0.json", &size);
     a = RblLoadAtlasFromMemory((const char *)text, size, RBL_ATLAS_AUTO);
-    RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 1 && a.frameCount == 1, "from memory: pages %d", a.pageCount);
+    RT_CHECK(RblIsAtlasValid(a) && a.pageCount == 1 && a.frameCount == 1, "from memory: pages %d", a.pageCount);
     RblUnloadAtlas(&a);
     UnloadFileData(text);
 }
@@ -134,7 +134,7 @@ static void test_atlas_texturepacker_multipack_follows_related_packs_once(void)
 static void test_atlas_aseprite_durations_tags_and_slice_pivots(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/tags.json"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_ASEPRITE && a.frameCount == 4 && a.tagCount == 4 && a.sliceCount == 3, "format %d frames %d tags %d slices %d", a.format, a.frameCount, a.tagCount, a.sliceCount);
+    RT_CHECK(RblIsAtlasValid(a) && a.format == RBL_ATLAS_ASEPRITE && a.frameCount == 4 && a.tagCount == 4 && a.sliceCount == 3, "format %d frames %d tags %d slices %d", a.format, a.frameCount, a.tagCount, a.sliceCount);
     if (a.frameCount != 4 || a.tagCount != 4 || a.sliceCount != 3) { RblUnloadAtlas(&a); return; }
     const float dur[4] = { 0.125f, 0.25f, 0.5f, 1.0f };
     for (int i = 0; i < 4; i++) RT_CHECK(a.frames[i].duration == dur[i], "frame %d duration %g s", i, a.frames[i].duration);
@@ -155,7 +155,7 @@ static void test_atlas_aseprite_durations_tags_and_slice_pivots(void)
 static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets_from_the_bottom(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("libgdx/old.atlas"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_LIBGDX && a.frameCount == 3 && a.tagCount == 1 && a.pageCount == 1, "old: frames %d tags %d", a.frameCount, a.tagCount);
+    RT_CHECK(RblIsAtlasValid(a) && a.format == RBL_ATLAS_LIBGDX && a.frameCount == 3 && a.tagCount == 1 && a.pageCount == 1, "old: frames %d tags %d", a.frameCount, a.tagCount);
     if (a.frameCount == 3 && a.tagCount == 1)
     {
         // index orders the animation: run#0 (file's second region) then run#1
@@ -174,7 +174,7 @@ static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets
     }
     RblUnloadAtlas(&a);
     a = RblLoadAtlas(atlasFixture("libgdx/new.atlas"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 3 && a.pageCount == 2 && a.tagCount == 0, "new: frames %d pages %d", a.frameCount, a.pageCount);
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 3 && a.pageCount == 2 && a.tagCount == 0, "new: frames %d pages %d", a.frameCount, a.pageCount);
     if (a.frameCount == 3 && a.pageCount == 2)
     {
         RT_CHECK(a.pages[0].width == 64 && a.pages[0].height == 32 && a.pages[1].width == 8 && strcmp(a.pages[1].image, "build/tests/atlas/libgdx/second.png") == 0, "new: pages");
@@ -193,7 +193,7 @@ static void test_atlas_libgdx_old_and_new_forms_rotate_counter_clockwise_offsets
 static void test_atlas_blocks_pack_a_same_layout_normal_sheet_per_frame(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/hash.json"));
-    if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
+    if (!RblIsAtlasValid(a)) { RT_CHECK(false, "fixture"); return; }
     Rectangle blocks[8];
     for (int i = 0; i < a.frameCount; i++) blocks[i] = a.frames[i].block;
     RblMaterialSource src;
@@ -243,7 +243,7 @@ static int seqFrameAt(const int *seq, int n, bool loop, const float *dur, double
 static void test_atlas_player_follows_durations_directions_and_repeats(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/tags.json"));
-    if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
+    if (!RblIsAtlasValid(a)) { RT_CHECK(false, "fixture"); return; }
     const float dur[4] = { 0.125f, 0.25f, 0.5f, 1.0f };
     static const int walk[4] = { 0, 1, 2, 3 }, back[6] = { 3, 2, 1, 3, 2, 1 }, pp[10] = { 0, 1, 2, 3, 2, 1, 0, 1, 2, 3 }, ppr[2] = { 2, 1 }, once[4] = { 0, 1, 2, 3 };
     static const int ppr5[6] = { 2, 1, 2, 1, 2, 1 }, pp1[4] = { 0, 1, 2, 3 };     // legs 2 1 | 2 | 1 | 2 | 1; one leg
@@ -297,7 +297,7 @@ static void test_atlas_player_follows_durations_directions_and_repeats(void)
 static void test_atlas_bulk_instance_update_equals_the_per_sprite_calls(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/tags.json"));
-    if (!RblIsAtlasValid(&a)) { RT_CHECK(false, "fixture"); return; }
+    if (!RblIsAtlasValid(a)) { RT_CHECK(false, "fixture"); return; }
     enum { N = 1000 };
     static RblSpritePlayer pa[N], pb[N];
     static RblInstance ia[N], ib[N];
@@ -401,7 +401,7 @@ static void test_atlas_malformed_input_fails_with_one_line(void)
     {
         atlasWarnings = 0;
         RblAtlas a = RblLoadAtlasFromMemory(bad[i], (int)strlen(bad[i]), RBL_ATLAS_AUTO);
-        RT_CHECK(!RblIsAtlasValid(&a) && a.state == NULL && a.frameCount == 0 && atlasWarnings == 1, "input %d (%.40s): valid %d, %d lines", i, bad[i], RblIsAtlasValid(&a), atlasWarnings);
+        RT_CHECK(!RblIsAtlasValid(a) && a.state == NULL && a.frameCount == 0 && atlasWarnings == 1, "input %d (%.40s): valid %d, %d lines", i, bad[i], RblIsAtlasValid(a), atlasWarnings);
         RblUnloadAtlas(&a);
     }
     // nesting past the limit
@@ -409,7 +409,7 @@ static void test_atlas_malformed_input_fails_with_one_line(void)
     memset(deep, '[', sizeof(deep));
     atlasWarnings = 0;
     RblAtlas a = RblLoadAtlasFromMemory(deep, (int)sizeof(deep), RBL_ATLAS_TEXTUREPACKER);
-    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnings == 1, "deep nesting: %d lines", atlasWarnings);
+    RT_CHECK(!RblIsAtlasValid(a) && atlasWarnings == 1, "deep nesting: %d lines", atlasWarnings);
     // every truncation of the valid fixtures fails cleanly (or parses a shorter valid text)
     const char *files[8] = { "tests/fuzz/corpus/texturepacker/hash.json", "tests/fuzz/corpus/aseprite/tags.json", "tests/fuzz/corpus/libgdx/old.atlas", "tests/fuzz/corpus/libgdx/new.atlas",
                              "tests/fuzz/corpus/texturepacker/phaser3.json", "tests/fuzz/corpus/texturepacker/polygon.json", "tests/fuzz/corpus/aseprite/slices.json", "tests/fuzz/corpus/libgdx/rotations.atlas" };
@@ -425,7 +425,7 @@ static void test_atlas_malformed_input_fails_with_one_line(void)
             memcpy(copy, text, (size_t)cut);
             atlasWarnings = 0;
             a = RblLoadAtlasFromMemory(copy, cut, RBL_ATLAS_AUTO);
-            if (RblIsAtlasValid(&a)) { if (atlasWarnings != 0) wrongLines++; RblUnloadAtlas(&a); }
+            if (RblIsAtlasValid(a)) { if (atlasWarnings != 0) wrongLines++; RblUnloadAtlas(&a); }
             else if (atlasWarnings != 1) wrongLines++;
             free(copy);
         }
@@ -475,7 +475,7 @@ static RblAtlas atlasFromText(const char *text) { return RblLoadAtlasFromMemory(
 static void test_atlas_phaser3_textures_are_one_page_each_with_its_normal_sheet_and_scale(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/phaser3.json"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_TEXTUREPACKER && a.pageCount == 2 && a.frameCount == 3, "valid %d format %d pages %d frames %d", RblIsAtlasValid(&a), a.format, a.pageCount, a.frameCount);
+    RT_CHECK(RblIsAtlasValid(a) && a.format == RBL_ATLAS_TEXTUREPACKER && a.pageCount == 2 && a.frameCount == 3, "valid %d format %d pages %d frames %d", RblIsAtlasValid(a), a.format, a.pageCount, a.frameCount);
     if (a.pageCount != 2 || a.frameCount != 3) { RblUnloadAtlas(&a); return; }
     // page 0 names its normal sheet (normalMap) and scale 0.5; page 1 neither: its "_n" sheet beside
     // it is found by the convention, its scale is meta's "1"
@@ -502,7 +502,7 @@ static void test_atlas_phaser3_textures_are_one_page_each_with_its_normal_sheet_
     int size = 0;
     unsigned char *text = LoadFileData("tests/fuzz/corpus/texturepacker/phaser3.json", &size);
     a = RblLoadAtlasFromMemory((const char *)text, size, RBL_ATLAS_AUTO);
-    RT_CHECK(RblIsAtlasValid(&a) && a.pageCount == 2 && strcmp(a.pages[0].image, "phaser-0.png") == 0 && strcmp(a.pages[0].normalImage, "phaser-0_n.png") == 0 && a.pages[1].normalImage == NULL,
+    RT_CHECK(RblIsAtlasValid(a) && a.pageCount == 2 && strcmp(a.pages[0].image, "phaser-0.png") == 0 && strcmp(a.pages[0].normalImage, "phaser-0_n.png") == 0 && a.pages[1].normalImage == NULL,
              "from memory: pages as written");
     RblUnloadAtlas(&a);
     UnloadFileData(text);
@@ -518,7 +518,7 @@ static void test_atlas_phaser3_textures_are_one_page_each_with_its_normal_sheet_
     {
         atlasWarnLines = 0;
         a = atlasFromText(bad[i]);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "bad multi-texture %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "bad multi-texture %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     atlasLogEnd();
 }
@@ -528,8 +528,8 @@ static void test_atlas_sheet_paths_resolve_as_written_then_beside_then_by_the_at
     // As written, joined to the atlas's folder: hash.json's sheet.png. Beside the atlas by base name:
     // polygon.json's absolute Windows path, slices.json's "examples/slices.png"
     RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/polygon.json")), b = RblLoadAtlas(atlasFixture("aseprite/slices.json"));
-    RT_CHECK(RblIsAtlasValid(&a) && strcmp(a.pages[0].image, "build/tests/atlas/texturepacker/poly.png") == 0, "Windows path: %s", RblIsAtlasValid(&a)? a.pages[0].image : "(refused)");
-    RT_CHECK(RblIsAtlasValid(&b) && strcmp(b.pages[0].image, "build/tests/atlas/aseprite/slices.png") == 0, "other folder: %s", RblIsAtlasValid(&b)? b.pages[0].image : "(refused)");
+    RT_CHECK(RblIsAtlasValid(a) && strcmp(a.pages[0].image, "build/tests/atlas/texturepacker/poly.png") == 0, "Windows path: %s", RblIsAtlasValid(a)? a.pages[0].image : "(refused)");
+    RT_CHECK(RblIsAtlasValid(b) && strcmp(b.pages[0].image, "build/tests/atlas/aseprite/slices.png") == 0, "other folder: %s", RblIsAtlasValid(b)? b.pages[0].image : "(refused)");
     RblUnloadAtlas(&a); RblUnloadAtlas(&b);
     // By the atlas's own name: "export.png" does not exist, renamed.png does (as test-trim-rotation)
     MakeDirectory("build/tests/atlas_paths");
@@ -540,15 +540,15 @@ static void test_atlas_sheet_paths_resolve_as_written_then_beside_then_by_the_at
     const char *json = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"export.png\", \"size\": {\"w\":8,\"h\":8}}}";
     SaveFileText("build/tests/atlas_paths/renamed.json", (char *)json);
     a = RblLoadAtlas("build/tests/atlas_paths/renamed.json");
-    RT_CHECK(RblIsAtlasValid(&a) && strcmp(a.pages[0].image, "build/tests/atlas_paths/renamed.png") == 0 && a.pages[0].normalImage != NULL &&
-             strcmp(a.pages[0].normalImage, "build/tests/atlas_paths/renamed_n.png") == 0, "by the atlas's name: %s", RblIsAtlasValid(&a)? a.pages[0].image : "(refused)");
+    RT_CHECK(RblIsAtlasValid(a) && strcmp(a.pages[0].image, "build/tests/atlas_paths/renamed.png") == 0 && a.pages[0].normalImage != NULL &&
+             strcmp(a.pages[0].normalImage, "build/tests/atlas_paths/renamed_n.png") == 0, "by the atlas's name: %s", RblIsAtlasValid(a)? a.pages[0].image : "(refused)");
     RblUnloadAtlas(&a);
     // Found nowhere: one line naming every path tried, in order
     json = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"art/missing.png\"}}";
     SaveFileText("build/tests/atlas_paths/lost.json", (char *)json);
     atlasLogBegin();
     a = RblLoadAtlas("build/tests/atlas_paths/lost.json");
-    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "missing sheet: valid %d, %d lines", RblIsAtlasValid(&a), atlasWarnLines);
+    RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "missing sheet: valid %d, %d lines", RblIsAtlasValid(a), atlasWarnLines);
     const char *tried[3] = { "\"build/tests/atlas_paths/art/missing.png\"", "\"build/tests/atlas_paths/missing.png\"", "\"build/tests/atlas_paths/lost.png\"" };
     const char *at[3];
     for (int k = 0; k < 3; k++) at[k] = strstr(atlasLastLine, tried[k]);
@@ -559,24 +559,24 @@ static void test_atlas_sheet_paths_resolve_as_written_then_beside_then_by_the_at
     SaveFileText("build/tests/atlas_paths/bumpless.json", (char *)json);
     atlasWarnLines = 0;
     a = RblLoadAtlas("build/tests/atlas_paths/bumpless.json");
-    RT_CHECK(RblIsAtlasValid(&a) && atlasWarnLines == 0 && strcmp(a.pages[0].normalImage, "build/tests/atlas_paths/renamed_n.png") == 0, "normal sheet by the colour sheet's name: %s", atlasLastLine);
+    RT_CHECK(RblIsAtlasValid(a) && atlasWarnLines == 0 && strcmp(a.pages[0].normalImage, "build/tests/atlas_paths/renamed_n.png") == 0, "normal sheet by the colour sheet's name: %s", atlasLastLine);
     RblUnloadAtlas(&a);
     remove("build/tests/atlas_paths/renamed_n.png");
     a = RblLoadAtlas("build/tests/atlas_paths/bumpless.json");
-    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1 && strstr(atlasLastLine, "normal sheet \"maps/bump.png\" not found") != NULL && strstr(atlasLastLine, "\"build/tests/atlas_paths/maps/bump.png\"") != NULL &&
+    RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1 && strstr(atlasLastLine, "normal sheet \"maps/bump.png\" not found") != NULL && strstr(atlasLastLine, "\"build/tests/atlas_paths/maps/bump.png\"") != NULL &&
              strstr(atlasLastLine, "\"build/tests/atlas_paths/bump.png\"") != NULL && strstr(atlasLastLine, "\"build/tests/atlas_paths/renamed_n.png\"") != NULL, "missing normal sheet: %s", atlasLastLine);
     // libGDX pages likewise
     SaveFileText("build/tests/atlas_paths/gdx.atlas", (char *)"\nnowhere.png\nr\n  xy: 0, 0\n  size: 4, 4\n");
     atlasWarnLines = 0;
     a = RblLoadAtlas("build/tests/atlas_paths/gdx.atlas");
-    RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1 && strstr(atlasLastLine, "\"build/tests/atlas_paths/nowhere.png\"") && strstr(atlasLastLine, "\"build/tests/atlas_paths/gdx.png\""), "libGDX: %s", atlasLastLine);
+    RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1 && strstr(atlasLastLine, "\"build/tests/atlas_paths/nowhere.png\"") && strstr(atlasLastLine, "\"build/tests/atlas_paths/gdx.png\""), "libGDX: %s", atlasLastLine);
     atlasLogEnd();
     // the real exporter files: test-trim-rotation.json says test.png (found by the json's name),
     // building1.json's sheet is as written
     if (DirectoryExists(SHARED_ATLASES))
     {
         a = RblLoadAtlas(SHARED_ATLASES "texturepacker/test-trim-rotation.json");
-        RT_CHECK(RblIsAtlasValid(&a) && strcmp(a.pages[0].image, SHARED_ATLASES "texturepacker/test-trim-rotation.png") == 0, "test-trim-rotation: %s", RblIsAtlasValid(&a)? a.pages[0].image : "(refused)");
+        RT_CHECK(RblIsAtlasValid(a) && strcmp(a.pages[0].image, SHARED_ATLASES "texturepacker/test-trim-rotation.png") == 0, "test-trim-rotation: %s", RblIsAtlasValid(a)? a.pages[0].image : "(refused)");
         RblUnloadAtlas(&a);
     }
 }
@@ -596,7 +596,7 @@ static void test_atlas_meta_scale_as_string_or_number_draws_every_export_at_one_
         snprintf(text, sizeof(text), fmt, 16/d, 24/d, 8/d, 4/d, 16/d, 24/d, 32/d, 32/d, scales[i]);
         RblAtlas a = atlasFromText(text);
         memset(&b[i], 0, sizeof(b[i]));
-        RT_CHECK(RblIsAtlasValid(&a) && a.pages[0].scale == 1.0f/d && RblAtlasBillboard(&a, 0, 1.0f/32.0f, &b[i]), "scale %s: page scale %g", scales[i], RblIsAtlasValid(&a)? a.pages[0].scale : 0.0f);
+        RT_CHECK(RblIsAtlasValid(a) && a.pages[0].scale == 1.0f/d && RblAtlasBillboard(&a, 0, 1.0f/32.0f, &b[i]), "scale %s: page scale %g", scales[i], RblIsAtlasValid(a)? a.pages[0].scale : 0.0f);
         RblUnloadAtlas(&a);
     }
     // 32 px per unit at scale 1: 0.5 x 0.75 units; the pivot (16, 32) lies 8 px right of the trim's
@@ -607,8 +607,8 @@ static void test_atlas_meta_scale_as_string_or_number_draws_every_export_at_one_
     if (DirectoryExists(SHARED_ATLASES))
     {
         RblAtlas half = RblLoadAtlas(SHARED_ATLASES "texturepacker/building1.json"), full = RblLoadAtlas(SHARED_ATLASES "texturepacker/building1-0.json");
-        RT_CHECK(RblIsAtlasValid(&half) && RblIsAtlasValid(&full) && half.pages[0].scale == 0.5f && full.pages[0].scale == 1.0f, "building1 scales");
-        for (int s = 1; s <= 4 && RblIsAtlasValid(&half) && RblIsAtlasValid(&full); s++)
+        RT_CHECK(RblIsAtlasValid(half) && RblIsAtlasValid(full) && half.pages[0].scale == 0.5f && full.pages[0].scale == 1.0f, "building1 scales");
+        for (int s = 1; s <= 4 && RblIsAtlasValid(half) && RblIsAtlasValid(full); s++)
         {
             char name[32]; snprintf(name, sizeof(name), "star%d.png", s);
             const RblAtlasFrame *fh = &half.frames[RblAtlasFindFrame(&half, name)], *ff = &full.frames[RblAtlasFindFrame(&full, name)];
@@ -626,7 +626,7 @@ static void test_atlas_meta_scale_as_string_or_number_draws_every_export_at_one_
         snprintf(text, sizeof(text), fmt, 16, 24, 8, 4, 16, 24, 32, 32, badScales[i]);
         atlasWarnLines = 0;
         RblAtlas a = atlasFromText(text);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1 && strstr(atlasLastLine, "scale") != NULL, "scale %s: valid %d, %d lines (%s)", badScales[i], RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1 && strstr(atlasLastLine, "scale") != NULL, "scale %s: valid %d, %d lines (%s)", badScales[i], RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     atlasLogEnd();
 }
@@ -642,7 +642,7 @@ static void test_atlas_zero_negative_fractional_or_non_finite_page_sizes_are_ref
         snprintf(text, sizeof(text), fmt, sizes[i][0], sizes[i][1]);
         atlasWarnLines = 0;
         RblAtlas a = atlasFromText(text);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "size %s x %s: valid %d, %d lines (%s)", sizes[i][0], sizes[i][1], RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "size %s x %s: valid %d, %d lines (%s)", sizes[i][0], sizes[i][1], RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     // the same for a Phaser 3 texture and for libGDX pages
     const char *others[] = { "{\"textures\": [{\"size\": {\"w\":8,\"h\":0}, \"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}]}]}",
@@ -651,14 +651,14 @@ static void test_atlas_zero_negative_fractional_or_non_finite_page_sizes_are_ref
     {
         atlasWarnLines = 0;
         RblAtlas a = atlasFromText(others[i]);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "page size %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "page size %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     atlasLogEnd();
     // whole sizes are kept; a frame beyond them is refused (the check the bad sizes used to skip)
     RblAtlas a = atlasFromText("{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"size\": {\"w\":4,\"h\":1e0}}}");
-    RT_CHECK(!RblIsAtlasValid(&a), "a 4x4 frame on a 4x1 sheet accepted");
+    RT_CHECK(!RblIsAtlasValid(a), "a 4x4 frame on a 4x1 sheet accepted");
     a = atlasFromText("{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"size\": {\"w\":4,\"h\":4.0}}}");
-    RT_CHECK(RblIsAtlasValid(&a) && a.pages[0].height == 4, "4.0 is a whole size");
+    RT_CHECK(RblIsAtlasValid(a) && a.pages[0].height == 4, "4.0 is a whole size");
     RblUnloadAtlas(&a);
 }
 
@@ -668,8 +668,8 @@ static double triArea2(Vector2 a, Vector2 b, Vector2 c) { return ((double)b.x - 
 static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_validated(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("texturepacker/polygon.json"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 2 && a.pages[0].scale == 0.5f, "fixture");
-    if (!RblIsAtlasValid(&a) || a.frameCount != 2) { RblUnloadAtlas(&a); return; }
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 2 && a.pages[0].scale == 0.5f, "fixture");
+    if (!RblIsAtlasValid(a) || a.frameCount != 2) { RblUnloadAtlas(&a); return; }
     // "tri": the trim (4,6) 12x8 with its top-left corner cut off: a pentagon, fanned from vertex 0;
     // each vertex's texel is the block's (10,20) plus its offset in the trim
     const RblAtlasPolygon *p = a.frames[0].polygon;
@@ -710,12 +710,12 @@ static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_vali
     snprintf(text + n, 200000 - n, "}}");
     a = atlasFromText(text);
     bad = 0;
-    for (int i = 0; RblIsAtlasValid(&a) && i < a.frameCount; i++)
+    for (int i = 0; RblIsAtlasValid(a) && i < a.frameCount; i++)
     {
         p = a.frames[i].polygon;
         bad += (p == NULL) || (p->vertexCount != 4) || (p->indexCount != 6) || (p->vertices[3].y != 4 - (i%5)) || (p->uvs[0].x != i*4) || (p->indices[5] != 3);
     }
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 600 && bad == 0, "600 polygon frames: %d wrong", bad);
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 600 && bad == 0, "600 polygon frames: %d wrong", bad);
     RblUnloadAtlas(&a);
     free(text);
     // what a polygon must be: one line for each way it is not
@@ -740,7 +740,7 @@ static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_vali
         snprintf(t, sizeof(t), "{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}, %s}}, \"meta\": {\"size\": {\"w\":8,\"h\":8}}}", broken[i]);
         atlasWarnLines = 0;
         a = atlasFromText(t);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "broken polygon %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "broken polygon %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     atlasLogEnd();
 }
@@ -774,10 +774,10 @@ static void test_atlas_libgdx_any_quarter_turn_colon_names_pma_split_and_pad(voi
     atlasLogBegin();
     RblAtlas a = RblLoadAtlas(atlasFixture("libgdx/rotations.atlas"));
     // the pad entry is reported once (LOG_INFO), nothing else is said
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 7 && a.pages[0].premultiplied && atlasWarnLines == 0 && atlasInfoLines == 1, "valid %d frames %d pma %d, %d warnings, %d info",
-             RblIsAtlasValid(&a), a.frameCount, RblIsAtlasValid(&a) && a.pages[0].premultiplied, atlasWarnLines, atlasInfoLines);
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 7 && a.pages[0].premultiplied && atlasWarnLines == 0 && atlasInfoLines == 1, "valid %d frames %d pma %d, %d warnings, %d info",
+             RblIsAtlasValid(a), a.frameCount, RblIsAtlasValid(a) && a.pages[0].premultiplied, atlasWarnLines, atlasInfoLines);
     atlasLogEnd();
-    if (!RblIsAtlasValid(&a) || a.frameCount != 7) { RblUnloadAtlas(&a); return; }
+    if (!RblIsAtlasValid(a) || a.frameCount != 7) { RblUnloadAtlas(&a); return; }
     // stored turned d degrees counter-clockwise: 90 and 270 in an h x w block (ROTATED: clockwise);
     // 90 and 180 are that plus a half turn (both extents negated)
     static const struct { const char *name; float block[4], source[4]; unsigned int flags; int degrees; } want[6] = {
@@ -815,28 +815,28 @@ static void test_atlas_libgdx_any_quarter_turn_colon_names_pma_split_and_pad(voi
     // from memory, the same; no INFO line when no pad is present; rotations that are no quarter turn refused
     atlasLogBegin();
     a = RblLoadAtlas(atlasFixture("libgdx/new.atlas"));
-    RT_CHECK(RblIsAtlasValid(&a) && atlasInfoLines == 0, "new.atlas: %d info lines", atlasInfoLines);
+    RT_CHECK(RblIsAtlasValid(a) && atlasInfoLines == 0, "new.atlas: %d info lines", atlasInfoLines);
     RblUnloadAtlas(&a);
     const char *badRot[3] = { "p.png\nr\n  rotate: 91\n  xy: 0,0\n  size: 4,4\n", "p.png\nr\n  rotate: yes\n  xy: 0,0\n  size: 4,4\n", "p.png\nr\n  split: 3, 3, 0, 0\n  xy: 0,0\n  size: 4,4\n" };
     for (int i = 0; i < 3; i++)
     {
         atlasWarnLines = 0;
         a = atlasFromText(badRot[i]);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "bad libGDX %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(&a), atlasWarnLines, atlasLastLine);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "bad libGDX %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     // old form: an indented unknown field is still a field; an unindented colon line is a name
     atlasWarnLines = 0;
     a = atlasFromText("p.png\nsize: 8, 8\nhud:icon\n  rotate: 180\n  xy: 0, 0\n  size: 4, 2\n  custom: 1, 2\n");
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 1 && strcmp(a.frames[0].name, "hud:icon") == 0 && a.frames[0].source.width == -4.0f && a.frames[0].source.height == -2.0f && atlasWarnLines == 0,
-             "old form with a colon name: valid %d (%s)", RblIsAtlasValid(&a), atlasLastLine);
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 1 && strcmp(a.frames[0].name, "hud:icon") == 0 && a.frames[0].source.width == -4.0f && a.frames[0].source.height == -2.0f && atlasWarnLines == 0,
+             "old form with a colon name: valid %d (%s)", RblIsAtlasValid(a), atlasLastLine);
     RblUnloadAtlas(&a);
     // fields libGDX does not write are still fields when no region field follows them (a page's
     // "scale: 1", a region's "custom:7"); a colon line followed by a region's field is a name
     a = atlasFromText("p.png\nsize: 8, 8\nscale: 1\nrun\n  xy: 0, 0\n  size: 4, 4\n");
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 1 && strcmp(a.frames[0].name, "run") == 0, "unknown page field read as a field");
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 1 && strcmp(a.frames[0].name, "run") == 0, "unknown page field read as a field");
     RblUnloadAtlas(&a);
     a = atlasFromText("p.png\nsize:8,8\na\nbounds:0,0,4,4\ncustom:7\nb:c\nbounds:4,0,4,4\n");
-    RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == 2 && strcmp(a.frames[1].name, "b:c") == 0 && a.frames[1].block.x == 4.0f, "unknown region field and a colon name");
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 2 && strcmp(a.frames[1].name, "b:c") == 0 && a.frames[1].block.x == 4.0f, "unknown region field and a colon name");
     RblUnloadAtlas(&a);
     atlasLogEnd();
 }
@@ -856,8 +856,8 @@ static Image canvasOf(Image sheet, const RblAtlasFrame *f)
 static void test_atlas_aseprite_slices_are_sub_frames_with_their_own_pivots(void)
 {
     RblAtlas a = RblLoadAtlas(atlasFixture("aseprite/slices.json"));
-    RT_CHECK(RblIsAtlasValid(&a) && a.format == RBL_ATLAS_ASEPRITE && a.frameCount == 2 && a.sliceCount == 5, "valid %d frames %d slices %d", RblIsAtlasValid(&a), a.frameCount, a.sliceCount);
-    if (!RblIsAtlasValid(&a) || a.sliceCount != 5) { RblUnloadAtlas(&a); return; }
+    RT_CHECK(RblIsAtlasValid(a) && a.format == RBL_ATLAS_ASEPRITE && a.frameCount == 2 && a.sliceCount == 5, "valid %d frames %d slices %d", RblIsAtlasValid(a), a.frameCount, a.sliceCount);
+    if (!RblIsAtlasValid(a) || a.sliceCount != 5) { RblUnloadAtlas(&a); return; }
     // two slices have pivots: neither is the frames' pivot (each keeps its own); frames stand on
     // their bottom centre
     RT_CHECK(a.frames[0].pivot.x == 0.5f && a.frames[0].pivot.y == 1.0f && a.frames[1].pivot.x == 0.5f && a.frames[1].pivot.y == 1.0f, "frame pivots moved by a slice");
@@ -922,8 +922,8 @@ static void test_atlas_aseprite_slices_are_sub_frames_with_their_own_pivots(void
     a = atlasFromText(json);
     sheet = noiseSheetCpu(16, 16, 5u);
     memset(&b, 0, sizeof(b));
-    RT_CHECK(RblIsAtlasValid(&a) && RblAtlasSliceBillboard(&a, 0, 0, 1.0f, &b), "turned frame slice");
-    if (RblIsAtlasValid(&a))
+    RT_CHECK(RblIsAtlasValid(a) && RblAtlasSliceBillboard(&a, 0, 0, 1.0f, &b), "turned frame slice");
+    if (RblIsAtlasValid(a))
     {
         Image canvas = canvasOf(sheet, &a.frames[0]), crop = ImageFromImage(canvas, (Rectangle){ 5, 3, 6, 4 });
         int bad = quadMismatch(&b, sheet, crop);
@@ -942,7 +942,7 @@ static void test_atlas_aseprite_slices_are_sub_frames_with_their_own_pivots(void
     {
         atlasWarnLines = 0;
         a = atlasFromText(bad[i]);
-        RT_CHECK(!RblIsAtlasValid(&a) && atlasWarnLines == 1, "bad slice %d: valid %d, %d lines", i, RblIsAtlasValid(&a), atlasWarnLines);
+        RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "bad slice %d: valid %d, %d lines", i, RblIsAtlasValid(a), atlasWarnLines);
     }
     atlasLogEnd();
 }
@@ -957,8 +957,8 @@ static void test_atlas_frames_without_a_pivot_stand_on_their_position(void)
     for (int i = 0; i < 3; i++)
     {
         RblAtlas a = atlasFromText(texts[i]);
-        RT_CHECK(RblIsAtlasValid(&a), "text %d", i);
-        if (RblIsAtlasValid(&a)) checkQuad(&a, 0, 0.5f, 5.0f, 3.0f, 2.5f, 0.0f, "no pivot");
+        RT_CHECK(RblIsAtlasValid(a), "text %d", i);
+        if (RblIsAtlasValid(a)) checkQuad(&a, 0, 0.5f, 5.0f, 3.0f, 2.5f, 0.0f, "no pivot");
         RblUnloadAtlas(&a);
     }
 }
@@ -1114,8 +1114,8 @@ static void test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets(
         char path[256];
         snprintf(path, sizeof(path), SHARED_ATLASES "%s", files[i]);
         RblAtlas a = RblLoadAtlas(path);
-        RT_CHECK(RblIsAtlasValid(&a) && a.frameCount == frames[i], "%s: valid %d, %d frames (expected %d)", files[i], RblIsAtlasValid(&a), a.frameCount, frames[i]);
-        if (!RblIsAtlasValid(&a)) continue;
+        RT_CHECK(RblIsAtlasValid(a) && a.frameCount == frames[i], "%s: valid %d, %d frames (expected %d)", files[i], RblIsAtlasValid(a), a.frameCount, frames[i]);
+        if (!RblIsAtlasValid(a)) continue;
         bool libgdx = (a.format == RBL_ATLAS_LIBGDX);
         for (int p = 0; p < a.pageCount; p++)
         {
@@ -1149,7 +1149,7 @@ static void test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets(
     // symmetric under a half turn, so the margin is small; the billboard check above is exact)
     RblAtlas small = RblLoadAtlas(SHARED_ATLASES "texturepacker/building1.json"), big = RblLoadAtlas(SHARED_ATLASES "texturepacker/building1-0.json");
     Image smallSheet = LoadImage(SHARED_ATLASES "texturepacker/building1.png"), bigSheet = LoadImage(SHARED_ATLASES "texturepacker/building1-0.png");
-    if (RblIsAtlasValid(&small) && RblIsAtlasValid(&big) && smallSheet.data && bigSheet.data)
+    if (RblIsAtlasValid(small) && RblIsAtlasValid(big) && smallSheet.data && bigSheet.data)
     {
         ImageFormat(&smallSheet, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8); ImageFormat(&bigSheet, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
         for (int s = 1; s <= 4; s++)
@@ -1172,31 +1172,31 @@ static void test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets(
     // land on are the ones named "<tag>:<k>" with k running 0.. (player.json: "<tag>:<sheet index>")
     RblAtlas ase = RblLoadAtlas(SHARED_ATLASES "aseprite/frames.json");
     int tagBad = 0;
-    for (int t = 0; RblIsAtlasValid(&ase) && t < ase.tagCount; t++)
+    for (int t = 0; RblIsAtlasValid(ase) && t < ase.tagCount; t++)
         for (int f = ase.tags[t].from; f <= ase.tags[t].to; f++)
         {
             char want[96]; snprintf(want, sizeof(want), "%s:%d", ase.tags[t].name, f - ase.tags[t].from);
             if (strcmp(ase.frames[f].name, want) != 0) tagBad++;
         }
-    RT_CHECK(RblIsAtlasValid(&ase) && ase.tagCount == 11 && tagBad == 0, "frames.json: %d tag frames misplaced", tagBad);
+    RT_CHECK(RblIsAtlasValid(ase) && ase.tagCount == 11 && tagBad == 0, "frames.json: %d tag frames misplaced", tagBad);
     RblUnloadAtlas(&ase);
     ase = RblLoadAtlas(SHARED_ATLASES "aseprite/player.json");
     tagBad = 0;
-    for (int t = 0; RblIsAtlasValid(&ase) && t < ase.tagCount; t++)
+    for (int t = 0; RblIsAtlasValid(ase) && t < ase.tagCount; t++)
         for (int f = ase.tags[t].from; f <= ase.tags[t].to; f++)
         {
             char want[96]; snprintf(want, sizeof(want), "%s:%d", ase.tags[t].name, f);
             if (strcmp(ase.frames[f].name, want) != 0) tagBad++;
         }
     int climb = RblAtlasFindTag(&ase, "climb");
-    RT_CHECK(RblIsAtlasValid(&ase) && ase.tagCount == 18 && tagBad == 0 && climb >= 0 && ase.tags[climb].repeat == 2 && ase.frames[0].duration == 0.25f, "player.json: %d misplaced, climb repeat", tagBad);
+    RT_CHECK(RblIsAtlasValid(ase) && ase.tagCount == 18 && tagBad == 0 && climb >= 0 && ase.tags[climb].repeat == 2 && ase.frames[0].duration == 0.25f, "player.json: %d misplaced, climb repeat", tagBad);
     RblUnloadAtlas(&ase);
 
     // Format meaning, libGDX: the turned frames of libgdx-packed (one animation on 120x175 canvases)
     // rebuilt counter-clockwise match the upright frame 0000 better than half-turned
     RblAtlas gdx = RblLoadAtlas(SHARED_ATLASES "libgdx/libgdx-packed.atlas");
     Image gs = LoadImage(SHARED_ATLASES "libgdx/libgdx-packed.png");
-    if (RblIsAtlasValid(&gdx) && gs.data)
+    if (RblIsAtlasValid(gdx) && gs.data)
     {
         ImageFormat(&gs, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
         Image ref = frameCanvas(gs, &gdx.frames[0], true, false);

@@ -129,8 +129,8 @@ static void test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_ca
             RblAtlas a = RblLoadAtlas(path);
             snprintf(path, sizeof(path), "../shared/atlases/%s", sheets[i]);
             Image sheet = LoadImage(path);
-            RT_CHECK(RblIsAtlasValid(&a) && sheet.data != NULL, "%s", files[i]);
-            if (RblIsAtlasValid(&a) && sheet.data != NULL) { total += drawAtlasAndCompare(&a, 0, sheet, instanced, &n); frames += n; }
+            RT_CHECK(RblIsAtlasValid(a) && sheet.data != NULL, "%s", files[i]);
+            if (RblIsAtlasValid(a) && sheet.data != NULL) { total += drawAtlasAndCompare(&a, 0, sheet, instanced, &n); frames += n; }
             UnloadImage(sheet);
             RblUnloadAtlas(&a);
         }
@@ -149,7 +149,7 @@ static void test_atlas_rotated_frames_light_like_the_upright_frame(void)
         "{\"frames\": {\"up\": {\"frame\": {\"x\":0,\"y\":0,\"w\":16,\"h\":8}}, \"cw\": {\"frame\": {\"x\":16,\"y\":0,\"w\":16,\"h\":8}, \"rotated\": true}}, \"meta\": {\"size\": {\"w\":32,\"h\":16}}}";
     static const char gdxText[] = "s.png\nsize: 32, 16\nccw\n  rotate: true\n  xy: 24, 0\n  size: 16, 8\n";
     RblAtlas tp = RblLoadAtlasFromMemory(json, (int)strlen(json), RBL_ATLAS_AUTO), gdx = RblLoadAtlasFromMemory(gdxText, (int)strlen(gdxText), RBL_ATLAS_AUTO);
-    RT_CHECK(RblIsAtlasValid(&tp) && RblIsAtlasValid(&gdx), "fixtures");
+    RT_CHECK(RblIsAtlasValid(tp) && RblIsAtlasValid(gdx), "fixtures");
     // normal sheet: upright tile at x 0..15 rows 0..7 with n = (0.6, 0, 0.8) (toward the sprite's right);
     // clockwise block at 16..23 x 0..15: the right turns to the image's down, n = (0, -0.6, 0.8);
     // counter-clockwise block at 24..31: the right turns to up, n = (0, 0.6, 0.8)
@@ -256,7 +256,7 @@ static void test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_t
         Material m = LoadMaterialDefault();
         RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
         desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
-        bool ok = RblIsAtlasValid(&a) && RblLoadAtlasTextures(&a, 0, suffix[k], &m, &desc.material);
+        bool ok = RblIsAtlasValid(a) && RblLoadAtlasTextures(&a, 0, suffix[k], &m, &desc.material);
         RT_CHECK(ok && desc.material.normalEncoding == RBL_NORMAL_RGB && !desc.material.premultipliedAlpha && m.maps[MATERIAL_MAP_NORMAL].texture.width == 16,
                  "%s (suffix %s): loaded %d, normal encoding %d", files[k], suffix[k]? suffix[k] : "NULL", ok, desc.material.normalEncoding);
         if (!ok) { RblUnloadAtlas(&a); UnloadMaterial(m); continue; }
@@ -325,7 +325,7 @@ static void test_atlas_premultiplied_pages_light_and_blend_as_their_straight_col
     Material mPma = LoadMaterialDefault();
     RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
     desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
-    RT_CHECK(RblIsAtlasValid(&atlas) && atlas.pages[0].premultiplied && RblLoadAtlasTextures(&atlas, 0, "", &mPma, &desc.material) && desc.material.premultipliedAlpha, "pma page and layout");
+    RT_CHECK(RblIsAtlasValid(atlas) && atlas.pages[0].premultiplied && RblLoadAtlasTextures(&atlas, 0, "", &mPma, &desc.material) && desc.material.premultipliedAlpha, "pma page and layout");
     mPma.shader = RblLoadLitShader(desc);
     RblLitShaderDesc plainDesc = desc;
     plainDesc.material.premultipliedAlpha = false;
@@ -447,3 +447,53 @@ static void test_atlas_premultiplied_pages_light_and_blend_as_their_straight_col
     RblUnloadAtlas(&atlas);
     UnloadImage(straight); UnloadImage(pma);
 }
+
+
+// (uses test_translucent.c's card helpers, included before this file)
+// Packed maps of a non-power-of-two atlas: full mip chains where the context samples them (GL, ES 3),
+// level 0 alone with clamped edges on ES 2 / WebGL1 (which read such a texture with mips as black);
+// the card renders its colour either way
+static void test_atlas_npot_packed_sheet_uploads_what_the_context_can_sample(void)
+{
+    Image albedo = GenImageColor(24, 20, (Color){ 200, 100, 50, 255 });
+    RblMaterialSource src;
+    memset(&src, 0, sizeof(src));
+    src.albedo = albedo;
+    src.mipmaps = true;
+    RblPackedMaterial packed;
+    RT_CHECK(RblPackMaterial(&src, &packed), "pack");
+    Material m = sprMaterial(solidTexture(WHITE), 0.0f);
+    UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
+    RT_CHECK(RblLoadPackedTextures(&packed, &m), "upload");
+    int want = (rlGetVersion() == RL_OPENGL_ES_20)? 1 : packed.albedo.mipmaps;
+    RT_CHECK(m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps == want, "albedo uploaded with %d levels, expected %d", m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps, want);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
+    RenderTexture2D rt = LoadRenderTexture(SPR_TARGET, SPR_TARGET);
+    BeginTextureMode(rt);
+    ClearBackground(BLACK);
+    BeginMode3D(sprCamera());
+    RblBillboard b = sprCard(0.0f, 0.0f);
+    b.size = (Vector2){ 0.3f, 0.3f }; b.origin = (Vector2){ 0.15f, 0.15f };     // minified: mips would be read
+    RblDrawBillboard(sprCamera(), m, b);
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
+    RT_CHECK((abs(c.r - 200) <= 2) && (abs(c.g - 100) <= 2) && (abs(c.b - 50) <= 2), "minified NPOT card (%d %d %d), expected (200 100 50)", c.r, c.g, c.b);
+    printf("    24x20 packed atlas: %d levels uploaded, minified card (%d %d %d)\n", m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps, c.r, c.g, c.b);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
+    m.maps[MATERIAL_MAP_ALBEDO].texture.id = 0;
+    sprUnloadMaterial(&m);
+    RblUnloadPackedMaterial(&packed);
+    UnloadImage(albedo);
+}
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_ATLAS_RENDER_TESTS \
+    RT_TEST(test_atlas_npot_packed_sheet_uploads_what_the_context_can_sample), \
+    RT_TEST(test_atlas_frames_drawn_batched_and_instanced_equal_their_rebuilt_canvases), \
+    RT_TEST(test_atlas_rotated_frames_light_like_the_upright_frame), \
+    RT_TEST(test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_the_reference), \
+    RT_TEST(test_atlas_premultiplied_pages_light_and_blend_as_their_straight_colour)

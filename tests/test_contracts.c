@@ -924,19 +924,18 @@ static void c_gbuffer_load(void)
         RblGBufferDesc d = gdesc(0);
         if ((ints[i] <= offsetof(RblGBufferDesc, height)) && (v == 1)) continue;     // 1000 pixels is a valid size
         memcpy((char *)&d + ints[i], &values[v], sizeof(int));
-        EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(&g)));
+        EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(g)));
         ck(g.state == NULL, "desc field at offset %d = %d: load left a state", (int)ints[i], values[v]);
     }
-    for (int vi = 0; vi < 5; vi++) { RblGBufferDesc d = gdesc(0); d.gamma = badFloats[vi]; EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(&g))); }
+    for (int vi = 0; vi < 5; vi++) { RblGBufferDesc d = gdesc(0); d.gamma = badFloats[vi]; EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(g))); }
 }
 
 static void c_gbuffer_lifecycle(void)
 {
     RblGBuffer zero; memset(&zero, 0, sizeof(zero));
-    EXPECT_QUIET(RblIsGBufferValid(NULL), false);
-    EXPECT_QUIET(RblIsGBufferValid(&zero), false);
+    EXPECT_QUIET(RblIsGBufferValid(zero), false);
     RblGBuffer g = RblLoadGBuffer(gdesc(RBL_BRDF_GGX)), stale = g;
-    EXPECT_QUIET(RblIsGBufferValid(&g), true);
+    EXPECT_QUIET(RblIsGBufferValid(g), true);
     int bpp;
     EXPECT_REFUSED((bpp = RblGBufferBytesPerPixel(NULL), bpp != 0));
     EXPECT_REFUSED((bpp = RblGBufferBytesPerPixel(&zero), bpp != 0));
@@ -944,12 +943,12 @@ static void c_gbuffer_lifecycle(void)
     EXPECT_REFUSED(RblResizeGBuffer(&zero, 16, 16));
     int sizes[5][2] = { { 0, 16 }, { 16, -1 }, { 1 << 30, 16 }, { 16, RBL_MAX_TARGET_SIZE + 1 }, { -2147483647 - 1, 4 } };
     for (int i = 0; i < 5; i++) EXPECT_REFUSED(RblResizeGBuffer(&g, sizes[i][0], sizes[i][1]));
-    ck(g.width == 32 && g.height == 32 && RblIsGBufferValid(&g), "refused resize changed the G-buffer");
+    ck(g.width == 32 && g.height == 32 && RblIsGBufferValid(g), "refused resize changed the G-buffer");
     EXPECT_REFUSED(V(RblUnloadGBuffer(NULL)));
     RblUnloadGBuffer(&g);
     ck(g.state == NULL && g.albedo.id == 0, "unload did not zero");
     EXPECT_REFUSED(V(RblUnloadGBuffer(&g)));
-    EXPECT_QUIET(RblIsGBufferValid(&stale), false);
+    EXPECT_QUIET(RblIsGBufferValid(stale), false);
     EXPECT_REFUSED((bpp = RblGBufferBytesPerPixel(&stale), bpp != 0));
     EXPECT_REFUSED(RblResizeGBuffer(&stale, 16, 16));
     EXPECT_REFUSED(RblBeginGBuffer(&stale, camera()));
@@ -1148,8 +1147,8 @@ static const char atlasText[] = "{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\"
     "\"b\": {\"frame\": {\"x\":4,\"y\":0,\"w\":8,\"h\":4}, \"rotated\": true}}, "
     "\"meta\": {\"app\": \"aseprite\", \"size\": {\"w\":16,\"h\":16}, \"frameTags\": [{\"name\": \"t\", \"from\": 0, \"to\": 1, \"direction\": \"pingpong\"}]}}";
 static RblAtlas goodAtlas(void) { return RblLoadAtlasFromMemory(atlasText, (int)strlen(atlasText), RBL_ATLAS_AUTO); }
-static bool loadedFromMemory(const char *text, int size, int format) { RblAtlas a = RblLoadAtlasFromMemory(text, size, format); bool ok = RblIsAtlasValid(&a); if (ok) RblUnloadAtlas(&a); return ok; }
-static bool loadedFile(const char *name) { RblAtlas a = RblLoadAtlas(name); bool ok = RblIsAtlasValid(&a); if (ok) RblUnloadAtlas(&a); return ok; }
+static bool loadedFromMemory(const char *text, int size, int format) { RblAtlas a = RblLoadAtlasFromMemory(text, size, format); bool ok = RblIsAtlasValid(a); if (ok) RblUnloadAtlas(&a); return ok; }
+static bool loadedFile(const char *name) { RblAtlas a = RblLoadAtlas(name); bool ok = RblIsAtlasValid(a); if (ok) RblUnloadAtlas(&a); return ok; }
 
 static void c_atlas_load(void)
 {
@@ -1183,10 +1182,9 @@ static void c_atlas_load(void)
 static void c_atlas_lifecycle(void)
 {
     RblAtlas zero; memset(&zero, 0, sizeof(zero));
-    EXPECT_QUIET(RblIsAtlasValid(NULL), false);
-    EXPECT_QUIET(RblIsAtlasValid(&zero), false);
+    EXPECT_QUIET(RblIsAtlasValid(zero), false);
     RblAtlas a = goodAtlas(), stale = a;
-    EXPECT_QUIET(RblIsAtlasValid(&a), true);
+    EXPECT_QUIET(RblIsAtlasValid(a), true);
     EXPECT_QUIET(RblAtlasFindFrame(&a, "b") == 1, true);
     EXPECT_QUIET(RblAtlasFindTag(&a, "nope") == -1, true);
     EXPECT_REFUSED(RblAtlasFindFrame(&a, NULL) >= 0);
@@ -1199,7 +1197,7 @@ static void c_atlas_lifecycle(void)
     ck(a.state == NULL && a.frames == NULL && a.frameCount == 0, "unload did not zero");
     EXPECT_REFUSED(V(RblUnloadAtlas(&a)));
     EXPECT_REFUSED(V(RblUnloadAtlas(&stale)));
-    EXPECT_QUIET(RblIsAtlasValid(&stale), false);
+    EXPECT_QUIET(RblIsAtlasValid(stale), false);
     EXPECT_REFUSED(RblAtlasFindFrame(&stale, "a") >= 0);
     EXPECT_REFUSED(RblAtlasFindTag(&stale, "t") >= 0);
 }
@@ -1240,7 +1238,7 @@ static void c_atlas_slices(void)
         " \"scale\": \"0.5\", \"slices\": [{\"name\": \"s\", \"keys\": [{\"frame\": 1, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":2}, \"pivot\": {\"x\":1,\"y\":1}}]},"
         " {\"name\": \"edge\", \"keys\": [{\"frame\": 0, \"bounds\": {\"x\":0,\"y\":0,\"w\":2,\"h\":8}}]}]}}";
     RblAtlas a = RblLoadAtlasFromMemory(text, (int)strlen(text), RBL_ATLAS_AUTO), zero; memset(&zero, 0, sizeof(zero));
-    ck(RblIsAtlasValid(&a) && a.sliceCount == 2, "fixture: %s", lastWarning);
+    ck(RblIsAtlasValid(a) && a.sliceCount == 2, "fixture: %s", lastWarning);
     RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
     RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
     EXPECT_QUIET(RblAtlasFindSlice(&a, "s", 1) == 0, true);
@@ -1300,7 +1298,7 @@ static void c_atlas_textures(void)
     static const char memText[] = "{\"frames\": [{\"filename\": \"a\", \"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}], \"meta\": {\"image\": \"nowhere.png\"}}";
     RblAtlas a = RblLoadAtlas("build/tests/contracts/sheet.json"), big = RblLoadAtlas("build/tests/contracts/big.json"), wrong = RblLoadAtlas("build/tests/contracts/wrong.json");
     RblAtlas mem = RblLoadAtlasFromMemory(memText, (int)strlen(memText), RBL_ATLAS_AUTO), zero; memset(&zero, 0, sizeof(zero));
-    ck(RblIsAtlasValid(&a) && RblIsAtlasValid(&big) && RblIsAtlasValid(&wrong) && RblIsAtlasValid(&mem) && (a.pages[0].normalImage != NULL), "fixtures: %s", lastWarning);
+    ck(RblIsAtlasValid(a) && RblIsAtlasValid(big) && RblIsAtlasValid(wrong) && RblIsAtlasValid(mem) && (a.pages[0].normalImage != NULL), "fixtures: %s", lastWarning);
     Material m = LoadMaterialDefault(), noMaps = m;
     noMaps.maps = NULL;
     Material keep = m;
@@ -1375,9 +1373,9 @@ static void c_atlas_fade_quads(void)
     static const char twoSheets[] = "sheet.png\nsize:64,32\na\nbounds:1,2,10,6\nb\nbounds:20,0,4,4\n\nsecond.png\nsize:8,8\nc\nbounds:0,0,8,8\n";
     static const char emptyTrim[] = "sheet.png\nsize:64,32\na\nbounds:1,2,10,6\nb\nbounds:20,0,0,0\n";
     RblAtlas p = RblLoadAtlasFromMemory(twoSheets, (int)strlen(twoSheets), RBL_ATLAS_LIBGDX);
-    ck(RblIsAtlasValid(&p) && (p.pageCount == 2) && (p.frameCount == 3) && (p.frames[2].page == 1), "two-sheet atlas: valid %d, %d pages, %d frames",
-       RblIsAtlasValid(&p), p.pageCount, p.frameCount);
-    if (RblIsAtlasValid(&p) && (p.frameCount == 3))
+    ck(RblIsAtlasValid(p) && (p.pageCount == 2) && (p.frameCount == 3) && (p.frames[2].page == 1), "two-sheet atlas: valid %d, %d pages, %d frames",
+       RblIsAtlasValid(p), p.pageCount, p.frameCount);
+    if (RblIsAtlasValid(p) && (p.frameCount == 3))
     {
         EXPECT_REFUSED(RblAtlasBillboardFade(&p, 0, 2, 0.5f, 1.0f, &b, &f));
         EXPECT_REFUSED(RblAtlasInstanceFade(&p, 2, 1, 0.5f, 1.0f, &in, &f));
@@ -1741,20 +1739,20 @@ static void c_stale_objects_reused_address(void)
     RblUnloadGBuffer(&ga);
     RblGBuffer gb = RblLoadGBuffer(gdesc(RBL_BRDF_GGX)), forgedG = gb;
     forgedG.id = staleG.id;
-    EXPECT_QUIET(RblIsGBufferValid(&forgedG), false);
+    EXPECT_QUIET(RblIsGBufferValid(forgedG), false);
     EXPECT_REFUSED(RblBeginGBuffer(&forgedG, camera()));
     EXPECT_REFUSED(V(RblUnloadGBuffer(&forgedG)));
-    ck(RblIsGBufferValid(&gb), "the newer G-buffer was touched by its forged copy");
+    ck(RblIsGBufferValid(gb), "the newer G-buffer was touched by its forged copy");
     RblUnloadGBuffer(&gb);
 
     RblAtlas aa = goodAtlas(), staleA2 = aa;
     RblUnloadAtlas(&aa);
     RblAtlas ab = goodAtlas(), forgedA = ab;
     forgedA.id = staleA2.id;
-    EXPECT_QUIET(RblIsAtlasValid(&forgedA), false);
+    EXPECT_QUIET(RblIsAtlasValid(forgedA), false);
     EXPECT_REFUSED(RblAtlasFindFrame(&forgedA, "a") >= 0);
     EXPECT_REFUSED(V(RblUnloadAtlas(&forgedA)));
-    ck(RblIsAtlasValid(&ab), "the newer atlas was touched by its forged copy");
+    ck(RblIsAtlasValid(ab), "the newer atlas was touched by its forged copy");
     RblUnloadAtlas(&ab);
 
     RblShadowDesc sd; memset(&sd, 0, sizeof(sd)); sd.size = 64;

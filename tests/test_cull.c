@@ -193,3 +193,7 @@ static void test_cull_shadow_pass_batches_skip_casters_outside_the_light_and_cas
     UnloadTexture(white);
     shClearScene();
 }
+
+#define RBL_CULL_TESTS \
+    RT_TEST(test_cull_batches_skip_what_the_camera_cannot_see_and_draw_the_same_picture), \
+    RT_TEST(test_cull_shadow_pass_batches_skip_casters_outside_the_light_and_cast_the_same_shadows)

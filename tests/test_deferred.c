@@ -249,7 +249,7 @@ static DefFrames defFramesRender(DefScene *s)
     DefFrames f;
     memset(&f, 0, sizeof(f));
     f.g = RblLoadGBuffer(defGBufferDesc(&s->desc, DEF_W, DEF_H));
-    RT_CHECK(RblIsGBufferValid(&f.g), "G-buffer failed");
+    RT_CHECK(RblIsGBufferValid(f.g), "G-buffer failed");
     f.fwd = defRenderForward(s);
     f.def = defRenderDeferred(s, &f.g, &f.ok);
     RT_CHECK(f.ok, "deferred frame refused");
@@ -272,7 +272,7 @@ static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_le
     memset(&shading, 0, sizeof(shading));
     shading.width = DEF_W; shading.height = DEF_H;
     RblGBuffer g = RblLoadGBuffer(shading);
-    RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed to load");
+    RT_CHECK(RblIsGBufferValid(g), "G-buffer failed to load");
     int bpp = RblGBufferBytesPerPixel(&g);
     // ES: raylib maps two-channel textures to luminance-alpha, which no framebuffer accepts: the 16
     // parameter bits take an RGBA8 target there (12 bytes)
@@ -288,12 +288,12 @@ static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_le
     unsigned int now[5] = { g.albedo.id, g.normal.id, g.params.id, g.accum.id, g.depth.id };
     RblUnloadGBuffer(&g);
     for (int i = 0; i < 5; i++) RT_CHECK(!glIsTextureFn(now[i]), "texture %u leaked by unload", now[i]);
-    RT_CHECK(!RblIsGBufferValid(&g), "unloaded G-buffer still valid");
+    RT_CHECK(!RblIsGBufferValid(g), "unloaded G-buffer still valid");
     // Bad descs are refused
     warnings = 0;
     shading.brdf = 9;
     g = RblLoadGBuffer(shading);
-    RT_CHECK(!RblIsGBufferValid(&g) && warnings == 1, "bad shading desc accepted");
+    RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "bad shading desc accepted");
 }
 
 // ---- deferred against forward ---------------------------------------------------------------------
@@ -652,7 +652,7 @@ static RblGBuffer sweepGBufferSized(int brdf, int size)
     gd.brdf = brdf;
     gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
     RblGBuffer g = RblLoadGBuffer(gd);
-    RT_CHECK(RblIsGBufferValid(&g), "G-buffer for brdf %d failed", brdf);
+    RT_CHECK(RblIsGBufferValid(g), "G-buffer for brdf %d failed", brdf);
     return g;
 }
 
@@ -1069,7 +1069,7 @@ static void defRefGBuffers(int brdf, RblGBuffer g[2])
         gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
         gd.linearOutput = (k == 1);
         g[k] = RblLoadGBuffer(gd);
-        RT_CHECK(RblIsGBufferValid(&g[k]), "G-buffer for brdf %d failed", brdf);
+        RT_CHECK(RblIsGBufferValid(g[k]), "G-buffer for brdf %d failed", brdf);
     }
 }
 
@@ -1606,7 +1606,7 @@ static void test_deferred_forced_failure_logs_and_the_forward_fallback_renders(v
     warnings = 0;
     RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
     rbl__state.gbufferForceFailure = false;
-    RT_CHECK(!RblIsGBufferValid(&g) && warnings == 1, "forced failure: valid=%d warnings=%d", RblIsGBufferValid(&g), warnings);
+    RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "forced failure: valid=%d warnings=%d", RblIsGBufferValid(g), warnings);
     RT_CHECK(strstr(lastWarning, "forward") != NULL, "the log line should say to render forward: %s", lastWarning);
     // What a program does: the G-buffer refuses the frame, the forward path draws it
     Image fwd = defRenderForward(&s);
@@ -1682,7 +1682,7 @@ static void test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_an
     gd.width = LIT_TARGET; gd.height = LIT_TARGET;
     gd.brdf = RBL_BRDF_GGX;
     RblGBuffer g = RblLoadGBuffer(gd);
-    RT_CHECK(RblIsGBufferValid(&g), "G-buffer failed to load");
+    RT_CHECK(RblIsGBufferValid(g), "G-buffer failed to load");
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.deferred = true;
@@ -1696,7 +1696,7 @@ static void test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_an
     Shader wrongInstanced = RblLoadLitShader(d);
     RT_CHECK(RblIsLitShaderValid(right) && RblIsLitShaderValid(wrong) && RblIsLitShaderValid(wrongToo) && RblIsLitShaderValid(wrongInstanced),
              "geometry variants failed to load");
-    if (!RblIsGBufferValid(&g) || !RblIsLitShaderValid(right) || !RblIsLitShaderValid(wrong) || !RblIsLitShaderValid(wrongToo) || !RblIsLitShaderValid(wrongInstanced))
+    if (!RblIsGBufferValid(g) || !RblIsLitShaderValid(right) || !RblIsLitShaderValid(wrong) || !RblIsLitShaderValid(wrongToo) || !RblIsLitShaderValid(wrongInstanced))
     {
         RblUnloadLitShader(&right); RblUnloadLitShader(&wrong); RblUnloadLitShader(&wrongToo); RblUnloadLitShader(&wrongInstanced);
         RblUnloadGBuffer(&g);
@@ -1897,3 +1897,25 @@ static void test_deferred_debug_views_show_what_they_name(void)
     RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&g);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_DEFERRED_TESTS \
+    RT_TEST_GLSL3(test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing), \
+    RT_TEST_GLSL3(test_deferred_matches_forward_within_2_of_255_for_billboards_and_models), \
+    RT_TEST_GLSL3(test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_forward), \
+    RT_TEST_GLSL3(test_deferred_matches_forward_with_an_orthographic_camera), \
+    RT_TEST_GLSL3(test_deferred_eye_inside_a_light_volume_is_lit_like_forward), \
+    RT_TEST_GLSL3(test_deferred_1024_lights_match_the_double_reference), \
+    RT_TEST_GLSL3(test_deferred_matches_forward_for_every_brdf_roughness_and_shininess_flat_and_curved), \
+    RT_TEST_GLSL3(test_deferred_sharp_highlights_on_a_sphere_under_9_light_rigs_within_2_of_255), \
+    RT_TEST_GLSL3(test_deferred_sharp_highlights_on_tilted_planes_within_2_of_255), \
+    RT_TEST_GLSL3(test_deferred_every_brdf_matches_the_double_reference_on_8_bit_and_float_targets), \
+    RT_TEST_GLSL3(test_deferred_normal_encoding_error_table_against_published_figures), \
+    RT_TEST_GLSL3(test_deferred_position_from_depth_error_at_near_middle_far), \
+    RT_TEST_GLSL3(test_deferred_distance_view_matches_the_true_plane_within_24_bit_depth_steps), \
+    RT_TEST_GLSL3(test_deferred_orthographic_float_depth_rebuilds_the_view_distance_within_1_5_steps), \
+    RT_TEST_GLSL3(test_raster_interpolated_position_and_window_depth_match_the_true_plane), \
+    RT_TEST_GLSL3(test_deferred_forced_failure_logs_and_the_forward_fallback_renders), \
+    RT_TEST_GLSL3(test_deferred_transparent_billboards_drawn_forward_sort_against_deferred_depth), \
+    RT_TEST_GLSL3(test_deferred_debug_views_show_what_they_name), \
+    RT_TEST_GLSL3(test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_and_writes_nothing)

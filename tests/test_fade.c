@@ -165,7 +165,7 @@ static FadeRig fadeRigLoad(Image tileA, Image tileB, RblLitShaderDesc desc)
     FadeRig r;
     memset(&r, 0, sizeof(r));
     r.atlas = RblLoadAtlasFromMemory(fadeAtlasJson, (int)strlen(fadeAtlasJson), RBL_ATLAS_AUTO);
-    RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3) && (r.atlas.frames[2].flags & RBL_FRAME_ROTATED), "fixture atlas");
+    RT_CHECK(RblIsAtlasValid(r.atlas) && (r.atlas.frameCount == 3) && (r.atlas.frames[2].flags & RBL_FRAME_ROTATED), "fixture atlas");
     r.tileA = tileA; r.tileB = tileB;
     Image sheet = fadeSheetExact(tileA, tileB);
     r.sheet = LoadTextureFromImage(sheet);
@@ -388,7 +388,7 @@ static void test_fade_deferred_geometry_pass_stores_the_mixed_frame(void)
     memset(&gd, 0, sizeof(gd));
     gd.width = FADE_RT; gd.height = FADE_RT;
     RblGBuffer g = RblLoadGBuffer(gd);
-    RT_CHECK(RblIsGBufferValid(&g), "G-buffer");
+    RT_CHECK(RblIsGBufferValid(g), "G-buffer");
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
     for (int instanced = 0; instanced < 2; instanced++)
     {
@@ -712,7 +712,7 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
     for (int gdx = 0; gdx < 2; gdx++)       // TexturePacker (q turned clockwise), libGDX (counter-clockwise)
     {
         fadeRigUseTrimSheet(&r, picP, picQ, gdx, gdx? fadeTrimGdx : fadeTrimJson);
-        RT_CHECK(RblIsAtlasValid(&r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas %d", gdx);
+        RT_CHECK(RblIsAtlasValid(r.atlas) && (r.atlas.frameCount == 3), "trimmed fixture atlas %d", gdx);
         int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
         RT_CHECK((fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].flags & RBL_FRAME_ROTATED) && !(r.atlas.frames[fr].flags & RBL_FRAME_ROTATED), "fixture frames");
         RT_CHECK(!gdx || ((r.atlas.frames[fq].source.width < 0.0f) && (r.atlas.frames[fq].source.height < 0.0f)), "libGDX's turn: extents not negated");
@@ -821,7 +821,7 @@ static void test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirror
     FadeRig r = fadeRigLoad(GenImageColor(16, 8, BLANK), GenImageColor(16, 8, BLANK), desc);
     fadeRigUseTrimSheet(&r, picP, picQ, false, fadePivotJson);
     int fp = RblAtlasFindFrame(&r.atlas, "p"), fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
-    RT_CHECK(RblIsAtlasValid(&r.atlas) && (fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].pivot.x == 0.25f) && (r.atlas.frames[fr].pivot.y == 0.25f), "pivot fixture");
+    RT_CHECK(RblIsAtlasValid(r.atlas) && (fp >= 0) && (fq >= 0) && (fr >= 0) && (r.atlas.frames[fq].pivot.x == 0.25f) && (r.atlas.frames[fr].pivot.y == 0.25f), "pivot fixture");
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
     // Each frame's trim in the reference's canvas coordinates (the card's pivot at canvas 8, 6, where
     // every frame's pivot lands): p (1, 2); q (5, 1) shifted 4 right (its pivot is 4 pixels into its
@@ -898,7 +898,7 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
     UnloadImage(sheetImg);
     RblAtlas atlas = RblLoadAtlasFromMemory(fadeTrimJson, (int)strlen(fadeTrimJson), RBL_ATLAS_AUTO);
     int fp = RblAtlasFindFrame(&atlas, "p"), fq = RblAtlasFindFrame(&atlas, "q");
-    RT_CHECK(RblIsAtlasValid(&atlas) && fp >= 0 && fq >= 0, "fixture");
+    RT_CHECK(RblIsAtlasValid(atlas) && fp >= 0 && fq >= 0, "fixture");
     if (rtGlsl3())
     {
         RblLitShaderDesc desc;
@@ -908,7 +908,7 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
         memset(&gd, 0, sizeof(gd));
         gd.width = FADE_RT; gd.height = FADE_RT;
         RblGBuffer g = RblLoadGBuffer(gd);
-        RT_CHECK(RblIsGBufferValid(&g), "G-buffer");
+        RT_CHECK(RblIsGBufferValid(g), "G-buffer");
         RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
         Shader geo = RblLoadLitShader(desc);
         Material m = LoadMaterialDefault();
@@ -980,14 +980,14 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
 }
 
 #define RBL_FADE_TESTS \
-        RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
-        RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
-        RT_TEST(test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes), \
-        RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
-        RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
-        RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
-        RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
-        RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
-        RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
-        RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters), \
-        RT_TEST(test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror)
+    RT_TEST(test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_linear_mean), \
+    RT_TEST(test_fade_stream_follows_its_cards_through_late_starts_and_sorting), \
+    RT_TEST(test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axes), \
+    RT_TEST(test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_reads_the_mix), \
+    RT_TEST_GLSL3(test_fade_deferred_geometry_pass_stores_the_mixed_frame), \
+    RT_TEST(test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path), \
+    RT_TEST(test_fade_stream_is_declared_only_with_the_option_and_models_draw_unchanged), \
+    RT_TEST(test_fade_bad_weights_and_sources_are_refused_with_one_line), \
+    RT_TEST(test_fade_frames_of_different_trims_each_stay_on_their_canvas_clipped_to_their_trim), \
+    RT_TEST(test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters), \
+    RT_TEST(test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirrored_cards_mirror)

@@ -231,7 +231,7 @@ static void test_held_gbuffer_loaded_at_size_0_follows_every_target_size(void)
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
     RblGBuffer follow = RblLoadGBuffer(gd);
-    RT_CHECK(RblIsGBufferValid(&follow), "size-0 G-buffer not loaded");
+    RT_CHECK(RblIsGBufferValid(follow), "size-0 G-buffer not loaded");
     static const int sizes[7][2] = { { 64, 64 }, { 32, 48 }, { 97, 31 }, { 1, 1 }, { 128, 72 }, { 3, 200 }, { 64, 64 } };
     int worst = 0;
     for (int i = 0; i < 7; i++)
@@ -386,6 +386,6 @@ static void test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values(
 }
 
 #define RBL_HELD_TESTS \
-        RT_TEST(test_held_orthographic_facing_is_parallel_across_the_whole_view), \
-        RT_TEST_GLSL3(test_held_gbuffer_loaded_at_size_0_follows_every_target_size), \
-        RT_TEST(test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values)
+    RT_TEST(test_held_orthographic_facing_is_parallel_across_the_whole_view), \
+    RT_TEST_GLSL3(test_held_gbuffer_loaded_at_size_0_follows_every_target_size), \
+    RT_TEST(test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values)

@@ -29,7 +29,7 @@ static RblInstance randomInstance(unsigned int *seed)
     return in;
 }
 
-static void test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode(void)
+static void test_instanced_vertices_equal_the_cpu_path_in_every_mode(void)
 {
     TfGl gl;
     RT_CHECK(tfLoad(&gl), "transform feedback entry points missing");
@@ -81,7 +81,7 @@ static void test_paths_instanced_vertices_equal_the_cpu_path_in_every_mode(void)
 }
 
 // Degenerate cameras and the eye on the billboard: the GPU frame stays finite and unit as well
-static void test_paths_instanced_hard_cases_stay_finite(void)
+static void test_instanced_hard_cases_stay_finite(void)
 {
     TfGl gl;
     if (!tfLoad(&gl)) { RT_CHECK(false, "no GL entry points"); return; }
@@ -141,7 +141,7 @@ static float *dgGpuCase(TfGl *gl, GLu prog, RblInstanceBuffer *buf, const DgCase
 // (the opposed side at weight 1/2, where any continuous blend turns its output around within a
 // rounding error) the instanced frame stays finite and orthonormal; how far the two paths' roundings
 // take them apart there is reported.
-static void test_paths_instanced_near_degenerate_frames_agree_with_the_cpu_path(void)
+static void test_instanced_near_degenerate_frames_agree_with_the_cpu_path(void)
 {
     TfGl gl;
     if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
@@ -222,7 +222,7 @@ static void test_paths_instanced_near_degenerate_frames_agree_with_the_cpu_path(
 
 // Caller vectors too short to give a direction (|v| <= 1e-12 counts as zero: the default) and just
 // long enough, including denormal lengths a GPU may flush to zero: both paths read them alike
-static void test_paths_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu(void)
+static void test_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu(void)
 {
     TfGl gl;
     if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
@@ -274,7 +274,7 @@ static void test_paths_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu(void
 // Rotation at any angle an instance may carry (|value| < 2^120): the instanced stage's exact degree
 // reduction (rblReduceDegrees, integer arithmetic) against the CPU's fmodf and a double reference.
 // Seen from the front the tangent of an unflipped quad is (cos, sin, 0) of the rotation.
-static void test_paths_instanced_rotation_agrees_with_the_cpu_at_any_angle(void)
+static void test_instanced_rotation_agrees_with_the_cpu_at_any_angle(void)
 {
     TfGl gl;
     if (!tfLoad(&gl)) { RT_CHECK(false, "transform feedback entry points missing"); return; }
@@ -342,7 +342,7 @@ static void test_paths_instanced_rotation_agrees_with_the_cpu_at_any_angle(void)
 }
 
 // RblDrawInstanced itself: skips bad instances with one warning, and renders what the batch renders
-static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_instances(void)
+static void test_instanced_draw_matches_batched_pixels_and_skips_bad_instances(void)
 {
     Camera3D cam = frontCamera();
     RblLitShaderDesc desc;
@@ -437,7 +437,7 @@ static void test_paths_instanced_draw_matches_batched_pixels_and_skips_bad_insta
 
 // The instance check rejects exactly NaN, Inf and |value| >= 2^120 in each of the 12 float fields
 // (values the GPU could overflow when it combines them), and nothing in the tint or flags
-static void test_paths_instanced_validation_bound_is_2_to_the_120_in_every_float_field(void)
+static void test_instanced_validation_bound_is_2_to_the_120_in_every_float_field(void)
 {
     const float below = nextafterf(ldexpf(1.0f, 120), 0.0f), limit = ldexpf(1.0f, 120);
     const float rejected[4] = { limit, -limit, NAN, -INFINITY };
@@ -481,7 +481,7 @@ static int instancedRegistryEntries(unsigned int id, int *instancingLoc)
 // uses lives in the header's program registry, whose entry goes with the program's last holder and is
 // looked up by id at each draw, so a variant given a reused id never draws with its predecessor's
 // location (the instance buffer keeps none)
-static void test_paths_instanced_location_cache_survives_program_id_reuse(void)
+static void test_instanced_location_cache_survives_program_id_reuse(void)
 {
     Camera3D cam = frontCamera();
     RblLitShaderDesc desc;
@@ -568,3 +568,14 @@ static void test_paths_instanced_location_cache_survives_program_id_reuse(void)
     m.shader = (Shader){ 0 };
     MemFree(m.maps);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_INSTANCED_TESTS \
+    RT_TEST_GLSL3(test_instanced_vertices_equal_the_cpu_path_in_every_mode), \
+    RT_TEST_GLSL3(test_instanced_hard_cases_stay_finite), \
+    RT_TEST_GLSL3(test_instanced_near_degenerate_frames_agree_with_the_cpu_path), \
+    RT_TEST_GLSL3(test_instanced_tiny_up_and_axis_read_alike_on_cpu_and_gpu), \
+    RT_TEST_GLSL3(test_instanced_rotation_agrees_with_the_cpu_at_any_angle), \
+    RT_TEST_GLSL3(test_instanced_draw_matches_batched_pixels_and_skips_bad_instances), \
+    RT_TEST_GLSL3(test_instanced_validation_bound_is_2_to_the_120_in_every_float_field), \
+    RT_TEST_GLSL3(test_instanced_location_cache_survives_program_id_reuse)

@@ -956,3 +956,20 @@ static void test_lighting_billboard_and_model_quad_render_identical_pixels(void)
     UnloadTexture(albedo); UnloadTexture(normalMap);
     UnloadMesh(mesh);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_LIGHTING_TESTS \
+    RT_TEST(test_lighting_every_variant_compiles_and_each_handle_owns_its_program), \
+    RT_TEST(test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line), \
+    RT_TEST(test_lighting_matrix_matches_the_double_reference_within_2_of_255), \
+    RT_TEST(test_lighting_optional_stages_match_the_reference), \
+    RT_TEST(test_lighting_hard_roughness_zero), \
+    RT_TEST(test_lighting_hard_metal_with_black_albedo), \
+    RT_TEST(test_lighting_hard_grazing_normal_ndotv_zero), \
+    RT_TEST(test_lighting_hard_light_behind_the_surface), \
+    RT_TEST(test_lighting_hard_light_on_the_shaded_point), \
+    RT_TEST(test_lighting_hard_range_zero_and_intensity_zero_and_zero_lights), \
+    RT_TEST(test_lighting_hard_maximum_light_count), \
+    RT_TEST(test_lighting_hard_half_float_overflow_before_tonemap), \
+    RT_TEST(test_lighting_hard_zero_length_map_normal_is_the_flat_normal), \
+    RT_TEST(test_lighting_billboard_and_model_quad_render_identical_pixels)

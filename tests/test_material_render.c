@@ -85,7 +85,7 @@ static void test_materials_shader_decodes_every_encoding_like_the_cpu(void)
         SetTextureFilter(tex, TEXTURE_FILTER_POINT);
         Scene s = sceneLoad(WHITE, normalTexel(0, 0, 1), false);
         s.material.maps[MATERIAL_MAP_NORMAL].texture = tex;
-        Shader dbg = litVariant(layoutOf(encodings[e], false, false, 0), 0, false, 1);
+        Shader dbg = litVariant(layoutOf(encodings[e], false, false, 0), 0, false, RBL_DEBUG_OUTPUT_TANGENT_NORMAL);
         RT_CHECK(RblIsLitShaderValid(dbg), "debug variant failed");
         RT_CHECK(renderSetLights(NULL, 0, WHITE), "lights rejected");
         Image img = renderWith(&dbg, s.material, screenQuad());
@@ -123,7 +123,7 @@ static void test_materials_absent_maps_are_not_declared_or_sampled(void)
         { layoutOf(0, false, false, 0), 0, false, false },
         { layoutOf(RBL_NORMAL_HEMIOCT, false, false, 0), 0, true, false },
         { layoutOf(0, true, false, 0), 0, false, false },
-        { layoutOf(0, true, false, 0), 3, true, false },
+        { layoutOf(0, true, false, 0), RBL_DEBUG_OUTPUT_SPECULAR, true, false },
         { layoutOf(0, false, true, 0), 0, true, false },
         { layoutOf(0, false, false, RBL_EMISSIVE_MASK), 0, false, true },
         { layoutOf(RBL_NORMAL_XY, true, true, RBL_EMISSIVE_RGB), 0, true, true },
@@ -238,3 +238,12 @@ static void test_materials_packed_atlas_renders_like_its_separate_maps(void)
     UnloadImage(src.albedo); UnloadImage(src.normal); UnloadImage(src.occlusion);
     sceneUnload(s);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_MATERIAL_RENDER_TESTS \
+    RT_TEST(test_materials_mid_grey_srgb_albedo_lights_as_linear_0_214), \
+    RT_TEST(test_materials_shader_decodes_every_encoding_like_the_cpu), \
+    RT_TEST(test_materials_absent_maps_are_not_declared_or_sampled), \
+    RT_TEST(test_materials_occlusion_dims_ambient_only), \
+    RT_TEST(test_materials_emission_adds_after_lighting), \
+    RT_TEST(test_materials_packed_atlas_renders_like_its_separate_maps)

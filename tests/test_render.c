@@ -434,3 +434,14 @@ static void test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboa
     rlUnloadRenderBatch(capture);
     UnloadRenderTexture(scratch);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_RENDER_TESTS \
+    RT_TEST(test_shaders_every_lit_variant_compiles_and_links), \
+    RT_TEST(test_shaders_compile_failure_is_reported_not_replaced_by_the_default), \
+    RT_TEST(test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u), \
+    RT_TEST(test_lit_flat_normal_map_matches_analytic_lambert_within_2_of_255), \
+    RT_TEST(test_lit_flips_and_rotated_frames_light_the_plus_u_side), \
+    RT_TEST(test_lit_bad_lights_are_rejected_and_change_nothing), \
+    RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate), \
+    RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro)

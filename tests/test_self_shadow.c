@@ -826,7 +826,7 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
     memset(&ld, 0, sizeof(ld));
     ld.deferred = true; ld.material.normalEncoding = RBL_NORMAL_RGB;
     Shader geo = RblLoadLitShader(ld);
-    RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
+    RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
     RT_CHECK(RblGBufferBytesPerPixel(&g) == 12, "a G-buffer receiving shadows stores %d bytes per pixel (expected 12: RT2 RGBA8 with the caster identity)", RblGBufferBytesPerPixel(&g));
     Material dm = rig.sprite;
     dm.shader = geo;
@@ -887,3 +887,12 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
     RblUnloadGBuffer(&g);
     ssRigUnload(&rig);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_SELF_SHADOW_TESTS \
+    RT_TEST(test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_light_direction), \
+    RT_TEST(test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_the_users_scene), \
+    RT_TEST(test_shadows_light_over_an_axis_sprite_moves_its_shadow_continuously), \
+    RT_TEST(test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_order), \
+    RT_TEST(test_shadows_self_shadow_option_drops_the_identities), \
+    RT_TEST_GLSL3(test_shadows_deferred_sprites_never_shadow_themselves_and_match_forward)

@@ -123,7 +123,7 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
         RblGBuffer g = RblLoadGBuffer(shading);
         desc.deferred = true;
         Shader geo = RblLoadLitShader(desc);
-        RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
+        RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
         RT_CHECK(RblSetScene(&scene), "scene (lights, G-buffer shadow map) rejected");
         floor.shader = geo;
         if (RblBeginGBuffer(&g, s->camera))
@@ -892,3 +892,17 @@ static void test_shadows_pass_restores_the_callers_target_and_matrices(void)
     UnloadRenderTexture(rt);
     RblUnloadShadowMap(&map);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_SHADOWS_TESTS \
+    RT_TEST(test_shadows_opaque_card_darkens_its_analytic_footprint_within_a_texel), \
+    RT_TEST(test_shadows_transparent_hole_in_a_sprite_lets_light_through_on_every_path), \
+    RT_TEST(test_shadows_raylib_model_casts_its_footprint), \
+    RT_TEST(test_shadows_no_acne_on_a_floor_lit_at_up_to_80_degrees), \
+    RT_TEST(test_shadows_standing_card_casts_from_its_base_without_peter_panning), \
+    RT_TEST(test_shadows_axis_locked_billboard_casts_under_a_light_straight_above), \
+    RT_TEST_GLSL3(test_shadows_axis_tilt_is_the_same_on_cpu_and_gpu), \
+    RT_TEST_GLSL3(test_shadows_forward_and_deferred_agree_within_2_of_255), \
+    RT_TEST(test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothing), \
+    RT_TEST(test_shadows_hard_cases_stay_finite), \
+    RT_TEST(test_shadows_pass_restores_the_callers_target_and_matrices)

@@ -283,3 +283,9 @@ static void test_skinning_bad_input_is_refused_and_draws_nothing(void)
     RblUnloadLitShader(&skinned);
     RblUnloadLitShader(&plain);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_SKINNING_TESTS \
+    RT_TEST(test_skinning_lit_model_animates_and_matches_the_cpu_skinned_rendering), \
+    RT_TEST(test_skinning_shadow_animates_and_matches_the_cpu_skinned_caster), \
+    RT_TEST(test_skinning_bad_input_is_refused_and_draws_nothing)

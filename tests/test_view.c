@@ -35,7 +35,7 @@ static Image viewRenderDeferredPlane(const LitScene *sc, bool *ok)
     desc.deferred = true;
     Shader geo = RblLoadLitShader(desc);
     RblScene scene = litSceneOf(sc);
-    *ok = RblIsGBufferValid(&g) && RblIsLitShaderValid(geo) && RblSetScene(&scene);
+    *ok = RblIsGBufferValid(g) && RblIsLitShaderValid(geo) && RblSetScene(&scene);
     Texture2D albedo = solidTexture(sc->albedo), normal = solidTexture(sc->normal);
     Material m = LoadMaterialDefault();
     m.shader = geo;
@@ -202,7 +202,7 @@ static Image viewRenderSphere(const ViewSphere *vs, Model *model, int path, bool
     RblScene scene;
     memset(&scene, 0, sizeof(scene));
     scene.lights = vs->lights; scene.lightCount = vs->count; scene.ambient = vs->ambient; scene.fog = vs->fog;
-    *ok = RblIsLitShaderValid(lit) && RblSetScene(&scene) && ((path != 2) || RblIsGBufferValid(&g));
+    *ok = RblIsLitShaderValid(lit) && RblSetScene(&scene) && ((path != 2) || RblIsGBufferValid(g));
     Texture2D albedo = solidTexture(vs->albedo);
     Material keep = model->materials[0];
     Material m = LoadMaterialDefault();
@@ -761,3 +761,14 @@ static void test_view_open_model_seen_from_below_is_lit_on_the_side_seen(void)
     UnloadTexture(albedo);
     UnloadMesh(mesh);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_VIEW_TESTS \
+    RT_TEST(test_view_orthographic_plane_on_every_path_matches_the_double_reference), \
+    RT_TEST(test_view_orthographic_fog_runs_along_the_view_axis), \
+    RT_TEST(test_view_orthographic_sphere_model_matches_the_double_reference), \
+    RT_TEST(test_view_card_seen_from_behind_is_lit_on_the_side_the_viewer_sees), \
+    RT_TEST(test_view_card_from_behind_far_light_adds_nothing_and_tilt_keeps_its_side), \
+    RT_TEST(test_view_culling_is_off_only_for_draws_that_show_a_back_and_restored), \
+    RT_TEST(test_view_card_seen_from_behind_receives_shadows_on_its_lit_side), \
+    RT_TEST(test_view_open_model_seen_from_below_is_lit_on_the_side_seen)

@@ -376,7 +376,7 @@ static void BrdfPassLoad(BrdfPass *p, int brdf, Texture2D albedo)
     p->mat.maps[MATERIAL_MAP_NORMAL].value = 32.0f;                               // Blinn-Phong shininess
     p->mat.params[1] = 0.7f;                                                      // Blinn-Phong intensity
     p->mat.maps[MATERIAL_MAP_ROUGHNESS].value = 0.4f;                             // GGX
-    p->ok = RblIsGBufferValid(&p->g) && RblIsLitShaderValid(p->geo);
+    p->ok = RblIsGBufferValid(p->g) && RblIsLitShaderValid(p->geo);
 }
 
 static void BrdfPassUnload(BrdfPass *p)
@@ -620,7 +620,7 @@ static bool ReferenceErrors(RefErr worst[REF_GROUPS][REF_TARGETS])
             gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
             gd.linearOutput = (k == 1);
             g[b][k] = RblLoadGBuffer(gd);
-            ok = ok && RblIsGBufferValid(&g[b][k]);
+            ok = ok && RblIsGBufferValid(g[b][k]);
         }
     for (int i = 0; ok && (i < (int)(sizeof(cases)/sizeof(cases[0]))); i++)
     {
@@ -999,7 +999,7 @@ int main(void)
     gbufferDesc.width = FRAME_W; gbufferDesc.height = FRAME_H;
     gbufferDesc.brdf = BENCH_BRDF;          // point lights (the default light features), no fog, sRGB
     s->g = RblLoadGBuffer(gbufferDesc);
-    bool deferredOk = RblIsGBufferValid(&s->g) && RblIsLitShaderValid(s->geo);
+    bool deferredOk = RblIsGBufferValid(s->g) && RblIsLitShaderValid(s->geo);
     if (!deferredOk) { printf("bench_deferred: G-buffer or geometry variant failed to load: deferred rows skipped\n"); problems++; }
     for (int c = 0; c < COUNTS; c++) s->ok[PIPE_VOLUMES*COUNTS + c] = s->ok[PIPE_NAIVE*COUNTS + c] = deferredOk;
 

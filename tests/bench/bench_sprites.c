@@ -181,7 +181,7 @@ static void runImport(void *ctx, double *out)
     double t0 = BenchNowNs();
     RblAtlas a = RblLoadAtlasFromMemory(c->text.text, c->text.size, c->format);
     out[0] = BenchNowNs() - t0;
-    if (!RblIsAtlasValid(&a)) { printf("bench_sprites: generated atlas refused\n"); exit(1); }
+    if (!RblIsAtlasValid(a)) { printf("bench_sprites: generated atlas refused\n"); exit(1); }
     RblUnloadAtlas(&a);
 }
 
@@ -467,7 +467,7 @@ int main(void)
                     double t0 = BenchNowNs();
                     RblAtlas a = RblLoadAtlasFromMemory(x->text, x->size, RBL_ATLAS_AUTO);
                     v[k] = BenchNowNs() - t0;
-                    if (!RblIsAtlasValid(&a) || (a.frameCount != frames)) { printf("bench_sprites: generated %s atlas refused\n", (k == 0)? "plain" : formNames[form]); exit(1); }
+                    if (!RblIsAtlasValid(a) || (a.frameCount != frames)) { printf("bench_sprites: generated %s atlas refused\n", (k == 0)? "plain" : formNames[form]); exit(1); }
                     RblUnloadAtlas(&a);
                 }
                 if (r < 2) continue;        // warm-up
@@ -501,7 +501,7 @@ int main(void)
                     t0 = BenchNowNs();
                     a = RblLoadAtlas("build/bench/atlas/phaser3.json");
                     double file = BenchNowNs() - t0;
-                    if (!RblIsAtlasValid(&a) || (a.pages[3].normalImage == NULL)) { printf("bench_sprites: Phaser 3 file refused\n"); exit(1); }
+                    if (!RblIsAtlasValid(a) || (a.pages[3].normalImage == NULL)) { printf("bench_sprites: Phaser 3 file refused\n"); exit(1); }
                     RblUnloadAtlas(&a);
                     if (r >= 2) fr[r - 2] = file/mem;
                 }

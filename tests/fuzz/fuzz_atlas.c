@@ -114,13 +114,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     {
         lines = 0; infoLines = 0;
         RblAtlas a = RblLoadAtlasFromMemory((const char *)data, (int)size, (pass == 0)? FUZZ_FORMAT : RBL_ATLAS_AUTO);
-        if (RblIsAtlasValid(&a))
+        if (RblIsAtlasValid(a))
         {
             expect(lines == 0 && infoLines <= 1, "accepted with warning lines, or more than one INFO line");
             lines = 0;
             check(&a);
             RblUnloadAtlas(&a);
-            expect(!RblIsAtlasValid(&a), "unload");
+            expect(!RblIsAtlasValid(a), "unload");
         }
         else expect(lines == 1 && infoLines == 0 && a.state == NULL && a.frames == NULL, "refused without exactly one line");
     }

@@ -69,12 +69,18 @@ case "$mode" in
     if [ "$gen" = "$have" ]; then echo "  ok    README API index matches the header ($(printf '%s\n' "$gen" | grep -c '^- `') entries)"; pass=$((pass + 1))
     else echo "  FAIL  README API index differs from the header (make api-index rewrites it):"; diff <(printf '%s\n' "$have") <(printf '%s\n' "$gen") | head -20; fail=$((fail + 1)); fi
     # Configuration: code defaults vs the doc block's CONFIGURATION list
-    code=$(sed -n 's/^#ifndef \(RBL_[A-Z0-9_]*\)$/\1/p' "$header" | sort -u)
+    # (defaults: #ifndef RBL_X; switches: RBL_X tested with defined(), listed without a value)
+    code=$( { sed -n 's/^#ifndef \(RBL_[A-Z0-9_]*\)$/\1/p' "$header"; grep -E '^ *# *(if|elif)' "$header" | grep -o 'defined(RBL_[A-Z0-9_]*)' | grep -o 'RBL_[A-Z0-9_]*'; } | sort -u)
     doc=$(sed -n '/^\*   CONFIGURATION:/,/^\*   [A-Z ]*:$/p' "$header" | grep '^\*       #define ' | grep -o 'RBL_[A-Z0-9_]*' | sort -u)
     missing=$(comm -23 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | tr '\n' ' ')
     stale=$(comm -13 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | grep -v -E '^RBL_(MALLOC|CALLOC|REALLOC|FREE)$' | tr '\n' ' ')
     if [ -z "${missing// }" ] && [ -z "${stale// }" ]; then echo "  ok    CONFIGURATION lists every configuration macro ($(printf '%s\n' "$code" | wc -l))"; pass=$((pass + 1))
     else echo "  FAIL  CONFIGURATION drift: defaulted in code, not listed: ${missing:-none}; listed, not defaulted: ${stale:-none}"; fail=$((fail + 1)); fi
+    # The doc block's map of the file: the >>tags CONTENTS lists, in order, are the banners' tags
+    listed=$(sed -n '/^\*   CONTENTS:/,/^\*   INTEGRATION:/p' "$header" | grep -o '^\*         >>[a-z]*' | sed 's/.*>>//' | tr '\n' ' ')
+    banners=$(grep -E '^// .*   >>[a-z]+$' "$header" | sed 's/.*>>//' | tr '\n' ' ')
+    if [ -n "${listed// }" ] && [ "$listed" = "$banners" ]; then echo "  ok    CONTENTS maps every section banner in file order ($(echo $listed | wc -w) tags)"; pass=$((pass + 1))
+    else echo "  FAIL  CONTENTS drift: listed '$listed', banners '$banners'"; fail=$((fail + 1)); fi
     echo "api: $pass passed, $fail failed"
     ;;
   *) echo "usage: $0 index|write|check [header] [readme]" >&2; exit 2 ;;

@@ -4,7 +4,9 @@
 # only exist with the optimiser), writing "ok    <label>" or "FAIL  <label>" + the compiler's first
 # lines to $3.
 #   usage: compile_matrix.sh <compiler>:<std> <unit> <out-file> [<raylib tree>]
-#   unit: header-decl | header-impl | readme | an example .c file
+#   unit: header-decl | header-impl | header-options | readme | an example .c file
+#   (header-options: the implementation with the optional module left out and the instruments in,
+#   RBL_NO_ATLAS and RBL_INSTRUMENTS; header-impl has neither)
 #   env:  BUILD, RAYLIB_CFLAGS, RAYLIB_LIBS
 # With a raylib tree (another raylib's source, e.g. master), the unit is compiled against that tree's
 # src/ headers only, with SUPPORT_GPU_SKINNING=1 (every path of the header), and not linked.
@@ -31,11 +33,12 @@ flags="-std=$std -x $lang -Wall -Wextra -pedantic -Werror -O1 -I. $RAYLIB_CFLAGS
 case $unit in
   header-decl) cmd="$cc $flags -c tests/compile_check.c -o $obj.o" ;;
   header-impl) cmd="$cc $flags -DCHECK_IMPLEMENTATION -c tests/compile_check.c -o $obj.o" ;;
+  header-options) cmd="$cc $flags -DCHECK_IMPLEMENTATION -DRBL_NO_ATLAS -DRBL_INSTRUMENTS -c tests/compile_check.c -o $obj.o" ;;
   readme)      cmd="$cc $flags $BUILD/tests/readme_example.c -x none -o $obj $RAYLIB_LIBS" ;;
   *)           cmd="$cc $flags $unit -x none -o $obj $RAYLIB_LIBS" ;;
 esac
 # Another raylib's headers: compiled only (its libraylib.a is not built here)
-[ -n "$other" ] && [ $unit != header-decl ] && [ $unit != header-impl ] && cmd="$cc $flags -c $unit -o $obj.o"
+[ -n "$other" ] && [ $unit != header-decl ] && [ $unit != header-impl ] && [ $unit != header-options ] && cmd="$cc $flags -c $unit -o $obj.o"
 [ -n "$other" ] && [ $unit = readme ] && cmd="$cc $flags -c $BUILD/tests/readme_example.c -o $obj.o"
 if log=$($cmd 2>&1); then printf 'ok    %s\n' "$label" > "$out"
 else { printf 'FAIL  %s\n' "$label"; printf '%s\n' "$log" | head -12 | sed 's/^/        /'; } > "$out"; fi

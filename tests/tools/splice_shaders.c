@@ -38,7 +38,7 @@ int main(int argc, char **argv)
     cases[1].material.occlusion = true; cases[1].material.emissive = RBL_EMISSIVE_MASK; cases[1].shadowMaps = 4; cases[1].shadowFilter = 3;
     cases[2] = cases[1]; cases[2].brdf = RBL_BRDF_GGX; cases[2].fog = RBL_FOG_EXP2; cases[2].tonemap = RBL_TONEMAP_ACES;
     cases[2].material.normalEncoding = RBL_NORMAL_XY; cases[2].material.emissive = RBL_EMISSIVE_RGB; cases[2].gamma = 2.2f; cases[2].shadowMaps = 1;
-    cases[3] = cases[2]; cases[3].material.normalEncoding = RBL_NORMAL_RGB; cases[3].material.specular = false; cases[3].linearOutput = true; cases[3].debugOutput = 2;
+    cases[3] = cases[2]; cases[3].material.normalEncoding = RBL_NORMAL_RGB; cases[3].material.specular = false; cases[3].linearOutput = true; cases[3].debugOutput = RBL_DEBUG_OUTPUT_WORLD_NORMAL;
     cases[2].crossFade = true;      // with cases 3 and 5 (deferred) after it; 4 instanced
     cases[4] = cases[1]; cases[4].instanced = true; cases[4].crossFade = true;
     cases[5] = cases[2]; cases[5].deferred = true;

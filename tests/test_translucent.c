@@ -1,10 +1,10 @@
-// Sprite workflow on the GPU: translucent billboards sorted back to front (any submission order draws
+// Translucent billboards on the GPU: sorted back to front (any submission order draws
 // the same pixels, equal to the cards drawn one by one in depth order), the hybrid mode (solid texels
 // write depth, the fringe blends over what lies behind without writing it), and bad sort settings.
 // Reference: the alpha-blending equation (raylib's BLEND_ALPHA: c = src*a + dst*(1 - a) per 8-bit
 // channel) applied to the unlit albedo (no lights, white ambient: the lit colour is the albedo), and
 // the immediate path drawing the cards one call at a time in the right order.
-// Included by test_gpu_main.c.
+// Also soft particles (fading by the scene depth behind). Included by gpu_tests.h.
 
 #define SPR_TARGET 64
 
@@ -78,7 +78,7 @@ static Image sprRenderBatch(Material *mats, const SprCardSpec *cards, const int 
     return img;
 }
 
-static void test_sprites_sorted_translucent_cards_draw_alike_in_any_submission_order(void)
+static void test_translucent_sorted_translucent_cards_draw_alike_in_any_submission_order(void)
 {
     const SprCardSpec cards[3] = { { 0.0f, { 255, 0, 0, 128 } }, { -0.5f, { 0, 255, 0, 128 } }, { -1.0f, { 0, 0, 255, 128 } } };
     Texture2D tex[3];
@@ -131,7 +131,7 @@ static void test_sprites_sorted_translucent_cards_draw_alike_in_any_submission_o
 
 // A tree card with solid bark and translucent holes in front of a smoke puff submitted after it: the
 // hybrid mode shows the smoke through the holes, the plain batch hides it behind the holes' depth
-static void test_sprites_hybrid_smoke_behind_a_tree_shows_through_its_holes(void)
+static void test_translucent_hybrid_smoke_behind_a_tree_shows_through_its_holes(void)
 {
     // Tree: 8x8, solid brown with a 4x4 translucent (alpha 64) window in the middle; nearest filtering
     Image treeImg = GenImageColor(8, 8, (Color){ 120, 80, 40, 255 });
@@ -175,7 +175,7 @@ static void test_sprites_hybrid_smoke_behind_a_tree_shows_through_its_holes(void
     UnloadTexture(tree); UnloadTexture(smoke);
 }
 
-static void test_sprites_bad_sort_settings_are_refused_and_draw_nothing(void)
+static void test_translucent_bad_sort_settings_are_refused_and_draw_nothing(void)
 {
     Texture2D white = solidTexture(WHITE);
     Material m = sprMaterial(white, 0.0f);
@@ -216,7 +216,7 @@ static void test_sprites_bad_sort_settings_are_refused_and_draw_nothing(void)
 
 // The instanced path's sort option: three tinted instances of one translucent texture, every array
 // order, against the immediate path drawing them one by one farthest first
-static void test_sprites_instanced_sort_draws_alike_in_any_array_order(void)
+static void test_translucent_instanced_sort_draws_alike_in_any_array_order(void)
 {
     Texture2D glass = solidTexture((Color){ 255, 255, 255, 128 });
     Material m = sprMaterial(glass, 0.01f), mi = sprMaterialOf(glass, 0.01f, true);
@@ -314,7 +314,7 @@ static Color sprSoftCentre(Camera3D cam, Material puff, RenderTexture2D out, flo
 // distance delta in front of it, drawn into another target over black with the wall's depth in the
 // scene, shows 255*clamp(delta/fade, 0, 1) (the fade's definition), for perspective and orthographic
 // cameras; without a scene depth it is not faded; a soft G-buffer variant is refused.
-static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void)
+static void test_translucent_soft_particles_fade_by_depth_distance_to_the_scene(void)
 {
     Texture2D white = solidTexture(WHITE);
     Material wall = sprMaterial(white, 0.0f);
@@ -377,7 +377,7 @@ static void test_sprites_soft_particles_fade_by_depth_distance_to_the_scene(void
 // distance to the wall as over a RblLoadSceneTarget (255*clamp(delta/0.5)); the world's depth reached
 // the target (a card behind the wall is hidden); the background shows where the world drew nothing;
 // the scene target follows targets of other sizes
-static void test_sprites_soft_particles_in_a_plain_frame_with_two_added_lines(void)
+static void test_translucent_soft_particles_in_a_plain_frame_with_two_added_lines(void)
 {
     Texture2D white = solidTexture(WHITE);
     Material wall = sprMaterial(white, 0.0f);
@@ -429,49 +429,10 @@ static void test_sprites_soft_particles_in_a_plain_frame_with_two_added_lines(vo
     UnloadTexture(white);
 }
 
-// Packed maps of a non-power-of-two atlas: full mip chains where the context samples them (GL, ES 3),
-// level 0 alone with clamped edges on ES 2 / WebGL1 (which read such a texture with mips as black);
-// the card renders its colour either way
-static void test_sprites_npot_packed_atlas_uploads_what_the_context_can_sample(void)
-{
-    Image albedo = GenImageColor(24, 20, (Color){ 200, 100, 50, 255 });
-    RblMaterialSource src;
-    memset(&src, 0, sizeof(src));
-    src.albedo = albedo;
-    src.mipmaps = true;
-    RblPackedMaterial packed;
-    RT_CHECK(RblPackMaterial(&src, &packed), "pack");
-    Material m = sprMaterial(solidTexture(WHITE), 0.0f);
-    UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
-    RT_CHECK(RblLoadPackedTextures(&packed, &m), "upload");
-    int want = (rlGetVersion() == RL_OPENGL_ES_20)? 1 : packed.albedo.mipmaps;
-    RT_CHECK(m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps == want, "albedo uploaded with %d levels, expected %d", m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps, want);
-    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
-    RenderTexture2D rt = LoadRenderTexture(SPR_TARGET, SPR_TARGET);
-    BeginTextureMode(rt);
-    ClearBackground(BLACK);
-    BeginMode3D(sprCamera());
-    RblBillboard b = sprCard(0.0f, 0.0f);
-    b.size = (Vector2){ 0.3f, 0.3f }; b.origin = (Vector2){ 0.15f, 0.15f };     // minified: mips would be read
-    RblDrawBillboard(sprCamera(), m, b);
-    EndMode3D();
-    EndTextureMode();
-    Image img = rtReadTarget(rt);
-    Color c = rtPixel(img, SPR_TARGET/2, SPR_TARGET/2);
-    RT_CHECK((abs(c.r - 200) <= 2) && (abs(c.g - 100) <= 2) && (abs(c.b - 50) <= 2), "minified NPOT card (%d %d %d), expected (200 100 50)", c.r, c.g, c.b);
-    printf("    24x20 packed atlas: %d levels uploaded, minified card (%d %d %d)\n", m.maps[MATERIAL_MAP_ALBEDO].texture.mipmaps, c.r, c.g, c.b);
-    UnloadImage(img);
-    UnloadRenderTexture(rt);
-    UnloadTexture(m.maps[MATERIAL_MAP_ALBEDO].texture);
-    m.maps[MATERIAL_MAP_ALBEDO].texture.id = 0;
-    sprUnloadMaterial(&m);
-    RblUnloadPackedMaterial(&packed);
-    UnloadImage(albedo);
-}
 
 // Soft particles over a G-buffer's depth: the wall goes through the geometry pass, the card reads
 // RblGBuffer.depth through the scene, with the same expectation as over a RblLoadSceneTarget
-static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
+static void test_translucent_soft_particles_read_a_gbuffer_depth(void)
 {
     Texture2D white = solidTexture(WHITE);
     RblLitShaderDesc geoDesc;
@@ -482,7 +443,7 @@ static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
     wall.shader = RblLoadLitShader(geoDesc);
     wall.maps[MATERIAL_MAP_ALBEDO].texture = white;
     Material puff = sprSoftPuff(white);
-    RT_CHECK(RblIsGBufferValid(&g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
+    RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(wall.shader) && RblIsLitShaderValid(puff.shader), "G-buffer or programs failed");
     Camera3D cam = sprCamera();
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene refused");
     RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass refused");
@@ -510,3 +471,13 @@ static void test_sprites_soft_particles_read_a_gbuffer_depth(void)
     RblUnloadLitShader(&puff.shader); MemFree(puff.maps);
     UnloadTexture(white);
 }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_TRANSLUCENT_TESTS \
+    RT_TEST(test_translucent_sorted_translucent_cards_draw_alike_in_any_submission_order), \
+    RT_TEST(test_translucent_hybrid_smoke_behind_a_tree_shows_through_its_holes), \
+    RT_TEST(test_translucent_bad_sort_settings_are_refused_and_draw_nothing), \
+    RT_TEST_GLSL3(test_translucent_instanced_sort_draws_alike_in_any_array_order), \
+    RT_TEST(test_translucent_soft_particles_fade_by_depth_distance_to_the_scene), \
+    RT_TEST(test_translucent_soft_particles_in_a_plain_frame_with_two_added_lines), \
+    RT_TEST_GLSL3(test_translucent_soft_particles_read_a_gbuffer_depth)
