@@ -69,7 +69,7 @@ WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
-GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_omni_cascades.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_sprite_buffer.c
+GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_render.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_omni_cascades.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_sprite_buffer.c tests/test_cull.c
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -221,6 +221,21 @@ $(BUILD)/bench/bench_thin: tests/relief_reference.h tests/reference.h
 $(BUILD)/bench/bench_%: tests/bench/bench_%.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< tests/harness.c -o $@ $(RAYLIB_LIBS)
+
+# bench_geometry's 0.3 baseline: that header (the commit before the 0.4 API change) from git history,
+# compiled in its own translation unit; without the history the baseline rows are left out
+BENCH_V03_COMMIT := ba3c89d~1
+$(BUILD)/bench/v03/bench_geometry_v03.o: tests/bench/bench_geometry_v03.c tests/bench/bench_geometry_v03.h $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	@if git show $(BENCH_V03_COMMIT):rbillboard_lit.h > $(@D)/rbillboard_lit.h 2>/dev/null; then \
+	  echo "$(CC) ... bench_geometry_v03.c (0.3 header from $(BENCH_V03_COMMIT))"; \
+	  $(CC) $(CSTD) -O2 -Wall -Wextra -Werror -Wno-unused-function -I$(@D) -Itests/bench $(RAYLIB_CFLAGS) -c $< -o $@; \
+	else echo "bench_geometry: no git history for the 0.3 baseline; its rows are left out"; \
+	  $(CC) $(BENCH_CFLAGS) -DBENCH_NO_V03 -Itests/bench $(RAYLIB_CFLAGS) -c $< -o $@; fi
+
+$(BUILD)/bench/bench_geometry: tests/bench/bench_geometry.c tests/bench/bench.h tests/bench/bench_geometry_v03.h $(BUILD)/bench/v03/bench_geometry_v03.o $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
+	@mkdir -p $(@D)
+	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) tests/bench/bench_geometry.c tests/harness.c $(BUILD)/bench/v03/bench_geometry_v03.o -o $@ $(RAYLIB_LIBS)
 
 # bench_api: one binary from three compilations of bench_api.c (main, the showcase and the deferred example,
 # each example with its own copy of the header) plus bench_api_gl.h, the counting wrappers of every glad_gl*

@@ -486,7 +486,8 @@
 *         the visible runs. Draws take no sort (buffer order) and no fades; back faces are drawn in
 *         the modes that can show them. Hidden sprites: scale 0.
 *       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblAtlasBillboardFade(&atlas,
-*         player.frame, next, w, scale, &billboard) with next and w from RblSpriteBlend (instances:
+*         player.frame, next, w, scale, &billboard, &fade) with next and w from RblSpriteBlend, then
+*         RblBatchAddFade(&batch, mat, &billboard, &fade) or RblDrawBillboardFade (instances:
 *         RblAtlasInstanceFade, an RblFade beside each) mixes the next frame in by time/duration. The
 *         program fetches every map at both frames' UVs (a program without the option fetches once):
 *         colour in linear light weighted by coverage (a transparent texel's colour never bleeds in),
@@ -632,7 +633,10 @@
 *                         ADDED: RBL_VERSION, RBL_VERSION_MAJOR/MINOR/PATCH
 *                         CHANGED: the G-buffer keeps one 56-bit word and a float depth
 *                         CHANGED: shadow casters face the light by default (RblShadowDesc.faceCamera)
+*                         ADDED: batch culling (RblBatch.culled, .noCull): off-view billboards never expanded
 *                         CHANGED: RblGBufferView -> RblGBufferOutput; private members behind .state
+*                         CHANGED: a cross-fade travels beside the billboard (RblBatchAddFade,
+*                                  RblDrawBillboardFade): RblBillboard back to 0.3's 88 bytes
 *                         REMOVED: RblShadowDesc.faceLight (the default now)
 *       0.4 (2026-11-23)  CHANGED: the 1.0 API shape: a lit program is a raylib Shader of compiled
 *                                  features; values travel with the Material; one RblScene a frame
@@ -809,7 +813,6 @@ typedef struct RblBillboard {
     Vector3 axis;                   // AXIS: locked axis (zero = +Y); FIXED: facing normal (zero = +Z)
     float roundness;                // 0 = flat normal, 1 = fully rounded (see RBL_ROUND_CYLINDER)
     unsigned int flags;             // RblBillboardFlags
-    RblFade fade;                   // Cross-fade (weight 0 = none; a crossFade program draws it, see RblSpriteFade)
 } RblBillboard;
 
 // Vertex layout of the batched path (attribute locations are raylib's defaults)
@@ -841,9 +844,11 @@ typedef enum {
 typedef struct RblBatch {
     int sort;                       // RblSortMode, read by RblEndBatch (0 = submission order)
     float solidAlpha;               // RBL_SORT_HYBRID: alpha from which a texel is solid (0 = 1.0, fully opaque only)
+    bool noCull;                    // Read by RblBeginBatch: true = keep billboards outside the view (default: culled)
     int capacity;                   // Billboards reserved (CPU and GPU; doubles with a log line when full)
-    int count;                      // Billboards added since RblBeginBatch()
+    int count;                      // Billboards added since RblBeginBatch() (culled ones included)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    int culled;                     // Of count, billboards outside the view (camera, or a shadow pass's light): neither expanded nor drawn
     unsigned int id;                // Object id: a stale copy is recognised by it (0 = not loaded)
     struct rbl__BatchState *state;  // The header's: vertices, material runs, GL buffers, camera frame (NULL = not loaded)
 } RblBatch;
@@ -1070,7 +1075,7 @@ typedef struct RblLitShaderDesc {
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
-    bool crossFade;                 // Mix a second atlas frame (RblBillboard.fade, RblInstancedDesc.fades): every map fetched twice
+    bool crossFade;                 // Mix a second atlas frame (RblBatchAddFade, RblDrawBillboardFade, RblInstancedDesc.fades): every map fetched twice
     int debugOutput;                // RblDebugOutput (0 = the lit colour)
     bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (forward only)
     bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (forward only)
@@ -1291,8 +1296,10 @@ RBLAPI bool RblIsBatchValid(RblBatch batch);                                  //
 RBLAPI void RblUnloadBatch(RblBatch *batch);                                  // Unload batch buffers
 RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  // Start collecting billboards seen by camera; false = rejected (billboards still pending, bad camera)
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
+RBLAPI bool RblBatchAddFade(RblBatch *batch, Material material, const RblBillboard *billboard, const RblFade *fade); // Add one billboard cross-faded to a second frame (a crossFade program draws it); false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
+RBLAPI void RblDrawBillboardFade(Camera3D camera, Material material, RblBillboard billboard, RblFade fade); // Draw one cross-faded billboard now (immediate path)
 
 // Instanced path (GL): per-instance data only, quads expanded in the vertex shader (code: >>instanced)
 RBLAPI RblInstanceBuffer RblLoadInstanceBuffer(int capacity);                 // Load an instance buffer (0 = default capacity)
@@ -1362,7 +1369,7 @@ RBLAPI int RblAtlasFindFrame(const RblAtlas *atlas, const char *name);        //
 RBLAPI int RblAtlasFindTag(const RblAtlas *atlas, const char *name);          // First tag of that name; -1 when none
 RBLAPI bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale, RblBillboard *billboard); // Set source, size, origin and flags for a frame (world units per pixel); the rest kept
 RBLAPI bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblInstance *instance);   // The same for an instance
-RBLAPI bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard); // Cross-fade frame into nextFrame by weight 0..1: the quad covers both trims (each where its canvas and pivot put it), source, size, origin, flags and fade set; the rest kept
+RBLAPI bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard, RblFade *fade); // Cross-fade frame into nextFrame by weight 0..1: the quad covers both trims (each where its canvas and pivot put it), source, size, origin and flags set (the rest kept), fade filled for RblBatchAddFade / RblDrawBillboardFade
 RBLAPI bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblInstance *instance, RblFade *fade); // The same for an instance and its RblInstancedDesc.fades entry
 RBLAPI int RblAtlasFindSlice(const RblAtlas *atlas, const char *name, int frame); // Key (RblAtlas.slices) of the named slice that applies at frame; -1 when none
 RBLAPI bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float worldScale, RblBillboard *billboard); // Draw slice key slice of frame alone: source, size, origin, flags for its part of the trim about its own pivot; the rest kept
@@ -1515,6 +1522,7 @@ typedef struct rbl__BatchRun {
     Material material;              // Material the run draws with
     int first;                      // First billboard
     int count;                      // Billboards in the run
+    int textureWidth, textureHeight; // Its albedo's size (rbl__albedoSize), read once per run
 } rbl__BatchRun;
 
 // A billboard's facing frame before its rotation, kept by a batch for the next billboard with the
@@ -1545,6 +1553,9 @@ typedef struct rbl__BatchState {
     RblCameraFrame view;                   // Frame of the current camera
     rbl__FrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
+    int culled;                     // Billboards accepted but outside the view since RblBeginBatch() (not in count)
+    int planeCount;                 // Culling planes in use: 0 (off), 4 (a shadow pass's sides) or 6 (a camera's frustum)
+    float planes[6][4];             // Unit normal and offset of each: a point p is inside where n.p + d >= 0
     bool orthographic;              // The camera's projection (which side of a quad it sees)
     bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
@@ -1829,7 +1840,7 @@ static unsigned int rbl__liveAdd(const void *state)
 }
 
 // The slot id names, or -1 (id 0 and ids of empty or reused slots included)
-static int rbl__liveSlot(unsigned int id)
+static inline int rbl__liveSlot(unsigned int id)
 {
     unsigned int slot = (id & 0xFFFFu) - 1u;
     return ((id != 0u) && (slot < (unsigned int)rbl__state.liveCount) && (rbl__state.live[slot].id == id))? (int)slot : -1;
@@ -1842,7 +1853,7 @@ static void rbl__liveRemove(unsigned int id)
 }
 
 // Whether (id, state) is a loaded object: the id first, then its state pointer compared (not read)
-static bool rbl__isLive(unsigned int id, const void *state)
+static inline bool rbl__isLive(unsigned int id, const void *state)
 {
     int slot = rbl__liveSlot(id);
     return (slot >= 0) && (state != NULL) && (rbl__state.live[slot].state == state);
@@ -4174,6 +4185,14 @@ static inline bool rbl__allFinite(const void *f, int n) { return rbl__exponentsB
 // Largest texture side a billboard's frame may come from
 #define RBL__MAX_TEXTURE_SIDE 65536
 static inline float rbl__len2(Vector3 v) { return v.x*v.x + v.y*v.y + v.z*v.z; }
+// The same bits (a cache key: -0 and 0, NaNs told apart), without a library call per billboard
+static inline bool rbl__sameBits3(const Vector3 *a, const Vector3 *b)
+{
+    unsigned int x[3], y[3];
+    memcpy(x, a, sizeof(x));
+    memcpy(y, b, sizeof(y));
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1]) | (x[2] ^ y[2])) == 0u;
+}
 static inline float rbl__dot(Vector3 a, Vector3 b) { return a.x*b.x + a.y*b.y + a.z*b.z; }
 static inline Vector3 rbl__sub(Vector3 a, Vector3 b) { return rbl__v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline Vector3 rbl__neg(Vector3 a) { return rbl__v3(-a.x, -a.y, -a.z); }
@@ -4557,8 +4576,7 @@ static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, 
 static void rbl__facingFrame(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, rbl__FrameCache *cache)
 {
     int facing = rbl__castFacing(cast, b->facing);
-    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (facing == RBL_FACING_CAMERA_PLANE) &&
-        (memcmp(&cache->key, &b->up, sizeof(Vector3)) == 0)) return;
+    if ((cache->facing == RBL_FACING_CAMERA_PLANE) && (facing == RBL_FACING_CAMERA_PLANE) && rbl__sameBits3(&cache->key, &b->up)) return;
     Vector3 R, U, N;
     rbl__facingBasis(view, cast, b, &R, &U, &N);
     float ulen = 1.0f;
@@ -4606,7 +4624,7 @@ static bool rbl__fadeOk(const RblFade *f, unsigned int limitExponent)
     return rbl__finite(f->weight) && (f->weight >= 0.0f) && (f->weight <= 1.0f) && rbl__exponentsBelow(&f->source, 4, limitExponent);
 }
 
-static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
+static inline bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
     // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
@@ -4614,7 +4632,7 @@ static bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textur
         !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
     // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
     if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
-    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__fadeOk(&b->fade, RBL__BILLBOARD_LIMIT_EXPONENT);
+    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED);
 }
 
 // A frame's +U (t) and +V (v) in the quad's (right, up) plane, for its mirrors and rotation (as the
@@ -4640,10 +4658,10 @@ static void rbl__fadeClipEdges(Rectangle c, float out[4])
 // top-right, top-left) the second frame's texture coordinate, the weight, and its axes against the
 // first frame's as material.glsl's rblFadeAxes reads them (swap + 2 negT + 4 negV); then each
 // frame's position in its clip rectangle (material.glsl fragFadeClip)
-static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textureHeight, float out[RBL__FADE_FLOATS])
+static void rbl__fadeVertices(const RblBillboard *b, const RblFade *fade, int textureWidth, int textureHeight, float out[RBL__FADE_FLOATS])
 {
-    Rectangle src[2] = { b->source, b->fade.source };
-    bool rotated[2] = { (b->flags & RBL_FRAME_ROTATED) != 0, (b->fade.flags & RBL_FRAME_ROTATED) != 0 };
+    Rectangle src[2] = { b->source, fade->source };
+    bool rotated[2] = { (b->flags & RBL_FRAME_ROTATED) != 0, (fade->flags & RBL_FRAME_ROTATED) != 0 };
     float t[2][2], v[2][2];
     for (int k = 0; k < 2; k++)
     {
@@ -4662,8 +4680,8 @@ static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textu
     float fu0 = f.x*invW, fu1 = (f.x + fabsf(f.width))*invW, fv0 = f.y*invH, fv1 = (f.y + fabsf(f.height))*invH;
     static const float cs[4] = { 0.0f, 1.0f, 1.0f, 0.0f }, ct[4] = { 1.0f, 1.0f, 0.0f, 0.0f };
     float edges[2][4];
-    rbl__fadeClipEdges(b->fade.clip[0], edges[0]);
-    rbl__fadeClipEdges(b->fade.clip[1], edges[1]);
+    rbl__fadeClipEdges(fade->clip[0], edges[0]);
+    rbl__fadeClipEdges(fade->clip[1], edges[1]);
     for (int i = 0; i < 4; i++)
     {
         float sc = flipU? 1.0f - cs[i] : cs[i], tc = flipV? 1.0f - ct[i] : ct[i];
@@ -4671,7 +4689,7 @@ static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textu
         float *o = out + i*RBL__FADE_VERTEX_FLOATS;
         o[0] = (fu > 0.5f)? fu1 : fu0;
         o[1] = (fv > 0.5f)? fv1 : fv0;
-        o[2] = b->fade.weight;
+        o[2] = fade->weight;
         o[3] = code;
         // Clip rectangles are in the picture: a mirrored quad mirrors them with it
         int ps = ((b->size.x < 0.0f) != (cs[i] > 0.5f))? 1 : 0, pt = ((b->size.y < 0.0f) != (ct[i] > 0.5f))? 1 : 0;
@@ -4680,10 +4698,17 @@ static void rbl__fadeVertices(const RblBillboard *b, int textureWidth, int textu
     }
 }
 
+static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4]);
+
 static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     if (!rbl__billboardOk(b, textureWidth, textureHeight)) return false;
+    return rbl__expandBillboard(view, cast, cache, textureWidth, textureHeight, b, out);
+}
 
+// rbl__billboardVertices once b is known good
+static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+{
     rbl__facingFrame(view, cast, b, cache);
     Vector3 R = cache->right, U = cache->up, N = cache->normal;
 
@@ -4734,8 +4759,9 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
     p[1] = rbl__v3(P.x + R.x*x1 + U.x*y0, P.y + R.y*x1 + U.y*y0, P.z + R.z*x1 + U.z*y0);
     p[2] = rbl__v3(P.x + R.x*x1 + U.x*y1, P.y + R.y*x1 + U.y*y1, P.z + R.z*x1 + U.z*y1);
     p[3] = rbl__v3(P.x + R.x*x0 + U.x*y1, P.y + R.y*x0 + U.y*y1, P.z + R.z*x0 + U.z*y1);
-    // Huge sizes overflowing float: skip, never write Inf (the output stays untouched)
-    if (!rbl__allFinite(p, 12)) return false;
+    // No corner can overflow: rbl__billboardOk bounds the pivot, size and origin below 2^60 and
+    // CAMERA_PLANE's up below 2^30, R and U are unit and an AXIS caster's tilt moves the pivot by
+    // less than twice the footprint, so every sum stays below 2^93 (no check per corner here)
 
     // Source frame (zero = whole texture); flips mirror inside it. As raylib's DrawTexturePro, a
     // negative extent flips and the rectangle still starts at (x, y).
@@ -4912,11 +4938,11 @@ static unsigned int rbl__casterId(Vector3 pivot, Vector2 size, Vector2 origin)
     return (h == 0u)? 1u : h;
 }
 
-static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn);
+static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn);
 
 // The pass in progress: the shadow map's or G-buffer's id, 0 for a colour pass. A batch collects for
 // one pass (its frame and programs are that pass's)
-static unsigned int rbl__passNow(void)
+static inline unsigned int rbl__passNow(void)
 {
     if (rbl__state.shadowPass != NULL) return rbl__state.shadowPass->id;
     if (rbl__state.gbufferPass != NULL) return rbl__state.gbufferPass->id;
@@ -4924,7 +4950,7 @@ static unsigned int rbl__passNow(void)
 }
 
 // The state of a loaded batch, or NULL (never dereferences a stale copy's pointer)
-static rbl__BatchState *rbl__batchState(const RblBatch *batch)
+static inline rbl__BatchState *rbl__batchState(const RblBatch *batch)
 {
     return ((batch != NULL) && rbl__isLive(batch->id, batch->state))? batch->state : NULL;
 }
@@ -4991,6 +5017,74 @@ void RblUnloadBatch(RblBatch *batch)
     if (batch != &rbl__state.immediate) rbl__tidyAfterClose();
 }
 
+// Culling planes of the transform the batch will draw with (rlgl's projection x modelview, a point
+// p inside where every n.p + d >= 0; clip-space planes w +- x, w +- y, w +- z). A colour or G-buffer
+// pass culls only where rlgl's modelview is the camera's view (inside BeginMode3D(camera) with no
+// transform of the caller's pushed: else nothing is culled, never wrongly); a shadow pass by its
+// light's four sides (the header set its matrices; casters before or beyond its depth range are
+// kept). Returns the plane count (0 = no culling).
+static int rbl__cullPlanes(const RblCameraFrame *view, bool shadowPass, float planes[6][4])
+{
+    Matrix mv = rlGetMatrixModelview(), pr = rlGetMatrixProjection();
+    float a[16], b[16], m[16];
+    rbl__matToArray(mv, a);
+    rbl__matToArray(pr, b);
+    if (!shadowPass)
+    {
+        // Rows of the view: right, up, back and their offsets -axis.eye (raymath's MatrixLookAt)
+        const Vector3 axes[3] = { view->right, view->up, view->back };
+        const float tol = 1e-4f, tolT = 1e-4f*(1.0f + fabsf(view->eye.x) + fabsf(view->eye.y) + fabsf(view->eye.z));
+        for (int r = 0; r < 3; r++)
+        {
+            const float row[4] = { a[r], a[4 + r], a[8 + r], a[12 + r] };
+            if (!((fabsf(row[0] - axes[r].x) <= tol) && (fabsf(row[1] - axes[r].y) <= tol) && (fabsf(row[2] - axes[r].z) <= tol) &&
+                  (fabsf(row[3] + rbl__dot(axes[r], view->eye)) <= tolT))) return 0;
+        }
+        if (!((a[3] == 0.0f) && (a[7] == 0.0f) && (a[11] == 0.0f) && (a[15] == 1.0f))) return 0;
+    }
+    // m = modelview then projection (raylib's MatrixMultiply(mv, pr)), column-major as GL reads it
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 4; r++)
+            m[c*4 + r] = a[c*4 + 0]*b[0*4 + r] + a[c*4 + 1]*b[1*4 + r] + a[c*4 + 2]*b[2*4 + r] + a[c*4 + 3]*b[3*4 + r];
+    int count = shadowPass? 4 : 6;
+    for (int k = 0; k < count; k++)
+    {
+        int row = k/2;
+        float sg = (k & 1)? -1.0f : 1.0f;       // w + row, w - row
+        float p[4] = { m[3] + sg*m[row], m[7] + sg*m[4 + row], m[11] + sg*m[8 + row], m[15] + sg*m[12 + row] };
+        float len = sqrtf(p[0]*p[0] + p[1]*p[1] + p[2]*p[2]);
+        if (!rbl__finite(len) || !(len > 0.0f) || !rbl__finite(p[3])) return 0;
+        for (int i = 0; i < 4; i++) planes[k][i] = p[i]/len;
+    }
+    return count;
+}
+
+// Whether billboard b (checked by rbl__billboardOk) lies wholly outside one culling plane: its
+// corners lie within the sphere about the pivot through the farthest footprint corner (rotation
+// turns the footprint about the pivot; CAMERA_PLANE's caller up scales its height; a shadow pass's
+// AXIS tilt moves it by at most twice that, so its sphere is three times as large)
+static bool rbl__culled(const rbl__BatchState *batch, const RblBillboard *b)
+{
+    float ulen = 1.0f;
+    if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
+    {
+        if ((batch->frame.facing == RBL_FACING_CAMERA_PLANE) && rbl__sameBits3(&batch->frame.key, &b->up)) ulen = batch->frame.upLength;
+        else ulen = sqrtf(rbl__len2(b->up));
+    }
+    float sx = fabsf(b->size.x), sy = fabsf(b->size.y)*ulen;
+    float ex = fmaxf(fabsf(b->origin.x), fabsf(sx - b->origin.x)), ey = fmaxf(fabsf(b->origin.y), fabsf(sy - b->origin.y));
+    float r2 = (ex*ex + ey*ey)*(((batch->planeCount == 4) && (b->facing == RBL_FACING_AXIS))? 9.0f : 1.0f);
+    r2 *= 1.0f + 1e-5f;        // rounding of the corners' own sums
+    const Vector3 c = b->position;
+    for (int k = 0; k < batch->planeCount; k++)
+    {
+        const float *p = batch->planes[k];
+        float d = p[0]*c.x + p[1]*c.y + p[2]*c.z + p[3];
+        if ((d < 0.0f) && (d*d > r2)) return true;
+    }
+    return false;
+}
+
 bool RblBeginBatch(RblBatch *pub, Camera3D camera)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
@@ -5002,6 +5096,7 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     }
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: camera with NaN/Inf fields"); return false; }
     batch->view = rbl__cameraFrame(camera);
+    batch->planeCount = pub->noCull? 0 : rbl__cullPlanes(&batch->view, rbl__state.shadowPass != NULL, batch->planes);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     batch->backFacing = false;
@@ -5011,20 +5106,22 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
+    batch->culled = 0;
     batch->begun = true;
     batch->pass = rbl__passNow();
-    pub->count = 0; pub->skipped = 0;
+    pub->count = 0; pub->skipped = 0; pub->culled = 0;
     return true;
 }
 
 // Whether b continues a's run: compares pointers before reading a's maps (b's are the same array)
-static bool rbl__sameMaterial(const Material *a, const Material *b)
+static inline bool rbl__sameMaterial(const Material *a, const Material *b)
 {
     if ((a->shader.id != b->shader.id) || (a->shader.locs != b->shader.locs) || (a->maps != b->maps) || (a->maps == NULL)) return false;
+    const Color ca = a->maps[MATERIAL_MAP_ALBEDO].color, cb = b->maps[MATERIAL_MAP_ALBEDO].color;
     return (a->maps[MATERIAL_MAP_ALBEDO].texture.id == b->maps[MATERIAL_MAP_ALBEDO].texture.id) &&
            (a->maps[MATERIAL_MAP_METALNESS].texture.id == b->maps[MATERIAL_MAP_METALNESS].texture.id) &&
            (a->maps[MATERIAL_MAP_NORMAL].texture.id == b->maps[MATERIAL_MAP_NORMAL].texture.id) &&
-           (memcmp(&a->maps[MATERIAL_MAP_ALBEDO].color, &b->maps[MATERIAL_MAP_ALBEDO].color, sizeof(Color)) == 0);
+           (ca.r == cb.r) && (ca.g == cb.g) && (ca.b == cb.b) && (ca.a == cb.a);
 }
 
 // Grow CPU storage by doubling; the GPU buffer follows at the next RblEndBatch()
@@ -5052,21 +5149,45 @@ static bool rbl__growBatch(rbl__BatchState *batch)
     return true;
 }
 
-bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
+// The batch an add goes to, or NULL (logged under fn)
+static inline rbl__BatchState *rbl__batchForAdd(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
     if ((batch == NULL) || !batch->begun || (batch->pass != rbl__passNow()))
     {
-        TraceLog(LOG_WARNING, "RBL: RblBatchAdd: %s", (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
+        TraceLog(LOG_WARNING, "RBL: %s: %s", fn, (batch == NULL)? "batch not loaded" : !batch->begun? "no RblBeginBatch in progress" :
                  "the batch began in another pass (shadow map, G-buffer or colour): add and end it in the pass it began in");
-        return false;
+        return NULL;
     }
-    bool added = rbl__batchAdd(batch, material, billboard, "RblBatchAdd");
-    pub->capacity = batch->capacity; pub->count = batch->count; pub->skipped = batch->skipped;
+    return batch;
+}
+
+bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
+{
+    rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAdd");
+    if (batch == NULL) return false;
+    bool added = rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
+    pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
 
-static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBillboard *billboard, const char *fn)
+// The cross-fade's own entry point: the plain path above never reads or checks fade data
+bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billboard, const RblFade *fade)
+{
+    rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAddFade");
+    if (batch == NULL) return false;
+    bool added = false;
+    if ((fade == NULL) || !rbl__fadeOk(fade, RBL__BILLBOARD_LIMIT_EXPONENT))
+    {
+        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: RblBatchAddFade: billboard skipped (%s); further skips this batch are not logged", (fade == NULL)? "NULL fade" : "fade weight outside 0..1, NaN/Inf or huge source, or bad clip");
+    }
+    else added = rbl__batchAdd(batch, &material, billboard, fade, "RblBatchAddFade");
+    pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
+    return added;
+}
+
+// fade: NULL for a plain billboard (checked by the caller otherwise)
+static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
 {
     if ((batch->count == batch->capacity) && !rbl__growBatch(batch))
     {
@@ -5075,12 +5196,15 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
     }
 
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
-    const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, &material);
+    const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, material);
     rbl__Program *program = NULL;
-    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program) : NULL;
+    const char *bad = (billboard == NULL)? "NULL billboard" : newRun? rbl__materialProblem(material, RBL__PATH_BILLBOARD, &program) : NULL;
     int texW = 1, texH = 1;
-    if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);       // the maps are read once the shader is known live
-    if ((bad == NULL) && !rbl__billboardVertices(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    if ((bad == NULL) && newRun) rbl__albedoSize(material, &texW, &texH);       // the maps are read once the shader is known live
+    else if (bad == NULL) { texW = run->textureWidth; texH = run->textureHeight; }   // the same maps (rbl__sameMaterial)
+    if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
+    if ((bad == NULL) && (batch->planeCount > 0) && rbl__culled(batch, billboard)) { batch->culled++; return true; }
+    if ((bad == NULL) && !rbl__expandBillboard(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
         bad = "NaN/Inf or huge input, or bad facing";
     if (bad != NULL)
     {
@@ -5108,9 +5232,11 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         for (int v = 0; v < 4; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
     }
     // The fade stream starts with the first faded billboard (earlier ones get weight 0); a clipped
-    // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn)
-    const Rectangle *clip = billboard->fade.clip;
-    if ((billboard->fade.weight > 0.0f) || batch->fading || (clip[0].width != 0.0f) || (clip[0].height != 0.0f) || (clip[1].width != 0.0f) || (clip[1].height != 0.0f))
+    // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn).
+    // Plain billboards after it get weight 0 and no clip (zeros)
+    if ((fade != NULL) && !batch->fading && !(fade->weight > 0.0f) && (fade->clip[0].width == 0.0f) && (fade->clip[0].height == 0.0f) &&
+        (fade->clip[1].width == 0.0f) && (fade->clip[1].height == 0.0f)) fade = NULL;       // nothing to draw yet: no stream
+    if ((fade != NULL) || batch->fading)
     {
         if (batch->fade == NULL) batch->fade = (float *)RBL_MALLOC((size_t)batch->capacity*RBL__FADE_FLOATS*sizeof(float));
         if (batch->fade == NULL)
@@ -5120,12 +5246,17 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
         }
         if (!batch->fading) memset(batch->fade, 0, (size_t)batch->count*RBL__FADE_FLOATS*sizeof(float));
         batch->fading = true;
-        rbl__fadeVertices(billboard, texW, texH, batch->fade + (size_t)batch->count*RBL__FADE_FLOATS);
+        float *row = batch->fade + (size_t)batch->count*RBL__FADE_FLOATS;
+        if (fade != NULL) rbl__fadeVertices(billboard, fade, texW, texH, row);
+        else memset(row, 0, RBL__FADE_FLOATS*sizeof(float));
     }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
-    Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
-    if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
+    if (!batch->backFacing)
+    {
+        Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
+        if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
+    }
 
     if (newRun)
     {
@@ -5137,9 +5268,10 @@ static bool rbl__batchAdd(rbl__BatchState *batch, Material material, const RblBi
             batch->runCapacity *= 2;
         }
         run = &batch->runs[batch->runCount++];
-        run->material = material;
+        run->material = *material;
         run->first = batch->count;
         run->count = 0;
+        run->textureWidth = texW; run->textureHeight = texH;
     }
     run->count++;
     batch->count++;
@@ -5457,7 +5589,8 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (cullOff) rlEnableBackfaceCulling();
 }
 
-void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard)
+// The immediate path: a one-quad batch (fade NULL for a plain billboard)
+static void rbl__drawBillboard(Camera3D camera, Material material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
 {
     RblBatch *immediate = &rbl__state.immediate;
     // Everything is checked before the one-quad batch is touched (or created on first use)
@@ -5466,17 +5599,22 @@ void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard
     const char *bad = !rbl__cameraOk(camera)? "camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection" :
                       rbl__materialProblem(&material, RBL__PATH_BILLBOARD, &program);
     if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);
-    if ((bad == NULL) && !rbl__billboardOk(&billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
-    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawBillboard: %s", bad); return; }
+    if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
+    if ((bad == NULL) && (fade != NULL) && !rbl__fadeOk(fade, RBL__BILLBOARD_LIMIT_EXPONENT)) bad = "fade weight outside 0..1, NaN/Inf or huge source, or bad clip";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return; }
     if (immediate->state == NULL)
     {
         *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
         if (!RblIsBatchValid(*immediate)) return;
     }
     RblBeginBatch(immediate, camera);
-    rbl__batchAdd(immediate->state, material, &billboard, "RblDrawBillboard");
-    rbl__endBatch(immediate, "RblDrawBillboard");
+    rbl__batchAdd(immediate->state, &material, billboard, fade, fn);
+    rbl__endBatch(immediate, fn);
 }
+
+void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard) { rbl__drawBillboard(camera, material, &billboard, NULL, "RblDrawBillboard"); }
+
+void RblDrawBillboardFade(Camera3D camera, Material material, RblBillboard billboard, RblFade fade) { rbl__drawBillboard(camera, material, &billboard, &fade, "RblDrawBillboardFade"); }
 
 // After RblClose, the module's tables go with the last object the caller still holds (nothing loaded
 // and no lit program left): the next load starts afresh
@@ -11225,14 +11363,14 @@ static bool rbl__atlasFadeQuad(const RblAtlas *atlas, int frame, int nextFrame, 
     return true;
 }
 
-bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard)
+bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, float weight, float worldScale, RblBillboard *billboard, RblFade *fade)
 {
-    if (billboard == NULL) { TraceLog(LOG_WARNING, "RBL: RblAtlasBillboardFade: NULL billboard"); return false; }
-    Rectangle src; Vector2 size, origin; unsigned int flags; RblFade fade;
-    if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasBillboardFade", &src, &size, &origin, &flags, &fade)) return false;
+    if ((billboard == NULL) || (fade == NULL)) { TraceLog(LOG_WARNING, "RBL: RblAtlasBillboardFade: NULL billboard or fade"); return false; }
+    Rectangle src; Vector2 size, origin; unsigned int flags; RblFade f;
+    if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasBillboardFade", &src, &size, &origin, &flags, &f)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
     billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
-    billboard->fade = fade;
+    *fade = f;
     return true;
 }
 

@@ -366,8 +366,8 @@ static void test_alloc_fade_streams_fail_cleanly_and_keep_objects_valid(void)
             {
                 RblBillboard x = bb;
                 x.position.z = -0.01f*i;
-                x.fade.weight = (i >= 3)? 0.5f : 0.0f;       // the stream starts at the fourth billboard
-                added += RblBatchAdd(&b, m, &x);
+                RblFade f; memset(&f, 0, sizeof(f)); f.weight = 0.5f;
+                added += (i >= 3)? RblBatchAddFade(&b, m, &x, &f) : RblBatchAdd(&b, m, &x);   // the stream starts at the fourth billboard
             }
             RblEndBatch(&b);
             bool hit = injected();
@@ -375,9 +375,8 @@ static void test_alloc_fade_streams_fail_cleanly_and_keep_objects_valid(void)
             RT_CHECK(RblIsBatchValid(b) && (b.count == added), "fade batch failure %ld: invalid batch or count %d vs %d added", n, b.count, added);
             if (hit) RT_CHECK(warnings == 1, "fade batch failure %ld: %d lines, %d added (last: %s)", n, warnings, added, lastWarning);
             RblBeginBatch(&b, frontCamera());
-            bb.fade.weight = 0.5f;
-            RT_CHECK(RblBatchAdd(&b, m, &bb), "fade batch %ld unusable after the failure", n);
-            bb.fade.weight = 0.0f;
+            RblFade half; memset(&half, 0, sizeof(half)); half.weight = 0.5f;
+            RT_CHECK(RblBatchAddFade(&b, m, &bb, &half), "fade batch %ld unusable after the failure", n);
             RblEndBatch(&b);
             RblUnloadBatch(&b);
             RT_CHECK(allocLive == liveBefore, "fade batch failure %ld: %ld allocations leaked", n, allocLive - liveBefore);

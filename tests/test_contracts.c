@@ -202,10 +202,12 @@ static const Field billboardFloats[] = {
     FIELD(RblBillboard, rotation), FIELD(RblBillboard, source.x), FIELD(RblBillboard, source.y),
     FIELD(RblBillboard, source.width), FIELD(RblBillboard, source.height), FIELD(RblBillboard, up.x), FIELD(RblBillboard, up.y),
     FIELD(RblBillboard, up.z), FIELD(RblBillboard, axis.x), FIELD(RblBillboard, axis.y), FIELD(RblBillboard, axis.z),
-    FIELD(RblBillboard, roundness), FIELD(RblBillboard, fade.source.x), FIELD(RblBillboard, fade.source.y),
-    FIELD(RblBillboard, fade.source.width), FIELD(RblBillboard, fade.source.height), FIELD(RblBillboard, fade.weight),
-    FIELD(RblBillboard, fade.clip[0].x), FIELD(RblBillboard, fade.clip[0].y), FIELD(RblBillboard, fade.clip[0].width), FIELD(RblBillboard, fade.clip[0].height),
-    FIELD(RblBillboard, fade.clip[1].x), FIELD(RblBillboard, fade.clip[1].y), FIELD(RblBillboard, fade.clip[1].width), FIELD(RblBillboard, fade.clip[1].height) };
+    FIELD(RblBillboard, roundness) };
+// A cross-fade's floats (RblBatchAddFade, RblDrawBillboardFade)
+static const Field fadeFloats[] = {
+    FIELD(RblFade, source.x), FIELD(RblFade, source.y), FIELD(RblFade, source.width), FIELD(RblFade, source.height), FIELD(RblFade, weight),
+    FIELD(RblFade, clip[0].x), FIELD(RblFade, clip[0].y), FIELD(RblFade, clip[0].width), FIELD(RblFade, clip[0].height),
+    FIELD(RblFade, clip[1].x), FIELD(RblFade, clip[1].y), FIELD(RblFade, clip[1].width), FIELD(RblFade, clip[1].height) };
 static const Field cameraFloats[] = {
     FIELD(Camera3D, position.x), FIELD(Camera3D, position.y), FIELD(Camera3D, position.z), FIELD(Camera3D, target.x),
     FIELD(Camera3D, target.y), FIELD(Camera3D, target.z), FIELD(Camera3D, up.x), FIELD(Camera3D, up.y), FIELD(Camera3D, up.z),
@@ -1449,17 +1451,18 @@ static void c_atlas_fade_quads(void)
     RblBillboard b, b0; memset(&b, 0x5A, sizeof(b)); b0 = b;
     RblInstance in, in0; memset(&in, 0x5A, sizeof(in)); in0 = in;
     RblFade f, f0; memset(&f, 0x5A, sizeof(f)); f0 = f;
-    RblBillboard one0; RblInstance in1; RblFade f1;         // outputs of accepted calls
-    EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, 1.0f, NULL));
+    RblBillboard one0; RblInstance in1; RblFade f1, f2;         // outputs of accepted calls
+    EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, 1.0f, NULL, &f));
+    EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, 1.0f, &b, NULL));
     EXPECT_REFUSED(RblAtlasInstanceFade(&a, 0, 1, 0.5f, 1.0f, NULL, &f));
     EXPECT_REFUSED(RblAtlasInstanceFade(&a, 0, 1, 0.5f, 1.0f, &in, NULL));
-    EXPECT_REFUSED(RblAtlasBillboardFade(NULL, 0, 1, 0.5f, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasBillboardFade(NULL, 0, 1, 0.5f, 1.0f, &b, &f));
     EXPECT_REFUSED(RblAtlasInstanceFade(&zero, 0, 1, 0.5f, 1.0f, &in, &f));
     const int frames[4] = { -1, 2, INT_MIN, INT_MAX };
     for (int k = 0; k < 4; k++)
     {
-        EXPECT_REFUSED(RblAtlasBillboardFade(&a, frames[k], 1, 0.5f, 1.0f, &b));
-        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, frames[k], 0.5f, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, frames[k], 1, 0.5f, 1.0f, &b, &f));
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, frames[k], 0.5f, 1.0f, &b, &f));
         EXPECT_REFUSED(RblAtlasInstanceFade(&a, frames[k], 0, 0.5f, 1.0f, &in, &f));
         EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, frames[k], 0.5f, 1.0f, &in, &f));
     }
@@ -1467,14 +1470,14 @@ static void c_atlas_fade_quads(void)
     for (int vi = 0; vi < 9; vi++)
     {
         float w = (vi < 5)? badFloats[vi] : weights[vi - 5];
-        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, w, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, w, 1.0f, &b, &f));
         EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, 0, w, 1.0f, &in, &f));
     }
     const float scales[4] = { 0.0f, -1.0f, 2e15f, -1e-45f };
     for (int vi = 0; vi < 9; vi++)
     {
         float sc = (vi < 5)? badFloats[vi] : scales[vi - 5];
-        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, sc, &b));
+        EXPECT_REFUSED(RblAtlasBillboardFade(&a, 0, 1, 0.5f, sc, &b, &f));
         EXPECT_REFUSED(RblAtlasInstanceFade(&a, 1, 0, 0.5f, sc, &in, &f));
     }
     // Frames on different sheets (one texture is sampled); a frame with an empty trim cannot reach the
@@ -1486,21 +1489,22 @@ static void c_atlas_fade_quads(void)
        RblIsAtlasValid(p), p.pageCount, p.frameCount);
     if (RblIsAtlasValid(p) && (p.frameCount == 3))
     {
-        EXPECT_REFUSED(RblAtlasBillboardFade(&p, 0, 2, 0.5f, 1.0f, &b));
+        EXPECT_REFUSED(RblAtlasBillboardFade(&p, 0, 2, 0.5f, 1.0f, &b, &f));
         EXPECT_REFUSED(RblAtlasInstanceFade(&p, 2, 1, 0.5f, 1.0f, &in, &f));
-        ck(RblAtlasBillboardFade(&p, 0, 1, 0.5f, 1.0f, &one0) && RblAtlasInstanceFade(&p, 1, 0, 0.5f, 1.0f, &in1, &f1), "frames of one sheet refused: %s", lastWarning);
+        ck(RblAtlasBillboardFade(&p, 0, 1, 0.5f, 1.0f, &one0, &f1) && RblAtlasInstanceFade(&p, 1, 0, 0.5f, 1.0f, &in1, &f2), "frames of one sheet refused: %s", lastWarning);
     }
     RblUnloadAtlas(&p);
     EXPECT_REFUSED(loadedFromMemory(emptyTrim, (int)strlen(emptyTrim), RBL_ATLAS_LIBGDX));
     ck(memcmp(&b, &b0, sizeof(b)) == 0 && memcmp(&in, &in0, sizeof(in)) == 0 && memcmp(&f, &f0, sizeof(f)) == 0, "refused calls wrote their outputs");
     RblBillboard one; memset(&one, 0, sizeof(one)); memset(&b, 0, sizeof(b));
-    ck(RblAtlasBillboard(&a, 1, 2.0f, &one) && RblAtlasBillboardFade(&a, 1, 1, 0.25f, 2.0f, &b) && memcmp(&one.source, &b.source, sizeof(Rectangle)) == 0 &&
-       memcmp(&one.size, &b.size, sizeof(Vector2)) == 0 && memcmp(&one.origin, &b.origin, sizeof(Vector2)) == 0 && b.flags == one.flags && b.fade.weight == 0.25f &&
-       b.fade.clip[0].x == 0.0f && b.fade.clip[0].width == 1.0f && b.fade.clip[1].y == 0.0f && b.fade.clip[1].height == 1.0f, "equal frames: not the single frame's quad");
+    RblFade bf; memset(&bf, 0, sizeof(bf));
+    ck(RblAtlasBillboard(&a, 1, 2.0f, &one) && RblAtlasBillboardFade(&a, 1, 1, 0.25f, 2.0f, &b, &bf) && memcmp(&one.source, &b.source, sizeof(Rectangle)) == 0 &&
+       memcmp(&one.size, &b.size, sizeof(Vector2)) == 0 && memcmp(&one.origin, &b.origin, sizeof(Vector2)) == 0 && b.flags == one.flags && bf.weight == 0.25f &&
+       bf.clip[0].x == 0.0f && bf.clip[0].width == 1.0f && bf.clip[1].y == 0.0f && bf.clip[1].height == 1.0f, "equal frames: not the single frame's quad");
     ck(RblAtlasInstanceFade(&a, 0, 1, 1.0f, 1e15f, &in, &f) && allFinite(&in.size.x, 2) && allFinite(&in.origin.x, 2) && allFinite(&f.clip[0].x, 8) && allFinite(&f.source.x, 4), "largest scale: non-finite or refused");
     RblAtlas stale = a;
     RblUnloadAtlas(&a);
-    EXPECT_REFUSED(RblAtlasBillboardFade(&stale, 0, 1, 0.5f, 1.0f, &b));
+    EXPECT_REFUSED(RblAtlasBillboardFade(&stale, 0, 1, 0.5f, 1.0f, &b, &f));
     EXPECT_REFUSED(RblAtlasInstanceFade(&stale, 0, 1, 0.5f, 1.0f, &in, &f));
 }
 
@@ -1588,6 +1592,18 @@ static void expectBillboardRefused(Material m, RblBillboard b)
     RblUnloadBatch(&batch);
 }
 
+// The same for a cross-fade (fade NULL: the batch's entry point only, the immediate one takes a value)
+static void expectFadeRefused(Material m, RblBillboard b, const RblFade *f)
+{
+    if (f != NULL) EXPECT_REFUSED(V(RblDrawBillboardFade(camera(), m, b, *f)));
+    RblBatch batch = RblLoadBatch(2);
+    RblBeginBatch(&batch, camera());
+    EXPECT_REFUSED(RblBatchAddFade(&batch, m, &b, f));
+    ck(batch.count == 0 && batch.skipped == 1, "refused fade: count %d, skipped %d", batch.count, batch.skipped);
+    RblEndBatch(&batch);
+    RblUnloadBatch(&batch);
+}
+
 // Cross-fades: RblSpriteFade refuses what RblSpriteBlend refuses (fade untouched) and fills a good
 // one; a fade weight outside 0..1 or NaN/Inf fade floats are refused on every path (one line; an
 // instanced draw skips that instance and draws the rest, its fades still paired)
@@ -1621,11 +1637,29 @@ static void c_fades(void)
     fd.crossFade = true;
     Material m = litMaterial(fd);
     const float outside[4] = { -1e-7f, -0.5f, 1.0000001f, 2.0f };
+    RblFade none; memset(&none, 0, sizeof(none));
     for (int k = 0; k < 4; k++)
     {
+        RblFade bf = none;
+        bf.weight = outside[k];
+        expectFadeRefused(m, billboard(), &bf);
+    }
+    expectFadeRefused(m, billboard(), NULL);
+    for (int fi = 0; fi < COUNT_OF(fadeFloats); fi++) for (int vi = 0; vi < 5; vi++)
+    {
+        RblFade bf = none;
+        bf.weight = 0.5f;
+        SET_FIELD(bf, fadeFloats[fi], badFloats[vi]);
+        expectFadeRefused(m, billboard(), &bf);
+    }
+    // The plain entry points never read a fade: a good billboard added beside bad fades is drawn
+    {
+        RblBatch batch = RblLoadBatch(2);
         RblBillboard b = billboard();
-        b.fade.weight = outside[k];
-        expectBillboardRefused(m, b);
+        RblBeginBatch(&batch, camera());
+        ck(RblBatchAdd(&batch, m, &b) && batch.count == 1 && batch.skipped == 0, "plain billboard in a crossFade batch refused");
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
     }
     // Instanced: every fade float bad, and weights outside 0..1: that instance skipped, one line
     RblLitShaderDesc id = descOf(RBL_BRDF_LAMBERT, true, false);
@@ -1637,10 +1671,10 @@ static void c_fades(void)
     const Rectangle badClips[6] = { { 0, 0, -1, 1 }, { 0.5f, 0, 0, 1 }, { 0, 0, 1, 1e-7f }, { 0, 0, 2e6f, 1 }, { 2e6f, 0, 1, 1 }, { 0, -2e6f, 1, 1 } };
     for (int k = 0; k < 12; k++)
     {
-        RblBillboard b = billboard();
-        b.fade.weight = 0.5f;
-        b.fade.clip[k & 1] = badClips[k/2];
-        expectBillboardRefused(m, b);
+        RblFade bf = none;
+        bf.weight = 0.5f;
+        bf.clip[k & 1] = badClips[k/2];
+        expectFadeRefused(m, billboard(), &bf);
     }
     for (int fi = 0; fi < 13*5 + 4 + 12; fi++)  // source x, y, width, height, weight, (flags skipped) 8 clip floats x every bad float; weights outside 0..1; bad clips
     {
@@ -2367,7 +2401,7 @@ static const Case cases[] = {
     { "RblLoadAtlasTextures", "NULL, stale, pages, materials (maps NULL), missing or mis-sized sheets; material untouched", c_atlas_textures, "null null-inside stale-header counts" },
     { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale, different sheets, empty trims; outputs untouched; equal frames unclipped", c_atlas_fade_quads, "null stale-header" },
     { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites, "null stale-header counts floats" },
-    { "RblSpriteFade RblDrawBillboard RblBatchAdd RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
+    { "RblSpriteFade RblDrawBillboardFade RblBatchAddFade RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawInstanced RblDrawMesh RblDrawModel RblIsLitShaderValid RblUnloadLitShader", "lit Shader copies after RblUnloadLitShader, UnloadShader, UnloadMaterial; then nothing, a lit load, a raylib load", c_stale_shader_copies, "stale-header stale-raylib stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawMesh RblDrawModel RblIsLitShaderValid RblLoadLitShader", "lit Shader copies whose GL name a raylib shader or a lit load took (reuse staged)", c_stale_shader_copies_reused_id, "stale-reused stale-raylib" },
     { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap RblIsAtlasValid RblAtlasFindFrame RblUnloadAtlas", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },

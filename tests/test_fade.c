@@ -1,4 +1,4 @@
-// Cross-fade between two atlas frames (RblLitShaderDesc.crossFade; RblBillboard.fade,
+// Cross-fade between two atlas frames (RblLitShaderDesc.crossFade; RblBatchAddFade, RblDrawBillboardFade,
 // RblInstancedDesc.fades): at 1 texel per pixel (orthographic camera), point-sampled sheets.
 // Weight 0 and 1 are the single-frame renderings of the program without the option (0/255); weight
 // 0.5 the double-precision mean of the two texels in linear light; a second frame stored rotated
@@ -47,18 +47,22 @@ static RblBillboard fadeCard(const RblAtlas *atlas, int frame, float x, float y)
     return b;
 }
 
-static void fadeFrom(const RblAtlas *atlas, int frame, float weight, RblBillboard *b)
+static RblFade fadeFrom(const RblAtlas *atlas, int frame, float weight)
 {
-    b->fade.source = atlas->frames[frame].source;
-    b->fade.flags = atlas->frames[frame].flags;
-    b->fade.weight = weight;
+    RblFade f;
+    memset(&f, 0, sizeof(f));
+    f.source = atlas->frames[frame].source;
+    f.flags = atlas->frames[frame].flags;
+    f.weight = weight;
+    return f;
 }
 
 enum { FADE_BATCH = 0, FADE_IMMEDIATE, FADE_INSTANCED };
 static const char *const fadePathName[3] = { "batch", "immediate", "instanced" };
 
-// n cards drawn by one path (instanced: fades passed only when withFades) into a cleared target
-static Image fadeRender(int path, Material m, const RblBillboard *cards, int n, bool withFades, int sort)
+// n cards drawn by one path into a cleared target: with cardFades (NULL = none) through the fade
+// entry points (instanced: RblInstancedDesc.fades), else the plain ones
+static Image fadeRender(int path, Material m, const RblBillboard *cards, const RblFade *cardFades, int n, int sort)
 {
     Camera3D cam = fadeCamera();
     RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
@@ -77,19 +81,26 @@ static Image fadeRender(int path, Material m, const RblBillboard *cards, int n, 
             memset(&inst[i], 0, sizeof(inst[i]));
             inst[i].position = cards[i].position; inst[i].size = cards[i].size; inst[i].origin = cards[i].origin;
             inst[i].source = cards[i].source; inst[i].flags = cards[i].flags;
-            fades[i] = cards[i].fade;
+            if (cardFades != NULL) fades[i] = cardFades[i];
         }
         RblInstancedDesc d;
         memset(&d, 0, sizeof(d));
-        d.fades = withFades? fades : NULL;
+        d.fades = (cardFades != NULL)? fades : NULL;
         d.sort = sort;
         RT_CHECK(RblDrawInstanced(&buf, cam, m, d, inst, n) == n, "instanced draw");
     }
-    else if (path == FADE_IMMEDIATE) for (int i = 0; i < n; i++) RblDrawBillboard(cam, m, cards[i]);
+    else if (path == FADE_IMMEDIATE)
+    {
+        for (int i = 0; i < n; i++)
+        {
+            if (cardFades != NULL) RblDrawBillboardFade(cam, m, cards[i], cardFades[i]);
+            else RblDrawBillboard(cam, m, cards[i]);
+        }
+    }
     else
     {
         RblBeginBatch(&batch, cam);
-        for (int i = 0; i < n; i++) RT_CHECK(RblBatchAdd(&batch, m, &cards[i]), "card %d refused", i);
+        for (int i = 0; i < n; i++) RT_CHECK((cardFades != NULL)? RblBatchAddFade(&batch, m, &cards[i], &cardFades[i]) : RblBatchAdd(&batch, m, &cards[i]), "card %d refused", i);
         RblEndBatch(&batch);
     }
     EndMode3D(); EndTextureMode();
@@ -199,10 +210,10 @@ static void test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_line
         if (inst && !rtGlsl3()) continue;
         Material plain = inst? r.mPlainInst : r.mPlain, fade = inst? r.mFadeInst : r.mFade;
         RblBillboard a = fadeCard(&r.atlas, 0, 0, 0), b = fadeCard(&r.atlas, 1, 0, 0);
-        Image onlyA = fadeRender(path, plain, &a, 1, false, 0), onlyB = fadeRender(path, plain, &b, 1, false, 0);
+        Image onlyA = fadeRender(path, plain, &a, NULL, 1, 0), onlyB = fadeRender(path, plain, &b, NULL, 1, 0);
         RT_CHECK(fadeMeanDiff(onlyA, r.tileA, r.tileB, 0.0, 0, 0) <= 1, "%s: frame a is not its texels", fadePathName[path]);
         // The option compiled in, no fade given: the first frame exactly (a constant weight 0)
-        Image none = fadeRender(path, fade, &a, 1, false, 0);
+        Image none = fadeRender(path, fade, &a, NULL, 1, 0);
         RT_CHECK(fadeImageDiff(none, onlyA) == 0, "%s: crossFade program without a fade differs from the plain program by %d/255", fadePathName[path], fadeImageDiff(none, onlyA));
         UnloadImage(none);
         for (int second = 1; second <= 2; second++)       // b upright, then c (b stored rotated)
@@ -211,8 +222,8 @@ static void test_fade_weights_0_and_1_are_the_single_frames_and_half_is_the_line
             for (int k = 0; k < 5; k++)
             {
                 RblBillboard card = a;
-                fadeFrom(&r.atlas, second, weights[k], &card);
-                Image out = fadeRender(path, fade, &card, 1, true, 0);
+                RblFade cardFade = fadeFrom(&r.atlas, second, weights[k]);
+                Image out = fadeRender(path, fade, &card, &cardFade, 1, 0);
                 int dA = fadeImageDiff(out, onlyA), dB = fadeImageDiff(out, onlyB), dMean = fadeMeanDiff(out, r.tileA, r.tileB, weights[k], 0, 0);
                 int got = (k == 0 || k == 2)? dA : ((k == 1 || k == 3)? dB : dMean), limit = (k < 2)? 0 : 1;
                 printf("    %-9s second %s  weight %-9.7g  vs a %3d  vs b %3d  vs double mean %3d\n", fadePathName[path], (second == 1)? "upright" : "rotated", weights[k], dA, dB, dMean);
@@ -244,13 +255,33 @@ static void test_fade_stream_follows_its_cards_through_late_starts_and_sorting(v
         for (int sort = 0; sort < 2; sort++)
         {
             RblBillboard cards[3];
+            RblFade cardFades[3];
             for (int i = 0; i < 3; i++)
             {
                 cards[i] = fadeCard(&r.atlas, 0, 0.0f, 20.0f - 20.0f*i);
                 cards[i].position.z = (float)i;       // depths differ: the sort reverses the order
-                if (wts[i] > 0.0f) fadeFrom(&r.atlas, 2, wts[i], &cards[i]);
+                memset(&cardFades[i], 0, sizeof(cardFades[i]));
+                if (wts[i] > 0.0f) cardFades[i] = fadeFrom(&r.atlas, 2, wts[i]);
             }
-            Image out = fadeRender(path, (path == FADE_INSTANCED)? r.mFadeInst : r.mFade, cards, 3, true, sort? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE);
+            // The batch: the first card through the plain entry point (the stream starts at the second)
+            Image out;
+            if (path == FADE_BATCH)
+            {
+                Camera3D cam = fadeCamera();
+                RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
+                RblBatch batch = RblLoadBatch(3);
+                batch.sort = sort? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE;
+                BeginTextureMode(rt); ClearBackground(BLANK); BeginMode3D(cam);
+                RblBeginBatch(&batch, cam);
+                RT_CHECK(RblBatchAdd(&batch, r.mFade, &cards[0]) && RblBatchAddFade(&batch, r.mFade, &cards[1], &cardFades[1]) &&
+                         RblBatchAddFade(&batch, r.mFade, &cards[2], &cardFades[2]), "cards refused");
+                RblEndBatch(&batch);
+                EndMode3D(); EndTextureMode();
+                out = rtReadTarget(rt);
+                UnloadRenderTexture(rt);
+                RblUnloadBatch(&batch);
+            }
+            else out = fadeRender(path, r.mFadeInst, cards, cardFades, 3, sort? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE);
             for (int i = 0; i < 3; i++)
             {
                 int d = fadeMeanDiff(out, r.tileA, r.tileB, wts[i], 0.0f, 20.0f - 20.0f*i);
@@ -303,8 +334,8 @@ static void test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axe
             for (int k = 0; k < 4; k++)
             {
                 RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
-                fadeFrom(&r.atlas, second, weights[k], &card);
-                Image out = fadeRender(path, inst? r.mFadeInst : r.mFade, &card, 1, true, 0);
+                RblFade cardFade = fadeFrom(&r.atlas, second, weights[k]);
+                Image out = fadeRender(path, inst? r.mFadeInst : r.mFade, &card, &cardFade, 1, 0);
                 Color got = rtPixel(out, 32, 32);
                 double want = fadeLambert(na, nb, weights[k], l), asIfA = fadeLambert(na, na, weights[k], l);
                 printf("    %-9s second %s  weight %.2f  got %3d  want %6.2f  (b read in a's axes: %6.2f)\n", fadePathName[path], (second == 1)? "upright" : "rotated", weights[k], got.r, want, asIfA);
@@ -334,8 +365,8 @@ static void test_fade_alpha_mixes_linearly_colour_by_coverage_and_the_cutoff_rea
         for (int k = 0; k < 4; k++)
         {
             RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
-            fadeFrom(&r.atlas, 2, weights[k], &card);
-            Image out = fadeRender(path, inst? r.mFadeInst : r.mFade, &card, 1, true, 0);
+            RblFade cardFade = fadeFrom(&r.atlas, 2, weights[k]);
+            Image out = fadeRender(path, inst? r.mFadeInst : r.mFade, &card, &cardFade, 1, 0);
             Color got = rtPixel(out, 32, 32);
             double blue = (weights[k] >= 0.5f)? 255.0*weights[k] : 0.0;
             RT_CHECK(got.r == 0 && got.g == 0 && fabs(got.b - blue) <= 1.0, "%s weight %g: got (%d, %d, %d), want (0, 0, %.1f)", fadePathName[path], weights[k], got.r, got.g, got.b, blue);
@@ -368,7 +399,7 @@ static void test_fade_deferred_geometry_pass_stores_the_mixed_frame(void)
         m.shader = geo;
         m.maps[MATERIAL_MAP_ALBEDO].texture = r.sheet;
         RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
-        fadeFrom(&r.atlas, 2, 0.5f, &card);
+        RblFade cardFade = fadeFrom(&r.atlas, 2, 0.5f);
         Camera3D cam = fadeCamera();
         RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass");
         RblInstanceBuffer buf = RblLoadInstanceBuffer(1);
@@ -379,10 +410,10 @@ static void test_fade_deferred_geometry_pass_stores_the_mixed_frame(void)
             in.position = card.position; in.size = card.size; in.origin = card.origin; in.source = card.source; in.flags = card.flags;
             RblInstancedDesc d;
             memset(&d, 0, sizeof(d));
-            d.fades = &card.fade;
+            d.fades = &cardFade;
             RT_CHECK(RblDrawInstanced(&buf, cam, m, d, &in, 1) == 1, "instanced geometry draw");
         }
-        else RblDrawBillboard(cam, m, card);
+        else RblDrawBillboardFade(cam, m, card, cardFade);
         RblEndGBuffer(&g);
         RT_CHECK(RblDrawDeferredLights(&g), "lights");
         RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
@@ -413,11 +444,11 @@ static void test_fade_bad_weights_and_sources_are_refused_with_one_line(void)
     for (int k = 0; k < 6; k++)
     {
         RblBillboard card = fadeCard(&r.atlas, 0, 0, 0);
-        fadeFrom(&r.atlas, 1, 0.5f, &card);
-        if (k < 5) card.fade.weight = bad[k];
-        else card.fade.source.width = nan;
+        RblFade cardFade = fadeFrom(&r.atlas, 1, 0.5f);
+        if (k < 5) cardFade.weight = bad[k];
+        else cardFade.source.width = nan;
         int before = warnings;
-        Image out = fadeRender(FADE_IMMEDIATE, r.mFade, &card, 1, true, 0);
+        Image out = fadeRender(FADE_IMMEDIATE, r.mFade, &card, &cardFade, 1, 0);
         Color c = rtPixel(out, 32, 32);
         RT_CHECK(warnings == before + 1 && c.r == 0 && c.g == 0 && c.b == 0 && c.a == 0, "bad fade %d: %d lines, pixel (%d, %d, %d, %d)", k, warnings - before, c.r, c.g, c.b, c.a);
         UnloadImage(out);
@@ -451,14 +482,14 @@ static void test_fade_bad_weights_and_sources_are_refused_with_one_line(void)
 }
 
 // One FIXED faded card drawn by the given path (a shadow pass's caster callback)
-static void fadeDrawCaster(int path, Camera3D viewer, Material m, RblBillboard b)
+static void fadeDrawCaster(int path, Camera3D viewer, Material m, RblBillboard b, RblFade f)
 {
-    if (path == FADE_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    if (path == FADE_IMMEDIATE) RblDrawBillboardFade(viewer, m, b, f);
     else if (path == FADE_BATCH)
     {
         RblBatch batch = RblLoadBatch(4);
         RblBeginBatch(&batch, viewer);
-        RblBatchAdd(&batch, m, &b);
+        RblBatchAddFade(&batch, m, &b, &f);
         RblEndBatch(&batch);
         RblUnloadBatch(&batch);
     }
@@ -470,7 +501,7 @@ static void fadeDrawCaster(int path, Camera3D viewer, Material m, RblBillboard b
         in.position = b.position; in.size = b.size; in.origin = b.origin; in.source = b.source; in.flags = b.flags;
         RblInstancedDesc d;
         memset(&d, 0, sizeof(d));
-        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &b.fade;
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up; d.fades = &f;
         RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster not drawn");
         RblUnloadInstanceBuffer(&buf);
     }
@@ -488,8 +519,10 @@ static void fadeShadowCaster(Material m, Camera3D viewer, void *ctx)
     b.position = (Vector3){ 0.0f, 0.0f, 1.0f }; b.size = (Vector2){ 2.0f, 2.0f }; b.origin = (Vector2){ 1.0f, 1.0f };
     b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
     b.source = (Rectangle){ 0, 0, 32, 32 };
-    b.fade.source = (Rectangle){ 32, 0, 32, 32 }; b.fade.weight = c->weight;
-    fadeDrawCaster(c->path, viewer, m, b);
+    RblFade f;
+    memset(&f, 0, sizeof(f));
+    f.source = (Rectangle){ 32, 0, 32, 32 }; f.weight = c->weight;
+    fadeDrawCaster(c->path, viewer, m, b, f);
 }
 
 static void test_fade_shadow_casters_cut_out_the_mixed_alpha_on_every_path(void)
@@ -700,15 +733,16 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
                 RblBillboard single[2];
                 memset(single, 0, sizeof(single));
                 RT_CHECK(RblAtlasBillboard(&r.atlas, f0, 1.0f, &single[0]) && RblAtlasBillboard(&r.atlas, f1, 1.0f, &single[1]), "single frames");
-                Image only0 = fadeRender(path, plain, &single[0], 1, false, 0), only1 = fadeRender(path, plain, &single[1], 1, false, 0);
+                Image only0 = fadeRender(path, plain, &single[0], NULL, 1, 0), only1 = fadeRender(path, plain, &single[1], NULL, 1, 0);
                 // The single frames sit on their canvases (the reference's placement holds)
                 RT_CHECK(fadeTrimDiff(only0, pic0, x0, y0, pic1, x1, y1, 0.0, FADE_TOP_FEET) == 0 && fadeTrimDiff(only1, pic0, x0, y0, pic1, x1, y1, 1.0, FADE_TOP_FEET) == 0, "%s pair %d: single frames off their canvases", fadePathName[path], pr);
                 for (int k = 0; k < 6; k++)
                 {
                     RblBillboard card;
+                    RblFade cardFade;
                     memset(&card, 0, sizeof(card));
-                    RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card), "fade card");
-                    Image out = fadeRender(path, fade, &card, 1, true, 0);
+                    RT_CHECK(RblAtlasBillboardFade(&r.atlas, f0, f1, weights[k], 1.0f, &card, &cardFade), "fade card");
+                    Image out = fadeRender(path, fade, &card, &cardFade, 1, 0);
                     int vs0 = fadeImageDiffRgba(out, only0), vs1 = fadeImageDiffRgba(out, only1), ref = fadeTrimDiff(out, pic0, x0, y0, pic1, x1, y1, weights[k], FADE_TOP_FEET);
                     int got = (k == 0)? vs0 : ((k == 1)? vs1 : ref), limit = (k < 2)? 0 : 1;
                     printf("    %-9s %s pair %d (%s -> %s)  weight %-9.7g  vs first %3d  vs second %3d  vs double reference %3d\n", fadePathName[path], gdx? "libGDX" : "TP", pr,
@@ -723,10 +757,11 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
                 RblInstance in; RblFade f;
                 memset(&in, 0, sizeof(in)); memset(&f, 0, sizeof(f));
                 RblBillboard card;
+                RblFade cardFade;
                 memset(&card, 0, sizeof(card));
-                RT_CHECK(RblAtlasInstanceFade(&r.atlas, f0, f1, 0.5f, 1.0f, &in, &f) && RblAtlasBillboardFade(&r.atlas, f0, f1, 0.5f, 1.0f, &card), "fade pair");
+                RT_CHECK(RblAtlasInstanceFade(&r.atlas, f0, f1, 0.5f, 1.0f, &in, &f) && RblAtlasBillboardFade(&r.atlas, f0, f1, 0.5f, 1.0f, &card, &cardFade), "fade pair");
                 RT_CHECK(memcmp(&in.source, &card.source, sizeof(Rectangle)) == 0 && memcmp(&in.size, &card.size, sizeof(Vector2)) == 0 &&
-                         memcmp(&in.origin, &card.origin, sizeof(Vector2)) == 0 && in.flags == card.flags && memcmp(&f, &card.fade, sizeof(f)) == 0, "RblAtlasInstanceFade differs from RblAtlasBillboardFade");
+                         memcmp(&in.origin, &card.origin, sizeof(Vector2)) == 0 && in.flags == card.flags && memcmp(&f, &cardFade, sizeof(f)) == 0, "RblAtlasInstanceFade differs from RblAtlasBillboardFade");
                 UnloadImage(only0); UnloadImage(only1);
             }
         }
@@ -734,10 +769,11 @@ static void test_fade_frames_of_different_trims_each_stay_on_their_canvas_clippe
     // Equal trims: RblAtlasBillboardFade is RblAtlasBillboard plus the fade, unclipped (whole quad)
     int fq = RblAtlasFindFrame(&r.atlas, "q"), fr = RblAtlasFindFrame(&r.atlas, "r");
     RblBillboard one, two;
+    RblFade twoFade;
     memset(&one, 0, sizeof(one)); memset(&two, 0, sizeof(two));
-    RT_CHECK(RblAtlasBillboard(&r.atlas, fq, 2.0f, &one) && RblAtlasBillboardFade(&r.atlas, fq, fr, 0.5f, 2.0f, &two), "equal trims");
+    RT_CHECK(RblAtlasBillboard(&r.atlas, fq, 2.0f, &one) && RblAtlasBillboardFade(&r.atlas, fq, fr, 0.5f, 2.0f, &two, &twoFade), "equal trims");
     RT_CHECK(memcmp(&one.source, &two.source, sizeof(Rectangle)) == 0 && memcmp(&one.size, &two.size, sizeof(Vector2)) == 0 && memcmp(&one.origin, &two.origin, sizeof(Vector2)) == 0 &&
-             memcmp(&two.fade.source, &r.atlas.frames[fr].source, sizeof(Rectangle)) == 0 && two.fade.clip[0].width == 1.0f && two.fade.clip[1].height == 1.0f, "equal trims: not the single frame's quad");
+             memcmp(&twoFade.source, &r.atlas.frames[fr].source, sizeof(Rectangle)) == 0 && twoFade.clip[0].width == 1.0f && twoFade.clip[1].height == 1.0f, "equal trims: not the single frame's quad");
     printf("    %d renderings compared\n", checks);
     UnloadImage(picP); UnloadImage(picQ);
     fadeRigUnload(&r);
@@ -811,14 +847,15 @@ static void test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirror
             for (int wi = 0; wi < 4; wi++)
             {
                 RblBillboard card;
+                RblFade cardFade;
                 memset(&card, 0, sizeof(card));
-                RT_CHECK(RblAtlasBillboardFade(&r.atlas, f[0], f[1], weights[wi], 1.0f, &card), "fade card");
-                Image out = fadeRender(path, fade, &card, 1, true, 0);
+                RT_CHECK(RblAtlasBillboardFade(&r.atlas, f[0], f[1], weights[wi], 1.0f, &card, &cardFade), "fade card");
+                Image out = fadeRender(path, fade, &card, &cardFade, 1, 0);
                 // fadeTrimDiff places canvas pixel (i, j) at target (24 + i, 26 + j): the pivots at the centre
                 int ref = fadeTrimDiff(out, pic[0], x[0], y[0], pic[1], x[1], y[1], weights[wi], FADE_TOP_CENTRED);
                 int left = (int)lroundf(FADE_RT/2 - card.origin.x), right = left + (int)lroundf(card.size.x);
                 card.size.x = -card.size.x;
-                Image mirrored = fadeRender(path, fade, &card, 1, true, 0);
+                Image mirrored = fadeRender(path, fade, &card, &cardFade, 1, 0);
                 int mir = fadeMirrorDiff(mirrored, out, left, right);
                 int limit = (wi < 2)? 0 : 1;
                 printf("    %-9s %s -> %s  weight %-4g  vs double reference %3d  mirrored vs flipped %3d\n", fadePathName[path],
@@ -838,14 +875,14 @@ static void test_fade_frames_of_different_pivots_meet_at_their_pivots_and_mirror
     fadeRigUnload(&r);
 }
 
-typedef struct FadeTrimShadowCard { int path; RblBillboard card; } FadeTrimShadowCard;
+typedef struct FadeTrimShadowCard { int path; RblBillboard card; RblFade fade; } FadeTrimShadowCard;
 static void fadeTrimShadowCaster(Material m, Camera3D viewer, void *ctx)
 {
     const FadeTrimShadowCard *c = (const FadeTrimShadowCard *)ctx;
     RblBillboard b = c->card;
     b.position = (Vector3){ 0.0f, 0.0f, 1.0f };
     b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
-    fadeDrawCaster(c->path, viewer, m, b);
+    fadeDrawCaster(c->path, viewer, m, b, c->fade);
 }
 
 // The G-buffer's geometry pass and the shadow casters share the clip: frames of different trims
@@ -882,11 +919,13 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
         for (int k = 0; k < 5; k++)     // single p, single q, fades at 0, 1, 0.5
         {
             RblBillboard card;
-            memset(&card, 0, sizeof(card));
+            RblFade cardFade;
+            memset(&card, 0, sizeof(card)); memset(&cardFade, 0, sizeof(cardFade));
             if (k < 2) RblAtlasBillboard(&atlas, k? fq : fp, 1.0f, &card);
-            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : ((k == 3)? 1.0f : 0.5f), 1.0f, &card);
+            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : ((k == 3)? 1.0f : 0.5f), 1.0f, &card, &cardFade);
             RT_CHECK(RblBeginGBuffer(&g, cam), "geometry pass");
-            RblDrawBillboard(cam, m, card);
+            if (k < 2) RblDrawBillboard(cam, m, card);
+            else RblDrawBillboardFade(cam, m, card, cardFade);
             RblEndGBuffer(&g);
             RT_CHECK(RblDrawDeferredLights(&g), "lights");
             RenderTexture2D rt = LoadRenderTexture(FADE_RT, FADE_RT);
@@ -927,7 +966,7 @@ static void test_fade_trimmed_frames_in_the_geometry_pass_and_shadow_casters(voi
             memset(&c, 0, sizeof(c));
             c.path = path;
             if (k < 2) RblAtlasBillboard(&atlas, k? fq : fp, 0.125f, &c.card);
-            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : 1.0f, 0.125f, &c.card);
+            else RblAtlasBillboardFade(&atlas, fp, fq, (k == 2)? 0.0f : 1.0f, 0.125f, &c.card, &c.fade);
             img[k] = shRender(&s, fadeTrimShadowCaster, &c, sheet, false);
         }
         int d0 = fadeImageDiff(img[2], img[0]), d1 = fadeImageDiff(img[3], img[1]), pq = fadeImageDiff(img[0], img[1]);

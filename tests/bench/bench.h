@@ -12,7 +12,7 @@
 
 #define BENCH_CSV_HEADER    "suite,case,metric,value,unit"
 #define BENCH_MAX_RUNS      64      // Runs a median is taken over, at most
-#define BENCH_MAX_VALUES    32      // Values one run may report
+#define BENCH_MAX_VALUES    64      // Values one run may report
 
 // ---- clock ----------------------------------------------------------------------------------
 // Monotonic time in nanoseconds (origin unspecified: use differences only)

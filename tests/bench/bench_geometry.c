@@ -3,6 +3,8 @@
 //   immediate  RblDrawBillboard() per billboard (one upload and one draw each)
 //   batched    RblBeginBatch(), RblBatchAdd() per billboard, RblEndBatch() (batch loaded once)
 //   instanced  RblDrawInstanced() once for the frame's RblInstance array (buffer loaded once)
+//   v03_batched the batched path of the header's 0.3 (bench_geometry_v03.c: that header compiled in
+//              its own translation unit, its own lit program and batch; the same billboards)
 // at 1k / 10k / 100k billboards, without and with rotation, plus bytes uploaded per billboard,
 // a memcpy bandwidth floor and each path's corner deviation from a double-precision reference
 // (instanced: its vertex stage's output, captured with transform feedback).
@@ -26,6 +28,12 @@
 //   ratio_to_raylib, frames (rounds the medians are over; 3 for an immediate case of seconds per frame)
 //   draw_ns_per_billboard (inside glDraw*), upload_ns_per_billboard (inside glBufferSubData),
 //   excl_draw_ns_per_billboard (submission minus draw calls), excl_draw_ratio_to_raylib
+//   batched_<N>_<rot>: over_v03 and excl_draw_over_v03 (median per-round ratio to v03_batched)
+//   RblBillboard_v03 / RblBillboard / RblFade: struct_size (bytes; the fade travels beside, not inside)
+//   batched_visible_<N>, batched_cull90_<N>, batched_cull90_nocull_<N>: ns_per_billboard of a fully
+//   visible set and of the same set with 90 % moved outside the view (culled; and with noCull);
+//   batched_cull90_<N>: over_visible, nocull_over_visible (median per-round ratios), culled (count);
+//   batched_visible_<N>: culled (the part of the bench's box outside the 64x64 view)
 //   <path>: bytes_per_billboard (uploaded), floor_ns_per_billboard (bytes / memcpy GB/s);
 //   <path>_<N>_<rot>: ratio_to_floor; memcpy_64MiB: bandwidth (GB/s, median of 7 copies)
 //   batched_<N>, immediate_<N>, instanced_<N> and raylib_<N>: max_corner_error (world units) against a double-precision
@@ -40,6 +48,7 @@
 #include "harness.h"
 #include "bench.h"
 #include "tf_capture.h"
+#include "bench_geometry_v03.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -63,7 +72,7 @@
 //----------------------------------------------------------------------------------
 // Types and Structures Definition
 //----------------------------------------------------------------------------------
-typedef enum { PATH_RAYLIB = 0, PATH_IMMEDIATE, PATH_BATCHED, PATH_INSTANCED, PATH_COUNT } BenchPath;
+typedef enum { PATH_RAYLIB = 0, PATH_IMMEDIATE, PATH_BATCHED, PATH_INSTANCED, PATH_V03, PATH_COUNT } BenchPath;
 
 // DrawBillboardPro() arguments of one billboard (up is (0,1,0) and tint WHITE for all)
 typedef struct RaylibBillboard {
@@ -95,7 +104,9 @@ typedef struct RoundCase {
 #define ROUND_FRAME(p)          ((p)*FRAME_VALUES)
 #define ROUND_RATIO(p)          (PATH_COUNT*FRAME_VALUES + (p))
 #define ROUND_RATIO_EXCL(p)     (PATH_COUNT*(FRAME_VALUES + 1) + (p))
-#define ROUND_VALUES            (PATH_COUNT*(FRAME_VALUES + 2))
+#define ROUND_BATCHED_OVER_V03       (PATH_COUNT*(FRAME_VALUES + 2))
+#define ROUND_BATCHED_OVER_V03_EXCL  (PATH_COUNT*(FRAME_VALUES + 2) + 1)
+#define ROUND_VALUES            (PATH_COUNT*(FRAME_VALUES + 2) + 2)
 
 // Medians of one case
 typedef struct CaseResult {
@@ -108,13 +119,16 @@ typedef struct CaseResult {
     double exclDrawNs;      // nsPerBillboard minus drawNs
     double ratio;           // Median of the per-round ratio to raylib (0 = raylib not run)
     double ratioExclDraw;   // The same for exclDrawNs
+    double overV03;         // batched: median per-round ratio to v03_batched (0 = not run)
+    double overV03Excl;     // The same excluding the draw calls
     int frames;
 } CaseResult;
 
 //----------------------------------------------------------------------------------
 // Global Variables Definition
 //----------------------------------------------------------------------------------
-static const char *pathNames[PATH_COUNT] = { "raylib", "immediate", "batched", "instanced" };
+static const char *pathNames[PATH_COUNT] = { "raylib", "immediate", "batched", "instanced", "v03_batched" };
+static bool v03Available = false;           // the 0.3 baseline is built in and loaded
 static const int counts[] = { 1000, 10000, 100000 };
 #define COUNT_CASES ((int)(sizeof(counts)/sizeof(counts[0])))
 
@@ -259,6 +273,8 @@ static bool BuildScene(void)
             b->facing = RBL_FACING_CAMERA_PLANE;
             b->up = (Vector3){ 0.0f, 1.0f, 0.0f };      // as the baseline's DrawBillboardPro up
 
+            V03SetCard(r, i, a.position, a.size, a.origin, a.rotation, a.source);
+
             RblInstance *in = &instanceSet[r][i];
             memset(in, 0, sizeof(*in));
             in->position = a.position;
@@ -329,6 +345,11 @@ static void RunFrame(BenchPath path, int n, int rotated, double *out)
             t1 = BenchNowNs();
             if (drawn != n) { printf("bench_geometry: RblDrawInstanced drew %d of %d\n", drawn, n); exit(1); }
         } break;
+        case PATH_V03:
+        {
+            int added = V03Frame(camera, rotated, n, BenchNowNs, &t1);
+            if (added != n) { printf("bench_geometry: 0.3 batch took %d of %d\n", added, n); exit(1); }
+        } break;
         default: break;
     }
     double t2 = BenchNowNs();
@@ -365,7 +386,54 @@ static void RunRound(void *ctx, double *out)
             out[ROUND_RATIO_EXCL(p)] = out[ROUND_FRAME(p) + FRAME_EXCL_DRAW]/base[FRAME_EXCL_DRAW];
         }
     }
+    if (rc->run[PATH_V03] && rc->run[PATH_BATCHED])
+    {
+        const double *v = &out[ROUND_FRAME(PATH_V03)], *b = &out[ROUND_FRAME(PATH_BATCHED)];
+        out[ROUND_BATCHED_OVER_V03] = b[FRAME_TOTAL]/v[FRAME_TOTAL];
+        out[ROUND_BATCHED_OVER_V03_EXCL] = b[FRAME_EXCL_DRAW]/v[FRAME_EXCL_DRAW];
+    }
     rc->round++;
+}
+
+// Culling rounds: one batched frame of each set (the visible one, 90 % outside culled, 90 % outside
+// with noCull), the order rotating; values: ns per billboard of each, then the two ratios
+#define CULL_VALUES 5
+typedef struct CullCase { int count; const RblBillboard *sets[3]; int round; int culled, culledVisible; } CullCase;
+
+static double CullFrame(const RblBillboard *set, int n, bool noCull, int *culled)
+{
+    BeginTextureMode(target);
+    ClearBackground(BLACK);
+    BeginMode3D(camera);
+    rlDrawRenderBatchActive();
+    rtFinish();
+    double t0 = BenchNowNs();
+    batch.noCull = noCull;
+    RblBeginBatch(&batch, camera);
+    for (int i = 0; i < n; i++) RblBatchAdd(&batch, material, &set[i]);
+    *culled = batch.culled;
+    RblEndBatch(&batch);
+    double t = BenchNowNs() - t0;
+    batch.noCull = true;
+    rtFinish();
+    EndMode3D();
+    EndTextureMode();
+    return t/n;
+}
+
+static void RunCullRound(void *ctx, double *out)
+{
+    CullCase *cc = (CullCase *)ctx;
+    for (int i = 0; i < 3; i++)
+    {
+        int k = (cc->round + i)%3, culled = 0;
+        out[k] = CullFrame(cc->sets[k], cc->count, k == 2, &culled);
+        if (k == 1) cc->culled = culled;
+        if (k == 0) cc->culledVisible = culled;
+    }
+    out[3] = out[1]/out[0];
+    out[4] = out[2]/out[0];
+    cc->round++;
 }
 
 //----------------------------------------------------------------------------------
@@ -570,7 +638,10 @@ int main(int argc, char **argv)
     materialInstanced.shader = litInstanced;
     materialInstanced.maps[MATERIAL_MAP_ALBEDO].texture = atlas;
 
+    v03Available = V03Init(atlas, MAX_BILLBOARDS, light.position, light.intensity, scene.ambient);
+    if (!v03Available) printf("bench_geometry: the 0.3 baseline is not built in (no git history) or failed to load: its rows are left out\n");
     batch = RblLoadBatch(MAX_BILLBOARDS);     // enough for the largest case: never grows
+    batch.noCull = true;                        // the same work as raylib and 0.3 (the culling rows turn it on)
     instanceBuffer = RblLoadInstanceBuffer(MAX_BILLBOARDS);
     if ((target.id == 0) || (atlas.id == 0) || !RblIsBatchValid(batch) || !RblIsInstanceBufferValid(instanceBuffer) || !BuildScene())
     {
@@ -578,6 +649,11 @@ int main(int argc, char **argv)
         return 1;
     }
 
+    // The immediate path's one-quad batch exists from the first draw: it keeps what it is given, as
+    // raylib does (the same work; the culling rows below show what culling saves)
+    RblDrawBillboard(camera, material, rblSet[0][0]);
+    if (rbl__state.immediate.state != NULL) rbl__state.immediate.noCull = true;
+    if (sizeof(((RoundCase *)NULL)->run) == 0 || ROUND_VALUES > BENCH_MAX_VALUES) { printf("bench_geometry: %d round values, BENCH_MAX_VALUES %d\n", ROUND_VALUES, BENCH_MAX_VALUES); return 1; }
     printf("bench_geometry: GL context %s, render target %dx%d, atlas %dx%d, billboards in a box in front of the camera%s\n",
            backend, TARGET_SIZE, TARGET_SIZE, ATLAS_SIZE, ATLAS_SIZE, driverTimed? "" : "; driver calls not timed (glad symbols not found)");
     fflush(stdout);
@@ -600,7 +676,7 @@ int main(int argc, char **argv)
             for (int p = 0; p < PATH_COUNT; p++)
             {
                 CaseName(name, sizeof(name), (BenchPath)p, counts[c], rotated);
-                selected[p] = (filter == NULL) || (strstr(name, filter) != NULL);
+                selected[p] = ((filter == NULL) || (strstr(name, filter) != NULL)) && ((p != PATH_V03) || v03Available);
                 // The immediate path costs one upload and one draw per billboard: where the previous
                 // (smaller) case predicts seconds per frame it gets fewer rounds of its own
                 if (selected[p] && (p == PATH_IMMEDIATE) && (c > 0) && results[p][c - 1][rotated].measured)
@@ -647,9 +723,17 @@ int main(int argc, char **argv)
                     res->exclDrawNs = frame[FRAME_EXCL_DRAW];
                     res->ratio = rc.run[PATH_RAYLIB]? medians[ROUND_RATIO(p)] : 0.0;
                     res->ratioExclDraw = rc.run[PATH_RAYLIB]? medians[ROUND_RATIO_EXCL(p)] : 0.0;
+                    bool againstV03 = (p == PATH_BATCHED) && rc.run[PATH_V03];
+                    res->overV03 = againstV03? medians[ROUND_BATCHED_OVER_V03] : 0.0;
+                    res->overV03Excl = againstV03? medians[ROUND_BATCHED_OVER_V03_EXCL] : 0.0;
+                    if (againstV03)
+                    {
+                        BenchCsvRow(SUITE, name, "over_v03", res->overV03, "x");
+                        BenchCsvRow(SUITE, name, "excl_draw_over_v03", res->overV03Excl, "x");
+                    }
 
                     BenchCsvRow(SUITE, name, "ns_per_billboard", res->nsPerBillboard, "ns");
-                    if ((p == PATH_RAYLIB) || (p == PATH_BATCHED))
+                    if ((p == PATH_RAYLIB) || (p == PATH_BATCHED) || (p == PATH_V03))
                     {
                         BenchCsvRow(SUITE, name, "submit_ns_per_billboard", res->submitNs, "ns");
                         BenchCsvRow(SUITE, name, "flush_ns_per_billboard", res->flushNs, "ns");
@@ -664,7 +748,8 @@ int main(int argc, char **argv)
                     }
                     BenchCsvRow(SUITE, name, "frames", res->frames, "count");
                     printf("  %-26s %10.1f ns/billboard", name, res->nsPerBillboard);
-                    if (rc.run[PATH_RAYLIB]) printf(" %8.3fx raylib", res->ratio);
+                    if (rc.run[PATH_RAYLIB]) printf(" %8.3fx raylib (excl draw %6.1f ns, %.3fx)", res->ratio, res->exclDrawNs, res->ratioExclDraw);
+                    if (res->overV03 > 0.0) printf(" %.3fx 0.3 (excl draw %.3fx)", res->overV03, res->overV03Excl);
                     printf("  (median of %d frames)\n", res->frames);
                 }
             }
@@ -681,6 +766,42 @@ int main(int argc, char **argv)
                 CornerError(batch.state->vertices[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
             }
         }
+    }
+
+    // Culling: the same set fully visible, and with 90 % moved outside the view (culled, then kept
+    // with noCull), interleaved per round
+    if ((filter == NULL) || (strstr("batched_cull", filter) != NULL))
+    {
+        RblBillboard *cull90 = (RblBillboard *)malloc((size_t)MAX_BILLBOARDS*sizeof(RblBillboard));
+        if (cull90 == NULL) { printf("bench_geometry: out of memory\n"); return 1; }
+        memcpy(cull90, rblSet[0], (size_t)MAX_BILLBOARDS*sizeof(RblBillboard));
+        for (int i = 0; i < MAX_BILLBOARDS; i++) if (i%10 != 0) cull90[i].position.x += (i%2)? 500.0f : -500.0f;
+        for (int c = 0; c < COUNT_CASES; c++)
+        {
+            CullCase cc;
+            memset(&cc, 0, sizeof(cc));
+            cc.count = counts[c];
+            cc.sets[0] = rblSet[0]; cc.sets[1] = cull90; cc.sets[2] = cull90;
+            double medians[CULL_VALUES];
+            int rounds = BenchMedianOfRuns(RunCullRound, &cc, CULL_VALUES, timing, medians);
+            static const char *const cullNames[3] = { "batched_visible", "batched_cull90", "batched_cull90_nocull" };
+            for (int k = 0; k < 3; k++)
+            {
+                snprintf(name, sizeof(name), "%s_%d", cullNames[k], counts[c]);
+                BenchCsvRow(SUITE, name, "ns_per_billboard", medians[k], "ns");
+                BenchCsvRow(SUITE, name, "frames", rounds, "count");
+            }
+            snprintf(name, sizeof(name), "batched_cull90_%d", counts[c]);
+            BenchCsvRow(SUITE, name, "over_visible", medians[3], "x");
+            BenchCsvRow(SUITE, name, "nocull_over_visible", medians[4], "x");
+            BenchCsvRow(SUITE, name, "culled", cc.culled, "count");
+            snprintf(name, sizeof(name), "batched_visible_%d", counts[c]);
+            BenchCsvRow(SUITE, name, "culled", cc.culledVisible, "count");
+            printf("  batched %6d: visible %7.1f ns/billboard (%d of the box outside the view, culled), 90 %% outside %7.1f (%.3fx; %d culled), 90 %% outside with noCull %7.1f (%.3fx)  (median of %d rounds)\n",
+                   counts[c], medians[0], cc.culledVisible, medians[1], medians[3], cc.culled, medians[2], medians[4], rounds);
+        }
+        free(cull90);
+        fflush(stdout);
     }
 
     // Corner accuracy of every path and of raylib itself against the double-precision
@@ -739,12 +860,20 @@ int main(int argc, char **argv)
         4.0*(3*sizeof(float) + 2*sizeof(float) + 3*sizeof(float) + 4*sizeof(unsigned char)),
         4.0*sizeof(RblVertex),
         4.0*sizeof(RblVertex),
-        (double)sizeof(RblInstance)
+        (double)sizeof(RblInstance),
+        4.0*(double)V03VertexSize()
     };
     double gbps = MeasureMemcpyBandwidth();
+    // Struct sizes: 0.3's billboard, this one's, and the cross-fade that now travels beside it
+    if (v03Available) BenchCsvRow(SUITE, "RblBillboard_v03", "struct_size", (double)V03BillboardSize(), "bytes");
+    BenchCsvRow(SUITE, "RblBillboard", "struct_size", (double)sizeof(RblBillboard), "bytes");
+    BenchCsvRow(SUITE, "RblFade", "struct_size", (double)sizeof(RblFade), "bytes");
+    printf("  struct sizes: RblBillboard %d bytes (0.3: %d), RblFade %d bytes beside it (RblBatchAddFade); RblVertex %d bytes (0.3: %d)\n",
+           (int)sizeof(RblBillboard), (int)V03BillboardSize(), (int)sizeof(RblFade), (int)sizeof(RblVertex), (int)V03VertexSize());
     BenchCsvRow(SUITE, "memcpy_64MiB", "bandwidth", gbps, "GB/s");
     for (int p = 0; p < PATH_COUNT; p++)
     {
+        if (bytesPerBillboard[p] <= 0.0) continue;      // the 0.3 baseline not built in
         double floorNs = (gbps > 0.0)? bytesPerBillboard[p]/gbps : 0.0;
         BenchCsvRow(SUITE, pathNames[p], "bytes_per_billboard", bytesPerBillboard[p], "bytes");
         BenchCsvRow(SUITE, pathNames[p], "floor_ns_per_billboard", floorNs, "ns");
@@ -791,10 +920,10 @@ int main(int argc, char **argv)
             }
         }
     }
-    const double targets[PATH_COUNT] = { 0.0, 0.0, 0.25, 0.05 };
+    const double targets[PATH_COUNT] = { 0.0, 0.0, 0.25, 0.05, 0.0 };
     for (int p = PATH_BATCHED; p < PATH_COUNT; p++)
     {
-        if (worst[p] <= 0.0) continue;
+        if ((worst[p] <= 0.0) || (targets[p] <= 0.0)) continue;
         // The target is CPU cost. Without the driver timing, totals are all there is to judge it by.
         if (worstExcl[p] > 0.0)
             printf("  target %-9s <= %.2fx raylib CPU (excluding driver draw calls): worst %.3fx -> %s; totals including the\n"
@@ -804,6 +933,16 @@ int main(int argc, char **argv)
             printf("  target %-9s <= %.2fx raylib CPU: worst total %.3fx -> %s (no driver timing: draw calls included)\n",
                    pathNames[p], targets[p], worst[p], (worst[p] <= targets[p])? "met" : "NOT met");
     }
+    // Issue #27's goal for the batch at 100k: CPU per billboard (excluding the driver's draw calls)
+    // at most 0.08x DrawBillboardPro's, and below 0.3's in the same rounds
+    for (int rotated = 0; rotated < 2; rotated++)
+    {
+        const CaseResult *res = &results[PATH_BATCHED][COUNT_CASES - 1][rotated];
+        if (!res->measured || (res->ratioExclDraw <= 0.0)) continue;
+        printf("  goal batched 100000 %-5s CPU <= 0.08x raylib: %.3fx -> %s", rotated? "rot" : "norot", res->ratioExclDraw, (res->ratioExclDraw <= 0.08)? "met" : "NOT met");
+        if (res->overV03Excl > 0.0) printf("; below 0.3: %.3fx -> %s", res->overV03Excl, (res->overV03Excl < 1.0)? "met" : "NOT met");
+        printf("\n");
+    }
     printf("bench_geometry: done in %.1f s, rows in %s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath());
 
     RblUnloadBatch(&batch);
@@ -812,6 +951,7 @@ int main(int argc, char **argv)
     RblUnloadLitShader(&litInstanced);
     MemFree(material.maps);
     MemFree(materialInstanced.maps);
+    if (v03Available) V03Close();
     RblClose();                                 // after the Unload calls
     UnloadTexture(atlas);
     UnloadRenderTexture(target);

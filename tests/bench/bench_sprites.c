@@ -231,14 +231,15 @@ static void runAnim(void *ctx, double *out)
 }
 
 // ---- cross-fade costs ---------------------------------------------------------------------------
-typedef struct { RblBatch *batch; Camera3D camera; Material material; const RblBillboard *cards; int n; } FadeBatchCtx;
+typedef struct { RblBatch *batch; Camera3D camera; Material material; const RblBillboard *cards; const RblFade *fades; int n; } FadeBatchCtx;
 static void runFadeBatch(void *ctx, double *out)
 {
     FadeBatchCtx *c = (FadeBatchCtx *)ctx;
     drawNs = 0.0;
     double t0 = BenchNowNs();
     RblBeginBatch(c->batch, c->camera);
-    for (int i = 0; i < c->n; i++) RblBatchAdd(c->batch, c->material, &c->cards[i]);
+    if (c->fades == NULL) for (int i = 0; i < c->n; i++) RblBatchAdd(c->batch, c->material, &c->cards[i]);
+    else for (int i = 0; i < c->n; i++) RblBatchAddFade(c->batch, c->material, &c->cards[i], &c->fades[i]);
     double t1 = BenchNowNs();
     RblEndBatch(c->batch);
     out[0] = (t1 - t0)/c->n;
@@ -275,14 +276,18 @@ static void runRaylib(void *ctx, double *out)
     rtFinish();
 }
 
-typedef struct { RenderTexture2D target; Camera3D camera; Material material; const RblBillboard *cards; int n; } FadeFragCtx;
+typedef struct { RenderTexture2D target; Camera3D camera; Material material; const RblBillboard *cards; const RblFade *fades; int n; } FadeFragCtx;
 static void runFadeFragment(void *ctx, double *out)
 {
     FadeFragCtx *c = (FadeFragCtx *)ctx;
     rtFinish();
     double t0 = BenchNowNs();
     BeginTextureMode(c->target); ClearBackground(BLACK); BeginMode3D(c->camera);
-    for (int i = 0; i < c->n; i++) RblDrawBillboard(c->camera, c->material, c->cards[i]);
+    for (int i = 0; i < c->n; i++)
+    {
+        if (c->fades == NULL) RblDrawBillboard(c->camera, c->material, c->cards[i]);
+        else RblDrawBillboardFade(c->camera, c->material, c->cards[i], c->fades[i]);
+    }
     EndMode3D(); EndTextureMode();
     rtFinish();
     out[0] = (BenchNowNs() - t0)/1e6;
@@ -332,15 +337,16 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
     RblBatch batch = RblLoadBatch(n);
     double plainNs[2], fadeNs[2], batchRatio;
     RblBillboard *faded = (RblBillboard *)malloc((size_t)n*sizeof(RblBillboard));
+    RblFade *fadedFades = (RblFade *)calloc((size_t)n, sizeof(RblFade));
     memcpy(faded, cards, (size_t)n*sizeof(RblBillboard));
     // Faded cards as an application builds them: the union quad and clips of the two frames
     for (int i = 0; i < n; i++)
     {
         int next = players[i].frame;
         RblSpriteBlend(&players[i], anim, &next);
-        RblAtlasBillboardFade(anim, players[i].frame, next, fades[i].weight, 0.02f, &faded[i]);
+        RblAtlasBillboardFade(anim, players[i].frame, next, fades[i].weight, 0.02f, &faded[i], &fadedFades[i]);
     }
-    FadeBatchCtx bcPlain = { &batch, cam, plain, cards, n }, bcFade = { &batch, cam, fade, faded, n };
+    FadeBatchCtx bcPlain = { &batch, cam, plain, cards, NULL, n }, bcFade = { &batch, cam, fade, faded, fadedFades, n };
     interleaved(runFadeBatch, &bcPlain, &bcFade, 2, plainNs, fadeNs, &batchRatio);
     (void)timing;
     printf("  %-34s %8.1f ns per billboard add, %6.1f end excluding draw calls (CPU)\n", "fade_batch_10000_plain", plainNs[0], plainNs[1]);
@@ -391,6 +397,7 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
         Camera3D oc; memset(&oc, 0, sizeof(oc));
         oc.position = (Vector3){ 0, 0, 10 }; oc.up = (Vector3){ 0, 1, 0 }; oc.fovy = 2.0f; oc.projection = CAMERA_ORTHOGRAPHIC;
         RblBillboard big[2][16];
+        RblFade bigFades[16];
         for (int k = 0; k < 2; k++)
             for (int i = 0; i < 16; i++)
             {
@@ -398,12 +405,12 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
                 big[k][i].position = (Vector3){ 0, 0, 0.01f*i }; big[k][i].size = (Vector2){ 2, 2 }; big[k][i].origin = (Vector2){ 1, 1 };
                 big[k][i].source = (Rectangle){ 0, 0, 512, 512 };
                 big[k][i].tint = (Color){ 255, 255, 255, 255 };
-                if (k == 1) { big[k][i].fade.source = (Rectangle){ 512, 0, 512, 512 }; big[k][i].fade.weight = 0.5f; }
+                if (k == 1) { memset(&bigFades[i], 0, sizeof(RblFade)); bigFades[i].source = (Rectangle){ 512, 0, 512, 512 }; bigFades[i].weight = 0.5f; }
             }
         RenderTexture2D target = LoadRenderTexture(512, 512);
         double ms[2], msRatio;
         {
-            FadeFragCtx fcPlain = { target, oc, fm[0], big[0], 16 }, fcFade = { target, oc, fm[1], big[1], 16 };
+            FadeFragCtx fcPlain = { target, oc, fm[0], big[0], NULL, 16 }, fcFade = { target, oc, fm[1], big[1], bigFades, 16 };
             double a[2], b[2];
             interleaved(runFadeFragment, &fcPlain, &fcFade, 1, a, b, &msRatio);
             ms[0] = a[0]; ms[1] = b[0];
@@ -419,7 +426,7 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
         UnloadTexture(albedo); UnloadTexture(ntex);
     }
     RblUnloadBatch(&batch);
-    free(cards); free(faded); free(fades);
+    free(cards); free(faded); free(fadedFades); free(fades);
     RblUnloadLitShader(&plain.shader); RblUnloadLitShader(&fade.shader); RblUnloadLitShader(&fadeInst.shader);
 }
 
