@@ -770,6 +770,87 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     RblUnloadLitShader(&lit);
 }
 
+// An omni map without caster identities (RblShadowDesc.selfShadow: receivers read its depth texture,
+// the perspective depth format compiled in) shadows a floor as the casters target's omni map does:
+// the same pixels darken (a card under a point light, seen from above), on every context (ES 2 and
+// GL 2.1 sample the depth texture through texture2D).
+static void test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_does(void)
+{
+    const Vector3 lpos = { 0.3f, 1.4f, -0.2f };
+    RblLight light = litPoint(lpos, 0.9f, 12.0f);
+    light.color = WHITE;
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.lightFeatures = RblLightFeatures(&light, 1); desc.shadowMaps = 1;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 256; sd.omni = true;
+    RblShadowMap maps[2];
+    maps[0] = RblLoadShadowMap(sd);
+    sd.selfShadow = true;
+    maps[1] = RblLoadShadowMap(sd);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(maps[0]) && RblIsShadowMapValid(maps[1]), "rig failed to load");
+    Texture2D white = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RenderTexture2D target = LoadRenderTexture(OM_VIEW, OM_VIEW);
+    Camera3D top = omTop();
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 30, 30, 30, 255 };
+    RblBillboard card;
+    memset(&card, 0, sizeof(card));
+    card.facing = RBL_FACING_FIXED; card.axis = (Vector3){ 0.0f, 1.0f, 0.0f }; card.up = (Vector3){ 0.0f, 0.0f, -1.0f };
+    card.size = (Vector2){ 0.6f, 0.6f }; card.origin = (Vector2){ 0.3f, 0.3f };
+    card.position = (Vector3){ lpos.x + 0.4f, 0.7f, lpos.z + 0.1f };
+    for (int k = 0; k < 2; k++)
+        for (int pass = 0; pass < RblShadowMapPasses(maps[k]); pass++)
+        {
+            RT_CHECK(RblBeginShadowMapPass(&maps[k], &scene, 0, pass, (Vector3){ 0 }, 0.0f), "map %d face %d refused", k, pass);
+            RblDrawBillboard(top, m, card);
+            RblEndShadowMap(&maps[k]);
+        }
+    Image img[3];
+    int code[3] = { -1, -1, -1 };
+    rbl__Program *base = rbl__findLit(lit.id);
+    for (int k = 0; k < 3; k++)
+    {
+        scene.shadowMaps = (k < 2)? &maps[k] : NULL; scene.shadowMapCount = (k < 2)? 1 : 0;
+        RT_CHECK(RblSetScene(&scene), "scene %d rejected", k);
+        BeginTextureMode(target);
+        ClearBackground(BLACK);
+        BeginMode3D(top);
+        RblDrawBillboard(top, m, ssFloor());
+        EndMode3D();
+        EndTextureMode();
+        img[k] = rtReadTarget(target);
+        rbl__Program *drawn = (base != NULL)? rbl__shadowVariant(base) : NULL;
+        code[k] = (drawn != NULL)? (drawn->key.shadowKinds & 15) : -1;
+    }
+    RT_CHECK((code[0] == 7) && (code[1] == 5), "drawn with map codes %d and %d (omni casters target 7, omni depth texture 5)", code[0], code[1]);
+    int dark[2] = { 0, 0 }, differ = 0;
+    for (int y = 0; y < OM_VIEW; y++)
+        for (int x = 0; x < OM_VIEW; x++)
+        {
+            int none = rtPixel(img[2], x, y).g, a = rtPixel(img[0], x, y).g, b = rtPixel(img[1], x, y).g;
+            dark[0] += (none - a > 10); dark[1] += (none - b > 10);
+            differ += (abs(a - b) > 3);
+        }
+    printf("    omni floor shadow: casters target %d dark pixels, depth texture %d; %d pixels differ by more than 3/255\n", dark[0], dark[1], differ);
+    RT_CHECK(dark[0] > 60, "the casters target's omni map darkens %d pixels (its card's shadow: over 60)", dark[0]);
+    RT_CHECK(dark[1] > 60, "the depth texture's omni map darkens %d pixels (its card's shadow: over 60)", dark[1]);
+    RT_CHECK(differ*20 <= dark[0], "%d pixels differ by more than 3/255 between the two formats (over 5%% of %d shadowed)", differ, dark[0]);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(img[0], "casters"); rtSaveImage(img[1], "depth"); rtSaveImage(img[2], "none"); }
+    for (int k = 0; k < 3; k++) UnloadImage(img[k]);
+    UnloadRenderTexture(target);
+    UnloadTexture(white);
+    RblUnloadShadowMap(&maps[0]);
+    RblUnloadShadowMap(&maps[1]);
+    RblUnloadLitShader(&lit);
+}
+
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_OMNI_CASCADES_TESTS \
     RT_TEST(test_shadows_omni_cube_faces_hold_the_double_precision_distances), \
@@ -777,4 +858,5 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     RT_TEST(test_shadows_cascade_splits_and_spheres_match_the_double_reference), \
     RT_TEST(test_shadows_cascade_edges_hold_still_while_the_camera_pans_and_turns), \
     RT_TEST(test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly), \
-    RT_TEST(test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_mixed_scenes_add_up)
+    RT_TEST(test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_mixed_scenes_add_up), \
+    RT_TEST(test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_does)
