@@ -18,6 +18,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+// The 1.0 API moved the lighting fields into desc.shading (receiver_ab.sh defines AB_SHADING there)
+#if defined(AB_SHADING)
+    #define AB_SH(d) (d).shading
+    #define AB_FEATURES RblGetLightFeatures
+#else
+    #define AB_SH(d) (d)
+    #define AB_FEATURES RblLightFeatures
+#endif
+
 #define W 1280
 #define H 720
 #define PAIRS 5
@@ -103,13 +112,13 @@ int main(int argc, char **argv)
     sunScene.lights = &sun; sunScene.lightCount = 1; sunScene.ambient = (Color){ 40, 40, 40, 255 };
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.brdf = RBL_BRDF_LAMBERT;
+    d.maxLights = 1; AB_SH(d).lightFeatures = AB_FEATURES(&sun, 1); AB_SH(d).brdf = RBL_BRDF_LAMBERT;
     Shader unshadowed = RblLoadLitShader(d);
-    d.shadowMaps = 1; d.shadowFilter = 1;
+    AB_SH(d).shadowMaps = 1; AB_SH(d).shadowFilter = 1;
     Shader pcf1 = RblLoadLitShader(d);
-    d.shadowFilter = 2;
+    AB_SH(d).shadowFilter = 2;
     Shader pcf2 = RblLoadLitShader(d);
-    d.shadowMaps = 2;
+    AB_SH(d).shadowMaps = 2;
     Shader pcf2two = RblLoadLitShader(d);
 
     RblShadowDesc sd;
@@ -132,9 +141,9 @@ int main(int argc, char **argv)
         // baseline is the unshadowed variant of the same light features
         RblLitShaderDesc od;
         memset(&od, 0, sizeof(od));
-        od.maxLights = 1; od.lightFeatures = RblLightFeatures(sunAndPoint, 2); od.brdf = RBL_BRDF_LAMBERT;
+        od.maxLights = 1; AB_SH(od).lightFeatures = AB_FEATURES(sunAndPoint, 2); AB_SH(od).brdf = RBL_BRDF_LAMBERT;
         Material plain2 = Mat(RblLoadLitShader(od), ab->white);
-        od.shadowMaps = 1; od.shadowFilter = 2;
+        AB_SH(od).shadowMaps = 1; AB_SH(od).shadowFilter = 2;
         Shader s2 = RblLoadLitShader(od);
         RblShadowDesc rod = sd; rod.omni = true;
         static RblShadowMap omni, cascades;

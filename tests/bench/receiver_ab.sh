@@ -18,6 +18,7 @@ for spec in "$@"; do
   mkdir -p "$out/$label"
   if [ -n "${AB_NOBUILD:-}" ]; then :; elif [ "$rev" = worktree ]; then cp rbillboard_lit.h "$out/$label/"; else git show "$rev:rbillboard_lit.h" > "$out/$label/rbillboard_lit.h"; fi
   omni=""; grep -q "RblFitShadowCascades" "$out/$label/rbillboard_lit.h" && omni="-DAB_OMNI"
+  grep -q "RblShading shading" "$out/$label/rbillboard_lit.h" && omni="$omni -DAB_SHADING"
   [ -n "${AB_NOBUILD:-}" ] && [ -x "$out/$label/receiver_ab" ] || cc -std=c99 -D_DEFAULT_SOURCE -O2 -DRBL_INSTRUMENTS $omni -I"$out/$label" -Itests -Itests/bench $RAYLIB_CFLAGS \
      tests/bench/receiver_ab.c tests/harness.c -o "$out/$label/receiver_ab" $RAYLIB_LIBS
   labels+=("$label")
