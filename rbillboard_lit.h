@@ -267,6 +267,13 @@
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
 *       Receivers are variants with desc.shading.shadowMaps > 0 (G-buffer: its desc.shading.shadowMaps) and sample the
 *       first that many maps of the scene; a forward program shadows a light only if it has a slot.
+*       Each map's kind (one camera, omni, cascades) and format (orthographic or perspective, casters
+*       target or depth texture) is compiled into the receiver, not branched on per pixel: a program
+*       loads compiled for directional maps; a header draw (and each G-buffer light pass) whose scene
+*       gives other kinds draws through the registry's variant for them, compiled on first need (one
+*       stall when a scene first binds a new kind) and freed with its program. A program receiving
+*       single maps holds no face or cascade code. raylib's own DrawModel of a lit program cannot pick
+*       a variant: maps of other kinds than its own are left unsampled there (said in its warning).
 *       Light cameras: directional = orthographic over the focus sphere (eye 2r before the centre, depth
 *       0..3r: casters up to 2r toward the light), moved in whole texels of a world-fixed grid so edges
 *       do not crawl as the focus follows the camera; spot = perspective over the outer cone (<= 80
@@ -1461,6 +1468,7 @@ typedef struct rbl__ProgramKey {
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
     int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
+    int shadowKinds;                // Receivers: map k's compiled code in bits 4k..4k+3 (rbl__shadowCode; shadows.glsl)
 } rbl__ProgramKey;
 
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
@@ -1483,6 +1491,9 @@ typedef struct rbl__Program {
     bool valuesValid;
     bool raylibNoted;                   // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
     struct rbl__Program *spriteVariant; // Instanced programs: the resident-sprite variant once compiled (goes with this one)
+    struct rbl__Program *shadowBase;    // A receiver's variant for other map kinds: the program it was compiled for (goes with it), else NULL
+    struct rbl__Program *shadowVariant; // A receiver: its variant drawn last (a cache; the registry holds every variant)
+    bool shadowVariantNoted;            // ... a variant failed to compile (said once)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -3715,8 +3726,15 @@ static const char *const rbl__shader_shadows[] = {
     "// light a map shadows is the lights' business (lights.glsl, deferred_volume.fs.glsl).\n",
     "//   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light\n",
     "//   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup\n",
-    "// A map is one light camera (directional, spot), six cube faces (a point light: tiles 3 x 2 of one\n",
-    "// target, +X -X +Y / -Y +Z -Z) or 2..4 cascades (tiles in a row); every tile is looked up alike.\n",
+    "//   RBL_SHADOW_KIND<k>        map k's kind: 0 one light camera (directional, spot), 1 omni (a point\n",
+    "//                             light: six cube faces, tiles 3 x 2 of one target, +X -X +Y / -Y +Z -Z),\n",
+    "//                             2 cascades (2..4 tiles in a row); every tile is looked up alike\n",
+    "//   RBL_SHADOW_FORMAT<k>      map k's format: perspective + 2 for the casters target (else a depth texture)\n",
+    "//   RBL_SHADOW_OMNI           some map is omni (its face code is compiled in)\n",
+    "//   RBL_SHADOW_CASCADES       some map is cascaded (its cascade code is compiled in)\n",
+    "// Kind and format are compiled per map (the program registry compiles the variant a scene's maps\n",
+    "// need, RblSetScene): a program receiving one-camera maps holds no tile, face or cascade code, and\n",
+    "// no lookup branches on a format at run time.\n",
     "#include \"surface.glsl\"\n",
     "\n",
     "#if RBL_SHADOWS > 0\n",
@@ -3730,8 +3748,10 @@ static const char *const rbl__shader_shadows[] = {
     "uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), tile size in texels\n",
     "uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right));\n",
     "                                            // cascades: w the first split, the blend band's share\n",
+    "#if defined(RBL_SHADOW_OMNI) || defined(RBL_SHADOW_CASCADES)\n",
     "uniform vec4 rblShadowTiles[4*RBL_SHADOWS]; // omni: [4k] light position, tan of a face's half width; cascade c:\n",
     "                                            // [4k + c] 1/width, -left/width, -bottom/width, far split\n",
+    "#endif\n",
     "uniform sampler2D rblShadowMap0;            // casters targets or depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)\n",
     "#if RBL_SHADOWS > 1\n",
     "uniform sampler2D rblShadowMap1;\n",
@@ -3772,7 +3792,8 @@ static const char *const rbl__shader_shadows[] = {
     "// Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch\n",
     "// outside the map or of a texel nothing was drawn into.\n",
     "// Map k's uniforms come in as arguments, indexed by constants at the call: GLSL ES 1.00 fragment\n",
-    "// stages may index uniform arrays only by constants and loop indices.\n",
+    "// stages may index uniform arrays only by constants and loop indices. prm.y (the format) is map k's\n",
+    "// compiled RBL_SHADOW_FORMAT<k> at every call, so the compiler folds each branch on it away.\n",
     "vec4 rblShadowTransform(vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec3 p)\n",
     "{\n",
     "    vec4 h = vec4(p, 1.0);\n",
@@ -3840,78 +3861,99 @@ static const char *const rbl__shader_shadows[] = {
     "    return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);\n",
     "}\n",
     "\n",
-    "// Map k of any kind: picks the tile(s) and their transform, then looks up as one camera. Omni: the\n",
-    "// cube face of the point's major axis from the light (rows built as the CPU's face camera, the\n",
-    "// guard band keeping the PCF footprint inside the face). Cascades: the first whose far split lies\n",
-    "// beyond the point's view depth; inside the last blend share of its range the next cascade's lookup\n",
-    "// is mixed in linearly (each cascade's map covers the previous one's band)\n",
-    "float rblShadowMap(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec4 ax0, vec4 ax1,\n",
-    "                   vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
+    "#if defined(RBL_SHADOW_OMNI)\n",
+    "// An omni map: the cube face of the point's major axis from the light (rows built as the CPU's face\n",
+    "// camera, the guard band keeping the PCF footprint inside the face), looked up as one camera\n",
+    "float rblShadowOmni(sampler2D map, vec4 prm, vec4 bias, vec4 t0, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
     "{\n",
-    "    float kind = floor(prm.y/4.0 + 0.01);\n",
     "    float size = bias.w;\n",
-    "    vec4 p = vec4(prm.x, prm.y - 4.0*kind, prm.zw), tile = vec4(0.0, 0.0, size, size);\n",
-    "    vec3 right = ax0.xyz, up = ax1.xyz;\n",
-    "    float c = 0.0, mixing = 0.0;\n",
-    "    if (kind > 1.5)\n",
-    "    {\n",
-    "        float depth = dot(r3, vec4(position, 1.0));\n",
-    "        c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));\n",
-    "        float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));\n",
-    "        if (!(c < kind) || !(depth < end)) return 1.0;\n",
-    "        float band = ax1.w*(end - ((c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w))));\n",
-    "        mixing = ((c + 1.0 < kind) && (band > 0.0))? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;\n",
-    "    }\n",
-    "    else if (kind > 0.5)\n",
-    "    {\n",
-    "        vec3 d = position - t0.xyz, a = abs(d);\n",
-    "        float face = (a.x >= a.y && a.x >= a.z)? ((d.x < 0.0)? 1.0 : 0.0) : ((a.y >= a.z)? ((d.y < 0.0)? 3.0 : 2.0) : ((d.z < 0.0)? 5.0 : 4.0));\n",
-    "        vec3 along = (face < 1.5)? vec3(1.0, 0.0, 0.0) : ((face < 3.5)? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));\n",
-    "        along *= (mod(face, 2.0) > 0.5)? -1.0 : 1.0;\n",
-    "        up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);\n",
-    "        right = cross(along, up);\n",
-    "        float e = dot(along, t0.xyz), s = 0.5/t0.w, g = p.w/(p.w - p.z);\n",
-    "        r3 = vec4(along, -e);\n",
-    "        r0 = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*r3;\n",
-    "        r1 = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*r3;\n",
-    "        r2 = g*r3 - vec4(0.0, 0.0, 0.0, g*p.z);\n",
-    "        tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);\n",
-    "    }\n",
-    "    // One lookup call (one PCF loop in the program, whatever the kind); a second pass in a blend band\n",
-    "    vec4 c0 = r0, c1 = r1, c3 = r3;\n",
+    "    vec3 d = position - t0.xyz, a = abs(d);\n",
+    "    float face = (a.x >= a.y && a.x >= a.z)? ((d.x < 0.0)? 1.0 : 0.0) : ((a.y >= a.z)? ((d.y < 0.0)? 3.0 : 2.0) : ((d.z < 0.0)? 5.0 : 4.0));\n",
+    "    vec3 along = (face < 1.5)? vec3(1.0, 0.0, 0.0) : ((face < 3.5)? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));\n",
+    "    along *= (mod(face, 2.0) > 0.5)? -1.0 : 1.0;\n",
+    "    vec3 up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);\n",
+    "    vec3 right = cross(along, up);\n",
+    "    float e = dot(along, t0.xyz), s = 0.5/t0.w, g = prm.w/(prm.w - prm.z);\n",
+    "    vec4 r3 = vec4(along, -e);\n",
+    "    vec4 r0 = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*r3;\n",
+    "    vec4 r1 = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*r3;\n",
+    "    vec4 r2 = g*r3 - vec4(0.0, 0.0, 0.0, g*prm.z);\n",
+    "    vec4 tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);\n",
+    "    return rblShadowLookup(map, r0, r1, r2, r3, prm, bias, right, up, tile, position, n, NdotL, side, caster);\n",
+    "}\n",
+    "#endif\n",
+    "\n",
+    "#if defined(RBL_SHADOW_CASCADES)\n",
+    "// A cascaded map (kind: the cascade count, from the uniforms): the first cascade whose far split lies\n",
+    "// beyond the point's view depth; inside the last blend share of its range the next cascade's lookup\n",
+    "// is mixed in linearly (each cascade's map covers the previous one's band). One lookup call in the\n",
+    "// program; a second pass in a blend band\n",
+    "float rblShadowCascades(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, float kind, vec4 bias, vec4 ax0, vec4 ax1,\n",
+    "                        vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
+    "{\n",
+    "    float size = bias.w;\n",
+    "    float depth = dot(r3, vec4(position, 1.0));\n",
+    "    float c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));\n",
+    "    float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));\n",
+    "    if (!(c < kind) || !(depth < end)) return 1.0;\n",
+    "    float band = ax1.w*(end - ((c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w))));\n",
+    "    float mixing = ((c + 1.0 < kind) && (band > 0.0))? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;\n",
+    "    vec4 p = prm;\n",
     "    float first = 1.0, lit = 1.0;\n",
     "    for (int i = 0; i < 2; i++)\n",
     "    {\n",
     "        if ((i == 1) && !(mixing > 0.0)) break;\n",
-    "        if (kind > 1.5)\n",
-    "        {\n",
-    "            float ci = c + float(i);\n",
-    "            vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));\n",
-    "            c0 = vec4(r0.xyz*t.x, t.y); c1 = vec4(r1.xyz*t.x, t.z); c3 = vec4(0.0, 0.0, 0.0, 1.0);\n",
-    "            p.x = 1.0/(t.x*size);\n",
-    "            tile = vec4(ci*size, 0.0, kind*size, size);\n",
-    "        }\n",
-    "        lit = rblShadowLookup(map, c0, c1, r2, c3, p, bias, right, up, tile, position, n, NdotL, side, caster);\n",
+    "        float ci = c + float(i);\n",
+    "        vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));\n",
+    "        p.x = 1.0/(t.x*size);\n",
+    "        lit = rblShadowLookup(map, vec4(r0.xyz*t.x, t.y), vec4(r1.xyz*t.x, t.z), r2, vec4(0.0, 0.0, 0.0, 1.0), p, bias, ax0.xyz, ax1.xyz,\n",
+    "                              vec4(ci*size, 0.0, kind*size, size), position, n, NdotL, side, caster);\n",
     "        if (i == 0) first = lit;\n",
     "    }\n",
     "    return (mixing > 0.0)? mix(first, lit, mixing) : first;\n",
     "}\n",
+    "#endif\n",
+    "\n",
+    "// Map k's lookup by its compiled kind and format (RBL_SHADOW_KIND<k>, RBL_SHADOW_FORMAT<k>): k a literal\n",
+    "#define RBL_SHADOW_ONE_OF(map, k, format) rblShadowLookup(map, rblShadowMatrix[4*k], rblShadowMatrix[4*k + 1], rblShadowMatrix[4*k + 2], rblShadowMatrix[4*k + 3], vec4(rblShadowParams[k].x, format, rblShadowParams[k].zw), rblShadowBias[k], rblShadowAxes[2*k].xyz, rblShadowAxes[2*k + 1].xyz, vec4(0.0, 0.0, rblShadowBias[k].ww), position, n, NdotL, side, caster)\n",
+    "#define RBL_SHADOW_OMNI_OF(map, k, format) rblShadowOmni(map, vec4(rblShadowParams[k].x, format, rblShadowParams[k].zw), rblShadowBias[k], rblShadowTiles[4*k], position, n, NdotL, side, caster)\n",
+    "#define RBL_SHADOW_CASCADES_OF(map, k, format) rblShadowCascades(map, rblShadowMatrix[4*k], rblShadowMatrix[4*k + 1], rblShadowMatrix[4*k + 2], rblShadowMatrix[4*k + 3], vec4(rblShadowParams[k].x, format, rblShadowParams[k].zw), floor(rblShadowParams[k].y/4.0 + 0.01), rblShadowBias[k], rblShadowAxes[2*k], rblShadowAxes[2*k + 1], rblShadowTiles[4*k], rblShadowTiles[4*k + 1], rblShadowTiles[4*k + 2], rblShadowTiles[4*k + 3], position, n, NdotL, side, caster)\n",
     "\n",
     "float rblShadow(int k, vec3 position, vec3 n, float NdotL, float side, vec2 caster)\n",
     "{\n",
-    "    if (k == 0) return rblShadowMap(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3], rblShadowParams[0], rblShadowBias[0],\n",
-    "                                    rblShadowAxes[0], rblShadowAxes[1], rblShadowTiles[0], rblShadowTiles[1], rblShadowTiles[2], rblShadowTiles[3], position, n, NdotL, side, caster);\n",
+    "#if RBL_SHADOW_KIND0 == 1\n",
+    "    if (k == 0) return RBL_SHADOW_OMNI_OF(rblShadowMap0, 0, float(RBL_SHADOW_FORMAT0));\n",
+    "#elif RBL_SHADOW_KIND0 == 2\n",
+    "    if (k == 0) return RBL_SHADOW_CASCADES_OF(rblShadowMap0, 0, float(RBL_SHADOW_FORMAT0));\n",
+    "#else\n",
+    "    if (k == 0) return RBL_SHADOW_ONE_OF(rblShadowMap0, 0, float(RBL_SHADOW_FORMAT0));\n",
+    "#endif\n",
     "#if RBL_SHADOWS > 1\n",
-    "    if (k == 1) return rblShadowMap(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7], rblShadowParams[1], rblShadowBias[1],\n",
-    "                                    rblShadowAxes[2], rblShadowAxes[3], rblShadowTiles[4], rblShadowTiles[5], rblShadowTiles[6], rblShadowTiles[7], position, n, NdotL, side, caster);\n",
+    "#if RBL_SHADOW_KIND1 == 1\n",
+    "    if (k == 1) return RBL_SHADOW_OMNI_OF(rblShadowMap1, 1, float(RBL_SHADOW_FORMAT1));\n",
+    "#elif RBL_SHADOW_KIND1 == 2\n",
+    "    if (k == 1) return RBL_SHADOW_CASCADES_OF(rblShadowMap1, 1, float(RBL_SHADOW_FORMAT1));\n",
+    "#else\n",
+    "    if (k == 1) return RBL_SHADOW_ONE_OF(rblShadowMap1, 1, float(RBL_SHADOW_FORMAT1));\n",
+    "#endif\n",
     "#endif\n",
     "#if RBL_SHADOWS > 2\n",
-    "    if (k == 2) return rblShadowMap(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11], rblShadowParams[2], rblShadowBias[2],\n",
-    "                                    rblShadowAxes[4], rblShadowAxes[5], rblShadowTiles[8], rblShadowTiles[9], rblShadowTiles[10], rblShadowTiles[11], position, n, NdotL, side, caster);\n",
+    "#if RBL_SHADOW_KIND2 == 1\n",
+    "    if (k == 2) return RBL_SHADOW_OMNI_OF(rblShadowMap2, 2, float(RBL_SHADOW_FORMAT2));\n",
+    "#elif RBL_SHADOW_KIND2 == 2\n",
+    "    if (k == 2) return RBL_SHADOW_CASCADES_OF(rblShadowMap2, 2, float(RBL_SHADOW_FORMAT2));\n",
+    "#else\n",
+    "    if (k == 2) return RBL_SHADOW_ONE_OF(rblShadowMap2, 2, float(RBL_SHADOW_FORMAT2));\n",
+    "#endif\n",
     "#endif\n",
     "#if RBL_SHADOWS > 3\n",
-    "    if (k == 3) return rblShadowMap(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15], rblShadowParams[3], rblShadowBias[3],\n",
-    "                                    rblShadowAxes[6], rblShadowAxes[7], rblShadowTiles[12], rblShadowTiles[13], rblShadowTiles[14], rblShadowTiles[15], position, n, NdotL, side, caster);\n",
+    "#if RBL_SHADOW_KIND3 == 1\n",
+    "    if (k == 3) return RBL_SHADOW_OMNI_OF(rblShadowMap3, 3, float(RBL_SHADOW_FORMAT3));\n",
+    "#elif RBL_SHADOW_KIND3 == 2\n",
+    "    if (k == 3) return RBL_SHADOW_CASCADES_OF(rblShadowMap3, 3, float(RBL_SHADOW_FORMAT3));\n",
+    "#else\n",
+    "    if (k == 3) return RBL_SHADOW_ONE_OF(rblShadowMap3, 3, float(RBL_SHADOW_FORMAT3));\n",
+    "#endif\n",
     "#endif\n",
     "    return 1.0;\n",
     "}\n",
@@ -5646,9 +5688,10 @@ void RblClose(void)
     // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
     // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
     for (int i = rbl__state.programCount - 1; i >= 0; i--)
-        if ((rbl__state.programs[i]->key.kind == RBL__KIND_LIT) && rbl__state.programs[i]->key.sprites)
+        if ((rbl__state.programs[i]->key.kind == RBL__KIND_LIT) && (rbl__state.programs[i]->key.sprites || (rbl__state.programs[i]->shadowBase != NULL)))
         {
-            if (rbl__glUsable()) rlUnloadShaderProgram(rbl__state.programs[i]->shader.id);     // resident-sprite variants are the header's
+            // resident-sprite and receiver variants are the header's
+            if (rbl__glUsable()) rlUnloadShaderProgram(rbl__state.programs[i]->shader.id);
             rbl__removeProgram(rbl__state.programs[i]);
             i = rbl__state.programCount;
         }
@@ -7188,7 +7231,7 @@ static void rbl__stagePrologue(int glsl, bool vertex, const char *defines, char 
 static Shader rbl__loadShaderVariant(const char *const *const *vs, const char *const *const *fs, const char *defines)
 {
     int glsl = rbl__glsl();
-    char vsPrefix[1300], fsPrefix[1300];
+    char vsPrefix[1800], fsPrefix[1800];        // the version lines and the defines (rbl__compileProgram: 1536 at most)
     rbl__stagePrologue(glsl, true, defines, vsPrefix, sizeof(vsPrefix));
     rbl__stagePrologue(glsl, false, defines, fsPrefix, sizeof(fsPrefix));
     Shader shader;
@@ -7294,6 +7337,24 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->shading.shadowMaps = in.deferred? 0 : in.shading.shadowMaps;       // the geometry pass receives nothing
     out->shading.shadowFilter = (out->shading.shadowMaps == 0)? 0 : ((in.shading.shadowFilter == 0)? 2 : in.shading.shadowFilter);
     return NULL;
+}
+
+// A shadow map's compiled code in receivers (shadows.glsl RBL_SHADOW_FORMAT<k> + 4 RBL_SHADOW_KIND<k>)
+// from its params.y (format + 4 x kind, kind 2..4 the cascade count: one code for every count)
+#define RBL__SHADOW_CODE_DEFAULT 2      // directional through a casters target: what a receiver compiles first
+static int rbl__shadowCode(float paramsY)
+{
+    int y = (int)(paramsY + 0.5f), kind = y/4;
+    return (y - 4*kind) + 4*((kind > 2)? 2 : kind);
+}
+
+// Codes of maps 0..maps-1 in 4 bits each: the scene's first count maps (uniform data as shadows.glsl
+// reads them), the default for the rest (a program samples only maps the scene gives)
+static int rbl__shadowKindsOf(const float (*uniforms)[48], int count, int maps)
+{
+    int kinds = 0;
+    for (int k = 0; k < maps; k++) kinds |= ((k < count)? rbl__shadowCode(uniforms[k][17]) : RBL__SHADOW_CODE_DEFAULT) << (4*k);
+    return kinds;
 }
 
 // Variant defines: one line per compiled feature
@@ -7406,7 +7467,7 @@ static void rbl__checkRaylibDrew(rbl__Program *p)
     for (int i = 0; (i < 15) && sentinel; i++) sentinel = (m[i] == 0.0f);
     if (sentinel) return;
     TraceLog(LOG_WARNING, "RBL: lit program %u was drawn by raylib's DrawModel/DrawMesh, which uploads colDiffuse, matrices and textures only: "
-                          "roughness, metalness, shininess, specular, emission and alpha cutoff were the last header draw's (draw Models with RblDrawModel/RblDrawMesh)", p->shader.id);
+                          "roughness, metalness, shininess, specular, emission and alpha cutoff were the last header draw's, and shadow maps of other kinds than its first compile's (omni, cascades) unsampled (draw Models with RblDrawModel/RblDrawMesh)", p->shader.id);
     p->raylibNoted = true;
 }
 
@@ -7444,6 +7505,17 @@ static void rbl__removeProgram(rbl__Program *p)
     }
     // An instanced program's resident-sprite variant is the header's: it goes with the program (and
     // a variant going alone, forgotten, is no longer its program's)
+    // Receiver variants for other map kinds likewise
+    for (int i = 0; i < rbl__state.programCount; i++)
+    {
+        rbl__Program *v = rbl__state.programs[i];
+        if (v->shadowVariant == p) v->shadowVariant = NULL;
+        if (v->shadowBase != p) continue;
+        v->shadowBase = NULL;
+        if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
+        rbl__removeProgram(v);
+        i = -1;                     // the registry was reordered
+    }
     if (p->key.sprites) { for (int i = 0; i < rbl__state.programCount; i++) if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL; }
     else if (p->spriteVariant != NULL)
     {
@@ -7513,9 +7585,19 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     rbl__Program *p = (rbl__Program *)RBL_CALLOC(1, sizeof(rbl__Program));
     if (p == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the program registry"); return NULL; }
     const RblLitShaderDesc *d = &key->desc;
-    char defines[1024];
+    char defines[1536];
     rbl__litDefines(d, defines, sizeof(defines));
     size_t used = strlen(defines);
+    // Receivers: each map's kind and format (the registry's variant for the scene's maps)
+    bool omni = false, cascades = false;
+    for (int k = 0; (k < d->shading.shadowMaps) && (used < sizeof(defines)); k++)
+    {
+        int code = (key->shadowKinds >> (4*k)) & 15;
+        omni = omni || (code/4 == 1); cascades = cascades || (code/4 == 2);
+        used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_SHADOW_KIND%i %i\n#define RBL_SHADOW_FORMAT%i %i\n", k, code/4, k, code%4);
+    }
+    if (omni && (used < sizeof(defines))) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_SHADOW_OMNI\n");
+    if (cascades && (used < sizeof(defines))) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_SHADOW_CASCADES\n");
     if ((key->kind == RBL__KIND_CASTER) && (d->shading.shadowMaps == 0)) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
     if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
@@ -7644,6 +7726,39 @@ static void rbl__keyFromDesc(const RblLitShaderDesc *normalised, int kind, int p
     key->desc = *normalised;
     key->kind = kind;
     key->pass = pass;
+    key->shadowKinds = rbl__shadowKindsOf(NULL, 0, normalised->shading.shadowMaps);
+}
+
+// The receiver variant of program p (lit or G-buffer pass) for the scene's shadow maps: p itself
+// when its compiled kinds match (or it samples no map), else the registry's variant, compiled on
+// first need (a draw may stall for one compile when a scene first binds a new kind). On failure p,
+// said once: p's upload leaves the maps of other kinds unsampled (rbl__uploadShadows)
+static rbl__Program *rbl__shadowVariant(rbl__Program *p)
+{
+    if ((p == NULL) || (p->key.desc.shading.shadowMaps == 0) || (p->loc[RBL__U_SHADOW_PARAMS] == -1)) return p;
+    rbl__Program *base = (p->shadowBase != NULL)? p->shadowBase : p;
+    const rbl__Scene *s = &rbl__state.scene;
+    int want = rbl__shadowKindsOf(s->shadowUniforms, s->shadowCount, base->key.desc.shading.shadowMaps);
+    if (want == base->key.shadowKinds) return base;
+    if ((base->shadowVariant != NULL) && (base->shadowVariant->key.shadowKinds == want)) return base->shadowVariant;
+    rbl__Program *v = NULL;
+    for (int i = 0; (i < rbl__state.programCount) && (v == NULL); i++)
+        if ((rbl__state.programs[i]->shadowBase == base) && (rbl__state.programs[i]->key.shadowKinds == want)) v = rbl__state.programs[i];
+    if (v == NULL)
+    {
+        rbl__ProgramKey key = base->key;
+        key.shadowKinds = want;
+        v = rbl__compileProgram(&key);
+        if (v == NULL)
+        {
+            if (!base->shadowVariantNoted) TraceLog(LOG_WARNING, "RBL: program %u: the receiver variant for this scene's shadow map kinds failed (%s): maps of other kinds than its own left unsampled", base->shader.id, rbl__state.problem);
+            base->shadowVariantNoted = true;
+            return base;
+        }
+        v->shadowBase = base;
+    }
+    base->shadowVariant = v;
+    return v;
 }
 
 //----------------------------------------------------------------------------------
@@ -8016,6 +8131,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     }
     if (*program == NULL) return true;
     rbl__checkRaylibDrew(*program);
+    *program = rbl__shadowVariant(*program);    // the receiver compiled for the scene's map kinds
     material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
     if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shading.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
@@ -8130,7 +8246,9 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     const int *loc = p->loc;
     int n = (s->shadowCount < p->key.desc.shading.shadowMaps)? s->shadowCount : p->key.desc.shading.shadowMaps;
     int lightOf[4] = { -1, -1, -1, -1 };
-    for (int k = 0; k < n; k++) lightOf[k] = slotOf[k];
+    // A map of another kind or format than the program compiled (raylib's DrawModel of a lit program,
+    // a variant that failed) is left unsampled: its light draws unshadowed, never misread
+    for (int k = 0; k < n; k++) lightOf[k] = (rbl__shadowCode(s->shadowUniforms[k][17]) == ((p->key.shadowKinds >> (4*k)) & 15))? slotOf[k] : -1;
     rlSetUniform(loc[RBL__U_SHADOW_LIGHT], lightOf, SHADER_UNIFORM_IVEC4, 1);
     if (n == 0) return;
     float rows[RBL_MAX_SHADOWS*16], params[RBL_MAX_SHADOWS*4], bias[RBL_MAX_SHADOWS*4], axes[RBL_MAX_SHADOWS*8], tiles[RBL_MAX_SHADOWS*16];
@@ -8195,14 +8313,14 @@ static int rbl__uploadSceneLights(const rbl__Program *p)
         if (loc[RBL__U_LIGHT_SPOT] != -1) rlSetUniform(loc[RBL__U_LIGHT_SPOT], spot, SHADER_UNIFORM_VEC4, n);
         if (loc[RBL__U_LIGHT_ATTENUATION] != -1) rlSetUniform(loc[RBL__U_LIGHT_ATTENUATION], att, SHADER_UNIFORM_VEC3, n);
     }
-    if (loc[RBL__U_SHADOW_MATRIX] != -1) rbl__uploadShadows(p, slotOf);
+    if (loc[RBL__U_SHADOW_PARAMS] != -1) rbl__uploadShadows(p, slotOf);
     return skipped;
 }
 
 // The current scene into program p (every kind reads what it declares); returns lights left out
 static int rbl__uploadSceneInto(rbl__Program *p)
 {
-    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_MATRIX] == -1) && (p->loc[RBL__U_AMBIENT] == -1)) return 0;
+    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_PARAMS] == -1) && (p->loc[RBL__U_AMBIENT] == -1)) return 0;
     int skipped = 0;
     rlEnableShader(p->shader.id);
     bool pass = (p->key.kind == RBL__KIND_PASS);
@@ -9056,7 +9174,8 @@ void RblEndGBuffer(RblGBuffer *gbuffer)
 }
 
 // Registry entry of one of the G-buffer's pass programs
-static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass) { return rbl__findOwn(g->state->passes[pass], RBL__KIND_PASS); }
+// (a receiving pass: its variant for the scene's map kinds)
+static rbl__Program *rbl__passProgram(const RblGBuffer *g, int pass) { return rbl__shadowVariant(rbl__findOwn(g->state->passes[pass], RBL__KIND_PASS)); }
 
 // Binds the G-buffer textures, camera and shadow uniforms of one pass; returns its locations
 static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
@@ -9102,7 +9221,7 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
 {
     const int *loc = rbl__bindGBufferPass(g, pass);
     const rbl__Scene *s = &rbl__state.scene;
-    if (loc[RBL__U_SHADOW_MATRIX] != -1)
+    if (loc[RBL__U_SHADOW_PARAMS] != -1)
     {
         // The registry's shadow upload, with this chunk's slots
         int n = (s->shadowCount < g->desc.shading.shadowMaps)? s->shadowCount : g->desc.shading.shadowMaps;
@@ -9227,7 +9346,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         int pass = counting? RBL__PASS_VOLUME_COUNT : RBL__PASS_VOLUME;
         rbl__bindGBufferPass(g, pass);
         const rbl__Program *volume = rbl__passProgram(g, pass);
-        if (volume->loc[RBL__U_SHADOW_MATRIX] != -1)
+        if (volume->loc[RBL__U_SHADOW_PARAMS] != -1)
         {
             int none[RBL_MAX_SHADOWS] = { -1, -1, -1, -1 };
             rbl__uploadShadows(volume, none);       // each volume carries its own map index

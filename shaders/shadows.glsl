@@ -2,8 +2,15 @@
 // light a map shadows is the lights' business (lights.glsl, deferred_volume.fs.glsl).
 //   RBL_SHADOWS n             shadow maps sampled (0..4; rblShadowMap0..3), each shadowing one light
 //   RBL_SHADOW_FILTER k       PCF footprint in texels per side: (k + 1)^2 depth fetches per lookup
-// A map is one light camera (directional, spot), six cube faces (a point light: tiles 3 x 2 of one
-// target, +X -X +Y / -Y +Z -Z) or 2..4 cascades (tiles in a row); every tile is looked up alike.
+//   RBL_SHADOW_KIND<k>        map k's kind: 0 one light camera (directional, spot), 1 omni (a point
+//                             light: six cube faces, tiles 3 x 2 of one target, +X -X +Y / -Y +Z -Z),
+//                             2 cascades (2..4 tiles in a row); every tile is looked up alike
+//   RBL_SHADOW_FORMAT<k>      map k's format: perspective + 2 for the casters target (else a depth texture)
+//   RBL_SHADOW_OMNI           some map is omni (its face code is compiled in)
+//   RBL_SHADOW_CASCADES       some map is cascaded (its cascade code is compiled in)
+// Kind and format are compiled per map (the program registry compiles the variant a scene's maps
+// need, RblSetScene): a program receiving one-camera maps holds no tile, face or cascade code, and
+// no lookup branches on a format at run time.
 #include "surface.glsl"
 
 #if RBL_SHADOWS > 0
@@ -17,8 +24,10 @@ uniform vec4 rblShadowParams[RBL_SHADOWS];  // texel world size (perspective: pe
 uniform vec4 rblShadowBias[RBL_SHADOWS];    // constant, slope, normal offset (all in texels), tile size in texels
 uniform vec4 rblShadowAxes[2*RBL_SHADOWS];  // right and up of map k's light camera (its axis = cross(up, right));
                                             // cascades: w the first split, the blend band's share
+#if defined(RBL_SHADOW_OMNI) || defined(RBL_SHADOW_CASCADES)
 uniform vec4 rblShadowTiles[4*RBL_SHADOWS]; // omni: [4k] light position, tan of a face's half width; cascade c:
                                             // [4k + c] 1/width, -left/width, -bottom/width, far split
+#endif
 uniform sampler2D rblShadowMap0;            // casters targets or depth textures (texture units RBL_SHADOW_TEXTURE_UNIT + k)
 #if RBL_SHADOWS > 1
 uniform sampler2D rblShadowMap1;
@@ -59,7 +68,8 @@ float rblShadowDistance(float v, vec4 prm)
 // Outside the map, behind a spot light or beyond the far plane the point is lit, and so is a fetch
 // outside the map or of a texel nothing was drawn into.
 // Map k's uniforms come in as arguments, indexed by constants at the call: GLSL ES 1.00 fragment
-// stages may index uniform arrays only by constants and loop indices.
+// stages may index uniform arrays only by constants and loop indices. prm.y (the format) is map k's
+// compiled RBL_SHADOW_FORMAT<k> at every call, so the compiler folds each branch on it away.
 vec4 rblShadowTransform(vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec3 p)
 {
     vec4 h = vec4(p, 1.0);
@@ -127,78 +137,99 @@ float rblShadowLookup(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 pr
     return lit/float(RBL_SHADOW_FILTER*RBL_SHADOW_FILTER);
 }
 
-// Map k of any kind: picks the tile(s) and their transform, then looks up as one camera. Omni: the
-// cube face of the point's major axis from the light (rows built as the CPU's face camera, the
-// guard band keeping the PCF footprint inside the face). Cascades: the first whose far split lies
-// beyond the point's view depth; inside the last blend share of its range the next cascade's lookup
-// is mixed in linearly (each cascade's map covers the previous one's band)
-float rblShadowMap(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, vec4 bias, vec4 ax0, vec4 ax1,
-                   vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec3 position, vec3 n, float NdotL, float side, vec2 caster)
+#if defined(RBL_SHADOW_OMNI)
+// An omni map: the cube face of the point's major axis from the light (rows built as the CPU's face
+// camera, the guard band keeping the PCF footprint inside the face), looked up as one camera
+float rblShadowOmni(sampler2D map, vec4 prm, vec4 bias, vec4 t0, vec3 position, vec3 n, float NdotL, float side, vec2 caster)
 {
-    float kind = floor(prm.y/4.0 + 0.01);
     float size = bias.w;
-    vec4 p = vec4(prm.x, prm.y - 4.0*kind, prm.zw), tile = vec4(0.0, 0.0, size, size);
-    vec3 right = ax0.xyz, up = ax1.xyz;
-    float c = 0.0, mixing = 0.0;
-    if (kind > 1.5)
-    {
-        float depth = dot(r3, vec4(position, 1.0));
-        c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));
-        float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));
-        if (!(c < kind) || !(depth < end)) return 1.0;
-        float band = ax1.w*(end - ((c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w))));
-        mixing = ((c + 1.0 < kind) && (band > 0.0))? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;
-    }
-    else if (kind > 0.5)
-    {
-        vec3 d = position - t0.xyz, a = abs(d);
-        float face = (a.x >= a.y && a.x >= a.z)? ((d.x < 0.0)? 1.0 : 0.0) : ((a.y >= a.z)? ((d.y < 0.0)? 3.0 : 2.0) : ((d.z < 0.0)? 5.0 : 4.0));
-        vec3 along = (face < 1.5)? vec3(1.0, 0.0, 0.0) : ((face < 3.5)? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
-        along *= (mod(face, 2.0) > 0.5)? -1.0 : 1.0;
-        up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
-        right = cross(along, up);
-        float e = dot(along, t0.xyz), s = 0.5/t0.w, g = p.w/(p.w - p.z);
-        r3 = vec4(along, -e);
-        r0 = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*r3;
-        r1 = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*r3;
-        r2 = g*r3 - vec4(0.0, 0.0, 0.0, g*p.z);
-        tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);
-    }
-    // One lookup call (one PCF loop in the program, whatever the kind); a second pass in a blend band
-    vec4 c0 = r0, c1 = r1, c3 = r3;
+    vec3 d = position - t0.xyz, a = abs(d);
+    float face = (a.x >= a.y && a.x >= a.z)? ((d.x < 0.0)? 1.0 : 0.0) : ((a.y >= a.z)? ((d.y < 0.0)? 3.0 : 2.0) : ((d.z < 0.0)? 5.0 : 4.0));
+    vec3 along = (face < 1.5)? vec3(1.0, 0.0, 0.0) : ((face < 3.5)? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
+    along *= (mod(face, 2.0) > 0.5)? -1.0 : 1.0;
+    vec3 up = (abs(along.y) > 0.5)? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
+    vec3 right = cross(along, up);
+    float e = dot(along, t0.xyz), s = 0.5/t0.w, g = prm.w/(prm.w - prm.z);
+    vec4 r3 = vec4(along, -e);
+    vec4 r0 = vec4(right*s, -dot(right, t0.xyz)*s) + 0.5*r3;
+    vec4 r1 = vec4(up*s, -dot(up, t0.xyz)*s) + 0.5*r3;
+    vec4 r2 = g*r3 - vec4(0.0, 0.0, 0.0, g*prm.z);
+    vec4 tile = vec4(mod(face, 3.0)*size, floor(face/3.0)*size, 3.0*size, 2.0*size);
+    return rblShadowLookup(map, r0, r1, r2, r3, prm, bias, right, up, tile, position, n, NdotL, side, caster);
+}
+#endif
+
+#if defined(RBL_SHADOW_CASCADES)
+// A cascaded map (kind: the cascade count, from the uniforms): the first cascade whose far split lies
+// beyond the point's view depth; inside the last blend share of its range the next cascade's lookup
+// is mixed in linearly (each cascade's map covers the previous one's band). One lookup call in the
+// program; a second pass in a blend band
+float rblShadowCascades(sampler2D map, vec4 r0, vec4 r1, vec4 r2, vec4 r3, vec4 prm, float kind, vec4 bias, vec4 ax0, vec4 ax1,
+                        vec4 t0, vec4 t1, vec4 t2, vec4 t3, vec3 position, vec3 n, float NdotL, float side, vec2 caster)
+{
+    float size = bias.w;
+    float depth = dot(r3, vec4(position, 1.0));
+    float c = (depth < t0.w)? 0.0 : ((depth < t1.w)? 1.0 : ((depth < t2.w)? 2.0 : 3.0));
+    float end = (c < 0.5)? t0.w : ((c < 1.5)? t1.w : ((c < 2.5)? t2.w : t3.w));
+    if (!(c < kind) || !(depth < end)) return 1.0;
+    float band = ax1.w*(end - ((c < 0.5)? ax0.w : ((c < 1.5)? t0.w : ((c < 2.5)? t1.w : t2.w))));
+    float mixing = ((c + 1.0 < kind) && (band > 0.0))? clamp((depth - (end - band))/band, 0.0, 1.0) : 0.0;
+    vec4 p = prm;
     float first = 1.0, lit = 1.0;
     for (int i = 0; i < 2; i++)
     {
         if ((i == 1) && !(mixing > 0.0)) break;
-        if (kind > 1.5)
-        {
-            float ci = c + float(i);
-            vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));
-            c0 = vec4(r0.xyz*t.x, t.y); c1 = vec4(r1.xyz*t.x, t.z); c3 = vec4(0.0, 0.0, 0.0, 1.0);
-            p.x = 1.0/(t.x*size);
-            tile = vec4(ci*size, 0.0, kind*size, size);
-        }
-        lit = rblShadowLookup(map, c0, c1, r2, c3, p, bias, right, up, tile, position, n, NdotL, side, caster);
+        float ci = c + float(i);
+        vec4 t = (ci < 0.5)? t0 : ((ci < 1.5)? t1 : ((ci < 2.5)? t2 : t3));
+        p.x = 1.0/(t.x*size);
+        lit = rblShadowLookup(map, vec4(r0.xyz*t.x, t.y), vec4(r1.xyz*t.x, t.z), r2, vec4(0.0, 0.0, 0.0, 1.0), p, bias, ax0.xyz, ax1.xyz,
+                              vec4(ci*size, 0.0, kind*size, size), position, n, NdotL, side, caster);
         if (i == 0) first = lit;
     }
     return (mixing > 0.0)? mix(first, lit, mixing) : first;
 }
+#endif
+
+// Map k's lookup by its compiled kind and format (RBL_SHADOW_KIND<k>, RBL_SHADOW_FORMAT<k>): k a literal
+#define RBL_SHADOW_ONE_OF(map, k, format) rblShadowLookup(map, rblShadowMatrix[4*k], rblShadowMatrix[4*k + 1], rblShadowMatrix[4*k + 2], rblShadowMatrix[4*k + 3], vec4(rblShadowParams[k].x, format, rblShadowParams[k].zw), rblShadowBias[k], rblShadowAxes[2*k].xyz, rblShadowAxes[2*k + 1].xyz, vec4(0.0, 0.0, rblShadowBias[k].ww), position, n, NdotL, side, caster)
+#define RBL_SHADOW_OMNI_OF(map, k, format) rblShadowOmni(map, vec4(rblShadowParams[k].x, format, rblShadowParams[k].zw), rblShadowBias[k], rblShadowTiles[4*k], position, n, NdotL, side, caster)
+#define RBL_SHADOW_CASCADES_OF(map, k, format) rblShadowCascades(map, rblShadowMatrix[4*k], rblShadowMatrix[4*k + 1], rblShadowMatrix[4*k + 2], rblShadowMatrix[4*k + 3], vec4(rblShadowParams[k].x, format, rblShadowParams[k].zw), floor(rblShadowParams[k].y/4.0 + 0.01), rblShadowBias[k], rblShadowAxes[2*k], rblShadowAxes[2*k + 1], rblShadowTiles[4*k], rblShadowTiles[4*k + 1], rblShadowTiles[4*k + 2], rblShadowTiles[4*k + 3], position, n, NdotL, side, caster)
 
 float rblShadow(int k, vec3 position, vec3 n, float NdotL, float side, vec2 caster)
 {
-    if (k == 0) return rblShadowMap(rblShadowMap0, rblShadowMatrix[0], rblShadowMatrix[1], rblShadowMatrix[2], rblShadowMatrix[3], rblShadowParams[0], rblShadowBias[0],
-                                    rblShadowAxes[0], rblShadowAxes[1], rblShadowTiles[0], rblShadowTiles[1], rblShadowTiles[2], rblShadowTiles[3], position, n, NdotL, side, caster);
+#if RBL_SHADOW_KIND0 == 1
+    if (k == 0) return RBL_SHADOW_OMNI_OF(rblShadowMap0, 0, float(RBL_SHADOW_FORMAT0));
+#elif RBL_SHADOW_KIND0 == 2
+    if (k == 0) return RBL_SHADOW_CASCADES_OF(rblShadowMap0, 0, float(RBL_SHADOW_FORMAT0));
+#else
+    if (k == 0) return RBL_SHADOW_ONE_OF(rblShadowMap0, 0, float(RBL_SHADOW_FORMAT0));
+#endif
 #if RBL_SHADOWS > 1
-    if (k == 1) return rblShadowMap(rblShadowMap1, rblShadowMatrix[4], rblShadowMatrix[5], rblShadowMatrix[6], rblShadowMatrix[7], rblShadowParams[1], rblShadowBias[1],
-                                    rblShadowAxes[2], rblShadowAxes[3], rblShadowTiles[4], rblShadowTiles[5], rblShadowTiles[6], rblShadowTiles[7], position, n, NdotL, side, caster);
+#if RBL_SHADOW_KIND1 == 1
+    if (k == 1) return RBL_SHADOW_OMNI_OF(rblShadowMap1, 1, float(RBL_SHADOW_FORMAT1));
+#elif RBL_SHADOW_KIND1 == 2
+    if (k == 1) return RBL_SHADOW_CASCADES_OF(rblShadowMap1, 1, float(RBL_SHADOW_FORMAT1));
+#else
+    if (k == 1) return RBL_SHADOW_ONE_OF(rblShadowMap1, 1, float(RBL_SHADOW_FORMAT1));
+#endif
 #endif
 #if RBL_SHADOWS > 2
-    if (k == 2) return rblShadowMap(rblShadowMap2, rblShadowMatrix[8], rblShadowMatrix[9], rblShadowMatrix[10], rblShadowMatrix[11], rblShadowParams[2], rblShadowBias[2],
-                                    rblShadowAxes[4], rblShadowAxes[5], rblShadowTiles[8], rblShadowTiles[9], rblShadowTiles[10], rblShadowTiles[11], position, n, NdotL, side, caster);
+#if RBL_SHADOW_KIND2 == 1
+    if (k == 2) return RBL_SHADOW_OMNI_OF(rblShadowMap2, 2, float(RBL_SHADOW_FORMAT2));
+#elif RBL_SHADOW_KIND2 == 2
+    if (k == 2) return RBL_SHADOW_CASCADES_OF(rblShadowMap2, 2, float(RBL_SHADOW_FORMAT2));
+#else
+    if (k == 2) return RBL_SHADOW_ONE_OF(rblShadowMap2, 2, float(RBL_SHADOW_FORMAT2));
+#endif
 #endif
 #if RBL_SHADOWS > 3
-    if (k == 3) return rblShadowMap(rblShadowMap3, rblShadowMatrix[12], rblShadowMatrix[13], rblShadowMatrix[14], rblShadowMatrix[15], rblShadowParams[3], rblShadowBias[3],
-                                    rblShadowAxes[6], rblShadowAxes[7], rblShadowTiles[12], rblShadowTiles[13], rblShadowTiles[14], rblShadowTiles[15], position, n, NdotL, side, caster);
+#if RBL_SHADOW_KIND3 == 1
+    if (k == 3) return RBL_SHADOW_OMNI_OF(rblShadowMap3, 3, float(RBL_SHADOW_FORMAT3));
+#elif RBL_SHADOW_KIND3 == 2
+    if (k == 3) return RBL_SHADOW_CASCADES_OF(rblShadowMap3, 3, float(RBL_SHADOW_FORMAT3));
+#else
+    if (k == 3) return RBL_SHADOW_ONE_OF(rblShadowMap3, 3, float(RBL_SHADOW_FORMAT3));
+#endif
 #endif
     return 1.0;
 }

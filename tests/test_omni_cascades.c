@@ -602,10 +602,261 @@ static void test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly(void
     csUnload(&r);
 }
 
+// Receivers compile the kinds of map they sample (issue 26: a feature the user does not use costs
+// nothing). One lit program receiving 2 maps is drawn with a sun's single map, then with the sun's
+// map and a point light's omni map, then with the omni map alone, then with none. The single-map
+// draw uses the program as loaded, whose linked code reads no tile uniform (rblShadowTiles: only omni
+// faces and cascades read it, so code for either, even behind a run-time branch, keeps it active);
+// the mixed scene draws through a variant that compiled map 1 as omni. The lights add up: in linear
+// light, both maps + no maps = sun map alone + omni map alone at every pixel (within 0.02: four
+// 8-bit sRGB roundings), which fails if the mixed scene drops or misreads either map. The G-buffer
+// receiving the same mixed scene agrees with forward within 2/255.
+static double omLinearOf(Image img, int x, int y)
+{
+    Color c = rtPixel(img, x, y);
+    return (omLinear(c.r) + omLinear(c.g) + omLinear(c.b))/3.0;
+}
+
+static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_mixed_scenes_add_up(void)
+{
+    const Vector3 lpos = { 1.4f, 1.3f, 0.6f };
+    RblLight lights[2] = { litDirectional((Vector3){ 0.35f, -1.0f, 0.25f }, 0.45f), litPoint(lpos, 0.7f, 12.0f) };
+    lights[1].color = WHITE;
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 2; desc.shading.lightFeatures = RblGetLightFeatures(lights, 2); desc.shading.shadowMaps = 2;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 256;
+    RblShadowMap sun = RblLoadShadowMap(sd);
+    sd.omni = true;
+    RblShadowMap omni = RblLoadShadowMap(sd);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(sun) && RblIsShadowMapValid(omni), "rig failed to load");
+    Texture2D white = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RenderTexture2D target = LoadRenderTexture(OM_VIEW, OM_VIEW);
+    Camera3D top = omTop();
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights; scene.lightCount = 2; scene.ambient = (Color){ 30, 30, 30, 255 };
+    // Casters: a card high up for the sun (its shadow lands left of the light), one under the point light
+    RblBillboard cards[2];
+    memset(cards, 0, sizeof(cards));
+    for (int c = 0; c < 2; c++)
+    {
+        cards[c].facing = RBL_FACING_FIXED; cards[c].axis = (Vector3){ 0.0f, 1.0f, 0.0f }; cards[c].up = (Vector3){ 0.0f, 0.0f, -1.0f };
+        cards[c].size = (c == 0)? (Vector2){ 1.2f, 1.2f } : (Vector2){ 0.5f, 0.5f };
+        cards[c].origin = (Vector2){ cards[c].size.x*0.5f, cards[c].size.y*0.5f };
+    }
+    cards[0].position = (Vector3){ -2.0f, 1.5f, -1.0f };
+    cards[1].position = (Vector3){ lpos.x + 0.3f, 0.7f, lpos.z - 0.2f };
+    if (RblBeginShadowMap(&sun, &scene, 0, (Vector3){ 0.0f, 0.5f, 0.0f }, 6.0f))
+    {
+        for (int c = 0; c < 2; c++) RblDrawBillboard(top, m, cards[c]);
+        RblEndShadowMap(&sun);
+    }
+    else RT_CHECK(false, "sun pass refused");
+    for (int pass = 0; pass < RblShadowMapPasses(omni); pass++)
+    {
+        RT_CHECK(RblBeginShadowMapPass(&omni, &scene, 1, pass, (Vector3){ 0 }, 0.0f), "omni face %d refused", pass);
+        for (int c = 0; c < 2; c++) RblDrawBillboard(top, m, cards[c]);
+        RblEndShadowMap(&omni);
+    }
+    // Renders: sun map alone (the program as loaded), both maps, omni map alone, none
+    RblShadowMap lists[4][2] = { { sun }, { sun, omni }, { omni }, { sun } };
+    const int counts[4] = { 1, 2, 1, 0 };
+    Image img[4];
+    rbl__Program *base = rbl__findLit(lit.id), *drawn[4] = { NULL };
+    for (int k = 0; k < 4; k++)
+    {
+        scene.shadowMaps = lists[k]; scene.shadowMapCount = counts[k];
+        RT_CHECK(RblSetScene(&scene), "scene %d rejected", k);
+        BeginTextureMode(target);
+        ClearBackground(BLACK);
+        BeginMode3D(top);
+        RblDrawBillboard(top, m, ssFloor());
+        EndMode3D();
+        EndTextureMode();
+        img[k] = rtReadTarget(target);
+        drawn[k] = (base != NULL)? rbl__shadowVariant(base) : NULL;     // what that draw used
+    }
+    RT_CHECK(base != NULL, "the lit program is not in the registry");
+    if (base != NULL)
+    {
+        RT_CHECK(drawn[0] == base, "the single-map scene drew through a variant, not the program as loaded");
+        RT_CHECK(base->key.shadowKinds == (RBL__SHADOW_CODE_DEFAULT | (RBL__SHADOW_CODE_DEFAULT << 4)), "the program as loaded compiled map kinds %#x", base->key.shadowKinds);
+        RT_CHECK(!litHasUniform(base->shader, "rblShadowTiles"), "a program receiving single maps keeps rblShadowTiles: omni or cascade code compiled in");
+        RT_CHECK(litHasUniform(base->shader, "rblShadowParams"), "test setup: the single-map program samples no shadow map");
+        RT_CHECK((drawn[1] != NULL) && (drawn[1] != base) && (((drawn[1]->key.shadowKinds >> 4) & 15)/4 == 1) && ((drawn[1]->key.shadowKinds & 15)/4 == 0),
+                 "the mixed scene did not draw through a variant with map 0 single and map 1 omni");
+        RT_CHECK((drawn[1] != NULL) && litHasUniform(drawn[1]->shader, "rblShadowTiles"), "the omni variant reads no tile uniform");
+        RT_CHECK((drawn[2] != NULL) && (drawn[2] != drawn[1]) && ((drawn[2]->key.shadowKinds & 15)/4 == 1), "the omni-only scene did not draw through an omni variant");
+        RT_CHECK(drawn[3] == base, "the scene without maps did not draw through the program as loaded");
+    }
+    int sunDark = 0, omniDark = 0, bad = 0, bx = -1, by = -1;
+    double worst = 0.0;
+    for (int y = 0; y < OM_VIEW; y++)
+        for (int x = 0; x < OM_VIEW; x++)
+        {
+            double s = omLinearOf(img[0], x, y), both = omLinearOf(img[1], x, y), o = omLinearOf(img[2], x, y), none = omLinearOf(img[3], x, y);
+            sunDark += (none - s > 0.05);
+            omniDark += (none - o > 0.05);
+            double e = fabs(both + none - s - o);
+            if (e > worst) { worst = e; bx = x; by = y; }
+            bad += (e > 0.02);
+        }
+    printf("    mixed scene: %d pixels in the sun map's shadow, %d in the omni map's; both + none - sun - omni worst %.4f linear at (%d, %d), %d beyond 0.02\n",
+           sunDark, omniDark, worst, bx, by, bad);
+    RT_CHECK(sunDark > 100, "the sun's map alone darkens %d pixels (its card's shadow: over 100)", sunDark);
+    RT_CHECK(omniDark > 40, "the omni map alone darkens %d pixels (its card's shadow: over 40)", omniDark);
+    RT_CHECK(bad == 0, "%d pixels where the mixed scene is not the sum of each map alone (worst %.4f linear)", bad, worst);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(img[0], "sun"); rtSaveImage(img[1], "both"); rtSaveImage(img[2], "omni"); rtSaveImage(img[3], "none"); }
+
+    // Deferred: the G-buffer's passes receiving the mixed scene pick their variant too
+    if (rbl__glsl() >= 300)
+    {
+        RblGBufferDesc gd;
+        memset(&gd, 0, sizeof(gd));
+        gd.width = OM_VIEW; gd.height = OM_VIEW; gd.shading.lightFeatures = desc.shading.lightFeatures; gd.shading.shadowMaps = 2;
+        RblGBuffer g = RblLoadGBuffer(gd);
+        RblLitShaderDesc ld;
+        memset(&ld, 0, sizeof(ld));
+        ld.deferred = true;
+        Shader geo = RblLoadLitShader(ld);
+        if (RblIsGBufferValid(g) && RblIsLitShaderValid(geo))
+        {
+            scene.shadowMaps = lists[1]; scene.shadowMapCount = 2;
+            RT_CHECK(RblSetScene(&scene), "scene rejected");
+            Material dm = m;
+            dm.shader = geo;
+            if (RblBeginGBuffer(&g, top))
+            {
+                RblDrawBillboard(top, dm, ssFloor());
+                RblEndGBuffer(&g);
+                RblDrawDeferredLights(&g);
+            }
+            BeginTextureMode(target);
+            ClearBackground(BLACK);
+            RblResolveGBuffer(&g);
+            EndTextureMode();
+            Image def = rtReadTarget(target);
+            int dworst = 0;
+            for (int y = 0; y < OM_VIEW; y++)
+                for (int x = 0; x < OM_VIEW; x++)
+                {
+                    Color a = rtPixel(def, x, y), b = rtPixel(img[1], x, y);
+                    int d = abs((int)a.r - b.r);
+                    if (abs((int)a.g - b.g) > d) d = abs((int)a.g - b.g);
+                    if (abs((int)a.b - b.b) > d) d = abs((int)a.b - b.b);
+                    if (d > dworst) dworst = d;
+                }
+            printf("    deferred vs forward, sun map + omni map: worst %d/255\n", dworst);
+            RT_CHECK(dworst <= 2, "deferred vs forward with a single and an omni map: worst %d/255", dworst);
+            if (dworst > 2) rtSaveImage(def, "mixed-deferred");
+            UnloadImage(def);
+        }
+        else RT_CHECK(false, "G-buffer or geometry variant failed to load");
+        RblUnloadGBuffer(&g);
+        RblUnloadLitShader(&geo);
+    }
+    for (int k = 0; k < 4; k++) UnloadImage(img[k]);
+    UnloadRenderTexture(target);
+    UnloadTexture(white);
+    RblUnloadShadowMap(&sun);
+    RblUnloadShadowMap(&omni);
+    RblUnloadLitShader(&lit);
+}
+
+// An omni map without caster identities (RblShadowDesc.selfShadow: receivers read its depth texture,
+// the perspective depth format compiled in) shadows a floor as the casters target's omni map does:
+// the same pixels darken (a card under a point light, seen from above), on every context (ES 2 and
+// GL 2.1 sample the depth texture through texture2D).
+static void test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_does(void)
+{
+    const Vector3 lpos = { 0.3f, 1.4f, -0.2f };
+    RblLight light = litPoint(lpos, 0.9f, 12.0f);
+    light.color = WHITE;
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.shading.lightFeatures = RblGetLightFeatures(&light, 1); desc.shading.shadowMaps = 1;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 256; sd.omni = true;
+    RblShadowMap maps[2];
+    maps[0] = RblLoadShadowMap(sd);
+    sd.selfShadow = true;
+    maps[1] = RblLoadShadowMap(sd);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(maps[0]) && RblIsShadowMapValid(maps[1]), "rig failed to load");
+    Texture2D white = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RenderTexture2D target = LoadRenderTexture(OM_VIEW, OM_VIEW);
+    Camera3D top = omTop();
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 30, 30, 30, 255 };
+    RblBillboard card;
+    memset(&card, 0, sizeof(card));
+    card.facing = RBL_FACING_FIXED; card.axis = (Vector3){ 0.0f, 1.0f, 0.0f }; card.up = (Vector3){ 0.0f, 0.0f, -1.0f };
+    card.size = (Vector2){ 0.6f, 0.6f }; card.origin = (Vector2){ 0.3f, 0.3f };
+    card.position = (Vector3){ lpos.x + 0.4f, 0.7f, lpos.z + 0.1f };
+    for (int k = 0; k < 2; k++)
+        for (int pass = 0; pass < RblShadowMapPasses(maps[k]); pass++)
+        {
+            RT_CHECK(RblBeginShadowMapPass(&maps[k], &scene, 0, pass, (Vector3){ 0 }, 0.0f), "map %d face %d refused", k, pass);
+            RblDrawBillboard(top, m, card);
+            RblEndShadowMap(&maps[k]);
+        }
+    Image img[3];
+    int code[3] = { -1, -1, -1 };
+    rbl__Program *base = rbl__findLit(lit.id);
+    for (int k = 0; k < 3; k++)
+    {
+        scene.shadowMaps = (k < 2)? &maps[k] : NULL; scene.shadowMapCount = (k < 2)? 1 : 0;
+        RT_CHECK(RblSetScene(&scene), "scene %d rejected", k);
+        BeginTextureMode(target);
+        ClearBackground(BLACK);
+        BeginMode3D(top);
+        RblDrawBillboard(top, m, ssFloor());
+        EndMode3D();
+        EndTextureMode();
+        img[k] = rtReadTarget(target);
+        rbl__Program *drawn = (base != NULL)? rbl__shadowVariant(base) : NULL;
+        code[k] = (drawn != NULL)? (drawn->key.shadowKinds & 15) : -1;
+    }
+    RT_CHECK((code[0] == 7) && (code[1] == 5), "drawn with map codes %d and %d (omni casters target 7, omni depth texture 5)", code[0], code[1]);
+    int dark[2] = { 0, 0 }, differ = 0;
+    for (int y = 0; y < OM_VIEW; y++)
+        for (int x = 0; x < OM_VIEW; x++)
+        {
+            int none = rtPixel(img[2], x, y).g, a = rtPixel(img[0], x, y).g, b = rtPixel(img[1], x, y).g;
+            dark[0] += (none - a > 10); dark[1] += (none - b > 10);
+            differ += (abs(a - b) > 3);
+        }
+    printf("    omni floor shadow: casters target %d dark pixels, depth texture %d; %d pixels differ by more than 3/255\n", dark[0], dark[1], differ);
+    RT_CHECK(dark[0] > 60, "the casters target's omni map darkens %d pixels (its card's shadow: over 60)", dark[0]);
+    RT_CHECK(dark[1] > 60, "the depth texture's omni map darkens %d pixels (its card's shadow: over 60)", dark[1]);
+    RT_CHECK(differ*20 <= dark[0], "%d pixels differ by more than 3/255 between the two formats (over 5%% of %d shadowed)", differ, dark[0]);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(img[0], "casters"); rtSaveImage(img[1], "depth"); rtSaveImage(img[2], "none"); }
+    for (int k = 0; k < 3; k++) UnloadImage(img[k]);
+    UnloadRenderTexture(target);
+    UnloadTexture(white);
+    RblUnloadShadowMap(&maps[0]);
+    RblUnloadShadowMap(&maps[1]);
+    RblUnloadLitShader(&lit);
+}
+
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_OMNI_CASCADES_TESTS \
     RT_TEST(test_shadows_omni_cube_faces_hold_the_double_precision_distances), \
     RT_TEST(test_shadows_two_omni_lights_match_a_double_precision_lookup_forward_and_deferred), \
     RT_TEST(test_shadows_cascade_splits_and_spheres_match_the_double_reference), \
     RT_TEST(test_shadows_cascade_edges_hold_still_while_the_camera_pans_and_turns), \
-    RT_TEST(test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly)
+    RT_TEST(test_shadows_cascade_blend_band_mixes_the_two_cascades_linearly), \
+    RT_TEST(test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_mixed_scenes_add_up), \
+    RT_TEST(test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_does)

@@ -854,12 +854,19 @@ static void SelfBenchSummary(const SelfBench *sb)
 // pcf 2 through one variant (point and directional features), against the same variant without
 // shadow maps: a directional light with one map, a point light with an omni map, a directional
 // light with 4 cascades (fitted to a camera looking obliquely over the floor: depths 5..25, so
-// cascades and blend bands spread over the frame); order rotating per run.
+// cascades and blend bands spread over the frame); the directional map through a pcf 1 variant;
+// both lights through a variant receiving 2 maps (maxLights 2) given the sun's map and an omni map,
+// against that variant's light features without maps. Each program compiles only the map kinds the
+// scene gives it (the registry's receiver variants: a single-map scene draws with no omni or
+// cascade code); order rotating per run.
 // cascades at equal memory: one 2048 map over a camera's 0.5..100 (RblShadowFocusFromCamera)
 // against 2, 3, 4 cascades of 2048/sqrt(n) texels (the same texel count); the texel's world size
 // where a point 5 and 50 units ahead falls; the pass time of all cascades against the one map (10k
 // billboards, batched).
 #define OC_FACE             512
+#define OC_LOOKUPS          7           // none (sun), sun + map, point + omni, sun + cascades, sun + map pcf 1, both lights none, both + 2 maps
+static const int ocLookupShader[OC_LOOKUPS] = { 0, 1, 1, 1, 2, 3, 4 };
+static const int ocLookupBase[OC_LOOKUPS] = { 0, 0, 0, 0, 0, 5, 5 };     // its unshadowed baseline
 #define OC_CASCADE_MEMORY   2048
 typedef struct OmniBench {
     PassScene *p;
@@ -869,11 +876,11 @@ typedef struct OmniBench {
     RblScene pointScene, spotScene;
     int count;
     // lookup
-    Shader shader[2];                  // unshadowed, shadowed (pcf 2)
-    Material material[2];
-    RblShadowMap rxOmni, rxCascades;
-    RblLight rxPoint, rxSun;
-    RblScene rxScenes[4];              // none (sun), sun + map, point + omni, sun + cascades
+    Shader shader[5];                  // unshadowed, shadowed (pcf 2), pcf 1, two lights unshadowed, two lights 2 maps (pcf 2)
+    Material material[5];
+    RblShadowMap rxOmni, rxCascades, rxOmni2;
+    RblLight rxPoint, rxSun, rxBoth[2];
+    RblScene rxScenes[OC_LOOKUPS];
     bool ok;
 } OmniBench;
 
@@ -913,7 +920,7 @@ static double OmniLookupFrame(OmniBench *ob, int k)
     BeginTextureMode(r->target);
     ClearBackground(BLANK);
     BeginMode3D(r->camera);
-    RblDrawBillboard(r->camera, ob->material[(k == 0)? 0 : 1], r->floor);
+    RblDrawBillboard(r->camera, ob->material[ocLookupShader[k]], r->floor);
     EndMode3D();
     EndTextureMode();
     rtFinish();
@@ -924,10 +931,10 @@ static void OmniLookupRound(void *ctx, double *out)
 {
     static int rot = 0;
     OmniBench *ob = (OmniBench *)ctx;
-    double ms[4];
-    for (int i = 0; i < 4; i++) { int k = (i + rot)%4; ms[k] = OmniLookupFrame(ob, k); }
+    double ms[OC_LOOKUPS];
+    for (int i = 0; i < OC_LOOKUPS; i++) { int k = (i + rot)%OC_LOOKUPS; ms[k] = OmniLookupFrame(ob, k); }
     rot++;
-    for (int k = 0; k < 4; k++) { out[k] = ms[k]; out[4 + k] = ms[k]/ms[0]; }
+    for (int k = 0; k < OC_LOOKUPS; k++) { out[k] = ms[k]; out[OC_LOOKUPS + k] = ms[k]/ms[ocLookupBase[k]]; }
 }
 
 // Texel world size where view depth d falls, for a cascaded map after a pass (tiles set)
@@ -984,9 +991,11 @@ static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
     RblLitShaderDesc ld;
     memset(&ld, 0, sizeof(ld));
     ld.maxLights = 1; ld.shading.lightFeatures = RblGetLightFeatures(both, 2); ld.shading.brdf = RBL_BRDF_LAMBERT;
-    for (int v = 0; v < 2; v++)
+    for (int v = 0; v < 5; v++)
     {
-        ld.shading.shadowMaps = v; ld.shading.shadowFilter = v? 2 : 0;
+        ld.shading.shadowMaps = (v == 0)? 0 : ((v == 3)? 0 : ((v == 4)? 2 : 1));
+        ld.shading.shadowFilter = (ld.shading.shadowMaps == 0)? 0 : ((v == 2)? 1 : 2);
+        ld.maxLights = (v >= 3)? 2 : 1;
         ob->shader[v] = RblLoadLitShader(ld);
         ob->material[v] = LoadMaterialDefault();
         ob->material[v].shader = ob->shader[v];
@@ -1019,12 +1028,24 @@ static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
     ob->rxScenes[1] = r->scene;                      // the receiver section's sun and map
     ob->rxScenes[2] = pointOnly; ob->rxScenes[2].shadowMaps = &ob->rxOmni; ob->rxScenes[2].shadowMapCount = 1;
     ob->rxScenes[3] = sunOnly; ob->rxScenes[3].shadowMaps = &ob->rxCascades; ob->rxScenes[3].shadowMapCount = 1;
-    double lookMed[8] = { 0 };
+    ob->rxScenes[4] = ob->rxScenes[1];
+    // Both lights: the sun's map (light 0) and an omni map rendered for light 1 of this scene
+    ob->rxBoth[0] = ob->rxSun; ob->rxBoth[1] = ob->rxPoint;
+    RblScene bothScene = sunOnly; bothScene.lights = ob->rxBoth; bothScene.lightCount = 2;
+    ob->rxOmni2 = RblLoadShadowMap(rod);
+    for (int f = 0; f < RblShadowMapPasses(ob->rxOmni2); f++)
+        if (RblBeginShadowMapPass(&ob->rxOmni2, &bothScene, 1, f, (Vector3){ 0 }, 0.0f)) { RblDrawBillboard(r->camera, ob->material[0], card); RblEndShadowMap(&ob->rxOmni2); }
+        else ob->ok = false;
+    static RblShadowMap bothMaps[2];
+    bothMaps[0] = r->map; bothMaps[1] = ob->rxOmni2;
+    ob->rxScenes[5] = bothScene;
+    ob->rxScenes[6] = bothScene; ob->rxScenes[6].shadowMaps = bothMaps; ob->rxScenes[6].shadowMapCount = 2;
+    double lookMed[2*OC_LOOKUPS] = { 0 };
     int lookRuns = 0;
     if (ob->ok)
     {
         const BenchTiming lt = { 2, 7, 21, 3e9 };
-        lookRuns = BenchMedianOfRuns(OmniLookupRound, ob, 8, lt, lookMed);
+        lookRuns = BenchMedianOfRuns(OmniLookupRound, ob, 2*OC_LOOKUPS, lt, lookMed);
     }
     else *why = "lookup variants or maps failed";
 
@@ -1082,12 +1103,13 @@ static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
         snprintf(name, sizeof(name), "six_spot_passes_%d_%d", passCounts[c], OC_FACE);
         BenchCsvRow(SUITE, name, "ns_per_billboard_six_maps", passMed[c][1], "ns");
     }
-    const char *lookName[4] = { "lookup_unshadowed", "lookup_directional_map", "lookup_omni", "lookup_cascades4" };
+    const char *lookName[OC_LOOKUPS] = { "lookup_unshadowed", "lookup_directional_map", "lookup_omni", "lookup_cascades4", "lookup_directional_map_pcf1",
+                                         "lookup_two_lights_unshadowed", "lookup_directional_map_and_omni" };
     if (lookRuns > 0)
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < OC_LOOKUPS; k++)
         {
             BenchCsvRow(SUITE, lookName[k], "ms_per_frame_1280x720", lookMed[k], "ms");
-            BenchCsvRow(SUITE, lookName[k], "ratio_to_unshadowed", lookMed[4 + k], "x");
+            BenchCsvRow(SUITE, lookName[k], "ratio_to_unshadowed", lookMed[OC_LOOKUPS + k], "x");
         }
     for (int n = 1; n <= 4; n++)
     {
@@ -1105,8 +1127,8 @@ static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
         printf("    N %5d: omni %8.0f, six spots %8.0f, ratio %.2fx (%d runs)\n", passCounts[c], passMed[c][0], passMed[c][1], passMed[c][2], passRuns[c]);
     if (lookRuns > 0)
     {
-        printf("  lookup (pcf 2, 1280x720 floor, %d runs): ms per frame and ratio to the same variant without maps\n", lookRuns);
-        for (int k = 0; k < 4; k++) printf("    %-24s %8.2f  %5.2fx\n", lookName[k], lookMed[k], lookMed[4 + k]);
+        printf("  lookup (pcf 2 unless named, 1280x720 floor, %d runs): ms per frame and ratio to the same lights without maps\n", lookRuns);
+        for (int k = 0; k < OC_LOOKUPS; k++) printf("    %-32s %8.2f  %5.2fx\n", lookName[k], lookMed[k], lookMed[OC_LOOKUPS + k]);
     }
     printf("  equal memory (%d^2 texels), camera fovy 60, 16:9, 0.5..100: texel world size at 5 and 50 units, pass time (10k billboards)\n", OC_CASCADE_MEMORY);
     for (int n = 1; n <= 4; n++)
@@ -1117,8 +1139,8 @@ static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
     memset(&none, 0, sizeof(none));
     RblSetScene(&none);
     for (int n = 1; n <= 4; n++) RblUnloadShadowMap(&eq[n]);
-    RblUnloadShadowMap(&ob->rxOmni); RblUnloadShadowMap(&ob->rxCascades);
-    for (int v = 0; v < 2; v++) { if (RblIsLitShaderValid(ob->shader[v])) RblUnloadLitShader(&ob->shader[v]); MemFree(ob->material[v].maps); }
+    RblUnloadShadowMap(&ob->rxOmni); RblUnloadShadowMap(&ob->rxCascades); RblUnloadShadowMap(&ob->rxOmni2);
+    for (int v = 0; v < 5; v++) { if (RblIsLitShaderValid(ob->shader[v])) RblUnloadLitShader(&ob->shader[v]); MemFree(ob->material[v].maps); }
     RblUnloadShadowMap(&ob->omni);
     for (int f = 0; f < 6; f++) RblUnloadShadowMap(&ob->spots[f]);
     if (!ob->ok && (*why == NULL)) *why = "a cascade map failed";
