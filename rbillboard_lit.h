@@ -262,9 +262,10 @@
 *         lights of the types it compiled (RblLightFeatures: what a set needs); others are left out.
 *
 *   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
-*       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
-*       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (fog, exposure,
-*       tonemap, encoding; writes depth). Set the scene before the geometry pass: it adds the ambient.
+*       RblBeginGBuffer -> opaque draws (material, emission, occlusion) -> RblEndGBuffer ->
+*       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (the ambient once per
+*       pixel, fog, exposure, tonemap, encoding; writes depth). The ambient is the scene's at
+*       RblBeginGBuffer: set the scene before the geometry pass.
 *       Lighting and material decoding are the forward path's code. Colour targets: 10 bytes per pixel
 *       (12 where the G-buffer receives shadows: RT2 keeps each pixel's caster identity). Their layout
 *       has one home, the comment opening shaders/gbuffer_codec.glsl (embedded below: search for
@@ -539,9 +540,9 @@
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
 *         (directional, range 0); a G-buffer loaded with size 0 takes its target's size at each
 *         RblBeginGBuffer (the screen, or the render texture of BeginTextureMode) and RblEndGBuffer
-*         returns to that target; a fixed size resolved into another size is scaled (logged). The geometry pass
-*         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
-*         the lights of the frame, not its ambient).
+*         returns to that target; a fixed size resolved into another size is scaled (logged). The frame's
+*         ambient is the scene's at RblBeginGBuffer: set the scene before it (a later RblSetScene
+*         changes the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
@@ -1340,7 +1341,7 @@ RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // 
 RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
 RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with deferred variants of the G-buffer's brdf); false = rejected
 RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
-RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's lights into the accumulation (bounded lights as volumes; ambient: geometry pass); false = rejected
+RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's lights into the accumulation (bounded lights as volumes; the ambient: the resolve); false = rejected
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
 RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
 
@@ -1608,7 +1609,7 @@ typedef struct rbl__GBufferState {
     Matrix view;                    // Camera of the last geometry pass
     Matrix projection;
     Vector3 eye;
-    float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
+    float ambient[9];               // The scene's ambient (sky, ground, up) at the last RblBeginGBuffer (the resolve adds it)
     bool ambientNoted;              // A later scene's other ambient was logged once
     bool geometryDone;              // A geometry pass filled the targets (since load or the last resize)
     bool follow;                    // Loaded with size 0: takes its target's size at each RblBeginGBuffer
@@ -1877,7 +1878,7 @@ static bool rbl__unloadable(const void *holder, unsigned int id, const void *sta
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_ambient[] = {
     "// Ambient: the scene's sky/ground light on a surface. Forward shaders add it per fragment; the\n",
-    "// G-buffer's geometry pass adds it into the accumulation target (so occlusion is not stored).\n",
+    "// deferred resolve once per pixel, on the stored surface (occlusion from the accumulation's alpha).\n",
     "//   RBL_BRDF b                2 (GGX) adds the specular reflectance of a uniform environment\n",
     "#include \"surface.glsl\"\n",
     "\n",
@@ -1971,9 +1972,12 @@ static const char *const rbl__shader_deferred_fullscreen_fs[] = {
     "}\n",
     NULL };
 static const char *const rbl__shader_deferred_resolve_fs[] = {
-    "// Deferred resolve, fragment stage: the accumulated light through fog, exposure, tonemap and the\n",
-    "// display encoding (output.glsl), writing the G-buffer's depth for later forward draws; debug views.\n",
+    "// Deferred resolve, fragment stage: the scene's ambient on the stored surface (once per pixel, the\n",
+    "// occlusion from the accumulation's alpha) plus the accumulated emission and light, through fog,\n",
+    "// exposure, tonemap and the display encoding (output.glsl), writing the G-buffer's depth for later\n",
+    "// forward draws; debug views.\n",
     "#include \"gbuffer_read.glsl\"\n",
+    "#include \"ambient.glsl\"\n",
     "#include \"output.glsl\"\n",
     "\n",
     "RBL_VARYING vec2 fragUv;\n",
@@ -2004,8 +2008,13 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "    vec4 accum = texelFetch(rblGAccum, texel, 0);\n",
     "    vec3 color = accum.rgb;\n",
     "    float viewDistance = rblViewDistance(rblEye, rblViewAxis, position);\n",
-    "    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, viewDistance), 1.0); return; }\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
+    "    if (rblOutput == 0)\n",
+    "    {\n",
+    "        s.occlusion = accum.a;\n",
+    "        finalColor = vec4(rblFinish(color + rblAmbientLight(s), viewDistance), 1.0);\n",
+    "        return;\n",
+    "    }\n",
     "    vec3 v = vec3(0.0);\n",
     "    if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);\n",
     "    else if (rblOutput == 2) v = s.normal*0.5 + 0.5;\n",
@@ -2123,10 +2132,10 @@ static const char *const rbl__shader_fullscreen_vs[] = {
     NULL };
 static const char *const rbl__shader_gbuffer_fs[] = {
     "// Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the\n",
-    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit; the scene's ambient (it needs the\n",
-    "// occlusion, which is not stored) is added here with the emission, from the unquantised surface.\n",
+    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit. The emission (material data, like the\n",
+    "// albedo) and the occlusion go to the accumulation target; the scene's ambient is added once per\n",
+    "// pixel by the resolve, not per overdrawn layer here.\n",
     "#include \"material.glsl\"\n",
-    "#include \"ambient.glsl\"\n",
     "#include \"gbuffer_codec.glsl\"\n",
     "\n",
     "layout(location = 0) out vec4 rblOutAlbedo;\n",
@@ -2158,7 +2167,7 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    // RG8 keeps x, y (raylib samples it r,r,r,g: read back as .ra); RGBA8 (ES, or a G-buffer that\n",
     "    // receives shadows) also the caster identity (gbuffer_read.glsl)\n",
     "    rblOutParams = vec4(params.x, params.y, sp.caster);\n",
-    "    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);\n",
+    "    rblOutAccum = vec4(emission, sp.occlusion);\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_gbuffer_codec[] = {
@@ -2167,8 +2176,8 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a bits 23..16 of the word\n",
     "//   RT1 RGBA8    bits 55..24 of a 56-bit normal/material word, RT1.r its most significant byte\n",
     "//   RT2 RG8      bits 15..0 of the word\n",
-    "//   RT3 RGBA16F  light accumulation: emission and the scene's ambient from the geometry pass, then\n",
-    "//                the lights; alpha keeps the occlusion (its debug view; light passes add alpha 0)\n",
+    "//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then the lights; alpha keeps\n",
+    "//                the occlusion (light passes add alpha 0), which scales the ambient the resolve adds\n",
     "//   word         normal x | normal y | field 1 | field 2, from the most significant bit; per BRDF:\n",
     "//     GGX          normal 18 + 18 | roughness 12 | metalness 8\n",
     "//     Blinn-Phong  normal 16 + 16 | shininess 12 | specular intensity 12 (colour folded to its luminance)\n",
@@ -2180,8 +2189,7 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "// Blinn-Phong's 4 spare bits go to its two fields (12 + 12 instead of 11 + 9). Every field is stored\n",
     "// in the form whose step is the same relative change of what the BRDF reads (a highlight's error is\n",
     "// relative), except metalness (linear in the output). Not stored: the normal's third coordinate,\n",
-    "// occlusion (the ambient it scales is added by the geometry pass), roughness below RBL_MIN_ROUGHNESS\n",
-    "// (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
+    "// roughness below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
     "//   normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate, odd so that 0 and\n",
     "//                +-1 are codes (axis-aligned normals exact); of the 4 neighbouring codes the one\n",
     "//                decoding nearest the normal\n",
@@ -2368,7 +2376,7 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "#else\n",
     "    s.face = s.normal;\n",
     "#endif\n",
-    "    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales\n",
+    "    s.occlusion = 1.0;                  // the accumulation's alpha (the resolve reads it)\n",
     "    s.transmission = 0.0;               // forward only: not stored\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
@@ -4119,9 +4127,9 @@ static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dia
 static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
 static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
-static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
+static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
 static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
 static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
@@ -8148,8 +8156,8 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     if (loc[RBL__U_SHADOW_TILES] != -1) rlSetUniform(loc[RBL__U_SHADOW_TILES], tiles, SHADER_UNIFORM_VEC4, 4*n);
 }
 
-// Ambient, fog and exposure of the scene, where the program declares them (the G-buffer's light
-// passes: none of the ambient, which its geometry pass adds; lights go per draw there)
+// Ambient, fog and exposure of the scene, where the program declares them (the G-buffer's resolve
+// takes the ambient of its geometry pass's scene at each resolve; lights go per draw there)
 static void rbl__uploadSceneConstants(const rbl__Program *p)
 {
     const rbl__Scene *s = &rbl__state.scene;
@@ -8971,7 +8979,7 @@ static Matrix rbl__viewMatrix(const RblCameraFrame *v)
     return m;
 }
 
-// The scene's ambient as the geometry pass adds it: sky, ground, up
+// The scene's ambient as the resolve adds it: sky, ground, up
 static void rbl__sceneAmbient(float out[9])
 {
     const rbl__Scene *s = &rbl__state.scene;
@@ -9158,12 +9166,12 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         return false;
     }
     if (uncompiled > 0) TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: %i light(s) of types not in the G-buffer's lightFeatures left out", uncompiled);
-    // The ambient came with the geometry pass: a scene set since then with another one is noted once
+    // The frame's ambient is the geometry pass's scene's: a scene set since then with another one is noted once
     float now[9];
     rbl__sceneAmbient(now);
     if (!g->state->ambientNoted && (memcmp(now, g->state->ambient, sizeof(now)) != 0))
     {
-        TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: the scene's ambient changed after the geometry pass, which added the earlier one (RblSetScene before RblBeginGBuffer)");
+        TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: the scene's ambient changed after the geometry pass, whose scene's ambient the frame keeps (RblSetScene before RblBeginGBuffer)");
         g->state->ambientNoted = true;
     }
     // Volumes need the instance buffer to hold every bounded light (grown with a log line)
@@ -9273,6 +9281,10 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
     if (loc[RBL__U_OUTPUT] != -1) rlSetUniform(loc[RBL__U_OUTPUT], &g->output, SHADER_UNIFORM_INT, 1);
     if (loc[RBL__U_OUTPUT_SCALE] != -1) rlSetUniform(loc[RBL__U_OUTPUT_SCALE], &g->outputScale, SHADER_UNIFORM_FLOAT, 1);
+    // The ambient of the scene the geometry pass was drawn with (RblBeginGBuffer's), once per pixel here
+    if (loc[RBL__U_AMBIENT] != -1) rlSetUniform(loc[RBL__U_AMBIENT], &g->state->ambient[0], SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_GROUND] != -1) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], &g->state->ambient[3], SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(loc[RBL__U_AMBIENT_UP], &g->state->ambient[6], SHADER_UNIFORM_VEC3, 1);
     rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
     rlEnableDepthMask();
     rlDisableBackfaceCulling();

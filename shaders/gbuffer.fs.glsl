@@ -1,8 +1,8 @@
 // Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the
-// G-buffer (layout: gbuffer_codec.glsl) instead of being lit; the scene's ambient (it needs the
-// occlusion, which is not stored) is added here with the emission, from the unquantised surface.
+// G-buffer (layout: gbuffer_codec.glsl) instead of being lit. The emission (material data, like the
+// albedo) and the occlusion go to the accumulation target; the scene's ambient is added once per
+// pixel by the resolve, not per overdrawn layer here.
 #include "material.glsl"
-#include "ambient.glsl"
 #include "gbuffer_codec.glsl"
 
 layout(location = 0) out vec4 rblOutAlbedo;
@@ -34,5 +34,5 @@ void main()
     // RG8 keeps x, y (raylib samples it r,r,r,g: read back as .ra); RGBA8 (ES, or a G-buffer that
     // receives shadows) also the caster identity (gbuffer_read.glsl)
     rblOutParams = vec4(params.x, params.y, sp.caster);
-    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);
+    rblOutAccum = vec4(emission, sp.occlusion);
 }

@@ -81,7 +81,7 @@ RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
 #else
     s.face = s.normal;
 #endif
-    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales
+    s.occlusion = 1.0;                  // the accumulation's alpha (the resolve reads it)
     s.transmission = 0.0;               // forward only: not stored
     s.specularColor = vec3(1.0);
     s.shininess = 1.0;
