@@ -1117,6 +1117,9 @@ typedef struct RblGBufferDesc {
     bool linearOutput;              // Resolve writes linear light
     int shadowMaps;                 // Scene shadow maps received (0 = none, at most RBL_MAX_SHADOWS)
     int shadowFilter;               // PCF footprint (0 = 2)
+    bool transmission;              // Light through thin cards (geometry variants with desc.transmission): + the thin target
+    bool relief;                    // Relief self-shadow of the scene's first 8 lights (variants with desc.relief): + the thin target
+    bool shadowTransmittance;       // Light passes read the maps' transmittance targets (blended casters' tint; needs shadowMaps)
 } RblGBufferDesc;
 
 // Deferred G-buffer (RblLoadGBuffer): 10 bytes per pixel + depth + RGBA16F light accumulation
@@ -1128,6 +1131,7 @@ typedef struct RblGBuffer {
     Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear); alpha: occlusion
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
+    Texture2D thin;                 // RGBA8, desc.transmission or desc.relief only: transmission share, relief bits (id 0 otherwise)
     RblGBufferDesc desc;            // Settings, defaults applied
     int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
     float outputScale;              // Range of the depth/position/light-count outputs
@@ -1468,6 +1472,7 @@ typedef enum {
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
     RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
+    RBL__U_G_THIN, RBL__U_RELIEF_INDEX,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1480,6 +1485,7 @@ typedef struct rbl__ProgramKey {
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
     int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
+    int gbufferRelief;              // 1: a G-buffer light pass reading the stored relief bits (RBL_GB_RELIEF)
 } rbl__ProgramKey;
 
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
@@ -2036,7 +2042,7 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
     "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
     "RBL_FLAT RBL_VARYING vec4 volumeSpot;\n",
-    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w code: shadow map index + 1 (0 = none) + 8 x (relief bit + 1)\n",
     "out vec4 finalColor;\n",
     "\n",
     "void main()\n",
@@ -2053,15 +2059,26 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#else\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = rblViewVector(rblEye, rblViewAxis, s.position, s.normal);\n",
+    "    int code = int(volumeFalloff.w + 0.5);\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "    rblGbReliefLight = code/8 - 1;\n",
+    "#endif\n",
     "#if RBL_SHADOWS > 0\n",
-    "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
+    "    int map = code - 8*(code/8) - 1;\n",
     "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    if (s.transmission > 0.0) NdotL = 1.0;          // the light behind the card is shadowed on its way too\n",
+    "#endif\n",
     "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadowAt(map, s, l) : 1.0;\n",
     "#else\n",
     "    float shadow = 1.0;\n",
     "#endif\n",
-    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 0.0);\n",
+    "    vec3 light = rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow);\n",
+    "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
+    "    if (map >= 0) light *= rblShadowTint(map, s.position);\n",
+    "#endif\n",
+    "    finalColor = vec4(light, 0.0);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -2142,6 +2159,17 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "layout(location = 1) out vec4 rblOutNormal;\n",
     "layout(location = 2) out vec4 rblOutParams;\n",
     "layout(location = 3) out vec4 rblOutAccum;\n",
+    "#ifdef RBL_GB_THIN\n",
+    "// RT4 where the context has 5 draw buffers: every geometry variant writes it (zero without the\n",
+    "// features), so a G-buffer with the thin target never keeps a hidden layer's values; a G-buffer\n",
+    "// without it has no 5th draw buffer and the output goes nowhere\n",
+    "layout(location = 4) out vec4 rblOutThin;\n",
+    "#endif\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "// The scene's first RBL_LIGHTS lights (as lights.glsl declares them), each marched through the relief\n",
+    "uniform int rblLightCount;\n",
+    "uniform vec4 rblLightPosition[RBL_LIGHTS];\n",
+    "#endif\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -2168,6 +2196,22 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    // receives shadows) also the caster identity (gbuffer_read.glsl)\n",
     "    rblOutParams = vec4(params.x, params.y, sp.caster);\n",
     "    rblOutAccum = vec4(emission, sp.occlusion);\n",
+    "#ifdef RBL_GB_THIN\n",
+    "    // Relief: bit i set where the scene's light i is behind relief (lights.glsl's l, at the unquantised\n",
+    "    // position), for the light passes to read; transmission: the share in 16 bits (8 would leave\n",
+    "    // 2/255 in dark sRGB output under a bright light behind)\n",
+    "    float mask = 0.0;\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
+    "    {\n",
+    "        if (i >= rblLightCount) break;\n",
+    "        vec4 p = rblLightPosition[i];\n",
+    "        if (rblReliefShadow(rblSafeNormalize(p.xyz - sp.position*p.w, sp.normal)) == 0.0) mask += exp2(float(i));\n",
+    "    }\n",
+    "#endif\n",
+    "    float t = floor(clamp(sp.transmission, 0.0, 1.0)*65535.0 + 0.5);\n",
+    "    rblOutThin = vec4(floor(t/256.0), mod(t, 256.0), mask, 0.0)/255.0;\n",
+    "#endif\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_gbuffer_codec[] = {
@@ -2178,6 +2222,8 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "//   RT2 RG8      bits 15..0 of the word\n",
     "//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then the lights; alpha keeps\n",
     "//                the occlusion (light passes add alpha 0), which scales the ambient the resolve adds\n",
+    "//   RT4 RGBA8    RblGBufferDesc.transmission or .relief only: rg the transmission share in 16 bits\n",
+    "//                (r high), b the relief bits of the scene's first 8 lights (bit i: light i behind relief)\n",
     "//   word         normal x | normal y | field 1 | field 2, from the most significant bit; per BRDF:\n",
     "//     GGX          normal 18 + 18 | roughness 12 | metalness 8\n",
     "//     Blinn-Phong  normal 16 + 16 | shininess 12 | specular intensity 12 (colour folded to its luminance)\n",
@@ -2308,6 +2354,24 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
     "uniform vec3 rblEye;                    // camera position\n",
     "uniform vec4 rblViewAxis;               // camera back direction, w 1 orthographic (rblViewVector)\n",
+    "#ifdef RBL_GB_THIN\n",
+    "uniform sampler2D rblGThin;             // RGBA8: transmission share (rg, 16 bits), relief bits of lights 0..7 (b)\n",
+    "#endif\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "uniform int rblReliefIndex[RBL_LIGHTS]; // full-screen pass: the scene index of light slot i (-1: no bit)\n",
+    "uint rblGbReliefMask;                   // this pixel's relief bits (rblGBufferSurface)\n",
+    "int rblGbReliefLight = -1;              // scene index of the light being evaluated (-1: none marched)\n",
+    "\n",
+    "// Light slot i of the full-screen pass is evaluated next\n",
+    "void rblGbReliefSelect(int i) { rblGbReliefLight = rblReliefIndex[i]; }\n",
+    "\n",
+    "// The stored relief verdict for the light being evaluated (lights.glsl): 0 behind relief, else 1\n",
+    "float rblReliefShadow(vec3 l)\n",
+    "{\n",
+    "    if ((rblGbReliefLight < 0) || (rblGbReliefLight > 7)) return 1.0;\n",
+    "    return (((rblGbReliefMask >> uint(rblGbReliefLight)) & 1u) != 0u)? 0.0 : 1.0;\n",
+    "}\n",
+    "#endif\n",
     "\n",
     "// This pixel's G-buffer texel and depth in a light pass (drawn at the G-buffer's size); false where\n",
     "// nothing was drawn (background)\n",
@@ -2377,7 +2441,16 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    s.face = s.normal;\n",
     "#endif\n",
     "    s.occlusion = 1.0;                  // the accumulation's alpha (the resolve reads it)\n",
-    "    s.transmission = 0.0;               // forward only: not stored\n",
+    "    s.transmission = 0.0;\n",
+    "#ifdef RBL_GB_THIN\n",
+    "    vec4 thin = floor(texelFetch(rblGThin, texel, 0)*255.0 + 0.5);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    s.transmission = (thin.r*256.0 + thin.g)/65535.0;\n",
+    "#endif\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "    rblGbReliefMask = uint(thin.b);\n",
+    "#endif\n",
+    "#endif\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
     "    s.metalness = 0.0;\n",
@@ -2407,6 +2480,8 @@ static const char *const rbl__shader_lights[] = {
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
     "//   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)\n",
     "//   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)\n",
+    "//   RBL_GB_RELIEF             deferred: each light's relief bit stored by the geometry pass\n",
+    "//                             (rblReliefShadow and rblGbReliefSelect, gbuffer_read.glsl)\n",
     "//   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)\n",
     "#include \"surface.glsl\"\n",
     "#include \"ambient.glsl\"\n",
@@ -2520,7 +2595,7 @@ static const char *const rbl__shader_lights[] = {
     "    vec3 through = rblTransmitted(s, NdotL);\n",
     "    if (NdotL <= 0.0) return c.rgb*attenuation*through;\n",
     "#endif\n",
-    "#ifdef RBL_RELIEF_STEPS\n",
+    "#if defined(RBL_RELIEF_STEPS) || defined(RBL_GB_RELIEF)\n",
     "    attenuation *= rblReliefShadow(l);              // transmitted light is not: it comes through the card\n",
     "#endif\n",
     "#ifdef RBL_TRANSMISSION\n",
@@ -2578,6 +2653,9 @@ static const char *const rbl__shader_lights[] = {
     "                       ((i == rblShadowLight.z)? shadowed.z : ((i == rblShadowLight.w)? shadowed.w : 1.0)));\n",
     "#else\n",
     "        float shadow = 1.0;\n",
+    "#endif\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "        rblGbReliefSelect(i);\n",
     "#endif\n",
     "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
     "        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));\n",
@@ -3680,7 +3758,8 @@ static const char *const rbl__shader_shadow_tint[] = {
     "// coloured), a the nearest one's distance code in 8 bits (shadow_caster.fs.glsl); only casters in\n",
     "// front of the opaque depth were kept. A receiver more than 1.5 code steps behind that distance\n",
     "// takes the texel's tint: a caster never tints itself or what lies in front of it. Bilinear over the\n",
-    "// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers only.\n",
+    "// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers and the\n",
+    "// G-buffer's light passes (RblGBufferDesc.shadowTransmittance).\n",
     "//   RBL_SHADOW_TINT          RblLitShaderDesc.shadowTransmittance (needs RBL_SHADOWS > 0)\n",
     "#include \"shadows.glsl\"\n",
     "\n",
@@ -4074,7 +4153,7 @@ static const char *const rbl__shader_volume_vs[] = {
     "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
     "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
     "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
-    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
+    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none) + 8 x (relief bit + 1)\n",
     "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
     "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
     "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
@@ -4257,6 +4336,20 @@ static unsigned int rbl__activeFramebuffer(void)
     int fbo = 0;
     get(0x8CA6 /* GL_FRAMEBUFFER_BINDING */, &fbo);
     return (fbo > 0)? (unsigned int)fbo : 0u;
+}
+
+// GL_MAX_DRAW_BUFFERS of the context (0 without GLSL 3 or the entry point): the G-buffer's thin
+// target is a 5th colour target (ES 3 and WebGL2 promise 4)
+static int rbl__maxDrawBuffers(void)
+{
+    if ((rbl__glsl() < 300) || (rlGetTextureIdDefault() == 0)) return 0;
+    void *proc = rlGetProcAddress("glGetIntegerv");
+    if (proc == NULL) return 0;
+    rbl__GlGetIntegerv get;
+    memcpy(&get, &proc, sizeof(get));
+    int n = 0;
+    get(0x8824 /* GL_MAX_DRAW_BUFFERS */, &n);
+    return n;
 }
 
 // Size of the target draws go to now: inside BeginTextureMode rlgl's framebuffer size (the
@@ -7227,7 +7320,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable",
-    "rblTransmission", "rblRelief", "rblCasterTint" };
+    "rblTransmission", "rblRelief", "rblCasterTint", "rblGThin", "rblReliefIndex" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -7263,7 +7356,6 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     }
     if ((in.reliefSteps < 0) || (in.reliefSteps > RBL_MAX_RELIEF_STEPS)) return "reliefSteps outside 0..RBL_MAX_RELIEF_STEPS";
     if (in.relief && (m.height == RBL_CHANNEL_NONE)) return "relief needs a height channel (material.height)";
-    if ((in.relief || in.transmission) && in.deferred) return "relief and transmission are forward-only (the G-buffer carries neither)";
     if (in.shadowTransmittance && ((in.shadowMaps == 0) || in.deferred)) return "shadowTransmittance needs shadowMaps > 0 in a forward variant";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
@@ -7297,6 +7389,8 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
         out->maxLights = 1; out->lightFeatures = RBL_LIGHT_FEATURE_POINT; out->fog = RBL_FOG_NONE; out->tonemap = RBL_TONEMAP_NONE;
         out->gamma = 0.0f; out->linearOutput = false; out->debugOutput = 0;
+        // Relief marches the scene's first 8 lights of every type: light i of the scene is slot i
+        if (in.relief) { out->maxLights = (RBL_MAX_LIGHTS < 8)? RBL_MAX_LIGHTS : 8; out->lightFeatures = 15; }
     }
     out->shadowMaps = in.deferred? 0 : in.shadowMaps;       // the geometry pass receives nothing
     out->shadowFilter = (out->shadowMaps == 0)? 0 : ((in.shadowFilter == 0)? 2 : in.shadowFilter);
@@ -7528,6 +7622,17 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
+    // The thin target (RT4): every geometry variant writes it where the context has 5 draw buffers;
+    // light passes of a G-buffer with it read it
+    bool thinPass = (key->kind == RBL__KIND_PASS) && (d->transmission || key->gbufferRelief);
+    if ((key->kind == RBL__KIND_LIT) && d->deferred && (d->transmission || d->relief) && (rbl__maxDrawBuffers() < 5))
+    {
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "a deferred transmission or relief variant needs a 5th render target (GL_MAX_DRAW_BUFFERS %i)", rbl__maxDrawBuffers());
+        RBL_FREE(p);
+        return NULL;
+    }
+    if ((thinPass || ((key->kind == RBL__KIND_LIT) && d->deferred)) && (rbl__maxDrawBuffers() >= 5)) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_GB_THIN\n"); }
+    if (key->gbufferRelief) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_GB_RELIEF\n"); }
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_COMPOSITE)
@@ -7868,6 +7973,8 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
     if (p->key.desc.instanced != instanced) return instanced? "the material's program is not an instanced variant" : "an instanced variant draws only through RblDrawInstanced";
     if ((g != NULL) && !p->key.desc.deferred) return "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
     if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
+    if ((g != NULL) && ((p->key.desc.transmission && !g->desc.transmission) || (p->key.desc.relief && !g->desc.relief)))
+        return "a deferred transmission or relief variant in a G-buffer loaded without it (RblGBufferDesc.transmission, .relief)";
     if ((g == NULL) && p->key.desc.deferred) return "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
     // Without the bone attributes raylib's DrawMesh would enable them with no buffer (or defaults that
     // put every vertex on bone 0): a skinned program draws GPU-skinned meshes only
@@ -8587,16 +8694,16 @@ static void rbl__unloadTargets(RblGBuffer *g)
 {
     if (!rbl__glUsable())       // gone with the context
     {
-        Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
-        for (int i = 0; i < 5; i++) memset(t[i], 0, sizeof(Texture2D));
+        Texture2D *t[6] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth, &g->thin };
+        for (int i = 0; i < 6; i++) memset(t[i], 0, sizeof(Texture2D));
         g->state->id = 0; g->state->lightId = 0;
         return;
     }
     // rlUnloadFramebuffer deletes the depth texture attached to it (not the colour ones)
     if (g->state->id != 0) { rlUnloadFramebuffer(g->state->id); g->depth.id = 0; }
     if (g->state->lightId != 0) rlUnloadFramebuffer(g->state->lightId);
-    Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
-    for (int i = 0; i < 5; i++) { if (t[i]->id != 0) rlUnloadTexture(t[i]->id); memset(t[i], 0, sizeof(Texture2D)); }
+    Texture2D *t[6] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth, &g->thin };
+    for (int i = 0; i < 6; i++) { if (t[i]->id != 0) rlUnloadTexture(t[i]->id); memset(t[i], 0, sizeof(Texture2D)); }
     g->state->id = 0; g->state->lightId = 0;
 }
 
@@ -8646,11 +8753,15 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     bool rgba = (rbl__glsl() == 300) || (g->desc.shadowMaps > 0);
     g->params = rbl__targetTexture(width, height, rgba? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
+    // The thin target: only where the desc asks for transmission or relief (a 5th draw buffer)
+    bool thin = g->desc.transmission || g->desc.relief;
+    memset(&g->thin, 0, sizeof(g->thin));
+    if (thin && (rbl__maxDrawBuffers() >= 5)) g->thin = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
     if ((g->depth.id != 0) && !RBL__HOOK(gbufferDriverDepth)) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
-    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !RBL__HOOK(gbufferForceFailure);
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && (!thin || (g->thin.id != 0)) && !RBL__HOOK(gbufferForceFailure);
     if (ok)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
@@ -8661,9 +8772,10 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
         rlFramebufferAttach(g->state->id, g->normal.id, RL_ATTACHMENT_COLOR_CHANNEL1, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->state->id, g->params.id, RL_ATTACHMENT_COLOR_CHANNEL2, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->state->id, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL3, RL_ATTACHMENT_TEXTURE2D, 0);
+        if (thin) rlFramebufferAttach(g->state->id, g->thin.id, RL_ATTACHMENT_COLOR_CHANNEL4, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->state->id, g->depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
         rlEnableFramebuffer(g->state->id);                 // rlFramebufferAttach() unbinds it again
-        rlActiveDrawBuffers(4);                     // framebuffer state: set once
+        rlActiveDrawBuffers(thin? 5 : 4);           // framebuffer state: set once
         ok = rlFramebufferComplete(g->state->id);
         g->state->lightId = rlLoadFramebuffer();
         rlEnableFramebuffer(g->state->lightId);
@@ -8673,7 +8785,8 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     }
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (4 render targets, an RGBA16F target (ES 3: EXT_color_buffer_float), a depth texture): render forward instead", width, height);
+        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (%i render targets (GL_MAX_DRAW_BUFFERS %i), an RGBA16F target (ES 3: EXT_color_buffer_float), a depth texture): render forward instead",
+                 width, height, thin? 5 : 4, rbl__maxDrawBuffers());
         rbl__unloadTargets(g);
         return false;
     }
@@ -8688,6 +8801,7 @@ static void rbl__gbufferLitDesc(const RblGBufferDesc *g, RblLitShaderDesc *out)
     out->maxLights = RBL_MAX_LIGHTS;        // unbounded lights (and the naive loop) go through full-screen passes
     out->lightFeatures = g->lightFeatures; out->brdf = g->brdf; out->fog = g->fog; out->tonemap = g->tonemap; out->gamma = g->gamma;
     out->linearOutput = g->linearOutput; out->shadowMaps = g->shadowMaps; out->shadowFilter = g->shadowFilter;
+    out->transmission = g->transmission; out->shadowTransmittance = g->shadowTransmittance;
 }
 
 static void rbl__releasePasses(RblGBuffer *g)
@@ -8884,6 +8998,8 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     {
         rbl__ProgramKey key;
         rbl__keyFromDesc(&normalised, RBL__KIND_PASS, p, &key);
+        if (p == RBL__PASS_RESOLVE) { key.desc.transmission = false; key.desc.shadowTransmittance = false; }    // the resolve reads neither
+        else key.gbufferRelief = desc.relief? 1 : 0;
         rbl__Program *program = rbl__acquireProgram(&key);
         ok = (program != NULL);
         if (ok) g.state->passes[p] = program->shader.id;
@@ -8925,7 +9041,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
     rbl__unloadTargets(gbuffer);
     gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
     gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
-    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
+    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth; gbuffer->thin = fresh.thin;
     gbuffer->width = width; gbuffer->height = height;
     gbuffer->desc.width = width; gbuffer->desc.height = height;
     gbuffer->state->geometryDone = false;       // new targets hold nothing yet
@@ -8965,7 +9081,8 @@ void RblUnloadGBuffer(RblGBuffer *gbuffer)
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
     if (!rbl__gbufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
-    return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
+    return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format) +
+           ((gbuffer->thin.id != 0)? GetPixelDataSize(1, 1, gbuffer->thin.format) : 0);
 }
 
 // View matrix in raylib's layout (as MatrixLookAt), from the header's degenerate-safe camera frame
@@ -9094,21 +9211,30 @@ static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
     float invP[2] = { 1.0f/g->state->projection.m0, 1.0f/g->state->projection.m5 };
     if (loc[RBL__U_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__U_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
     if (loc[RBL__U_INV_P] != -1) rlSetUniform(loc[RBL__U_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
+    if ((loc[RBL__U_G_THIN] != -1) && (g->thin.id != 0))
+    {
+        int unit = 5;
+        rlActiveTextureSlot(unit);
+        rlEnableTexture(g->thin.id);
+        rlSetUniform(loc[RBL__U_G_THIN], &unit, SHADER_UNIFORM_INT, 1);
+    }
     rbl__bindSceneShadows();
+    if (program->key.desc.shadowTransmittance) rbl__bindSceneTints(program);
     return loc;
 }
 
 static void rbl__unbindGBufferPass(void)
 {
-    for (int i = 4; i >= 0; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
+    for (int i = 5; i >= 0; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
     rlDisableShader();
 }
 
 // Full-screen pass over unbounded lights (the forward shader's uniform arrays; the ambient was added
 // by the geometry pass)
-static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const int shadowSlot[4])
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const int shadowSlot[4], const int *reliefIndex)
 {
     const int *loc = rbl__bindGBufferPass(g, pass);
+    if ((loc[RBL__U_RELIEF_INDEX] != -1) && (count > 0)) rlSetUniform(loc[RBL__U_RELIEF_INDEX], reliefIndex, SHADER_UNIFORM_INT, count);
     const rbl__Scene *s = &rbl__state.scene;
     if (loc[RBL__U_SHADOW_MATRIX] != -1)
     {
@@ -9185,6 +9311,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         g->state->instanceCapacity = capacity;
     }
     float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
+    int reliefIndex[RBL_MAX_LIGHTS];        // scene index of each slot's relief bit (-1: lights 8 and later have none)
     bool counting = (g->output == RBL_GBUFFER_OUTPUT_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
@@ -9209,11 +9336,12 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
             memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
             memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
             if (d[15] > 0.0f) shadowSlot[(int)d[15] - 1] = n;
+            reliefIndex[n] = (i < 8)? i : -1;
             n++;
         }
         if ((n == RBL_MAX_LIGHTS) || ((i == count) && (n > 0)))
         {
-            rbl__fullscreenLights(g, passFullscreen, pos, col, spot, att, n, shadowSlot);
+            rbl__fullscreenLights(g, passFullscreen, pos, col, spot, att, n, shadowSlot, reliefIndex);
             for (int k = 0; k < 4; k++) shadowSlot[k] = -1;
             n = 0;
         }
@@ -9227,6 +9355,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
         if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
         memcpy(&s->staging[v*RBL__LIGHT_FLOATS], d, RBL__LIGHT_FLOATS*sizeof(float));
+        if (g->desc.relief && (i < 8)) s->staging[v*RBL__LIGHT_FLOATS + 15] += 8.0f*(float)(i + 1);   // + its relief bit (deferred_volume.fs.glsl)
         v++;
     }
     g->lightsInVolumes = v;

@@ -5,6 +5,8 @@
 //   RT2 RG8      bits 15..0 of the word
 //   RT3 RGBA16F  light accumulation: emission from the geometry pass, then the lights; alpha keeps
 //                the occlusion (light passes add alpha 0), which scales the ambient the resolve adds
+//   RT4 RGBA8    RblGBufferDesc.transmission or .relief only: rg the transmission share in 16 bits
+//                (r high), b the relief bits of the scene's first 8 lights (bit i: light i behind relief)
 //   word         normal x | normal y | field 1 | field 2, from the most significant bit; per BRDF:
 //     GGX          normal 18 + 18 | roughness 12 | metalness 8
 //     Blinn-Phong  normal 16 + 16 | shininess 12 | specular intensity 12 (colour folded to its luminance)
