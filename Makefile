@@ -217,7 +217,7 @@ quickstart: $(BUILD)/quickstart $(BUILD)/readme_run
 # the tests are named as extra prerequisites
 $(addprefix $(BUILD)/bench/bench_,lighting deferred shadows): tests/lighting_reference.h tests/reference.h
 $(BUILD)/bench/bench_skinning: tests/skin_rig.h
-$(BUILD)/bench/bench_thin: tests/relief_reference.h tests/reference.h
+$(BUILD)/bench/bench_thin $(BUILD)/bench/bench_deferred_thin: tests/relief_reference.h tests/reference.h
 $(BUILD)/bench/bench_%: tests/bench/bench_%.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(RAYLIB_CFLAGS) $< tests/harness.c -o $@ $(RAYLIB_LIBS)
@@ -260,7 +260,7 @@ $(addprefix $(BUILD)/bench/bench_platforms_,$(GPU_CONTEXTS)): $(BUILD)/bench/ben
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(VARIANT_FLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(VARIANT_LIBS)
 
-bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_deferred_thin $(BUILD)/bench/bench_overdraw $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

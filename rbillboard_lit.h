@@ -283,6 +283,15 @@
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
 *       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, RBL_INSTRUMENTS, kept for
 *       comparison). Debug views: RblSetGBufferOutput.
+*       Thin target (RblGBufferDesc.transmission / .relief; shaders/gbuffer_codec.glsl RT4): one more
+*       RGBA8 target, a 5th draw buffer (GL_MAX_DRAW_BUFFERS >= 5; ES 3 and WebGL2 promise 4: there
+*       the G-buffer is invalid, logged): the transmission share in 16 bits and one relief bit for each
+*       of the scene's first 8 lights, marched by the geometry pass toward each light (it knows them:
+*       the scene is set before RblBeginGBuffer) and read per light by the light passes. Where the
+*       context has a 5th draw buffer every geometry variant writes RT4 (zero without the features)
+*       so no hidden layer's values survive; a G-buffer without the flags has 4 targets and its light
+*       passes compile none of it. RblGBufferDesc.shadowTransmittance: the light passes read the
+*       maps' transmittance targets (no G-buffer bytes: a lookup at the rebuilt position).
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
 *       Receivers are variants with desc.shadowMaps > 0 (G-buffer: its desc.shadowMaps) and sample the
@@ -362,7 +371,8 @@
 *       Contact: where a sprite meets the ground, the ground's texels inside the PCF footprint (k/2 +
 *       1 texels) darken its base, as for any receiver meeting another surface (measured: README).
 *
-*   THIN SPRITES (shaders/transmission.glsl, relief.glsl, shadow_tint.glsl; tests/test_thin.c):
+*   THIN SPRITES (shaders/transmission.glsl, relief.glsl, shadow_tint.glsl; tests/test_thin.c,
+*   deferred: tests/test_deferred_thin.c):
 *       Transmission (desc.transmission): a card lit from behind shows the light through it as a thin
 *       diffuse sheet: radiance albedo x t x E x clamp((1/4 - N.L)/(5/4), 0, 1) per light (E its
 *       irradiance on a surface facing it, N the shading normal on the viewer's side: the back's
@@ -370,14 +380,15 @@
 *       x (1 - thickness), thickness from material.thickness (B or A of the material texture; none =
 *       0). Lights behind a transmitting card are looked up in their shadow maps (its own caster
 *       lets them through). A program without the flag compiles none of it; with it, a material
-*       value of 0 returns before any of it per light. Forward only (the G-buffer has no byte free).
+*       value of 0 returns before any of it per light. Deferred: DEFERRED, thin target.
 *       Relief (desc.relief, reliefSteps): the material texture's height channel (material.height)
 *       is marched from each shaded texel toward each light in the card's tangent space: reliefSteps
 *       evenly spaced samples (16) of the ray up to where it clears height 1 (maps[HEIGHT].value
 *       texels, 4); a texel above the ray takes that light away (hard-edged, texel by texel, base
 *       level). The reach is capped at 8 climbs (light below 7 degrees over the card), texels are
 *       taken as square, the march may read past a frame's edge into its gutter; cross-fading
-*       programs march the first frame. Forward only.
+*       programs march the first frame. Deferred: the geometry pass marches the scene's first 8
+*       lights (DEFERRED, thin target); later lights of a deferred frame are not relief-shadowed.
 *       Blended casters (RblShadowDesc.transmittance; receivers desc.shadowTransmittance): between
 *       RblBeginShadowBlend(coloured) and RblEndShadowBlend inside a shadow pass, draws are smoke or
 *       glass: depth-tested against the opaque casters already drawn, they multiply the map's
@@ -385,7 +396,8 @@
 *       the nearest one's distance (8 bits) by min blending; every texel with alpha >= 1/512 casts.
 *       A receiver more than 1.5/255 of the depth range behind that distance takes the light times
 *       the tint (bilinear over 2 x 2 texels); opaque casters shadow as before. Not on ES 2 (no min
-*       blending); single maps only (not omni or cascaded: refused); forward receivers only; skinned
+*       blending); single maps only (not omni or cascaded: refused); receivers: forward programs with
+*       desc.shadowTransmittance, G-buffers with RblGBufferDesc.shadowTransmittance; skinned
 *       Models cannot be blended casters. The target has
 *       no caster identities: a blended billboard that receives shadows is tinted where its own
 *       light-facing caster card lies in front of it (draw smoke with a program that receives none).
@@ -553,8 +565,9 @@
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
-*       - Thin sprites: transmission, relief and shadow tint are forward-only (the G-buffer's 10 bytes
-*         hold none of them; a deferred variant asking is refused); a relief height comes from a packed
+*       - Thin sprites deferred: a 5th render target (not on contexts with 4 draw buffers: many ES 3 /
+*         WebGL2 devices); relief self-shadow for the scene's first 8 lights only, as the scene
+*         stood during the geometry pass; a relief height comes from a packed
 *         channel (RblPackMaterial does not derive one from the normal map: pack the height as the
 *         specular or occlusion source into B or A).
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
@@ -1078,10 +1091,10 @@ typedef struct RblLitShaderDesc {
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBatchAddFade, RblDrawBillboardFade, RblInstancedDesc.fades): every map fetched twice
     int debugOutput;                // RblDebugOutput (0 = the lit colour)
-    bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (forward only)
-    bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (forward only)
+    bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (deferred: RblGBufferDesc.transmission)
+    bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (deferred: RblGBufferDesc.relief)
     int reliefSteps;                // Relief samples per light, 1..RBL_MAX_RELIEF_STEPS (0 = 16)
-    bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward only)
+    bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward variants; deferred: RblGBufferDesc.shadowTransmittance)
 } RblLitShaderDesc;
 
 // Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
@@ -1736,6 +1749,7 @@ typedef struct rbl__State {
     unsigned int casterIds[7];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced, blended vertex buffers and instanced: compiled on first use)
 #if defined(RBL_INSTRUMENTS)
     bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
+    bool gbufferFourDrawBuffers;    // Test hook: pretend GL_MAX_DRAW_BUFFERS is 4 (ES 3 / WebGL2's minimum)
     bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
 #endif
     char problem[512];              // Why the last internal step failed (its public caller logs it once)
@@ -4343,6 +4357,7 @@ static unsigned int rbl__activeFramebuffer(void)
 static int rbl__maxDrawBuffers(void)
 {
     if ((rbl__glsl() < 300) || (rlGetTextureIdDefault() == 0)) return 0;
+    if (RBL__HOOK(gbufferFourDrawBuffers)) return 4;
     void *proc = rlGetProcAddress("glGetIntegerv");
     if (proc == NULL) return 0;
     rbl__GlGetIntegerv get;

@@ -266,6 +266,20 @@ static void test_deferred_transmission_matches_forward_within_1_of_255(void)
     }
     RblUnloadLitShader(&geo);
     RblUnloadGBuffer(&plain);
+    // A context with 4 draw buffers (ES 3 / WebGL2's minimum): the thin G-buffer and a deferred
+    // transmission variant are refused with one line each; a plain G-buffer still loads
+    rbl__state.gbufferFourDrawBuffers = true;
+    d.transmission = true; d.maxLights = 2;                 // a desc not compiled yet
+    int before = warnings;
+    RblGBuffer thin = RblLoadGBuffer(dtGBufferDesc(&d));
+    RT_CHECK(!RblIsGBufferValid(thin) && warnings == before + 1, "a thin G-buffer loaded with 4 draw buffers (%d lines)", warnings - before);
+    geo = RblLoadLitShader(d);
+    RT_CHECK(!RblIsLitShaderValid(geo) && warnings == before + 2 && strstr(lastWarning, "5th render target") != NULL, "a deferred transmission variant loaded with 4 draw buffers: %s", lastWarning);
+    d.transmission = false;
+    plain = RblLoadGBuffer(dtGBufferDesc(&d));
+    RT_CHECK(RblIsGBufferValid(plain) && warnings == before + 2, "a plain G-buffer failed with 4 draw buffers");
+    RblUnloadGBuffer(&plain);
+    rbl__state.gbufferFourDrawBuffers = false;
     UnloadTexture(leaf.albedo); UnloadTexture(leaf.material); UnloadTexture(leaf.white);
 }
 
