@@ -73,11 +73,11 @@ static void test_deferred_overlapping_sprites_1k_and_10k_match_forward_ambient_o
     RT_CHECK(RblSetScene(&scene), "scene rejected");
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 2; desc.lightFeatures = RblLightFeatures(lights, 2); desc.brdf = RBL_BRDF_GGX;
+    desc.maxLights = 2; desc.shading.lightFeatures = RblGetLightFeatures(lights, 2); desc.shading.brdf = RBL_BRDF_GGX;
     desc.material.normalEncoding = RBL_NORMAL_HEMIOCT; desc.material.occlusion = true; desc.material.specular = true;
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
-    gd.width = DT_SIZE; gd.height = DT_SIZE; gd.brdf = desc.brdf; gd.lightFeatures = desc.lightFeatures;
+    gd.width = DT_SIZE; gd.height = DT_SIZE; gd.shading.brdf = desc.shading.brdf; gd.shading.lightFeatures = desc.shading.lightFeatures;
     RblGBuffer g = RblLoadGBuffer(gd);
     RT_CHECK(RblIsGBufferValid(g), "G-buffer failed");
     Material m = LoadMaterialDefault();
@@ -170,7 +170,7 @@ static RblGBufferDesc dtGBufferDesc(const RblLitShaderDesc *d)
     RblGBufferDesc g;
     memset(&g, 0, sizeof(g));
     g.width = SH_TARGET; g.height = SH_TARGET;
-    g.brdf = d->brdf; g.lightFeatures = d->lightFeatures; g.shadowMaps = d->shadowMaps;
+    g.shading.brdf = d->shading.brdf; g.shading.lightFeatures = d->shading.lightFeatures; g.shading.shadowMaps = d->shading.shadowMaps;
     g.transmission = d->transmission; g.relief = d->relief; g.shadowTransmittance = d->shadowTransmittance;
     return g;
 }
@@ -219,7 +219,7 @@ static void test_deferred_transmission_matches_forward_within_1_of_255(void)
     {
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
-        d.maxLights = 3; d.lightFeatures = RblLightFeatures(lights, 3); d.brdf = brdf;
+        d.maxLights = 3; d.shading.lightFeatures = RblGetLightFeatures(lights, 3); d.shading.brdf = brdf;
         d.transmission = true; d.material.thickness = RBL_CHANNEL_A;
         RblLitShaderDesc plainDesc = d;
         plainDesc.transmission = false; plainDesc.material.thickness = RBL_CHANNEL_NONE;
@@ -322,7 +322,7 @@ static void test_deferred_relief_matches_forward_within_1_of_255(void)
         r.albedo = solidTexture((Color){ 200, 190, 180, 255 });
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
-        d.maxLights = 4; d.lightFeatures = RblLightFeatures(lights, 4); d.brdf = RBL_BRDF_BLINN_PHONG;
+        d.maxLights = 4; d.shading.lightFeatures = RblGetLightFeatures(lights, 4); d.shading.brdf = RBL_BRDF_BLINN_PHONG;
         d.material.height = RBL_CHANNEL_A; d.relief = true;
         Shader fwd = RblLoadLitShader(d);
         d.relief = false;
@@ -369,7 +369,7 @@ static void test_deferred_blended_casters_tint_like_forward_within_1_of_255(void
         RblLight light = (kind == 0)? litDirectional((Vector3){ 0.5f, 0.3f, -1.0f }, 1.0f) : litSpot((Vector3){ -2.0f, -1.2f, 4.0f }, (Vector3){ 0.5f, 0.3f, -1.0f }, 40.0f, 70.0f, 14.0f);
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
-        d.maxLights = 1; d.lightFeatures = RblLightFeatures(&light, 1); d.shadowMaps = 1; d.shadowTransmittance = true;
+        d.maxLights = 1; d.shading.lightFeatures = RblGetLightFeatures(&light, 1); d.shading.shadowMaps = 1; d.shadowTransmittance = true;
         Shader fwd = RblLoadLitShader(d);
         RblGBufferDesc gd = dtGBufferDesc(&d);
         d.shadowTransmittance = false; d.deferred = true;

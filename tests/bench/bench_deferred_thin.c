@@ -160,14 +160,14 @@ int main(void)
         {
             RblLitShaderDesc d;
             memset(&d, 0, sizeof(d));
-            d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+            d.maxLights = 1; d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
             if (f == 0) d.transmission = on;
             if (f == 1) { d.material.height = RBL_CHANNEL_A; d.relief = on; }
-            if (f == 2) { d.shadowMaps = 1; d.shadowTransmittance = on; }
+            if (f == 2) { d.shading.shadowMaps = 1; d.shadowTransmittance = on; }
             b->shader[f][on] = RblLoadLitShader(d);
             RblGBufferDesc gd;
             memset(&gd, 0, sizeof(gd));
-            gd.width = FRAME; gd.height = FRAME; gd.lightFeatures = d.lightFeatures; gd.shadowMaps = d.shadowMaps;
+            gd.width = FRAME; gd.height = FRAME; gd.shading.lightFeatures = d.shading.lightFeatures; gd.shading.shadowMaps = d.shading.shadowMaps;
             gd.transmission = d.transmission; gd.relief = d.relief; gd.shadowTransmittance = d.shadowTransmittance;
             b->g[f][on] = RblLoadGBuffer(gd);
             d.shadowTransmittance = false; d.deferred = true;

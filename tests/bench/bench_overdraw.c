@@ -141,13 +141,13 @@ int main(void)
     l[2].type = RBL_LIGHT_POINT; l[2].position = (Vector3){ -2.0f, -1.0f, 2.0f }; l[2].color = (Color){ 150, 200, 255, 255 }; l[2].intensity = 3.0f; l[2].range = 5.0f;
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 3; d.lightFeatures = RblLightFeatures(l, 3); d.brdf = RBL_BRDF_GGX; d.instanced = true;
+    d.maxLights = 3; d.shading.lightFeatures = RblGetLightFeatures(l, 3); d.shading.brdf = RBL_BRDF_GGX; d.instanced = true;
     b->fwd = RblLoadLitShader(d);
     d.deferred = true;
     b->geo = RblLoadLitShader(d);
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
-    gd.width = FRAME; gd.height = FRAME; gd.brdf = RBL_BRDF_GGX; gd.lightFeatures = d.lightFeatures;
+    gd.width = FRAME; gd.height = FRAME; gd.shading.brdf = RBL_BRDF_GGX; gd.shading.lightFeatures = d.shading.lightFeatures;
     b->g = RblLoadGBuffer(gd);
     b->buffer = RblLoadInstanceBuffer(countOf[SIZES - 1]);
     b->instances = (RblInstance *)calloc((size_t)countOf[SIZES - 1], sizeof(RblInstance));
