@@ -1342,7 +1342,7 @@ RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // 
 RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
 RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's lights into the accumulation (bounded lights as volumes; the ambient: the resolve); false = rejected
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
-RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
+RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // The ambient (once per pixel), fog, tonemap and encode into the current target, writing the G-buffer depth
 
 // Shadows (code: >>shadows)
 RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
