@@ -11953,6 +11953,8 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
 }
 
 // The GPU buffer's attributes (lit_instanced.vs.glsl's sprite reading) from sprite first on
+#define RBL__SPRITE_ATTRIBUTES 4        // position and scale, start, rotation/frame/tag/speed, tint
+
 static void rbl__spriteAttributes(const rbl__SpriteBufferState *b, int first)
 {
     const int stride = (int)sizeof(RblSpriteInstance), at = first*stride;
@@ -12011,7 +12013,7 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     rlEnableVertexArray(b->vaoId);
     b->vboId = rlLoadVertexBuffer(b->sprites, capacity*(int)sizeof(RblSpriteInstance), true);
     rbl__spriteAttributes(b, 0);
-    for (unsigned int i = 0; i < 4; i++) { rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + i); rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + i, 1); }
+    for (unsigned int i = 0; i < RBL__SPRITE_ATTRIBUTES; i++) { rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + i); rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + i, 1); }
     rlDisableVertexArray();
     unsigned int id = ((b->vaoId != 0) && (b->vboId != 0) && (b->tableId != 0))? rbl__liveAdd(b) : 0;
     if (id == 0)
