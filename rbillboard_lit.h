@@ -243,9 +243,10 @@
 *         lights of the types it compiled (RblGetLightFeatures: what a set needs); others are left out.
 *
 *   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
-*       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
-*       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (fog, exposure,
-*       tonemap, encoding; writes depth). Set the scene before the geometry pass: it adds the ambient.
+*       RblBeginGBuffer -> opaque draws (material, emission, occlusion) -> RblEndGBuffer ->
+*       RblDrawDeferredLights (lights into the accumulation) -> RblResolveGBuffer (the ambient once per
+*       pixel, fog, exposure, tonemap, encoding; writes depth). The ambient is the scene's at
+*       RblBeginGBuffer: set the scene before the geometry pass.
 *       Lighting and material decoding are the forward path's code. Colour targets: 10 bytes per pixel
 *       (12 where the G-buffer receives shadows: RT2 keeps each pixel's caster identity). Their layout
 *       has one home, the comment opening shaders/gbuffer_codec.glsl (embedded below: search for
@@ -263,6 +264,15 @@
 *       instanced draw of sphere proxies (back faces: right with the eye inside). The windowed falloff
 *       is zero at the range, so volumes match the naive full-screen loop (g.naiveFullscreen, RBL_INSTRUMENTS, kept for
 *       comparison). Debug views: RblSetGBufferOutput.
+*       Thin target (RblGBufferDesc.transmission / .relief; shaders/gbuffer_codec.glsl RT4): one more
+*       RGBA8 target, a 5th draw buffer (GL_MAX_DRAW_BUFFERS >= 5; ES 3 and WebGL2 promise 4: there
+*       the G-buffer is invalid, logged): the transmission share in 16 bits and one relief bit for each
+*       of the scene's first 8 lights, marched by the geometry pass toward each light (it knows them:
+*       the scene is set before RblBeginGBuffer) and read per light by the light passes. Where the
+*       context has a 5th draw buffer every geometry variant writes RT4 (zero without the features)
+*       so no hidden layer's values survive; a G-buffer without the flags has 4 targets and its light
+*       passes compile none of it. RblGBufferDesc.shadowTransmittance: the light passes read the
+*       maps' transmittance targets (no G-buffer bytes: a lookup at the rebuilt position).
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
 *       Receivers are variants with desc.shading.shadowMaps > 0 (G-buffer: its desc.shading.shadowMaps) and sample the
@@ -349,7 +359,8 @@
 *       Contact: where a sprite meets the ground, the ground's texels inside the PCF footprint (k/2 +
 *       1 texels) darken its base, as for any receiver meeting another surface (measured: README).
 *
-*   THIN SPRITES (shaders/transmission.glsl, relief.glsl, shadow_tint.glsl; tests/test_thin.c):
+*   THIN SPRITES (shaders/transmission.glsl, relief.glsl, shadow_tint.glsl; tests/test_thin.c,
+*   deferred: tests/test_deferred_thin.c):
 *       Transmission (desc.transmission): a card lit from behind shows the light through it as a thin
 *       diffuse sheet: radiance albedo x t x E x clamp((1/4 - N.L)/(5/4), 0, 1) per light (E its
 *       irradiance on a surface facing it, N the shading normal on the viewer's side: the back's
@@ -357,14 +368,15 @@
 *       x (1 - thickness), thickness from material.thickness (B or A of the material texture; none =
 *       0). Lights behind a transmitting card are looked up in their shadow maps (its own caster
 *       lets them through). A program without the flag compiles none of it; with it, a material
-*       value of 0 returns before any of it per light. Forward only (the G-buffer has no byte free).
+*       value of 0 returns before any of it per light. Deferred: DEFERRED, thin target.
 *       Relief (desc.relief, reliefSteps): the material texture's height channel (material.height)
 *       is marched from each shaded texel toward each light in the card's tangent space: reliefSteps
 *       evenly spaced samples (16) of the ray up to where it clears height 1 (maps[HEIGHT].value
 *       texels, 4); a texel above the ray takes that light away (hard-edged, texel by texel, base
 *       level). The reach is capped at 8 climbs (light below 7 degrees over the card), texels are
 *       taken as square, the march may read past a frame's edge into its gutter; cross-fading
-*       programs march the first frame. Forward only.
+*       programs march the first frame. Deferred: the geometry pass marches the scene's first 8
+*       lights (DEFERRED, thin target); later lights of a deferred frame are not relief-shadowed.
 *       Blended casters (RblShadowDesc.transmittance; receivers desc.shadowTransmittance): between
 *       RblBeginShadowBlend(coloured) and RblEndShadowBlend inside a shadow pass, draws are smoke or
 *       glass: depth-tested against the opaque casters already drawn, they multiply the map's
@@ -372,7 +384,8 @@
 *       the nearest one's distance (8 bits) by min blending; every texel with alpha >= 1/512 casts.
 *       A receiver more than 1.5/255 of the depth range behind that distance takes the light times
 *       the tint (bilinear over 2 x 2 texels); opaque casters shadow as before. Not on ES 2 (no min
-*       blending); single maps only (not omni or cascaded: refused); forward receivers only; skinned
+*       blending); single maps only (not omni or cascaded: refused); receivers: forward programs with
+*       desc.shadowTransmittance, G-buffers with RblGBufferDesc.shadowTransmittance; skinned
 *       Models cannot be blended casters. The target has
 *       no caster identities: a blended billboard that receives shadows is tinted where its own
 *       light-facing caster card lies in front of it (draw smoke with a program that receives none).
@@ -526,9 +539,9 @@
 *         to 1.996 and shininess to 2048 in the G-buffer; at most RBL_MAX_LIGHTS unbounded lights
 *         (directional, range 0); a G-buffer loaded with size 0 takes its target's size at each
 *         RblBeginGBuffer (the screen, or the render texture of BeginTextureMode) and RblEndGBuffer
-*         returns to that target; a fixed size resolved into another size is scaled (logged). The geometry pass
-*         adds the scene's ambient: set the scene before RblBeginGBuffer (a later RblSetScene changes
-*         the lights of the frame, not its ambient).
+*         returns to that target; a fixed size resolved into another size is scaled (logged). The frame's
+*         ambient is the scene's at RblBeginGBuffer: set the scene before it (a later RblSetScene
+*         changes the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
 *       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
@@ -539,8 +552,9 @@
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
 *       - Cross-fade clips each frame to its trim by a test in the fragment stage: on ES 2 without
 *         highp fragments (mediump) the trim edges are placed to about 1/1000 of the quad.
-*       - Thin sprites: transmission, relief and shadow tint are forward-only (the G-buffer's 10 bytes
-*         hold none of them; a deferred variant asking is refused); a relief height comes from a packed
+*       - Thin sprites deferred: a 5th render target (not on contexts with 4 draw buffers: many ES 3 /
+*         WebGL2 devices); relief self-shadow for the scene's first 8 lights only, as the scene
+*         stood during the geometry pass; a relief height comes from a packed
 *         channel (RblPackMaterial does not derive one from the normal map: pack the height as the
 *         specular or occlusion source into B or A).
 *       - rlgl's matrix stack (rlPushMatrix/rlTranslatef) does not apply: vertices are world space.
@@ -1073,10 +1087,10 @@ typedef struct RblLitShaderDesc {
     bool softParticles;             // Fade alpha where the billboard meets the scene's depth (RblScene.depth; forward only)
     bool crossFade;                 // Mix a second atlas frame (RblBatchAddFade, RblDrawBillboardFade, RblInstancedDesc.fades): every map fetched twice
     int debugOutput;                // RblDebugOutput (0 = the lit colour)
-    bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (forward only)
-    bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (forward only)
+    bool transmission;              // Light through thin cards from a light behind them, by the material's RBL_PARAM_TRANSMISSION (deferred: RblGBufferDesc.transmission)
+    bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (deferred: RblGBufferDesc.relief)
     int reliefSteps;                // Relief samples per light, 1..RBL_MAX_RELIEF_STEPS (0 = 16)
-    bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward only)
+    bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward variants; deferred: RblGBufferDesc.shadowTransmittance)
 } RblLitShaderDesc;
 
 // Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
@@ -1105,6 +1119,9 @@ typedef struct RblGBufferDesc {
     int width;                      // Size in pixels (0 = the render size)
     int height;
     RblShading shading;             // Lighting passes and resolve (its deferred variants: the same brdf)
+    bool transmission;              // Light through thin cards (geometry variants with desc.transmission): + the thin target
+    bool relief;                    // Relief self-shadow of the scene's first 8 lights (variants with desc.relief): + the thin target
+    bool shadowTransmittance;       // Light passes read the maps' transmittance targets (blended casters' tint; needs shading.shadowMaps)
 } RblGBufferDesc;
 
 // Deferred G-buffer (RblLoadGBuffer): 10 bytes per pixel + depth + RGBA16F light accumulation
@@ -1116,6 +1133,7 @@ typedef struct RblGBuffer {
     Texture2D params;               // RG8: bits 15..0 (material fields; layout: the DEFERRED notes above)
     Texture2D accum;                // RGBA16F: emission, ambient and lights (linear); alpha: occlusion
     Texture2D depth;                // Depth texture (raylib's rlLoadTextureDepth: 24 or 32 bits, the driver's choice)
+    Texture2D thin;                 // RGBA8, desc.transmission or desc.relief only: transmission share, relief bits (id 0 otherwise)
     RblGBufferDesc desc;            // Settings, defaults applied
     int output;                     // RblGBufferOutput shown by the resolve (RblSetGBufferOutput)
     float outputScale;              // Range of the depth/position/light-count outputs
@@ -1329,9 +1347,9 @@ RBLAPI void RblUnloadGBuffer(RblGBuffer *gbuffer);                           // 
 RBLAPI int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer);               // Bytes per pixel of the colour targets, excluding depth and accumulation
 RBLAPI bool RblBeginGBuffer(RblGBuffer *gbuffer, Camera3D camera);           // Start the geometry pass (draw with deferred variants of the G-buffer's brdf); false = rejected
 RBLAPI void RblEndGBuffer(RblGBuffer *gbuffer);                              // End the geometry pass
-RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's lights into the accumulation (bounded lights as volumes; ambient: geometry pass); false = rejected
+RBLAPI bool RblDrawDeferredLights(RblGBuffer *gbuffer);                      // The scene's lights into the accumulation (bounded lights as volumes; the ambient: the resolve); false = rejected
 RBLAPI void RblSetGBufferOutput(RblGBuffer *gbuffer, int view, float scale);   // Select a debug view (RblGBufferOutput) and its range
-RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // Fog, tonemap and encode into the current target, writing the G-buffer depth
+RBLAPI void RblResolveGBuffer(RblGBuffer *gbuffer);                          // The ambient (once per pixel), fog, tonemap and encode into the current target, writing the G-buffer depth
 
 // Shadows (code: >>shadows)
 RBLAPI RblShadowMap RblLoadShadowMap(RblShadowDesc desc);                     // Load a depth target (caster programs are the header's); invalid + log on failure
@@ -1455,6 +1473,7 @@ typedef enum {
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
     RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
+    RBL__U_G_THIN, RBL__U_RELIEF_INDEX,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1469,6 +1488,7 @@ typedef struct rbl__ProgramKey {
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
     int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
     int shadowKinds;                // Receivers: map k's compiled code in bits 4k..4k+3 (rbl__shadowCode; shadows.glsl)
+    int gbufferRelief;              // 1: a G-buffer light pass reading the stored relief bits (RBL_GB_RELIEF)
 } rbl__ProgramKey;
 
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
@@ -1601,7 +1621,7 @@ typedef struct rbl__GBufferState {
     Matrix view;                          // Camera of the last geometry pass
     Matrix projection;
     Vector3 eye;
-    float ambient[9];                     // The scene's ambient (sky, ground, up) the last geometry pass added
+    float ambient[9];                     // The scene's ambient (sky, ground, up) at the last RblBeginGBuffer (the resolve adds it)
     bool ambientNoted;                    // A later scene's other ambient was logged once
     bool geometryDone;                    // A geometry pass filled the targets (since load or the last resize)
     bool follow;                          // Loaded with size 0: takes its target's size at each RblBeginGBuffer
@@ -1722,6 +1742,7 @@ typedef struct rbl__State {
     unsigned int casterIds[7];         // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced, blended vertex buffers and instanced: compiled on first use)
 #if defined(RBL_INSTRUMENTS)
     bool gbufferForceFailure;          // Test hook: pretend MRT / float targets are unavailable
+    bool gbufferFourDrawBuffers;       // Test hook: pretend GL_MAX_DRAW_BUFFERS is 4 (ES 3 / WebGL2's minimum)
     bool gbufferDriverDepth;           // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
 #endif
     char problem[512];                 // Why the last internal step failed (its public caller logs it once)
@@ -1870,7 +1891,7 @@ static bool rbl__unloadable(const void *holder, unsigned int id, const void *sta
 // RBL-SHADERS-BEGIN
 static const char *const rbl__shader_ambient[] = {
     "// Ambient: the scene's sky/ground light on a surface. Forward shaders add it per fragment; the\n",
-    "// G-buffer's geometry pass adds it into the accumulation target (so occlusion is not stored).\n",
+    "// deferred resolve once per pixel, on the stored surface (occlusion from the accumulation's alpha).\n",
     "//   RBL_BRDF b                2 (GGX) adds the specular reflectance of a uniform environment\n",
     "#include \"surface.glsl\"\n",
     "\n",
@@ -1964,9 +1985,12 @@ static const char *const rbl__shader_deferred_fullscreen_fs[] = {
     "}\n",
     NULL };
 static const char *const rbl__shader_deferred_resolve_fs[] = {
-    "// Deferred resolve, fragment stage: the accumulated light through fog, exposure, tonemap and the\n",
-    "// display encoding (output.glsl), writing the G-buffer's depth for later forward draws; debug views.\n",
+    "// Deferred resolve, fragment stage: the scene's ambient on the stored surface (once per pixel, the\n",
+    "// occlusion from the accumulation's alpha) plus the accumulated emission and light, through fog,\n",
+    "// exposure, tonemap and the display encoding (output.glsl), writing the G-buffer's depth for later\n",
+    "// forward draws; debug views.\n",
     "#include \"gbuffer_read.glsl\"\n",
+    "#include \"ambient.glsl\"\n",
     "#include \"output.glsl\"\n",
     "\n",
     "RBL_VARYING vec2 fragUv;\n",
@@ -1997,8 +2021,13 @@ static const char *const rbl__shader_deferred_resolve_fs[] = {
     "    vec4 accum = texelFetch(rblGAccum, texel, 0);\n",
     "    vec3 color = accum.rgb;\n",
     "    float viewDistance = rblViewDistance(rblEye, rblViewAxis, position);\n",
-    "    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, viewDistance), 1.0); return; }\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
+    "    if (rblOutput == 0)\n",
+    "    {\n",
+    "        s.occlusion = accum.a;\n",
+    "        finalColor = vec4(rblFinish(color + rblAmbientLight(s), viewDistance), 1.0);\n",
+    "        return;\n",
+    "    }\n",
     "    vec3 v = vec3(0.0);\n",
     "    if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);\n",
     "    else if (rblOutput == 2) v = s.normal*0.5 + 0.5;\n",
@@ -2020,7 +2049,7 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
     "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
     "RBL_FLAT RBL_VARYING vec4 volumeSpot;\n",
-    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w shadow map index + 1 (0 = none)\n",
+    "RBL_FLAT RBL_VARYING vec4 volumeFalloff;             // xyz attenuation, w code: shadow map index + 1 (0 = none) + 8 x (relief bit + 1)\n",
     "out vec4 finalColor;\n",
     "\n",
     "void main()\n",
@@ -2037,15 +2066,26 @@ static const char *const rbl__shader_deferred_volume_fs[] = {
     "#else\n",
     "    RblShadingPoint s = rblGBufferSurface(texel, position);\n",
     "    vec3 v = rblViewVector(rblEye, rblViewAxis, s.position, s.normal);\n",
+    "    int code = int(volumeFalloff.w + 0.5);\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "    rblGbReliefLight = code/8 - 1;\n",
+    "#endif\n",
     "#if RBL_SHADOWS > 0\n",
-    "    int map = int(volumeFalloff.w + 0.5) - 1;\n",
+    "    int map = code - 8*(code/8) - 1;\n",
     "    vec3 l = rblSafeNormalize(volumePosition.xyz - s.position, s.normal);\n",
     "    float NdotL = dot(s.normal, l);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    if (s.transmission > 0.0) NdotL = 1.0;          // the light behind the card is shadowed on its way too\n",
+    "#endif\n",
     "    float shadow = ((map >= 0) && (NdotL > 0.0))? rblShadowAt(map, s, l) : 1.0;\n",
     "#else\n",
     "    float shadow = 1.0;\n",
     "#endif\n",
-    "    finalColor = vec4(rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow), 0.0);\n",
+    "    vec3 light = rblEvalLight(s, v, volumePosition, volumeColor, volumeSpot, volumeFalloff.xyz, shadow);\n",
+    "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
+    "    if (map >= 0) light *= rblShadowTint(map, s.position);\n",
+    "#endif\n",
+    "    finalColor = vec4(light, 0.0);\n",
     "#endif\n",
     "}\n",
     NULL };
@@ -2116,16 +2156,27 @@ static const char *const rbl__shader_fullscreen_vs[] = {
     NULL };
 static const char *const rbl__shader_gbuffer_fs[] = {
     "// Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the\n",
-    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit; the scene's ambient (it needs the\n",
-    "// occlusion, which is not stored) is added here with the emission, from the unquantised surface.\n",
+    "// G-buffer (layout: gbuffer_codec.glsl) instead of being lit. The emission (material data, like the\n",
+    "// albedo) and the occlusion go to the accumulation target; the scene's ambient is added once per\n",
+    "// pixel by the resolve, not per overdrawn layer here.\n",
     "#include \"material.glsl\"\n",
-    "#include \"ambient.glsl\"\n",
     "#include \"gbuffer_codec.glsl\"\n",
     "\n",
     "layout(location = 0) out vec4 rblOutAlbedo;\n",
     "layout(location = 1) out vec4 rblOutNormal;\n",
     "layout(location = 2) out vec4 rblOutParams;\n",
     "layout(location = 3) out vec4 rblOutAccum;\n",
+    "#ifdef RBL_GB_THIN\n",
+    "// RT4 where the context has 5 draw buffers: every geometry variant writes it (zero without the\n",
+    "// features), so a G-buffer with the thin target never keeps a hidden layer's values; a G-buffer\n",
+    "// without it has no 5th draw buffer and the output goes nowhere\n",
+    "layout(location = 4) out vec4 rblOutThin;\n",
+    "#endif\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "// The scene's first RBL_LIGHTS lights (as lights.glsl declares them), each marched through the relief\n",
+    "uniform int rblLightCount;\n",
+    "uniform vec4 rblLightPosition[RBL_LIGHTS];\n",
+    "#endif\n",
     "\n",
     "void main()\n",
     "{\n",
@@ -2151,7 +2202,23 @@ static const char *const rbl__shader_gbuffer_fs[] = {
     "    // RG8 keeps x, y (raylib samples it r,r,r,g: read back as .ra); RGBA8 (ES, or a G-buffer that\n",
     "    // receives shadows) also the caster identity (gbuffer_read.glsl)\n",
     "    rblOutParams = vec4(params.x, params.y, sp.caster);\n",
-    "    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);\n",
+    "    rblOutAccum = vec4(emission, sp.occlusion);\n",
+    "#ifdef RBL_GB_THIN\n",
+    "    // Relief: bit i set where the scene's light i is behind relief (lights.glsl's l, at the unquantised\n",
+    "    // position), for the light passes to read; transmission: the share in 16 bits (8 would leave\n",
+    "    // 2/255 in dark sRGB output under a bright light behind)\n",
+    "    float mask = 0.0;\n",
+    "#ifdef RBL_RELIEF_STEPS\n",
+    "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
+    "    {\n",
+    "        if (i >= rblLightCount) break;\n",
+    "        vec4 p = rblLightPosition[i];\n",
+    "        if (rblReliefShadow(rblSafeNormalize(p.xyz - sp.position*p.w, sp.normal)) == 0.0) mask += exp2(float(i));\n",
+    "    }\n",
+    "#endif\n",
+    "    float t = floor(clamp(sp.transmission, 0.0, 1.0)*65535.0 + 0.5);\n",
+    "    rblOutThin = vec4(floor(t/256.0), mod(t, 256.0), mask, 0.0)/255.0;\n",
+    "#endif\n",
     "}\n",
     NULL };
 static const char *const rbl__shader_gbuffer_codec[] = {
@@ -2160,8 +2227,10 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "//   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a bits 23..16 of the word\n",
     "//   RT1 RGBA8    bits 55..24 of a 56-bit normal/material word, RT1.r its most significant byte\n",
     "//   RT2 RG8      bits 15..0 of the word\n",
-    "//   RT3 RGBA16F  light accumulation: emission and the scene's ambient from the geometry pass, then\n",
-    "//                the lights; alpha keeps the occlusion (its debug view; light passes add alpha 0)\n",
+    "//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then the lights; alpha keeps\n",
+    "//                the occlusion (light passes add alpha 0), which scales the ambient the resolve adds\n",
+    "//   RT4 RGBA8    RblGBufferDesc.transmission or .relief only: rg the transmission share in 16 bits\n",
+    "//                (r high), b the relief bits of the scene's first 8 lights (bit i: light i behind relief)\n",
     "//   word         normal x | normal y | field 1 | field 2, from the most significant bit; per BRDF:\n",
     "//     GGX          normal 18 + 18 | roughness 12 | metalness 8\n",
     "//     Blinn-Phong  normal 16 + 16 | shininess 12 | specular intensity 12 (colour folded to its luminance)\n",
@@ -2173,8 +2242,7 @@ static const char *const rbl__shader_gbuffer_codec[] = {
     "// Blinn-Phong's 4 spare bits go to its two fields (12 + 12 instead of 11 + 9). Every field is stored\n",
     "// in the form whose step is the same relative change of what the BRDF reads (a highlight's error is\n",
     "// relative), except metalness (linear in the output). Not stored: the normal's third coordinate,\n",
-    "// occlusion (the ambient it scales is added by the geometry pass), roughness below RBL_MIN_ROUGHNESS\n",
-    "// (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
+    "// roughness below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the (n + 8)/8 normalisation.\n",
     "//   normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate, odd so that 0 and\n",
     "//                +-1 are codes (axis-aligned normals exact); of the 4 neighbouring codes the one\n",
     "//                decoding nearest the normal\n",
@@ -2293,6 +2361,24 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "uniform mat4 rblInvView;                // inverse view (camera to world)\n",
     "uniform vec3 rblEye;                    // camera position\n",
     "uniform vec4 rblViewAxis;               // camera back direction, w 1 orthographic (rblViewVector)\n",
+    "#ifdef RBL_GB_THIN\n",
+    "uniform sampler2D rblGThin;             // RGBA8: transmission share (rg, 16 bits), relief bits of lights 0..7 (b)\n",
+    "#endif\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "uniform int rblReliefIndex[RBL_LIGHTS]; // full-screen pass: the scene index of light slot i (-1: no bit)\n",
+    "uint rblGbReliefMask;                   // this pixel's relief bits (rblGBufferSurface)\n",
+    "int rblGbReliefLight = -1;              // scene index of the light being evaluated (-1: none marched)\n",
+    "\n",
+    "// Light slot i of the full-screen pass is evaluated next\n",
+    "void rblGbReliefSelect(int i) { rblGbReliefLight = rblReliefIndex[i]; }\n",
+    "\n",
+    "// The stored relief verdict for the light being evaluated (lights.glsl): 0 behind relief, else 1\n",
+    "float rblReliefShadow(vec3 l)\n",
+    "{\n",
+    "    if ((rblGbReliefLight < 0) || (rblGbReliefLight > 7)) return 1.0;\n",
+    "    return (((rblGbReliefMask >> uint(rblGbReliefLight)) & 1u) != 0u)? 0.0 : 1.0;\n",
+    "}\n",
+    "#endif\n",
     "\n",
     "// This pixel's G-buffer texel and depth in a light pass (drawn at the G-buffer's size); false where\n",
     "// nothing was drawn (background)\n",
@@ -2361,8 +2447,17 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "#else\n",
     "    s.face = s.normal;\n",
     "#endif\n",
-    "    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales\n",
-    "    s.transmission = 0.0;               // forward only: not stored\n",
+    "    s.occlusion = 1.0;                  // the accumulation's alpha (the resolve reads it)\n",
+    "    s.transmission = 0.0;\n",
+    "#ifdef RBL_GB_THIN\n",
+    "    vec4 thin = floor(texelFetch(rblGThin, texel, 0)*255.0 + 0.5);\n",
+    "#ifdef RBL_TRANSMISSION\n",
+    "    s.transmission = (thin.r*256.0 + thin.g)/65535.0;\n",
+    "#endif\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "    rblGbReliefMask = uint(thin.b);\n",
+    "#endif\n",
+    "#endif\n",
     "    s.specularColor = vec3(1.0);\n",
     "    s.shininess = 1.0;\n",
     "    s.metalness = 0.0;\n",
@@ -2392,6 +2487,8 @@ static const char *const rbl__shader_lights[] = {
     "//   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)\n",
     "//   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)\n",
     "//   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)\n",
+    "//   RBL_GB_RELIEF             deferred: each light's relief bit stored by the geometry pass\n",
+    "//                             (rblReliefShadow and rblGbReliefSelect, gbuffer_read.glsl)\n",
     "//   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)\n",
     "#include \"surface.glsl\"\n",
     "#include \"ambient.glsl\"\n",
@@ -2505,7 +2602,7 @@ static const char *const rbl__shader_lights[] = {
     "    vec3 through = rblTransmitted(s, NdotL);\n",
     "    if (NdotL <= 0.0) return c.rgb*attenuation*through;\n",
     "#endif\n",
-    "#ifdef RBL_RELIEF_STEPS\n",
+    "#if defined(RBL_RELIEF_STEPS) || defined(RBL_GB_RELIEF)\n",
     "    attenuation *= rblReliefShadow(l);              // transmitted light is not: it comes through the card\n",
     "#endif\n",
     "#ifdef RBL_TRANSMISSION\n",
@@ -2563,6 +2660,9 @@ static const char *const rbl__shader_lights[] = {
     "                       ((i == rblShadowLight.z)? shadowed.z : ((i == rblShadowLight.w)? shadowed.w : 1.0)));\n",
     "#else\n",
     "        float shadow = 1.0;\n",
+    "#endif\n",
+    "#ifdef RBL_GB_RELIEF\n",
+    "        rblGbReliefSelect(i);\n",
     "#endif\n",
     "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
     "        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));\n",
@@ -3665,7 +3765,8 @@ static const char *const rbl__shader_shadow_tint[] = {
     "// coloured), a the nearest one's distance code in 8 bits (shadow_caster.fs.glsl); only casters in\n",
     "// front of the opaque depth were kept. A receiver more than 1.5 code steps behind that distance\n",
     "// takes the texel's tint: a caster never tints itself or what lies in front of it. Bilinear over the\n",
-    "// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers only.\n",
+    "// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers and the\n",
+    "// G-buffer's light passes (RblGBufferDesc.shadowTransmittance).\n",
     "//   RBL_SHADOW_TINT          RblLitShaderDesc.shadowTransmittance (needs RBL_SHADOWS > 0)\n",
     "#include \"shadows.glsl\"\n",
     "\n",
@@ -4090,7 +4191,7 @@ static const char *const rbl__shader_volume_vs[] = {
     "layout(location = 10) in vec4 rblVolumePosition; // as rblLightPosition (w = 1)\n",
     "layout(location = 11) in vec4 rblVolumeColor;    // as rblLightColor (a = 1/range > 0)\n",
     "layout(location = 12) in vec4 rblVolumeSpot;     // as rblLightSpot\n",
-    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none)\n",
+    "layout(location = 13) in vec4 rblVolumeFalloff;  // xyz as rblLightAttenuation, w shadow map index + 1 (0 = none) + 8 x (relief bit + 1)\n",
     "uniform mat4 mvp;                               // projection x view of the geometry pass\n",
     "RBL_FLAT RBL_VARYING vec4 volumePosition;\n",
     "RBL_FLAT RBL_VARYING vec4 volumeColor;\n",
@@ -4143,9 +4244,9 @@ static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dia
 static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
 static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
-static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
+static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
 static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
-static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
+static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
 static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
@@ -4273,6 +4374,21 @@ static unsigned int rbl__activeFramebuffer(void)
     int fbo = 0;
     get(0x8CA6 /* GL_FRAMEBUFFER_BINDING */, &fbo);
     return (fbo > 0)? (unsigned int)fbo : 0u;
+}
+
+// GL_MAX_DRAW_BUFFERS of the context (0 without GLSL 3 or the entry point): the G-buffer's thin
+// target is a 5th colour target (ES 3 and WebGL2 promise 4)
+static int rbl__maxDrawBuffers(void)
+{
+    if ((rbl__glsl() < 300) || (rlGetTextureIdDefault() == 0)) return 0;
+    if (RBL__HOOK(gbufferFourDrawBuffers)) return 4;
+    void *proc = rlGetProcAddress("glGetIntegerv");
+    if (proc == NULL) return 0;
+    rbl__GlGetIntegerv get;
+    memcpy(&get, &proc, sizeof(get));
+    int n = 0;
+    get(0x8824 /* GL_MAX_DRAW_BUFFERS */, &n);
+    return n;
 }
 
 // Size of the target draws go to now: inside BeginTextureMode rlgl's framebuffer size (the
@@ -7263,7 +7379,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable",
-    "rblTransmission", "rblRelief", "rblCasterTint" };
+    "rblTransmission", "rblRelief", "rblCasterTint", "rblGThin", "rblReliefIndex" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -7299,7 +7415,6 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     }
     if ((in.reliefSteps < 0) || (in.reliefSteps > RBL_MAX_RELIEF_STEPS)) return "reliefSteps outside 0..RBL_MAX_RELIEF_STEPS";
     if (in.relief && (m.height == RBL_CHANNEL_NONE)) return "relief needs a height channel (material.height)";
-    if ((in.relief || in.transmission) && in.deferred) return "relief and transmission are forward-only (the G-buffer carries neither)";
     if (in.shadowTransmittance && ((in.shading.shadowMaps == 0) || in.deferred)) return "shadowTransmittance needs shadowMaps > 0 in a forward variant";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
@@ -7333,6 +7448,8 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
         out->maxLights = 1; out->shading.lightFeatures = RBL_LIGHT_FEATURE_POINT; out->shading.fog = RBL_FOG_NONE; out->shading.tonemap = RBL_TONEMAP_NONE;
         out->shading.gamma = 0.0f; out->shading.linearOutput = false; out->debugOutput = 0;
+        // Relief marches the scene's first 8 lights of every type: light i of the scene is slot i
+        if (in.relief) { out->maxLights = (RBL_MAX_LIGHTS < 8)? RBL_MAX_LIGHTS : 8; out->shading.lightFeatures = 15; }
     }
     out->shading.shadowMaps = in.deferred? 0 : in.shading.shadowMaps;       // the geometry pass receives nothing
     out->shading.shadowFilter = (out->shading.shadowMaps == 0)? 0 : ((in.shading.shadowFilter == 0)? 2 : in.shading.shadowFilter);
@@ -7603,6 +7720,17 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shading.shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
+    // The thin target (RT4): every geometry variant writes it where the context has 5 draw buffers;
+    // light passes of a G-buffer with it read it
+    bool thinPass = (key->kind == RBL__KIND_PASS) && (d->transmission || key->gbufferRelief);
+    if ((key->kind == RBL__KIND_LIT) && d->deferred && (d->transmission || d->relief) && (rbl__maxDrawBuffers() < 5))
+    {
+        snprintf(rbl__state.problem, sizeof(rbl__state.problem), "a deferred transmission or relief variant needs a 5th render target (GL_MAX_DRAW_BUFFERS %i)", rbl__maxDrawBuffers());
+        RBL_FREE(p);
+        return NULL;
+    }
+    if ((thinPass || ((key->kind == RBL__KIND_LIT) && d->deferred)) && (rbl__maxDrawBuffers() >= 5)) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_GB_THIN\n"); }
+    if (key->gbufferRelief) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_GB_RELIEF\n"); }
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_COMPOSITE)
@@ -7976,6 +8104,8 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
     if (p->key.desc.instanced != instanced) return instanced? "the material's program is not an instanced variant" : "an instanced variant draws only through RblDrawInstanced";
     if ((g != NULL) && !p->key.desc.deferred) return "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
     if ((g != NULL) && (p->key.desc.shading.brdf != g->desc.shading.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
+    if ((g != NULL) && ((p->key.desc.transmission && !g->desc.transmission) || (p->key.desc.relief && !g->desc.relief)))
+        return "a deferred transmission or relief variant in a G-buffer loaded without it (RblGBufferDesc.transmission, .relief)";
     if ((g == NULL) && p->key.desc.deferred) return "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
     // Without the bone attributes raylib's DrawMesh would enable them with no buffer (or defaults that
     // put every vertex on bone 0): a skinned program draws GPU-skinned meshes only
@@ -8267,8 +8397,8 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
     if (loc[RBL__U_SHADOW_TILES] != -1) rlSetUniform(loc[RBL__U_SHADOW_TILES], tiles, SHADER_UNIFORM_VEC4, 4*n);
 }
 
-// Ambient, fog and exposure of the scene, where the program declares them (the G-buffer's light
-// passes: none of the ambient, which its geometry pass adds; lights go per draw there)
+// Ambient, fog and exposure of the scene, where the program declares them (the G-buffer's resolve
+// takes the ambient of its geometry pass's scene at each resolve; lights go per draw there)
 static void rbl__uploadSceneConstants(const rbl__Program *p)
 {
     const rbl__Scene *s = &rbl__state.scene;
@@ -8698,16 +8828,16 @@ static void rbl__unloadTargets(RblGBuffer *g)
 {
     if (!rbl__glUsable())       // gone with the context
     {
-        Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
-        for (int i = 0; i < 5; i++) memset(t[i], 0, sizeof(Texture2D));
+        Texture2D *t[6] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth, &g->thin };
+        for (int i = 0; i < 6; i++) memset(t[i], 0, sizeof(Texture2D));
         g->state->id = 0; g->state->lightId = 0;
         return;
     }
     // rlUnloadFramebuffer deletes the depth texture attached to it (not the colour ones)
     if (g->state->id != 0) { rlUnloadFramebuffer(g->state->id); g->depth.id = 0; }
     if (g->state->lightId != 0) rlUnloadFramebuffer(g->state->lightId);
-    Texture2D *t[5] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth };
-    for (int i = 0; i < 5; i++) { if (t[i]->id != 0) rlUnloadTexture(t[i]->id); memset(t[i], 0, sizeof(Texture2D)); }
+    Texture2D *t[6] = { &g->albedo, &g->normal, &g->params, &g->accum, &g->depth, &g->thin };
+    for (int i = 0; i < 6; i++) { if (t[i]->id != 0) rlUnloadTexture(t[i]->id); memset(t[i], 0, sizeof(Texture2D)); }
     g->state->id = 0; g->state->lightId = 0;
 }
 
@@ -8757,11 +8887,15 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     bool rgba = (rbl__glsl() == 300) || (g->desc.shading.shadowMaps > 0);
     g->params = rbl__targetTexture(width, height, rgba? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
+    // The thin target: only where the desc asks for transmission or relief (a 5th draw buffer)
+    bool thin = g->desc.transmission || g->desc.relief;
+    memset(&g->thin, 0, sizeof(g->thin));
+    if (thin && (rbl__maxDrawBuffers() >= 5)) g->thin = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
     memset(&g->depth, 0, sizeof(g->depth));
     g->depth.id = rlLoadTextureDepth(width, height, false);
     if ((g->depth.id != 0) && !RBL__HOOK(gbufferDriverDepth)) rbl__floatDepth(g->depth.id, width, height);
     g->depth.width = width; g->depth.height = height; g->depth.mipmaps = 1;
-    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && !RBL__HOOK(gbufferForceFailure);
+    bool ok = (g->albedo.id != 0) && (g->normal.id != 0) && (g->params.id != 0) && (g->accum.id != 0) && (g->depth.id != 0) && (!thin || (g->thin.id != 0)) && !RBL__HOOK(gbufferForceFailure);
     if (ok)
     {
         rlTextureParameters(g->depth.id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
@@ -8772,9 +8906,10 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
         rlFramebufferAttach(g->state->id, g->normal.id, RL_ATTACHMENT_COLOR_CHANNEL1, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->state->id, g->params.id, RL_ATTACHMENT_COLOR_CHANNEL2, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->state->id, g->accum.id, RL_ATTACHMENT_COLOR_CHANNEL3, RL_ATTACHMENT_TEXTURE2D, 0);
+        if (thin) rlFramebufferAttach(g->state->id, g->thin.id, RL_ATTACHMENT_COLOR_CHANNEL4, RL_ATTACHMENT_TEXTURE2D, 0);
         rlFramebufferAttach(g->state->id, g->depth.id, RL_ATTACHMENT_DEPTH, RL_ATTACHMENT_TEXTURE2D, 0);
         rlEnableFramebuffer(g->state->id);                 // rlFramebufferAttach() unbinds it again
-        rlActiveDrawBuffers(4);                     // framebuffer state: set once
+        rlActiveDrawBuffers(thin? 5 : 4);           // framebuffer state: set once
         ok = rlFramebufferComplete(g->state->id);
         g->state->lightId = rlLoadFramebuffer();
         rlEnableFramebuffer(g->state->lightId);
@@ -8784,7 +8919,8 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     }
     if (!ok)
     {
-        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (4 render targets, an RGBA16F target (ES 3: EXT_color_buffer_float), a depth texture): render forward instead", width, height);
+        TraceLog(LOG_WARNING, "RBL: G-buffer %ix%i: targets or framebuffer incomplete (%i render targets (GL_MAX_DRAW_BUFFERS %i), an RGBA16F target (ES 3: EXT_color_buffer_float), a depth texture): render forward instead",
+                 width, height, thin? 5 : 4, rbl__maxDrawBuffers());
         rbl__unloadTargets(g);
         return false;
     }
@@ -8798,6 +8934,7 @@ static void rbl__gbufferLitDesc(const RblGBufferDesc *g, RblLitShaderDesc *out)
     memset(out, 0, sizeof(*out));
     out->maxLights = RBL_MAX_LIGHTS;        // unbounded lights (and the naive loop) go through full-screen passes
     out->shading = g->shading;
+    out->transmission = g->transmission; out->shadowTransmittance = g->shadowTransmittance;
 }
 
 static void rbl__releasePasses(RblGBuffer *g)
@@ -8994,6 +9131,8 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     {
         rbl__ProgramKey key;
         rbl__keyFromDesc(&normalised, RBL__KIND_PASS, p, &key);
+        if (p == RBL__PASS_RESOLVE) { key.desc.transmission = false; key.desc.shadowTransmittance = false; }    // the resolve reads neither
+        else key.gbufferRelief = desc.relief? 1 : 0;
         rbl__Program *program = rbl__acquireProgram(&key);
         ok = (program != NULL);
         if (ok) g.state->passes[p] = program->shader.id;
@@ -9035,7 +9174,7 @@ static bool rbl__resizeTargets(RblGBuffer *gbuffer, int width, int height)
     rbl__unloadTargets(gbuffer);
     gbuffer->state->id = fresh.state->id; gbuffer->state->lightId = fresh.state->lightId;
     gbuffer->albedo = fresh.albedo; gbuffer->normal = fresh.normal; gbuffer->params = fresh.params;
-    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth;
+    gbuffer->accum = fresh.accum; gbuffer->depth = fresh.depth; gbuffer->thin = fresh.thin;
     gbuffer->width = width; gbuffer->height = height;
     gbuffer->desc.width = width; gbuffer->desc.height = height;
     gbuffer->state->geometryDone = false;       // new targets hold nothing yet
@@ -9075,7 +9214,8 @@ void RblUnloadGBuffer(RblGBuffer *gbuffer)
 int RblGBufferBytesPerPixel(const RblGBuffer *gbuffer)
 {
     if (!rbl__gbufferValid(gbuffer)) { TraceLog(LOG_WARNING, "RBL: RblGBufferBytesPerPixel: G-buffer not loaded"); return 0; }
-    return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format);
+    return GetPixelDataSize(1, 1, gbuffer->albedo.format) + GetPixelDataSize(1, 1, gbuffer->normal.format) + GetPixelDataSize(1, 1, gbuffer->params.format) +
+           ((gbuffer->thin.id != 0)? GetPixelDataSize(1, 1, gbuffer->thin.format) : 0);
 }
 
 // View matrix in raylib's layout (as MatrixLookAt), from the header's degenerate-safe camera frame
@@ -9089,7 +9229,7 @@ static Matrix rbl__viewMatrix(const RblCameraFrame *v)
     return m;
 }
 
-// The scene's ambient as the geometry pass adds it: sky, ground, up
+// The scene's ambient as the resolve adds it: sky, ground, up
 static void rbl__sceneAmbient(float out[9])
 {
     const rbl__Scene *s = &rbl__state.scene;
@@ -9205,21 +9345,30 @@ static const int *rbl__bindGBufferPass(const RblGBuffer *g, int pass)
     float invP[2] = { 1.0f/g->state->projection.m0, 1.0f/g->state->projection.m5 };
     if (loc[RBL__U_DEPTH_LINEAR] != -1) rlSetUniform(loc[RBL__U_DEPTH_LINEAR], depthLinear, SHADER_UNIFORM_VEC4, 1);
     if (loc[RBL__U_INV_P] != -1) rlSetUniform(loc[RBL__U_INV_P], invP, SHADER_UNIFORM_VEC2, 1);
+    if ((loc[RBL__U_G_THIN] != -1) && (g->thin.id != 0))
+    {
+        int unit = 5;
+        rlActiveTextureSlot(unit);
+        rlEnableTexture(g->thin.id);
+        rlSetUniform(loc[RBL__U_G_THIN], &unit, SHADER_UNIFORM_INT, 1);
+    }
     rbl__bindSceneShadows();
+    if (program->key.desc.shadowTransmittance) rbl__bindSceneTints(program);
     return loc;
 }
 
 static void rbl__unbindGBufferPass(void)
 {
-    for (int i = 4; i >= 0; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
+    for (int i = 5; i >= 0; i--) { rlActiveTextureSlot(i); rlDisableTexture(); }
     rlDisableShader();
 }
 
 // Full-screen pass over unbounded lights (the forward shader's uniform arrays; the ambient was added
 // by the geometry pass)
-static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const int shadowSlot[4])
+static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, const float *col, const float *spot, const float *att, int count, const int shadowSlot[4], const int *reliefIndex)
 {
     const int *loc = rbl__bindGBufferPass(g, pass);
+    if ((loc[RBL__U_RELIEF_INDEX] != -1) && (count > 0)) rlSetUniform(loc[RBL__U_RELIEF_INDEX], reliefIndex, SHADER_UNIFORM_INT, count);
     const rbl__Scene *s = &rbl__state.scene;
     if (loc[RBL__U_SHADOW_PARAMS] != -1)
     {
@@ -9277,12 +9426,12 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         return false;
     }
     if (uncompiled > 0) TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: %i light(s) of types not in the G-buffer's lightFeatures left out", uncompiled);
-    // The ambient came with the geometry pass: a scene set since then with another one is noted once
+    // The frame's ambient is the geometry pass's scene's: a scene set since then with another one is noted once
     float now[9];
     rbl__sceneAmbient(now);
     if (!g->state->ambientNoted && (memcmp(now, g->state->ambient, sizeof(now)) != 0))
     {
-        TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: the scene's ambient changed after the geometry pass, which added the earlier one (RblSetScene before RblBeginGBuffer)");
+        TraceLog(LOG_INFO, "RBL: RblDrawDeferredLights: the scene's ambient changed after the geometry pass, whose scene's ambient the frame keeps (RblSetScene before RblBeginGBuffer)");
         g->state->ambientNoted = true;
     }
     // Volumes need the instance buffer to hold every bounded light (grown with a log line)
@@ -9296,6 +9445,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         g->state->instanceCapacity = capacity;
     }
     float pos[RBL_MAX_LIGHTS*4], col[RBL_MAX_LIGHTS*4], spot[RBL_MAX_LIGHTS*4], att[RBL_MAX_LIGHTS*3];
+    int reliefIndex[RBL_MAX_LIGHTS];        // scene index of each slot's relief bit (-1: lights 8 and later have none)
     bool counting = (g->output == RBL_GBUFFER_OUTPUT_LIGHT_COUNT);
 
     rlDrawRenderBatchActive();
@@ -9320,11 +9470,12 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
             memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
             memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
             if (d[15] > 0.0f) shadowSlot[(int)d[15] - 1] = n;
+            reliefIndex[n] = (i < 8)? i : -1;
             n++;
         }
         if ((n == RBL_MAX_LIGHTS) || ((i == count) && (n > 0)))
         {
-            rbl__fullscreenLights(g, passFullscreen, pos, col, spot, att, n, shadowSlot);
+            rbl__fullscreenLights(g, passFullscreen, pos, col, spot, att, n, shadowSlot, reliefIndex);
             for (int k = 0; k < 4; k++) shadowSlot[k] = -1;
             n = 0;
         }
@@ -9338,6 +9489,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
         if (((s->lightFeatures[i] & ~g->desc.shading.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
         memcpy(&s->staging[v*RBL__LIGHT_FLOATS], d, RBL__LIGHT_FLOATS*sizeof(float));
+        if (g->desc.relief && (i < 8)) s->staging[v*RBL__LIGHT_FLOATS + 15] += 8.0f*(float)(i + 1);   // + its relief bit (deferred_volume.fs.glsl)
         v++;
     }
     g->lightsInVolumes = v;
@@ -9392,6 +9544,10 @@ void RblResolveGBuffer(RblGBuffer *gbuffer)
     const int *loc = rbl__bindGBufferPass(g, RBL__PASS_RESOLVE);
     if (loc[RBL__U_OUTPUT] != -1) rlSetUniform(loc[RBL__U_OUTPUT], &g->output, SHADER_UNIFORM_INT, 1);
     if (loc[RBL__U_OUTPUT_SCALE] != -1) rlSetUniform(loc[RBL__U_OUTPUT_SCALE], &g->outputScale, SHADER_UNIFORM_FLOAT, 1);
+    // The ambient of the scene the geometry pass was drawn with (RblBeginGBuffer's), once per pixel here
+    if (loc[RBL__U_AMBIENT] != -1) rlSetUniform(loc[RBL__U_AMBIENT], &g->state->ambient[0], SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_GROUND] != -1) rlSetUniform(loc[RBL__U_AMBIENT_GROUND], &g->state->ambient[3], SHADER_UNIFORM_VEC3, 1);
+    if (loc[RBL__U_AMBIENT_UP] != -1) rlSetUniform(loc[RBL__U_AMBIENT_UP], &g->state->ambient[6], SHADER_UNIFORM_VEC3, 1);
     rlEnableDepthTest();                            // the G-buffer depth is written for later forward draws
     rlEnableDepthMask();
     rlDisableBackfaceCulling();

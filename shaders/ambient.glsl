@@ -1,5 +1,5 @@
 // Ambient: the scene's sky/ground light on a surface. Forward shaders add it per fragment; the
-// G-buffer's geometry pass adds it into the accumulation target (so occlusion is not stored).
+// deferred resolve once per pixel, on the stored surface (occlusion from the accumulation's alpha).
 //   RBL_BRDF b                2 (GGX) adds the specular reflectance of a uniform environment
 #include "surface.glsl"
 

@@ -1,6 +1,9 @@
-// Deferred resolve, fragment stage: the accumulated light through fog, exposure, tonemap and the
-// display encoding (output.glsl), writing the G-buffer's depth for later forward draws; debug views.
+// Deferred resolve, fragment stage: the scene's ambient on the stored surface (once per pixel, the
+// occlusion from the accumulation's alpha) plus the accumulated emission and light, through fog,
+// exposure, tonemap and the display encoding (output.glsl), writing the G-buffer's depth for later
+// forward draws; debug views.
 #include "gbuffer_read.glsl"
+#include "ambient.glsl"
 #include "output.glsl"
 
 RBL_VARYING vec2 fragUv;
@@ -31,8 +34,13 @@ void main()
     vec4 accum = texelFetch(rblGAccum, texel, 0);
     vec3 color = accum.rgb;
     float viewDistance = rblViewDistance(rblEye, rblViewAxis, position);
-    if (rblOutput == 0) { finalColor = vec4(rblFinish(color, viewDistance), 1.0); return; }
     RblShadingPoint s = rblGBufferSurface(texel, position);
+    if (rblOutput == 0)
+    {
+        s.occlusion = accum.a;
+        finalColor = vec4(rblFinish(color + rblAmbientLight(s), viewDistance), 1.0);
+        return;
+    }
     vec3 v = vec3(0.0);
     if (rblOutput == 1) v = rblLinearToSrgb(s.albedo);
     else if (rblOutput == 2) v = s.normal*0.5 + 0.5;

@@ -1,14 +1,25 @@
 // Deferred geometry pass, fragment stage: the forward path's material decoding, packed into the
-// G-buffer (layout: gbuffer_codec.glsl) instead of being lit; the scene's ambient (it needs the
-// occlusion, which is not stored) is added here with the emission, from the unquantised surface.
+// G-buffer (layout: gbuffer_codec.glsl) instead of being lit. The emission (material data, like the
+// albedo) and the occlusion go to the accumulation target; the scene's ambient is added once per
+// pixel by the resolve, not per overdrawn layer here.
 #include "material.glsl"
-#include "ambient.glsl"
 #include "gbuffer_codec.glsl"
 
 layout(location = 0) out vec4 rblOutAlbedo;
 layout(location = 1) out vec4 rblOutNormal;
 layout(location = 2) out vec4 rblOutParams;
 layout(location = 3) out vec4 rblOutAccum;
+#ifdef RBL_GB_THIN
+// RT4 where the context has 5 draw buffers: every geometry variant writes it (zero without the
+// features), so a G-buffer with the thin target never keeps a hidden layer's values; a G-buffer
+// without it has no 5th draw buffer and the output goes nowhere
+layout(location = 4) out vec4 rblOutThin;
+#endif
+#ifdef RBL_RELIEF_STEPS
+// The scene's first RBL_LIGHTS lights (as lights.glsl declares them), each marched through the relief
+uniform int rblLightCount;
+uniform vec4 rblLightPosition[RBL_LIGHTS];
+#endif
 
 void main()
 {
@@ -34,5 +45,21 @@ void main()
     // RG8 keeps x, y (raylib samples it r,r,r,g: read back as .ra); RGBA8 (ES, or a G-buffer that
     // receives shadows) also the caster identity (gbuffer_read.glsl)
     rblOutParams = vec4(params.x, params.y, sp.caster);
-    rblOutAccum = vec4(emission + rblAmbientLight(sp), sp.occlusion);
+    rblOutAccum = vec4(emission, sp.occlusion);
+#ifdef RBL_GB_THIN
+    // Relief: bit i set where the scene's light i is behind relief (lights.glsl's l, at the unquantised
+    // position), for the light passes to read; transmission: the share in 16 bits (8 would leave
+    // 2/255 in dark sRGB output under a bright light behind)
+    float mask = 0.0;
+#ifdef RBL_RELIEF_STEPS
+    for (int i = 0; i < RBL_LIGHTS; i++)
+    {
+        if (i >= rblLightCount) break;
+        vec4 p = rblLightPosition[i];
+        if (rblReliefShadow(rblSafeNormalize(p.xyz - sp.position*p.w, sp.normal)) == 0.0) mask += exp2(float(i));
+    }
+#endif
+    float t = floor(clamp(sp.transmission, 0.0, 1.0)*65535.0 + 0.5);
+    rblOutThin = vec4(floor(t/256.0), mod(t, 256.0), mask, 0.0)/255.0;
+#endif
 }

@@ -3,8 +3,10 @@
 //   RT0 RGBA8    rgb albedo, sRGB-encoded (8-bit steps where the eye needs them), a bits 23..16 of the word
 //   RT1 RGBA8    bits 55..24 of a 56-bit normal/material word, RT1.r its most significant byte
 //   RT2 RG8      bits 15..0 of the word
-//   RT3 RGBA16F  light accumulation: emission and the scene's ambient from the geometry pass, then
-//                the lights; alpha keeps the occlusion (its debug view; light passes add alpha 0)
+//   RT3 RGBA16F  light accumulation: emission from the geometry pass, then the lights; alpha keeps
+//                the occlusion (light passes add alpha 0), which scales the ambient the resolve adds
+//   RT4 RGBA8    RblGBufferDesc.transmission or .relief only: rg the transmission share in 16 bits
+//                (r high), b the relief bits of the scene's first 8 lights (bit i: light i behind relief)
 //   word         normal x | normal y | field 1 | field 2, from the most significant bit; per BRDF:
 //     GGX          normal 18 + 18 | roughness 12 | metalness 8
 //     Blinn-Phong  normal 16 + 16 | shininess 12 | specular intensity 12 (colour folded to its luminance)
@@ -16,8 +18,7 @@
 // Blinn-Phong's 4 spare bits go to its two fields (12 + 12 instead of 11 + 9). Every field is stored
 // in the form whose step is the same relative change of what the BRDF reads (a highlight's error is
 // relative), except metalness (linear in the output). Not stored: the normal's third coordinate,
-// occlusion (the ambient it scales is added by the geometry pass), roughness below RBL_MIN_ROUGHNESS
-// (the BRDF clamps it), F0, the (n + 8)/8 normalisation.
+// roughness below RBL_MIN_ROUGHNESS (the BRDF clamps it), F0, the (n + 8)/8 normalisation.
 //   normal       octahedral (Cigolle et al. 2014), L = 2^b - 1 levels per coordinate, odd so that 0 and
 //                +-1 are codes (axis-aligned normals exact); of the 4 neighbouring codes the one
 //                decoding nearest the normal

@@ -13,6 +13,24 @@ uniform vec2 rblInvP;                   // 1/P00, 1/P11 of the geometry pass's p
 uniform mat4 rblInvView;                // inverse view (camera to world)
 uniform vec3 rblEye;                    // camera position
 uniform vec4 rblViewAxis;               // camera back direction, w 1 orthographic (rblViewVector)
+#ifdef RBL_GB_THIN
+uniform sampler2D rblGThin;             // RGBA8: transmission share (rg, 16 bits), relief bits of lights 0..7 (b)
+#endif
+#ifdef RBL_GB_RELIEF
+uniform int rblReliefIndex[RBL_LIGHTS]; // full-screen pass: the scene index of light slot i (-1: no bit)
+uint rblGbReliefMask;                   // this pixel's relief bits (rblGBufferSurface)
+int rblGbReliefLight = -1;              // scene index of the light being evaluated (-1: none marched)
+
+// Light slot i of the full-screen pass is evaluated next
+void rblGbReliefSelect(int i) { rblGbReliefLight = rblReliefIndex[i]; }
+
+// The stored relief verdict for the light being evaluated (lights.glsl): 0 behind relief, else 1
+float rblReliefShadow(vec3 l)
+{
+    if ((rblGbReliefLight < 0) || (rblGbReliefLight > 7)) return 1.0;
+    return (((rblGbReliefMask >> uint(rblGbReliefLight)) & 1u) != 0u)? 0.0 : 1.0;
+}
+#endif
 
 // This pixel's G-buffer texel and depth in a light pass (drawn at the G-buffer's size); false where
 // nothing was drawn (background)
@@ -81,8 +99,17 @@ RblShadingPoint rblGBufferSurface(ivec2 texel, vec3 position)
 #else
     s.face = s.normal;
 #endif
-    s.occlusion = 1.0;                  // the geometry pass added the ambient it scales
-    s.transmission = 0.0;               // forward only: not stored
+    s.occlusion = 1.0;                  // the accumulation's alpha (the resolve reads it)
+    s.transmission = 0.0;
+#ifdef RBL_GB_THIN
+    vec4 thin = floor(texelFetch(rblGThin, texel, 0)*255.0 + 0.5);
+#ifdef RBL_TRANSMISSION
+    s.transmission = (thin.r*256.0 + thin.g)/65535.0;
+#endif
+#ifdef RBL_GB_RELIEF
+    rblGbReliefMask = uint(thin.b);
+#endif
+#endif
     s.specularColor = vec3(1.0);
     s.shininess = 1.0;
     s.metalness = 0.0;

@@ -9,6 +9,8 @@
 //   RBL_BRDF b                0 Lambert, 1 normalised Blinn-Phong, 2 GGX (Cook-Torrance)
 //   RBL_TRANSMISSION          light behind a card shows through it (transmission.glsl)
 //   RBL_RELIEF_STEPS          each light marched through the relief (rblReliefShadow, material.glsl)
+//   RBL_GB_RELIEF             deferred: each light's relief bit stored by the geometry pass
+//                             (rblReliefShadow and rblGbReliefSelect, gbuffer_read.glsl)
 //   RBL_SHADOW_TINT           blended casters tint the light they let through (shadow_tint.glsl)
 #include "surface.glsl"
 #include "ambient.glsl"
@@ -122,7 +124,7 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, 
     vec3 through = rblTransmitted(s, NdotL);
     if (NdotL <= 0.0) return c.rgb*attenuation*through;
 #endif
-#ifdef RBL_RELIEF_STEPS
+#if defined(RBL_RELIEF_STEPS) || defined(RBL_GB_RELIEF)
     attenuation *= rblReliefShadow(l);              // transmitted light is not: it comes through the card
 #endif
 #ifdef RBL_TRANSMISSION
@@ -180,6 +182,9 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
                        ((i == rblShadowLight.z)? shadowed.z : ((i == rblShadowLight.w)? shadowed.w : 1.0)));
 #else
         float shadow = 1.0;
+#endif
+#ifdef RBL_GB_RELIEF
+        rblGbReliefSelect(i);
 #endif
 #if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)
         vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));

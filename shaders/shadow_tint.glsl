@@ -4,7 +4,8 @@
 // coloured), a the nearest one's distance code in 8 bits (shadow_caster.fs.glsl); only casters in
 // front of the opaque depth were kept. A receiver more than 1.5 code steps behind that distance
 // takes the texel's tint: a caster never tints itself or what lies in front of it. Bilinear over the
-// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers only.
+// 2 x 2 texels around the point (the tint's edge is as soft as PCF 1's). Forward receivers and the
+// G-buffer's light passes (RblGBufferDesc.shadowTransmittance).
 //   RBL_SHADOW_TINT          RblLitShaderDesc.shadowTransmittance (needs RBL_SHADOWS > 0)
 #include "shadows.glsl"
 

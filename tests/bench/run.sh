@@ -32,6 +32,14 @@ echo "== bench_thin"
 BENCH_CSV="$csv" "$BUILD/bench/bench_thin"
 
 echo
+echo "== bench_deferred_thin"
+BENCH_CSV="$csv" "$BUILD/bench/bench_deferred_thin"
+
+echo
+echo "== bench_overdraw"
+BENCH_CSV="$csv" "$BUILD/bench/bench_overdraw"
+
+echo
 echo "== bench_skinning"
 BENCH_CSV="$csv" "$BUILD/bench/bench_skinning"
 
