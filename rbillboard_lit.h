@@ -260,6 +260,22 @@
 *         intensity, range or coefficients, a zero direction, spot angles outside 0 <= inner <= outer
 *         <= 90, an unknown type or falloff. A forward program lights the scene's first maxLights
 *         lights of the types it compiled (RblLightFeatures: what a set needs); others are left out.
+*       - LIGHT GRID (desc.clustered; shaders/light_grid.glsl): a clustered program lights every light
+*         of the scene of the types it compiled, in one pass, opaque or blended (RBL_MAX_LIGHTS limits
+*         the slots, not the scene). The first clustered upload after RblSetScene (in it, or at the
+*         program's load) builds one world-space grid on the CPU: uniform cells about 0.75 of the
+*         bounded lights' mean range (at most RBL_LIGHT_GRID_MAX_CELLS; up to 3 times smaller where a
+*         cell would list more than RBL_LIGHT_GRID_CELL_LIGHTS), each listing the lights whose sphere
+*         (range) touches it; directional lights, range 0, and ranges over a quarter of the lights'
+*         extent are lit everywhere. A fragment evaluates its cell's list: the windowed falloff is zero
+*         at the range, so the image is the slots' (same scene, every light in a slot). Two float
+*         textures (RGBA32F lights, R32F lists) on units RBL_LIGHT_GRID_TEXTURE_UNIT and the next,
+*         read with texelFetch. A cell reached by more lights than it lists keeps the scene's first,
+*         the others stay unlit there (one log line, again only after a scene without such a cell).
+*         The grid is the world's, not the view's: one build serves every camera, target and shadow
+*         pass of the frame; a scene no clustered program reads builds none, and programs without
+*         desc.clustered compile and run as before. ES 2 / GL 2.1 (no texelFetch): a clustered desc
+*         compiles the maxLights slots (one info line).
 *
 *   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
 *       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
@@ -515,7 +531,8 @@
 *         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
 *         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
 *         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
-*         the G-buffer are refused there with one log line.
+*         the G-buffer are refused there with one log line; clustered programs fall back to their
+*         maxLights slots there (LIGHT GRID).
 *       - raylib's own DrawModel/DrawMesh upload colDiffuse, matrices and textures, none of the header's
 *         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
 *         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
@@ -8329,9 +8346,7 @@ static void rbl__uploadSceneConstants(const rbl__Program *p)
     if (loc[RBL__U_EXPOSURE] != -1) rlSetUniform(loc[RBL__U_EXPOSURE], &s->exposure, SHADER_UNIFORM_FLOAT, 1);
 }
 
-//----------------------------------------------------------------------------------
-// The light grid of clustered programs (light_grid.glsl)   >>grid
-//----------------------------------------------------------------------------------
+// ---- The light grid of clustered programs (light_grid.glsl) ----
 // One world-space grid per scene, built on the CPU: uniform cells over the spheres of the bounded
 // lights, each cell listing (in scene order, at most RBL_LIGHT_GRID_CELL_LIGHTS) the lights whose
 // sphere touches it; unbounded lights, and lights whose range spans a quarter of the light set (they

@@ -3,12 +3,13 @@
 // double-precision reference (tests/lighting_reference.h) of the sum of every light; 256 and 1024
 // lights on opaque and blended sprites, the immediate and instanced paths; edge cases (a light on a
 // cell corner, lights behind the camera, a cell over its cap, no lights, huge ranges, only unbounded
-// lights); a scene no clustered program reads builds no grid; ES 2 / GL 2.1 keep the slots.
+// lights); shadow receivers shadow the same light; a scene no clustered program reads builds no grid;
+// ES 2 / GL 2.1 keep the slots.
 // Included by test_gpu_main.c (after test_lighting.c, whose LitScene helpers it reuses).
 
 #define CL_MAX 1024
 
-static bool clHasGrid(void) { return rlGetVersion() >= RL_OPENGL_33; }
+static bool clHasGrid(void) { int v = rlGetVersion(); return (v == RL_OPENGL_33) || (v == RL_OPENGL_43) || (v == RL_OPENGL_ES_30); }
 
 // Deterministic scatter (LCG), [0, 1)
 static float clRand(unsigned int *seed)
@@ -337,6 +338,85 @@ static void test_clustered_grid_is_built_only_for_clustered_programs(void)
     RblUnloadLitShader(&plain);
 }
 
+// A shadowed spot light among 20 point lights (the spot is light 7, listed by the grid's cells): a
+// clustered receiver's floor equals the slot receiver's (the map shadows the same light), and the card's
+// shadow is there (darker than the unshadowed floor)
+static Image clShadowRender(const RblLight *lights, int n, int shadowed, bool clustered, bool withMap)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = n;
+    desc.lightFeatures = RblLightFeatures(lights, n);
+    desc.shadowMaps = 1;
+    desc.clustered = clustered;
+    Shader lit = RblLoadLitShader(desc);
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = SH_MAP;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(map), "receiver or shadow map failed to load");
+    Texture2D white = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights; scene.lightCount = n; scene.ambient = (Color){ 30, 30, 30, 255 };
+    if (withMap)
+    {
+        ShCard card = { { 0.3f, -0.2f, 1.0f }, 1.5f, 0 };
+        RT_CHECK(RblBeginShadowMap(&map, &scene, shadowed, (Vector3){ 0.0f, 0.0f, 0.0f }, 4.0f), "shadow pass refused");
+        shCardCasters(m, shTopDown(), &card);
+        RblEndShadowMap(&map);
+        scene.shadowMaps = &map; scene.shadowMapCount = 1;
+    }
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
+    RenderTexture2D rt = LoadRenderTexture(SH_TARGET, SH_TARGET);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(shTopDown());
+    RblDrawBillboard(shTopDown(), m, litPlane());
+    EndMode3D();
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    shClearScene();
+    UnloadRenderTexture(rt);
+    UnloadTexture(white);
+    MemFree(m.maps);
+    RblUnloadShadowMap(&map);
+    RblUnloadLitShader(&lit);
+    return img;
+}
+
+static void test_clustered_receivers_shadow_the_same_light_as_the_slots(void)
+{
+    static RblLight lights[21];
+    unsigned int seed = 31u;
+    for (int i = 0; i < 21; i++)
+    {
+        Vector3 p = { -14.0f + 28.0f*clRand(&seed), -14.0f + 28.0f*clRand(&seed), 0.5f + clRand(&seed) };
+        lights[i] = litPoint(p, 0.4f, 1.5f + 1.5f*clRand(&seed));
+    }
+    lights[3].position = (Vector3){ -1.5f, 1.0f, 0.6f };        // two small lights in view
+    lights[12].position = (Vector3){ 1.8f, -1.2f, 0.8f };
+    const int shadowed = 7;
+    lights[shadowed] = litSpot((Vector3){ 0.3f, -0.2f, 4.0f }, (Vector3){ 0.0f, 0.0f, -1.0f }, 50.0f, 60.0f, 16.0f);
+    lights[shadowed].range = 6.5f;                              // under a quarter of the lights' extent: in the cells
+    Image grid = clShadowRender(lights, 21, shadowed, true, true), slots = clShadowRender(lights, 21, shadowed, false, true);
+    Image open = clShadowRender(lights, 21, shadowed, true, false);
+    RblLightGridStats g = RblGetLightGridStats();
+    int differing = 0, worst = clDiff(grid, slots, &differing), darker = 0;
+    for (int y = 0; y < SH_TARGET; y++)
+        for (int x = 0; x < SH_TARGET; x++) darker += (rtPixel(grid, x, y).r + 40 < rtPixel(open, x, y).r);
+    printf("    shadowed spot (light %d, %d unbounded in the grid): grid vs slots worst %d/255 (%d px differ); %d pixels in the card's shadow\n",
+           shadowed, g.unbounded, worst, differing, darker);
+    RT_CHECK(g.unbounded == 0, "the spot should be listed by cells (%d unbounded)", g.unbounded);
+    RT_CHECK(worst <= 1, "clustered and slot receivers differ by %d/255", worst);
+    RT_CHECK(darker > 400, "the card's shadow is missing (%d dark pixels)", darker);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(grid, "grid"); rtSaveImage(slots, "slots"); rtSaveImage(open, "unshadowed"); }
+    UnloadImage(grid); UnloadImage(slots); UnloadImage(open);
+}
+
 static void test_clustered_falls_back_to_the_slots_without_glsl3(void)
 {
     static RblLight lights[8];
@@ -347,7 +427,12 @@ static void test_clustered_falls_back_to_the_slots_without_glsl3(void)
     desc.brdf = sc.desc.brdf;
     desc.maxLights = 8;
     desc.clustered = true;
+    SetTraceLogLevel(LOG_INFO);             // the fallback is an info line
+    lastWarning[0] = '\0';
     Shader lit = RblLoadLitShader(desc);
+    SetTraceLogLevel(LOG_WARNING);
+    bool said = (strstr(lastWarning, "clustered lights need GLSL 3") != NULL);
+    RT_CHECK(said == !clHasGrid(), "the fallback to the slots %s logged (last line \"%s\")", said? "was" : "was not", lastWarning);
     RT_CHECK(RblIsLitShaderValid(lit), "clustered desc refused");
     bool grid = litHasUniform(lit, "rblGridDims"), slots = litHasUniform(lit, "rblLightPosition");
     printf("    %s: grid %s, slots %s\n", clHasGrid()? "GLSL 3" : "GLSL 1", grid? "yes" : "no", slots? "yes" : "no");
@@ -375,4 +460,5 @@ static void test_clustered_falls_back_to_the_slots_without_glsl3(void)
     RT_TEST_GLSL3(test_clustered_lights_256_and_1024_lights_on_opaque_and_blended_sprites), \
     RT_TEST_GLSL3(test_clustered_edge_cases_zero_lights_unbounded_only_and_a_capped_cell), \
     RT_TEST_GLSL3(test_clustered_grid_is_built_only_for_clustered_programs), \
+    RT_TEST_GLSL3(test_clustered_receivers_shadow_the_same_light_as_the_slots), \
     RT_TEST(test_clustered_falls_back_to_the_slots_without_glsl3)
