@@ -162,8 +162,8 @@ static void test_clustered_equals_the_slots_and_the_double_reference(void)
     probe.lights = lights; probe.lightCount = n;
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.brdf = sc.desc.brdf;
-    desc.lightFeatures = RblLightFeatures(lights, n);
+    desc.shading.brdf = sc.desc.shading.brdf;
+    desc.shading.lightFeatures = RblGetLightFeatures(lights, n);
     desc.clustered = true;
     Shader holder = RblLoadLitShader(desc);         // a clustered program: RblSetScene builds the grid
     RT_CHECK(RblSetScene(&probe), "scene rejected");
@@ -212,7 +212,7 @@ static void test_clustered_lights_256_and_1024_lights_on_opaque_and_blended_spri
         clScatter(lights, n, 99u + (unsigned int)n, 24.0f/(float)n*((n > 256)? 0.3f : 1.0f));     // 1024: fainter, so the image stays below white
         RblLitShaderDesc desc;
         memset(&desc, 0, sizeof(desc));
-        desc.brdf = sc.desc.brdf;
+        desc.shading.brdf = sc.desc.shading.brdf;
         desc.clustered = true;
         for (int path = LIT_PATH_IMMEDIATE; path <= LIT_PATH_INSTANCED; path += LIT_PATH_INSTANCED - LIT_PATH_IMMEDIATE)
             for (int blended = 0; blended < 2; blended++)
@@ -245,9 +245,9 @@ static void test_clustered_edge_cases_zero_lights_unbounded_only_and_a_capped_ce
     LitScene sc = clScene();
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.brdf = sc.desc.brdf;
+    desc.shading.brdf = sc.desc.shading.brdf;
     desc.clustered = true;
-    desc.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+    desc.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
     // No lights: the ambient alone
     ClRender r = clRender(&sc, desc, lights, 0, 255);
     if (r.ok)
@@ -346,8 +346,8 @@ static Image clShadowRender(const RblLight *lights, int n, int shadowed, bool cl
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = n;
-    desc.lightFeatures = RblLightFeatures(lights, n);
-    desc.shadowMaps = 1;
+    desc.shading.lightFeatures = RblGetLightFeatures(lights, n);
+    desc.shading.shadowMaps = 1;
     desc.clustered = clustered;
     Shader lit = RblLoadLitShader(desc);
     RblShadowDesc sd;
@@ -424,7 +424,7 @@ static void test_clustered_falls_back_to_the_slots_without_glsl3(void)
     LitScene sc = clScene();
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.brdf = sc.desc.brdf;
+    desc.shading.brdf = sc.desc.shading.brdf;
     desc.maxLights = 8;
     desc.clustered = true;
     SetTraceLogLevel(LOG_INFO);             // the fallback is an info line
