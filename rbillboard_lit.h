@@ -245,14 +245,15 @@
 *         of the scene of the types it compiled, in one pass, opaque or blended (RBL_MAX_LIGHTS limits
 *         the slots, not the scene). The first clustered upload after RblSetScene (in it, or at the
 *         program's load) builds one world-space grid on the CPU: uniform cells about 0.75 of the
-*         bounded lights' mean range (at most RBL_LIGHT_GRID_MAX_CELLS; up to 3 times smaller where a
-*         cell would list more than RBL_LIGHT_GRID_CELL_LIGHTS), each listing the lights whose sphere
-*         (range) touches it; directional lights, range 0, and ranges over a quarter of the lights'
-*         extent are lit everywhere. A fragment evaluates its cell's list: the windowed falloff is zero
-*         at the range, so the image is the slots' (same scene, every light in a slot). Two float
-*         textures (RGBA32F lights, R32F lists) on units RBL_LIGHT_GRID_TEXTURE_UNIT and the next,
-*         read with texelFetch. A cell reached by more lights than it lists keeps the scene's first,
-*         the others stay unlit there (one log line, again only after a scene without such a cell).
+*         bounded lights' mean range (at most RBL_LIGHT_GRID_MAX_CELLS; 1.5x smaller, up to 3 times,
+*         while a cell would list more than RBL_LIGHT_GRID_CELL_LIGHTS), each listing the lights
+*         whose sphere (range) touches it; directional lights, range 0, and ranges over a quarter of the
+*         lights' extent are lit everywhere. A fragment evaluates its cell's list: the windowed
+*         falloff is zero at the range, so the image is the slots' (same scene, every light in a
+*         slot). Two float textures (RGBA32F lights, R32F lists) on units RBL_LIGHT_GRID_TEXTURE_UNIT
+*         and the next, read with texelFetch. A cell reached by more lights than it lists keeps the
+*         scene's first, the others stay unlit there (one log line, again only after a scene without
+*         such a cell).
 *         The grid is the world's, not the view's: one build serves every camera, target and shadow
 *         pass of the frame; a scene no clustered program reads builds none, and programs without
 *         desc.clustered compile and run as before. ES 2 / GL 2.1 (no texelFetch): a clustered desc
@@ -1698,7 +1699,10 @@ typedef struct rbl__LightGrid {
     float *list;                    // Grid texture: unbounded lights, cell starts (cells + 1), cell lists (R32F)
     int *counts;                    // Lights reaching each cell (build scratch)
     unsigned char *bounded;         // Per light: listed by cells (1) or lit everywhere (0) (build scratch)
-    int dataCapacity, listCapacity, countCapacity, boundedCapacity; // Allocated elements of each
+    int dataCapacity;               // Allocated elements of data, list, counts and bounded
+    int listCapacity;
+    int countCapacity;
+    int boundedCapacity;
     unsigned int dataId, listId;    // The textures (0 = none yet)
     int dataRows, listRows;         // Their allocated heights
     float origin[4];                // Corner of cell (0, 0, 0), 1/cell size (rblGridOrigin)
