@@ -241,6 +241,23 @@
 *         intensity, range or coefficients, a zero direction, spot angles outside 0 <= inner <= outer
 *         <= 90, an unknown type or falloff. A forward program lights the scene's first maxLights
 *         lights of the types it compiled (RblGetLightFeatures: what a set needs); others are left out.
+*       - LIGHT GRID (desc.clustered; shaders/light_grid.glsl): a clustered program lights every light
+*         of the scene of the types it compiled, in one pass, opaque or blended (RBL_MAX_LIGHTS limits
+*         the slots, not the scene). The first clustered upload after RblSetScene (in it, or at the
+*         program's load) builds one world-space grid on the CPU: uniform cells about 0.75 of the
+*         bounded lights' mean range (at most RBL_LIGHT_GRID_MAX_CELLS; 1.5x smaller, up to 3 times,
+*         while a cell would list more than RBL_LIGHT_GRID_CELL_LIGHTS), each listing the lights
+*         whose sphere (range) touches it; directional lights, range 0, and ranges over a quarter of the
+*         lights' extent are lit everywhere. A fragment evaluates its cell's list: the windowed
+*         falloff is zero at the range, so the image is the slots' (same scene, every light in a
+*         slot). Two float textures (RGBA32F lights, R32F lists) on units RBL_LIGHT_GRID_TEXTURE_UNIT
+*         and the next, read with texelFetch. A cell reached by more lights than it lists keeps the
+*         scene's first, the others stay unlit there (one log line, again only after a scene without
+*         such a cell).
+*         The grid is the world's, not the view's: one build serves every camera, target and shadow
+*         pass of the frame; a scene no clustered program reads builds none, and programs without
+*         desc.clustered compile and run as before. ES 2 / GL 2.1 (no texelFetch): a clustered desc
+*         compiles the maxLights slots (one info line).
 *
 *   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
 *       RblBeginGBuffer -> opaque draws (material, emission, occlusion) -> RblEndGBuffer ->
@@ -515,7 +532,8 @@
 *         EXT_color_buffer_float on ES; the G-buffer takes 12 bytes/pixel on ES, where two-channel
 *         targets are not renderable). GL 2.1 and ES 2/WebGL1 run the forward path (immediate,
 *         batched, Models, every BRDF, fog, tonemap, shadows with depth textures); instanced draws and
-*         the G-buffer are refused there with one log line.
+*         the G-buffer are refused there with one log line; clustered programs fall back to their
+*         maxLights slots there (LIGHT GRID).
 *       - raylib's own DrawModel/DrawMesh upload colDiffuse, matrices and textures, none of the header's
 *         values (roughness, metalness, shininess, specular, emission, alpha cutoff): those need
 *         RblDrawModel/RblDrawMesh; a raylib draw with a lit program is noticed at the header's next
@@ -615,6 +633,11 @@
 *           in raylib's HEIGHT..PREFILTER slots would take those units while DrawMesh draws it).
 *       #define RBL_MAX_RELIEF_STEPS 64
 *           Largest relief self-shadow march (desc.reliefSteps), samples per light.
+*       #define RBL_LIGHT_GRID_TEXTURE_UNIT 17
+*           Clustered programs (desc.clustered) read the light data from unit 17 and the grid from 18.
+*       #define RBL_LIGHT_GRID_MAX_CELLS 16384, RBL_LIGHT_GRID_CELL_LIGHTS 128
+*           Cells of the scene's light grid, and lights one cell lists (the scene's first lights
+*           reaching it: LIGHT GRID); cells x lights stays below 2^22 (one 2048 x 2048 float texture).
 *       #define RBL_MALLOC / RBL_CALLOC / RBL_REALLOC / RBL_FREE
 *           Custom allocator: define all four or none.
 *       RBL_ZERO (defined by the header)
@@ -731,7 +754,7 @@
     #define RBL_MAX_INSTANCES 2097152           // Instances one buffer may hold and one draw may take (2^21)
 #endif
 #ifndef RBL_MAX_SCENE_LIGHTS
-    #define RBL_MAX_SCENE_LIGHTS 65536          // Lights one RblScene may hold (forward lights the first maxLights)
+    #define RBL_MAX_SCENE_LIGHTS 65536          // Lights one RblScene may hold (forward lights the first maxLights; clustered programs all)
 #endif
 #ifndef RBL_MAX_TARGET_SIZE
     #define RBL_MAX_TARGET_SIZE 16384           // Largest G-buffer side and shadow-map size (also capped by the driver)
@@ -768,6 +791,15 @@
 #endif
 #ifndef RBL_MAX_RELIEF_STEPS
     #define RBL_MAX_RELIEF_STEPS 64             // Largest relief march (desc.reliefSteps), samples per light
+#endif
+#ifndef RBL_LIGHT_GRID_TEXTURE_UNIT
+    #define RBL_LIGHT_GRID_TEXTURE_UNIT 17      // Clustered programs: light data on this unit, the grid on the next
+#endif
+#ifndef RBL_LIGHT_GRID_MAX_CELLS
+    #define RBL_LIGHT_GRID_MAX_CELLS 16384      // Cells of the scene's light grid
+#endif
+#ifndef RBL_LIGHT_GRID_CELL_LIGHTS
+    #define RBL_LIGHT_GRID_CELL_LIGHTS 128      // Lights one grid cell lists (the scene's first reaching it)
 #endif
 #ifndef RBL_MAX_BONES
     #define RBL_MAX_BONES 128                   // Bone matrices a skinned program holds (4 uniform vectors each; at most 256)
@@ -982,6 +1014,18 @@ typedef struct RblNormalErrorStats {
     double max;                     // Maximum
     int count;                      // Normals measured
 } RblNormalErrorStats;
+
+// The scene's light grid as the last build made it (an instrument of the tests and benchmarks)
+typedef struct RblLightGridStats {
+    int cells[3];                   // Cells along x, y, z (0 = no bounded light in the grid)
+    float cellSize;                 // World size of a cell
+    Vector3 origin;                 // World corner of cell (0, 0, 0)
+    int unbounded;                  // Lights lit everywhere (directional, range 0, or as large as the light set)
+    int entries;                    // Light entries over all cells
+    int fullestCell;                // Most lights reaching one cell (before the cap)
+    int cappedCells;                // Cells that reached more than RBL_LIGHT_GRID_CELL_LIGHTS lights
+    int builds;                     // Grids built since the header started (a scene no clustered program reads builds none)
+} RblLightGridStats;
 #endif
 
 // Light types (RblLight.type)
@@ -1091,6 +1135,7 @@ typedef struct RblLitShaderDesc {
     bool relief;                    // March material.height toward each light in tangent space: embossed detail shadows the sprite (deferred: RblGBufferDesc.relief)
     int reliefSteps;                // Relief samples per light, 1..RBL_MAX_RELIEF_STEPS (0 = 16)
     bool shadowTransmittance;       // Receivers read the maps' transmittance targets: blended casters' partial, coloured shadows (forward variants; deferred: RblGBufferDesc.shadowTransmittance)
+    bool clustered;                 // Every light of the scene through the scene's light grid (GL 3.3, ES 3, WebGL2; ES 2 and GL 2.1 keep maxLights slots)
 } RblLitShaderDesc;
 
 // Material.params slots a lit program reads (every per-material value: MATERIAL VALUES in the doc block)
@@ -1177,7 +1222,7 @@ typedef struct RblShadowMap {
 // What lights the frame, set once per frame with RblSetScene(); zero means default
 typedef struct RblScene {
     const RblLight *lights;         // Lights (read and packed by RblSetScene; the array may change afterwards)
-    int lightCount;                 // Forward programs light the first maxLights of them, the G-buffer every one
+    int lightCount;                 // Forward programs light the first maxLights of them (clustered ones and the G-buffer every one)
     Color ambient;                  // Ambient colour (sRGB); the sky colour when ambientGround is given
     Color ambientGround;            // Hemispheric ground colour (all zero = ambient: flat)
     Vector3 ambientUp;              // Hemisphere up (zero = +Y)
@@ -1333,6 +1378,9 @@ RBLAPI bool RblIsLitShaderValid(Shader shader);                                /
 RBLAPI void RblUnloadLitShader(Shader *shader);                                // Release this holder's reference and zero it (the program goes with its last holder)
 RBLAPI int RblGetLightFeatures(const RblLight *lights, int count);               // RblLightFeature flags a light set needs (for RblShading.lightFeatures)
 RBLAPI bool RblSetScene(const RblScene *scene);                                // Lights, ambient, fog, exposure and shadow maps for every lit program and G-buffer; false = rejected, previous scene kept
+#if defined(RBL_INSTRUMENTS)
+RBLAPI RblLightGridStats RblGetLightGridStats(void);                            // The scene's light grid as last built (RBL_INSTRUMENTS)
+#endif
 RBLAPI void RblDrawModel(Model model, Vector3 position, float scale, Color tint); // DrawModel with each material's lit values (colour, G-buffer or shadow pass)
 RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      // DrawMesh with the material's lit values (colour, G-buffer or shadow pass)
 
@@ -1473,7 +1521,7 @@ typedef enum {
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
     RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
-    RBL__U_G_THIN, RBL__U_RELIEF_INDEX,
+    RBL__U_G_THIN, RBL__U_RELIEF_INDEX, RBL__U_GRID_ORIGIN, RBL__U_GRID_DIMS,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1674,6 +1722,27 @@ typedef struct rbl__Cast {
     bool radial;                    // An omni pass with light-facing casters: CAMERA_PLANE cards turn toward the light as CAMERA_POSITION ones (one frame for all six faces)
 } rbl__Cast;
 
+// The scene's light grid for clustered programs (light_grid.glsl): built from the packed lights at the
+// first clustered program's upload after RblSetScene; storage grows to the largest scene
+typedef struct rbl__LightGrid {
+    float *data;                    // Light texture rows: RBL__GRID_DATA_LIGHTS lights x 4 RGBA32F texels
+    float *list;                    // Grid texture: unbounded lights, cell starts (cells + 1), cell lists (R32F)
+    int *counts;                    // Lights reaching each cell (build scratch)
+    unsigned char *bounded;         // Per light: listed by cells (1) or lit everywhere (0) (build scratch)
+    int dataCapacity;               // Allocated elements of data, list, counts and bounded
+    int listCapacity;
+    int countCapacity;
+    int boundedCapacity;
+    unsigned int dataId, listId;    // The textures (0 = none yet)
+    int dataRows, listRows;         // Their allocated heights
+    float origin[4];                // Corner of cell (0, 0, 0), 1/cell size (rblGridOrigin)
+    int dims[4];                    // Cells along x, y, z; unbounded lights (rblGridDims)
+    bool dirty;                     // The scene changed since the last build
+    bool capNoted;                  // A capped cell was logged (again only after a scene without one)
+    float cellSize;                 // What the last build made (RblGetLightGridStats)
+    int entries, fullestCell, cappedCells, builds;
+} rbl__LightGrid;
+
 // The frame's scene, validated and packed once by RblSetScene
 typedef struct rbl__Scene {
     float *lights;                             // RBL__LIGHT_FLOATS per light: position, colour, spot (vec4 each), falloff (vec3), shadow map + 1
@@ -1696,6 +1765,7 @@ typedef struct rbl__Scene {
     unsigned int shadowTint[RBL_MAX_SHADOWS];  // Each map's transmittance target (0 = none)
     float shadowUniforms[RBL_MAX_SHADOWS][48]; // Matrix rows, params, bias, axes, tiles as shadows.glsl reads them
     Texture2D depth;                           // Scene depth soft particles read (id 0 = none)
+    rbl__LightGrid grid;                       // Clustered programs' lights
 } rbl__Scene;
 
 // The scene target of a plain raylib frame (RblBeginSceneDepth .. RblEndSceneDepth): the opaque world
@@ -1754,6 +1824,8 @@ typedef struct rbl__State {
 } rbl__State;
 
 static rbl__State rbl__state;
+static void rbl__freeLightGrid(rbl__LightGrid *g);
+static void rbl__bindLightGrid(void);
 #if defined(RBL_INSTRUMENTS)
     #define RBL__HOOK(name) (rbl__state.name)
 #else
@@ -2475,12 +2547,74 @@ static const char *const rbl__shader_gbuffer_read[] = {
     "    return s;\n",
     "}\n",
     NULL };
+static const char *const rbl__shader_light_grid[] = {
+    "// Light grid: every light of the scene for programs compiled with RblLitShaderDesc.clustered (GLSL 3:\n",
+    "// GL 3.3, ES 3, WebGL2). RblSetScene packs the lights into one texture and builds one world-space grid\n",
+    "// over the spheres of the bounded lights: each cell lists the lights that reach it. Unbounded lights\n",
+    "// (directional, range 0, or a range as large as the light set) are listed once and lit everywhere. A\n",
+    "// world grid serves every camera, target and pass of the frame, and needs no camera to build.\n",
+    "//   RBL_LIGHT_GRID            the grid replaces the light slots (RBL_LIGHTS is 0)\n",
+    "// Mirrors of the C side (rbl__LightGrid): RBL_LIGHT_GRID_WIDTH entries per row of rblLightGrid,\n",
+    "// RBL_LIGHT_DATA_LIGHTS lights of 4 texels per row of rblLightData.\n",
+    "#include \"common.glsl\"\n",
+    "\n",
+    "#ifdef RBL_LIGHT_GRID\n",
+    "#define RBL_LIGHT_GRID_WIDTH 2048           // power of two: row = i >> 11\n",
+    "#define RBL_LIGHT_DATA_LIGHTS 256           // power of two: row = light >> 8\n",
+    "uniform highp sampler2D rblLightData;       // RGBA32F, unit RBL_LIGHT_GRID_TEXTURE_UNIT; per light: position (w: its RblLightFeature bits), colour (a: 1/range), spot, falloff\n",
+    "uniform highp sampler2D rblLightGrid;       // R32F, unit RBL_LIGHT_GRID_TEXTURE_UNIT + 1: the unbounded lights, the cells' starts (cells + 1), then each cell's lights\n",
+    "uniform vec4 rblGridOrigin;                 // xyz world corner of cell (0, 0, 0), w 1/cell size\n",
+    "uniform ivec4 rblGridDims;                  // cells along x, y, z (0: no bounded light); w the unbounded lights (the first entries)\n",
+    "\n",
+    "// Light types this program leaves out, as the slots do (point lights are always compiled)\n",
+    "#ifdef RBL_LIGHT_DIRECTIONAL\n",
+    "#define RBL_GRID_NO_DIRECTIONAL 0\n",
+    "#else\n",
+    "#define RBL_GRID_NO_DIRECTIONAL 2\n",
+    "#endif\n",
+    "#ifdef RBL_LIGHT_SPOT\n",
+    "#define RBL_GRID_NO_SPOT 0\n",
+    "#else\n",
+    "#define RBL_GRID_NO_SPOT 4\n",
+    "#endif\n",
+    "#ifdef RBL_LIGHT_CLASSIC\n",
+    "#define RBL_GRID_NO_CLASSIC 0\n",
+    "#else\n",
+    "#define RBL_GRID_NO_CLASSIC 8\n",
+    "#endif\n",
+    "#define RBL_GRID_SKIPPED (RBL_GRID_NO_DIRECTIONAL + RBL_GRID_NO_SPOT + RBL_GRID_NO_CLASSIC)\n",
+    "\n",
+    "// Entry i of the grid list (a light index, or a cell's first entry)\n",
+    "int rblGridEntry(int i)\n",
+    "{\n",
+    "    return int(texelFetch(rblLightGrid, ivec2(i & (RBL_LIGHT_GRID_WIDTH - 1), i >> 11), 0).r);\n",
+    "}\n",
+    "\n",
+    "// Texel t (0 position, 1 colour, 2 spot, 3 falloff) of light i\n",
+    "vec4 rblGridLightTexel(int i, int t)\n",
+    "{\n",
+    "    return texelFetch(rblLightData, ivec2(((i & (RBL_LIGHT_DATA_LIGHTS - 1)) << 2) + t, i >> 8), 0);\n",
+    "}\n",
+    "\n",
+    "// Entries [x, y) listing the bounded lights that may reach world point p (empty outside the grid;\n",
+    "// compared as floats first, so a far or NaN position never converts to an out-of-range int)\n",
+    "ivec2 rblGridCell(vec3 p)\n",
+    "{\n",
+    "    vec3 g = floor((p - rblGridOrigin.xyz)*rblGridOrigin.w);\n",
+    "    if (!(all(greaterThanEqual(g, vec3(0.0))) && all(lessThan(g, vec3(rblGridDims.xyz))))) return ivec2(0);\n",
+    "    ivec3 c = ivec3(g);\n",
+    "    int cell = rblGridDims.w + (c.z*rblGridDims.y + c.y)*rblGridDims.x + c.x;\n",
+    "    return ivec2(rblGridEntry(cell), rblGridEntry(cell + 1));\n",
+    "}\n",
+    "#endif\n",
+    NULL };
 static const char *const rbl__shader_lights[] = {
     "// Lights: light uniforms, falloff, spot cones, BRDFs (Lambert, normalised Blinn-Phong,\n",
     "// GGX), and the sum over the light slots. Units: a light of linear colour c and intensity I delivers\n",
     "// irradiance E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the\n",
     "// light, so a white Lambert surface lit head-on by E = 1 returns exactly 1.\n",
     "//   RBL_LIGHTS n              light slots\n",
+    "//   RBL_LIGHT_GRID            every light of the scene from the light grid instead (light_grid.glsl)\n",
     "//   RBL_LIGHT_DIRECTIONAL     directional lights present (rblLightPosition.w = 0)\n",
     "//   RBL_LIGHT_SPOT            spot cones\n",
     "//   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation\n",
@@ -2495,11 +2629,12 @@ static const char *const rbl__shader_lights[] = {
     "#include \"shadows.glsl\"\n",
     "#include \"shadow_tint.glsl\"\n",
     "#include \"transmission.glsl\"\n",
+    "#include \"light_grid.glsl\"\n",
     "\n",
     "#define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite\n",
     "#define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite\n",
     "\n",
-    "#if RBL_LIGHTS > 0\n",
+    "#if (RBL_LIGHTS > 0) && !defined(RBL_LIGHT_GRID)\n",
     "uniform int rblLightCount;\n",
     "uniform vec4 rblLightPosition[RBL_LIGHTS];  // xyz position, w 1; directional: xyz unit vector toward the light, w 0\n",
     "uniform vec4 rblLightColor[RBL_LIGHTS];     // rgb linear colour x intensity, a 1/range (0 = no window)\n",
@@ -2511,7 +2646,7 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "#endif\n",
     "#if RBL_SHADOWS > 0\n",
-    "uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)\n",
+    "uniform ivec4 rblShadowLight;               // light slot (grid: scene light) shadowed by map k (-1 = none)\n",
     "#endif\n",
     "\n",
     "// Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0\n",
@@ -2551,10 +2686,15 @@ static const char *const rbl__shader_lights[] = {
     "// once per map before the light loop, not per light slot (CPU rasterisers run every branch of a loop)\n",
     "float rblShadowOfMap(int k, RblShadingPoint s, int light)\n",
     "{\n",
+    "#ifdef RBL_LIGHT_GRID\n",
+    "    if (light < 0) return 1.0;\n",
+    "    vec4 p = rblGridLightTexel(light, 0);\n",
+    "    p.w = (int(p.w) == 2)? 0.0 : 1.0;               // feature bits 2: directional\n",
+    "#elif RBL_GLSL >= 300\n",
     "    if ((light < 0) || (light >= rblLightCount)) return 1.0;\n",
-    "#if RBL_GLSL >= 300\n",
     "    vec4 p = rblLightPosition[light];\n",
     "#else\n",
+    "    if ((light < 0) || (light >= rblLightCount)) return 1.0;\n",
     "    vec4 p = vec4(0.0);                             // GLSL ES 1.00: uniform arrays by loop index only\n",
     "    for (int i = 0; i < RBL_LIGHTS; i++) if (i == light) p = rblLightPosition[i];\n",
     "#endif\n",
@@ -2612,11 +2752,12 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "}\n",
     "\n",
-    "// Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)\n",
+    "// Sum of the light slots (or of the grid's lights reaching it) at a surface point seen along the unit\n",
+    "// view vector v (rblViewVector)\n",
     "vec3 rblDirectLight(RblShadingPoint s, vec3 v)\n",
     "{\n",
     "    vec3 sum = vec3(0.0);\n",
-    "#if RBL_LIGHTS > 0\n",
+    "#if (RBL_LIGHTS > 0) || defined(RBL_LIGHT_GRID)\n",
     "#if RBL_SHADOWS > 0\n",
     "    vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows\n",
     "    shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);\n",
@@ -2642,9 +2783,34 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "#endif\n",
     "#endif\n",
+    "#ifdef RBL_LIGHT_GRID\n",
+    "    // The unbounded lights, then the cell's: one loop, so the body is compiled once\n",
+    "    ivec2 cell = rblGridCell(s.position);\n",
+    "    int unbounded = rblGridDims.w;\n",
+    "    int entries = unbounded + cell.y - cell.x;\n",
+    "    for (int e = 0; e < entries; e++)\n",
+    "    {\n",
+    "        int i = rblGridEntry((e < unbounded)? e : (cell.x + e - unbounded));\n",
+    "        vec4 p = rblGridLightTexel(i, 0);\n",
+    "        int features = int(p.w);\n",
+    "        if ((features & RBL_GRID_SKIPPED) != 0) continue;\n",
+    "        p.w = (features == 2)? 0.0 : 1.0;\n",
+    "        vec4 c = rblGridLightTexel(i, 1);\n",
+    "#ifdef RBL_LIGHT_SPOT\n",
+    "        vec4 spot = rblGridLightTexel(i, 2);\n",
+    "#else\n",
+    "        vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);\n",
+    "#endif\n",
+    "#ifdef RBL_LIGHT_CLASSIC\n",
+    "        vec3 k = rblGridLightTexel(i, 3).xyz;\n",
+    "#else\n",
+    "        vec3 k = vec3(0.0, 0.0, 1.0);\n",
+    "#endif\n",
+    "#else\n",
     "    for (int i = 0; i < RBL_LIGHTS; i++)\n",
     "    {\n",
     "        if (i >= rblLightCount) break;\n",
+    "        vec4 p = rblLightPosition[i], c = rblLightColor[i];\n",
     "#ifdef RBL_LIGHT_SPOT\n",
     "        vec4 spot = rblLightSpot[i];\n",
     "#else\n",
@@ -2654,6 +2820,7 @@ static const char *const rbl__shader_lights[] = {
     "        vec3 k = rblLightAttenuation[i];\n",
     "#else\n",
     "        vec3 k = vec3(0.0, 0.0, 1.0);\n",
+    "#endif\n",
     "#endif\n",
     "#if RBL_SHADOWS > 0\n",
     "        float shadow = (i == rblShadowLight.x)? shadowed.x : ((i == rblShadowLight.y)? shadowed.y :\n",
@@ -2666,9 +2833,9 @@ static const char *const rbl__shader_lights[] = {
     "#endif\n",
     "#if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)\n",
     "        vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));\n",
-    "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow)*tint;\n",
+    "        sum += rblEvalLight(s, v, p, c, spot, k, shadow)*tint;\n",
     "#else\n",
-    "        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);\n",
+    "        sum += rblEvalLight(s, v, p, c, spot, k, shadow);\n",
     "#endif\n",
     "    }\n",
     "#endif\n",
@@ -4219,6 +4386,7 @@ static const struct { const char *file; const char *const *source; } rbl__shader
     { "gbuffer.fs.glsl", rbl__shader_gbuffer_fs },
     { "gbuffer_codec.glsl", rbl__shader_gbuffer_codec },
     { "gbuffer_read.glsl", rbl__shader_gbuffer_read },
+    { "light_grid.glsl", rbl__shader_light_grid },
     { "lights.glsl", rbl__shader_lights },
     { "lit.fs.glsl", rbl__shader_lit_fs },
     { "lit.vs.glsl", rbl__shader_lit_vs },
@@ -4243,11 +4411,11 @@ static const char *const *const rbl__pass_lit_vs[] = { rbl__shader_dialect, rbl_
 static const char *const *const rbl__pass_lit_instanced_vs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_lit_instanced_vs, NULL };
 static const char *const *const rbl__pass_scene_composite_vs[] = { rbl__shader_dialect, rbl__shader_scene_composite_vs, NULL };
 static const char *const *const rbl__pass_volume_vs[] = { rbl__shader_dialect, rbl__shader_volume_vs, NULL };
-static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
+static const char *const *const rbl__pass_deferred_fullscreen_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_light_grid, rbl__shader_lights, rbl__shader_deferred_fullscreen_fs, NULL };
 static const char *const *const rbl__pass_deferred_resolve_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_output, rbl__shader_deferred_resolve_fs, NULL };
-static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
+static const char *const *const rbl__pass_deferred_volume_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_read, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_transmission, rbl__shader_light_grid, rbl__shader_lights, rbl__shader_deferred_volume_fs, NULL };
 static const char *const *const rbl__pass_gbuffer_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_gbuffer_codec, rbl__shader_gbuffer_fs, NULL };
-static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
+static const char *const *const rbl__pass_lit_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_ambient, rbl__shader_shadows, rbl__shader_shadow_tint, rbl__shader_light_grid, rbl__shader_lights, rbl__shader_output, rbl__shader_soft, rbl__shader_lit_fs, NULL };
 static const char *const *const rbl__pass_scene_composite_fs[] = { rbl__shader_dialect, rbl__shader_scene_composite_fs, NULL };
 static const char *const *const rbl__pass_shadow_caster_fs[] = { rbl__shader_dialect, rbl__shader_common, rbl__shader_surface, rbl__shader_transmission, rbl__shader_relief, rbl__shader_material, rbl__shader_shadow_caster_fs, NULL };
 static const struct { const char *file; const char *const *const *parts; } rbl__passFiles[] = {
@@ -5800,6 +5968,7 @@ void RblClose(void)
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
     rbl__releaseCapture();
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
+    rbl__freeLightGrid(&rbl__state.scene.grid);
     memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
     // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
     // RblUnloadLitShader release them later; those raylib already deleted are simply forgotten)
@@ -7379,7 +7548,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable",
-    "rblTransmission", "rblRelief", "rblCasterTint", "rblGThin", "rblReliefIndex" };
+    "rblTransmission", "rblRelief", "rblCasterTint", "rblGThin", "rblReliefIndex", "rblGridOrigin", "rblGridDims" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -7443,6 +7612,8 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     out->material.height = in.relief? m.height : RBL_CHANNEL_NONE;
     out->reliefSteps = in.relief? ((in.reliefSteps == 0)? 16 : in.reliefSteps) : 0;
     out->shadowTransmittance = in.shadowTransmittance;
+    // The grid needs GLSL 3 (texelFetch, integer indices): ES 2 and GL 2.1 keep the maxLights slots
+    if (in.clustered && !in.deferred && (rbl__glsl() >= 300)) { out->clustered = true; out->maxLights = 0; }
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
@@ -7499,6 +7670,7 @@ static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
     if ((n > 0) && ((size_t)n < size) && (m->height != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_HEIGHT_CHANNEL %i\n", m->height + 2);
     if ((n > 0) && ((size_t)n < size) && d->relief) n += snprintf(out + n, size - (size_t)n, "#define RBL_RELIEF_STEPS %i\n", d->reliefSteps);
     if ((n > 0) && ((size_t)n < size) && d->shadowTransmittance) n += snprintf(out + n, size - (size_t)n, "#define RBL_SHADOW_TINT\n");
+    if ((n > 0) && ((size_t)n < size) && d->clustered) n += snprintf(out + n, size - (size_t)n, "#define RBL_LIGHT_GRID\n");
     if ((n > 0) && ((size_t)n < size) && (d->debugOutput > 0)) snprintf(out + n, size - (size_t)n, "#define RBL_DEBUG_OUTPUT %i\n", d->debugOutput);
 }
 
@@ -7789,6 +7961,12 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
         int unit = RBL_SHADOW_TEXTURE_UNIT + k;
         rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
     }
+    if (d->clustered)
+    {
+        int units[2] = { RBL_LIGHT_GRID_TEXTURE_UNIT, RBL_LIGHT_GRID_TEXTURE_UNIT + 1 };
+        rlSetUniform(rlGetLocationUniform(shader.id, "rblLightData"), &units[0], SHADER_UNIFORM_INT, 1);
+        rlSetUniform(rlGetLocationUniform(shader.id, "rblLightGrid"), &units[1], SHADER_UNIFORM_INT, 1);
+    }
     for (int k = 0; d->shadowTransmittance && (k < d->shading.shadowMaps); k++)
     {
         char name[32];
@@ -7899,6 +8077,8 @@ Shader RblLoadLitShader(RblLitShaderDesc desc)
     RblLitShaderDesc normalised;
     const char *bad = rbl__normaliseLitDesc(desc, &normalised);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadLitShader: %s", bad); return none; }
+    if (desc.clustered && !desc.deferred && !normalised.clustered)
+        TraceLog(LOG_INFO, "RBL: RblLoadLitShader: clustered lights need GLSL 3 (GL 3.3, ES 3, WebGL2); this context is %s: %i light slots (maxLights)", rbl__contextName(), normalised.maxLights);
     rbl__ProgramKey key;
     rbl__keyFromDesc(&normalised, RBL__KIND_LIT, 0, &key);
     rbl__Program *p = rbl__compileProgram(&key);
@@ -8266,6 +8446,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shading.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     if ((*program)->key.desc.shadowTransmittance) rbl__bindSceneTints(*program);
+    if ((*program)->key.desc.clustered) rbl__bindLightGrid();
     return true;
 }
 
@@ -8417,6 +8598,278 @@ static void rbl__uploadSceneConstants(const rbl__Program *p)
     if (loc[RBL__U_EXPOSURE] != -1) rlSetUniform(loc[RBL__U_EXPOSURE], &s->exposure, SHADER_UNIFORM_FLOAT, 1);
 }
 
+// ---- The light grid of clustered programs (light_grid.glsl) ----
+// One world-space grid per scene, built on the CPU: uniform cells over the spheres of the bounded
+// lights, each cell listing (in scene order, at most RBL_LIGHT_GRID_CELL_LIGHTS) the lights whose
+// sphere touches it; unbounded lights, and lights whose range spans a quarter of the light set (they
+// would list themselves in most cells), are listed once and lit everywhere. A world grid needs no
+// camera: one build serves every view, target and pass of the frame.
+#define RBL__GRID_WIDTH 2048            // Entries per row of the grid texture (light_grid.glsl: RBL_LIGHT_GRID_WIDTH)
+#define RBL__GRID_DATA_LIGHTS 256       // Lights (4 texels each) per row of the light texture (RBL_LIGHT_DATA_LIGHTS)
+typedef char rbl__gridFits[((long long)RBL_LIGHT_GRID_MAX_CELLS*(RBL_LIGHT_GRID_CELL_LIGHTS + 1) + RBL_MAX_SCENE_LIGHTS + 1 <= 2048LL*2048) &&
+                           (RBL_MAX_SCENE_LIGHTS <= 2048*RBL__GRID_DATA_LIGHTS) && (RBL_LIGHT_GRID_MAX_CELLS >= 1) && (RBL_LIGHT_GRID_CELL_LIGHTS >= 1)? 1 : -1];
+
+// array grown to hold n elements of size bytes (contents kept), or NULL (array untouched)
+static void *rbl__gridGrow(void *array, int *capacity, int n, size_t size)
+{
+    if ((n <= *capacity) && (array != NULL)) return array;
+    int c = (*capacity > 0)? *capacity : 1024;
+    while (c < n) c *= 2;
+    void *grown = RBL_REALLOC(array, (size_t)c*size);
+    if (grown != NULL) *capacity = c;
+    return grown;
+}
+
+// Texture *id (width x rows of format) holding data: made or remade taller when it has fewer rows
+static bool rbl__gridTexture(unsigned int *id, int *held, int width, int rows, int format, const float *data)
+{
+    if ((*id != 0) && (rows > *held)) { rlUnloadTexture(*id); *id = 0; }
+    if (*id == 0)
+    {
+        int alloc = 1;
+        while (alloc < rows) alloc *= 2;                    // grows by doubling: a growing scene remakes it rarely
+        *id = rlLoadTexture(NULL, width, alloc, format, 1);
+        *held = (*id != 0)? alloc : 0;
+        if (*id == 0) return false;
+        // texelFetch only, but a float texture must be complete (no linear filter) to be read on ES 3
+        rlTextureParameters(*id, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+        rlTextureParameters(*id, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+    }
+    rlUpdateTexture(*id, 0, 0, width, rows, format, data);
+    return true;
+}
+
+// Cells [i0, i1] along axis a that a sphere (centre c, radius r) may touch, as floor() in the shader
+// sees them within margin m
+static void rbl__gridSpan(const rbl__LightGrid *g, int a, double c, double r, double m, int *i0, int *i1)
+{
+    double h = 1.0/(double)g->origin[3];
+    double lo = floor((c - r - m - (double)g->origin[a])/h), hi = floor((c + r + m - (double)g->origin[a])/h);
+    *i0 = (lo < 0.0)? 0 : ((lo > g->dims[a] - 1)? g->dims[a] - 1 : (int)lo);
+    *i1 = (hi < 0.0)? 0 : ((hi > g->dims[a] - 1)? g->dims[a] - 1 : (int)hi);
+}
+
+// Counts (fill false) or lists (fill true) the cells each bounded light touches: a cell is a box
+// widened by the margin the shader's float cell lookup needs, touched when the sphere reaches it
+static void rbl__gridVisit(rbl__LightGrid *g, const rbl__Scene *s, bool fill, double margin)
+{
+    const double h = 1.0/(double)g->origin[3];
+    const int unbounded = g->dims[3];
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        if (!g->bounded[i]) continue;
+        const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        const double c[3] = { d[0], d[1], d[2] }, r = 1.0/(double)d[7];
+        int i0[3], i1[3];
+        for (int a = 0; a < 3; a++) rbl__gridSpan(g, a, c[a], r, margin, &i0[a], &i1[a]);
+        for (int z = i0[2]; z <= i1[2]; z++)
+            for (int y = i0[1]; y <= i1[1]; y++)
+                for (int x = i0[0]; x <= i1[0]; x++)
+                {
+                    const int cell[3] = { x, y, z };
+                    double d2 = 0.0;
+                    for (int a = 0; a < 3; a++)
+                    {
+                        double lo = (double)g->origin[a] + cell[a]*h - margin, hi = lo + h + 2.0*margin;
+                        double e = (c[a] < lo)? lo - c[a] : ((c[a] > hi)? c[a] - hi : 0.0);
+                        d2 += e*e;
+                    }
+                    if (d2 > r*r) continue;
+                    int k = (z*g->dims[1] + y)*g->dims[0] + x;
+                    if (!fill) { g->counts[k]++; continue; }
+                    int start = (int)g->list[unbounded + k], end = (int)g->list[unbounded + k + 1];
+                    if (start + g->counts[k] < end) g->list[start + g->counts[k]++] = (float)i;
+                }
+    }
+}
+
+// Builds the grid of the current scene and uploads it (GL needed); on failure (memory, float textures)
+// the grid is empty: clustered programs light nothing but the ambient, said once
+static void rbl__buildLightGrid(void)
+{
+    rbl__Scene *s = &rbl__state.scene;
+    rbl__LightGrid *g = &s->grid;
+    const int n = s->lightCount, cap = RBL_LIGHT_GRID_CELL_LIGHTS;
+    g->dirty = false;
+    g->builds++;
+    memset(g->origin, 0, sizeof(g->origin)); memset(g->dims, 0, sizeof(g->dims));
+    g->cellSize = 0.0f; g->entries = g->fullestCell = g->cappedCells = 0;
+    const int dataRows = (n > 0)? (n + RBL__GRID_DATA_LIGHTS - 1)/RBL__GRID_DATA_LIGHTS : 1;
+    void *grown = rbl__gridGrow(g->data, &g->dataCapacity, dataRows*RBL__GRID_DATA_LIGHTS*16, sizeof(float));
+    if (grown != NULL) g->data = (float *)grown;
+    grown = (grown != NULL)? rbl__gridGrow(g->bounded, &g->boundedCapacity, (n > 0)? n : 1, 1) : NULL;
+    if (grown != NULL) g->bounded = (unsigned char *)grown;
+    if (grown == NULL) { TraceLog(LOG_WARNING, "RBL: RblSetScene: out of memory for the light grid: clustered programs light none of %i lights", n); return; }
+    // The light texture (scene order) and which lights the cells list
+    double lo[3] = { 0.0, 0.0, 0.0 }, hi[3] = { 0.0, 0.0, 0.0 };
+    int listed = 0;
+    memset(g->data, 0, (size_t)dataRows*RBL__GRID_DATA_LIGHTS*16*sizeof(float));
+    for (int i = 0; i < n; i++)
+    {
+        const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        float *t = &g->data[i*16];
+        t[0] = d[0]; t[1] = d[1]; t[2] = d[2]; t[3] = (float)s->lightFeatures[i];
+        memcpy(&t[4], &d[4], 8*sizeof(float));
+        t[12] = d[12]; t[13] = d[13]; t[14] = d[14];
+        g->bounded[i] = (d[3] != 0.0f) && (d[7] > 0.0f);
+        for (int a = 0; (a < 3) && g->bounded[i]; a++)
+        {
+            lo[a] = (listed == 0)? d[a] : fmin(lo[a], d[a]);
+            hi[a] = (listed == 0)? d[a] : fmax(hi[a], d[a]);
+        }
+        listed += g->bounded[i];
+    }
+    double extent = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2])), radii = 0.0, far = 0.0;
+    int unbounded = 0;
+    listed = 0;
+    for (int i = 0; i < n; i++)
+    {
+        const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        if (g->bounded[i] && (1.0/(double)d[7] > 0.25*extent)) g->bounded[i] = 0;
+        if (!g->bounded[i]) { unbounded++; continue; }
+        double r = 1.0/(double)d[7];
+        for (int a = 0; a < 3; a++)
+        {
+            lo[a] = (listed == 0)? d[a] - r : fmin(lo[a], d[a] - r);
+            hi[a] = (listed == 0)? d[a] + r : fmax(hi[a], d[a] + r);
+            far = fmax(far, fabs((double)d[a]) + r);
+        }
+        radii += r;
+        listed++;
+    }
+    // Cells about the lights' mean radius, fewer when the box would need more than the maximum; where
+    // a cell is reached by more lights than it lists, smaller cells (up to 3 times) while they fit
+    const double ext[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
+    double h = (listed > 0)? fmax(0.75*radii/listed, cbrt(ext[0]*ext[1]*ext[2]/RBL_LIGHT_GRID_MAX_CELLS)) : 1.0;
+    for (;;)
+    {
+        double cells = 1.0;
+        for (int a = 0; a < 3; a++) cells *= fmax(1.0, ceil(ext[a]/h));
+        if (cells <= RBL_LIGHT_GRID_MAX_CELLS) break;
+        h *= 1.0625;
+    }
+    int cells = 0;
+    long total = 0;
+    for (int attempt = 0; ; attempt++)
+    {
+        if (listed > 0)
+        {
+            for (int a = 0; a < 3; a++) { g->dims[a] = (int)fmax(1.0, ceil(ext[a]/h)); g->origin[a] = (float)lo[a]; }
+            g->origin[3] = (float)(1.0/h);
+            g->cellSize = (float)h;
+        }
+        cells = g->dims[0]*g->dims[1]*g->dims[2];
+        g->dims[3] = unbounded;
+        g->fullestCell = g->cappedCells = 0;
+        grown = rbl__gridGrow(g->counts, &g->countCapacity, (cells > 0)? cells : 1, sizeof(int));
+        if (grown == NULL) break;
+        g->counts = (int *)grown;
+        const double margin = 0.01*h + 1e-6*(far + fabs(lo[0]) + fabs(lo[1]) + fabs(lo[2]));
+        memset(g->counts, 0, (size_t)((cells > 0)? cells : 1)*sizeof(int));
+        if (cells > 0) rbl__gridVisit(g, s, false, margin);
+        total = unbounded + ((cells > 0)? cells + 1 : 1);
+        for (int k = 0; k < cells; k++)
+        {
+            if (g->counts[k] > g->fullestCell) g->fullestCell = g->counts[k];
+            if (g->counts[k] > cap) g->cappedCells++;
+            total += (g->counts[k] < cap)? g->counts[k] : cap;
+        }
+        double finer = 1.0;
+        for (int a = 0; a < 3; a++) finer *= fmax(1.0, ceil(ext[a]*1.5/h));
+        if ((g->cappedCells == 0) || (attempt == 3) || (finer > RBL_LIGHT_GRID_MAX_CELLS)) break;
+        h /= 1.5;
+    }
+    const int listRows = (int)((total + RBL__GRID_WIDTH - 1)/RBL__GRID_WIDTH);
+    const double margin = 0.01*h + 1e-6*(far + fabs(lo[0]) + fabs(lo[1]) + fabs(lo[2]));
+    grown = (grown != NULL)? rbl__gridGrow(g->list, &g->listCapacity, listRows*RBL__GRID_WIDTH, sizeof(float)) : NULL;
+    if (grown == NULL) { TraceLog(LOG_WARNING, "RBL: RblSetScene: out of memory for the light grid: clustered programs light none of %i lights", n); memset(g->dims, 0, sizeof(g->dims)); return; }
+    g->list = (float *)grown;
+    memset(g->list, 0, (size_t)listRows*RBL__GRID_WIDTH*sizeof(float));
+    for (int i = 0, u = 0; i < n; i++) if (!g->bounded[i]) g->list[u++] = (float)i;
+    long at = unbounded + cells + 1;
+    for (int k = 0; k < cells; k++)
+    {
+        g->list[unbounded + k] = (float)at;
+        at += (g->counts[k] < cap)? g->counts[k] : cap;
+        g->counts[k] = 0;
+    }
+    if (cells > 0) { g->list[unbounded + cells] = (float)at; rbl__gridVisit(g, s, true, margin); }
+    g->entries = (cells > 0)? (int)(at - unbounded - cells - 1) : 0;
+    if ((g->cappedCells > 0) && !g->capNoted)
+        TraceLog(LOG_WARNING, "RBL: RblSetScene: %i light grid cells are reached by more than RBL_LIGHT_GRID_CELL_LIGHTS (%i) lights (up to %i): each lists the scene's first %i, the others stay unlit there",
+                 g->cappedCells, cap, g->fullestCell, cap);
+    g->capNoted = (g->cappedCells > 0);
+    if (!rbl__gridTexture(&g->dataId, &g->dataRows, RBL__GRID_DATA_LIGHTS*4, dataRows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, g->data) ||
+        !rbl__gridTexture(&g->listId, &g->listRows, RBL__GRID_WIDTH, listRows, RL_PIXELFORMAT_UNCOMPRESSED_R32, g->list))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblSetScene: the light grid's float textures could not be made: clustered programs light none of %i lights", n);
+        memset(g->dims, 0, sizeof(g->dims));
+    }
+}
+
+// The grid's textures on their units (every clustered draw: other code may have bound those units)
+static void rbl__bindLightGrid(void)
+{
+    const rbl__LightGrid *g = &rbl__state.scene.grid;
+    rlActiveTextureSlot(RBL_LIGHT_GRID_TEXTURE_UNIT); rlEnableTexture((g->dataId != 0)? g->dataId : rlGetTextureIdDefault());
+    rlActiveTextureSlot(RBL_LIGHT_GRID_TEXTURE_UNIT + 1); rlEnableTexture((g->listId != 0)? g->listId : rlGetTextureIdDefault());
+    rlActiveTextureSlot(0);
+}
+
+// The grid into clustered program p (bound): built first when the scene changed; returns lights of
+// types p does not compile (left out, as the slots leave them out)
+static int rbl__uploadSceneGrid(const rbl__Program *p)
+{
+    rbl__Scene *s = &rbl__state.scene;
+    rbl__LightGrid *g = &s->grid;
+    if (g->dirty)
+    {
+        rbl__buildLightGrid();
+        rbl__bindLightGrid();
+    }
+    rlSetUniform(p->loc[RBL__U_GRID_ORIGIN], g->origin, SHADER_UNIFORM_VEC4, 1);
+    rlSetUniform(p->loc[RBL__U_GRID_DIMS], g->dims, SHADER_UNIFORM_IVEC4, 1);
+    int slotOf[RBL_MAX_SHADOWS] = { -1, -1, -1, -1 };
+    int skipped = 0;
+    for (int i = 0; i < s->lightCount; i++)
+    {
+        const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
+        if ((s->lightFeatures[i] & ~p->key.desc.shading.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) { skipped++; continue; }
+        if (d[15] > 0.0f) slotOf[(int)d[15] - 1] = i;
+    }
+    if (p->loc[RBL__U_SHADOW_MATRIX] != -1) rbl__uploadShadows(p, slotOf);
+    return skipped;
+}
+
+static void rbl__freeLightGrid(rbl__LightGrid *g)
+{
+    if (rbl__glUsable())
+    {
+        if (g->dataId != 0) rlUnloadTexture(g->dataId);
+        if (g->listId != 0) rlUnloadTexture(g->listId);
+    }
+    RBL_FREE(g->data); RBL_FREE(g->list); RBL_FREE(g->counts); RBL_FREE(g->bounded);
+    memset(g, 0, sizeof(*g));
+}
+
+#if defined(RBL_INSTRUMENTS)
+RblLightGridStats RblGetLightGridStats(void)
+{
+    const rbl__LightGrid *g = &rbl__state.scene.grid;
+    RblLightGridStats out;
+    memset(&out, 0, sizeof(out));
+    for (int a = 0; a < 3; a++) out.cells[a] = g->dims[a];
+    out.cellSize = g->cellSize;
+    out.origin = rbl__v3(g->origin[0], g->origin[1], g->origin[2]);
+    out.unbounded = g->dims[3];
+    out.entries = g->entries;
+    out.fullestCell = g->fullestCell;
+    out.cappedCells = g->cappedCells;
+    out.builds = g->builds;
+    return out;
+}
+#endif
+
 // The scene into one forward program: its first maxLights lights of compiled types, ambient, fog,
 // exposure and the shadow maps it receives; returns lights left out (no slot or type not compiled)
 static int rbl__uploadSceneLights(const rbl__Program *p)
@@ -8450,12 +8903,13 @@ static int rbl__uploadSceneLights(const rbl__Program *p)
 // The current scene into program p (every kind reads what it declares); returns lights left out
 static int rbl__uploadSceneInto(rbl__Program *p)
 {
-    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_PARAMS] == -1) && (p->loc[RBL__U_AMBIENT] == -1)) return 0;
+    if ((p->loc[RBL__U_LIGHT_COUNT] == -1) && (p->loc[RBL__U_GRID_DIMS] == -1) && (p->loc[RBL__U_FOG] == -1) && (p->loc[RBL__U_EXPOSURE] == -1) && (p->loc[RBL__U_SHADOW_PARAMS] == -1) && (p->loc[RBL__U_AMBIENT] == -1)) return 0;
     int skipped = 0;
     rlEnableShader(p->shader.id);
     bool pass = (p->key.kind == RBL__KIND_PASS);
     rbl__uploadSceneConstants(p);
     if (!pass && (p->loc[RBL__U_LIGHT_COUNT] != -1)) skipped = rbl__uploadSceneLights(p);
+    else if (!pass && (p->loc[RBL__U_GRID_DIMS] != -1)) skipped = rbl__uploadSceneGrid(p);
     rlDisableShader();
     return skipped;
 }
@@ -8554,6 +9008,7 @@ bool RblSetScene(const RblScene *scene)
         s->lights[map->light*RBL__LIGHT_FLOATS + 15] = (float)(k + 1);
     }
     rbl__bindSceneShadows();
+    s->grid.dirty = true;           // built by the first clustered program's upload (none: never)
     // Every live program now, so raylib's DrawModel/DrawMesh (which bind programs themselves) see it too
     for (int i = 0; i < rbl__state.programCount; i++)
     {
@@ -8561,7 +9016,9 @@ bool RblSetScene(const RblScene *scene)
         if (!rbl__programAlive(p)) { rbl__forgetProgram(p); i--; continue; }
         rbl__checkRaylibDrew(p);
         int skipped = rbl__uploadSceneInto(p);
-        if (skipped > 0)
+        if ((skipped > 0) && p->key.desc.clustered)
+            TraceLog(LOG_INFO, "RBL: RblSetScene: clustered lit program %u lights %i of %i lights (types not in lightFeatures)", p->shader.id, s->lightCount - skipped, s->lightCount);
+        else if (skipped > 0)
             TraceLog(LOG_INFO, "RBL: RblSetScene: lit program %u lights %i of %i lights (maxLights %i, or types not in lightFeatures)",
                      p->shader.id, s->lightCount - skipped, s->lightCount, p->key.desc.maxLights);
     }

@@ -3,6 +3,7 @@
 // irradiance E = c*I*attenuation*cone; reflected radiance = pi*BRDF*E*NdotL, pi folded into the
 // light, so a white Lambert surface lit head-on by E = 1 returns exactly 1.
 //   RBL_LIGHTS n              light slots
+//   RBL_LIGHT_GRID            every light of the scene from the light grid instead (light_grid.glsl)
 //   RBL_LIGHT_DIRECTIONAL     directional lights present (rblLightPosition.w = 0)
 //   RBL_LIGHT_SPOT            spot cones
 //   RBL_LIGHT_CLASSIC         constant/linear/quadratic attenuation
@@ -17,11 +18,12 @@
 #include "shadows.glsl"
 #include "shadow_tint.glsl"
 #include "transmission.glsl"
+#include "light_grid.glsl"
 
 #define RBL_MIN_NDOTV 1e-4          // grazing views: the visibility term stays finite
 #define RBL_MIN_DIST2 1e-4          // falloff denominator: a light on the surface stays finite
 
-#if RBL_LIGHTS > 0
+#if (RBL_LIGHTS > 0) && !defined(RBL_LIGHT_GRID)
 uniform int rblLightCount;
 uniform vec4 rblLightPosition[RBL_LIGHTS];  // xyz position, w 1; directional: xyz unit vector toward the light, w 0
 uniform vec4 rblLightColor[RBL_LIGHTS];     // rgb linear colour x intensity, a 1/range (0 = no window)
@@ -33,7 +35,7 @@ uniform vec3 rblLightAttenuation[RBL_LIGHTS]; // constant, linear, quadratic (wi
 #endif
 #endif
 #if RBL_SHADOWS > 0
-uniform ivec4 rblShadowLight;               // light slot shadowed by map k (-1 = none)
+uniform ivec4 rblShadowLight;               // light slot (grid: scene light) shadowed by map k (-1 = none)
 #endif
 
 // Radiance reflected toward v per unit irradiance arriving from l (pi folded in), for NdotL > 0
@@ -73,10 +75,15 @@ vec3 rblBrdf(RblShadingPoint s, vec3 v, vec3 l, float NdotL)
 // once per map before the light loop, not per light slot (CPU rasterisers run every branch of a loop)
 float rblShadowOfMap(int k, RblShadingPoint s, int light)
 {
+#ifdef RBL_LIGHT_GRID
+    if (light < 0) return 1.0;
+    vec4 p = rblGridLightTexel(light, 0);
+    p.w = (int(p.w) == 2)? 0.0 : 1.0;               // feature bits 2: directional
+#elif RBL_GLSL >= 300
     if ((light < 0) || (light >= rblLightCount)) return 1.0;
-#if RBL_GLSL >= 300
     vec4 p = rblLightPosition[light];
 #else
+    if ((light < 0) || (light >= rblLightCount)) return 1.0;
     vec4 p = vec4(0.0);                             // GLSL ES 1.00: uniform arrays by loop index only
     for (int i = 0; i < RBL_LIGHTS; i++) if (i == light) p = rblLightPosition[i];
 #endif
@@ -134,11 +141,12 @@ vec3 rblEvalLight(RblShadingPoint s, vec3 v, vec4 p, vec4 c, vec4 spot, vec3 k, 
 #endif
 }
 
-// Sum of the light slots at a surface point seen along the unit view vector v (rblViewVector)
+// Sum of the light slots (or of the grid's lights reaching it) at a surface point seen along the unit
+// view vector v (rblViewVector)
 vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 {
     vec3 sum = vec3(0.0);
-#if RBL_LIGHTS > 0
+#if (RBL_LIGHTS > 0) || defined(RBL_LIGHT_GRID)
 #if RBL_SHADOWS > 0
     vec4 shadowed = vec4(1.0);                      // each map's factor, for the light it shadows
     shadowed.x = rblShadowOfMap(0, s, rblShadowLight.x);
@@ -164,9 +172,34 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 #endif
 #endif
 #endif
+#ifdef RBL_LIGHT_GRID
+    // The unbounded lights, then the cell's: one loop, so the body is compiled once
+    ivec2 cell = rblGridCell(s.position);
+    int unbounded = rblGridDims.w;
+    int entries = unbounded + cell.y - cell.x;
+    for (int e = 0; e < entries; e++)
+    {
+        int i = rblGridEntry((e < unbounded)? e : (cell.x + e - unbounded));
+        vec4 p = rblGridLightTexel(i, 0);
+        int features = int(p.w);
+        if ((features & RBL_GRID_SKIPPED) != 0) continue;
+        p.w = (features == 2)? 0.0 : 1.0;
+        vec4 c = rblGridLightTexel(i, 1);
+#ifdef RBL_LIGHT_SPOT
+        vec4 spot = rblGridLightTexel(i, 2);
+#else
+        vec4 spot = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+#ifdef RBL_LIGHT_CLASSIC
+        vec3 k = rblGridLightTexel(i, 3).xyz;
+#else
+        vec3 k = vec3(0.0, 0.0, 1.0);
+#endif
+#else
     for (int i = 0; i < RBL_LIGHTS; i++)
     {
         if (i >= rblLightCount) break;
+        vec4 p = rblLightPosition[i], c = rblLightColor[i];
 #ifdef RBL_LIGHT_SPOT
         vec4 spot = rblLightSpot[i];
 #else
@@ -176,6 +209,7 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
         vec3 k = rblLightAttenuation[i];
 #else
         vec3 k = vec3(0.0, 0.0, 1.0);
+#endif
 #endif
 #if RBL_SHADOWS > 0
         float shadow = (i == rblShadowLight.x)? shadowed.x : ((i == rblShadowLight.y)? shadowed.y :
@@ -188,9 +222,9 @@ vec3 rblDirectLight(RblShadingPoint s, vec3 v)
 #endif
 #if (RBL_SHADOWS > 0) && defined(RBL_SHADOW_TINT)
         vec3 tint = (i == rblShadowLight.x)? tint0 : ((i == rblShadowLight.y)? tint1 : ((i == rblShadowLight.z)? tint2 : ((i == rblShadowLight.w)? tint3 : vec3(1.0))));
-        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow)*tint;
+        sum += rblEvalLight(s, v, p, c, spot, k, shadow)*tint;
 #else
-        sum += rblEvalLight(s, v, rblLightPosition[i], rblLightColor[i], spot, k, shadow);
+        sum += rblEvalLight(s, v, p, c, spot, k, shadow);
 #endif
     }
 #endif

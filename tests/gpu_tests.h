@@ -25,6 +25,7 @@
 #include "test_thin.c"
 #include "test_deferred_thin.c"
 #include "test_cull.c"
+#include "test_clustered.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_BATCH_TESTS,
@@ -46,6 +47,7 @@ static const RtTest rblGpuTests[] = {
         RBL_THIN_TESTS,
         RBL_DEFERRED_THIN_TESTS,
         RBL_CULL_TESTS,
+        RBL_CLUSTERED_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

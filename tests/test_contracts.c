@@ -765,6 +765,49 @@ static void c_unload_lit_shader(void)
     EXPECT_REFUSED(V(RblUnloadLitShader(&stale)));
 }
 
+// The light grid of clustered programs under extreme accepted scenes: positions near the 2^60 limit,
+// tiny and huge ranges, every light at one point (capped cells: one line), the largest scene; the grid
+// stays within its limits and a draw logs nothing
+static void c_light_grid_extremes(void)
+{
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.clustered = true;
+    Material m = litMaterial(desc);
+    static RblLight l[RBL_MAX_SCENE_LIGHTS];
+    RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = l;
+    for (int k = 0; k < 4; k++)
+    {
+        for (int i = 0; i < RBL_MAX_SCENE_LIGHTS; i++)
+        {
+            l[i] = pointLight();
+            l[i].intensity = RBL_MAX_LIGHT_INTENSITY;
+            float far = 1.1e18f*((i & 1)? 1.0f : -1.0f);
+            if (k == 0) { l[i].position = (Vector3){ far, -far, (float)i }; l[i].range = 1e-30f; }
+            if (k == 1) { l[i].position = (Vector3){ (float)(i%7), (float)(i%5), 0.0f }; l[i].range = (i%3 == 0)? 1e18f : 0.5f; }
+            if (k == 2) { l[i].position = (i < RBL_MAX_SCENE_LIGHTS/8)? (Vector3){ (float)i, 0.0f, 1.0f } : (Vector3){ 0.0f, 0.0f, 1.0f }; l[i].range = 0.5f; }
+            if (k == 3) { l[i].position = (Vector3){ far*(float)(i%3 - 1), 0.0f, (float)(i%11)*1e17f }; l[i].range = 1e17f; }
+        }
+        scene.lightCount = RBL_MAX_SCENE_LIGHTS;
+        warnings = 0;
+        ck(RblSetScene(&scene), "scene %d refused: %s", k, lastWarning);
+        RblLightGridStats g = RblGetLightGridStats();
+        long cells = (long)g.cells[0]*g.cells[1]*g.cells[2];
+        ck((cells <= RBL_LIGHT_GRID_MAX_CELLS) && (g.entries >= 0) && (g.unbounded >= 0) && (g.unbounded <= RBL_MAX_SCENE_LIGHTS) && isfinite(g.cellSize),
+           "scene %d: grid %dx%dx%d, %d entries, %d unbounded, cell %g", k, g.cells[0], g.cells[1], g.cells[2], g.entries, g.unbounded, g.cellSize);
+        ck(warnings == ((k == 2)? 1 : 0), "scene %d: %d log lines (%s)", k, warnings, lastWarning);
+        warnings = 0;
+        BeginTextureMode(target);
+        BeginMode3D(camera());
+        RblDrawBillboard(camera(), m, billboard());
+        EndMode3D();
+        EndTextureMode();
+        ck(warnings == 0, "scene %d: the draw logged %s", k, lastWarning);
+    }
+    RblUnloadLitShader(&m.shader);
+    MemFree(m.maps);
+}
+
 static void c_light_features(void)
 {
     RblLight l = pointLight();
@@ -2371,6 +2414,7 @@ static const Case cases[] = {
     { "RblUnloadLitShader", "NULL, zero, default, double, stale", c_unload_lit_shader, "null stale-header stale-raylib" },
     { "RblGetLightFeatures", "NULL, counts, types", c_light_features, "null counts" },
     { "RblSetScene", "counts, maps, fog, every float of scene and lights", c_set_scene, "counts floats" },
+    { "RblSetScene RblGetLightGridStats", "clustered scenes: far positions, tiny/huge ranges, one point (capped), the largest", c_light_grid_extremes, "counts floats" },
     { "RblDrawModel RblDrawMesh", "bad models, transforms, materials, variants", c_draw_model_and_mesh, "null-inside floats variants" },
     { "RblDrawModel RblDrawMesh RblDrawBillboard", "skinned programs: bones NULL, counts, NaN bones, meshes without bone data, shadow pass", c_draw_skinned_model, "null-inside counts floats variants" },
     { "RblLoadGBuffer", "every desc field out of range", c_gbuffer_load, "counts" },

@@ -451,9 +451,9 @@ static void test_thin_blended_casters_cast_partial_coloured_shadows(void)
 }
 
 #define RBL_THIN_TESTS \
-        RT_TEST(test_thin_transmission_matches_the_double_reference), \
-        RT_TEST(test_thin_transmission_zero_renders_as_the_program_without_it), \
-        RT_TEST(test_thin_transmission_behind_an_occluder_is_shadowed), \
-        RT_TEST(test_thin_relief_matches_the_double_march_on_a_step_a_dome_and_a_ridge), \
-        RT_TEST(test_thin_relief_off_and_flat_relief_shadow_nothing), \
-        RT_TEST_GLSL3(test_thin_blended_casters_cast_partial_coloured_shadows)
+    RT_TEST(test_thin_transmission_matches_the_double_reference), \
+    RT_TEST(test_thin_transmission_zero_renders_as_the_program_without_it), \
+    RT_TEST(test_thin_transmission_behind_an_occluder_is_shadowed), \
+    RT_TEST(test_thin_relief_matches_the_double_march_on_a_step_a_dome_and_a_ridge), \
+    RT_TEST(test_thin_relief_off_and_flat_relief_shadow_nothing), \
+    RT_TEST_GLSL3(test_thin_blended_casters_cast_partial_coloured_shadows)

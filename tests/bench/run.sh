@@ -24,6 +24,10 @@ echo "== bench_deferred"
 BENCH_CSV="$csv" "$BUILD/bench/bench_deferred"
 
 echo
+echo "== bench_clustered"
+BENCH_CSV="$csv" "$BUILD/bench/bench_clustered"
+
+echo
 echo "== bench_shadows"
 BENCH_CSV="$csv" "$BUILD/bench/bench_shadows"
 
