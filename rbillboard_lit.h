@@ -789,7 +789,8 @@ typedef enum {
 // Billboard flags
 typedef enum {
     RBL_FRAME_ROTATED = 1,          // Atlas frame stored rotated 90 degrees clockwise (texture packers)
-    RBL_ROUND_CYLINDER = 2          // Rounded normals bend around the up axis only (default: sphere)
+    RBL_ROUND_CYLINDER = 2,         // Rounded normals bend around the up axis only (default: sphere)
+    RBL_FRAME_POLYGON = 0xFFFFF0    // Bits 4..23: a loaded atlas's polygon frame (RblAtlasBillboard sets them; 0 = the quad), drawn as its triangles
 } RblBillboardFlags;
 
 // Cross-fade to a second atlas frame (a program with RblLitShaderDesc.crossFade mixes the two); zero = none
@@ -1213,7 +1214,7 @@ typedef struct RblAtlasFrame {
     int page;                       // Sheet (RblAtlas.pages) the frame lies in
     Rectangle block;                // Texels it occupies in its sheet (stored turned: the h x w block)
     Rectangle source;               // As RblBillboard.source takes it with flags (libGDX's counter-clockwise turn: both extents negated)
-    unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above)
+    unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above); a polygon frame's RBL_FRAME_POLYGON bits
     Rectangle trim;                 // Drawn (trimmed) part of the frame: pixels, top-left origin, upright
     Vector2 size;                   // Untrimmed frame size in pixels
     Vector2 pivot;                  // Pivot as fractions of size from the top-left (none given: 0.5, 1, the bottom centre)
@@ -1289,6 +1290,7 @@ RBLAPI const char *RblGetFailureReason(void);                                // 
 // Geometry (CPU, no GL needed; code: >>geometry)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
+RBLAPI int RblBillboardQuads(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex *out, int capacity); // Emit what a batch draws: quads of 4 vertices (triangles 0-1-2, 0-2-3; last vertex repeated = one triangle), a polygon frame's triangle pairs; returns the quads (capacity short or out NULL: the count, nothing written); -1 = skipped
 
 // Batched and immediate paths (GL; code: >>batch)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
@@ -1576,6 +1578,11 @@ typedef struct rbl__BatchState {
     unsigned int idVboId;           // GPU copy, created at the first identified RblEndBatch
     int idGpuCapacity;              // Billboards idVboId holds
     bool identified;                // ids[0..count) is filled
+    // Polygon frames (RBL_FRAME_POLYGON): a billboard takes one quad slot per pair of its triangles.
+    // From the first such billboard, every slot's sort key (its billboard's quad centre) is kept
+    float *centres;                 // 3 floats per slot while polygonal (capacity slots)
+    bool polygonal;                 // centres[0..count) is filled
+    int extraSlots;                 // Slots beyond one per billboard since RblBeginBatch() (count - extraSlots billboards)
 } rbl__BatchState;
 
 // An instance buffer's own data (RblInstanceBuffer.state)
@@ -1702,6 +1709,21 @@ typedef struct rbl__Live {
     const void *state;              // Its private state
 } rbl__Live;
 
+// A polygon frame as the draw paths read it (an atlas's, registered under RBL_FRAME_POLYGON handles)
+typedef struct rbl__Polygon {
+    const Vector2 *frac;            // Each vertex as fractions (a along +u, b along +v) of the frame's source rectangle
+    const unsigned short *slots;    // 4 vertices per slot, drawn as a quad is: (0, 1, 2) and (0, 2, 3); a repeated last vertex = one triangle
+    int slotCount;                  // Slots (a batch draws each as one quad)
+    int triangles;                  // Triangles over all slots (the instanced stage's corners / 3)
+} rbl__Polygon;
+
+// Handles [first, first + count) of one atlas's polygons
+typedef struct rbl__PolyRange {
+    unsigned int first;
+    int count;
+    const rbl__Polygon *polygons;
+} rbl__PolyRange;
+
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
 typedef struct rbl__State {
     rbl__Program **programs;        // The one program registry (each entry allocated: pointers stay valid as it grows)
@@ -1737,6 +1759,15 @@ typedef struct rbl__State {
     rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
     int liveCount;                  // Slots used (free ones are reused)
     int liveCapacity;
+    rbl__PolyRange *polyRanges;     // Polygon handles of the loaded atlases, by first handle
+    int polyRangeCount;
+    int polyRangeCapacity;
+    unsigned int polyNext;          // Next handle handed out (handles of an unloaded atlas are reused only once 2^20 - 1 ran out)
+    unsigned int polyVersion;       // Changes with every range added or removed (the GPU table follows it)
+    unsigned int polyTableId;       // The instanced stage's polygon table (RGBA32F), built at the first draw that needs it
+    unsigned int polyTableVersion;  // polyVersion it was built at
+    unsigned int polyTableBase;     // Lowest handle it holds
+    int polyTableMaxCorners;        // Most corners (3 per triangle) of one polygon in it
 } rbl__State;
 
 static rbl__State rbl__state;
@@ -4698,7 +4729,113 @@ static void rbl__fadeVertices(const RblBillboard *b, const RblFade *fade, int te
     }
 }
 
-static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4]);
+// ---- polygon frames: handles, lookup --------------------------------------------------------------
+// A billboard's or instance's RBL_FRAME_POLYGON bits name one registered polygon (an atlas's frame).
+// Flags from 2^24 up carry none: the instanced stage reads flags as a float, exact below 2^24 only.
+#define RBL__POLYGON_SHIFT 4
+#define RBL__POLYGON_HANDLES 0xFFFFFu
+
+static inline unsigned int rbl__polygonHandle(unsigned int flags)
+{
+    return (flags < 0x1000000u)? (flags & (unsigned int)RBL_FRAME_POLYGON) >> RBL__POLYGON_SHIFT : 0u;
+}
+
+// The polygon of a handle, or NULL when no loaded atlas holds it (ranges sorted by first handle)
+static const rbl__Polygon *rbl__polygonAt(unsigned int handle)
+{
+    int lo = 0, hi = rbl__state.polyRangeCount;
+    while (lo < hi)
+    {
+        int mid = (lo + hi)/2;
+        const rbl__PolyRange *r = &rbl__state.polyRanges[mid];
+        if (r->first + (unsigned int)r->count <= handle) lo = mid + 1; else hi = mid;
+    }
+    if ((lo < rbl__state.polyRangeCount) && (rbl__state.polyRanges[lo].first <= handle)) return &rbl__state.polyRanges[lo].polygons[handle - rbl__state.polyRanges[lo].first];
+    return NULL;
+}
+
+// A billboard's polygon: *out NULL for the quad; false when its bits name no loaded polygon
+// The bits an atlas sets in a billboard's flags (the rest are the caller's)
+#define RBL__FRAME_BITS ((unsigned int)RBL_FRAME_ROTATED | (unsigned int)RBL_FRAME_POLYGON)
+
+static inline bool rbl__billboardPolygon(unsigned int flags, const rbl__Polygon **out)
+{
+    unsigned int h = rbl__polygonHandle(flags);
+    *out = (h != 0u)? rbl__polygonAt(h) : NULL;
+    return (h == 0u) || (*out != NULL);
+}
+
+#if !defined(RBL_NO_ATLAS)
+// Whether handles [first, first + count) are all free and valid
+static bool rbl__polygonRangeFree(unsigned int first, int count)
+{
+    if ((first == 0u) || ((unsigned int)count > RBL__POLYGON_HANDLES) || (first > RBL__POLYGON_HANDLES + 1u - (unsigned int)count)) return false;
+    for (int i = 0; i < rbl__state.polyRangeCount; i++)
+    {
+        const rbl__PolyRange *r = &rbl__state.polyRanges[i];
+        if ((first < r->first + (unsigned int)r->count) && (r->first < first + (unsigned int)count)) return false;
+    }
+    return true;
+}
+
+// Registers count polygons under consecutive handles: the first, or 0 when none are left or out of
+// memory. New handles follow the last ones handed out, so a billboard kept past its atlas's unload is
+// refused rather than drawn as another atlas's polygon (until 2^20 - 1 handles ran out: then reused)
+static unsigned int rbl__polygonRegister(const rbl__Polygon *polygons, int count)
+{
+    unsigned int first = (rbl__state.polyNext == 0u)? 1u : rbl__state.polyNext;
+    if (!rbl__polygonRangeFree(first, count))
+    {
+        first = 1u;
+        for (int i = 0; (i <= rbl__state.polyRangeCount) && !rbl__polygonRangeFree(first, count); i++)
+        {
+            if (i == rbl__state.polyRangeCount) { first = 0u; break; }
+            first = rbl__state.polyRanges[i].first + (unsigned int)rbl__state.polyRanges[i].count;
+        }
+        if ((first == 0u) || !rbl__polygonRangeFree(first, count)) return 0u;
+    }
+    if (rbl__state.polyRangeCount == rbl__state.polyRangeCapacity)
+    {
+        int cap = (rbl__state.polyRangeCapacity > 0)? 2*rbl__state.polyRangeCapacity : 8;
+        rbl__PolyRange *r = (rbl__PolyRange *)RBL_REALLOC(rbl__state.polyRanges, (size_t)cap*sizeof(rbl__PolyRange));
+        if (r == NULL) return 0u;
+        rbl__state.polyRanges = r;
+        rbl__state.polyRangeCapacity = cap;
+    }
+    int at = 0;
+    while ((at < rbl__state.polyRangeCount) && (rbl__state.polyRanges[at].first < first)) at++;
+    memmove(&rbl__state.polyRanges[at + 1], &rbl__state.polyRanges[at], (size_t)(rbl__state.polyRangeCount - at)*sizeof(rbl__PolyRange));
+    rbl__state.polyRanges[at].first = first;
+    rbl__state.polyRanges[at].count = count;
+    rbl__state.polyRanges[at].polygons = polygons;
+    rbl__state.polyRangeCount++;
+    rbl__state.polyNext = first + (unsigned int)count;
+    rbl__state.polyVersion++;
+    return first;
+}
+
+static void rbl__polygonUnregister(unsigned int first)
+{
+    for (int i = 0; i < rbl__state.polyRangeCount; i++)
+        if (rbl__state.polyRanges[i].first == first)
+        {
+            memmove(&rbl__state.polyRanges[i], &rbl__state.polyRanges[i + 1], (size_t)(rbl__state.polyRangeCount - i - 1)*sizeof(rbl__PolyRange));
+            rbl__state.polyRangeCount--;
+            rbl__state.polyVersion++;
+            return;
+        }
+}
+#endif
+
+// Slots a billboard takes in a batch: 1 for the quad, one per slot of its polygon (0: nothing drawn)
+static inline int rbl__slotCount(const rbl__Polygon *poly) { return (poly != NULL)? poly->slotCount : 1; }
+
+static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3]);
+
+static inline bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+{
+    return rbl__expandQuad(view, cast, cache, textureWidth, textureHeight, b, NULL, out, NULL);
+}
 
 static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
@@ -4706,8 +4843,11 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
     return rbl__expandBillboard(view, cast, cache, textureWidth, textureHeight, b, out);
 }
 
-// rbl__billboardVertices once b is known good
-static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+// rbl__billboardVertices once b is known good: the quad's four corners, or with poly its slots (4
+// vertices each) at the quad's own attributes: position, texture coordinate and (affine over each of
+// the quad's two triangles, as the rasteriser interpolates them) normal and tangent, and the quad's
+// centre (the sort key of each slot)
+static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3])
 {
     rbl__facingFrame(view, cast, b, cache);
     Vector3 R = cache->right, U = cache->up, N = cache->normal;
@@ -4811,9 +4951,11 @@ static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *ca
     bool cylinder = (b->flags & RBL_ROUND_CYLINDER) != 0;
     static const float dxs[4] = { -1.0f, 1.0f, 1.0f, -1.0f }, dys[4] = { -1.0f, -1.0f, 1.0f, 1.0f };
 
+    RblVertex corners[4];
+    RblVertex *q = (poly != NULL)? corners : out;
     for (int i = 0; i < 4; i++)
     {
-        RblVertex *v = &out[i];
+        RblVertex *v = &q[i];
         v->position[0] = p[i].x; v->position[1] = p[i].y; v->position[2] = p[i].z;
         v->texcoord[0] = uv[i][0]; v->texcoord[1] = uv[i][1];
         Vector3 n = N, tg = T;
@@ -4828,6 +4970,41 @@ static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *ca
         v->normal[0] = n.x; v->normal[1] = n.y; v->normal[2] = n.z;
         v->tangent[0] = tg.x; v->tangent[1] = tg.y; v->tangent[2] = tg.z; v->tangent[3] = w;
         memcpy(v->color, col, 4);
+    }
+    if (poly != NULL)
+    {
+        // A polygon vertex at frame fractions (a, b) of the source lies at sprite (s, t) (as the
+        // corners: a mirror swaps an axis's ends, a rotated frame holds sprite (s,t) at (1-t, s)),
+        // quad fraction (s, 1 - t) from the bottom-left. A mirror turns the triangles over: each
+        // slot is then walked the other way round, (A, D, C, B), a lone triangle (A, C, B, B), so
+        // they face as the quad does.
+        static const int back[2][4] = { { 0, 3, 2, 1 }, { 0, 2, 1, 1 } };
+        const bool reverse = flipU != flipV;
+        const float su = fabsf(src.width), sv = fabsf(src.height);
+        for (int e = 0; e < 3; e++) centre[e] = 0.25f*(q[0].position[e] + q[1].position[e] + q[2].position[e] + q[3].position[e]);
+        for (int k = 0; k < poly->slotCount; k++)
+            for (int c = 0; c < 4; c++)
+            {
+                const unsigned short *slot = poly->slots + 4*k;
+                const Vector2 f = poly->frac[slot[reverse? back[slot[2] == slot[3]][c] : c]];
+                float s = rotated? f.y : f.x, t = rotated? 1.0f - f.x : f.y;
+                if (flipU) s = 1.0f - s;
+                if (flipV) t = 1.0f - t;
+                const float up = 1.0f - t, x = x0*(1.0f - s) + x1*s, y = y0*(1.0f - up) + y1*up;
+                RblVertex *v = &out[4*k + c];
+                v->position[0] = P.x + R.x*x + U.x*y; v->position[1] = P.y + R.y*x + U.y*y; v->position[2] = P.z + R.z*x + U.z*y;
+                v->texcoord[0] = (src.x + f.x*su)*invW; v->texcoord[1] = (src.y + f.y*sv)*invH;
+                // Which of the quad's triangles (0,1,2) or (0,2,3) holds it, and its weights there
+                int i1 = (s >= up)? 1 : 2, i2 = (s >= up)? 2 : 3;
+                float w0 = (s >= up)? 1.0f - s : 1.0f - up, w1 = (s >= up)? s - up : s, w2 = (s >= up)? up : up - s;
+                for (int e = 0; e < 3; e++)
+                {
+                    v->normal[e] = (round > 0.0f)? q[0].normal[e]*w0 + q[i1].normal[e]*w1 + q[i2].normal[e]*w2 : q[0].normal[e];
+                    v->tangent[e] = (round > 0.0f)? q[0].tangent[e]*w0 + q[i1].tangent[e]*w1 + q[i2].tangent[e]*w2 : q[0].tangent[e];
+                }
+                v->tangent[3] = w;
+                memcpy(v->color, col, 4);
+            }
     }
     return true;
 }
@@ -4846,6 +5023,24 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
         return false;
     }
     return true;
+}
+
+int RblBillboardQuads(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex *out, int capacity)
+{
+    const char *bad = NULL;
+    const rbl__Polygon *poly = NULL;
+    if ((view == NULL) || (b == NULL) || (capacity < 0)) bad = "NULL view or billboard, or negative capacity";
+    else if (!rbl__bounded3(view->eye) || !rbl__unit3(view->right) || !rbl__unit3(view->up) || !rbl__unit3(view->back)) bad = "view is not a camera frame (NaN/Inf, huge eye or non-unit axes)";
+    else if (!rbl__billboardOk(b, textureWidth, textureHeight)) bad = "billboard skipped (NaN/Inf or huge input, bad facing or texture size)";
+    else if (!rbl__billboardPolygon(b->flags, &poly)) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBillboardQuads: %s", bad); return -1; }
+    const int quads = rbl__slotCount(poly);
+    if ((out == NULL) || (capacity < quads)) return quads;
+    rbl__FrameCache cache;
+    cache.facing = -1;
+    float centre[3];
+    rbl__expandQuad(view, NULL, &cache, textureWidth, textureHeight, b, poly, out, centre);
+    return quads;
 }
 
 //----------------------------------------------------------------------------------
@@ -4966,6 +5161,7 @@ static void rbl__freeBatchState(rbl__BatchState *b)
     RBL_FREE(b->fadeSorted);
     RBL_FREE(b->ids);
     RBL_FREE(b->idsSorted);
+    RBL_FREE(b->centres);
     RBL_FREE(b);
 }
 
@@ -5103,6 +5299,8 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->frame.facing = -1;      // the frame depends on the view
     batch->fading = false;
     batch->identified = false;
+    batch->polygonal = false;
+    batch->extraSlots = 0;
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
@@ -5141,6 +5339,12 @@ static bool rbl__growBatch(rbl__BatchState *batch)
         if (ids == NULL) return false;
         batch->ids = ids;
     }
+    if (batch->centres != NULL)
+    {
+        float *centres = (float *)RBL_REALLOC(batch->centres, (size_t)newCapacity*3*sizeof(float));
+        if (centres == NULL) return false;
+        batch->centres = centres;
+    }
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
     if (vertices == NULL) return false;     // the caller logs the skip (a grown fade array is kept: capacity follows later)
     TraceLog(LOG_INFO, "RBL: batch grown from %i to %i billboards (reserve more in RblLoadBatch)", batch->capacity, newCapacity);
@@ -5167,7 +5371,7 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
     rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAdd");
     if (batch == NULL) return false;
     bool added = rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
-    pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
+    pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
 
@@ -5182,18 +5386,23 @@ bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billb
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: RblBatchAddFade: billboard skipped (%s); further skips this batch are not logged", (fade == NULL)? "NULL fade" : "fade weight outside 0..1, NaN/Inf or huge source, or bad clip");
     }
     else added = rbl__batchAdd(batch, &material, billboard, fade, "RblBatchAddFade");
-    pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
+    pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
 
 // fade: NULL for a plain billboard (checked by the caller otherwise)
 static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
 {
-    if ((batch->count == batch->capacity) && !rbl__growBatch(batch))
-    {
-        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", fn, batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
-        return false;
-    }
+    // A polygon frame takes its slots (a cross-fade draws the quad: the union of two frames' trims)
+    const rbl__Polygon *poly = NULL;
+    const bool polyKnown = (billboard == NULL) || (fade != NULL) || rbl__billboardPolygon(billboard->flags, &poly);
+    const int slots = rbl__slotCount(poly);
+    while (batch->count + slots > batch->capacity)
+        if (!rbl__growBatch(batch))
+        {
+            if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", fn, batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
+            return false;
+        }
 
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, material);
@@ -5203,9 +5412,23 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     if ((bad == NULL) && newRun) rbl__albedoSize(material, &texW, &texH);       // the maps are read once the shader is known live
     else if (bad == NULL) { texW = run->textureWidth; texH = run->textureHeight; }   // the same maps (rbl__sameMaterial)
     if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
+    if ((bad == NULL) && !polyKnown) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
     if ((bad == NULL) && (batch->planeCount > 0) && rbl__culled(batch, billboard)) { batch->culled++; return true; }
-    if ((bad == NULL) && !rbl__expandBillboard(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    float centre[3] = { 0.0f, 0.0f, 0.0f };
+    if ((bad == NULL) && !rbl__expandQuad(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, poly, batch->vertices + (size_t)batch->count*4, centre))
         bad = "NaN/Inf or huge input, or bad facing";
+    if ((bad == NULL) && (poly != NULL) && !batch->polygonal)
+    {
+        // The sort keys of the slots so far: each a quad's own centre
+        if (batch->centres == NULL) batch->centres = (float *)RBL_MALLOC((size_t)batch->capacity*3*sizeof(float));
+        if (batch->centres == NULL) bad = "out of memory for the polygon slots' sort keys";
+        for (int i = 0; (bad == NULL) && (i < batch->count); i++)
+        {
+            const RblVertex *v = batch->vertices + (size_t)i*4;
+            for (int e = 0; e < 3; e++) batch->centres[3*i + e] = 0.25f*(v[0].position[e] + v[1].position[e] + v[2].position[e] + v[3].position[e]);
+        }
+        if (bad == NULL) batch->polygonal = true;
+    }
     if (bad != NULL)
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
@@ -5229,7 +5452,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         batch->identified = true;
         unsigned int id = rbl__casterId(billboard->position, billboard->size, billboard->origin);
         unsigned char *o = batch->ids + (size_t)batch->count*RBL__ID_BYTES;
-        for (int v = 0; v < 4; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
+        for (int v = 0; v < 4*slots; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
     }
     // The fade stream starts with the first faded billboard (earlier ones get weight 0); a clipped
     // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn).
@@ -5248,8 +5471,19 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         batch->fading = true;
         float *row = batch->fade + (size_t)batch->count*RBL__FADE_FLOATS;
         if (fade != NULL) rbl__fadeVertices(billboard, fade, texW, texH, row);
-        else memset(row, 0, RBL__FADE_FLOATS*sizeof(float));
+        else memset(row, 0, (size_t)slots*RBL__FADE_FLOATS*sizeof(float));
     }
+    if (batch->polygonal)
+        for (int i = 0; i < slots; i++)
+        {
+            float *c = batch->centres + 3*((size_t)batch->count + i);
+            if (poly != NULL) { c[0] = centre[0]; c[1] = centre[1]; c[2] = centre[2]; }
+            else
+            {
+                const RblVertex *v = batch->vertices + (size_t)batch->count*4;
+                for (int e = 0; e < 3; e++) c[e] = 0.25f*(v[0].position[e] + v[1].position[e] + v[2].position[e] + v[3].position[e]);
+            }
+        }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
     if (!batch->backFacing)
@@ -5273,8 +5507,9 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         run->count = 0;
         run->textureWidth = texW; run->textureHeight = texH;
     }
-    run->count++;
-    batch->count++;
+    run->count += slots;
+    batch->count += slots;
+    batch->extraSlots += slots - 1;
     return true;
 }
 
@@ -5386,6 +5621,7 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
             Vector3 c = { 0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
                           0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
                           0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]) };
+            if (batch->polygonal) c = rbl__v3(batch->centres[3*i], batch->centres[3*i + 1], batch->centres[3*i + 2]);   // a polygon's slots sort as its quad
             batch->keys[i].depth = -rbl__dot(rbl__sub(c, eye), back);
             batch->keys[i].index = i;
             batch->keys[i].run = r;
@@ -5601,10 +5837,16 @@ static void rbl__drawBillboard(Camera3D camera, Material material, const RblBill
     if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);
     if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && (fade != NULL) && !rbl__fadeOk(fade, RBL__BILLBOARD_LIMIT_EXPONENT)) bad = "fade weight outside 0..1, NaN/Inf or huge source, or bad clip";
+    const rbl__Polygon *poly = NULL;
+    if ((bad == NULL) && (fade == NULL) && !rbl__billboardPolygon(billboard->flags, &poly)) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
+    if ((bad == NULL) && (rbl__slotCount(poly) > RBL_MAX_BATCH_BILLBOARDS)) bad = "its polygon has more triangle pairs than RBL_MAX_BATCH_BILLBOARDS";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return; }
+    // One quad slot, or as many as the polygon's (the batch is made that large, without a growth line)
+    int slots = (rbl__slotCount(poly) > 1)? rbl__slotCount(poly) : 1;
+    if ((immediate->state != NULL) && (immediate->state->capacity < slots)) RblUnloadBatch(immediate);
     if (immediate->state == NULL)
     {
-        *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
+        *immediate = RblLoadBatch(slots);     // created on first use, released by RblClose()
         if (!RblIsBatchValid(*immediate)) return;
     }
     RblBeginBatch(immediate, camera);
@@ -5627,6 +5869,7 @@ static void rbl__tidyAfterClose(void)
     RBL_FREE(rbl__state.dead);
     RBL_FREE(rbl__state.programs);
     RBL_FREE(rbl__state.live);
+    RBL_FREE(rbl__state.polyRanges);
     memset(&rbl__state, 0, sizeof(rbl__state));
 }
 
@@ -9961,6 +10204,10 @@ typedef struct rbl__AtlasState {
     rbl__AtlasPolyRef *polygonRefs; int polygonRefCap;
     Vector2 *polyPoints; int polyPointCount, polyPointCap;          // each polygon's vertices, then its uvs
     unsigned short *polyIndices; int polyIndexCount, polyIndexCap;
+    rbl__Polygon *polyDraw;                     // Per polygon, what the draw paths read (made at publication)
+    Vector2 *polyFrac;                          // ... its vertices as fractions of the frame's source
+    unsigned short *polySlots;                  // ... its slots (4 vertices each)
+    unsigned int polyFirst;                     // Handle of polygon 0 (0 = none registered)
     char **pools; int poolCount, poolCap;       // name storage: one block per parsed text (and per path), never moved
     char *pool; size_t poolUsed, poolSize;      // the current block
     int format;
@@ -9994,6 +10241,8 @@ static void rbl__atlasErrorf(rbl__AtlasState *s, long at, const char *fmt, ...)
 static void rbl__atlasFree(rbl__AtlasState *s)
 {
     if (s == NULL) return;
+    if (s->polyFirst != 0u) rbl__polygonUnregister(s->polyFirst);
+    RBL_FREE(s->polyDraw); RBL_FREE(s->polyFrac); RBL_FREE(s->polySlots);
     for (int i = 0; i < s->poolCount; i++) RBL_FREE(s->pools[i]);
     RBL_FREE(s->pools); RBL_FREE(s->frames); RBL_FREE(s->tags); RBL_FREE(s->pages); RBL_FREE(s->slices);
     RBL_FREE(s->polygons); RBL_FREE(s->polygonRefs); RBL_FREE(s->polyPoints); RBL_FREE(s->polyIndices);
@@ -11102,12 +11351,114 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
     return ok;
 }
 
+// Orders edge keys (vertex pair, smaller first), then triangle
+static int rbl__compareEdges(const void *a, const void *b)
+{
+    const unsigned int *p = (const unsigned int *)a, *q = (const unsigned int *)b;
+    if (p[0] != q[0]) return (p[0] < q[0])? -1 : 1;
+    return (p[1] > q[1]) - (p[1] < q[1]);
+}
+
+// The draw paths' form of every polygon (rbl__Polygon): vertices as fractions of the frame's source
+// (from the file's texels), triangles of zero area dropped, the rest wound as the quad's triangles are
+// (clockwise in texel space, y down: the quad's (0,1,2) seen upright) and paired across shared edges
+// into slots of two (a, b, c) + (a, c, d), the unpaired alone (a, b, c, c); then registered
+static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
+{
+    if (s->polygonCount == 0) return true;
+    int slotMax = s->polyIndexCount/3;
+    s->polyDraw = (rbl__Polygon *)RBL_MALLOC((size_t)s->polygonCount*sizeof(rbl__Polygon));
+    s->polyFrac = (Vector2 *)RBL_MALLOC((size_t)s->polyPointCount/2*sizeof(Vector2) + sizeof(Vector2));
+    s->polySlots = (unsigned short *)RBL_MALLOC((size_t)slotMax*4*sizeof(unsigned short) + 4*sizeof(unsigned short));
+    int maxTriangles = 0;
+    for (int i = 0; i < s->polygonCount; i++) if (s->polygons[i].indexCount/3 > maxTriangles) maxTriangles = s->polygons[i].indexCount/3;
+    unsigned int *edges = (unsigned int *)RBL_MALLOC((size_t)maxTriangles*3*2*sizeof(unsigned int) + 2*sizeof(unsigned int));
+    unsigned short *tri = (unsigned short *)RBL_MALLOC((size_t)maxTriangles*3*sizeof(unsigned short) + 3*sizeof(unsigned short));
+    unsigned char *paired = (unsigned char *)RBL_MALLOC((size_t)maxTriangles + 1);
+    bool ok = (s->polyDraw != NULL) && (s->polyFrac != NULL) && (s->polySlots != NULL) && (edges != NULL) && (tri != NULL) && (paired != NULL);
+    int fracAt = 0, slotAt = 0;
+    for (int i = 0; ok && (i < s->polygonCount); i++)
+    {
+        const RblAtlasPolygon *p = &s->polygons[i];
+        const RblAtlasFrame *f = &s->frames[s->polygonRefs[i].frame];
+        Vector2 *frac = s->polyFrac + fracAt;
+        const double sx = f->source.x, sy = f->source.y, sw = fabs((double)f->source.width), sh = fabs((double)f->source.height);
+        for (int v = 0; v < p->vertexCount; v++)
+        {
+            double a = (sw > 0.0)? ((double)p->uvs[v].x - sx)/sw : 0.0, b = (sh > 0.0)? ((double)p->uvs[v].y - sy)/sh : 0.0;
+            frac[v] = rbl__v2((float)fmin(fmax(a, 0.0), 1.0), (float)fmin(fmax(b, 0.0), 1.0));
+        }
+        int n = 0;
+        for (int t = 0; t < p->indexCount/3; t++)
+        {
+            unsigned short c0 = p->indices[3*t], c1 = p->indices[3*t + 1], c2 = p->indices[3*t + 2];
+            const Vector2 A = frac[c0], B = frac[c1], C = frac[c2];
+            double area2 = ((double)B.x - A.x)*((double)C.y - A.y) - ((double)C.x - A.x)*((double)B.y - A.y);
+            if (area2 == 0.0) continue;
+            tri[3*n] = c0; tri[3*n + 1] = (area2 < 0.0)? c1 : c2; tri[3*n + 2] = (area2 < 0.0)? c2 : c1;
+            paired[n] = 0;
+            for (int e = 0; e < 3; e++)
+            {
+                unsigned int u = tri[3*n + e], w = tri[3*n + (e + 1)%3];
+                edges[2*(3*n + e)] = (u < w)? (u << 16) | w : (w << 16) | u;
+                edges[2*(3*n + e) + 1] = (unsigned int)(3*n + e);
+            }
+            n++;
+        }
+        qsort(edges, (size_t)n*3, 2*sizeof(unsigned int), rbl__compareEdges);
+        rbl__Polygon *d = &s->polyDraw[i];
+        d->frac = NULL; d->slots = NULL;            // set once the tables stop growing (below)
+        d->triangles = n;
+        d->slotCount = 0;
+        int firstSlot = slotAt;
+        for (int t = 0; t < n; t++)
+        {
+            if (paired[t]) continue;
+            paired[t] = 1;
+            unsigned short *o = s->polySlots + 4*slotAt++;
+            o[0] = tri[3*t]; o[1] = tri[3*t + 1]; o[2] = tri[3*t + 2]; o[3] = tri[3*t + 2];
+            // A neighbour across one of t's edges (u -> w in t, w -> u in it): the slot starts at w
+            for (int e = 0; e < 3; e++)
+            {
+                unsigned int u = tri[3*t + e], w = tri[3*t + (e + 1)%3], key = (u < w)? (u << 16) | w : (w << 16) | u;
+                int lo = 0, hi = 3*n;
+                while (lo < hi) { int mid = (lo + hi)/2; if (edges[2*mid] < key) lo = mid + 1; else hi = mid; }
+                int found = -1;
+                for (int k = lo; (k < 3*n) && (edges[2*k] == key) && (found < 0); k++)
+                {
+                    int other = (int)edges[2*k + 1]/3, oe = (int)edges[2*k + 1]%3;
+                    if (paired[other] || (tri[3*other + oe] != w)) continue;       // taken, or the same way round (folded)
+                    found = other;
+                    o[3] = tri[3*other + (oe + 2)%3];
+                }
+                if (found < 0) continue;
+                paired[found] = 1;
+                // t from w: (w, x, u) with x its third vertex; the neighbour (w, u, d)
+                o[0] = (unsigned short)w; o[1] = tri[3*t + (e + 2)%3]; o[2] = (unsigned short)u;
+                break;
+            }
+        }
+        d->slotCount = slotAt - firstSlot;
+        s->polygonRefs[i].index = firstSlot;        // reused: where its slots start
+        s->polygonRefs[i].vertex = fracAt;          // ... and its fractions
+        fracAt += p->vertexCount;
+    }
+    RBL_FREE(edges); RBL_FREE(tri); RBL_FREE(paired);
+    if (!ok) { rbl__atlasErrorf(s, -1, "out of memory for %d polygons", s->polygonCount); return false; }
+    for (int i = 0; i < s->polygonCount; i++)
+    {
+        s->polyDraw[i].frac = s->polyFrac + s->polygonRefs[i].vertex;
+        s->polyDraw[i].slots = s->polySlots + 4*s->polygonRefs[i].index;
+    }
+    s->polyFirst = rbl__polygonRegister(s->polyDraw, s->polygonCount);
+    if (s->polyFirst == 0u) { rbl__atlasErrorf(s, -1, "no room for %d more polygon frames (%d handles, RBL_FRAME_POLYGON) or out of memory", s->polygonCount, (int)RBL__POLYGON_HANDLES); return false; }
+    return true;
+}
+
 static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
 {
     RblAtlas a;
     memset(&a, 0, sizeof(a));
-    a.id = rbl__liveAdd(s);
-    if (a.id == 0) return a;            // out of memory: the caller fails the load
     s->format = format;
     // the tables stopped moving: polygons point into their rows, frames at their polygons
     for (int i = 0; i < s->polygonCount; i++)
@@ -11119,6 +11470,10 @@ static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
         p->indices = s->polyIndices + r->index;
         s->frames[r->frame].polygon = p;
     }
+    if (!rbl__atlasPolygonsPrepare(s)) return a;
+    for (int i = 0; i < s->polygonCount; i++) s->frames[s->polygonRefs[i].frame].flags |= (s->polyFirst + (unsigned int)i) << RBL__POLYGON_SHIFT;
+    a.id = rbl__liveAdd(s);
+    if (a.id == 0) return a;            // out of memory: the caller fails the load
     a.format = format;
     a.frameCount = s->frameCount; a.tagCount = s->tagCount; a.pageCount = s->pageCount; a.sliceCount = s->sliceCount;
     a.frames = s->frames; a.tags = s->tags; a.pages = s->pages; a.slices = s->slices;
@@ -11285,7 +11640,7 @@ bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale, RblBi
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasQuad(atlas, frame, worldScale, "RblAtlasBillboard", &src, &size, &origin, &flags)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
-    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->flags = (billboard->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -11295,7 +11650,7 @@ bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblIns
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasQuad(atlas, frame, worldScale, "RblAtlasInstance", &src, &size, &origin, &flags)) return false;
     instance->source = src; instance->size = size; instance->origin = origin;
-    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    instance->flags = (instance->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -11369,7 +11724,7 @@ bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, floa
     Rectangle src; Vector2 size, origin; unsigned int flags; RblFade f;
     if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasBillboardFade", &src, &size, &origin, &flags, &f)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
-    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->flags = (billboard->flags & ~RBL__FRAME_BITS) | flags;
     *fade = f;
     return true;
 }
@@ -11380,7 +11735,7 @@ bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float
     Rectangle src; Vector2 size, origin; unsigned int flags; RblFade f;
     if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasInstanceFade", &src, &size, &origin, &flags, &f)) return false;
     instance->source = src; instance->size = size; instance->origin = origin;
-    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    instance->flags = (instance->flags & ~RBL__FRAME_BITS) | flags;
     *fade = f;
     return true;
 }
@@ -11416,7 +11771,7 @@ static bool rbl__atlasSliceQuad(const RblAtlas *atlas, int slice, int frame, flo
     *source = rbl__atlasSubSource(f, (l - t.x)/t.width, (r - t.x)/t.width, (top - t.y)/t.height, (bottom - t.y)/t.height);
     *size = rbl__v2((float)((r - l)*k), (float)((bottom - top)*k));
     *origin = rbl__v2((float)((key->pivot.x - l)*k), (float)((bottom - key->pivot.y)*k));
-    *flags = f->flags;
+    *flags = f->flags & RBL_FRAME_ROTATED;
     return true;
 }
 
@@ -11426,7 +11781,7 @@ bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float w
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceBillboard", &src, &size, &origin, &flags)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
-    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->flags = (billboard->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -11436,7 +11791,7 @@ bool RblAtlasSliceInstance(const RblAtlas *atlas, int slice, int frame, float wo
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceInstance", &src, &size, &origin, &flags)) return false;
     instance->source = src; instance->size = size; instance->origin = origin;
-    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    instance->flags = (instance->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -11621,7 +11976,7 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
         unsigned int flags;
         const RblAtlasFrame *f = &s->frames[players[i].frame];
         rbl__atlasFrameQuad(f, unit[f->page], &in->source, &in->size, &in->origin, &flags);
-        in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+        in->flags = (in->flags & ~RBL__FRAME_BITS) | flags;
         done++;
     }
     if (skipped > 0) TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: %i players skipped (instances untouched): %s", skipped, why);
