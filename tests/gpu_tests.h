@@ -23,6 +23,7 @@
 #include "test_sprite_buffer.c"
 #include "test_thin.c"
 #include "test_cull.c"
+#include "test_polygon.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_RENDER_TESTS,
@@ -43,6 +44,7 @@ static const RtTest rblGpuTests[] = {
         RBL_SPRITE_BUFFER_TESTS,
         RBL_THIN_TESTS,
         RBL_CULL_TESTS,
+        RBL_POLYGON_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

@@ -1,0 +1,202 @@
+// Polygon frames (TexturePacker polygon packing) drawn as their polygons on every path: the batch, the
+// immediate path, instanced draws, resident sprite buffers, shadow casters and the G-buffer. Each draw
+// is compared pixel by pixel with the same frame drawn as its quad (the polygon bits cleared) and with a
+// double-precision CPU rasterisation of the hand-derived polygon (polygon_fixture.h): a pixel whose
+// centre lies inside the polygon (by 0.02 frame pixels) equals the quad's, one outside it is not drawn.
+// Orthographic camera, 8 screen pixels per texel. Included by gpu_tests.h.
+#include "polygon_fixture.h"
+
+#define POLY_RT 256
+#define POLY_SCALE 8.0f
+enum { POLY_BATCH = 0, POLY_IMMEDIATE, POLY_INSTANCED, POLY_SPRITES, POLY_PATHS };
+static const char *const polyPathNames[POLY_PATHS] = { "batch", "immediate", "instanced", "sprite buffer" };
+
+static Camera3D polyCamera(void)
+{
+    Camera3D cam; memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0, 0, 10 }; cam.up = (Vector3){ 0, 1, 0 }; cam.fovy = (float)POLY_RT; cam.projection = CAMERA_ORTHOGRAPHIC;
+    return cam;
+}
+
+// Opaque noise sheet (no texel equals the clear colour)
+static Image polySheet(void)
+{
+    Image img = GenImageColor(POLY_SHEET, POLY_SHEET, BLACK);
+    Color *px = (Color *)img.data;
+    unsigned int seed = 1234u;
+    for (int i = 0; i < POLY_SHEET*POLY_SHEET; i++)
+    {
+        unsigned int r = rtRandom(&seed);
+        px[i] = (Color){ (unsigned char)(64 + (r & 127)), (unsigned char)(64 + ((r >> 8) & 127)), (unsigned char)(64 + ((r >> 16) & 127)), 255 };
+    }
+    return img;
+}
+
+static const Color polyClear = { 0, 0, 255, 255 };
+
+// The instance of a billboard (facing shared by the draw)
+static RblInstance polyInstance(const RblBillboard *b)
+{
+    RblInstance in; memset(&in, 0, sizeof(in));
+    in.position = b->position; in.rotation = b->rotation; in.size = b->size; in.origin = b->origin; in.source = b->source; in.tint = b->tint; in.flags = b->flags;
+    return in;
+}
+
+// Draws billboard b (frame k of atlas a) on one path into rt; the colour of what it drew
+static Image polyDraw(RenderTexture2D rt, Material m, const RblAtlas *a, int k, const RblBillboard *b, int path)
+{
+    Camera3D cam = polyCamera();
+    BeginTextureMode(rt); ClearBackground(polyClear); BeginMode3D(cam);
+    if (path == POLY_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(0);
+        RblBeginBatch(&batch, cam);
+        RT_CHECK(RblBatchAdd(&batch, m, b), "batch add");
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else if (path == POLY_IMMEDIATE) RblDrawBillboard(cam, m, *b);
+    else if (path == POLY_INSTANCED)
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(0);
+        RblInstance in = polyInstance(b);
+        RblInstancedDesc desc; memset(&desc, 0, sizeof(desc));
+        desc.facing = b->facing;
+        RT_CHECK(RblDrawInstanced(&buf, cam, m, desc, &in, 1) == 1, "instanced draw");
+        RblUnloadInstanceBuffer(&buf);
+    }
+    else
+    {
+        RblSpriteBuffer sb = RblLoadSpriteBuffer(a, 1);
+        RblSpriteInstance s = RblMakeSprite(b->position, POLY_SCALE, b->rotation, k, BLANK);
+        if (b->size.x < 0) s.mode |= RBL_SPRITE_FLIP_X;
+        if (b->size.y < 0) s.mode |= RBL_SPRITE_FLIP_Y;
+        RT_CHECK(RblUpdateSprites(&sb, 0, 1, &s), "sprite update");
+        RblInstancedDesc desc; memset(&desc, 0, sizeof(desc));
+        desc.facing = b->facing;
+        RT_CHECK(RblDrawSpriteBuffer(&sb, cam, m, desc, 0.0f) >= 1, "sprite draw");
+        RblUnloadSpriteBuffer(&sb);
+    }
+    EndMode3D(); EndTextureMode();
+    return rtReadTarget(rt);
+}
+
+// Where screen pixel (px, py) falls in billboard b's upright trimmed picture (pixels from its
+// top-left), in double precision; false outside the quad
+static bool polyPicturePoint(const RblBillboard *b, const RblAtlasFrame *f, int px, int py, double *x, double *y)
+{
+    double wx = px + 0.5 - POLY_RT/2.0, wy = POLY_RT/2.0 - (py + 0.5);
+    double dx = wx - b->position.x, dy = wy - b->position.y, th = b->rotation*3.14159265358979323846/180.0;
+    double rx = dx*cos(th) + dy*sin(th), ry = -dx*sin(th) + dy*cos(th);
+    double s = (rx + b->origin.x)/fabs(b->size.x), up = (ry + b->origin.y)/fabs(b->size.y), t = 1.0 - up;
+    if (b->size.x < 0) s = 1.0 - s;
+    if (b->size.y < 0) t = 1.0 - t;
+    *x = s*f->trim.width; *y = t*f->trim.height;
+    return (s >= 0.0) && (s <= 1.0) && (t >= 0.0) && (t <= 1.0);
+}
+
+typedef struct PolyCount { int inside, outside, cutByQuad, badInside, badOutside, badBeyond, drawn, expectedMax; } PolyCount;
+
+// The polygon draw against the quad draw and the CPU rasterisation
+static void polyCompare(Image quad, Image poly, int k, const RblBillboard *b, const RblAtlasFrame *f, PolyCount *c)
+{
+    const Color *q = (const Color *)quad.data, *p = (const Color *)poly.data;
+    for (int py = 0; py < POLY_RT; py++)
+        for (int px = 0; px < POLY_RT; px++)
+        {
+            int i = py*POLY_RT + px;
+            bool clearP = (p[i].r == polyClear.r) && (p[i].g == polyClear.g) && (p[i].b == polyClear.b);
+            bool clearQ = (q[i].r == polyClear.r) && (q[i].g == polyClear.g) && (q[i].b == polyClear.b);
+            c->drawn += !clearP;
+            double x, y;
+            if (!polyPicturePoint(b, f, px, py, &x, &y)) { c->badBeyond += !clearP; continue; }
+            if (polyFixtureInside(k, x, y, 0.02))
+            {
+                c->inside++;
+                c->badInside += clearP || (memcmp(&p[i], &q[i], sizeof(Color)) != 0);
+            }
+            else if (polyFixtureInside(k, x, y, -0.02))
+            {
+                c->outside++;
+                c->cutByQuad += !clearQ;
+                c->badOutside += !clearP;
+            }
+        }
+}
+
+// The frames one after another on a path, each plain, mirrored both ways and turned; the counts
+static PolyCount polyRunPath(int path, Material m, const RblAtlas *a, int *draws)
+{
+    PolyCount c; memset(&c, 0, sizeof(c));
+    RenderTexture2D rt = LoadRenderTexture(POLY_RT, POLY_RT);
+    for (int k = 0; k < 3; k++)
+        for (int v = 0; v < 4; v++)
+        {
+            RblBillboard b; memset(&b, 0, sizeof(b));
+            RT_CHECK(RblAtlasBillboard(a, k, POLY_SCALE, &b), "billboard");
+            b.position = (Vector3){ 3.0f, -5.0f, 0.0f };
+            if (v & 1) { b.size.x = -b.size.x; b.size.y = -b.size.y; }
+            if (v & 2) b.rotation = 30.0f;
+            if (path == POLY_SPRITES)
+            {
+                // a sprite mirrors about its pivot: the quad moves (origin follows)
+                if (v & 1) { b.origin.x = -b.size.x - b.origin.x; b.origin.y = -b.size.y - b.origin.y; }
+            }
+            RblBillboard plain = b;
+            plain.flags &= ~(unsigned int)RBL_FRAME_POLYGON;
+            Image quad = polyDraw(rt, m, a, k, &plain, (path == POLY_SPRITES)? POLY_INSTANCED : path);
+            Image poly = polyDraw(rt, m, a, k, &b, path);
+            PolyCount before = c;
+            polyCompare(quad, poly, k, &b, &a->frames[k], &c);
+            if ((c.badInside != before.badInside) || (c.badOutside != before.badOutside) || (c.badBeyond != before.badBeyond) || (getenv("RBL_POLY_LOOK") != NULL))
+            {
+                char tag[64];
+                snprintf(tag, sizeof(tag), "%s-frame%d-v%d-quad", polyPathNames[path], k, v); rtSaveImage(quad, tag);
+                snprintf(tag, sizeof(tag), "%s-frame%d-v%d-polygon", polyPathNames[path], k, v); rtSaveImage(poly, tag);
+            }
+            UnloadImage(quad); UnloadImage(poly);
+            (*draws)++;
+        }
+    UnloadRenderTexture(rt);
+    return c;
+}
+
+static void polyMaterial(Material *m, Texture2D tex, bool instanced, Shader *lit)
+{
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
+    desc.instanced = instanced;
+    *lit = RblLoadLitShader(desc);
+    *m = LoadMaterialDefault();
+    m->shader = *lit;
+    m->maps[MATERIAL_MAP_ALBEDO].texture = tex;
+}
+
+static void polyCheckPath(int path)
+{
+    RblAtlas a = RblLoadAtlasFromMemory(polyFixture, (int)strlen(polyFixture), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 3, "fixture");
+    if (!RblIsAtlasValid(a)) return;
+    Image sheet = polySheet();
+    Texture2D tex = LoadTextureFromImage(sheet);
+    Shader lit; Material m;
+    polyMaterial(&m, tex, path >= POLY_INSTANCED, &lit);
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    int draws = 0;
+    PolyCount c = polyRunPath(path, m, &a, &draws);
+    printf("    %s: %d draws; %d pixels inside the polygons equal the quad's (%d differ), %d cut-away pixels the quad drew left undrawn (%d drawn)\n",
+           polyPathNames[path], draws, c.inside - c.badInside, c.badInside, c.cutByQuad, c.badOutside);
+    RT_CHECK(c.inside > 20000 && c.badInside == 0, "%s: %d of %d inside pixels differ from the quad's", polyPathNames[path], c.badInside, c.inside);
+    RT_CHECK(c.cutByQuad > 20000 && c.badOutside == 0 && c.badBeyond == 0, "%s: %d cut-away pixels drawn (the quad drew %d of them), %d beyond the quad", polyPathNames[path], c.badOutside, c.cutByQuad, c.badBeyond);
+    RblUnloadLitShader(&lit);
+    UnloadTexture(tex); UnloadImage(sheet);
+    MemFree(m.maps);
+    RblUnloadAtlas(&a);
+}
+
+static void test_polygon_batch_draws_the_polygon_and_none_of_the_cut_away_quad(void) { polyCheckPath(POLY_BATCH); }
+static void test_polygon_immediate_draws_the_polygon_and_none_of_the_cut_away_quad(void) { polyCheckPath(POLY_IMMEDIATE); }
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_POLYGON_TESTS \
+    RT_TEST(test_polygon_batch_draws_the_polygon_and_none_of_the_cut_away_quad), \
+    RT_TEST(test_polygon_immediate_draws_the_polygon_and_none_of_the_cut_away_quad)
