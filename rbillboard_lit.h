@@ -1469,6 +1469,7 @@ typedef enum {
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
     RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
+    RBL__U_POLYGON, RBL__U_POLYGON_TABLE,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1480,7 +1481,7 @@ typedef struct rbl__ProgramKey {
     RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
-    int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
+    int sprites;                    // Header-owned variants of an instanced program: bit 1 resident sprites (RBL_SPRITE_BUFFER), bit 2 polygon frames (RBL_POLYGONS)
 } rbl__ProgramKey;
 
 // Raw Material inputs of the per-draw values, kept to skip uploads when the next draw repeats them
@@ -1503,6 +1504,7 @@ typedef struct rbl__Program {
     bool valuesValid;
     bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
     struct rbl__Program *spriteVariant; // Instanced programs: the resident-sprite variant once compiled (goes with this one)
+    struct rbl__Program *polygonVariant; // ... and the polygon-frame variant of this one (a sprite variant's: sprites and polygons)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -2803,11 +2805,28 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "uniform vec4 rblInstancing[7];\n",
     "#endif\n",
     "\n",
+    "#ifdef RBL_POLYGONS\n",
+    "// Polygon frames (the variant the header compiles for draws with RBL_FRAME_POLYGON instances or a\n",
+    "// sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest\n",
+    "// polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest\n",
+    "// handle in the polygon table. A polygon's corners are pairs (a, b) of fractions of its frame's source,\n",
+    "// two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the front); the plain\n",
+    "// variant finds them from texel handle - z of rblPolygonTable (first corner texel, corner count), the\n",
+    "// resident-sprite variant in its frame table (frame k's texel 3k + 2, zw)\n",
+    "uniform vec4 rblPolygon;\n",
+    "#ifndef RBL_SPRITE_BUFFER\n",
+    "uniform highp sampler2D rblPolygonTable;\n",
+    "#endif\n",
+    "#endif\n",
+    "\n",
     "// The instance being expanded, from either layout (main reads it once)\n",
     "vec4 rblPivot;          // xyz pivot, w rotation in degrees\n",
     "vec4 rblSizeOrigin;     // size (negative mirrors), origin\n",
     "vec4 rblSource;         // texels (all zero = whole texture)\n",
     "float rblFlagBits;      // RblBillboardFlags\n",
+    "#ifdef RBL_POLYGONS\n",
+    "vec2 rblPolygonSpan;    // The instance's polygon: first corner texel, corners (0: the quad)\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;\n",
     "float rblFadeWeight, rblFadeFlagBits;\n",
@@ -3049,6 +3068,62 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    tangent = vec4(tv, w);\n",
     "}\n",
     "\n",
+    "#ifdef RBL_POLYGONS\n",
+    "vec4 rblPolygonTexel(int i)\n",
+    "{\n",
+    "    int w = int(rblPolygon.y + 0.5);\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "    return texelFetch(rblFrameTable, ivec2(i % w, i / w), 0);\n",
+    "#else\n",
+    "    return texelFetch(rblPolygonTable, ivec2(i % w, i / w), 0);\n",
+    "#endif\n",
+    "}\n",
+    "\n",
+    "// Corner k of the instance's polygon (rblPolygonSpan) with the quad's fields there: position and\n",
+    "// texture coordinate of the frame point, normal and tangent interpolated over the quad's triangle\n",
+    "// (0, 1, 2) or (0, 2, 3) holding it, as the rasteriser would over the quad (rbl__expandQuad, the CPU\n",
+    "// twin). A mirror turns the triangles over: corners 1 and 2 swap. Returns sprite (s right, t down).\n",
+    "vec2 rblPolygonVertex(int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,\n",
+    "                      out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)\n",
+    "{\n",
+    "    int flags = int(rblFlagBits + 0.5);\n",
+    "    vec2 size = rblSizeOrigin.xy, origin = rblSizeOrigin.zw;\n",
+    "    vec4 src = rblSource;\n",
+    "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);\n",
+    "    bool flipU = (size.x < 0.0) != (src.z < 0.0);\n",
+    "    bool flipV = (size.y < 0.0) != (src.w < 0.0);\n",
+    "    bool rotated = (flags & 1) != 0;\n",
+    "    int m = k - (k/3)*3;\n",
+    "    if (flipU != flipV) k += (m == 1)? 1 : ((m == 2)? -1 : 0);\n",
+    "    vec4 texel = rblPolygonTexel(int(rblPolygonSpan.x + 0.5) + k/2);\n",
+    "    vec2 ab = ((k & 1) != 0)? texel.zw : texel.xy;\n",
+    "    float s = rotated? ab.y : ab.x, t = rotated? 1.0 - ab.x : ab.y;\n",
+    "    if (flipU) s = 1.0 - s;\n",
+    "    if (flipV) t = 1.0 - t;\n",
+    "    float up = 1.0 - t;\n",
+    "    vec3 un = u;\n",
+    "    rblNormalizeTo(u, un);\n",
+    "    float ulen = length(u), sx = abs(size.x), sy = abs(size.y);\n",
+    "    float x = (-origin.x)*(1.0 - s) + (sx - origin.x)*s, y = (-origin.y)*(1.0 - up) + (sy*ulen - origin.y)*up;\n",
+    "    position = rblPivot.xyz + r*x + un*y;\n",
+    "    texCoord = (src.xy + ab*abs(src.zw))/textureSize;\n",
+    "    vec3 pc, n1, n2;\n",
+    "    vec2 tc;\n",
+    "    vec4 g1, g2;\n",
+    "    rblBillboardVertex(0, r, u, n, textureSize, roundness, pc, tc, normal, tangent);\n",
+    "    if (clamp(roundness, 0.0, 1.0) > 0.0)\n",
+    "    {\n",
+    "        bool lower = s >= up;\n",
+    "        vec3 w = lower? vec3(1.0 - s, s - up, up) : vec3(1.0 - up, s, up - s);\n",
+    "        rblBillboardVertex(lower? 1 : 2, r, u, n, textureSize, roundness, pc, tc, n1, g1);\n",
+    "        rblBillboardVertex(lower? 2 : 3, r, u, n, textureSize, roundness, pc, tc, n2, g2);\n",
+    "        normal = normal*w.x + n1*w.y + n2*w.z;\n",
+    "        tangent = vec4(tangent.xyz*w.x + g1.xyz*w.y + g2.xyz*w.z, tangent.w);\n",
+    "    }\n",
+    "    return vec2(s, t);\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "#ifdef RBL_CROSS_FADE\n",
     "// Texture coordinate of the corner at sprite (cs right, ct down) in frame src (all zero = the whole\n",
     "// texture), as rblBillboardVertex, and the frame's +U (T) and +V (V) in the quad's (right, up) plane\n",
@@ -3156,7 +3231,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblPivot = vec4(rblInstancePosition.xyz, word.x*(360.0/65536.0));\n",
     "    rblSizeOrigin = quad;\n",
     "    rblSource = rblTable(3*frame);\n",
-    "    rblFlagBits = rblTable(3*frame + 2).y + (((mode & 4u) != 0u)? 2.0 : 0.0);\n",
+    "    vec4 frameBits = rblTable(3*frame + 2);\n",
+    "    rblFlagBits = frameBits.y + (((mode & 4u) != 0u)? 2.0 : 0.0);\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    rblPolygonSpan = frameBits.zw;\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    rblFadeSource = rblTable(3*next);\n",
     "    rblFadeFlagBits = rblTable(3*next + 2).y;\n",
@@ -3176,6 +3255,22 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;\n",
     "    rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;\n",
     "#endif\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)\n",
+    "    rblPolygonSpan = vec2(0.0);\n",
+    "    uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;\n",
+    "    if (handle != 0u) rblPolygonSpan = rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)).xy;\n",
+    "#endif\n",
+    "#endif\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    // Past the instance's corners (a quad's 6, or its polygon's): one point outside the view, so the\n",
+    "    // padding triangles have no area\n",
+    "    if (gl_VertexID >= ((rblPolygonSpan.y > 0.5)? int(rblPolygonSpan.y + 0.5) : 6))\n",
+    "    {\n",
+    "        fragPosition = vec3(0.0); fragTexCoord = vec2(0.0); fragColor = vec4(0.0); fragNormal = vec3(0.0, 0.0, 1.0); fragTangent = vec4(1.0, 0.0, 0.0, 1.0);\n",
+    "        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n",
+    "        return;\n",
+    "    }\n",
     "#endif\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
@@ -3212,6 +3307,13 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        u = u*sc.y + nu*sc.x;\n",
     "    }\n",
     "    vec3 p;\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    vec2 polygonPoint = vec2(-1.0);\n",
+    "    if (rblPolygonSpan.y > 0.5)\n",
+    "        polygonPoint = rblPolygonVertex(gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
+    "                                        p, fragTexCoord, fragNormal, fragTangent);\n",
+    "    else\n",
+    "#endif\n",
     "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
     "                       p, fragTexCoord, fragNormal, fragTangent);\n",
     "    p += shift;\n",
@@ -3222,6 +3324,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#ifdef RBL_CROSS_FADE\n",
     "    int corner = cornerOf[gl_VertexID % 6];\n",
     "    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    if (polygonPoint.x >= 0.0) { cs = polygonPoint.x; ct = polygonPoint.y; }\n",
+    "#endif\n",
     "    vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;\n",
     "    rblFrameTexCoord(rblSource, (int(rblFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t1, v1);\n",
     "    fragTexCoord2 = rblFrameTexCoord(rblFadeSource, (int(rblFadeFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t2, v2);\n",
@@ -5880,6 +5985,8 @@ void RblClose(void)
     // or after this, before or after CloseWindow
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
     rbl__releaseCapture();
+    if ((rbl__state.polyTableId != 0) && rbl__glUsable()) rlUnloadTexture(rbl__state.polyTableId);
+    rbl__state.polyTableId = 0;
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
     memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
     // Lit programs become their holders' plain raylib Shaders (UnloadShader, UnloadMaterial or
@@ -6072,6 +6179,87 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
     for (int i = 0; i < 5; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
 }
 
+// ---- polygon frames on the instanced stage -----------------------------------------------------------
+#define RBL__FRAME_TABLE_WIDTH 1024         // Texels per row of a frame or polygon table (rows: at most 2048, ES 3's least texture size)
+static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key);
+static void rbl__bindSceneTints(const rbl__Program *p);
+static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material);
+static void rbl__casterDepth(const rbl__Program *caster);
+
+// The polygon-frame variant (RBL_POLYGONS) of an instanced program (plain or resident-sprite): held
+// until its program goes; NULL (problem set) on failure. Draws without polygons never compile it.
+static rbl__Program *rbl__polygonVariant(rbl__Program *p)
+{
+    if (p->polygonVariant != NULL) return p->polygonVariant;
+    rbl__ProgramKey key = p->key;
+    key.sprites |= 2;
+    p->polygonVariant = rbl__compileProgram(&key);
+    return p->polygonVariant;
+}
+
+// A polygon's corners for the instanced stage, 3 per triangle from its slots, each pair (a, b) of
+// frame fractions, two corners a texel (RGBA32F); returns the texels written
+static int rbl__polygonCorners(const rbl__Polygon *poly, float *out)
+{
+    int k = 0;
+    for (int sl = 0; sl < poly->slotCount; sl++)
+    {
+        const unsigned short *v = poly->slots + 4*sl;
+        const int tri[6] = { v[0], v[1], v[2], v[0], v[2], v[3] };
+        for (int c = 0; c < ((v[2] == v[3])? 3 : 6); c++, k++) { out[2*k] = poly->frac[tri[c]].x; out[2*k + 1] = poly->frac[tri[c]].y; }
+    }
+    if (k & 1) { out[2*k] = out[2*k + 1] = 0.0f; }
+    return (k + 1)/2;
+}
+
+// The header's polygon table for instanced draws, rebuilt when atlases came or went since: texel
+// h - base holds handle h's first corner texel and corner count, then the corners
+// (rbl__polygonCorners). false (problem set) when it cannot be made
+static bool rbl__polygonTable(void)
+{
+    if ((rbl__state.polyTableId != 0) && (rbl__state.polyTableVersion == rbl__state.polyVersion)) return true;
+    if (rbl__state.polyTableId != 0) { rlUnloadTexture(rbl__state.polyTableId); rbl__state.polyTableId = 0; }
+    if (rbl__state.polyRangeCount == 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "no polygons loaded"); return false; }
+    unsigned int base = rbl__state.polyRanges[0].first;
+    const rbl__PolyRange *last = &rbl__state.polyRanges[rbl__state.polyRangeCount - 1];
+    size_t texels = (size_t)(last->first + (unsigned int)last->count - base);
+    for (int r = 0; r < rbl__state.polyRangeCount; r++)
+        for (int i = 0; i < rbl__state.polyRanges[r].count; i++) texels += (size_t)(3*rbl__state.polyRanges[r].polygons[i].triangles + 1)/2;
+    size_t rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
+    if (rows > 2048) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "the loaded atlases' polygons need %zu texels, more than 1024 x 2048", texels); return false; }
+    float *table = (float *)RBL_CALLOC(rows*RBL__FRAME_TABLE_WIDTH*4, sizeof(float));
+    if (table == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the polygon table"); return false; }
+    size_t at = (size_t)(last->first + (unsigned int)last->count - base);
+    for (int r = 0; r < rbl__state.polyRangeCount; r++)
+        for (int i = 0; i < rbl__state.polyRanges[r].count; i++)
+        {
+            const rbl__Polygon *poly = &rbl__state.polyRanges[r].polygons[i];
+            float *h = table + 4*(size_t)(rbl__state.polyRanges[r].first + (unsigned int)i - base);
+            h[0] = (float)at; h[1] = (float)(3*poly->triangles);
+            at += (size_t)rbl__polygonCorners(poly, table + 4*at);
+        }
+    rbl__state.polyTableId = rlLoadTexture(table, RBL__FRAME_TABLE_WIDTH, (int)rows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
+    RBL_FREE(table);
+    if (rbl__state.polyTableId == 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "polygon table texture could not be created"); return false; }
+    rlTextureParameters(rbl__state.polyTableId, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+    rlTextureParameters(rbl__state.polyTableId, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+    rbl__state.polyTableVersion = rbl__state.polyVersion;
+    rbl__state.polyTableBase = base;
+    return true;
+}
+
+// An instance's polygon bits: none, or a loaded polygon (its corners raise *corners); false when they
+// name none
+static inline bool rbl__instancePolygonOk(const RblInstance *in, int *corners)
+{
+    unsigned int h = rbl__polygonHandle(in->flags);
+    if (h == 0u) return true;
+    const rbl__Polygon *poly = rbl__polygonAt(h);
+    if (poly == NULL) return false;
+    if (3*poly->triangles > *corners) *corners = 3*poly->triangles;
+    return true;
+}
+
 // The per-draw frame of the instanced stage, rblInstancing[7] (layout in lit_instanced.vs.glsl); the
 // resident-sprite variant's [7] (frame[28..31]) zero here, set by its draw
 static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFrame *view, int texW, int texH, float frame[32])
@@ -6145,8 +6333,12 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         buffer->fadeStaging = f;
         buffer->fadeStagingCapacity = buffer->capacity;
     }
+    // Polygon frames: the most corners one instance needs (0: quads only; with fades every instance is its quad)
+    int corners = 0;
+    int *cornersAt = (fades == NULL)? &corners : NULL;
     int n = 0;
-    while ((n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT))) n++;
+    while ((n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT)) &&
+           ((cornersAt == NULL) || rbl__instancePolygonOk(&instances[n], cornersAt))) n++;
     const RblInstance *upload = instances;
     const RblFade *fadeUpload = fades;
     pub->skipped = 0;
@@ -6156,7 +6348,8 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         if (fades != NULL) memcpy(buffer->fadeStaging, fades, (size_t)n*sizeof(RblFade));
         for (int i = n; i < count; i++)
         {
-            if (rbl__instanceOk(&instances[i]) && ((fades == NULL) || rbl__fadeOk(&fades[i], RBL__INSTANCE_LIMIT_EXPONENT)))
+            if (rbl__instanceOk(&instances[i]) && ((fades == NULL) || rbl__fadeOk(&fades[i], RBL__INSTANCE_LIMIT_EXPONENT)) &&
+                ((cornersAt == NULL) || rbl__instancePolygonOk(&instances[i], cornersAt)))
             {
                 if (fades != NULL) buffer->fadeStaging[n] = fades[i];
                 buffer->staging[n++] = instances[i];
@@ -6165,13 +6358,33 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         }
         upload = buffer->staging;
         if (fades != NULL) fadeUpload = buffer->fadeStaging;
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36, or a fade weight outside 0..1)", pub->skipped);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36, a fade weight outside 0..1, or RBL_FRAME_POLYGON bits of no loaded atlas)", pub->skipped);
     }
     if (n == 0) return 0;
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
     if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, fades != NULL, "RblDrawInstanced", &program)) return 0;
+    if (corners > 0)
+    {
+        // Polygon frames: the program's polygon variant, each instance drawn with the draw's most
+        // corners (a quad's 6 at least; the rest collapse to one point outside the view)
+        rbl__Program *variant = program->key.desc.crossFade? NULL : rbl__polygonVariant(program);
+        if ((variant == NULL) && program->key.desc.crossFade) corners = 0;      // cross-fade programs draw quads (the union of two frames)
+        else if ((variant == NULL) || !rbl__polygonTable()) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: polygon frames cannot be drawn (%s)", rbl__state.problem); return 0; }
+        else
+        {
+            program = variant;
+            material.shader = variant->shader;
+            if (rbl__state.shadowPass != NULL) rbl__casterDepth(variant);
+            else
+            {
+                if (variant->key.desc.softParticles) rbl__bindSoftDepth(variant, &material);
+                if (variant->key.desc.shadowTransmittance) rbl__bindSceneTints(variant);
+            }
+            if (corners < 6) corners = 6;
+        }
+    }
     if ((fades != NULL) && (buffer->fadeGpuCapacity < buffer->capacity))
     {
         unsigned int id = rlLoadVertexBuffer(NULL, buffer->capacity*(int)sizeof(RblFade), true);
@@ -6214,6 +6427,16 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     unsigned int bound = rbl__bindMaterial(&material);
     rbl__applyMaterialValues(program, &material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
+    const int vertices = (corners > 0)? corners : 6;
+    if (corners > 0)
+    {
+        const float poly[4] = { (float)corners, (float)RBL__FRAME_TABLE_WIDTH, (float)rbl__state.polyTableBase, 0.0f };
+        int unit = RBL_FRAME_TABLE_TEXTURE_UNIT;
+        rlSetUniform(program->loc[RBL__U_POLYGON], poly, SHADER_UNIFORM_VEC4, 1);
+        rlActiveTextureSlot(unit);
+        rlEnableTexture(rbl__state.polyTableId);
+        rlSetUniform(program->loc[RBL__U_POLYGON_TABLE], &unit, SHADER_UNIFORM_INT, 1);
+    }
 
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
@@ -6224,15 +6447,16 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         // As a hybrid batch: opaque texels with depth writes, then the fringe without them
         rbl__state.alphaBand.x = 1.0f; rbl__state.alphaBand.y = 2.0f;
         rbl__applyMaterialValues(program, &material);
-        rlDrawVertexArrayInstanced(0, 6, n);
+        rlDrawVertexArrayInstanced(0, vertices, n);
         rlDisableDepthMask();
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 1.0f;
         rbl__applyMaterialValues(program, &material);
-        rlDrawVertexArrayInstanced(0, 6, n);
+        rlDrawVertexArrayInstanced(0, vertices, n);
         rlEnableDepthMask();
         rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
     }
-    else rlDrawVertexArrayInstanced(0, 6, n);
+    else rlDrawVertexArrayInstanced(0, vertices, n);
+    if (corners > 0) { rlActiveTextureSlot(RBL_FRAME_TABLE_TEXTURE_UNIT); rlDisableTexture(); }
     rbl__markDrawn(program);
     if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
@@ -7462,7 +7686,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable",
-    "rblTransmission", "rblRelief", "rblCasterTint" };
+    "rblTransmission", "rblRelief", "rblCasterTint", "rblPolygon", "rblPolygonTable" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -7686,11 +7910,18 @@ static void rbl__removeProgram(rbl__Program *p)
     }
     // An instanced program's resident-sprite variant is the header's: it goes with the program (and
     // a variant going alone, forgotten, is no longer its program's)
-    if (p->key.sprites) { for (int i = 0; i < rbl__state.programCount; i++) if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL; }
-    else if (p->spriteVariant != NULL)
+    if (p->key.sprites)
+        for (int i = 0; i < rbl__state.programCount; i++)
+        {
+            if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL;
+            if (rbl__state.programs[i]->polygonVariant == p) rbl__state.programs[i]->polygonVariant = NULL;
+        }
+    rbl__Program *own[2] = { p->spriteVariant, p->polygonVariant };     // (a sprite variant's own polygon variant goes with it)
+    p->spriteVariant = NULL; p->polygonVariant = NULL;
+    for (int k = 0; k < 2; k++)
     {
-        rbl__Program *v = p->spriteVariant;
-        p->spriteVariant = NULL;
+        rbl__Program *v = own[k];
+        if (v == NULL) continue;
         if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
         rbl__removeProgram(v);
     }
@@ -7762,7 +7993,8 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
-    if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
+    if (key->sprites & 1) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
+    if (key->sprites & 2) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_POLYGONS\n"); }
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
     Shader shader;
     if (key->kind == RBL__KIND_COMPOSITE)
@@ -12057,7 +12289,6 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
 // Module Functions Definition: resident sprite buffers   >>sprites
 //----------------------------------------------------------------------------------
 #define RBL__SPRITE_CHUNK 256               // Sprites per culling chunk (bounds kept per chunk)
-#define RBL__FRAME_TABLE_WIDTH 1024         // Texels per frame-table row (rows: at most 2048, ES 3's least texture size)
 
 typedef struct rbl__SpriteBufferState {
     RblSpriteInstance *sprites;     // CPU copy: chunk bounds are rebuilt from it after an update
@@ -12067,6 +12298,7 @@ typedef struct rbl__SpriteBufferState {
     int frameCount, tagCount;       // Of the atlas the table was built from (what updates are checked against)
     float radius;                   // Farthest quad corner from the pivot over every frame, per unit of scale
     int tableWidth;
+    int corners;                    // Most corners of a polygon frame (0: the atlas has none, quads only)
     unsigned int vaoId, vboId, tableId;
 } rbl__SpriteBufferState;
 
@@ -12111,9 +12343,11 @@ static int rbl__spriteTimeline(int from, int to, int dir, int *out)
 }
 
 // The frame table of lit_instanced.vs.glsl (RGBA32F texels, layout documented there); NULL when out
-// of memory. *texels: texels used; *radius: farthest quad corner from the pivot per unit of scale
-static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float *radius)
+// of memory. *texels: texels used; *radius: farthest quad corner from the pivot per unit of scale;
+// *corners: the most corners of a polygon frame (0: none)
+static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float *radius, int *corners)
 {
+    *corners = 0;
     int entries = 0;
     for (int t = -1; t < s->tagCount; t++)
     {
@@ -12122,7 +12356,12 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
         entries += rbl__spriteTimeline(from, to, dir, NULL);
     }
     int base = 3*s->frameCount, entryBase = base + 2*(s->tagCount + 1);
-    int n = entryBase + entries;
+    int n = entryBase + entries, polygonBase = n;
+    for (int k = 0; k < s->frameCount; k++)
+    {
+        const rbl__Polygon *poly = (s->frames[k].polygon != NULL)? &s->polyDraw[s->frames[k].polygon - s->polygons] : NULL;
+        if (poly != NULL) n += (3*poly->triangles + 1)/2;       // its corners (rbl__polygonCorners)
+    }
     float *table = (float *)RBL_CALLOC((size_t)n*4, sizeof(float));
     int *order = (int *)RBL_MALLOC((size_t)(2*s->frameCount + 2)*sizeof(int));
     if ((table == NULL) || (order == NULL)) { RBL_FREE(table); RBL_FREE(order); return NULL; }
@@ -12136,6 +12375,14 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
         t[0] = src.x; t[1] = src.y; t[2] = src.width; t[3] = src.height;
         t[4] = size.x; t[5] = size.y; t[6] = origin.x; t[7] = origin.y;
         t[8] = (float)rbl__spriteDuration(s, k); t[9] = (float)(flags & RBL_FRAME_ROTATED);
+        if (f->polygon != NULL)
+        {
+            // A polygon frame: where its corners start and how many (lit_instanced.vs.glsl's rblPolygonSpan)
+            const rbl__Polygon *poly = &s->polyDraw[f->polygon - s->polygons];
+            t[10] = (float)polygonBase; t[11] = (float)(3*poly->triangles);
+            polygonBase += rbl__polygonCorners(poly, table + (size_t)polygonBase*4);
+            if (3*poly->triangles > *corners) *corners = 3*poly->triangles;
+        }
         // Either flip mirrors the quad about the pivot: the corner reach is the same
         double x = fmax(fabs((double)origin.x), fabs((double)size.x - origin.x)), y = fmax(fabs((double)origin.y), fabs((double)size.y - origin.y));
         far = fmax(far, sqrt(x*x + y*y));
@@ -12190,9 +12437,9 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     if ((capacity < 0) || (capacity > RBL_MAX_INSTANCES)) { TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: capacity %i outside 0..%i", capacity, RBL_MAX_INSTANCES); return buffer; }
     if (rbl__needsGlsl3("sprite buffers") != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: %s", rbl__state.problem); return buffer; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
-    int texels = 0;
+    int texels = 0, corners = 0;
     float radius = 0.0f;
-    float *table = rbl__buildFrameTable(s, &texels, &radius);
+    float *table = rbl__buildFrameTable(s, &texels, &radius, &corners);
     int rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
     if ((table != NULL) && (rows > 2048)) { RBL_FREE(table); TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: frame table of %i texels exceeds 1024 x 2048", texels); return buffer; }
     int chunks = (capacity + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
@@ -12216,6 +12463,7 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     RBL_FREE(table);
     b->capacity = capacity; b->chunks = chunks; b->radius = radius;
     b->frameCount = s->frameCount; b->tagCount = s->tagCount; b->tableWidth = RBL__FRAME_TABLE_WIDTH;
+    b->corners = corners;
     b->tableId = rlLoadTexture(padded, RBL__FRAME_TABLE_WIDTH, rows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
     RBL_FREE(padded);
     if (b->tableId != 0)
@@ -12426,6 +12674,15 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     // stage pays nothing for reading sprites
     rbl__Program *variant = rbl__spriteVariant(program);
     if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: resident-sprite variant unavailable (%s)", rbl__state.problem); return 0; }
+    // A polygon sheet: the sprite variant's polygon variant, each sprite drawn with the sheet's most
+    // corners (cross-fade programs draw quads: the union of two frames)
+    int vertices = 6;
+    if ((b->corners > 0) && !variant->key.desc.crossFade)
+    {
+        variant = rbl__polygonVariant(variant);
+        if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: polygon variant unavailable (%s)", rbl__state.problem); return 0; }
+        vertices = (b->corners > 6)? b->corners : 6;
+    }
     program = variant;
     material.shader = variant->shader;
     if (rbl__state.shadowPass != NULL) rbl__casterDepth(variant);
@@ -12460,13 +12717,18 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     rlActiveTextureSlot(unit);
     rlEnableTexture(b->tableId);
     rlSetUniform(program->loc[RBL__U_FRAME_TABLE], &unit, SHADER_UNIFORM_INT, 1);
+    if (program->key.sprites & 2)
+    {
+        const float poly[4] = { (float)vertices, (float)b->tableWidth, 0.0f, 0.0f };
+        rlSetUniform(program->loc[RBL__U_POLYGON], poly, SHADER_UNIFORM_VEC4, 1);
+    }
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(b->vaoId);
     int drawn = 0;
     for (int r = 0; r < runs; r++)
     {
         rbl__spriteAttributes(b, b->runs[2*r]);
-        rlDrawVertexArrayInstanced(0, 6, b->runs[2*r + 1]);
+        rlDrawVertexArrayInstanced(0, vertices, b->runs[2*r + 1]);
         drawn += b->runs[2*r + 1];
     }
     if (b->runs[0] != 0) rbl__spriteAttributes(b, 0);
