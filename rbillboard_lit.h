@@ -1712,11 +1712,14 @@ typedef struct rbl__Live {
 } rbl__Live;
 
 // A polygon frame as the draw paths read it (an atlas's, registered under RBL_FRAME_POLYGON handles)
+// The quad's two triangles meet on a diagonal of the frame, a = b or a + b = 1 in frame fractions
+// (which one follows the mirrors and rotation: rbl__polygonDiagonal); a polygon is kept cut along
+// each, so every triangle lies in one of the quad's and takes its fields exactly
 typedef struct rbl__Polygon {
-    const Vector2 *frac;            // Each vertex as fractions (a along +u, b along +v) of the frame's source rectangle
-    const unsigned short *slots;    // 4 vertices per slot, drawn as a quad is: (0, 1, 2) and (0, 2, 3); a repeated last vertex = one triangle
-    int slotCount;                  // Slots (a batch draws each as one quad)
-    int triangles;                  // Triangles over all slots (the instanced stage's corners / 3)
+    const Vector2 *frac;            // Vertices as fractions (a along +u, b along +v) of the frame's source: the file's, then the cut points
+    const unsigned int *slots[2];   // Per diagonal, 4 vertices per slot drawn as a quad is: (0, 1, 2) and (0, 2, 3); a repeated last vertex = one triangle
+    int slotCount[2];               // Slots (a batch draws each as one quad)
+    int triangles[2];               // Triangles over all slots (the instanced stage's corners / 3)
 } rbl__Polygon;
 
 // Handles [first, first + count) of one atlas's polygons
@@ -2809,10 +2812,12 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// Polygon frames (the variant the header compiles for draws with RBL_FRAME_POLYGON instances or a\n",
     "// sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest\n",
     "// polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest\n",
-    "// handle in the polygon table. A polygon's corners are pairs (a, b) of fractions of its frame's source,\n",
-    "// two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the front); the plain\n",
-    "// variant finds them from texel handle - z of rblPolygonTable (first corner texel, corner count), the\n",
-    "// resident-sprite variant in its frame table (frame k's texel 3k + 2, zw)\n",
+    "// handle in the polygon table. A polygon is kept cut along each frame diagonal (a = b, a + b = 1: the\n",
+    "// quad's two triangles meet on one of them), each cut as corners: pairs (a, b) of fractions of its\n",
+    "// frame's source, two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the\n",
+    "// front). Its header texel holds each cut's first corner texel and corner count; the plain variant\n",
+    "// finds it at texel handle - z of rblPolygonTable, the resident-sprite variant at the frame table texel\n",
+    "// that frame k's texel 3k + 2 names in z (w: 1 + its most corners, 0 for a quad frame)\n",
     "uniform vec4 rblPolygon;\n",
     "#ifndef RBL_SPRITE_BUFFER\n",
     "uniform highp sampler2D rblPolygonTable;\n",
@@ -2825,7 +2830,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "vec4 rblSource;         // texels (all zero = whole texture)\n",
     "float rblFlagBits;      // RblBillboardFlags\n",
     "#ifdef RBL_POLYGONS\n",
-    "vec2 rblPolygonSpan;    // The instance's polygon: first corner texel, corners (0: the quad)\n",
+    "vec4 rblPolygonSpan;    // The instance's polygon header (each cut's first corner texel and count)\n",
+    "bool rblPolygonal;      // ... when it has one (else the quad)\n",
     "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;\n",
@@ -3079,11 +3085,21 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#endif\n",
     "}\n",
     "\n",
-    "// Corner k of the instance's polygon (rblPolygonSpan) with the quad's fields there: position and\n",
+    "// The instance's polygon cut along the diagonal its quad's triangles meet on (rbl__polygonDiagonal):\n",
+    "// first corner texel, corner count\n",
+    "vec2 rblPolygonCut()\n",
+    "{\n",
+    "    bool flipU = (rblSizeOrigin.x < 0.0) != (rblSource.z < 0.0);\n",
+    "    bool flipV = (rblSizeOrigin.y < 0.0) != (rblSource.w < 0.0);\n",
+    "    bool rotated = (int(rblFlagBits + 0.5) & 1) != 0;\n",
+    "    return ((flipU != flipV) != rotated)? rblPolygonSpan.xy : rblPolygonSpan.zw;\n",
+    "}\n",
+    "\n",
+    "// Corner k of the instance's polygon (its cut from first) with the quad's fields there: position and\n",
     "// texture coordinate of the frame point, normal and tangent interpolated over the quad's triangle\n",
     "// (0, 1, 2) or (0, 2, 3) holding it, as the rasteriser would over the quad (rbl__expandQuad, the CPU\n",
     "// twin). A mirror turns the triangles over: corners 1 and 2 swap. Returns sprite (s right, t down).\n",
-    "vec2 rblPolygonVertex(int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,\n",
+    "vec2 rblPolygonVertex(int first, int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,\n",
     "                      out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)\n",
     "{\n",
     "    int flags = int(rblFlagBits + 0.5);\n",
@@ -3095,7 +3111,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    bool rotated = (flags & 1) != 0;\n",
     "    int m = k - (k/3)*3;\n",
     "    if (flipU != flipV) k += (m == 1)? 1 : ((m == 2)? -1 : 0);\n",
-    "    vec4 texel = rblPolygonTexel(int(rblPolygonSpan.x + 0.5) + k/2);\n",
+    "    vec4 texel = rblPolygonTexel(first + k/2);\n",
     "    vec2 ab = ((k & 1) != 0)? texel.zw : texel.xy;\n",
     "    float s = rotated? ab.y : ab.x, t = rotated? 1.0 - ab.x : ab.y;\n",
     "    if (flipU) s = 1.0 - s;\n",
@@ -3234,7 +3250,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    vec4 frameBits = rblTable(3*frame + 2);\n",
     "    rblFlagBits = frameBits.y + (((mode & 4u) != 0u)? 2.0 : 0.0);\n",
     "#ifdef RBL_POLYGONS\n",
-    "    rblPolygonSpan = frameBits.zw;\n",
+    "    rblPolygonal = frameBits.w > 0.5;\n",
+    "    rblPolygonSpan = rblPolygonal? rblTable(int(frameBits.z + 0.5)) : vec4(0.0);\n",
     "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    rblFadeSource = rblTable(3*next);\n",
@@ -3257,15 +3274,16 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#endif\n",
     "#ifdef RBL_POLYGONS\n",
     "    // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)\n",
-    "    rblPolygonSpan = vec2(0.0);\n",
     "    uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;\n",
-    "    if (handle != 0u) rblPolygonSpan = rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)).xy;\n",
+    "    rblPolygonal = handle != 0u;\n",
+    "    rblPolygonSpan = rblPolygonal? rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)) : vec4(0.0);\n",
     "#endif\n",
     "#endif\n",
     "#ifdef RBL_POLYGONS\n",
     "    // Past the instance's corners (a quad's 6, or its polygon's): one point outside the view, so the\n",
     "    // padding triangles have no area\n",
-    "    if (gl_VertexID >= ((rblPolygonSpan.y > 0.5)? int(rblPolygonSpan.y + 0.5) : 6))\n",
+    "    vec2 cut = rblPolygonal? rblPolygonCut() : vec2(0.0, 6.0);\n",
+    "    if (gl_VertexID >= int(cut.y + 0.5))\n",
     "    {\n",
     "        fragPosition = vec3(0.0); fragTexCoord = vec2(0.0); fragColor = vec4(0.0); fragNormal = vec3(0.0, 0.0, 1.0); fragTangent = vec4(1.0, 0.0, 0.0, 1.0);\n",
     "        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n",
@@ -3309,8 +3327,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    vec3 p;\n",
     "#ifdef RBL_POLYGONS\n",
     "    vec2 polygonPoint = vec2(-1.0);\n",
-    "    if (rblPolygonSpan.y > 0.5)\n",
-    "        polygonPoint = rblPolygonVertex(gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
+    "    if (rblPolygonal)\n",
+    "        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
     "                                        p, fragTexCoord, fragNormal, fragTangent);\n",
     "    else\n",
     "#endif\n",
@@ -4932,8 +4950,17 @@ static void rbl__polygonUnregister(unsigned int first)
 }
 #endif
 
+// The frame diagonal the quad's triangles meet on for these mirrors and rotation: 0 (a = b) or 1
+// (a + b = 1); lit_instanced.vs.glsl's rblPolygonChoose is the twin
+static inline int rbl__polygonDiagonal(bool flipU, bool flipV, bool rotated) { return ((flipU != flipV) != rotated)? 0 : 1; }
+
+static inline int rbl__billboardDiagonal(const RblBillboard *b)
+{
+    return rbl__polygonDiagonal((b->size.x < 0.0f) != (b->source.width < 0.0f), (b->size.y < 0.0f) != (b->source.height < 0.0f), (b->flags & RBL_FRAME_ROTATED) != 0);
+}
+
 // Slots a billboard takes in a batch: 1 for the quad, one per slot of its polygon (0: nothing drawn)
-static inline int rbl__slotCount(const rbl__Polygon *poly) { return (poly != NULL)? poly->slotCount : 1; }
+static inline int rbl__slotCount(const rbl__Polygon *poly, const RblBillboard *b) { return (poly != NULL)? poly->slotCount[rbl__billboardDiagonal(b)] : 1; }
 
 static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3]);
 
@@ -5085,12 +5112,13 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
         // they face as the quad does.
         static const int back[2][4] = { { 0, 3, 2, 1 }, { 0, 2, 1, 1 } };
         const bool reverse = flipU != flipV;
+        const int diagonal = rbl__polygonDiagonal(flipU, flipV, rotated);
         const float su = fabsf(src.width), sv = fabsf(src.height);
         for (int e = 0; e < 3; e++) centre[e] = 0.25f*(q[0].position[e] + q[1].position[e] + q[2].position[e] + q[3].position[e]);
-        for (int k = 0; k < poly->slotCount; k++)
+        for (int k = 0; k < poly->slotCount[diagonal]; k++)
             for (int c = 0; c < 4; c++)
             {
-                const unsigned short *slot = poly->slots + 4*k;
+                const unsigned int *slot = poly->slots[diagonal] + 4*k;
                 const Vector2 f = poly->frac[slot[reverse? back[slot[2] == slot[3]][c] : c]];
                 float s = rotated? f.y : f.x, t = rotated? 1.0f - f.x : f.y;
                 if (flipU) s = 1.0f - s;
@@ -5139,7 +5167,7 @@ int RblBillboardQuads(const RblCameraFrame *view, int textureWidth, int textureH
     else if (!rbl__billboardOk(b, textureWidth, textureHeight)) bad = "billboard skipped (NaN/Inf or huge input, bad facing or texture size)";
     else if (!rbl__billboardPolygon(b->flags, &poly)) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBillboardQuads: %s", bad); return -1; }
-    const int quads = rbl__slotCount(poly);
+    const int quads = rbl__slotCount(poly, b);
     if ((out == NULL) || (capacity < quads)) return quads;
     rbl__FrameCache cache;
     cache.facing = -1;
@@ -5501,7 +5529,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     // A polygon frame takes its slots (a cross-fade draws the quad: the union of two frames' trims)
     const rbl__Polygon *poly = NULL;
     const bool polyKnown = (billboard == NULL) || (fade != NULL) || rbl__billboardPolygon(billboard->flags, &poly);
-    const int slots = rbl__slotCount(poly);
+    const int slots = (billboard != NULL)? rbl__slotCount(poly, billboard) : 1;
     while (batch->count + slots > batch->capacity)
         if (!rbl__growBatch(batch))
         {
@@ -5944,10 +5972,11 @@ static void rbl__drawBillboard(Camera3D camera, Material material, const RblBill
     if ((bad == NULL) && (fade != NULL) && !rbl__fadeOk(fade, RBL__BILLBOARD_LIMIT_EXPONENT)) bad = "fade weight outside 0..1, NaN/Inf or huge source, or bad clip";
     const rbl__Polygon *poly = NULL;
     if ((bad == NULL) && (fade == NULL) && !rbl__billboardPolygon(billboard->flags, &poly)) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
-    if ((bad == NULL) && (rbl__slotCount(poly) > RBL_MAX_BATCH_BILLBOARDS)) bad = "its polygon has more triangle pairs than RBL_MAX_BATCH_BILLBOARDS";
+    if ((bad == NULL) && (rbl__slotCount(poly, billboard) > RBL_MAX_BATCH_BILLBOARDS)) bad = "its polygon has more triangle pairs than RBL_MAX_BATCH_BILLBOARDS";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return; }
     // One quad slot, or as many as the polygon's (the batch is made that large, without a growth line)
-    int slots = (rbl__slotCount(poly) > 1)? rbl__slotCount(poly) : 1;
+    int slots = (bad == NULL)? rbl__slotCount(poly, billboard) : 1;
+    if (slots < 1) slots = 1;
     if ((immediate->state != NULL) && (immediate->state->capacity < slots)) RblUnloadBatch(immediate);
     if (immediate->state == NULL)
     {
@@ -6197,23 +6226,29 @@ static rbl__Program *rbl__polygonVariant(rbl__Program *p)
     return p->polygonVariant;
 }
 
-// A polygon's corners for the instanced stage, 3 per triangle from its slots, each pair (a, b) of
-// frame fractions, two corners a texel (RGBA32F); returns the texels written
-static int rbl__polygonCorners(const rbl__Polygon *poly, float *out)
+// A polygon's corners for the instanced stage (cut along diagonal d), 3 per triangle from its slots,
+// each pair (a, b) of frame fractions, two corners a texel (RGBA32F); returns the texels written
+static int rbl__polygonCorners(const rbl__Polygon *poly, int d, float *out)
 {
     int k = 0;
-    for (int sl = 0; sl < poly->slotCount; sl++)
+    for (int sl = 0; sl < poly->slotCount[d]; sl++)
     {
-        const unsigned short *v = poly->slots + 4*sl;
-        const int tri[6] = { v[0], v[1], v[2], v[0], v[2], v[3] };
+        const unsigned int *v = poly->slots[d] + 4*sl;
+        const unsigned int tri[6] = { v[0], v[1], v[2], v[0], v[2], v[3] };
         for (int c = 0; c < ((v[2] == v[3])? 3 : 6); c++, k++) { out[2*k] = poly->frac[tri[c]].x; out[2*k + 1] = poly->frac[tri[c]].y; }
     }
     if (k & 1) { out[2*k] = out[2*k + 1] = 0.0f; }
     return (k + 1)/2;
 }
 
+// The texels of a polygon's corners, both diagonals' (rbl__polygonCorners)
+static inline size_t rbl__polygonTexels(const rbl__Polygon *poly) { return (size_t)(3*poly->triangles[0] + 1)/2 + (size_t)(3*poly->triangles[1] + 1)/2; }
+
+// The most corners of a polygon's two cuts
+static inline int rbl__polygonMaxCorners(const rbl__Polygon *poly) { return 3*((poly->triangles[0] > poly->triangles[1])? poly->triangles[0] : poly->triangles[1]); }
+
 // The header's polygon table for instanced draws, rebuilt when atlases came or went since: texel
-// h - base holds handle h's first corner texel and corner count, then the corners
+// h - base holds handle h's first corner texel and corner count for each diagonal, then the corners
 // (rbl__polygonCorners). false (problem set) when it cannot be made
 static bool rbl__polygonTable(void)
 {
@@ -6224,7 +6259,7 @@ static bool rbl__polygonTable(void)
     const rbl__PolyRange *last = &rbl__state.polyRanges[rbl__state.polyRangeCount - 1];
     size_t texels = (size_t)(last->first + (unsigned int)last->count - base);
     for (int r = 0; r < rbl__state.polyRangeCount; r++)
-        for (int i = 0; i < rbl__state.polyRanges[r].count; i++) texels += (size_t)(3*rbl__state.polyRanges[r].polygons[i].triangles + 1)/2;
+        for (int i = 0; i < rbl__state.polyRanges[r].count; i++) texels += rbl__polygonTexels(&rbl__state.polyRanges[r].polygons[i]);
     size_t rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
     if (rows > 2048) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "the loaded atlases' polygons need %zu texels, more than 1024 x 2048", texels); return false; }
     float *table = (float *)RBL_CALLOC(rows*RBL__FRAME_TABLE_WIDTH*4, sizeof(float));
@@ -6235,8 +6270,11 @@ static bool rbl__polygonTable(void)
         {
             const rbl__Polygon *poly = &rbl__state.polyRanges[r].polygons[i];
             float *h = table + 4*(size_t)(rbl__state.polyRanges[r].first + (unsigned int)i - base);
-            h[0] = (float)at; h[1] = (float)(3*poly->triangles);
-            at += (size_t)rbl__polygonCorners(poly, table + 4*at);
+            for (int d = 0; d < 2; d++)
+            {
+                h[2*d] = (float)at; h[2*d + 1] = (float)(3*poly->triangles[d]);
+                at += (size_t)rbl__polygonCorners(poly, d, table + 4*at);
+            }
         }
     rbl__state.polyTableId = rlLoadTexture(table, RBL__FRAME_TABLE_WIDTH, (int)rows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
     RBL_FREE(table);
@@ -6256,7 +6294,7 @@ static inline bool rbl__instancePolygonOk(const RblInstance *in, int *corners)
     if (h == 0u) return true;
     const rbl__Polygon *poly = rbl__polygonAt(h);
     if (poly == NULL) return false;
-    if (3*poly->triangles > *corners) *corners = 3*poly->triangles;
+    if (rbl__polygonMaxCorners(poly) > *corners) *corners = rbl__polygonMaxCorners(poly);
     return true;
 }
 
@@ -10438,7 +10476,7 @@ typedef struct rbl__AtlasState {
     unsigned short *polyIndices; int polyIndexCount, polyIndexCap;
     rbl__Polygon *polyDraw;                     // Per polygon, what the draw paths read (made at publication)
     Vector2 *polyFrac;                          // ... its vertices as fractions of the frame's source
-    unsigned short *polySlots;                  // ... its slots (4 vertices each)
+    unsigned int *polySlots;                    // ... its slots (4 vertices each), both diagonals' cuts
     unsigned int polyFirst;                     // Handle of polygon 0 (0 = none registered)
     char **pools; int poolCount, poolCap;       // name storage: one block per parsed text (and per path), never moved
     char *pool; size_t poolUsed, poolSize;      // the current block
@@ -11583,105 +11621,199 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
     return ok;
 }
 
-// Orders edge keys (vertex pair, smaller first), then triangle
+// Orders edges by their vertex pair (smaller first), then by triangle corner
 static int rbl__compareEdges(const void *a, const void *b)
 {
     const unsigned int *p = (const unsigned int *)a, *q = (const unsigned int *)b;
-    if (p[0] != q[0]) return (p[0] < q[0])? -1 : 1;
-    return (p[1] > q[1]) - (p[1] < q[1]);
+    for (int i = 0; i < 3; i++) if (p[i] != q[i]) return (p[i] < q[i])? -1 : 1;
+    return 0;
+}
+
+// Scratch of the polygon preparation (grown as needed, freed at its end)
+typedef struct rbl__PolyScratch {
+    Vector2 *frac; int fracCount, fracCap;              // every polygon's vertices, then its cut points
+    unsigned int *slots; int slotCount, slotCap;        // every polygon's slots, both cuts
+    unsigned int *tri, *piece, *edges; int triCap, pieceCap, edgeCap;
+} rbl__PolyScratch;
+
+static bool rbl__polyReserve(void **array, int *cap, int need, size_t elem)
+{
+    if (need <= *cap) return true;
+    int n = (*cap > 0)? *cap : 64;
+    while (n < need) { if (n > 0x3FFFFFFF/2) return false; n *= 2; }
+    void *p = RBL_REALLOC(*array, (size_t)n*elem);
+    if (p == NULL) return false;
+    *array = p;
+    *cap = n;
+    return true;
+}
+
+// Triangles tri[0..n) (vertex indices from first), cut along diagonal d into pieces wholly on one
+// side (a new vertex where an edge crosses it, exactly on it), appended to x->piece; their count or -1
+static int rbl__polyCut(rbl__PolyScratch *x, int first, int n, int d)
+{
+    int count = 0;
+    for (int t = 0; t < n; t++)
+    {
+        const unsigned int *v = x->tri + 3*t;
+        double f[3];
+        int neg = 0, pos = 0;
+        for (int c = 0; c < 3; c++)
+        {
+            const Vector2 p = x->frac[first + (int)v[c]];
+            f[c] = (d == 0)? (double)p.x - p.y : (double)p.x + p.y - 1.0;
+            neg += f[c] < 0.0; pos += f[c] > 0.0;
+        }
+        unsigned int poly[2][4];
+        int len[2] = { 0, 0 };
+        if ((neg == 0) || (pos == 0)) { poly[0][0] = v[0]; poly[0][1] = v[1]; poly[0][2] = v[2]; len[0] = 3; }
+        else
+        {
+            // Walk the edges: each vertex to its side, a crossing to both (Sutherland-Hodgman)
+            for (int c = 0; c < 3; c++)
+            {
+                int e = (c + 1)%3;
+                if (f[c] >= 0.0) poly[0][len[0]++] = v[c];
+                if (f[c] <= 0.0) poly[1][len[1]++] = v[c];
+                if ((f[c] < 0.0) != (f[e] < 0.0) && (f[c] != 0.0) && (f[e] != 0.0))
+                {
+                    if (!rbl__polyReserve((void **)&x->frac, &x->fracCap, x->fracCount + 1, sizeof(Vector2))) return -1;
+                    const Vector2 p = x->frac[first + (int)v[c]], q = x->frac[first + (int)v[e]];
+                    double k = f[c]/(f[c] - f[e]), a = p.x + k*((double)q.x - p.x);
+                    x->frac[x->fracCount] = rbl__v2((float)a, (float)((d == 0)? a : 1.0 - a));   // on the diagonal
+                    unsigned int at = (unsigned int)(x->fracCount++ - first);
+                    poly[0][len[0]++] = at; poly[1][len[1]++] = at;
+                }
+            }
+        }
+        for (int h = 0; h < 2; h++)
+            for (int c = 1; c + 1 < len[h]; c++)
+            {
+                if (!rbl__polyReserve((void **)&x->piece, &x->pieceCap, 3*(count + 1), sizeof(unsigned int))) return -1;
+                unsigned int *o = x->piece + 3*count;
+                o[0] = poly[h][0]; o[1] = poly[h][c]; o[2] = poly[h][c + 1];
+                const Vector2 A = x->frac[first + (int)o[0]], B = x->frac[first + (int)o[1]], C = x->frac[first + (int)o[2]];
+                if (((double)B.x - A.x)*((double)C.y - A.y) - ((double)C.x - A.x)*((double)B.y - A.y) != 0.0) count++;
+            }
+    }
+    return count;
+}
+
+// Pieces x->piece[0..n) paired across shared edges into slots of two (a, b, c) + (a, c, d), the
+// unpaired alone (a, b, c, c), appended to x->slots; false when out of memory
+static bool rbl__polyPair(rbl__PolyScratch *x, int n)
+{
+    if (!rbl__polyReserve((void **)&x->edges, &x->edgeCap, 3*n*3 + 3, sizeof(unsigned int)) ||
+        !rbl__polyReserve((void **)&x->slots, &x->slotCap, 4*(x->slotCount + n), sizeof(unsigned int))) return false;
+    unsigned char *paired = (unsigned char *)RBL_MALLOC((size_t)n + 1);
+    if (paired == NULL) return false;
+    const unsigned int *tri = x->piece;
+    for (int t = 0; t < n; t++)
+    {
+        paired[t] = 0;
+        for (int e = 0; e < 3; e++)
+        {
+            unsigned int u = tri[3*t + e], w = tri[3*t + (e + 1)%3], *o = x->edges + 3*(3*t + e);
+            o[0] = (u < w)? u : w; o[1] = (u < w)? w : u; o[2] = (unsigned int)(3*t + e);
+        }
+    }
+    qsort(x->edges, (size_t)n*3, 3*sizeof(unsigned int), rbl__compareEdges);
+    for (int t = 0; t < n; t++)
+    {
+        if (paired[t]) continue;
+        paired[t] = 1;
+        unsigned int *o = x->slots + 4*x->slotCount++;
+        o[0] = tri[3*t]; o[1] = tri[3*t + 1]; o[2] = tri[3*t + 2]; o[3] = tri[3*t + 2];
+        // A neighbour across one of t's edges (u -> w in t, w -> u in it): the slot starts at w
+        for (int e = 0; e < 3; e++)
+        {
+            unsigned int u = tri[3*t + e], w = tri[3*t + (e + 1)%3], lo0 = (u < w)? u : w, hi0 = (u < w)? w : u;
+            int lo = 0, hi = 3*n;
+            while (lo < hi)
+            {
+                int mid = (lo + hi)/2;
+                const unsigned int *m = x->edges + 3*mid;
+                if ((m[0] < lo0) || ((m[0] == lo0) && (m[1] < hi0))) lo = mid + 1; else hi = mid;
+            }
+            int found = -1;
+            for (int k = lo; (k < 3*n) && (x->edges[3*k] == lo0) && (x->edges[3*k + 1] == hi0) && (found < 0); k++)
+            {
+                int other = (int)x->edges[3*k + 2]/3, oe = (int)x->edges[3*k + 2]%3;
+                if (paired[other] || (tri[3*other + oe] != w)) continue;       // taken, or the same way round (folded)
+                found = other;
+                o[3] = tri[3*other + (oe + 2)%3];
+            }
+            if (found < 0) continue;
+            paired[found] = 1;
+            // t from w: (w, x, u) with x its third vertex; the neighbour (w, u, d)
+            o[0] = w; o[1] = tri[3*t + (e + 2)%3]; o[2] = u;
+            break;
+        }
+    }
+    RBL_FREE(paired);
+    return true;
 }
 
 // The draw paths' form of every polygon (rbl__Polygon): vertices as fractions of the frame's source
 // (from the file's texels), triangles of zero area dropped, the rest wound as the quad's triangles are
-// (clockwise in texel space, y down: the quad's (0,1,2) seen upright) and paired across shared edges
-// into slots of two (a, b, c) + (a, c, d), the unpaired alone (a, b, c, c); then registered
+// (clockwise in texel space, y down: the quad's (0,1,2) seen upright), cut along each frame diagonal
+// (rbl__polyCut) and paired into slots (rbl__polyPair); then registered
 static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
 {
     if (s->polygonCount == 0) return true;
-    int slotMax = s->polyIndexCount/3;
-    s->polyDraw = (rbl__Polygon *)RBL_MALLOC((size_t)s->polygonCount*sizeof(rbl__Polygon));
-    s->polyFrac = (Vector2 *)RBL_MALLOC((size_t)s->polyPointCount/2*sizeof(Vector2) + sizeof(Vector2));
-    s->polySlots = (unsigned short *)RBL_MALLOC((size_t)slotMax*4*sizeof(unsigned short) + 4*sizeof(unsigned short));
-    int maxTriangles = 0;
-    for (int i = 0; i < s->polygonCount; i++) if (s->polygons[i].indexCount/3 > maxTriangles) maxTriangles = s->polygons[i].indexCount/3;
-    unsigned int *edges = (unsigned int *)RBL_MALLOC((size_t)maxTriangles*3*2*sizeof(unsigned int) + 2*sizeof(unsigned int));
-    unsigned short *tri = (unsigned short *)RBL_MALLOC((size_t)maxTriangles*3*sizeof(unsigned short) + 3*sizeof(unsigned short));
-    unsigned char *paired = (unsigned char *)RBL_MALLOC((size_t)maxTriangles + 1);
-    bool ok = (s->polyDraw != NULL) && (s->polyFrac != NULL) && (s->polySlots != NULL) && (edges != NULL) && (tri != NULL) && (paired != NULL);
-    int fracAt = 0, slotAt = 0;
+    rbl__PolyScratch x;
+    memset(&x, 0, sizeof(x));
+    s->polyDraw = (rbl__Polygon *)RBL_CALLOC((size_t)s->polygonCount, sizeof(rbl__Polygon));
+    int *firstSlot = (int *)RBL_MALLOC((size_t)s->polygonCount*2*sizeof(int) + sizeof(int)), *firstFrac = (int *)RBL_MALLOC((size_t)s->polygonCount*sizeof(int) + sizeof(int));
+    bool ok = (s->polyDraw != NULL) && (firstSlot != NULL) && (firstFrac != NULL);
     for (int i = 0; ok && (i < s->polygonCount); i++)
     {
         const RblAtlasPolygon *p = &s->polygons[i];
         const RblAtlasFrame *f = &s->frames[s->polygonRefs[i].frame];
-        Vector2 *frac = s->polyFrac + fracAt;
+        const int first = x.fracCount;
+        firstFrac[i] = first;
+        ok = rbl__polyReserve((void **)&x.frac, &x.fracCap, first + p->vertexCount, sizeof(Vector2)) &&
+             rbl__polyReserve((void **)&x.tri, &x.triCap, p->indexCount, sizeof(unsigned int));
+        if (!ok) break;
         const double sx = f->source.x, sy = f->source.y, sw = fabs((double)f->source.width), sh = fabs((double)f->source.height);
         for (int v = 0; v < p->vertexCount; v++)
         {
             double a = (sw > 0.0)? ((double)p->uvs[v].x - sx)/sw : 0.0, b = (sh > 0.0)? ((double)p->uvs[v].y - sy)/sh : 0.0;
-            frac[v] = rbl__v2((float)fmin(fmax(a, 0.0), 1.0), (float)fmin(fmax(b, 0.0), 1.0));
+            x.frac[first + v] = rbl__v2((float)fmin(fmax(a, 0.0), 1.0), (float)fmin(fmax(b, 0.0), 1.0));
         }
+        x.fracCount += p->vertexCount;
         int n = 0;
         for (int t = 0; t < p->indexCount/3; t++)
         {
-            unsigned short c0 = p->indices[3*t], c1 = p->indices[3*t + 1], c2 = p->indices[3*t + 2];
-            const Vector2 A = frac[c0], B = frac[c1], C = frac[c2];
+            unsigned int c0 = p->indices[3*t], c1 = p->indices[3*t + 1], c2 = p->indices[3*t + 2];
+            const Vector2 A = x.frac[first + (int)c0], B = x.frac[first + (int)c1], C = x.frac[first + (int)c2];
             double area2 = ((double)B.x - A.x)*((double)C.y - A.y) - ((double)C.x - A.x)*((double)B.y - A.y);
             if (area2 == 0.0) continue;
-            tri[3*n] = c0; tri[3*n + 1] = (area2 < 0.0)? c1 : c2; tri[3*n + 2] = (area2 < 0.0)? c2 : c1;
-            paired[n] = 0;
-            for (int e = 0; e < 3; e++)
-            {
-                unsigned int u = tri[3*n + e], w = tri[3*n + (e + 1)%3];
-                edges[2*(3*n + e)] = (u < w)? (u << 16) | w : (w << 16) | u;
-                edges[2*(3*n + e) + 1] = (unsigned int)(3*n + e);
-            }
+            x.tri[3*n] = c0; x.tri[3*n + 1] = (area2 < 0.0)? c1 : c2; x.tri[3*n + 2] = (area2 < 0.0)? c2 : c1;
             n++;
         }
-        qsort(edges, (size_t)n*3, 2*sizeof(unsigned int), rbl__compareEdges);
-        rbl__Polygon *d = &s->polyDraw[i];
-        d->frac = NULL; d->slots = NULL;            // set once the tables stop growing (below)
-        d->triangles = n;
-        d->slotCount = 0;
-        int firstSlot = slotAt;
-        for (int t = 0; t < n; t++)
+        for (int d = 0; ok && (d < 2); d++)
         {
-            if (paired[t]) continue;
-            paired[t] = 1;
-            unsigned short *o = s->polySlots + 4*slotAt++;
-            o[0] = tri[3*t]; o[1] = tri[3*t + 1]; o[2] = tri[3*t + 2]; o[3] = tri[3*t + 2];
-            // A neighbour across one of t's edges (u -> w in t, w -> u in it): the slot starts at w
-            for (int e = 0; e < 3; e++)
-            {
-                unsigned int u = tri[3*t + e], w = tri[3*t + (e + 1)%3], key = (u < w)? (u << 16) | w : (w << 16) | u;
-                int lo = 0, hi = 3*n;
-                while (lo < hi) { int mid = (lo + hi)/2; if (edges[2*mid] < key) lo = mid + 1; else hi = mid; }
-                int found = -1;
-                for (int k = lo; (k < 3*n) && (edges[2*k] == key) && (found < 0); k++)
-                {
-                    int other = (int)edges[2*k + 1]/3, oe = (int)edges[2*k + 1]%3;
-                    if (paired[other] || (tri[3*other + oe] != w)) continue;       // taken, or the same way round (folded)
-                    found = other;
-                    o[3] = tri[3*other + (oe + 2)%3];
-                }
-                if (found < 0) continue;
-                paired[found] = 1;
-                // t from w: (w, x, u) with x its third vertex; the neighbour (w, u, d)
-                o[0] = (unsigned short)w; o[1] = tri[3*t + (e + 2)%3]; o[2] = (unsigned short)u;
-                break;
-            }
+            int pieces = rbl__polyCut(&x, first, n, d);
+            firstSlot[2*i + d] = x.slotCount;
+            ok = (pieces >= 0) && rbl__polyPair(&x, pieces);
+            if (ok) { s->polyDraw[i].triangles[d] = pieces; s->polyDraw[i].slotCount[d] = x.slotCount - firstSlot[2*i + d]; }
         }
-        d->slotCount = slotAt - firstSlot;
-        s->polygonRefs[i].index = firstSlot;        // reused: where its slots start
-        s->polygonRefs[i].vertex = fracAt;          // ... and its fractions
-        fracAt += p->vertexCount;
     }
-    RBL_FREE(edges); RBL_FREE(tri); RBL_FREE(paired);
-    if (!ok) { rbl__atlasErrorf(s, -1, "out of memory for %d polygons", s->polygonCount); return false; }
-    for (int i = 0; i < s->polygonCount; i++)
+    if (ok)
     {
-        s->polyDraw[i].frac = s->polyFrac + s->polygonRefs[i].vertex;
-        s->polyDraw[i].slots = s->polySlots + 4*s->polygonRefs[i].index;
+        // The scratch becomes the atlas's (the rows stopped moving)
+        s->polyFrac = x.frac; s->polySlots = x.slots;
+        x.frac = NULL; x.slots = NULL;
+        for (int i = 0; i < s->polygonCount; i++)
+        {
+            s->polyDraw[i].frac = s->polyFrac + firstFrac[i];
+            for (int d = 0; d < 2; d++) s->polyDraw[i].slots[d] = s->polySlots + 4*(size_t)firstSlot[2*i + d];
+        }
     }
+    RBL_FREE(x.frac); RBL_FREE(x.slots); RBL_FREE(x.tri); RBL_FREE(x.piece); RBL_FREE(x.edges);
+    RBL_FREE(firstSlot); RBL_FREE(firstFrac);
+    if (!ok) { rbl__atlasErrorf(s, -1, "out of memory for %d polygons", s->polygonCount); return false; }
     s->polyFirst = rbl__polygonRegister(s->polyDraw, s->polygonCount);
     if (s->polyFirst == 0u) { rbl__atlasErrorf(s, -1, "no room for %d more polygon frames (%d handles, RBL_FRAME_POLYGON) or out of memory", s->polygonCount, (int)RBL__POLYGON_HANDLES); return false; }
     return true;
@@ -12360,7 +12492,7 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
     for (int k = 0; k < s->frameCount; k++)
     {
         const rbl__Polygon *poly = (s->frames[k].polygon != NULL)? &s->polyDraw[s->frames[k].polygon - s->polygons] : NULL;
-        if (poly != NULL) n += (3*poly->triangles + 1)/2;       // its corners (rbl__polygonCorners)
+        if (poly != NULL) n += 1 + (int)rbl__polygonTexels(poly);     // its header (both diagonals' first texel and count), its corners
     }
     float *table = (float *)RBL_CALLOC((size_t)n*4, sizeof(float));
     int *order = (int *)RBL_MALLOC((size_t)(2*s->frameCount + 2)*sizeof(int));
@@ -12377,11 +12509,18 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
         t[8] = (float)rbl__spriteDuration(s, k); t[9] = (float)(flags & RBL_FRAME_ROTATED);
         if (f->polygon != NULL)
         {
-            // A polygon frame: where its corners start and how many (lit_instanced.vs.glsl's rblPolygonSpan)
+            // A polygon frame: its header texel (each diagonal's first corner texel and count, as the
+            // polygon table's), then its corners (lit_instanced.vs.glsl's rblPolygonSpan)
             const rbl__Polygon *poly = &s->polyDraw[f->polygon - s->polygons];
-            t[10] = (float)polygonBase; t[11] = (float)(3*poly->triangles);
-            polygonBase += rbl__polygonCorners(poly, table + (size_t)polygonBase*4);
-            if (3*poly->triangles > *corners) *corners = 3*poly->triangles;
+            float *h = table + (size_t)polygonBase*4;
+            t[10] = (float)polygonBase; t[11] = (float)(1 + rbl__polygonMaxCorners(poly));
+            polygonBase++;
+            for (int d = 0; d < 2; d++)
+            {
+                h[2*d] = (float)polygonBase; h[2*d + 1] = (float)(3*poly->triangles[d]);
+                polygonBase += rbl__polygonCorners(poly, d, table + (size_t)polygonBase*4);
+            }
+            if (rbl__polygonMaxCorners(poly) > *corners) *corners = rbl__polygonMaxCorners(poly);
         }
         // Either flip mirrors the quad about the pivot: the corner reach is the same
         double x = fmax(fabs((double)origin.x), fabs((double)size.x - origin.x)), y = fmax(fabs((double)origin.y), fabs((double)size.y - origin.y));

@@ -59,10 +59,12 @@ uniform vec4 rblInstancing[7];
 // Polygon frames (the variant the header compiles for draws with RBL_FRAME_POLYGON instances or a
 // sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest
 // polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest
-// handle in the polygon table. A polygon's corners are pairs (a, b) of fractions of its frame's source,
-// two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the front); the plain
-// variant finds them from texel handle - z of rblPolygonTable (first corner texel, corner count), the
-// resident-sprite variant in its frame table (frame k's texel 3k + 2, zw)
+// handle in the polygon table. A polygon is kept cut along each frame diagonal (a = b, a + b = 1: the
+// quad's two triangles meet on one of them), each cut as corners: pairs (a, b) of fractions of its
+// frame's source, two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the
+// front). Its header texel holds each cut's first corner texel and corner count; the plain variant
+// finds it at texel handle - z of rblPolygonTable, the resident-sprite variant at the frame table texel
+// that frame k's texel 3k + 2 names in z (w: 1 + its most corners, 0 for a quad frame)
 uniform vec4 rblPolygon;
 #ifndef RBL_SPRITE_BUFFER
 uniform highp sampler2D rblPolygonTable;
@@ -75,7 +77,8 @@ vec4 rblSizeOrigin;     // size (negative mirrors), origin
 vec4 rblSource;         // texels (all zero = whole texture)
 float rblFlagBits;      // RblBillboardFlags
 #ifdef RBL_POLYGONS
-vec2 rblPolygonSpan;    // The instance's polygon: first corner texel, corners (0: the quad)
+vec4 rblPolygonSpan;    // The instance's polygon header (each cut's first corner texel and count)
+bool rblPolygonal;      // ... when it has one (else the quad)
 #endif
 #ifdef RBL_CROSS_FADE
 vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;
@@ -329,11 +332,21 @@ vec4 rblPolygonTexel(int i)
 #endif
 }
 
-// Corner k of the instance's polygon (rblPolygonSpan) with the quad's fields there: position and
+// The instance's polygon cut along the diagonal its quad's triangles meet on (rbl__polygonDiagonal):
+// first corner texel, corner count
+vec2 rblPolygonCut()
+{
+    bool flipU = (rblSizeOrigin.x < 0.0) != (rblSource.z < 0.0);
+    bool flipV = (rblSizeOrigin.y < 0.0) != (rblSource.w < 0.0);
+    bool rotated = (int(rblFlagBits + 0.5) & 1) != 0;
+    return ((flipU != flipV) != rotated)? rblPolygonSpan.xy : rblPolygonSpan.zw;
+}
+
+// Corner k of the instance's polygon (its cut from first) with the quad's fields there: position and
 // texture coordinate of the frame point, normal and tangent interpolated over the quad's triangle
 // (0, 1, 2) or (0, 2, 3) holding it, as the rasteriser would over the quad (rbl__expandQuad, the CPU
 // twin). A mirror turns the triangles over: corners 1 and 2 swap. Returns sprite (s right, t down).
-vec2 rblPolygonVertex(int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,
+vec2 rblPolygonVertex(int first, int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,
                       out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)
 {
     int flags = int(rblFlagBits + 0.5);
@@ -345,7 +358,7 @@ vec2 rblPolygonVertex(int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float rou
     bool rotated = (flags & 1) != 0;
     int m = k - (k/3)*3;
     if (flipU != flipV) k += (m == 1)? 1 : ((m == 2)? -1 : 0);
-    vec4 texel = rblPolygonTexel(int(rblPolygonSpan.x + 0.5) + k/2);
+    vec4 texel = rblPolygonTexel(first + k/2);
     vec2 ab = ((k & 1) != 0)? texel.zw : texel.xy;
     float s = rotated? ab.y : ab.x, t = rotated? 1.0 - ab.x : ab.y;
     if (flipU) s = 1.0 - s;
@@ -484,7 +497,8 @@ void rblReadSprite()
     vec4 frameBits = rblTable(3*frame + 2);
     rblFlagBits = frameBits.y + (((mode & 4u) != 0u)? 2.0 : 0.0);
 #ifdef RBL_POLYGONS
-    rblPolygonSpan = frameBits.zw;
+    rblPolygonal = frameBits.w > 0.5;
+    rblPolygonSpan = rblPolygonal? rblTable(int(frameBits.z + 0.5)) : vec4(0.0);
 #endif
 #ifdef RBL_CROSS_FADE
     rblFadeSource = rblTable(3*next);
@@ -507,15 +521,16 @@ void main()
 #endif
 #ifdef RBL_POLYGONS
     // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)
-    rblPolygonSpan = vec2(0.0);
     uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;
-    if (handle != 0u) rblPolygonSpan = rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)).xy;
+    rblPolygonal = handle != 0u;
+    rblPolygonSpan = rblPolygonal? rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)) : vec4(0.0);
 #endif
 #endif
 #ifdef RBL_POLYGONS
     // Past the instance's corners (a quad's 6, or its polygon's): one point outside the view, so the
     // padding triangles have no area
-    if (gl_VertexID >= ((rblPolygonSpan.y > 0.5)? int(rblPolygonSpan.y + 0.5) : 6))
+    vec2 cut = rblPolygonal? rblPolygonCut() : vec2(0.0, 6.0);
+    if (gl_VertexID >= int(cut.y + 0.5))
     {
         fragPosition = vec3(0.0); fragTexCoord = vec2(0.0); fragColor = vec4(0.0); fragNormal = vec3(0.0, 0.0, 1.0); fragTangent = vec4(1.0, 0.0, 0.0, 1.0);
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
@@ -559,8 +574,8 @@ void main()
     vec3 p;
 #ifdef RBL_POLYGONS
     vec2 polygonPoint = vec2(-1.0);
-    if (rblPolygonSpan.y > 0.5)
-        polygonPoint = rblPolygonVertex(gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
+    if (rblPolygonal)
+        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
                                         p, fragTexCoord, fragNormal, fragTangent);
     else
 #endif

@@ -61,7 +61,7 @@ static Image polyDraw(RenderTexture2D rt, Material m, const RblAtlas *a, int k, 
         RblInstanceBuffer buf = RblLoadInstanceBuffer(0);
         RblInstance in = polyInstance(b);
         RblInstancedDesc desc; memset(&desc, 0, sizeof(desc));
-        desc.facing = b->facing;
+        desc.facing = b->facing; desc.roundness = b->roundness;
         RT_CHECK(RblDrawInstanced(&buf, cam, m, desc, &in, 1) == 1, "instanced draw");
         RblUnloadInstanceBuffer(&buf);
     }
@@ -73,7 +73,7 @@ static Image polyDraw(RenderTexture2D rt, Material m, const RblAtlas *a, int k, 
         if (b->size.y < 0) s.mode |= RBL_SPRITE_FLIP_Y;
         RT_CHECK(RblUpdateSprites(&sb, 0, 1, &s), "sprite update");
         RblInstancedDesc desc; memset(&desc, 0, sizeof(desc));
-        desc.facing = b->facing;
+        desc.facing = b->facing; desc.roundness = b->roundness;
         RT_CHECK(RblDrawSpriteBuffer(&sb, cam, m, desc, 0.0f) >= 1, "sprite draw");
         RblUnloadSpriteBuffer(&sb);
     }
@@ -95,7 +95,7 @@ static bool polyPicturePoint(const RblBillboard *b, const RblAtlasFrame *f, int 
     return (s >= 0.0) && (s <= 1.0) && (t >= 0.0) && (t <= 1.0);
 }
 
-typedef struct PolyCount { int inside, outside, cutByQuad, badInside, badOutside, badBeyond, drawn, expectedMax; } PolyCount;
+typedef struct PolyCount { int inside, outside, cutByQuad, badInside, badOutside, badBeyond, drawn, worst, tolerance; } PolyCount;
 
 // The polygon draw against the quad draw and the CPU rasterisation
 static void polyCompare(Image quad, Image poly, int k, const RblBillboard *b, const RblAtlasFrame *f, PolyCount *c)
@@ -115,7 +115,12 @@ static void polyCompare(Image quad, Image poly, int k, const RblBillboard *b, co
             if (polyFixtureInside(k, x, y, 0.02) && !tie)
             {
                 c->inside++;
-                bool differs = clearP || (memcmp(&p[i], &q[i], sizeof(Color)) != 0);
+                int d = abs(p[i].r - q[i].r);
+                if (abs(p[i].g - q[i].g) > d) d = abs(p[i].g - q[i].g);
+                if (abs(p[i].b - q[i].b) > d) d = abs(p[i].b - q[i].b);
+                if (abs(p[i].a - q[i].a) > d) d = abs(p[i].a - q[i].a);
+                if (d > c->worst) c->worst = d;
+                bool differs = clearP || (d > c->tolerance);
                 if (differs && (getenv("RBL_POLY_LOOK") != NULL)) printf("      differs at %d,%d (frame %g,%g): %d %d %d vs %d %d %d\n", px, py, x, y, p[i].r, p[i].g, p[i].b, q[i].r, q[i].g, q[i].b);
                 c->badInside += differs;
             }
@@ -129,9 +134,10 @@ static void polyCompare(Image quad, Image poly, int k, const RblBillboard *b, co
 }
 
 // The frames one after another on a path, each plain, mirrored both ways and turned; the counts
-static PolyCount polyRunPath(int path, Material m, const RblAtlas *a, int *draws)
+static PolyCount polyRunPath(int path, Material m, const RblAtlas *a, int *draws, float roundness, int tolerance)
 {
     PolyCount c; memset(&c, 0, sizeof(c));
+    c.tolerance = tolerance;
     RenderTexture2D rt = LoadRenderTexture(POLY_RT, POLY_RT);
     for (int k = 0; k < 3; k++)
         for (int v = 0; v < 4; v++)
@@ -139,6 +145,7 @@ static PolyCount polyRunPath(int path, Material m, const RblAtlas *a, int *draws
             RblBillboard b; memset(&b, 0, sizeof(b));
             RT_CHECK(RblAtlasBillboard(a, k, POLY_SCALE, &b), "billboard");
             b.position = (Vector3){ 3.0f, -5.0f, 0.0f };
+            b.roundness = roundness;
             if (v & 1) { b.size.x = -b.size.x; b.size.y = -b.size.y; }
             if (v & 2) b.rotation = 45.0f;       // exact in a sprite's 65536ths of a turn
             if (path == POLY_SPRITES)
@@ -151,7 +158,10 @@ static PolyCount polyRunPath(int path, Material m, const RblAtlas *a, int *draws
             Image quad = polyDraw(rt, m, a, k, &plain, (path == POLY_SPRITES)? POLY_INSTANCED : path);
             Image poly = polyDraw(rt, m, a, k, &b, path);
             PolyCount before = c;
+            c.worst = 0;
             polyCompare(quad, poly, k, &b, &a->frames[k], &c);
+            if (getenv("RBL_POLY_LOOK") != NULL) printf("      frame %d v %d: worst %d\n", k, v, c.worst);
+            if (before.worst > c.worst) c.worst = before.worst;
             if ((c.badInside != before.badInside) || (c.badOutside != before.badOutside) || (c.badBeyond != before.badBeyond) || (getenv("RBL_POLY_LOOK") != NULL))
             {
                 char tag[64];
@@ -186,7 +196,7 @@ static void polyCheckPath(int path)
     polyMaterial(&m, tex, path >= POLY_INSTANCED, &lit);
     RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
     int draws = 0;
-    PolyCount c = polyRunPath(path, m, &a, &draws);
+    PolyCount c = polyRunPath(path, m, &a, &draws, 0.0f, 0);
     printf("    %s: %d draws; %d pixels inside the polygons equal the quad's (%d differ), %d cut-away pixels the quad drew left undrawn (%d drawn)\n",
            polyPathNames[path], draws, c.inside - c.badInside, c.badInside, c.cutByQuad, c.badOutside);
     RT_CHECK(c.inside > 20000 && c.badInside == 0, "%s: %d of %d inside pixels differ from the quad's", polyPathNames[path], c.badInside, c.inside);
@@ -201,6 +211,59 @@ static void test_polygon_batch_draws_the_polygon_and_none_of_the_cut_away_quad(v
 static void test_polygon_immediate_draws_the_polygon_and_none_of_the_cut_away_quad(void) { polyCheckPath(POLY_IMMEDIATE); }
 
 static void test_polygon_instanced_draws_the_polygon_and_none_of_the_cut_away_quad(void) { polyCheckPath(POLY_INSTANCED); }
+
+// A smooth normal map (tilts varying over a few texels, unit vectors in RGB)
+static Image polyNormalMap(void)
+{
+    Image img = GenImageColor(POLY_SHEET, POLY_SHEET, BLACK);
+    Color *px = (Color *)img.data;
+    for (int y = 0; y < POLY_SHEET; y++)
+        for (int x = 0; x < POLY_SHEET; x++)
+        {
+            double nx = 0.5*sin(x*0.7 + y*0.3), ny = 0.5*cos(x*0.2 - y*0.9), nz = sqrt(fmax(0.0, 1.0 - nx*nx - ny*ny));
+            px[y*POLY_SHEET + x] = (Color){ (unsigned char)lround((nx*0.5 + 0.5)*255.0), (unsigned char)lround((ny*0.5 + 0.5)*255.0), (unsigned char)lround((nz*0.5 + 0.5)*255.0), 255 };
+        }
+    return img;
+}
+
+// Lit by a directional light from the side with a normal map, flat (roundness 0) and rounded (0.6,
+// sphere): the polygon's pixels are the quad's (its normals and tangents are the quad's fields)
+static void test_polygon_lit_normal_mapped_pixels_equal_the_quads_flat_and_rounded(void)
+{
+    RblAtlas a = RblLoadAtlasFromMemory(polyFixture, (int)strlen(polyFixture), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(a), "fixture");
+    if (!RblIsAtlasValid(a)) return;
+    Image sheet = polySheet(), normals = polyNormalMap();
+    Texture2D tex = LoadTextureFromImage(sheet), ntex = LoadTextureFromImage(normals);
+    RblLight light; memset(&light, 0, sizeof(light));
+    light.type = RBL_LIGHT_DIRECTIONAL; light.direction = (Vector3){ -1.0f, -0.6f, -0.8f }; light.color = WHITE; light.intensity = 1.6f;
+    RT_CHECK(renderSetLights(&light, 1, (Color){ 30, 30, 40, 255 }), "scene");
+    int worst[2][2] = { { 0, 0 }, { 0, 0 } }, bad = 0;
+    for (int inst = 0; inst < 2; inst++)
+    {
+        if ((inst == 1) && !rtGlsl3()) break;
+        RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
+        desc.instanced = (inst == 1); desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.material.normalEncoding = RBL_NORMAL_RGB;
+        Shader lit = RblLoadLitShader(desc);
+        Material m = LoadMaterialDefault();
+        m.shader = lit;
+        m.maps[MATERIAL_MAP_ALBEDO].texture = tex;
+        m.maps[MATERIAL_MAP_NORMAL].texture = ntex;
+        for (int r = 0; r < 2; r++)
+        {
+            int draws = 0;
+            PolyCount c = polyRunPath(inst? POLY_INSTANCED : POLY_BATCH, m, &a, &draws, r? 0.6f : 0.0f, r? 1 : 0);
+            worst[inst][r] = c.worst;
+            bad += c.badInside + c.badOutside + c.badBeyond + (c.inside < 20000);
+            printf("    %s, roundness %.1f: %d inside pixels, worst %d/255 from the quad's, %d cut-away pixels drawn\n", inst? "instanced" : "batch", r? 0.6 : 0.0, c.inside, c.worst, c.badOutside);
+        }
+        RblUnloadLitShader(&lit);
+        MemFree(m.maps);
+    }
+    RT_CHECK(bad == 0 && worst[0][0] == 0 && worst[1][0] == 0, "lit polygons: %d bad pixels; flat worst %d (batch) %d (instanced), rounded %d %d", bad, worst[0][0], worst[1][0], worst[0][1], worst[1][1]);
+    UnloadTexture(tex); UnloadTexture(ntex); UnloadImage(sheet); UnloadImage(normals);
+    RblUnloadAtlas(&a);
+}
 static void test_polygon_sprite_buffer_draws_the_polygon_and_none_of_the_cut_away_quad(void) { polyCheckPath(POLY_SPRITES); }
 
 // The tests of this file, in order (gpu_tests.h lists every file's)
@@ -208,4 +271,5 @@ static void test_polygon_sprite_buffer_draws_the_polygon_and_none_of_the_cut_awa
     RT_TEST(test_polygon_batch_draws_the_polygon_and_none_of_the_cut_away_quad), \
     RT_TEST(test_polygon_immediate_draws_the_polygon_and_none_of_the_cut_away_quad), \
     RT_TEST_GLSL3(test_polygon_instanced_draws_the_polygon_and_none_of_the_cut_away_quad), \
+    RT_TEST(test_polygon_lit_normal_mapped_pixels_equal_the_quads_flat_and_rounded), \
     RT_TEST_GLSL3(test_polygon_sprite_buffer_draws_the_polygon_and_none_of_the_cut_away_quad)
