@@ -260,7 +260,7 @@ $(addprefix $(BUILD)/bench/bench_platforms_,$(GPU_CONTEXTS)): $(BUILD)/bench/ben
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(VARIANT_FLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(VARIANT_LIBS)
 
-bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_polygon $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

@@ -1713,13 +1713,16 @@ typedef struct rbl__Live {
 
 // A polygon frame as the draw paths read it (an atlas's, registered under RBL_FRAME_POLYGON handles)
 // The quad's two triangles meet on a diagonal of the frame, a = b or a + b = 1 in frame fractions
-// (which one follows the mirrors and rotation: rbl__polygonDiagonal); a polygon is kept cut along
-// each, so every triangle lies in one of the quad's and takes its fields exactly
+// (which one follows the mirrors and rotation: rbl__polygonDiagonal). Rounded normals and their
+// tangents are affine over each of them (with a kink on the diagonal): a polygon is kept cut along
+// each diagonal (cuts 0, 1), so every triangle lies in one of the quad's and takes its fields exactly,
+// and as the file's triangles (cut 2) for flat billboards (constant normal and tangent: fewer, fatter
+// triangles)
 typedef struct rbl__Polygon {
     const Vector2 *frac;            // Vertices as fractions (a along +u, b along +v) of the frame's source: the file's, then the cut points
-    const unsigned int *slots[2];   // Per diagonal, 4 vertices per slot drawn as a quad is: (0, 1, 2) and (0, 2, 3); a repeated last vertex = one triangle
-    int slotCount[2];               // Slots (a batch draws each as one quad)
-    int triangles[2];               // Triangles over all slots (the instanced stage's corners / 3)
+    const unsigned int *slots[3];   // Per cut, 4 vertices per slot drawn as a quad is: (0, 1, 2) and (0, 2, 3); a repeated last vertex = one triangle
+    int slotCount[3];               // Slots (a batch draws each as one quad)
+    int triangles[3];               // Triangles over all slots (the instanced stage's corners / 3)
 } rbl__Polygon;
 
 // Handles [first, first + count) of one atlas's polygons
@@ -2813,11 +2816,12 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest\n",
     "// polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest\n",
     "// handle in the polygon table. A polygon is kept cut along each frame diagonal (a = b, a + b = 1: the\n",
-    "// quad's two triangles meet on one of them), each cut as corners: pairs (a, b) of fractions of its\n",
-    "// frame's source, two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the\n",
-    "// front). Its header texel holds each cut's first corner texel and corner count; the plain variant\n",
-    "// finds it at texel handle - z of rblPolygonTable, the resident-sprite variant at the frame table texel\n",
-    "// that frame k's texel 3k + 2 names in z (w: 1 + its most corners, 0 for a quad frame)\n",
+    "// quad's two triangles meet on one of them; rounded draws) and uncut (flat draws), each cut as\n",
+    "// corners: pairs (a, b) of fractions of its frame's source, two a texel, 3 per triangle (each turning\n",
+    "// as the quad's (0, 1, 2) seen from the front). Its two header texels hold each cut's first corner\n",
+    "// texel and corner count; the plain variant finds them at texel 2 (handle - z) of rblPolygonTable, the\n",
+    "// resident-sprite variant at the frame table texel that frame k's texel 3k + 2 names in z (w: 1 + its\n",
+    "// most corners, 0 for a quad frame)\n",
     "uniform vec4 rblPolygon;\n",
     "#ifndef RBL_SPRITE_BUFFER\n",
     "uniform highp sampler2D rblPolygonTable;\n",
@@ -2830,7 +2834,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "vec4 rblSource;         // texels (all zero = whole texture)\n",
     "float rblFlagBits;      // RblBillboardFlags\n",
     "#ifdef RBL_POLYGONS\n",
-    "vec4 rblPolygonSpan;    // The instance's polygon header (each cut's first corner texel and count)\n",
+    "vec4 rblPolygonSpan;    // The instance's polygon header: both diagonal cuts' first corner texel and count\n",
+    "vec2 rblPolygonFlat;    // ... and the uncut triangles'\n",
     "bool rblPolygonal;      // ... when it has one (else the quad)\n",
     "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
@@ -3085,10 +3090,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#endif\n",
     "}\n",
     "\n",
-    "// The instance's polygon cut along the diagonal its quad's triangles meet on (rbl__polygonDiagonal):\n",
-    "// first corner texel, corner count\n",
+    "// The instance's polygon as flat draws take it, or cut along the diagonal its quad's triangles meet\n",
+    "// on (rbl__billboardCut): first corner texel, corner count\n",
     "vec2 rblPolygonCut()\n",
     "{\n",
+    "    if (!(rblInstancing[1].w > 0.0)) return rblPolygonFlat;\n",
     "    bool flipU = (rblSizeOrigin.x < 0.0) != (rblSource.z < 0.0);\n",
     "    bool flipV = (rblSizeOrigin.y < 0.0) != (rblSource.w < 0.0);\n",
     "    bool rotated = (int(rblFlagBits + 0.5) & 1) != 0;\n",
@@ -3252,6 +3258,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#ifdef RBL_POLYGONS\n",
     "    rblPolygonal = frameBits.w > 0.5;\n",
     "    rblPolygonSpan = rblPolygonal? rblTable(int(frameBits.z + 0.5)) : vec4(0.0);\n",
+    "    rblPolygonFlat = rblPolygonal? rblTable(int(frameBits.z + 0.5) + 1).xy : vec2(0.0);\n",
     "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    rblFadeSource = rblTable(3*next);\n",
@@ -3276,7 +3283,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)\n",
     "    uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;\n",
     "    rblPolygonal = handle != 0u;\n",
-    "    rblPolygonSpan = rblPolygonal? rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)) : vec4(0.0);\n",
+    "    int header = 2*(int(handle) - int(rblPolygon.z + 0.5));\n",
+    "    rblPolygonSpan = rblPolygonal? rblPolygonTexel(header) : vec4(0.0);\n",
+    "    rblPolygonFlat = rblPolygonal? rblPolygonTexel(header + 1).xy : vec2(0.0);\n",
     "#endif\n",
     "#endif\n",
     "#ifdef RBL_POLYGONS\n",
@@ -4954,13 +4963,15 @@ static void rbl__polygonUnregister(unsigned int first)
 // (a + b = 1); lit_instanced.vs.glsl's rblPolygonChoose is the twin
 static inline int rbl__polygonDiagonal(bool flipU, bool flipV, bool rotated) { return ((flipU != flipV) != rotated)? 0 : 1; }
 
-static inline int rbl__billboardDiagonal(const RblBillboard *b)
+// The cut a billboard draws: flat, the file's triangles; rounded, those cut along its quad's diagonal
+static inline int rbl__billboardCut(const RblBillboard *b)
 {
+    if (!(b->roundness > 0.0f)) return 2;
     return rbl__polygonDiagonal((b->size.x < 0.0f) != (b->source.width < 0.0f), (b->size.y < 0.0f) != (b->source.height < 0.0f), (b->flags & RBL_FRAME_ROTATED) != 0);
 }
 
 // Slots a billboard takes in a batch: 1 for the quad, one per slot of its polygon (0: nothing drawn)
-static inline int rbl__slotCount(const rbl__Polygon *poly, const RblBillboard *b) { return (poly != NULL)? poly->slotCount[rbl__billboardDiagonal(b)] : 1; }
+static inline int rbl__slotCount(const rbl__Polygon *poly, const RblBillboard *b) { return (poly != NULL)? poly->slotCount[rbl__billboardCut(b)] : 1; }
 
 static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3]);
 
@@ -5112,7 +5123,7 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
         // they face as the quad does.
         static const int back[2][4] = { { 0, 3, 2, 1 }, { 0, 2, 1, 1 } };
         const bool reverse = flipU != flipV;
-        const int diagonal = rbl__polygonDiagonal(flipU, flipV, rotated);
+        const int diagonal = (round > 0.0f)? rbl__polygonDiagonal(flipU, flipV, rotated) : 2;     // rbl__billboardCut
         const float su = fabsf(src.width), sv = fabsf(src.height);
         for (int e = 0; e < 3; e++) centre[e] = 0.25f*(q[0].position[e] + q[1].position[e] + q[2].position[e] + q[3].position[e]);
         for (int k = 0; k < poly->slotCount[diagonal]; k++)
@@ -6242,14 +6253,18 @@ static int rbl__polygonCorners(const rbl__Polygon *poly, int d, float *out)
 }
 
 // The texels of a polygon's corners, both diagonals' (rbl__polygonCorners)
-static inline size_t rbl__polygonTexels(const rbl__Polygon *poly) { return (size_t)(3*poly->triangles[0] + 1)/2 + (size_t)(3*poly->triangles[1] + 1)/2; }
+static inline size_t rbl__polygonTexels(const rbl__Polygon *poly) { return (size_t)(3*poly->triangles[0] + 1)/2 + (size_t)(3*poly->triangles[1] + 1)/2 + (size_t)(3*poly->triangles[2] + 1)/2; }
 
 // The most corners of a polygon's two cuts
-static inline int rbl__polygonMaxCorners(const rbl__Polygon *poly) { return 3*((poly->triangles[0] > poly->triangles[1])? poly->triangles[0] : poly->triangles[1]); }
+static inline int rbl__polygonMaxCorners(const rbl__Polygon *poly)
+{
+    int t = (poly->triangles[0] > poly->triangles[1])? poly->triangles[0] : poly->triangles[1];
+    return 3*((poly->triangles[2] > t)? poly->triangles[2] : t);
+}
 
-// The header's polygon table for instanced draws, rebuilt when atlases came or went since: texel
-// h - base holds handle h's first corner texel and corner count for each diagonal, then the corners
-// (rbl__polygonCorners). false (problem set) when it cannot be made
+// The header's polygon table for instanced draws, rebuilt when atlases came or went since: texels
+// 2(h - base) and 2(h - base) + 1 hold handle h's first corner texel and corner count for each cut,
+// then the corners (rbl__polygonCorners). false (problem set) when it cannot be made
 static bool rbl__polygonTable(void)
 {
     if ((rbl__state.polyTableId != 0) && (rbl__state.polyTableVersion == rbl__state.polyVersion)) return true;
@@ -6257,20 +6272,20 @@ static bool rbl__polygonTable(void)
     if (rbl__state.polyRangeCount == 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "no polygons loaded"); return false; }
     unsigned int base = rbl__state.polyRanges[0].first;
     const rbl__PolyRange *last = &rbl__state.polyRanges[rbl__state.polyRangeCount - 1];
-    size_t texels = (size_t)(last->first + (unsigned int)last->count - base);
+    size_t texels = 2*(size_t)(last->first + (unsigned int)last->count - base);
     for (int r = 0; r < rbl__state.polyRangeCount; r++)
         for (int i = 0; i < rbl__state.polyRanges[r].count; i++) texels += rbl__polygonTexels(&rbl__state.polyRanges[r].polygons[i]);
     size_t rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
     if (rows > 2048) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "the loaded atlases' polygons need %zu texels, more than 1024 x 2048", texels); return false; }
     float *table = (float *)RBL_CALLOC(rows*RBL__FRAME_TABLE_WIDTH*4, sizeof(float));
     if (table == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the polygon table"); return false; }
-    size_t at = (size_t)(last->first + (unsigned int)last->count - base);
+    size_t at = 2*(size_t)(last->first + (unsigned int)last->count - base);
     for (int r = 0; r < rbl__state.polyRangeCount; r++)
         for (int i = 0; i < rbl__state.polyRanges[r].count; i++)
         {
             const rbl__Polygon *poly = &rbl__state.polyRanges[r].polygons[i];
-            float *h = table + 4*(size_t)(rbl__state.polyRanges[r].first + (unsigned int)i - base);
-            for (int d = 0; d < 2; d++)
+            float *h = table + 8*(size_t)(rbl__state.polyRanges[r].first + (unsigned int)i - base);
+            for (int d = 0; d < 3; d++)
             {
                 h[2*d] = (float)at; h[2*d + 1] = (float)(3*poly->triangles[d]);
                 at += (size_t)rbl__polygonCorners(poly, d, table + 4*at);
@@ -11757,14 +11772,14 @@ static bool rbl__polyPair(rbl__PolyScratch *x, int n)
 // The draw paths' form of every polygon (rbl__Polygon): vertices as fractions of the frame's source
 // (from the file's texels), triangles of zero area dropped, the rest wound as the quad's triangles are
 // (clockwise in texel space, y down: the quad's (0,1,2) seen upright), cut along each frame diagonal
-// (rbl__polyCut) and paired into slots (rbl__polyPair); then registered
+// (rbl__polyCut) and as they are, each paired into slots (rbl__polyPair); then registered
 static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
 {
     if (s->polygonCount == 0) return true;
     rbl__PolyScratch x;
     memset(&x, 0, sizeof(x));
     s->polyDraw = (rbl__Polygon *)RBL_CALLOC((size_t)s->polygonCount, sizeof(rbl__Polygon));
-    int *firstSlot = (int *)RBL_MALLOC((size_t)s->polygonCount*2*sizeof(int) + sizeof(int)), *firstFrac = (int *)RBL_MALLOC((size_t)s->polygonCount*sizeof(int) + sizeof(int));
+    int *firstSlot = (int *)RBL_MALLOC((size_t)s->polygonCount*3*sizeof(int) + sizeof(int)), *firstFrac = (int *)RBL_MALLOC((size_t)s->polygonCount*sizeof(int) + sizeof(int));
     bool ok = (s->polyDraw != NULL) && (firstSlot != NULL) && (firstFrac != NULL);
     for (int i = 0; ok && (i < s->polygonCount); i++)
     {
@@ -11792,12 +11807,14 @@ static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
             x.tri[3*n] = c0; x.tri[3*n + 1] = (area2 < 0.0)? c1 : c2; x.tri[3*n + 2] = (area2 < 0.0)? c2 : c1;
             n++;
         }
-        for (int d = 0; ok && (d < 2); d++)
+        for (int d = 0; ok && (d < 3); d++)
         {
-            int pieces = rbl__polyCut(&x, first, n, d);
-            firstSlot[2*i + d] = x.slotCount;
+            int pieces = (d < 2)? rbl__polyCut(&x, first, n, d) : n;
+            if ((d == 2) && rbl__polyReserve((void **)&x.piece, &x.pieceCap, 3*n + 3, sizeof(unsigned int))) memcpy(x.piece, x.tri, 3*(size_t)n*sizeof(unsigned int));
+            else if (d == 2) pieces = -1;
+            firstSlot[3*i + d] = x.slotCount;
             ok = (pieces >= 0) && rbl__polyPair(&x, pieces);
-            if (ok) { s->polyDraw[i].triangles[d] = pieces; s->polyDraw[i].slotCount[d] = x.slotCount - firstSlot[2*i + d]; }
+            if (ok) { s->polyDraw[i].triangles[d] = pieces; s->polyDraw[i].slotCount[d] = x.slotCount - firstSlot[3*i + d]; }
         }
     }
     if (ok)
@@ -11808,7 +11825,7 @@ static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
         for (int i = 0; i < s->polygonCount; i++)
         {
             s->polyDraw[i].frac = s->polyFrac + firstFrac[i];
-            for (int d = 0; d < 2; d++) s->polyDraw[i].slots[d] = s->polySlots + 4*(size_t)firstSlot[2*i + d];
+            for (int d = 0; d < 3; d++) s->polyDraw[i].slots[d] = s->polySlots + 4*(size_t)firstSlot[3*i + d];
         }
     }
     RBL_FREE(x.frac); RBL_FREE(x.slots); RBL_FREE(x.tri); RBL_FREE(x.piece); RBL_FREE(x.edges);
@@ -12492,7 +12509,7 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
     for (int k = 0; k < s->frameCount; k++)
     {
         const rbl__Polygon *poly = (s->frames[k].polygon != NULL)? &s->polyDraw[s->frames[k].polygon - s->polygons] : NULL;
-        if (poly != NULL) n += 1 + (int)rbl__polygonTexels(poly);     // its header (both diagonals' first texel and count), its corners
+        if (poly != NULL) n += 2 + (int)rbl__polygonTexels(poly);     // its header (each cut's first texel and count), its corners
     }
     float *table = (float *)RBL_CALLOC((size_t)n*4, sizeof(float));
     int *order = (int *)RBL_MALLOC((size_t)(2*s->frameCount + 2)*sizeof(int));
@@ -12509,13 +12526,13 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
         t[8] = (float)rbl__spriteDuration(s, k); t[9] = (float)(flags & RBL_FRAME_ROTATED);
         if (f->polygon != NULL)
         {
-            // A polygon frame: its header texel (each diagonal's first corner texel and count, as the
+            // A polygon frame: its two header texels (each cut's first corner texel and count, as the
             // polygon table's), then its corners (lit_instanced.vs.glsl's rblPolygonSpan)
             const rbl__Polygon *poly = &s->polyDraw[f->polygon - s->polygons];
             float *h = table + (size_t)polygonBase*4;
             t[10] = (float)polygonBase; t[11] = (float)(1 + rbl__polygonMaxCorners(poly));
-            polygonBase++;
-            for (int d = 0; d < 2; d++)
+            polygonBase += 2;
+            for (int d = 0; d < 3; d++)
             {
                 h[2*d] = (float)polygonBase; h[2*d + 1] = (float)(3*poly->triangles[d]);
                 polygonBase += rbl__polygonCorners(poly, d, table + (size_t)polygonBase*4);

@@ -60,11 +60,12 @@ uniform vec4 rblInstancing[7];
 // sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest
 // polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest
 // handle in the polygon table. A polygon is kept cut along each frame diagonal (a = b, a + b = 1: the
-// quad's two triangles meet on one of them), each cut as corners: pairs (a, b) of fractions of its
-// frame's source, two a texel, 3 per triangle (each turning as the quad's (0, 1, 2) seen from the
-// front). Its header texel holds each cut's first corner texel and corner count; the plain variant
-// finds it at texel handle - z of rblPolygonTable, the resident-sprite variant at the frame table texel
-// that frame k's texel 3k + 2 names in z (w: 1 + its most corners, 0 for a quad frame)
+// quad's two triangles meet on one of them; rounded draws) and uncut (flat draws), each cut as
+// corners: pairs (a, b) of fractions of its frame's source, two a texel, 3 per triangle (each turning
+// as the quad's (0, 1, 2) seen from the front). Its two header texels hold each cut's first corner
+// texel and corner count; the plain variant finds them at texel 2 (handle - z) of rblPolygonTable, the
+// resident-sprite variant at the frame table texel that frame k's texel 3k + 2 names in z (w: 1 + its
+// most corners, 0 for a quad frame)
 uniform vec4 rblPolygon;
 #ifndef RBL_SPRITE_BUFFER
 uniform highp sampler2D rblPolygonTable;
@@ -77,7 +78,8 @@ vec4 rblSizeOrigin;     // size (negative mirrors), origin
 vec4 rblSource;         // texels (all zero = whole texture)
 float rblFlagBits;      // RblBillboardFlags
 #ifdef RBL_POLYGONS
-vec4 rblPolygonSpan;    // The instance's polygon header (each cut's first corner texel and count)
+vec4 rblPolygonSpan;    // The instance's polygon header: both diagonal cuts' first corner texel and count
+vec2 rblPolygonFlat;    // ... and the uncut triangles'
 bool rblPolygonal;      // ... when it has one (else the quad)
 #endif
 #ifdef RBL_CROSS_FADE
@@ -332,10 +334,11 @@ vec4 rblPolygonTexel(int i)
 #endif
 }
 
-// The instance's polygon cut along the diagonal its quad's triangles meet on (rbl__polygonDiagonal):
-// first corner texel, corner count
+// The instance's polygon as flat draws take it, or cut along the diagonal its quad's triangles meet
+// on (rbl__billboardCut): first corner texel, corner count
 vec2 rblPolygonCut()
 {
+    if (!(rblInstancing[1].w > 0.0)) return rblPolygonFlat;
     bool flipU = (rblSizeOrigin.x < 0.0) != (rblSource.z < 0.0);
     bool flipV = (rblSizeOrigin.y < 0.0) != (rblSource.w < 0.0);
     bool rotated = (int(rblFlagBits + 0.5) & 1) != 0;
@@ -499,6 +502,7 @@ void rblReadSprite()
 #ifdef RBL_POLYGONS
     rblPolygonal = frameBits.w > 0.5;
     rblPolygonSpan = rblPolygonal? rblTable(int(frameBits.z + 0.5)) : vec4(0.0);
+    rblPolygonFlat = rblPolygonal? rblTable(int(frameBits.z + 0.5) + 1).xy : vec2(0.0);
 #endif
 #ifdef RBL_CROSS_FADE
     rblFadeSource = rblTable(3*next);
@@ -523,7 +527,9 @@ void main()
     // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)
     uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;
     rblPolygonal = handle != 0u;
-    rblPolygonSpan = rblPolygonal? rblPolygonTexel(int(handle) - int(rblPolygon.z + 0.5)) : vec4(0.0);
+    int header = 2*(int(handle) - int(rblPolygon.z + 0.5));
+    rblPolygonSpan = rblPolygonal? rblPolygonTexel(header) : vec4(0.0);
+    rblPolygonFlat = rblPolygonal? rblPolygonTexel(header + 1).xy : vec2(0.0);
 #endif
 #endif
 #ifdef RBL_POLYGONS
