@@ -266,10 +266,174 @@ static void test_polygon_lit_normal_mapped_pixels_equal_the_quads_flat_and_round
 }
 static void test_polygon_sprite_buffer_draws_the_polygon_and_none_of_the_cut_away_quad(void) { polyCheckPath(POLY_SPRITES); }
 
+// ---- shadow casters ------------------------------------------------------------------------------
+typedef struct PolyCaster { const RblAtlas *atlas; int frame, path; bool quad; } PolyCaster;
+
+// Frame k of the fixture as a horizontal card (FIXED, facing +Z) centred at height 1, 2 world units
+// per 16 frame pixels, on one path (the polygon bits cleared for the quad)
+static RblBillboard polyCasterCard(const RblAtlas *a, int k, bool quad)
+{
+    RblBillboard b; memset(&b, 0, sizeof(b));
+    RblAtlasBillboard(a, k, 2.0f/16.0f, &b);
+    b.position = (Vector3){ 0.0f, 0.0f, 1.0f };
+    b.origin = (Vector2){ b.size.x*0.5f, b.size.y*0.5f };
+    b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, 1.0f }; b.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    if (quad) b.flags &= ~(unsigned int)RBL_FRAME_POLYGON;
+    return b;
+}
+
+static void polyCasters(Material m, Camera3D viewer, void *ctx)
+{
+    const PolyCaster *c = (const PolyCaster *)ctx;
+    RblBillboard b = polyCasterCard(c->atlas, c->frame, c->quad);
+    if (c->path == POLY_IMMEDIATE) RblDrawBillboard(viewer, m, b);
+    else if (c->path == POLY_BATCH)
+    {
+        RblBatch batch = RblLoadBatch(0);
+        RblBeginBatch(&batch, viewer);
+        RblBatchAdd(&batch, m, &b);
+        RblEndBatch(&batch);
+        RblUnloadBatch(&batch);
+    }
+    else
+    {
+        RblInstanceBuffer buf = RblLoadInstanceBuffer(0);
+        RblInstance in = polyInstance(&b);
+        RblInstancedDesc d; memset(&d, 0, sizeof(d));
+        d.facing = RBL_FACING_FIXED; d.axis = b.axis; d.up = b.up;
+        RT_CHECK(RblDrawInstanced(&buf, viewer, m, d, &in, 1) == 1, "instanced caster");
+        RblUnloadInstanceBuffer(&buf);
+    }
+}
+
+// A polygon card casts its polygon: under a light straight down, floor pixels over the polygon (by
+// more than a shadow texel) are shadowed and those over the cut-away corners lit, on every caster path;
+// the same card as a quad shadows the corners too
+static void test_polygon_shadow_casters_cast_the_polygon_not_the_quad(void)
+{
+    RblAtlas a = RblLoadAtlasFromMemory(polyFixture, (int)strlen(polyFixture), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(a), "fixture");
+    if (!RblIsAtlasValid(a)) return;
+    ShSetup s = shSetup((Vector3){ 0.0f, 0.0f, -1.0f });
+    Image sheet = polySheet();
+    Texture2D tex = LoadTextureFromImage(sheet);
+    ShSetup ref = s; ref.noShadow = true;
+    Image lit = shRender(&ref, NULL, NULL, tex, false);
+    const double margin = 2.0*SH_FOCUS/(SH_MAP - 1)/(2.0/16.0) + 0.05;      // one shadow texel, in frame pixels
+    int wrong = 0, inside = 0, outside = 0, quadCorners = 0;
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)
+        for (int k = 0; k < 3; k++)
+            for (int quad = 0; quad < 2; quad++)
+            {
+                PolyCaster c = { &a, k, path, quad == 1 };
+                Image img = shRender(&s, polyCasters, &c, tex, false);
+                RblBillboard b = polyCasterCard(&a, k, false);
+                const RblAtlasFrame *f = &a.frames[k];
+                int before = wrong;
+                for (int y = 0; y < SH_TARGET; y++)
+                    for (int x = 0; x < SH_TARGET; x++)
+                    {
+                        Vector2 p = shFloorAt(x, y);
+                        double sx = (p.x + b.size.x*0.5)/b.size.x, up = (p.y + b.size.y*0.5)/b.size.y;
+                        if ((sx < 0.0) || (sx > 1.0) || (up < 0.0) || (up > 1.0)) continue;
+                        double fx = sx*f->trim.width, fy = (1.0 - up)*f->trim.height;
+                        int base = rtPixel(lit, x, y).r, v = rtPixel(img, x, y).r;
+                        bool dark = v < (base + 40)/2;
+                        if (polyFixtureInside(k, fx, fy, margin)) { inside += !quad; wrong += !dark; }
+                        else if (polyFixtureInside(k, fx, fy, -margin) && (fx > margin) && (fx < f->trim.width - margin) && (fy > margin) && (fy < f->trim.height - margin))
+                        {
+                            if (quad) quadCorners += dark;
+                            else { outside++; wrong += dark; }
+                        }
+                    }
+                if (wrong != before) { char tag[48]; snprintf(tag, sizeof(tag), "path%d-frame%d-%s", path, k, quad? "quad" : "polygon"); rtSaveImage(img, tag); }
+                UnloadImage(img);
+            }
+    printf("    %d floor pixels under the polygons shadowed, %d under the cut-away corners lit (the quads shadow %d of them); %d wrong\n", inside, outside, quadCorners, wrong);
+    RT_CHECK(wrong == 0 && inside > 2000 && outside > 1000 && quadCorners > outside/2, "%d pixels wrong (%d inside, %d cut away, %d shadowed by the quads)", wrong, inside, outside, quadCorners);
+    UnloadImage(lit);
+    UnloadTexture(tex); UnloadImage(sheet);
+    RblUnloadAtlas(&a);
+}
+
+// ---- G-buffer -------------------------------------------------------------------------------------
+// Into the G-buffer (deferred geometry variant, ambient only), resolved: inside pixels the quad's,
+// cut-away pixels untouched (the clear colour)
+static void test_polygon_gbuffer_holds_the_polygon_not_the_quad(void)
+{
+    RblAtlas a = RblLoadAtlasFromMemory(polyFixture, (int)strlen(polyFixture), RBL_ATLAS_AUTO);
+    RT_CHECK(RblIsAtlasValid(a), "fixture");
+    if (!RblIsAtlasValid(a)) return;
+    Image sheet = polySheet();
+    Texture2D tex = LoadTextureFromImage(sheet);
+    RblGBufferDesc gd; memset(&gd, 0, sizeof(gd));
+    gd.width = POLY_RT; gd.height = POLY_RT;
+    RblGBuffer g = RblLoadGBuffer(gd);
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
+    desc.deferred = true;
+    Shader geo[2];
+    geo[0] = RblLoadLitShader(desc);
+    desc.instanced = true;
+    geo[1] = rtGlsl3()? RblLoadLitShader(desc) : geo[0];
+    RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo[0]), "G-buffer");
+    if (!RblIsGBufferValid(g)) { RblUnloadAtlas(&a); UnloadTexture(tex); UnloadImage(sheet); return; }
+    RT_CHECK(renderSetLights(NULL, 0, WHITE), "scene");
+    Camera3D cam = polyCamera();
+    RenderTexture2D rt = LoadRenderTexture(POLY_RT, POLY_RT);
+    PolyCount c; memset(&c, 0, sizeof(c));
+    for (int path = 0; path < (rtGlsl3()? 3 : 2); path++)
+        for (int k = 0; k < 3; k++)
+        {
+            Image out[2];
+            RblBillboard b; memset(&b, 0, sizeof(b));
+            RblAtlasBillboard(&a, k, POLY_SCALE, &b);
+            b.position = (Vector3){ 3.0f, -5.0f, 0.0f };
+            b.rotation = 45.0f;
+            for (int quad = 0; quad < 2; quad++)
+            {
+                Material m = LoadMaterialDefault();
+                m.shader = geo[path == POLY_INSTANCED];
+                m.maps[MATERIAL_MAP_ALBEDO].texture = tex;
+                RblBillboard d = b;
+                if (quad) d.flags &= ~(unsigned int)RBL_FRAME_POLYGON;
+                if (RblBeginGBuffer(&g, cam))
+                {
+                    if (path == POLY_INSTANCED)
+                    {
+                        RblInstanceBuffer buf = RblLoadInstanceBuffer(0);
+                        RblInstance in = polyInstance(&d);
+                        RT_CHECK(RblDrawInstanced(&buf, cam, m, (RblInstancedDesc){ 0 }, &in, 1) == 1, "instanced");
+                        RblUnloadInstanceBuffer(&buf);
+                    }
+                    else if (path == POLY_IMMEDIATE) RblDrawBillboard(cam, m, d);
+                    else { RblBatch batch = RblLoadBatch(0); RblBeginBatch(&batch, cam); RblBatchAdd(&batch, m, &d); RblEndBatch(&batch); RblUnloadBatch(&batch); }
+                    RblEndGBuffer(&g);
+                    RblDrawDeferredLights(&g);
+                }
+                BeginTextureMode(rt); ClearBackground(polyClear); RblResolveGBuffer(&g); EndTextureMode();
+                out[quad] = rtReadTarget(rt);
+                MemFree(m.maps);
+            }
+            polyCompare(out[1], out[0], k, &b, &a.frames[k], &c);
+            if (c.badInside + c.badOutside + c.badBeyond > 0) { rtSaveImage(out[0], "gbuffer-polygon"); rtSaveImage(out[1], "gbuffer-quad"); }
+            UnloadImage(out[0]); UnloadImage(out[1]);
+        }
+    printf("    G-buffer: %d inside pixels equal the quad's (%d differ), %d cut-away pixels the quad covered left clear (%d not)\n", c.inside - c.badInside, c.badInside, c.cutByQuad, c.badOutside);
+    RT_CHECK(c.inside > 10000 && c.badInside == 0 && c.badOutside == 0 && c.badBeyond == 0 && c.cutByQuad > 10000, "G-buffer: %d inside differ, %d cut-away drawn, %d beyond", c.badInside, c.badOutside, c.badBeyond);
+    UnloadRenderTexture(rt);
+    RblUnloadLitShader(&geo[0]);
+    if (rtGlsl3()) RblUnloadLitShader(&geo[1]);
+    RblUnloadGBuffer(&g);
+    UnloadTexture(tex); UnloadImage(sheet);
+    RblUnloadAtlas(&a);
+}
+
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_POLYGON_TESTS \
     RT_TEST(test_polygon_batch_draws_the_polygon_and_none_of_the_cut_away_quad), \
     RT_TEST(test_polygon_immediate_draws_the_polygon_and_none_of_the_cut_away_quad), \
     RT_TEST_GLSL3(test_polygon_instanced_draws_the_polygon_and_none_of_the_cut_away_quad), \
     RT_TEST(test_polygon_lit_normal_mapped_pixels_equal_the_quads_flat_and_rounded), \
-    RT_TEST_GLSL3(test_polygon_sprite_buffer_draws_the_polygon_and_none_of_the_cut_away_quad)
+    RT_TEST_GLSL3(test_polygon_sprite_buffer_draws_the_polygon_and_none_of_the_cut_away_quad), \
+    RT_TEST(test_polygon_shadow_casters_cast_the_polygon_not_the_quad), \
+    RT_TEST_GLSL3(test_polygon_gbuffer_holds_the_polygon_not_the_quad)
