@@ -452,9 +452,20 @@
 *         (name, frame) finds the key; RblAtlasSliceBillboard/Instance draw it alone: its bounds
 *         clipped to the frame's trim, about its pivot (none: its bottom centre). When exactly one
 *         slice of an export has pivots, they are also the pivots of the frames its keys cover.
-*       - Polygons (TexturePacker): RblAtlasFrame.polygon holds the vertices (untrimmed-frame pixels),
-*         their sheet texels (inside the block) and triangles (indices < vertexCount), validated on
-*         load. The draw paths still draw the trimmed quad (the polygon's bounds and more).
+*       - Polygons (TexturePacker; tests/test_polygon.c): RblAtlasFrame.polygon holds the vertices
+*         (untrimmed-frame pixels), their sheet texels (inside the block) and triangles (indices <
+*         vertexCount), validated on load. Every path draws the triangles, not the trimmed quad: the
+*         batch, the immediate path, instanced draws, sprite buffers, shadow casters and the G-buffer.
+*         RblAtlasBillboard/Instance put the frame's polygon handle in flags (RBL_FRAME_POLYGON, bits
+*         4..23; the atlas owns it until RblUnloadAtlas, after which a billboard still naming it is
+*         refused with one line); the texels the file names place each vertex in the quad, so a
+*         vertex carries the quad's own position, texture coordinate, normal and tangent there (pixels
+*         inside equal the quad's, mirrors and rotated frames included). Rounded normals (roundness >
+*         0) use the triangles cut along the quad's diagonal (where its fields meet), flat ones the
+*         file's. Batches draw one quad slot per pair of triangles (RblBillboardQuads emits them);
+*         instanced draws and sprite buffers compile a polygon variant of the program at their first
+*         polygon and draw every instance with the draw's largest polygon's corners (quads use 6, the
+*         rest collapse to a point); draws without polygons run the plain program and pay nothing.
 *       - 9-slice: RblAtlasFrame.center (scale9Borders, libGDX split) and RblAtlasSlice.center, in
 *         canvas pixels (for raylib's DrawTextureNPatch and the like); billboards draw the frame whole.
 *       - Premultiplied pages (libGDX pma: RblAtlasPage.premultiplied): RblMaterialLayout
@@ -544,9 +555,12 @@
 *         the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
-*       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
-*         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
-*         packer that interlocks polygons may leave another frame's texels inside a quad.
+*       - Polygon frames: a cross-fade (RblBatchAddFade, RblInstancedDesc.fades, crossFade programs on
+*         sprite buffers) draws the quad (the union of two frames' trims); 2^20 - 1 polygon handles
+*         are live at once (an atlas load beyond is refused); flags from 2^24 up carry no polygon (the
+*         instanced stage reads flags as a float). An instanced draw mixing small and large polygons
+*         runs the vertex stage for the largest on every instance; on llvmpipe the thinner triangles
+*         cost about as much as the fragments saved (make bench: polygon rows).
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
 *         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
