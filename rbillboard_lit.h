@@ -92,7 +92,7 @@
 *          without GPU bone data, RblDrawMesh and billboards with a skinned program.
 *       6. Shadows (directional, spot and point lights): before BeginMode3D, draw the casters with the same
 *          calls and materials as the colour pass, then list the maps in the scene.
-*            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shadowMaps = 1
+*            RblShadowMap sun = RblLoadShadowMap(shadowDesc);  // receivers: desc.shading.shadowMaps = 1
 *            RblShadowFocusFromCamera(camera, aspect, 0.1f, 30.0f, &focus, &radius);
 *            scene.shadowMapCount = 0;                         // no map unless its pass ran
 *            if (RblBeginShadowMap(&sun, &scene, 0, focus, radius)) {      // scene.lights[0] casts
@@ -106,10 +106,11 @@
 *            for (int i = 0; i < RblShadowMapPasses(map); i++)
 *                if (RblBeginShadowMapPass(&map, &scene, light, i, focus, radius)) { ... RblEndShadowMap(&map); }
 *       7. Deferred (hundreds of lights): opaque draws into a G-buffer with geometry-pass variants
-*          (desc.deferred = true and the G-buffer's brdf), lit by the same scene, then resolved.
+*          (desc.deferred = true, the G-buffer's RblShading), lit by the same scene, then resolved.
 *            RblGBufferDesc gdesc = RBL_ZERO;      // size 0: follows its target's size
-*            gdesc.brdf = RBL_BRDF_GGX;
+*            gdesc.shading.brdf = RBL_BRDF_GGX;
 *            RblGBuffer g = RblLoadGBuffer(gdesc);
+*            surface.shading = gdesc.shading; surface.deferred = true;   // its materials' programs
 *            RblSetScene(&scene);                  // each frame, before BeginDrawing():
 *            if (RblBeginGBuffer(&g, camera)) {    // false: draw this frame forward
 *                ... billboard paths and RblDrawModel with deferred materials ...
@@ -187,34 +188,14 @@
 *       sides). Models drawn without culling get the same. A draw showing a quad's back turns culling
 *       off for itself and back on after; draws of front faces leave it alone.
 *
-*   DEGENERATE FRAMES (documented fallbacks, all deterministic, continuous as they are approached):
-*       A frame direction taken from a vector v off an axis n (camera.up off the view, up off a
-*       normal, the eye off a locked axis ...) blends with a fallback f as v nears n: with s the sine
-*       between v and n, direction = unit(w unit(v off n) + (1 - w) unit(f off n)), w = smoothstep(lo,
-*       hi, s). Billboards: lo = 1/64, hi = 1/8 (0.9 and 7.2 degrees; float gives v's direction off n
-*       only to ~6e-8/s, and the GPU rounds differently from the CPU). Camera frame (made in double,
-*       exact to float): lo = 1e-6, hi = 1e-5. On the side where v's direction opposes f's the two
-*       cancel at w = 1/2 and the frame turns over there (any continuous fallback must, somewhere).
-*       The cases (v off n, then the fallback f):
-*       - Camera: camera.up off the view; f = -Z looking down (a top-down camera keeps -Z, raylib's
-*         forward, as screen-up), +Z looking up, +Y for views along X or Z (by the view's largest
-*         component). right = up x back. camera.target == camera.position: the view looks down -Z.
-*       - CAMERA_PLANE: the caller's up off the camera's right; f = the camera's up. normal = right x
-*         up; the up keeps its length and its part along right (collapsing as raylib's quad does).
-*       - CAMERA_POSITION: the camera's up off n (toward the eye); f = n x the camera's right (the
-*         centre on the camera's screen-up line: camera-facing shadow casters meet it). right = up x n.
-*         Centre at the eye: the camera plane.
-*       - AXIS: the eye off the axis; f = the view's back off the axis, itself blended toward the
-*         view's up off the axis where the view looks along the axis. right = axis x n.
-*       - FIXED: up off the normal; f = the fallback up of the normal (as for the camera).
-*       - AXIS in a shadow pass: the tilt fades out (weight w of the sine between the light and the
-*         pivot line) where the light nears the pivot line, along which no tilt helps. Light-facing
-*         casters near the axis: the eye (the light) off the axis falls back as above; the tilt then
-*         turns the card about its mid-height line, so its shadow, centred on the card, is the same
-*         whichever way the fallback turns it (no jump as the light passes over: SHADOWS).
-*       - up or axis shorter than 1e-12 counts as zero (the default).
-*       - NaN/Inf input is skipped with one warning per batch or draw, never written to a buffer;
-*         instance values must stay below 2^120 in magnitude (the GPU could overflow).
+*   DEGENERATE FRAMES:
+*       A frame direction taken from a vector off an axis (camera.up off the view, up off a normal, the
+*       eye off a locked axis, the light off an AXIS pivot line) blends continuously into a fixed
+*       fallback as the two meet: nothing flips, jumps or goes NaN as a degenerate view is approached.
+*       The blend, its bands and each case's fallback: README "Degenerate frames" (tests/degenerate.h
+*       computes them in double). An up or axis shorter than 1e-12 counts as zero (the default).
+*       NaN/Inf input is skipped with one warning per batch or draw, never written to a buffer;
+*       instance values must stay below 2^120 in magnitude (the GPU could overflow).
 *
 *   CONVENTIONS:
 *       - Tangent = world direction of +U; cross(normal, tangent.xyz)*tangent.w = world +V, raylib's
@@ -259,7 +240,7 @@
 *       - RblSetScene rejects the whole scene (false, one log line, previous kept) for NaN/Inf, negative
 *         intensity, range or coefficients, a zero direction, spot angles outside 0 <= inner <= outer
 *         <= 90, an unknown type or falloff. A forward program lights the scene's first maxLights
-*         lights of the types it compiled (RblLightFeatures: what a set needs); others are left out.
+*         lights of the types it compiled (RblGetLightFeatures: what a set needs); others are left out.
 *
 *   DEFERRED (RblGBuffer; shaders/gbuffer_codec.glsl: the layout, deferred_*.fs.glsl: the passes):
 *       RblBeginGBuffer -> opaque draws (material, emission + the scene's ambient) -> RblEndGBuffer ->
@@ -284,7 +265,7 @@
 *       comparison). Debug views: RblSetGBufferOutput.
 *
 *   SHADOWS (RblShadowMap; shaders/shadows.glsl: the lookup, shadow_caster.fs.glsl: the casters):
-*       Receivers are variants with desc.shadowMaps > 0 (G-buffer: its desc.shadowMaps) and sample the
+*       Receivers are variants with desc.shading.shadowMaps > 0 (G-buffer: its desc.shading.shadowMaps) and sample the
 *       first that many maps of the scene; a forward program shadows a light only if it has a slot.
 *       Light cameras: directional = orthographic over the focus sphere (eye 2r before the centre, depth
 *       0..3r: casters up to 2r toward the light), moved in whole texels of a world-fixed grid so edges
@@ -487,7 +468,7 @@
 *         reads with texelFetch (GL 3.3, ES 3, WebGL2; unit RBL_FRAME_TABLE_TEXTURE_UNIT). A sprite
 *         with RBL_SPRITE_ANIMATED shows RblUpdateSprite's frame after (time - start) x speed seconds
 *         of play (0 before start), with RblSpriteBlend's next frame and weight for crossFade programs
-*         (RblSpriteFade's zero clips: frames of equal trim); loops as RblPlaySprite's, 1..254 or 255
+*         (over the current frame's quad: frames of equal trim); loops as RblPlaySprite's, 1..254 or 255
 *         forever. Packing: position, scale and start float; rotation in 65536ths of a turn (0.0027
 *         degrees at most off), speed a half float (2^-11 relative); tags < 65535, frames < 65536;
 *         the clock is a float: keep it small (offset it per level) for millisecond steps past hours.
@@ -515,8 +496,7 @@
 *         frame's source stretched over it, and RblFade.clip[k] is frame k's trim in the quad: a
 *         fetch outside it is transparent (alpha 0, no colour, normal or emission), and where the
 *         frame shown alone (w 0 or 1) or neither lies there is no fragment. Axes a frame covers
-*         whole are never clipped: equal trims draw as unclipped. RblSpriteFade fills the source,
-*         flags and weight only (zero clips: over the first frame's quad).
+*         whole are never clipped: equal trims draw as unclipped.
 *       - N-way: RblSpriteViewSector: the eye's direction from the sprite about +Y (0 = +Z, as the
 *         facing angle), relative to the facing; sector k covers [k w - w/2, k w + w/2), w = 360/n.
 *
@@ -606,7 +586,7 @@
 *       #define RBL_SPRITE_DEFAULT_FRAME_TIME 0.1f
 *           Seconds a frame shows where its atlas states no duration (libGDX, TexturePacker).
 *       #define RBL_MAX_SHADOWS 4
-*           Shadow maps a scene may list and a receiver sample (desc.shadowMaps); at most 4.
+*           Shadow maps a scene may list and a receiver sample (desc.shading.shadowMaps); at most 4.
 *       #define RBL_SCENE_DEPTH_TEXTURE_UNIT 11
 *           Texture unit soft particles read the scene depth from (RblScene.depth, RblEndSceneDepth).
 *       #define RBL_SHADOW_TEXTURE_UNIT 12
@@ -621,7 +601,7 @@
 *           raylib was built with SUPPORT_GPU_SKINNING (default: SUPPORT_GPU_SKINNING where defined,
 *           else 0, and desc.skinning is refused: without it Mesh.vboId has no bone buffers).
 *       #define RBL_SHADOW_MAX_FILTER 6
-*           Largest PCF footprint (desc.shadowFilter), in texels per side.
+*           Largest PCF footprint (desc.shading.shadowFilter), in texels per side.
 *       #define RBL_SHADOW_TINT_TEXTURE_UNIT 6
 *           Shadow map k's transmittance target goes to unit 6 + k in programs with
 *           desc.shadowTransmittance (bound at each of their draws; a Model material with textures
@@ -652,6 +632,10 @@
 *                         CHANGED: a cross-fade travels beside the billboard (RblBatchAddFade,
 *                                  RblDrawBillboardFade): RblBillboard back to 0.3's 88 bytes
 *                         REMOVED: RblShadowDesc.faceLight (the default now)
+*                         CHANGED: RblShading: the lighting fields lit programs and G-buffers share;
+*                                  RblLightFeatures() -> RblGetLightFeatures()
+*                         REMOVED: RblSpriteFade (a fade is set up one way: RblAtlasBillboardFade /
+*                                  RblAtlasInstanceFade of RblSpriteBlend's frame and weight)
 *       0.4 (2026-11-23)  CHANGED: the 1.0 API shape: a lit program is a raylib Shader of compiled
 *                                  features; values travel with the Material; one RblScene a frame
 *                         ADDED: RblDrawModel, RblDrawMesh; RBL_ZERO; C++11..23; the contract suite
@@ -1007,7 +991,7 @@ typedef enum {
     RBL_FALLOFF_CLASSIC             // I/(constant + linear*d + quadratic*d^2), times the range window when range > 0
 } RblFalloff;
 
-// Light features a lit shader variant compiles in (RblLitShaderDesc.lightFeatures; bit flags)
+// Light features a lit shader variant compiles in (RblShading.lightFeatures; bit flags)
 typedef enum {
     RBL_LIGHT_FEATURE_POINT = 1,           // Point lights (windowed falloff)
     RBL_LIGHT_FEATURE_DIRECTIONAL = 2,     // Directional lights
@@ -1015,7 +999,7 @@ typedef enum {
     RBL_LIGHT_FEATURE_CLASSIC_FALLOFF = 8  // Constant/linear/quadratic attenuation
 } RblLightFeature;
 
-// Reflectance models (RblLitShaderDesc.brdf)
+// Reflectance models (RblShading.brdf)
 typedef enum {
     RBL_BRDF_LAMBERT = 0,           // Diffuse only
     RBL_BRDF_BLINN_PHONG,           // Lambert + normalised Blinn-Phong: specular intensity (map or value) and shininess
@@ -1030,7 +1014,7 @@ typedef enum {
     RBL_FOG_EXP2                    // exp(-(density*d)^2)
 } RblFogMode;
 
-// Tone mapping applied after exposure, before the display encoding (RblLitShaderDesc.tonemap)
+// Tone mapping applied after exposure, before the display encoding (RblShading.tonemap)
 typedef enum {
     RBL_TONEMAP_NONE = 0,           // Clamp
     RBL_TONEMAP_REINHARD,           // c/(1 + c)
@@ -1072,20 +1056,25 @@ typedef struct RblFog {
     float density;                  // Exp, exp2: density per world unit (>= 0)
 } RblFog;
 
-// Lit program request; zero means default. Only what changes the compiled code is here: per-material
-// values (colours, specular, roughness, emission, alpha cutoff) travel with each draw's Material, and
-// lights, ambient, fog, exposure and shadow maps with the frame's RblScene.
-typedef struct RblLitShaderDesc {
-    int maxLights;                  // Light slots compiled in (0 = 4, at most RBL_MAX_LIGHTS); the scene's first lights fill them
-    int lightFeatures;              // RblLightFeature flags (0 = point lights, windowed falloff); see RblLightFeatures()
-    RblMaterialLayout material;     // Maps the material provides (zero = albedo only; see RblPackMaterial)
+// Lighting settings shared by lit programs and G-buffers (a deferred variant takes its G-buffer's)
+typedef struct RblShading {
     int brdf;                       // RblBrdf (0 = Lambert)
+    int lightFeatures;              // RblLightFeature flags (0 = point lights, windowed falloff); see RblGetLightFeatures()
     int fog;                        // RblFogMode compiled in (0 = none); the scene's fog of that mode applies
     int tonemap;                    // RblTonemap (0 = none: clamp)
     float gamma;                    // Display encoding pow(c, 1/gamma), 1/16..16 (0 = the exact sRGB curve)
     bool linearOutput;              // Write linear light (float targets; clamped to 65504) instead of encoding
     int shadowMaps;                 // Scene shadow maps received (0 = none, at most RBL_MAX_SHADOWS)
     int shadowFilter;               // PCF footprint in texels per side, 1..RBL_SHADOW_MAX_FILTER (0 = 2): (n + 1)^2 fetches
+} RblShading;
+
+// Lit program request; zero means default. Only what changes the compiled code is here: per-material
+// values (colours, specular, roughness, emission, alpha cutoff) travel with each draw's Material, and
+// lights, ambient, fog, exposure and shadow maps with the frame's RblScene.
+typedef struct RblLitShaderDesc {
+    RblShading shading;             // How light is computed and written (the G-buffer's passes take the same struct)
+    int maxLights;                  // Light slots compiled in (0 = 4, at most RBL_MAX_LIGHTS); the scene's first lights fill them
+    RblMaterialLayout material;     // Maps the material provides (zero = albedo only; see RblPackMaterial)
     bool instanced;                 // Vertex stage for RblDrawInstanced() instead of vertex buffers
     bool deferred;                  // Geometry-pass variant: writes a G-buffer (RblBeginGBuffer) instead of lighting
     bool skinning;                  // Vertex stage skins GPU-skinned Models by their boneMatrices (RblDrawModel; needs RBL_GPU_SKINNING)
@@ -1123,14 +1112,7 @@ typedef enum {
 typedef struct RblGBufferDesc {
     int width;                      // Size in pixels (0 = the render size)
     int height;
-    int brdf;                       // RblBrdf of the lighting passes (0 = Lambert)
-    int lightFeatures;              // RblLightFeature flags of the lighting passes (0 = point lights)
-    int fog;                        // RblFogMode of the resolve (0 = none)
-    int tonemap;                    // RblTonemap of the resolve
-    float gamma;                    // Display encoding of the resolve (0 = sRGB)
-    bool linearOutput;              // Resolve writes linear light
-    int shadowMaps;                 // Scene shadow maps received (0 = none, at most RBL_MAX_SHADOWS)
-    int shadowFilter;               // PCF footprint (0 = 2)
+    RblShading shading;             // Lighting passes and resolve (its deferred variants: the same brdf)
 } RblGBufferDesc;
 
 // Deferred G-buffer (RblLoadGBuffer): 10 bytes per pixel + depth + RGBA16F light accumulation
@@ -1189,7 +1171,7 @@ typedef struct RblScene {
     Color ambient;                  // Ambient colour (sRGB); the sky colour when ambientGround is given
     Color ambientGround;            // Hemispheric ground colour (all zero = ambient: flat)
     Vector3 ambientUp;              // Hemisphere up (zero = +Y)
-    RblFog fog;                     // Fog parameters (mode 0 = none); programs compiled with RblLitShaderDesc.fog apply it
+    RblFog fog;                     // Fog parameters (mode 0 = none); programs compiled with RblShading.fog apply it
     float exposure;                 // Radiance scale before the tonemap (0 = 1)
     const RblShadowMap *shadowMaps;  // Maps rendered this frame for lights of this scene (RblBeginShadowMap)
     int shadowMapCount;             // At most RBL_MAX_SHADOWS
@@ -1340,7 +1322,7 @@ RBLAPI bool RblLoadPackedTextures(const RblPackedMaterial *packed, Material *mat
 RBLAPI Shader RblLoadLitShader(RblLitShaderDesc desc);                         // Lit program for Material.shader (equal descs share one program); id 0 + log on failure
 RBLAPI bool RblIsLitShaderValid(Shader shader);                                // Check it is a live lit program of this header (not raylib's fallback, not unloaded)
 RBLAPI void RblUnloadLitShader(Shader *shader);                                // Release this holder's reference and zero it (the program goes with its last holder)
-RBLAPI int RblLightFeatures(const RblLight *lights, int count);               // RblLightFeature flags a light set needs (for RblLitShaderDesc.lightFeatures)
+RBLAPI int RblGetLightFeatures(const RblLight *lights, int count);               // RblLightFeature flags a light set needs (for RblShading.lightFeatures)
 RBLAPI bool RblSetScene(const RblScene *scene);                                // Lights, ambient, fog, exposure and shadow maps for every lit program and G-buffer; false = rejected, previous scene kept
 RBLAPI void RblDrawModel(Model model, Vector3 position, float scale, Color tint); // DrawModel with each material's lit values (colour, G-buffer or shadow pass)
 RBLAPI void RblDrawMesh(Mesh mesh, Material material, Matrix transform);      // DrawMesh with the material's lit values (colour, G-buffer or shadow pass)
@@ -1395,7 +1377,6 @@ RBLAPI RblSpritePlayer RblPlaySprite(const RblAtlas *atlas, int tag, int loops);
 RBLAPI bool RblUpdateSprite(RblSpritePlayer *player, const RblAtlas *atlas, float dt); // Advance by dt seconds honouring per-frame durations; false = rejected (player untouched)
 RBLAPI int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, int count, const RblAtlas *atlas, float dt, float worldScale); // Advance count players and set their instances' frame fields (checks once); returns how many (bad players skipped, one line)
 RBLAPI float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *nextFrame); // Cross-fade: the frame that follows and its weight 0..1 (time / duration); 0 and the same frame when finished
-RBLAPI bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade);  // Fill a cross-fade from RblSpriteBlend: the next frame's source and flags, its weight, zero clips (over the current quad: frames of equal trim; else RblAtlasBillboardFade); false = rejected (fade untouched)
 RBLAPI int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions); // N-way sprites: sector 0..directions-1 the eye sees (0 = front; counter-clockwise seen from +Y); -1 + log on bad input
 
 // Resident sprites of an atlas (GL 3.3 / ES 3 / WebGL2, as the instanced path; code: >>sprites)
@@ -1488,6 +1469,7 @@ typedef enum {
 } rbl__Uniform;
 
 typedef enum { RBL__KIND_LIT = 0, RBL__KIND_CASTER, RBL__KIND_PASS, RBL__KIND_COMPOSITE } rbl__ProgramKind;
+#define RBL__MAX_CASCADES 4          // RblShadowDesc.cascades 2..4 (tiles in a row of one target)
 enum { RBL__PASS_FULLSCREEN = 0, RBL__PASS_VOLUME, RBL__PASS_RESOLVE, RBL__PASS_FULLSCREEN_COUNT, RBL__PASS_VOLUME_COUNT, RBL__PASS_COUNT };
 
 // What a program is compiled from: equal keys share one program
@@ -1508,16 +1490,16 @@ typedef struct rbl__MaterialValues {
 // One entry of the program registry
 typedef struct rbl__Program {
     rbl__ProgramKey key;
-    Shader shader;                  // Program and the registry's own raylib locs (every draw reads these, never a Material's)
-    const int *handleLocs;          // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
-    int loc[RBL__U_COUNT];          // Uniform locations
-    int refs;                       // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
-    rbl__MaterialValues values;     // Last per-draw values uploaded
-    int fadeClipLoc;                // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
-    int casterIdLoc;                // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
+    Shader shader;                       // Program and the registry's own raylib locs (every draw reads these, never a Material's)
+    const int *handleLocs;               // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
+    int loc[RBL__U_COUNT];               // Uniform locations
+    int refs;                            // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
+    rbl__MaterialValues values;          // Last per-draw values uploaded
+    int fadeClipLoc;                     // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
+    int casterIdLoc;                     // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
     bool valuesValid;
-    bool raylibNoted;               // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
-    struct rbl__Program *spriteVariant; // Instanced programs: the resident-sprite variant once compiled (goes with this one)
+    bool raylibNoted;                    // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
+    struct rbl__Program *spriteVariant;  // Instanced programs: the resident-sprite variant once compiled (goes with this one)
     struct rbl__Program *polygonVariant; // ... and the polygon-frame variant of this one (a sprite variant's: sprites and polygons)
 } rbl__Program;
 
@@ -1537,20 +1519,20 @@ typedef struct rbl__SortKey {
 
 // A run of billboards sharing one material inside a batch
 typedef struct rbl__BatchRun {
-    Material material;              // Material the run draws with
-    int first;                      // First billboard
-    int count;                      // Billboards in the run
+    Material material;               // Material the run draws with
+    int first;                       // First billboard
+    int count;                       // Billboards in the run
     int textureWidth, textureHeight; // Its albedo's size (rbl__albedoSize), read once per run
 } rbl__BatchRun;
 
 // A billboard's facing frame before its rotation, kept by a batch for the next billboard with the
 // same facing and up (CAMERA_PLANE: the frame depends on nothing else).
 typedef struct rbl__FrameCache {
-    Vector3 key;                    // RblBillboard.up the frame was made for
-    Vector3 right, up, normal;      // Unit frame
+    Vector3 key;                     // RblBillboard.up the frame was made for
+    Vector3 right, up, normal;       // Unit frame
     Vector3 normalXRight, normalXUp; // Rotation helpers: normal x right, normal x up
-    float upLength;                 // |caller up| (CAMERA_PLANE scales the height by it, as raylib)
-    int facing;                     // Facing it was made for; -1 = empty
+    float upLength;                  // |caller up| (CAMERA_PLANE scales the height by it, as raylib)
+    int facing;                      // Facing it was made for; -1 = empty
 } rbl__FrameCache;
 
 // A batch's own data (RblBatch.state); capacity, count and skipped are mirrored into the RblBatch
@@ -1561,15 +1543,15 @@ typedef struct rbl__BatchState {
     int sortCapacity;               // Billboards sorted and keys hold
     int capacity;                   // Billboards reserved (CPU and GPU)
     int count;                      // Billboards added since RblBeginBatch()
-    rbl__BatchRun *runs;              // Material runs
+    rbl__BatchRun *runs;            // Material runs
     int runCount;                   // Runs used
     int runCapacity;                // Runs reserved
     int gpuCapacity;                // Billboards the GPU buffer holds
     unsigned int vaoId;             // Vertex array
     unsigned int vboId;             // Vertex buffer
     unsigned int eboId;             // Index buffer (quads share 16-bit indices in chunks)
-    RblCameraFrame view;                   // Frame of the current camera
-    rbl__FrameCache frame;            // Facing frame of the last billboard (reused while facing and up repeat)
+    RblCameraFrame view;            // Frame of the current camera
+    rbl__FrameCache frame;          // Facing frame of the last billboard (reused while facing and up repeat)
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
     int culled;                     // Billboards accepted but outside the view since RblBeginBatch() (not in count)
     int planeCount;                 // Culling planes in use: 0 (off), 4 (a shadow pass's sides) or 6 (a camera's frustum)
@@ -1618,61 +1600,61 @@ typedef struct rbl__InstanceBufferState {
 
 // A G-buffer's own data (RblGBuffer.state)
 typedef struct rbl__GBufferState {
-    unsigned int id;                // Geometry framebuffer: 4 colour attachments + depth texture
-    unsigned int lightId;           // Light framebuffer: the accumulation target alone
-    unsigned int passes[5];         // Lighting pass programs (the registry's)
-    unsigned int volumeVao;         // Sphere proxy (vertex + index buffers) with per-light instance data
+    unsigned int id;                      // Geometry framebuffer: 4 colour attachments + depth texture
+    unsigned int lightId;                 // Light framebuffer: the accumulation target alone
+    unsigned int passes[RBL__PASS_COUNT]; // Lighting pass programs (the registry's)
+    unsigned int volumeVao;               // Sphere proxy (vertex + index buffers) with per-light instance data
     unsigned int volumeVbo;
     unsigned int volumeIbo;
     unsigned int instanceVbo;
-    unsigned int emptyVao;          // Full-screen triangle (positions from gl_VertexID)
+    unsigned int emptyVao;                // Full-screen triangle (positions from gl_VertexID)
     int volumeIndexCount;
-    int instanceCapacity;           // Lights the instance buffer holds (grows with a log line)
-    Matrix view;                    // Camera of the last geometry pass
+    int instanceCapacity;                 // Lights the instance buffer holds (grows with a log line)
+    Matrix view;                          // Camera of the last geometry pass
     Matrix projection;
     Vector3 eye;
-    float ambient[9];               // The scene's ambient (sky, ground, up) the last geometry pass added
-    bool ambientNoted;              // A later scene's other ambient was logged once
-    bool geometryDone;              // A geometry pass filled the targets (since load or the last resize)
-    bool follow;                    // Loaded with size 0: takes its target's size at each RblBeginGBuffer
-    bool sizeNoted;                 // A resolve into a target of another size was logged (until sizes match again)
-    unsigned int savedFramebuffer;  // The caller's target at RblBeginGBuffer, restored by RblEndGBuffer
-    bool begun;                     // Between RblBeginGBuffer() and RblEndGBuffer()
+    float ambient[9];                     // The scene's ambient (sky, ground, up) the last geometry pass added
+    bool ambientNoted;                    // A later scene's other ambient was logged once
+    bool geometryDone;                    // A geometry pass filled the targets (since load or the last resize)
+    bool follow;                          // Loaded with size 0: takes its target's size at each RblBeginGBuffer
+    bool sizeNoted;                       // A resolve into a target of another size was logged (until sizes match again)
+    unsigned int savedFramebuffer;        // The caller's target at RblBeginGBuffer, restored by RblEndGBuffer
+    bool begun;                           // Between RblBeginGBuffer() and RblEndGBuffer()
 } rbl__GBufferState;
 
 // A shadow map's own data (RblShadowMap.state)
 #define RBL__SHADOW_SINGLE 0            // rbl__ShadowMapState.kind: one map (directional, spot)
 #define RBL__SHADOW_OMNI 1              // six cube faces (point); 2..4: that many cascades
 typedef struct rbl__ShadowMapState {
-    unsigned int id;                // Framebuffer (depth attachment only)
-    int lightType;                  // RBL_LIGHT_DIRECTIONAL, RBL_LIGHT_SPOT or RBL_LIGHT_POINT (omni)
-    int kind;                       // RBL__SHADOW_SINGLE, RBL__SHADOW_OMNI or the cascade count (2..4)
-    int cols, rows;                 // Tiles of the targets: 1 x 1, 3 x 2 (cube faces), cascades x 1
-    int pass;                       // Tile of the pass in progress or last run
-    float tiles[4][4];              // Receivers' per-tile data: omni [0] light position, half-width tan; cascades (1/width, -left/width, -bottom/width, far split)
-    float cascadeRows[4][4];        // Cascades: world -> (x, y along right, up; window depth), camera view-depth plane
-    double split[5];                // Cascades: view-depth splits near..far (RblFitShadowCascades)
-    double fitCenter[4][3], fitRadius[4];  // ... each cascade's bounding sphere (its slice, widened by the blend band below)
-    double blend;                   // ... the blend band's share of a cascade's depth range
-    bool fitted;                    // ... RblFitShadowCascades ran
-    RblCameraFrame fitView;         // ... its camera frame, tan of half its vertical view (orthographic: half height), aspect
+    unsigned int id;                      // Framebuffer (depth attachment only)
+    int lightType;                        // RBL_LIGHT_DIRECTIONAL, RBL_LIGHT_SPOT or RBL_LIGHT_POINT (omni)
+    int kind;                             // RBL__SHADOW_SINGLE, RBL__SHADOW_OMNI or the cascade count (2..4)
+    int cols, rows;                       // Tiles of the targets: 1 x 1, 3 x 2 (cube faces), cascades x 1
+    int pass;                             // Tile of the pass in progress or last run
+    float tiles[4][4];                    // Receivers' per-tile data: omni [0] light position, half-width tan; cascades (1/width, -left/width, -bottom/width, far split)
+    float cascadeRows[4][4];              // Cascades: world -> (x, y along right, up; window depth), camera view-depth plane
+    double split[RBL__MAX_CASCADES + 1];  // Cascades: view-depth splits near..far (RblFitShadowCascades)
+    double fitCenter[4][3], fitRadius[4]; // ... each cascade's bounding sphere (its slice, widened by the blend band below)
+    double blend;                         // ... the blend band's share of a cascade's depth range
+    bool fitted;                          // ... RblFitShadowCascades ran
+    RblCameraFrame fitView;               // ... its camera frame, tan of half its vertical view (orthographic: half height), aspect
     double fitTan, fitAspect;
     bool fitOrthographic;
-    RblCameraFrame lightView;              // Light camera frame (eye: spot position, or the directional camera's eye)
-    Matrix view;                    // Light camera matrices of the last pass
+    RblCameraFrame lightView;             // Light camera frame (eye: spot position, or the directional camera's eye)
+    Matrix view;                          // Light camera matrices of the last pass
     Matrix projection;
-    Matrix matrix;                  // World -> (u, v, window depth) before the divide: view x projection x bias
-    float texelWorld;               // World size of a texel (perspective: per unit distance along the axis)
-    float nearPlane;                // Depth range along the light's axis
+    Matrix matrix;                        // World -> (u, v, window depth) before the divide: view x projection x bias
+    float texelWorld;                     // World size of a texel (perspective: per unit distance along the axis)
+    float nearPlane;                      // Depth range along the light's axis
     float farPlane;
-    Matrix savedView;               // rlgl state restored by RblEndShadowMap: matrices and framebuffer
+    Matrix savedView;                     // rlgl state restored by RblEndShadowMap: matrices and framebuffer
     Matrix savedProjection;
     unsigned int savedFramebuffer;
-    unsigned int blendId;           // Framebuffer of the transmittance target (and the same depth texture), 0 = none
-    bool begun;                     // Between RblBeginShadowMap() and RblEndShadowMap()
-    bool blending;                  // Between RblBeginShadowBlend() and RblEndShadowBlend()
-    bool coloured;                  // ... and the blended casters tint by their colour
-    Vector2 savedAlphaBand;         // rbl__state.alphaBand outside the blended casters
+    unsigned int blendId;                 // Framebuffer of the transmittance target (and the same depth texture), 0 = none
+    bool begun;                           // Between RblBeginShadowMap() and RblEndShadowMap()
+    bool blending;                        // Between RblBeginShadowBlend() and RblEndShadowBlend()
+    bool coloured;                        // ... and the blended casters tint by their colour
+    Vector2 savedAlphaBand;               // rbl__state.alphaBand outside the blended casters
 } rbl__ShadowMapState;
 
 // What a shadow pass adds to billboard frames: AXIS billboards tilt until the light sees them at
@@ -1686,26 +1668,26 @@ typedef struct rbl__Cast {
 
 // The frame's scene, validated and packed once by RblSetScene
 typedef struct rbl__Scene {
-    float *lights;                  // RBL__LIGHT_FLOATS per light: position, colour, spot (vec4 each), falloff (vec3), shadow map + 1
-    int *lightFeatures;             // RblLightFeature bits each light needs
-    float *staging;                 // Deferred volumes: bounded lights moved to the front
+    float *lights;                             // RBL__LIGHT_FLOATS per light: position, colour, spot (vec4 each), falloff (vec3), shadow map + 1
+    int *lightFeatures;                        // RblLightFeature bits each light needs
+    float *staging;                            // Deferred volumes: bounded lights moved to the front
     int lightCount;
     int lightCapacity;
     float ambient[3], ground[3], up[3];
-    float fog[4];                   // rgb linear colour, density or 1/(end - start)
+    float fog[4];                              // rgb linear colour, density or 1/(end - start)
     float fogStart;
     int fogMode;
     float exposure;
     int shadowCount;
-    int shadowLight[RBL_MAX_SHADOWS];               // Scene light each map shadows
-    unsigned int shadowId[RBL_MAX_SHADOWS];         // Each map's object id (an unload drops it from the scene)
-    bool shadowDropped;                             // A map was unloaded after RblSetScene: its light draws unshadowed
-    bool shadowDroppedNoted;                        // ... and a draw said so (once a scene)
-    bool depthNoted;                                // The depth texture was found deleted at a draw (once a scene)
+    int shadowLight[RBL_MAX_SHADOWS];          // Scene light each map shadows
+    unsigned int shadowId[RBL_MAX_SHADOWS];    // Each map's object id (an unload drops it from the scene)
+    bool shadowDropped;                        // A map was unloaded after RblSetScene: its light draws unshadowed
+    bool shadowDroppedNoted;                   // ... and a draw said so (once a scene)
+    bool depthNoted;                           // The depth texture was found deleted at a draw (once a scene)
     unsigned int shadowTexture[RBL_MAX_SHADOWS];
-    unsigned int shadowTint[RBL_MAX_SHADOWS];       // Each map's transmittance target (0 = none)
-    float shadowUniforms[RBL_MAX_SHADOWS][48];      // Matrix rows, params, bias, axes, tiles as shadows.glsl reads them
-    Texture2D depth;                // Scene depth soft particles read (id 0 = none)
+    unsigned int shadowTint[RBL_MAX_SHADOWS];  // Each map's transmittance target (0 = none)
+    float shadowUniforms[RBL_MAX_SHADOWS][48]; // Matrix rows, params, bias, axes, tiles as shadows.glsl reads them
+    Texture2D depth;                           // Scene depth soft particles read (id 0 = none)
 } rbl__Scene;
 
 // The scene target of a plain raylib frame (RblBeginSceneDepth .. RblEndSceneDepth): the opaque world
@@ -1748,48 +1730,48 @@ typedef struct rbl__PolyRange {
 
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
 typedef struct rbl__State {
-    rbl__Program **programs;        // The one program registry (each entry allocated: pointers stay valid as it grows)
+    rbl__Program **programs;           // The one program registry (each entry allocated: pointers stay valid as it grows)
     int programCount;
     int programCapacity;
-    rbl__DeadHandle *dead;          // Lit handles that died, so their copies are refused (freed by RblClose)
+    rbl__DeadHandle *dead;             // Lit handles that died, so their copies are refused (freed by RblClose)
     int deadCount;
     int deadCapacity;
-    int **quarantine;               // Locations arrays of handles RblUnloadLitShader released: kept allocated so no later
-    int quarantineCount;            // allocation takes their address while a stale copy may hold it (freed by RblClose)
+    int **quarantine;                  // Locations arrays of handles RblUnloadLitShader released: kept allocated so no later
+    int quarantineCount;               // allocation takes their address while a stale copy may hold it (freed by RblClose)
     int quarantineCapacity;
-    void *glIs[3];                  // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
-    void *glGetUniformfv;           // ... and glGetUniformfv
+    void *glIs[3];                     // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
+    void *glGetUniformfv;              // ... and glGetUniformfv
     bool glLooked;
-    bool closed;                    // RblClose ran: the tables go with the last object the caller holds
-    rbl__SceneCapture capture;      // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target
+    bool closed;                       // RblClose ran: the tables go with the last object the caller holds
+    rbl__SceneCapture capture;         // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target
     rbl__Scene scene;
-    RblBatch immediate;             // The immediate path's one-quad batch
-    RblShadowMap *shadowPass;       // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
-    RblShadowMap shadowPassMap;     // ... the map as it began (the caller's struct is never held)
-    rbl__Cast cast;                 // ... and its light, for AXIS tilts
-    RblGBuffer *gbufferPass;        // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
-    RblGBuffer gbufferPassBuffer;   // ... the G-buffer as it began
-    Vector2 alphaBand;              // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
-    unsigned int casterIds[7];      // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced, blended vertex buffers and instanced: compiled on first use)
+    RblBatch immediate;                // The immediate path's one-quad batch
+    RblShadowMap *shadowPass;          // Shadow pass in progress (RblBeginShadowMap .. RblEndShadowMap): &shadowPassMap, or NULL
+    RblShadowMap shadowPassMap;        // ... the map as it began (the caller's struct is never held)
+    rbl__Cast cast;                    // ... and its light, for AXIS tilts
+    RblGBuffer *gbufferPass;           // Geometry pass in progress (RblBeginGBuffer .. RblEndGBuffer): &gbufferPassBuffer, or NULL
+    RblGBuffer gbufferPassBuffer;      // ... the G-buffer as it began
+    Vector2 alphaBand;                 // A hybrid batch pass: x alpha cutoff (0 = the material's), y ceiling (0 = none)
+    unsigned int casterIds[7];         // Caster programs (vertex buffers, instanced; skinned, cross-fade vertex buffers and instanced, blended vertex buffers and instanced: compiled on first use)
 #if defined(RBL_INSTRUMENTS)
-    bool gbufferForceFailure;       // Test hook: pretend MRT / float targets are unavailable
-    bool gbufferDriverDepth;        // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
+    bool gbufferForceFailure;          // Test hook: pretend MRT / float targets are unavailable
+    bool gbufferDriverDepth;           // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
 #endif
-    char problem[512];              // Why the last internal step failed (its public caller logs it once)
-    char failure[512];              // The last refusal line without "RBL: " (RblGetFailureReason)
-    Matrix boneScratch[RBL_MAX_BONES];  // Bone matrices transposed for ES uploads (rbl__uploadBones)
-    rbl__Live *live;                // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
-    int liveCount;                  // Slots used (free ones are reused)
+    char problem[512];                 // Why the last internal step failed (its public caller logs it once)
+    char failure[512];                 // The last refusal line without "RBL: " (RblGetFailureReason)
+    Matrix boneScratch[RBL_MAX_BONES]; // Bone matrices transposed for ES uploads (rbl__uploadBones)
+    rbl__Live *live;                   // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
+    int liveCount;                     // Slots used (free ones are reused)
     int liveCapacity;
-    rbl__PolyRange *polyRanges;     // Polygon handles of the loaded atlases, by first handle
+    rbl__PolyRange *polyRanges;        // Polygon handles of the loaded atlases, by first handle
     int polyRangeCount;
     int polyRangeCapacity;
-    unsigned int polyNext;          // Next handle handed out (handles of an unloaded atlas are reused only once 2^20 - 1 ran out)
-    unsigned int polyVersion;       // Changes with every range added or removed (the GPU table follows it)
-    unsigned int polyTableId;       // The instanced stage's polygon table (RGBA32F), built at the first draw that needs it
-    unsigned int polyTableVersion;  // polyVersion it was built at
-    unsigned int polyTableBase;     // Lowest handle it holds
-    int polyTableMaxCorners;        // Most corners (3 per triangle) of one polygon in it
+    unsigned int polyNext;             // Next handle handed out (handles of an unloaded atlas are reused only once 2^20 - 1 ran out)
+    unsigned int polyVersion;          // Changes with every range added or removed (the GPU table follows it)
+    unsigned int polyTableId;          // The instanced stage's polygon table (RGBA32F), built at the first draw that needs it
+    unsigned int polyTableVersion;     // polyVersion it was built at
+    unsigned int polyTableBase;        // Lowest handle it holds
+    int polyTableMaxCorners;           // Most corners (3 per triangle) of one polygon in it
 } rbl__State;
 
 static rbl__State rbl__state;
@@ -4649,7 +4631,7 @@ static inline int rbl__castFacing(const rbl__Cast *cast, int facing)
 
 // Right, up (both scaled to unit length except CAMERA_PLANE's caller up) and unit normal. Every mode
 // takes one direction off an axis from a vector v, blended toward a fallback f where v nears the axis
-// (DEGENERATE FRAMES): the first switch picks the three, one blend follows, the second switch builds
+// (README "Degenerate frames"): the first switch picks the three, one blend follows, the second switch builds
 // the frame (one blend, not one per mode: llvmpipe runs every branch of the GLSL twin).
 static void rbl__facingBasis(const RblCameraFrame *view, const rbl__Cast *cast, const RblBillboard *b, Vector3 *right, Vector3 *up, Vector3 *normal)
 {
@@ -5597,8 +5579,8 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     // programs read none). Continuing runs had their program checked when they started.
     const RblShadowMap *pass = rbl__state.shadowPass;
     const RblGBuffer *gpass = rbl__state.gbufferPass;
-    if (batch->identified || ((pass != NULL)? !pass->desc.selfShadow : (gpass != NULL)? (gpass->desc.shadowMaps > 0) :
-                                                                        ((program != NULL) && (program->key.desc.shadowMaps > 0))))
+    if (batch->identified || ((pass != NULL)? !pass->desc.selfShadow : (gpass != NULL)? (gpass->desc.shading.shadowMaps > 0) :
+                                                                        ((program != NULL) && (program->key.desc.shading.shadowMaps > 0))))
     {
         if (batch->ids == NULL) batch->ids = (unsigned char *)RBL_MALLOC((size_t)batch->capacity*RBL__ID_BYTES);
         if (batch->ids == NULL)
@@ -5738,6 +5720,47 @@ static void rbl__setVertexLayout(size_t baseOffset)
 static void rbl__endBatch(RblBatch *batch, const char *fn);
 
 void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
+
+// ---- the draw skeleton the batch and instanced paths share ----
+
+// Order matters only where colour blends: shadow and G-buffer passes draw in submission order
+static int rbl__passSort(int sort)
+{
+    return ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : sort;
+}
+
+// A per-item stream made on first use (fades, caster identities), at least capacity items of
+// bytesEach; false when it cannot be created (logged; the old buffer kept, nothing drawn)
+static bool rbl__reserveStream(unsigned int *vbo, int *gpuCapacity, int capacity, int bytesEach, const char *fn, const char *what)
+{
+    if (*gpuCapacity >= capacity) return true;
+    unsigned int id = rlLoadVertexBuffer(NULL, capacity*bytesEach, true);
+    if (id == 0) { TraceLog(LOG_WARNING, "RBL: %s: GPU %s buffer for %i items could not be created; nothing drawn", fn, what, capacity); return false; }
+    if (*vbo != 0) rlUnloadVertexBuffer(*vbo);
+    *vbo = id;
+    *gpuCapacity = capacity;
+    return true;
+}
+
+// One layer of a draw (every material run of a batch, the instances of one call)
+typedef void (*rbl__DrawLayer)(void *context);
+
+// The layers a sort mode draws: hybrid = texels at or above solid alpha as opaque geometry (depth
+// written), then the fringe over everything behind it, depth tested but not written (depth writes
+// end on: raylib's default); other modes one layer. Each layer re-applies its material values, which
+// carry the alpha band.
+static void rbl__drawLayers(int sort, float solidAlpha, rbl__DrawLayer draw, void *context)
+{
+    if (sort != RBL_SORT_HYBRID) { draw(context); return; }
+    const float solid = (solidAlpha == 0.0f)? 1.0f : solidAlpha;
+    rbl__state.alphaBand.x = solid; rbl__state.alphaBand.y = 2.0f;
+    draw(context);
+    rlDisableDepthMask();
+    rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = solid;
+    draw(context);
+    rlEnableDepthMask();
+    rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
+}
 
 // Sort keys: farther first; equal depths keep submission order (a total order: any submission order
 // of distinct depths draws alike)
@@ -5894,6 +5917,14 @@ static void rbl__drawBatchPass(const rbl__BatchState *batch, bool sorted, const 
     }
 }
 
+typedef struct rbl__BatchLayer { const rbl__BatchState *batch; bool sorted; const char *fn; unsigned int bound; } rbl__BatchLayer;
+
+static void rbl__drawBatchLayer(void *context)
+{
+    rbl__BatchLayer *layer = (rbl__BatchLayer *)context;
+    rbl__drawBatchPass(layer->batch, layer->sorted, layer->fn, &layer->bound);
+}
+
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
@@ -5926,24 +5957,9 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         old.idVboId = 0;
         rbl__unloadBatchGpu(&old);
     }
-    if (batch->fading && (batch->fadeGpuCapacity < batch->capacity))
-    {
-        unsigned int id = rlLoadVertexBuffer(NULL, batch->capacity*RBL__FADE_FLOATS*(int)sizeof(float), true);
-        if (id == 0) { TraceLog(LOG_WARNING, "RBL: %s: GPU fade buffer for %i billboards could not be created; nothing drawn", fn, batch->capacity); return; }
-        if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
-        batch->fadeVboId = id;
-        batch->fadeGpuCapacity = batch->capacity;
-    }
-    if (batch->identified && (batch->idGpuCapacity < batch->capacity))
-    {
-        unsigned int id = rlLoadVertexBuffer(NULL, batch->capacity*RBL__ID_BYTES, true);
-        if (id == 0) { TraceLog(LOG_WARNING, "RBL: %s: GPU caster identity buffer for %i billboards could not be created; nothing drawn", fn, batch->capacity); return; }
-        if (batch->idVboId != 0) rlUnloadVertexBuffer(batch->idVboId);
-        batch->idVboId = id;
-        batch->idGpuCapacity = batch->capacity;
-    }
-    // Order matters only where colour blends: shadow and G-buffer passes draw in submission order
-    int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : pub->sort;
+    if (batch->fading && !rbl__reserveStream(&batch->fadeVboId, &batch->fadeGpuCapacity, batch->capacity, RBL__FADE_FLOATS*(int)sizeof(float), fn, "fade")) return;
+    if (batch->identified && !rbl__reserveStream(&batch->idVboId, &batch->idGpuCapacity, batch->capacity, RBL__ID_BYTES, fn, "caster identity")) return;
+    int sort = rbl__passSort(pub->sort);
     if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
     {
         TraceLog(LOG_WARNING, "RBL: %s: out of memory sorting %i billboards; drawn in submission order", fn, batch->count);
@@ -5962,21 +5978,9 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (batch->identified) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
     rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
     rlEnableVertexBufferElement(batch->eboId);
-    unsigned int bound = 0;
-    if (sort == RBL_SORT_HYBRID)
-    {
-        // Solid texels as opaque geometry (depth written), then the fringe over everything behind it,
-        // back to front, depth tested but not written (depth writes end on: raylib's default)
-        float solid = (pub->solidAlpha == 0.0f)? 1.0f : pub->solidAlpha;
-        rbl__state.alphaBand.x = solid; rbl__state.alphaBand.y = 2.0f;
-        rbl__drawBatchPass(batch, true, fn, &bound);
-        rlDisableDepthMask();
-        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = solid;
-        rbl__drawBatchPass(batch, true, fn, &bound);
-        rlEnableDepthMask();
-        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
-    }
-    else rbl__drawBatchPass(batch, sorted, fn, &bound);
+    rbl__BatchLayer layer = { batch, sorted, fn, 0 };
+    rbl__drawLayers(sort, pub->solidAlpha, rbl__drawBatchLayer, &layer);
+    unsigned int bound = layer.bound;
     if (batch->fading) rlDisableVertexAttribute(RL_DEFAULT_SHADER_ATTRIB_LOCATION_TEXCOORD2);     // raylib's next draws never see it
     rbl__unbindMaterial(bound);
     rlDisableVertexArray();
@@ -6067,6 +6071,7 @@ void RblClose(void)
 //----------------------------------------------------------------------------------
 // Instance attribute locations: above raylib's defaults (0..9), declared in lit_instanced.vs.glsl
 #define RBL__INSTANCE_LOCATION 10
+#define RBL__INSTANCE_ATTRIBUTES 5      // position, size, source, tint, flags
 
 static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
 {
@@ -6080,7 +6085,7 @@ static void rbl__loadInstanceGpu(rbl__InstanceBufferState *buffer)
     rlSetVertexAttribute(loc + 2, 4, RL_FLOAT, false, stride, (int)offsetof(RblInstance, source));
     rlSetVertexAttribute(loc + 3, 4, RL_UNSIGNED_BYTE, true, stride, (int)offsetof(RblInstance, tint));
     rlSetVertexAttribute(loc + 4, 1, 0x1405 /* GL_UNSIGNED_INT, converted to float */, false, stride, (int)offsetof(RblInstance, flags));
-    for (unsigned int i = 0; i < 5; i++) { rlEnableVertexAttribute(loc + i); rlSetVertexAttributeDivisor(loc + i, 1); }
+    for (unsigned int i = 0; i < RBL__INSTANCE_ATTRIBUTES; i++) { rlEnableVertexAttribute(loc + i); rlSetVertexAttributeDivisor(loc + i, 1); }
     rlDisableVertexArray();
 }
 
@@ -6205,7 +6210,8 @@ static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, C
 }
 
 // Fade attribute locations of lit_instanced.vs.glsl: second source, weight, flags, both clips
-static const unsigned int rbl__fadeLocations[5] = { 15, 6, 7, 8, 9 };
+#define RBL__FADE_ATTRIBUTES 5
+static const unsigned int rbl__fadeLocations[RBL__FADE_ATTRIBUTES] = { 15, 6, 7, 8, 9 };
 
 // The fade buffer of an instanced draw (its VAO bound): fades uploaded and bound per instance, or
 // without them the attributes off and constant (weight 0) for a program that reads them
@@ -6230,7 +6236,7 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
     rlSetVertexAttribute(rbl__fadeLocations[2], 1, 0x1405 /* GL_UNSIGNED_INT, converted to float */, false, stride, (int)offsetof(RblFade, flags));
     rlSetVertexAttribute(rbl__fadeLocations[3], 4, RL_FLOAT, false, stride, (int)offsetof(RblFade, clip));
     rlSetVertexAttribute(rbl__fadeLocations[4], 4, RL_FLOAT, false, stride, (int)(offsetof(RblFade, clip) + sizeof(Rectangle)));
-    for (int i = 0; i < 5; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
+    for (int i = 0; i < RBL__FADE_ATTRIBUTES; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
 }
 
 // ---- polygon frames on the instanced stage -----------------------------------------------------------
@@ -6342,22 +6348,38 @@ static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFr
     memcpy(frame, f, sizeof(f));
 }
 
+// An instanced draw's desc (facing, sort, finite directions; a CAMERA_PLANE up below 2^30), its
+// directions tamed as the CPU tames them (FIXED up and normal, AXIS axis: long ones scaled)
+static bool rbl__instancedDescOk(RblInstancedDesc *desc)
+{
+    if ((desc->facing < RBL_FACING_CAMERA_PLANE) || (desc->facing > RBL_FACING_FIXED) || !rbl__finite3(desc->up) ||
+        !rbl__finite3(desc->axis) || !rbl__finite(desc->roundness) || (desc->sort < RBL_SORT_NONE) || (desc->sort > RBL_SORT_HYBRID) ||
+        ((desc->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc->up, 3, RBL__UP_LIMIT_EXPONENT))) return false;
+    if (desc->facing != RBL_FACING_CAMERA_PLANE) desc->up = rbl__tame(desc->up);
+    desc->axis = rbl__tame(desc->axis);
+    return true;
+}
+
+typedef struct rbl__InstanceLayer { rbl__Program *program; const Material *material; int count, vertices; } rbl__InstanceLayer;   // vertices: 6, or a polygon draw's corners
+
+static void rbl__drawInstanceLayer(void *context)
+{
+    const rbl__InstanceLayer *layer = (const rbl__InstanceLayer *)context;
+    rbl__applyMaterialValues(layer->program, layer->material);
+    rlDrawVertexArrayInstanced(0, layer->vertices, layer->count);
+}
+
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
 {
     rbl__InstanceBufferState *buffer = rbl__instanceState(pub);
     if (buffer == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: instance buffer not loaded"); return 0; }
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if ((count < 0) || (count > RBL_MAX_INSTANCES) || ((count > 0) && (instances == NULL))) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad instance array (count %i, limit %i)", count, RBL_MAX_INSTANCES); return 0; }
-    if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort < RBL_SORT_NONE) || (desc.sort > RBL_SORT_HYBRID) ||
-        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
+    if (!rbl__instancedDescOk(&desc))
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: bad RblInstancedDesc (facing %i, sort %i, NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
         return 0;
     }
-    // Directions only (FIXED up and normal, AXIS axis): long ones scaled, as the CPU does
-    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
-    desc.axis = rbl__tame(desc.axis);
     rbl__Program *checked = NULL;
     const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %s", bad); return 0; }
@@ -6452,16 +6474,8 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
             if (corners < 6) corners = 6;
         }
     }
-    if ((fades != NULL) && (buffer->fadeGpuCapacity < buffer->capacity))
-    {
-        unsigned int id = rlLoadVertexBuffer(NULL, buffer->capacity*(int)sizeof(RblFade), true);
-        if (id == 0) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: GPU fade buffer for %i instances could not be created", buffer->capacity); return 0; }
-        if (buffer->fadeVboId != 0) rlUnloadVertexBuffer(buffer->fadeVboId);
-        buffer->fadeVboId = id;
-        buffer->fadeGpuCapacity = buffer->capacity;
-    }
-    // Back to front by pivot depth where colour blends (not in shadow or G-buffer passes)
-    int sort = ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : desc.sort;
+    if ((fades != NULL) && !rbl__reserveStream(&buffer->fadeVboId, &buffer->fadeGpuCapacity, buffer->capacity, (int)sizeof(RblFade), "RblDrawInstanced", "fade")) return 0;
+    int sort = rbl__passSort(desc.sort);        // back to front by pivot depth where colour blends
     if (sort != RBL_SORT_NONE)
     {
         const RblInstance *ordered = rbl__sortInstances(buffer, camera, upload, n);
@@ -6492,7 +6506,6 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
-    rbl__applyMaterialValues(program, &material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
     const int vertices = (corners > 0)? corners : 6;
     if (corners > 0)
@@ -6509,23 +6522,11 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     rlEnableVertexArray(buffer->vaoId);
     rbl__bindInstanceFades(buffer, program, fadeUpload, n);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
-    if (sort == RBL_SORT_HYBRID)
-    {
-        // As a hybrid batch: opaque texels with depth writes, then the fringe without them
-        rbl__state.alphaBand.x = 1.0f; rbl__state.alphaBand.y = 2.0f;
-        rbl__applyMaterialValues(program, &material);
-        rlDrawVertexArrayInstanced(0, vertices, n);
-        rlDisableDepthMask();
-        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 1.0f;
-        rbl__applyMaterialValues(program, &material);
-        rlDrawVertexArrayInstanced(0, vertices, n);
-        rlEnableDepthMask();
-        rbl__state.alphaBand.x = 0.0f; rbl__state.alphaBand.y = 0.0f;
-    }
-    else rlDrawVertexArrayInstanced(0, vertices, n);
+    rbl__InstanceLayer layer = { program, &material, n, vertices };
+    rbl__drawLayers(sort, 0.0f, rbl__drawInstanceLayer, &layer);     // hybrid: solid alpha 1, as a batch's default
     if (corners > 0) { rlActiveTextureSlot(RBL_FRAME_TABLE_TEXTURE_UNIT); rlDisableTexture(); }
     rbl__markDrawn(program);
-    if (fadeUpload != NULL) for (int i = 0; i < 5; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
+    if (fadeUpload != NULL) for (int i = 0; i < RBL__FADE_ATTRIBUTES; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
     if (cullOff) rlEnableBackfaceCulling();
     rbl__unbindMaterial(bound);
@@ -7766,17 +7767,17 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     memset(out, 0, sizeof(*out));
     RblMaterialLayout m = in.material;
     if ((in.maxLights < 0) || (in.maxLights > RBL_MAX_LIGHTS)) return "maxLights outside 0..RBL_MAX_LIGHTS";
-    if ((in.lightFeatures & ~15) != 0) return "unknown lightFeatures bits";
+    if ((in.shading.lightFeatures & ~15) != 0) return "unknown lightFeatures bits";
     if ((m.normalEncoding < RBL_NORMAL_NONE) || (m.normalEncoding > RBL_NORMAL_RGB)) return "unknown material.normalEncoding";
     if ((m.emissive < RBL_EMISSIVE_NONE) || (m.emissive > RBL_EMISSIVE_RGB)) return "unknown material.emissive";
     if ((m.normalEncoding == RBL_NORMAL_RGB) && m.specular) return "an RGB normal map leaves no channel for specular";
-    if ((in.brdf < RBL_BRDF_LAMBERT) || (in.brdf > RBL_BRDF_GGX)) return "unknown brdf";
-    if ((in.fog < RBL_FOG_NONE) || (in.fog > RBL_FOG_EXP2)) return "unknown fog mode";
-    if ((in.tonemap < RBL_TONEMAP_NONE) || (in.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
-    if (!rbl__finiteNonNegative(in.gamma) || (in.gamma > 16.0f) || ((in.gamma > 0.0f) && (in.gamma < 0.0625f))) return "gamma outside 1/16..16 (0 = sRGB)";
+    if ((in.shading.brdf < RBL_BRDF_LAMBERT) || (in.shading.brdf > RBL_BRDF_GGX)) return "unknown brdf";
+    if ((in.shading.fog < RBL_FOG_NONE) || (in.shading.fog > RBL_FOG_EXP2)) return "unknown fog mode";
+    if ((in.shading.tonemap < RBL_TONEMAP_NONE) || (in.shading.tonemap > RBL_TONEMAP_ACES)) return "unknown tonemap";
+    if (!rbl__finiteNonNegative(in.shading.gamma) || (in.shading.gamma > 16.0f) || ((in.shading.gamma > 0.0f) && (in.shading.gamma < 0.0625f))) return "gamma outside 1/16..16 (0 = sRGB)";
     if ((in.debugOutput < 0) || (in.debugOutput >= RBL_DEBUG_OUTPUT_COUNT)) return "debugOutput not an RblDebugOutput";
-    if ((in.shadowMaps < 0) || (in.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
-    if ((in.shadowFilter < 0) || (in.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
+    if ((in.shading.shadowMaps < 0) || (in.shading.shadowMaps > RBL_MAX_SHADOWS)) return "shadowMaps outside 0..RBL_MAX_SHADOWS";
+    if ((in.shading.shadowFilter < 0) || (in.shading.shadowFilter > RBL_SHADOW_MAX_FILTER)) return "shadowFilter outside 0..RBL_SHADOW_MAX_FILTER";
     if (in.skinning && in.instanced) return "skinning applies to Models (vertex buffers), not to the instanced path";
     if (in.softParticles && in.deferred) return "soft particles blend: a forward variant, not a G-buffer one";
     if (in.skinning && !RBL_GPU_SKINNING) return "skinning needs raylib built with SUPPORT_GPU_SKINNING (then define RBL_GPU_SKINNING 1 before the header)";
@@ -7790,21 +7791,21 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if ((in.reliefSteps < 0) || (in.reliefSteps > RBL_MAX_RELIEF_STEPS)) return "reliefSteps outside 0..RBL_MAX_RELIEF_STEPS";
     if (in.relief && (m.height == RBL_CHANNEL_NONE)) return "relief needs a height channel (material.height)";
     if ((in.relief || in.transmission) && in.deferred) return "relief and transmission are forward-only (the G-buffer carries neither)";
-    if (in.shadowTransmittance && ((in.shadowMaps == 0) || in.deferred)) return "shadowTransmittance needs shadowMaps > 0 in a forward variant";
+    if (in.shadowTransmittance && ((in.shading.shadowMaps == 0) || in.deferred)) return "shadowTransmittance needs shadowMaps > 0 in a forward variant";
 
     out->maxLights = (in.maxLights == 0)? ((RBL_MAX_LIGHTS < 4)? RBL_MAX_LIGHTS : 4) : in.maxLights;
-    out->lightFeatures = (in.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.lightFeatures;
+    out->shading.lightFeatures = (in.shading.lightFeatures == 0)? RBL_LIGHT_FEATURE_POINT : in.shading.lightFeatures;
     out->material.normalEncoding = m.normalEncoding;
     out->material.emissive = m.emissive;
     out->material.occlusion = m.occlusion;
     out->material.premultipliedAlpha = m.premultipliedAlpha;
     // A specular map is sampled only by a BRDF that reads it (or the debug view that shows it)
-    out->material.specular = m.specular && ((in.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == RBL_DEBUG_OUTPUT_SPECULAR));
-    out->brdf = in.brdf;
-    out->fog = in.fog;
-    out->tonemap = in.tonemap;
-    out->gamma = in.gamma;
-    out->linearOutput = in.linearOutput;
+    out->material.specular = m.specular && ((in.shading.brdf != RBL_BRDF_LAMBERT) || (in.debugOutput == RBL_DEBUG_OUTPUT_SPECULAR));
+    out->shading.brdf = in.shading.brdf;
+    out->shading.fog = in.shading.fog;
+    out->shading.tonemap = in.shading.tonemap;
+    out->shading.gamma = in.shading.gamma;
+    out->shading.linearOutput = in.shading.linearOutput;
     out->instanced = in.instanced;
     out->deferred = in.deferred;
     out->skinning = in.skinning;
@@ -7821,11 +7822,11 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
     if (in.deferred)
     {
         // The geometry pass lights nothing: lighting-only fields cannot make two variants differ
-        out->maxLights = 1; out->lightFeatures = RBL_LIGHT_FEATURE_POINT; out->fog = RBL_FOG_NONE; out->tonemap = RBL_TONEMAP_NONE;
-        out->gamma = 0.0f; out->linearOutput = false; out->debugOutput = 0;
+        out->maxLights = 1; out->shading.lightFeatures = RBL_LIGHT_FEATURE_POINT; out->shading.fog = RBL_FOG_NONE; out->shading.tonemap = RBL_TONEMAP_NONE;
+        out->shading.gamma = 0.0f; out->shading.linearOutput = false; out->debugOutput = 0;
     }
-    out->shadowMaps = in.deferred? 0 : in.shadowMaps;       // the geometry pass receives nothing
-    out->shadowFilter = (out->shadowMaps == 0)? 0 : ((in.shadowFilter == 0)? 2 : in.shadowFilter);
+    out->shading.shadowMaps = in.deferred? 0 : in.shading.shadowMaps;       // the geometry pass receives nothing
+    out->shading.shadowFilter = (out->shading.shadowMaps == 0)? 0 : ((in.shading.shadowFilter == 0)? 2 : in.shading.shadowFilter);
     return NULL;
 }
 
@@ -7833,21 +7834,21 @@ static const char *rbl__normaliseLitDesc(RblLitShaderDesc in, RblLitShaderDesc *
 static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 {
     const RblMaterialLayout *m = &d->material;
-    bool view = !d->deferred && ((d->brdf != RBL_BRDF_LAMBERT) || (d->fog != RBL_FOG_NONE));   // the G-buffer stores no view
+    bool view = !d->deferred && ((d->shading.brdf != RBL_BRDF_LAMBERT) || (d->shading.fog != RBL_FOG_NONE));   // the G-buffer stores no view
     int n = snprintf(out, size, "#define RBL_LIGHTS %i\n#define RBL_BRDF %i\n#define RBL_NORMAL_ENCODING %i\n#define RBL_EMISSIVE %i\n"
                      "#define RBL_FOG %i\n#define RBL_TONEMAP %i\n#define RBL_SHADOWS %i\n#define RBL_SHADOW_FILTER %i\n%s%s%s%s%s%s%s",
-                     d->maxLights, d->brdf, m->normalEncoding, m->emissive, d->fog, d->tonemap, d->shadowMaps, d->shadowFilter,
-                     (d->lightFeatures & RBL_LIGHT_FEATURE_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
-                     (d->lightFeatures & RBL_LIGHT_FEATURE_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
-                     (d->lightFeatures & RBL_LIGHT_FEATURE_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
+                     d->maxLights, d->shading.brdf, m->normalEncoding, m->emissive, d->shading.fog, d->shading.tonemap, d->shading.shadowMaps, d->shading.shadowFilter,
+                     (d->shading.lightFeatures & RBL_LIGHT_FEATURE_DIRECTIONAL)? "#define RBL_LIGHT_DIRECTIONAL\n" : "",
+                     (d->shading.lightFeatures & RBL_LIGHT_FEATURE_SPOT)? "#define RBL_LIGHT_SPOT\n" : "",
+                     (d->shading.lightFeatures & RBL_LIGHT_FEATURE_CLASSIC_FALLOFF)? "#define RBL_LIGHT_CLASSIC\n" : "",
                      m->specular? "#define RBL_SPECULAR\n" : "", m->occlusion? "#define RBL_OCCLUSION\n" : "",
-                     view? "#define RBL_VIEW_VECTOR\n" : "", d->linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
-    if ((n > 0) && ((size_t)n < size) && (d->gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->gamma);
+                     view? "#define RBL_VIEW_VECTOR\n" : "", d->shading.linearOutput? "#define RBL_LINEAR_OUTPUT\n" : "");
+    if ((n > 0) && ((size_t)n < size) && (d->shading.gamma > 0.0f)) n += snprintf(out + n, size - (size_t)n, "#define RBL_GAMMA %.9g\n", d->shading.gamma);
     if ((n > 0) && ((size_t)n < size) && d->skinning) n += snprintf(out + n, size - (size_t)n, "#define RBL_SKINNING\n#define RBL_MAX_BONES %i\n", RBL_MAX_BONES);
     if ((n > 0) && ((size_t)n < size) && d->softParticles) n += snprintf(out + n, size - (size_t)n, "#define RBL_SOFT_PARTICLES\n");
     if ((n > 0) && ((size_t)n < size) && d->crossFade) n += snprintf(out + n, size - (size_t)n, "#define RBL_CROSS_FADE\n");
     // The caster identity: shadow receivers and G-buffer geometry variants (rbl__compileProgram adds it to casters)
-    if ((n > 0) && ((size_t)n < size) && ((d->shadowMaps > 0) || d->deferred)) n += snprintf(out + n, size - (size_t)n, "#define RBL_CASTER_ID\n");
+    if ((n > 0) && ((size_t)n < size) && ((d->shading.shadowMaps > 0) || d->deferred)) n += snprintf(out + n, size - (size_t)n, "#define RBL_CASTER_ID\n");
     if ((n > 0) && ((size_t)n < size) && m->premultipliedAlpha) n += snprintf(out + n, size - (size_t)n, "#define RBL_PREMULTIPLIED_ALPHA\n");
     if ((n > 0) && ((size_t)n < size) && d->transmission) n += snprintf(out + n, size - (size_t)n, "#define RBL_TRANSMISSION\n");
     if ((n > 0) && ((size_t)n < size) && (m->thickness != RBL_CHANNEL_NONE)) n += snprintf(out + n, size - (size_t)n, "#define RBL_THICKNESS_CHANNEL %i\n", m->thickness + 2);
@@ -8056,10 +8057,10 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     char defines[1024];
     rbl__litDefines(d, defines, sizeof(defines));
     size_t used = strlen(defines);
-    if ((key->kind == RBL__KIND_CASTER) && (d->shadowMaps == 0)) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
+    if ((key->kind == RBL__KIND_CASTER) && (d->shading.shadowMaps == 0)) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
     if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
-    if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
+    if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shading.shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (key->sprites & 1) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
     if (key->sprites & 2) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_POLYGONS\n"); }
     if (((key->kind == RBL__KIND_PASS) || d->deferred || d->instanced) && (rbl__needsGlsl3(d->instanced? "instanced billboards" : "deferred passes") != NULL)) { RBL_FREE(p); return NULL; }
@@ -8101,7 +8102,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     // texcoord2 buffer there; unbound, the attribute is constant and its weight 0
     p->shader.locs[SHADER_LOC_VERTEX_TEXCOORD02] = -1;
     p->fadeClipLoc = (d->crossFade && !d->instanced)? rlGetLocationAttrib(shader.id, "rblFadeClip") : -1;
-    p->casterIdLoc = ((key->kind != RBL__KIND_PASS) && !d->instanced && ((key->kind == RBL__KIND_CASTER) || (d->shadowMaps > 0) || d->deferred))?
+    p->casterIdLoc = ((key->kind != RBL__KIND_PASS) && !d->instanced && ((key->kind == RBL__KIND_CASTER) || (d->shading.shadowMaps > 0) || d->deferred))?
                      rlGetLocationAttrib(shader.id, "rblCasterId") : -1;
     for (int u = 0; u < RBL__U_COUNT; u++) p->loc[u] = rlGetLocationUniform(shader.id, rbl__uniformNames[u]);
     p->refs = 1;
@@ -8113,14 +8114,14 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     }
     // Receivers: sampler k reads texture unit RBL_SHADOW_TEXTURE_UNIT + k, and no light is shadowed
     // until a scene gives a map (an unbound sampler would read depth 0 and darken everything)
-    for (int k = 0; k < d->shadowMaps; k++)
+    for (int k = 0; k < d->shading.shadowMaps; k++)
     {
         char name[32];
         snprintf(name, sizeof(name), "rblShadowMap%i", k);
         int unit = RBL_SHADOW_TEXTURE_UNIT + k;
         rlSetUniform(rlGetLocationUniform(shader.id, name), &unit, SHADER_UNIFORM_INT, 1);
     }
-    for (int k = 0; d->shadowTransmittance && (k < d->shadowMaps); k++)
+    for (int k = 0; d->shadowTransmittance && (k < d->shading.shadowMaps); k++)
     {
         char name[32];
         snprintf(name, sizeof(name), "rblShadowTint%i", k);
@@ -8279,16 +8280,16 @@ static bool rbl__lightFeatureOf(const RblLight *l, int *features)
     return true;
 }
 
-int RblLightFeatures(const RblLight *lights, int count)
+int RblGetLightFeatures(const RblLight *lights, int count)
 {
     int features = 0;
     if ((count < 0) || (count > RBL_MAX_SCENE_LIGHTS) || ((count > 0) && (lights == NULL)))
     {
-        TraceLog(LOG_WARNING, "RBL: RblLightFeatures: count %i outside 0..RBL_MAX_SCENE_LIGHTS (%i) or lights NULL", count, RBL_MAX_SCENE_LIGHTS);
+        TraceLog(LOG_WARNING, "RBL: RblGetLightFeatures: count %i outside 0..RBL_MAX_SCENE_LIGHTS (%i) or lights NULL", count, RBL_MAX_SCENE_LIGHTS);
         return 0;
     }
     for (int i = 0; i < count; i++)
-        if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblLightFeatures: light %i has an unknown type or falloff", i); return 0; }
+        if (!rbl__lightFeatureOf(&lights[i], &features)) { TraceLog(LOG_WARNING, "RBL: RblGetLightFeatures: light %i has an unknown type or falloff", i); return 0; }
     return features;
 }
 
@@ -8401,7 +8402,7 @@ static const char *rbl__materialProblem(const Material *material, int path, rbl_
     }
     if (p->key.desc.instanced != instanced) return instanced? "the material's program is not an instanced variant" : "an instanced variant draws only through RblDrawInstanced";
     if ((g != NULL) && !p->key.desc.deferred) return "a forward variant inside a G-buffer pass (RblLitShaderDesc.deferred)";
-    if ((g != NULL) && (p->key.desc.brdf != g->desc.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
+    if ((g != NULL) && (p->key.desc.shading.brdf != g->desc.shading.brdf)) return "the deferred variant's brdf differs from the G-buffer's";
     if ((g == NULL) && p->key.desc.deferred) return "a deferred variant outside RblBeginGBuffer/RblEndGBuffer";
     // Without the bone attributes raylib's DrawMesh would enable them with no buffer (or defaults that
     // put every vertex on bone 0): a skinned program draws GPU-skinned meshes only
@@ -8480,7 +8481,7 @@ static rbl__Program *rbl__blendCaster(bool instanced)
 // default white texture where the scene's map has none: nothing tinted)
 static void rbl__bindSceneTints(const rbl__Program *p)
 {
-    for (int k = 0; k < p->key.desc.shadowMaps; k++)
+    for (int k = 0; k < p->key.desc.shading.shadowMaps; k++)
     {
         unsigned int id = (k < rbl__state.scene.shadowCount)? rbl__state.scene.shadowTint[k] : 0;
         rlActiveTextureSlot(RBL_SHADOW_TINT_TEXTURE_UNIT + k);
@@ -8558,7 +8559,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     if (*program == NULL) return true;
     rbl__checkRaylibDrew(*program);
     material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
-    if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shadowMaps > 0)) rbl__noteDroppedShadow();
+    if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shading.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
     if ((*program)->key.desc.shadowTransmittance) rbl__bindSceneTints(*program);
     return true;
@@ -8669,7 +8670,7 @@ static void rbl__uploadShadows(const rbl__Program *p, const int slotOf[RBL_MAX_S
 {
     const rbl__Scene *s = &rbl__state.scene;
     const int *loc = p->loc;
-    int n = (s->shadowCount < p->key.desc.shadowMaps)? s->shadowCount : p->key.desc.shadowMaps;
+    int n = (s->shadowCount < p->key.desc.shading.shadowMaps)? s->shadowCount : p->key.desc.shading.shadowMaps;
     int lightOf[4] = { -1, -1, -1, -1 };
     for (int k = 0; k < n; k++) lightOf[k] = slotOf[k];
     rlSetUniform(loc[RBL__U_SHADOW_LIGHT], lightOf, SHADER_UNIFORM_IVEC4, 1);
@@ -8702,7 +8703,7 @@ static void rbl__uploadSceneConstants(const rbl__Program *p)
     if (loc[RBL__U_FOG] != -1)
     {
         // Another mode than the compiled one (or none) leaves the fog clear: density or slope 0
-        bool same = (s->fogMode == p->key.desc.fog);
+        bool same = (s->fogMode == p->key.desc.shading.fog);
         float f[4] = { s->fog[0], s->fog[1], s->fog[2], same? s->fog[3] : 0.0f }, start = same? s->fogStart : 0.0f;
         rlSetUniform(loc[RBL__U_FOG], f, SHADER_UNIFORM_VEC4, 1);
         rlSetUniform(loc[RBL__U_FOG_START], &start, SHADER_UNIFORM_FLOAT, 1);
@@ -8722,7 +8723,7 @@ static int rbl__uploadSceneLights(const rbl__Program *p)
     for (int i = 0; i < s->lightCount; i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
-        if ((n == p->key.desc.maxLights) || ((s->lightFeatures[i] & ~p->key.desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0)) { skipped++; continue; }
+        if ((n == p->key.desc.maxLights) || ((s->lightFeatures[i] & ~p->key.desc.shading.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0)) { skipped++; continue; }
         memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
         memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
         if (d[15] > 0.0f) slotOf[(int)d[15] - 1] = n;
@@ -9177,7 +9178,7 @@ static bool rbl__loadTargets(RblGBuffer *g, int width, int height)
     g->normal = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R8G8B8A8);
     // RG8 for the 16 parameter bits; ES maps two-channel formats to unrenderable luminance-alpha: RGBA8.
     // A G-buffer receiving shadows keeps each pixel's caster identity there too (RGBA8)
-    bool rgba = (rbl__glsl() == 300) || (g->desc.shadowMaps > 0);
+    bool rgba = (rbl__glsl() == 300) || (g->desc.shading.shadowMaps > 0);
     g->params = rbl__targetTexture(width, height, rgba? PIXELFORMAT_UNCOMPRESSED_R8G8B8A8 : PIXELFORMAT_UNCOMPRESSED_GRAY_ALPHA);
     g->accum = rbl__targetTexture(width, height, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     memset(&g->depth, 0, sizeof(g->depth));
@@ -9220,8 +9221,7 @@ static void rbl__gbufferLitDesc(const RblGBufferDesc *g, RblLitShaderDesc *out)
 {
     memset(out, 0, sizeof(*out));
     out->maxLights = RBL_MAX_LIGHTS;        // unbounded lights (and the naive loop) go through full-screen passes
-    out->lightFeatures = g->lightFeatures; out->brdf = g->brdf; out->fog = g->fog; out->tonemap = g->tonemap; out->gamma = g->gamma;
-    out->linearOutput = g->linearOutput; out->shadowMaps = g->shadowMaps; out->shadowFilter = g->shadowFilter;
+    out->shading = g->shading;
 }
 
 static void rbl__releasePasses(RblGBuffer *g)
@@ -9410,7 +9410,7 @@ RblGBuffer RblLoadGBuffer(RblGBufferDesc desc)
     rbl__restoreTarget(callerTarget);
     g.desc = desc;
     g.desc.width = width; g.desc.height = height;
-    g.desc.lightFeatures = normalised.lightFeatures; g.desc.shadowFilter = normalised.shadowFilter;
+    g.desc.shading.lightFeatures = normalised.shading.lightFeatures; g.desc.shading.shadowFilter = normalised.shading.shadowFilter;
 
     // Pass programs from the registry: the forward path's lights.glsl and output.glsl in the deferred stages
     bool ok = true;
@@ -9647,7 +9647,7 @@ static void rbl__fullscreenLights(RblGBuffer *g, int pass, const float *pos, con
     if (loc[RBL__U_SHADOW_MATRIX] != -1)
     {
         // The registry's shadow upload, with this chunk's slots
-        int n = (s->shadowCount < g->desc.shadowMaps)? s->shadowCount : g->desc.shadowMaps;
+        int n = (s->shadowCount < g->desc.shading.shadowMaps)? s->shadowCount : g->desc.shading.shadowMaps;
         int slots[RBL_MAX_SHADOWS] = { -1, -1, -1, -1 };
         for (int k = 0; k < n; k++) slots[k] = shadowSlot[k];
         rbl__uploadShadows(rbl__passProgram(g, pass), slots);
@@ -9685,13 +9685,13 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     else if (rbl__state.gbufferPass != NULL) bad = "inside another G-buffer's geometry pass";
     else if (!gbuffer->state->geometryDone) bad = "no geometry pass ran since the G-buffer was loaded or resized (RblBeginGBuffer/RblEndGBuffer first)";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawDeferredLights: %s", bad); return false; }
-    if (rbl__state.scene.shadowDropped && (gbuffer->desc.shadowMaps > 0)) rbl__noteDroppedShadow();
+    if (rbl__state.scene.shadowDropped && (gbuffer->desc.shading.shadowMaps > 0)) rbl__noteDroppedShadow();
     RblGBuffer *g = gbuffer;
     const rbl__Scene *s = &rbl__state.scene;
     int count = s->lightCount, unbounded = 0, uncompiled = 0;
     for (int i = 0; i < count; i++)
     {
-        if ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) uncompiled++;
+        if ((s->lightFeatures[i] & ~g->desc.shading.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) uncompiled++;
         else if (rbl__fullscreenLight(g, &s->lights[i*RBL__LIGHT_FLOATS])) unbounded++;
     }
     if (!RBL__NAIVE(g) && (unbounded > RBL_MAX_LIGHTS))
@@ -9738,7 +9738,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     for (int i = 0; i <= count; i++)
     {
         const float *d = (i < count)? &s->lights[i*RBL__LIGHT_FLOATS] : NULL;
-        if ((d != NULL) && ((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) == 0) && rbl__fullscreenLight(g, d))
+        if ((d != NULL) && ((s->lightFeatures[i] & ~g->desc.shading.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) == 0) && rbl__fullscreenLight(g, d))
         {
             memcpy(&pos[n*4], &d[0], 4*sizeof(float)); memcpy(&col[n*4], &d[4], 4*sizeof(float));
             memcpy(&spot[n*4], &d[8], 4*sizeof(float)); memcpy(&att[n*3], &d[12], 3*sizeof(float));
@@ -9759,7 +9759,7 @@ bool RblDrawDeferredLights(RblGBuffer *gbuffer)
     for (int i = 0; (i < count) && !RBL__NAIVE(g); i++)
     {
         const float *d = &s->lights[i*RBL__LIGHT_FLOATS];
-        if (((s->lightFeatures[i] & ~g->desc.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
+        if (((s->lightFeatures[i] & ~g->desc.shading.lightFeatures & ~RBL_LIGHT_FEATURE_POINT) != 0) || rbl__fullscreenLight(g, d)) continue;
         memcpy(&s->staging[v*RBL__LIGHT_FLOATS], d, RBL__LIGHT_FLOATS*sizeof(float));
         v++;
     }
@@ -9858,7 +9858,7 @@ static const char *rbl__normaliseShadowDesc(RblShadowDesc in, RblShadowDesc *out
     if (!rbl__finite(in.constantBias) || !rbl__finite(in.slopeBias) || !rbl__finite(in.normalBias) || !rbl__finite(in.minCastAngle)) return "NaN/Inf bias or angle";
     if (in.minCastAngle > 80.0f) return "minCastAngle above 80 degrees";
     if (!rbl__finite(in.cascadeLambda) || !rbl__finite(in.cascadeBlend) || (in.cascadeLambda > 1.0f) || (in.cascadeBlend > 0.5f)) return "cascadeLambda above 1 or cascadeBlend above 0.5 (or NaN/Inf)";
-    if ((in.cascades < 0) || (in.cascades > 4)) return "cascades outside 0..4";
+    if ((in.cascades < 0) || (in.cascades > RBL__MAX_CASCADES)) return "cascades outside 0..4";
     if (in.omni && (in.cascades > 1)) return "omni and cascades together";
     int tiles = in.omni? 3 : ((in.cascades > 1)? in.cascades : 1), side = (in.size == 0)? 1024 : in.size;
     if ((side < 16) || (side*tiles > RBL_MAX_TARGET_SIZE)) return "size x tiles across (3 omni, the cascades) above RBL_MAX_TARGET_SIZE";
@@ -10501,16 +10501,16 @@ typedef struct rbl__AtlasState {
     RblAtlasSlice *slices; int sliceCount, sliceCap;
     RblAtlasPolygon *polygons; int polygonCount, polygonCap;
     rbl__AtlasPolyRef *polygonRefs; int polygonRefCap;
-    Vector2 *polyPoints; int polyPointCount, polyPointCap;          // each polygon's vertices, then its uvs
+    Vector2 *polyPoints; int polyPointCount, polyPointCap; // each polygon's vertices, then its uvs
     unsigned short *polyIndices; int polyIndexCount, polyIndexCap;
-    rbl__Polygon *polyDraw;                     // Per polygon, what the draw paths read (made at publication)
-    Vector2 *polyFrac;                          // ... its vertices as fractions of the frame's source
-    unsigned int *polySlots;                    // ... its slots (4 vertices each), both diagonals' cuts
-    unsigned int polyFirst;                     // Handle of polygon 0 (0 = none registered)
-    char **pools; int poolCount, poolCap;       // name storage: one block per parsed text (and per path), never moved
-    char *pool; size_t poolUsed, poolSize;      // the current block
+    rbl__Polygon *polyDraw;                                // Per polygon, what the draw paths read (made at publication)
+    Vector2 *polyFrac;                                     // ... its vertices as fractions of the frame's source
+    unsigned int *polySlots;                               // ... its slots (4 vertices each), every cut's
+    unsigned int polyFirst;                                // Handle of polygon 0 (0 = none registered)
+    char **pools; int poolCount, poolCap;                  // name storage: one block per parsed text (and per path), never moved
+    char *pool; size_t poolUsed, poolSize;                 // the current block
     int format;
-    int ignoredPads;                            // libGDX pad entries (reported once per load, LOG_INFO)
+    int ignoredPads;                                       // libGDX pad entries (reported once per load, LOG_INFO)
     char error[3*RBL__ATLAS_PATH + 256];
 } rbl__AtlasState;
 
@@ -10596,9 +10596,9 @@ static char *rbl__atlasPoolCopy(rbl__AtlasState *s, const char *text, size_t len
 enum { RBL__J_OBJECT = 1, RBL__J_ARRAY, RBL__J_STRING, RBL__J_NUMBER, RBL__J_TRUE, RBL__J_FALSE, RBL__J_NULL };
 typedef struct rbl__JNode {
     int type;
-    int start, len;     // string: between the quotes, raw; number: its text; container: the opening byte
-    int next;           // first node after this subtree (objects: key and value alternate as children)
-    int count;          // children (objects: 2 per member)
+    int start, len;                 // string: between the quotes, raw; number: its text; container: the opening byte
+    int next;                       // first node after this subtree (objects: key and value alternate as children)
+    int count;                      // children (objects: 2 per member)
 } rbl__JNode;
 
 typedef struct rbl__Json {
@@ -11660,8 +11660,8 @@ static int rbl__compareEdges(const void *a, const void *b)
 
 // Scratch of the polygon preparation (grown as needed, freed at its end)
 typedef struct rbl__PolyScratch {
-    Vector2 *frac; int fracCount, fracCap;              // every polygon's vertices, then its cut points
-    unsigned int *slots; int slotCount, slotCap;        // every polygon's slots, both cuts
+    Vector2 *frac; int fracCount, fracCap;       // every polygon's vertices, then its cut points
+    unsigned int *slots; int slotCount, slotCap; // every polygon's slots, both cuts
     unsigned int *tri, *piece, *edges; int triCap, pieceCap, edgeCap;
 } rbl__PolyScratch;
 
@@ -12413,24 +12413,6 @@ float RblSpriteBlend(const RblSpritePlayer *player, const RblAtlas *atlas, int *
     return w;
 }
 
-bool RblSpriteFade(const RblSpritePlayer *player, const RblAtlas *atlas, RblFade *fade)
-{
-    const rbl__AtlasState *s = rbl__atlasArg(atlas, "RblSpriteFade");
-    if (s == NULL) return false;
-    if ((player == NULL) || (fade == NULL)) { TraceLog(LOG_WARNING, "RBL: RblSpriteFade: NULL player or fade"); return false; }
-    int next;
-    float w;
-    const char *bad = rbl__spriteBlend(s, player, &next, &w);
-    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblSpriteFade: %s", bad); return false; }
-    // The next frame over the current one's quad, unclipped (frames of equal trim line up; others
-    // take RblAtlasBillboardFade / RblAtlasInstanceFade, see SPRITE SHEETS)
-    fade->source = s->frames[next].source;
-    fade->flags = s->frames[next].flags & RBL_FRAME_ROTATED;
-    fade->weight = w;
-    memset(fade->clip, 0, sizeof(fade->clip));
-    return true;
-}
-
 int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directions)
 {
     if ((directions < 1) || (directions > 360)) { TraceLog(LOG_WARNING, "RBL: RblSpriteViewSector: directions %i outside 1..360", directions); return -1; }
@@ -12824,15 +12806,11 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     if (b == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: sprite buffer not loaded"); return 0; }
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: camera with NaN/Inf or huge fields, fovy outside (0, 180) or unknown projection"); return 0; }
     if (!rbl__exponentsBelow(&time, 1, RBL__INSTANCE_LIMIT_EXPONENT)) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: NaN/Inf or |value| >= 2^120 time"); return 0; }
-    if ((desc.facing < RBL_FACING_CAMERA_PLANE) || (desc.facing > RBL_FACING_FIXED) || !rbl__finite3(desc.up) ||
-        !rbl__finite3(desc.axis) || !rbl__finite(desc.roundness) || (desc.sort != RBL_SORT_NONE) || (desc.fades != NULL) ||
-        ((desc.facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&desc.up, 3, RBL__UP_LIMIT_EXPONENT)))
+    if ((desc.sort != RBL_SORT_NONE) || (desc.fades != NULL) || !rbl__instancedDescOk(&desc))
     {
         TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: bad RblInstancedDesc (facing %i, sort %i (resident sprites draw in buffer order), fades (the frame table's), NaN/Inf vectors or a CAMERA_PLANE up of length >= 2^30)", desc.facing, desc.sort);
         return 0;
     }
-    if (desc.facing != RBL_FACING_CAMERA_PLANE) desc.up = rbl__tame(desc.up);
-    desc.axis = rbl__tame(desc.axis);
     rbl__Program *checked = NULL;
     const char *bad = rbl__materialProblem(&material, RBL__PATH_INSTANCED, &checked);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: %s", bad); return 0; }

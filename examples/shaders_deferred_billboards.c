@@ -166,22 +166,19 @@ static void DeferredInit(int width, int height)
     deferredScene.fog = CLITERAL(RblFog){ RBL_FOG_EXP2, deferredBackground, 0.0f, 0.0f, 0.03f };
 
     // One shading description for the lighting passes: GGX, ACES, exp2 fog
-    RblGBufferDesc shading = RBL_ZERO;
-    shading.width = width;
-    shading.height = height;
-    shading.brdf = RBL_BRDF_GGX;
-    shading.lightFeatures = RblLightFeatures(deferredLights, DEFERRED_LIGHTS + 1);
-    shading.tonemap = RBL_TONEMAP_ACES;
-    shading.fog = RBL_FOG_EXP2;
-    gbuffer = RblLoadGBuffer(shading);
+    RblGBufferDesc gdesc = RBL_ZERO;
+    gdesc.width = width;
+    gdesc.height = height;
+    gdesc.shading.brdf = RBL_BRDF_GGX;
+    gdesc.shading.lightFeatures = RblGetLightFeatures(deferredLights, DEFERRED_LIGHTS + 1);
+    gdesc.shading.tonemap = RBL_TONEMAP_ACES;
+    gdesc.shading.fog = RBL_FOG_EXP2;
+    gbuffer = RblLoadGBuffer(gdesc);
     deferredValid = RblIsGBufferValid(gbuffer);
 
-    // Programs: geometry-pass variants of the G-buffer's BRDF, or forward ones when there is no G-buffer
+    // Programs: geometry-pass variants lit as the G-buffer lights, or forward ones when there is none
     RblLitShaderDesc desc = RBL_ZERO;
-    desc.brdf = shading.brdf;
-    desc.lightFeatures = shading.lightFeatures;
-    desc.tonemap = shading.tonemap;
-    desc.fog = shading.fog;
+    desc.shading = gdesc.shading;
     if (deferredValid) desc.deferred = true;
     else desc.maxLights = RBL_MAX_LIGHTS;
     sceneShader = RblLoadLitShader(desc);

@@ -225,13 +225,13 @@ static void ShowcaseInit(void)
     ShowcaseUpdate(0.0f);
     RblLitShaderDesc desc = RBL_ZERO;
     desc.maxLights = SCENE_LIGHTS;
-    desc.lightFeatures = RblLightFeatures(showcaseLights, SCENE_LIGHTS);
-    desc.fog = RBL_FOG_EXP2;
-    desc.tonemap = RBL_TONEMAP_ACES;
-    desc.shadowMaps = 1;                    // Floor and cards receive the moon's shadow
-    desc.brdf = RBL_BRDF_GGX;
+    desc.shading.lightFeatures = RblGetLightFeatures(showcaseLights, SCENE_LIGHTS);
+    desc.shading.fog = RBL_FOG_EXP2;
+    desc.shading.tonemap = RBL_TONEMAP_ACES;
+    desc.shading.shadowMaps = 1;                    // Floor and cards receive the moon's shadow
+    desc.shading.brdf = RBL_BRDF_GGX;
     floorLit = RblLoadLitShader(desc);      // Floor: albedo only (no tangents needed)
-    desc.brdf = RBL_BRDF_BLINN_PHONG;
+    desc.shading.brdf = RBL_BRDF_BLINN_PHONG;
     desc.material = packed.layout;          // Cards: exactly the maps the packing produced
     cardMaterial = LoadMaterialDefault();
     cardMaterial.shader = RblLoadLitShader(desc);

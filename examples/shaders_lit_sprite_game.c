@@ -193,10 +193,10 @@ static void GameInit(void)
     GameUpdate(0.0f, CLITERAL(Vector2){ 0.0f, 0.0f });     // Lights and camera at t = 0, for the programs' features
     RblLitShaderDesc desc = RBL_ZERO;
     desc.maxLights = LIGHT_COUNT;
-    desc.lightFeatures = RblLightFeatures(lights, LIGHT_COUNT);
-    desc.brdf = RBL_BRDF_BLINN_PHONG;
-    desc.fog = RBL_FOG_EXP2; desc.tonemap = RBL_TONEMAP_ACES;
-    desc.shadowMaps = 1;                    // The moon's
+    desc.shading.lightFeatures = RblGetLightFeatures(lights, LIGHT_COUNT);
+    desc.shading.brdf = RBL_BRDF_BLINN_PHONG;
+    desc.shading.fog = RBL_FOG_EXP2; desc.shading.tonemap = RBL_TONEMAP_ACES;
+    desc.shading.shadowMaps = 1;                    // The moon's
     robotMaterial = LoadSheetMaterial(&robotAtlas, 3.0f, desc);
     propMaterial = LoadSheetMaterial(&propAtlas, 3.0f, desc);
     robotMaterial.params[RBL_PARAM_SPECULAR] = 0.6f;             // A metal robot: shiny

@@ -166,7 +166,7 @@ static void SpritesInit(int width, int height)
     RblPackMaterial(&source, &packed);
     RblLitShaderDesc desc = RBL_ZERO;
     desc.material = packed.layout;
-    desc.brdf = RBL_BRDF_BLINN_PHONG;
+    desc.shading.brdf = RBL_BRDF_BLINN_PHONG;
     heroMaterial = LoadMaterialDefault();
     heroMaterial.shader = RblLoadLitShader(desc);
     RblLoadPackedTextures(&packed, &heroMaterial);
@@ -175,7 +175,7 @@ static void SpritesInit(int width, int height)
 
     // Floor and crates: raylib Models lit by the same scene
     RblLitShaderDesc plain = RBL_ZERO;
-    plain.brdf = RBL_BRDF_BLINN_PHONG;
+    plain.shading.brdf = RBL_BRDF_BLINN_PHONG;
     Image checks = GenImageChecked(256, 256, 32, 32, CLITERAL(Color){ 90, 100, 80, 255 }, CLITERAL(Color){ 70, 80, 60, 255 });
     floorTexture = LoadTextureFromImage(checks);
     UnloadImage(checks);

@@ -1,5 +1,5 @@
 // Near-degenerate billboard frames: every configuration in which the header's facing code falls
-// back (DEGENERATE FRAMES in the header), approached rather than reached. Angular cases sweep the
+// back (README "Degenerate frames"), approached rather than reached. Angular cases sweep the
 // approach angle log-spaced from 5 degrees down to 1e-7 rad, from both sides of the degenerate
 // direction and at six azimuths 60 degrees apart starting at the fallback's own direction (so the
 // sweep passes straight through the blend's aligned and opposed sides). Offset cases (a point

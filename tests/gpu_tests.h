@@ -5,7 +5,8 @@
 #define RBL_TESTS_GPU_TESTS_H
 
 #include "reference.h"
-#include "test_render.c"
+#include "gpu_common.h"
+#include "test_batch.c"
 #include "test_api.c"
 #include "test_instanced.c"
 #include "test_material_render.c"
@@ -26,7 +27,7 @@
 #include "test_polygon.c"
 
 static const RtTest rblGpuTests[] = {
-        RBL_RENDER_TESTS,
+        RBL_BATCH_TESTS,
         RBL_API_TESTS,
         RBL_INSTANCED_TESTS,
         RBL_MATERIAL_RENDER_TESTS,

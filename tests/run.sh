@@ -86,6 +86,7 @@ fi
 # The README's API index and the doc block's CONFIGURATION list against the header
 echo "== test-lists (each GPU test registered beside its body)"
 out=$(python3 tests/tools/test_lists.py check 2>&1); printf '%s\n' "$out"; count "$out"
+out=$(python3 tests/tools/align_comments.py check 2>&1); printf '%s\n' "$out"; count "$out"
 echo "== api (README index, CONFIGURATION)"
 out=$(bash tests/tools/api_index.sh check rbillboard_lit.h README.md 2>&1); printf '%s\n' "$out"; count "$out"
 

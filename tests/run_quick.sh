@@ -14,6 +14,7 @@ count() {
 show() { printf '%s\n' "$1" | grep -E '^  FAIL|^[a-z][a-z0-9_-]*: [0-9]+ passed' ; }
 echo "== test-lists (each GPU test registered beside its body)"
 out=$(python3 tests/tools/test_lists.py check 2>&1); printf '%s\n' "$out"; count "$out"
+out=$(python3 tests/tools/align_comments.py check 2>&1); show "$out"; count "$out"
 echo "== api (README index, CONFIGURATION)"
 out=$(bash tests/tools/api_index.sh check rbillboard_lit.h README.md 2>&1); show "$out"; count "$out"
 echo "== test_cpu"

@@ -105,7 +105,7 @@ static bool runLoadShadow(void) { RblShadowDesc d; memset(&d, 0, sizeof(d)); d.s
 static void cleanShadow(void) { RblUnloadShadowMap(&shadowMap); }
 
 static RblGBuffer gbuffer;
-static bool runLoadGBuffer(void) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = RBL_BRDF_GGX; gbuffer = RblLoadGBuffer(d); return RblIsGBufferValid(gbuffer); }
+static bool runLoadGBuffer(void) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.shading.brdf = RBL_BRDF_GGX; gbuffer = RblLoadGBuffer(d); return RblIsGBufferValid(gbuffer); }
 static void cleanGBuffer(void) { RblUnloadGBuffer(&gbuffer); }
 
 static Shader lit;
@@ -114,7 +114,7 @@ static bool runLoadLit(void)
 {
     RblLitShaderDesc d; memset(&d, 0, sizeof(d));
     d.maxLights = 1 + litVariant;       // a variant not yet in the registry: compiled on this run
-    d.brdf = RBL_BRDF_BLINN_PHONG;
+    d.shading.brdf = RBL_BRDF_BLINN_PHONG;
     lit = RblLoadLitShader(d);
     return RblIsLitShaderValid(lit);
 }

@@ -1,7 +1,7 @@
 // The 1.0 API's shape: materials are values (one program for materials that differ only in values),
 // the scene is set once per frame and reaches every program (raylib's own DrawModel included), and
 // every GL object has one owner (raylib's UnloadMaterial on a lit program is survivable, double and
-// stale unloads are refused). Needs gpu_common.h (included by test_gpu_main.c through test_render.c,
+// stale unloads are refused). Needs gpu_common.h (included by gpu_tests.h
 // and by test_api_main.c).
 
 // Live lit programs in the registry (what users' materials share)
@@ -68,7 +68,7 @@ static RblLitShaderDesc apiGgxDesc(void)
 {
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.brdf = RBL_BRDF_GGX;
+    d.shading.brdf = RBL_BRDF_GGX;
     d.maxLights = 1;
     return d;
 }
@@ -178,7 +178,7 @@ static void test_api_scene_reaches_raylib_drawmodel_and_programs_loaded_later(vo
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     Shader lambert = RblLoadLitShader(d);
-    d.brdf = RBL_BRDF_BLINN_PHONG;
+    d.shading.brdf = RBL_BRDF_BLINN_PHONG;
     Shader phong = RblLoadLitShader(d);
     Model a = apiFacingPlane(lambert), b = apiFacingPlane(phong);
     RblLight light = apiFrontLight(4.0f);

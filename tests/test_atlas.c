@@ -275,11 +275,14 @@ static void test_atlas_player_follows_durations_directions_and_repeats(void)
     int next = -1;
     float w = RblSpriteBlend(&p, &a, &next);
     RT_CHECK(p.frame == 1 && next == 2 && w == 0.5f, "blend: frame %d next %d weight %g", p.frame, next, w);
-    // RblSpriteFade fills the same pair: the next frame's source and rotation, the weight
+    // RblAtlasBillboardFade of that pair: the weight and the next frame's rotation (its source over the
+    // union of the two trims: test_fade.c)
     RblFade fade;
+    RblBillboard fadeCard;
     memset(&fade, 0, sizeof(fade));
-    RT_CHECK(RblSpriteFade(&p, &a, &fade) && fade.weight == 0.5f && memcmp(&fade.source, &a.frames[2].source, sizeof(Rectangle)) == 0 &&
-             fade.flags == (a.frames[2].flags & RBL_FRAME_ROTATED), "fade: weight %g", fade.weight);
+    memset(&fadeCard, 0, sizeof(fadeCard));
+    bool faded = RblAtlasBillboardFade(&a, p.frame, next, w, 1.0f, &fadeCard, &fade);
+    RT_CHECK(faded && fade.weight == 0.5f && fade.flags == (a.frames[2].flags & RBL_FRAME_ROTATED), "fade: %d, weight %g", faded, fade.weight);
     // whole table (tag -1), no durations -> RBL_SPRITE_DEFAULT_FRAME_TIME; bad input refused, untouched
     SetTraceLogCallback(atlasCountingLog);
     atlasWarnings = 0;

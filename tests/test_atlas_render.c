@@ -172,7 +172,7 @@ static void test_atlas_rotated_frames_light_like_the_upright_frame(void)
     int lum[3][2];
     for (int side = 0; side < 2; side++)
     {
-        RblLight l = pointLight((Vector3){ side? -3.0f : 3.0f, 0.0f, 1.0f }, 6.0f);
+        RblLight l = rtPointLight((Vector3){ side? -3.0f : 3.0f, 0.0f, 1.0f }, 6.0f);
         RT_CHECK(renderSetLights(&l, 1, BLACK), "scene");
         for (int k = 0; k < 3; k++)
         {
@@ -255,7 +255,7 @@ static void test_atlas_page_and_its_normal_sheet_load_in_one_call_and_light_as_t
         RblAtlas a = RblLoadAtlas(files[k]);
         Material m = LoadMaterialDefault();
         RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
-        desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+        desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
         bool ok = RblIsAtlasValid(a) && RblLoadAtlasTextures(&a, 0, suffix[k], &m, &desc.material);
         RT_CHECK(ok && desc.material.normalEncoding == RBL_NORMAL_RGB && !desc.material.premultipliedAlpha && m.maps[MATERIAL_MAP_NORMAL].texture.width == 16,
                  "%s (suffix %s): loaded %d, normal encoding %d", files[k], suffix[k]? suffix[k] : "NULL", ok, desc.material.normalEncoding);
@@ -324,7 +324,7 @@ static void test_atlas_premultiplied_pages_light_and_blend_as_their_straight_col
     RblAtlas atlas = RblLoadAtlas("build/tests/atlas_gpu/pma.atlas");
     Material mPma = LoadMaterialDefault();
     RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
     RT_CHECK(RblIsAtlasValid(atlas) && atlas.pages[0].premultiplied && RblLoadAtlasTextures(&atlas, 0, "", &mPma, &desc.material) && desc.material.premultipliedAlpha, "pma page and layout");
     mPma.shader = RblLoadLitShader(desc);
     RblLitShaderDesc plainDesc = desc;

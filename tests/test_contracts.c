@@ -167,7 +167,7 @@ static RblLitShaderDesc descOf(int brdf, bool instanced, bool deferred)
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.maxLights = 1;
-    d.brdf = brdf;
+    d.shading.brdf = brdf;
     d.instanced = instanced;
     d.deferred = deferred;
     return d;
@@ -711,9 +711,9 @@ static void c_load_packed_textures(void)
 static void c_load_lit_shader(void)
 {
     Shader s;
-    const size_t ints[] = { offsetof(RblLitShaderDesc, maxLights), offsetof(RblLitShaderDesc, lightFeatures), offsetof(RblLitShaderDesc, material.normalEncoding),
-                            offsetof(RblLitShaderDesc, material.emissive), offsetof(RblLitShaderDesc, brdf), offsetof(RblLitShaderDesc, fog),
-                            offsetof(RblLitShaderDesc, tonemap), offsetof(RblLitShaderDesc, shadowMaps), offsetof(RblLitShaderDesc, shadowFilter),
+    const size_t ints[] = { offsetof(RblLitShaderDesc, maxLights), offsetof(RblLitShaderDesc, shading.lightFeatures), offsetof(RblLitShaderDesc, material.normalEncoding),
+                            offsetof(RblLitShaderDesc, material.emissive), offsetof(RblLitShaderDesc, shading.brdf), offsetof(RblLitShaderDesc, shading.fog),
+                            offsetof(RblLitShaderDesc, shading.tonemap), offsetof(RblLitShaderDesc, shading.shadowMaps), offsetof(RblLitShaderDesc, shading.shadowFilter),
                             offsetof(RblLitShaderDesc, debugOutput), offsetof(RblLitShaderDesc, material.height), offsetof(RblLitShaderDesc, material.thickness),
                             offsetof(RblLitShaderDesc, reliefSteps) };
     const int values[3] = { -1, 1000, -2147483647 - 1 };
@@ -726,10 +726,10 @@ static void c_load_lit_shader(void)
     }
     for (int vi = 0; vi < 5; vi++)
     {
-        RblLitShaderDesc d = descOf(0, false, false); d.gamma = badFloats[vi];
+        RblLitShaderDesc d = descOf(0, false, false); d.shading.gamma = badFloats[vi];
         EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
     }
-    RblLitShaderDesc d = descOf(0, false, false); d.gamma = -2.0f;
+    RblLitShaderDesc d = descOf(0, false, false); d.shading.gamma = -2.0f;
     EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
     d = descOf(0, true, false); d.skinning = true;     // skinning is for Models, not instances
     EXPECT_REFUSED((s = RblLoadLitShader(d), s.id != 0));
@@ -769,13 +769,13 @@ static void c_light_features(void)
 {
     RblLight l = pointLight();
     int f;
-    EXPECT_REFUSED((f = RblLightFeatures(NULL, 2), f != 0));
-    EXPECT_REFUSED((f = RblLightFeatures(&l, -1), f != 0));
+    EXPECT_REFUSED((f = RblGetLightFeatures(NULL, 2), f != 0));
+    EXPECT_REFUSED((f = RblGetLightFeatures(&l, -1), f != 0));
     l.type = 9;
-    EXPECT_REFUSED((f = RblLightFeatures(&l, 1), f != 0));
+    EXPECT_REFUSED((f = RblGetLightFeatures(&l, 1), f != 0));
     l.type = 0; l.falloff = 5;
-    EXPECT_REFUSED((f = RblLightFeatures(&l, 1), f != 0));
-    EXPECT_QUIET(RblLightFeatures(NULL, 0) == 0, true);
+    EXPECT_REFUSED((f = RblGetLightFeatures(&l, 1), f != 0));
+    EXPECT_QUIET(RblGetLightFeatures(NULL, 0) == 0, true);
 }
 
 static void c_set_scene(void)
@@ -914,14 +914,14 @@ static void c_draw_skinned_model(void)
 }
 
 // ---- cases: G-buffer ------------------------------------------------------------------------------
-static RblGBufferDesc gdesc(int brdf) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.brdf = brdf; return d; }
+static RblGBufferDesc gdesc(int brdf) { RblGBufferDesc d; memset(&d, 0, sizeof(d)); d.width = 32; d.height = 32; d.shading.brdf = brdf; return d; }
 
 static void c_gbuffer_load(void)
 {
     RblGBuffer g;
-    const size_t ints[] = { offsetof(RblGBufferDesc, width), offsetof(RblGBufferDesc, height), offsetof(RblGBufferDesc, brdf),
-                            offsetof(RblGBufferDesc, lightFeatures), offsetof(RblGBufferDesc, fog), offsetof(RblGBufferDesc, tonemap),
-                            offsetof(RblGBufferDesc, shadowMaps), offsetof(RblGBufferDesc, shadowFilter) };
+    const size_t ints[] = { offsetof(RblGBufferDesc, width), offsetof(RblGBufferDesc, height), offsetof(RblGBufferDesc, shading.brdf),
+                            offsetof(RblGBufferDesc, shading.lightFeatures), offsetof(RblGBufferDesc, shading.fog), offsetof(RblGBufferDesc, shading.tonemap),
+                            offsetof(RblGBufferDesc, shading.shadowMaps), offsetof(RblGBufferDesc, shading.shadowFilter) };
     const int values[4] = { -1, 1000, 1 << 30, -2147483647 - 1 };
     for (size_t i = 0; i < sizeof(ints)/sizeof(ints[0]); i++) for (int v = 0; v < 4; v++)
     {
@@ -931,7 +931,7 @@ static void c_gbuffer_load(void)
         EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(g)));
         ck(g.state == NULL, "desc field at offset %d = %d: load left a state", (int)ints[i], values[v]);
     }
-    for (int vi = 0; vi < 5; vi++) { RblGBufferDesc d = gdesc(0); d.gamma = badFloats[vi]; EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(g))); }
+    for (int vi = 0; vi < 5; vi++) { RblGBufferDesc d = gdesc(0); d.shading.gamma = badFloats[vi]; EXPECT_REFUSED((g = RblLoadGBuffer(d), RblIsGBufferValid(g))); }
 }
 
 static void c_gbuffer_lifecycle(void)
@@ -1604,33 +1604,21 @@ static void expectFadeRefused(Material m, RblBillboard b, const RblFade *f)
     RblUnloadBatch(&batch);
 }
 
-// Cross-fades: RblSpriteFade refuses what RblSpriteBlend refuses (fade untouched) and fills a good
-// one; a fade weight outside 0..1 or NaN/Inf fade floats are refused on every path (one line; an
+// Cross-fades: a player's fade is RblAtlasBillboardFade of RblSpriteBlend's pair (the one way to set
+// one up); a fade weight outside 0..1 or NaN/Inf fade floats are refused on every path (one line; an
 // instanced draw skips that instance and draws the rest, its fades still paired)
 static void c_fades(void)
 {
-    RblAtlas a = goodAtlas(), zero; memset(&zero, 0, sizeof(zero));
+    RblAtlas a = goodAtlas();
     RblSpritePlayer p = RblPlaySprite(&a, 0, 0);
-    RblFade f, f0;
-    memset(&f, 0x5A, sizeof(f)); f0 = f;
-    EXPECT_REFUSED(RblSpriteFade(NULL, &a, &f));
-    EXPECT_REFUSED(RblSpriteFade(&p, NULL, &f));
-    EXPECT_REFUSED(RblSpriteFade(&p, &zero, &f));
-    EXPECT_REFUSED(RblSpriteFade(&p, &a, NULL));
-    RblSpritePlayer bad[7];
-    for (int k = 0; k < 7; k++) bad[k] = p;
-    bad[0].frame = 5; bad[1].step = 0; bad[2].time = NAN; bad[3].loops = -1; bad[4].passes = -1; bad[5].tag = 3; bad[6].time = -1.0f;
-    for (int k = 0; k < 7; k++) EXPECT_REFUSED(RblSpriteFade(&bad[k], &a, &f));
-    ck(memcmp(&f, &f0, sizeof(f)) == 0, "refused fades wrote their output");
+    RblFade f;
+    RblBillboard fb; memset(&fb, 0, sizeof(fb));
     int next = -1;
     p.time = 0.05f;
     float w = RblSpriteBlend(&p, &a, &next);
-    ck(RblSpriteFade(&p, &a, &f) && (f.weight == w) && (memcmp(&f.source, &a.frames[next].source, sizeof(Rectangle)) == 0) && isfinite(f.weight) && (f.weight >= 0.0f) && (f.weight <= 1.0f),
-       "good fade: weight %g (blend %g), frame %d", f.weight, w, next);
-    RblSpritePlayer stalePlayer = p;
-    RblAtlas stale = a;
+    bool faded = RblAtlasBillboardFade(&a, p.frame, next, w, 0.01f, &fb, &f);
+    ck(faded && (f.weight == w) && isfinite(f.weight) && (f.weight >= 0.0f) && (f.weight <= 1.0f), "good fade: %d, weight %g (blend %g), frame %d", faded, f.weight, w, next);
     RblUnloadAtlas(&a);
-    EXPECT_REFUSED(RblSpriteFade(&stalePlayer, &stale, &f));
 
     // Weights outside 0..1 on the billboard paths (NaN/Inf ride with billboardFloats)
     RblLitShaderDesc fd = descOf(RBL_BRDF_LAMBERT, false, false);
@@ -2100,8 +2088,8 @@ static void c_counts_at_and_past_limits(void)
 {
     static RblLight lights[RBL_MAX_SCENE_LIGHTS + 1];
     for (int i = 0; i <= RBL_MAX_SCENE_LIGHTS; i++) lights[i] = pointLight();
-    EXPECT_QUIET(RblLightFeatures(lights, RBL_MAX_SCENE_LIGHTS) == RBL_LIGHT_FEATURE_POINT, true);
-    EXPECT_REFUSED(RblLightFeatures(lights, RBL_MAX_SCENE_LIGHTS + 1) != 0);
+    EXPECT_QUIET(RblGetLightFeatures(lights, RBL_MAX_SCENE_LIGHTS) == RBL_LIGHT_FEATURE_POINT, true);
+    EXPECT_REFUSED(RblGetLightFeatures(lights, RBL_MAX_SCENE_LIGHTS + 1) != 0);
     RblScene scene; memset(&scene, 0, sizeof(scene)); scene.lights = lights;
     scene.lightCount = RBL_MAX_SCENE_LIGHTS;
     EXPECT_QUIET(RblSetScene(&scene), true);
@@ -2277,11 +2265,11 @@ static void c_scene_references_die(void)
     ck(RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0, 0, 0 }, 4.0f), "shadow pass refused");
     RblEndShadowMap(&map);
     scene.shadowMaps = &map; scene.shadowMapCount = 1;
-    RblGBufferDesc gd = gdesc(RBL_BRDF_LAMBERT); gd.shadowMaps = 1;
+    RblGBufferDesc gd = gdesc(RBL_BRDF_LAMBERT); gd.shading.shadowMaps = 1;
     RblGBuffer g = RblLoadGBuffer(gd);
     EXPECT_REFUSED(RblDrawDeferredLights(&g));                   // no geometry pass yet
     ck(RblSetScene(&scene), "scene refused: %s", lastWarning);
-    RblLitShaderDesc rd = descOf(RBL_BRDF_LAMBERT, false, false); rd.shadowMaps = 1;
+    RblLitShaderDesc rd = descOf(RBL_BRDF_LAMBERT, false, false); rd.shading.shadowMaps = 1;
     Material receiver = litMaterial(rd);
     RblUnloadShadowMap(&map);
     RblBillboard b = billboard();
@@ -2381,7 +2369,7 @@ static const Case cases[] = {
     { "RblLoadLitShader", "every desc field out of range", c_load_lit_shader, "counts floats" },
     { "RblIsLitShaderValid", "zero, raylib default, stale", c_lit_shader_queries, "null stale-header" },
     { "RblUnloadLitShader", "NULL, zero, default, double, stale", c_unload_lit_shader, "null stale-header stale-raylib" },
-    { "RblLightFeatures", "NULL, counts, types", c_light_features, "null counts" },
+    { "RblGetLightFeatures", "NULL, counts, types", c_light_features, "null counts" },
     { "RblSetScene", "counts, maps, fog, every float of scene and lights", c_set_scene, "counts floats" },
     { "RblDrawModel RblDrawMesh", "bad models, transforms, materials, variants", c_draw_model_and_mesh, "null-inside floats variants" },
     { "RblDrawModel RblDrawMesh RblDrawBillboard", "skinned programs: bones NULL, counts, NaN bones, meshes without bone data, shadow pass", c_draw_skinned_model, "null-inside counts floats variants" },
@@ -2401,12 +2389,12 @@ static const Case cases[] = {
     { "RblLoadAtlasTextures", "NULL, stale, pages, materials (maps NULL), missing or mis-sized sheets; material untouched", c_atlas_textures, "null null-inside stale-header counts" },
     { "RblAtlasBillboardFade RblAtlasInstanceFade", "NULL, frames, weights, scales, stale, different sheets, empty trims; outputs untouched; equal frames unclipped", c_atlas_fade_quads, "null stale-header" },
     { "RblPlaySprite RblUpdateSprite RblUpdateSpriteInstances RblSpriteBlend RblSpriteViewSector", "NULL, stale, bad dt/scale/counts, corrupt players, directions, NaN/Inf", c_sprites, "null stale-header counts floats" },
-    { "RblSpriteFade RblDrawBillboardFade RblBatchAddFade RblDrawInstanced", "cross-fade: NULL, stale, corrupt players; weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
+    { "RblDrawBillboardFade RblBatchAddFade RblDrawInstanced", "cross-fade: weights outside 0..1, NaN/Inf fades on every path", c_fades, "null floats stale-header" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawInstanced RblDrawMesh RblDrawModel RblIsLitShaderValid RblUnloadLitShader", "lit Shader copies after RblUnloadLitShader, UnloadShader, UnloadMaterial; then nothing, a lit load, a raylib load", c_stale_shader_copies, "stale-header stale-raylib stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblEndBatch RblDrawMesh RblDrawModel RblIsLitShaderValid RblLoadLitShader", "lit Shader copies whose GL name a raylib shader or a lit load took (reuse staged)", c_stale_shader_copies_reused_id, "stale-reused stale-raylib" },
     { "RblIsBatchValid RblBeginBatch RblUnloadBatch RblIsInstanceBufferValid RblUnloadInstanceBuffer RblIsGBufferValid RblBeginGBuffer RblUnloadGBuffer RblIsShadowMapValid RblUnloadShadowMap RblIsAtlasValid RblAtlasFindFrame RblUnloadAtlas", "stale copies whose state address a newer object took", c_stale_objects_reused_address, "stale-reused" },
     { "RblDrawBillboard RblBatchAdd RblDrawInstanced RblDrawMesh RblDrawModel", "NULL maps/locs/arrays; shaders, textures and meshes raylib unloaded", c_null_and_dead_inside_raylib_structs, "null-inside stale-raylib" },
-    { "RblLightFeatures RblSetScene RblUpdateSpriteInstances RblDrawInstanced", "every count at its limit and one past", c_counts_at_and_past_limits, "counts" },
+    { "RblGetLightFeatures RblSetScene RblUpdateSpriteInstances RblDrawInstanced", "every count at its limit and one past", c_counts_at_and_past_limits, "counts" },
     { "RblDrawBillboard", "Material values (maps[].value, params[]) NaN/Inf/overflowing: finite float output", c_material_values_every_float, "floats" },
     { "RblBillboardVertices", "FIXED/AXIS directions of any finite length; CAMERA_PLANE up overflowing", c_vertices_long_directions, "floats" },
     { "RblBeginBatch RblBatchAdd RblEndBatch RblBeginShadowMap RblEndShadowMap RblBeginGBuffer RblEndGBuffer RblResolveGBuffer RblUnloadShadowMap RblUnloadGBuffer", "every pass against every other, both orders; inside BeginTextureMode", c_passes_against_passes, "nesting" },

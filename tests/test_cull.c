@@ -3,7 +3,7 @@
 // off are identical (every channel, whole target); each billboard drawn alone is culled only where
 // its picture alone is empty; the far ones are culled (the count fails without culling); a
 // batch begun in another camera's 3D mode culls nothing rather than culling wrongly.
-// Included by test_gpu_main.c (after test_render.c and test_shadows.c).
+// Included by test_gpu_main.c (after test_shadows.c).
 
 // A mixed set: near the view (every facing, rotations, mirrors, long CAMERA_PLANE ups), straddling
 // its edges, pivots outside with quads reaching in, behind the camera, and far away on every side
@@ -106,7 +106,7 @@ static int cullLitPixels(Image a)
 static void test_cull_batches_skip_what_the_camera_cannot_see_and_draw_the_same_picture(void)
 {
     Scene s = sceneLoad((Color){ 220, 180, 140, 255 }, normalTexel(0, 0, 1), false);
-    RblLight l = pointLight((Vector3){ 1, 2, 4 }, 20.0f);
+    RblLight l = rtPointLight((Vector3){ 1, 2, 4 }, 20.0f);
     RT_CHECK(renderSetLights(&l, 1, (Color){ 60, 60, 60, 255 }), "scene rejected");
     RblBillboard set[CULL_SET];
     cullSet(set);

@@ -44,7 +44,7 @@ static DefScene defSceneLoad(int brdf)
     s.count = 5;
     s.ambient = (Color){ 30, 32, 40, 255 };
     memset(&s.desc, 0, sizeof(s.desc));
-    s.desc.brdf = brdf;
+    s.desc.shading.brdf = brdf;
     memset(&s.values, 0, sizeof(s.values));
     s.values.roughness = 0.45f; s.values.shininess = 40.0f;
     // raylib's MATERIAL_MAP_SPECULAR is MATERIAL_MAP_METALNESS (one slot): GGX reads its value as metalness,
@@ -52,11 +52,11 @@ static DefScene defSceneLoad(int brdf)
     // reached no other BRDF; Blinn-Phong keeps its default intensity 0.5)
     if (brdf == RBL_BRDF_GGX) s.values.metalness = 0.3f;
     s.desc.maxLights = 8;
-    s.desc.lightFeatures = RblLightFeatures(s.lights, s.count);
+    s.desc.shading.lightFeatures = RblGetLightFeatures(s.lights, s.count);
     s.desc.material.normalEncoding = RBL_NORMAL_RGB;
-    s.desc.tonemap = RBL_TONEMAP_REINHARD;
+    s.desc.shading.tonemap = RBL_TONEMAP_REINHARD;
     s.fog = (RblFog){ RBL_FOG_EXP, (Color){ 40, 40, 60, 255 }, 0.0f, 0.0f, 0.04f };
-    s.desc.fog = s.fog.mode;
+    s.desc.shading.fog = s.fog.mode;
     s.values.emissiveColor = (Color){ 12, 4, 0, 255 };
     Image a = GenImageGradientLinear(16, 16, 30, (Color){ 230, 190, 140, 255 }, (Color){ 110, 170, 220, 255 });
     s.albedo = LoadTextureFromImage(a);
@@ -83,20 +83,13 @@ static void defSceneUnload(DefScene *s)
     RblUnloadInstanceBuffer(&s->instances);
 }
 
-// The G-buffer request matching a lit desc's shading (what 0.3 read from the shading desc)
+// The G-buffer request lighting as a lit desc does
 static RblGBufferDesc defGBufferDesc(const RblLitShaderDesc *d, int width, int height)
 {
     RblGBufferDesc g;
     memset(&g, 0, sizeof(g));
     g.width = width; g.height = height;
-    g.brdf = d->brdf;
-    g.lightFeatures = d->lightFeatures;
-    g.fog = d->fog;
-    g.tonemap = d->tonemap;
-    g.gamma = d->gamma;
-    g.linearOutput = d->linearOutput;
-    g.shadowMaps = d->shadowMaps;
-    g.shadowFilter = d->shadowFilter;
+    g.shading = d->shading;
     return g;
 }
 
@@ -268,10 +261,10 @@ static void defFramesRelease(DefFrames *f)
 // ---- layout and lifetime ------------------------------------------------------------------------
 static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_leak_nothing(void)
 {
-    RblGBufferDesc shading;
-    memset(&shading, 0, sizeof(shading));
-    shading.width = DEF_W; shading.height = DEF_H;
-    RblGBuffer g = RblLoadGBuffer(shading);
+    RblGBufferDesc gdesc;
+    memset(&gdesc, 0, sizeof(gdesc));
+    gdesc.width = DEF_W; gdesc.height = DEF_H;
+    RblGBuffer g = RblLoadGBuffer(gdesc);
     RT_CHECK(RblIsGBufferValid(g), "G-buffer failed to load");
     int bpp = RblGBufferBytesPerPixel(&g);
     // ES: raylib maps two-channel textures to luminance-alpha, which no framebuffer accepts: the 16
@@ -291,8 +284,8 @@ static void test_deferred_gbuffer_is_10_bytes_per_pixel_and_resize_and_unload_le
     RT_CHECK(!RblIsGBufferValid(g), "unloaded G-buffer still valid");
     // Bad descs are refused
     warnings = 0;
-    shading.brdf = 9;
-    g = RblLoadGBuffer(shading);
+    gdesc.shading.brdf = 9;
+    g = RblLoadGBuffer(gdesc);
     RT_CHECK(!RblIsGBufferValid(g) && warnings == 1, "bad shading desc accepted");
 }
 
@@ -343,7 +336,7 @@ static void test_deferred_ambient_and_occlusion_from_the_geometry_pass_match_for
             s.desc.material.normalEncoding = RBL_NORMAL_HEMIOCT;
             s.desc.material.occlusion = true;
             s.desc.material.specular = (brdf != RBL_BRDF_LAMBERT);
-            s.desc.lightFeatures = RblLightFeatures(s.lights, s.count);
+            s.desc.shading.lightFeatures = RblGetLightFeatures(s.lights, s.count);
             if (brdf == RBL_BRDF_GGX) s.values.metalness = 0.7f;       // the ambient's F0 term
             Texture2D keep = s.normal;
             s.normal = packed;
@@ -422,7 +415,7 @@ static void test_deferred_eye_inside_a_light_volume_is_lit_like_forward(void)
     DefScene s = defSceneLoad(RBL_BRDF_GGX);
     s.lights[0] = litPoint((Vector3){ 0.4f, -3.0f, 2.6f }, 4.0f, 5.0f);       // the eye is 0.6 from it, range 5
     s.count = 1;
-    s.desc.lightFeatures = RBL_LIGHT_FEATURE_POINT;
+    s.desc.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT;
     DefFrames f = defFramesRender(&s);
     DefDiff d = f.d;
     printf("    eye inside the volume: worst %d/255 over %d pixels\n", d.worst, d.covered);
@@ -478,13 +471,13 @@ static void test_deferred_1024_lights_match_the_double_reference(void)
     int lit = 0;
     RefParams shading;                        // what the reference reads: the desc's features, the material's values
     memset(&shading, 0, sizeof(shading));
-    shading.brdf = sc.desc.brdf;
+    shading.brdf = sc.desc.shading.brdf;
     shading.specular = sc.values.specular; shading.shininess = sc.values.shininess; shading.specularColor = sc.values.specularColor;
     shading.roughness = sc.values.roughness; shading.metalness = sc.values.metalness;
     shading.emissiveColor = sc.values.emissiveColor; shading.emissiveIntensity = sc.values.emissiveIntensity;
     shading.fog = sc.fog;                     // the scene's (none)
-    shading.tonemap = sc.desc.tonemap;
-    shading.gamma = sc.desc.gamma;
+    shading.tonemap = sc.desc.shading.tonemap;
+    shading.gamma = sc.desc.shading.gamma;
     for (int py = 1; py < LIT_TARGET - 1; py++)
         for (int px = 1; px < LIT_TARGET - 1; px++)
         {
@@ -594,9 +587,9 @@ static Image defSweepRender(const DefSweepScene *s, DefSweepCase c, Model *spher
 {
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.brdf = c.brdf;
+    d.shading.brdf = c.brdf;
     d.maxLights = 2;
-    d.lightFeatures = RblLightFeatures(s->lights, 2);
+    d.shading.lightFeatures = RblGetLightFeatures(s->lights, 2);
     d.deferred = deferred;
     Shader shader = RblLoadLitShader(d);
     RT_CHECK(RblIsLitShaderValid(shader), "brdf %d variant failed (deferred %d)", c.brdf, deferred);
@@ -649,8 +642,8 @@ static RblGBuffer sweepGBufferSized(int brdf, int size)
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
     gd.width = size; gd.height = size;
-    gd.brdf = brdf;
-    gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+    gd.shading.brdf = brdf;
+    gd.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
     RblGBuffer g = RblLoadGBuffer(gd);
     RT_CHECK(RblIsGBufferValid(g), "G-buffer for brdf %d failed", brdf);
     return g;
@@ -946,9 +939,9 @@ static void defRefRender(const DefRefView *v, DefRefCase c, Model *sphere, Textu
 {
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.brdf = c.brdf;
+    d.shading.brdf = c.brdf;
     d.maxLights = 2;
-    d.lightFeatures = RblLightFeatures(v->lights, 2);
+    d.shading.lightFeatures = RblGetLightFeatures(v->lights, 2);
     d.deferred = true;
     Shader geo = RblLoadLitShader(d);
     RT_CHECK(RblIsLitShaderValid(geo), "brdf %d geometry variant failed", c.brdf);
@@ -1065,9 +1058,9 @@ static void defRefGBuffers(int brdf, RblGBuffer g[2])
         RblGBufferDesc gd;
         memset(&gd, 0, sizeof(gd));
         gd.width = DEF_REF_SIZE; gd.height = DEF_REF_SIZE;
-        gd.brdf = brdf;
-        gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
-        gd.linearOutput = (k == 1);
+        gd.shading.brdf = brdf;
+        gd.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+        gd.shading.linearOutput = (k == 1);
         g[k] = RblLoadGBuffer(gd);
         RT_CHECK(RblIsGBufferValid(g[k]), "G-buffer for brdf %d failed", brdf);
     }
@@ -1241,12 +1234,12 @@ static void test_deferred_normal_encoding_error_table_against_published_figures(
         RblGBufferDesc gd;
         memset(&gd, 0, sizeof(gd));
         gd.width = LIT_TARGET; gd.height = LIT_TARGET;
-        gd.brdf = brdf;
+        gd.shading.brdf = brdf;
         RblGBuffer g = RblLoadGBuffer(gd);
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
         d.deferred = true;
-        d.brdf = brdf;
+        d.shading.brdf = brdf;
         Shader flat = RblLoadLitShader(d);
         d.material.normalEncoding = RBL_NORMAL_RGB;
         Shader mapped = RblLoadLitShader(d);
@@ -1311,11 +1304,11 @@ typedef struct DefDepthScene { RblGBuffer g; Shader geo; Texture2D albedo; Mater
 static DefDepthScene defDepthSceneLoad(void)
 {
     DefDepthScene d;
-    RblGBufferDesc shading;
-    memset(&shading, 0, sizeof(shading));
-    shading.width = LIT_TARGET; shading.height = LIT_TARGET;
-    shading.linearOutput = true;
-    d.g = RblLoadGBuffer(shading);
+    RblGBufferDesc gdesc;
+    memset(&gdesc, 0, sizeof(gdesc));
+    gdesc.width = LIT_TARGET; gdesc.height = LIT_TARGET;
+    gdesc.shading.linearOutput = true;
+    d.g = RblLoadGBuffer(gdesc);
     RblFog noFog;
     memset(&noFog, 0, sizeof(noFog));
     RT_CHECK(defSetLights(NULL, 0, BLACK, noFog), "empty scene rejected");   // no exposure or fog left by earlier tests
@@ -1680,17 +1673,17 @@ static void test_deferred_geometry_variant_of_another_brdf_is_refused_at_draw_an
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
     gd.width = LIT_TARGET; gd.height = LIT_TARGET;
-    gd.brdf = RBL_BRDF_GGX;
+    gd.shading.brdf = RBL_BRDF_GGX;
     RblGBuffer g = RblLoadGBuffer(gd);
     RT_CHECK(RblIsGBufferValid(g), "G-buffer failed to load");
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.deferred = true;
-    d.brdf = RBL_BRDF_GGX;
+    d.shading.brdf = RBL_BRDF_GGX;
     Shader right = RblLoadLitShader(d);
-    d.brdf = RBL_BRDF_LAMBERT;
+    d.shading.brdf = RBL_BRDF_LAMBERT;
     Shader wrong = RblLoadLitShader(d);
-    d.brdf = RBL_BRDF_BLINN_PHONG;
+    d.shading.brdf = RBL_BRDF_BLINN_PHONG;
     Shader wrongToo = RblLoadLitShader(d);
     d.instanced = true;
     Shader wrongInstanced = RblLoadLitShader(d);
@@ -1790,7 +1783,7 @@ static void test_deferred_transparent_billboards_drawn_forward_sort_against_defe
     DefScene s = defSceneLoad(RBL_BRDF_LAMBERT);
     s.desc.material.normalEncoding = RBL_NORMAL_NONE;
     s.fog.mode = RBL_FOG_NONE;
-    s.desc.fog = RBL_FOG_NONE;
+    s.desc.shading.fog = RBL_FOG_NONE;
     RblGBuffer g = RblLoadGBuffer(defGBufferDesc(&s.desc, DEF_W, DEF_H));
     RblLitShaderDesc d = s.desc;
     d.deferred = true;

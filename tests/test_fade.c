@@ -4,7 +4,7 @@
 // 0.5 the double-precision mean of the two texels in linear light; a second frame stored rotated
 // mixes like its upright twin, its normal in its own tangent axes; alpha mixes linearly, colour by
 // coverage, the cutoff reads the mixed alpha. Batch, immediate and instanced paths; the G-buffer's
-// geometry pass. Included by test_gpu_main.c (after test_render.c: normalTexel).
+// geometry pass. Included by test_gpu_main.c (normalTexel: gpu_common.h).
 
 #define FADE_RT 64
 
@@ -315,7 +315,7 @@ static void test_fade_normal_mapped_pair_mixes_each_frame_in_its_own_tangent_axe
     UnloadImage(normalSheet);
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.material.normalEncoding = RBL_NORMAL_RGB;
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.material.normalEncoding = RBL_NORMAL_RGB;
     FadeRig r = fadeRigLoad(GenImageColor(16, 8, WHITE), GenImageColor(16, 8, WHITE), desc);
     Material *mats[4] = { &r.mPlain, &r.mFade, &r.mPlainInst, &r.mFadeInst };
     for (int k = 0; k < 4; k++) if (mats[k]->maps != NULL) mats[k]->maps[MATERIAL_MAP_NORMAL].texture = normalTex;

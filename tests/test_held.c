@@ -128,7 +128,7 @@ static void test_held_orthographic_facing_is_parallel_across_the_whole_view(void
 
     // Toward a top-down view the view's back nears the axis: the documented blend (unchanged from
     // perspective cameras) is continuous but for the one turnover where the eye's direction and the
-    // fallback cancel (the view's up off the axis opposes the back's side: DEGENERATE FRAMES), inside
+    // fallback cancel (the view's up off the axis opposes the back's side: README "Degenerate frames"), inside
     // the blend band; CPU and GPU agree all along
     double worstStep = 0.0, turnAt = -1.0, worstGpuSweep = 0.0;
     int turns = 0;
@@ -329,7 +329,7 @@ static void test_held_raylib_drawmodel_carries_colour_and_is_caught_with_values(
     RT_CHECK(renderSetLights(&light, 1, (Color){ 30, 30, 30, 255 }), "scene rejected");
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.brdf = RBL_BRDF_GGX; d.maxLights = 1;
+    d.shading.brdf = RBL_BRDF_GGX; d.maxLights = 1;
     Shader litColour = RblLoadLitShader(d), litRough = RblLoadLitShader(d);
     Model colour[2], rough[2];
     for (int i = 0; i < 2; i++)

@@ -351,8 +351,8 @@ static void test_instanced_draw_matches_batched_pixels_and_skips_bad_instances(v
     desc.material.normalEncoding = RBL_NORMAL_RGB;
     // View-dependent shading (GGX highlight, fog by eye distance): the instanced stage must hand the
     // fragment stage the same eye as matView gives the batched one
-    desc.brdf = RBL_BRDF_GGX;
-    desc.fog = RBL_FOG_EXP;
+    desc.shading.brdf = RBL_BRDF_GGX;
+    desc.shading.fog = RBL_FOG_EXP;
     Shader plain = RblLoadLitShader(desc);
     desc.instanced = true;
     Shader inst = RblLoadLitShader(desc);
@@ -362,7 +362,7 @@ static void test_instanced_draw_matches_batched_pixels_and_skips_bad_instances(v
     m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
     m.maps[MATERIAL_MAP_NORMAL].texture = nmap;
     rtSetMaterialValues(&m, (RtMaterialValues){ .roughness = 0.3f });
-    RblLight l = pointLight((Vector3){ 1.5f, 1.0f, 2.0f }, 5.0f);
+    RblLight l = rtPointLight((Vector3){ 1.5f, 1.0f, 2.0f }, 5.0f);
     RblScene scene;
     memset(&scene, 0, sizeof(scene));
     scene.lights = &l; scene.lightCount = 1;
@@ -498,7 +498,7 @@ static void test_instanced_location_cache_survives_program_id_reuse(void)
     in.origin = (Vector2){ 1.0f, 1.0f };
     RblInstancedDesc d;
     memset(&d, 0, sizeof(d));
-    RblLight l = pointLight((Vector3){ 0.5f, 0.5f, 3.0f }, 6.0f);
+    RblLight l = rtPointLight((Vector3){ 0.5f, 0.5f, 3.0f }, 6.0f);
     RblScene scene;
     memset(&scene, 0, sizeof(scene));
     scene.lights = &l; scene.lightCount = 1;
@@ -520,8 +520,8 @@ static void test_instanced_location_cache_survives_program_id_reuse(void)
     RT_CHECK(instancedRegistryEntries(idA, NULL) == 0, "unloaded program %u still has %d registry entries", idA, instancedRegistryEntries(idA, NULL));
     // A different variant (more uniforms ahead of rblInstancing), possibly given idA again by GL
     desc.maxLights = 8;
-    desc.brdf = RBL_BRDF_GGX;
-    desc.fog = RBL_FOG_EXP;
+    desc.shading.brdf = RBL_BRDF_GGX;
+    desc.shading.fog = RBL_FOG_EXP;
     Shader b = RblLoadLitShader(desc);
     RT_CHECK(RblIsLitShaderValid(b), "second instanced variant failed");
     int fresh = rlGetLocationUniform(b.id, "rblInstancing");

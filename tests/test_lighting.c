@@ -5,7 +5,7 @@
 // one program; a billboard and a raylib Mesh with the same transform render the same pixels.
 // Programs hold compiled features only: per-material values travel with the Material drawn
 // (rtSetMaterialValues), lights, ambient, fog and exposure with the scene (RblSetScene).
-// Included by test_gpu_main.c (after test_render.c).
+// The shader tests: every variant compiles, a failed compile is reported. Included by gpu_tests.h.
 
 #include "lighting_reference.h"
 
@@ -72,7 +72,7 @@ static LitScene litScene(int brdf)
 {
     LitScene s;
     memset(&s, 0, sizeof(s));
-    s.desc.brdf = brdf;
+    s.desc.shading.brdf = brdf;
     s.env.ambient = (Color){ 25, 25, 30, 255 };
     s.env.up = d3(0, 1, 0);
     s.albedo = (Color){ 200, 160, 120, 255 };
@@ -133,11 +133,11 @@ static RblLitShaderDesc litProgramDesc(const LitScene *sc, int floatFormat)
 {
     RblLitShaderDesc desc = sc->desc;
     desc.maxLights = (sc->maxLights < 0)? 0 : litSlots(sc);
-    desc.lightFeatures = RblLightFeatures(sc->lights, sc->count);
-    desc.fog = sc->fog.mode;
+    desc.shading.lightFeatures = RblGetLightFeatures(sc->lights, sc->count);
+    desc.shading.fog = sc->fog.mode;
     if (sc->normalMap) desc.material.normalEncoding = RBL_NORMAL_RGB;
     desc.material.thickness = sc->thickness;
-    if (floatFormat != 0) desc.linearOutput = true;
+    if (floatFormat != 0) desc.shading.linearOutput = true;
     if (sc->path == LIT_PATH_INSTANCED) desc.instanced = true;
     return desc;
 }
@@ -200,7 +200,7 @@ static RefParams litShading(const LitScene *sc)
 {
     RefParams d;
     memset(&d, 0, sizeof(d));
-    d.brdf = sc->desc.brdf;
+    d.brdf = sc->desc.shading.brdf;
     d.specular = sc->values.specular;
     d.shininess = sc->values.shininess;
     d.specularColor = sc->values.specularColor;
@@ -210,9 +210,9 @@ static RefParams litShading(const LitScene *sc)
     d.emissiveIntensity = sc->values.emissiveIntensity;
     d.hemisphereAmbient = sc->hemisphere;
     d.fog = sc->fog;
-    d.tonemap = sc->desc.tonemap;
+    d.tonemap = sc->desc.shading.tonemap;
     d.exposure = sc->exposure;
-    d.gamma = sc->desc.gamma;
+    d.gamma = sc->desc.shading.gamma;
     d.linearOutput = false;
     double thickness = (sc->thickness == RBL_CHANNEL_B)? sc->normal.b/255.0 : ((sc->thickness == RBL_CHANNEL_A)? sc->normal.a/255.0 : 0.0);
     d.transmission = sc->desc.transmission? refClamp(sc->values.transmission, 0.0, 1.0)*(1.0 - thickness) : 0.0;
@@ -434,10 +434,10 @@ static void test_lighting_every_variant_compiles_and_each_handle_owns_its_progra
             RblLitShaderDesc d;
             memset(&d, 0, sizeof(d));
             d.maxLights = 1 + (features*brdf)%RBL_MAX_LIGHTS;
-            d.lightFeatures = features;
-            d.brdf = brdf;
-            d.fog = (features + brdf)%4;
-            d.tonemap = features%3;
+            d.shading.lightFeatures = features;
+            d.shading.brdf = brdf;
+            d.shading.fog = (features + brdf)%4;
+            d.shading.tonemap = features%3;
             d.instanced = ((features & 2) != 0) && rtGlsl3();
             if (((features & 2) != 0) && !rtGlsl3())
             {
@@ -453,7 +453,7 @@ static void test_lighting_every_variant_compiles_and_each_handle_owns_its_progra
             d.material.specular = (features%4 != RBL_NORMAL_RGB) && (brdf != RBL_BRDF_LAMBERT);
             d.material.occlusion = (features & 4) != 0;
             d.material.emissive = brdf;
-            d.gamma = (features == 5)? 2.2f : 0.0f;
+            d.shading.gamma = (features == 5)? 2.2f : 0.0f;
             Shader a = RblLoadLitShader(d);
             RT_CHECK(RblIsLitShaderValid(a), "features %d brdf %d failed to compile", features, brdf);
             Shader b = RblLoadLitShader(d);
@@ -461,7 +461,7 @@ static void test_lighting_every_variant_compiles_and_each_handle_owns_its_progra
             // Only what is asked for is compiled: absent features leave no uniform behind
             RT_CHECK(litHasUniform(a, "rblLightSpot") == ((features & RBL_LIGHT_FEATURE_SPOT) != 0), "spot uniforms iff spot lights");
             RT_CHECK(litHasUniform(a, "rblLightAttenuation") == ((features & RBL_LIGHT_FEATURE_CLASSIC_FALLOFF) != 0), "attenuation iff classic falloff");
-            RT_CHECK(litHasUniform(a, "rblFog") == (d.fog != RBL_FOG_NONE), "fog uniforms iff fog");
+            RT_CHECK(litHasUniform(a, "rblFog") == (d.shading.fog != RBL_FOG_NONE), "fog uniforms iff fog");
             // Scene values reach every program: the hemisphere (the scene's ground colour) and the exposure
             // are compiled into every variant
             RT_CHECK(litHasUniform(a, "rblAmbientGround"), "ground colour in every variant (the scene picks flat or hemispheric ambient)");
@@ -507,10 +507,10 @@ static void test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line(void
     // Descs: only compiled features are left in them, and each is still checked
     RblLitShaderDesc bad[16];
     memset(bad, 0, sizeof(bad));
-    bad[0].brdf = 7; bad[1].maxLights = -1; bad[2].maxLights = RBL_MAX_LIGHTS + 1; bad[3].fog = RBL_FOG_EXP2 + 1;
-    bad[4].tonemap = -1; bad[5].fog = -1; bad[6].lightFeatures = 16; bad[7].tonemap = RBL_TONEMAP_ACES + 1;
-    bad[8].shadowMaps = RBL_MAX_SHADOWS + 1; bad[9].gamma = NAN; bad[10].shadowMaps = -1; bad[11].shadowFilter = RBL_SHADOW_MAX_FILTER + 1;
-    bad[12].gamma = -1.0f; bad[13].material.normalEncoding = RBL_NORMAL_RGB + 1; bad[14].material.emissive = RBL_EMISSIVE_RGB + 1;
+    bad[0].shading.brdf = 7; bad[1].maxLights = -1; bad[2].maxLights = RBL_MAX_LIGHTS + 1; bad[3].shading.fog = RBL_FOG_EXP2 + 1;
+    bad[4].shading.tonemap = -1; bad[5].shading.fog = -1; bad[6].shading.lightFeatures = 16; bad[7].shading.tonemap = RBL_TONEMAP_ACES + 1;
+    bad[8].shading.shadowMaps = RBL_MAX_SHADOWS + 1; bad[9].shading.gamma = NAN; bad[10].shading.shadowMaps = -1; bad[11].shading.shadowFilter = RBL_SHADOW_MAX_FILTER + 1;
+    bad[12].shading.gamma = -1.0f; bad[13].material.normalEncoding = RBL_NORMAL_RGB + 1; bad[14].material.emissive = RBL_EMISSIVE_RGB + 1;
     bad[15].material.normalEncoding = RBL_NORMAL_RGB; bad[15].material.specular = true;
     for (int i = 0; i < 16; i++)
     {
@@ -545,7 +545,7 @@ static void test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line(void
     // Directed lights need a direction and sane cones (checked as lights, whatever the programs compiled)
     RblLitShaderDesc all;
     memset(&all, 0, sizeof(all));
-    all.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL | RBL_LIGHT_FEATURE_SPOT | RBL_LIGHT_FEATURE_CLASSIC_FALLOFF;
+    all.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL | RBL_LIGHT_FEATURE_SPOT | RBL_LIGHT_FEATURE_CLASSIC_FALLOFF;
     Shader full = RblLoadLitShader(all);
     RT_CHECK(RblIsLitShaderValid(full), "every-light-feature variant failed to load");
     RblLight s[6];
@@ -698,9 +698,9 @@ static void test_lighting_optional_stages_match_the_reference(void)
             case 0: sc.fog = (RblFog){ RBL_FOG_LINEAR, (Color){ 120, 130, 150, 255 }, 2.0f, 14.0f, 0.0f }; break;
             case 1: sc.fog = (RblFog){ RBL_FOG_EXP, (Color){ 120, 130, 150, 255 }, 0.0f, 0.0f, 0.15f }; break;
             case 2: sc.fog = (RblFog){ RBL_FOG_EXP2, (Color){ 120, 130, 150, 255 }, 0.0f, 0.0f, 0.12f }; break;
-            case 3: sc.desc.tonemap = RBL_TONEMAP_REINHARD; sc.exposure = 2.0f; break;
-            case 4: sc.desc.tonemap = RBL_TONEMAP_ACES; sc.lights[0].intensity = 20.0f; break;
-            case 5: sc.desc.gamma = 2.2f; break;
+            case 3: sc.desc.shading.tonemap = RBL_TONEMAP_REINHARD; sc.exposure = 2.0f; break;
+            case 4: sc.desc.shading.tonemap = RBL_TONEMAP_ACES; sc.lights[0].intensity = 20.0f; break;
+            case 5: sc.desc.shading.gamma = 2.2f; break;
             case 6: sc.hemisphere = true; sc.env.ambient = (Color){ 90, 120, 200, 255 }; sc.env.ground = (Color){ 80, 50, 20, 255 };
                     sc.env.up = d3(0.3, 0.2, 1.0); sc.normalMap = true; sc.normal = normalTexel(0.5f, 0.3f, 0.812f); break;
             case 7: sc.lights[0].falloff = RBL_FALLOFF_CLASSIC; sc.lights[0].constant = 1.0f; sc.lights[0].linear = 0.35f; sc.lights[0].quadratic = 0.44f;
@@ -708,7 +708,7 @@ static void test_lighting_optional_stages_match_the_reference(void)
             case 8: sc.lights[0].falloff = RBL_FALLOFF_CLASSIC; sc.lights[0].quadratic = 1.0f; sc.lights[0].range = 3.0f; break;
             case 9: sc.values.emissiveColor = (Color){ 60, 20, 0, 255 }; sc.values.emissiveIntensity = 1.5f; break;
             case 10: sc.lights[0] = litSpot((Vector3){ 0.0f, 0.0f, 3.0f }, (Vector3){ 0.1f, 0.3f, -1.0f }, 20.0f, 20.0f, 9.0f); break;
-            default: sc.desc.brdf = RBL_BRDF_BLINN_PHONG; sc.values.specularColor = (Color){ 255, 200, 120, 255 }; sc.values.specular = 0.8f; sc.values.shininess = 40.0f;
+            default: sc.desc.shading.brdf = RBL_BRDF_BLINN_PHONG; sc.values.specularColor = (Color){ 255, 200, 120, 255 }; sc.values.specular = 0.8f; sc.values.shininess = 40.0f;
                      sc.camera = headOnCamera(); break;
         }
         char name[64];
@@ -732,7 +732,7 @@ static void hardCase(LitScene sc, const char *name)
 {
     for (int brdf = RBL_BRDF_LAMBERT; brdf <= RBL_BRDF_GGX; brdf++)
     {
-        sc.desc.brdf = brdf;
+        sc.desc.shading.brdf = brdf;
         char tag[96];
         snprintf(tag, sizeof(tag), "%s-brdf%d", name, brdf);
         LitError e = litCheckAgainstReference(&sc, tag, 2.0, 0.25);
@@ -826,12 +826,12 @@ static void test_lighting_hard_half_float_overflow_before_tonemap(void)
 {
     LitScene sc = hardScene(RBL_BRDF_GGX);
     sc.lights[0] = litPoint((Vector3){ 0.3f, 0.2f, 0.05f }, 1e8f, 0.0f);       // radiance far above 65504
-    sc.desc.tonemap = RBL_TONEMAP_ACES;
+    sc.desc.shading.tonemap = RBL_TONEMAP_ACES;
     hardCase(sc, "1e8 light ACES");
-    sc.desc.tonemap = RBL_TONEMAP_REINHARD;
+    sc.desc.shading.tonemap = RBL_TONEMAP_REINHARD;
     hardCase(sc, "1e8 light Reinhard");
     // Linear output into a half-float target: clamped to the largest half, never Inf
-    sc.desc.tonemap = RBL_TONEMAP_NONE;
+    sc.desc.shading.tonemap = RBL_TONEMAP_NONE;
     LitRender r = litRender(&sc, PIXELFORMAT_UNCOMPRESSED_R16G16B16A16);
     int bad = 0;
     float peak = 0.0f;
@@ -897,10 +897,10 @@ static void test_lighting_billboard_and_model_quad_render_identical_pixels(void)
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
         d.maxLights = 3;
-        d.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_SPOT | RBL_LIGHT_FEATURE_DIRECTIONAL;
-        d.brdf = brdfs[k];
+        d.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_SPOT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+        d.shading.brdf = brdfs[k];
         d.material.normalEncoding = RBL_NORMAL_RGB;
-        d.fog = RBL_FOG_EXP;
+        d.shading.fog = RBL_FOG_EXP;
         Shader lit = RblLoadLitShader(d);
         RblLight lights[3] = {
             litPoint((Vector3){ 1.0f, 0.8f, 2.0f }, 3.0f, 8.0f),
@@ -962,8 +962,249 @@ static void test_lighting_billboard_and_model_quad_render_identical_pixels(void)
     UnloadMesh(mesh);
 }
 
+// ---- programs compile; the lit billboard against an analytic Lambert, normal-map sides ----------
+// ---- shaders ------------------------------------------------------------------------------------
+static void test_shaders_every_lit_variant_compiles_and_links(void)
+{
+    const int lights[] = { 0, 1, 2, RBL_MAX_LIGHTS };
+    for (int li = 0; li < 4; li++)
+    for (int nm = 0; nm < 2; nm++)
+    for (int inst = 0; inst < 2; inst++)
+    {
+        RblLitShaderDesc desc;
+        memset(&desc, 0, sizeof(desc));
+        desc.maxLights = lights[li];
+        desc.material.normalEncoding = nm? RBL_NORMAL_RGB : RBL_NORMAL_NONE;
+        desc.instanced = inst;
+        if (inst && !rtGlsl3())
+        {
+            // ES 2 / GL 2.1 have no instancing: refused with one line, nothing compiled
+            warnings = 0;
+            Shader refused = RblLoadLitShader(desc);
+            RT_CHECK((refused.id == 0) && (warnings == 1), "instanced variant on a GLSL 1 context: id %u, %d log lines", refused.id, warnings);
+            continue;
+        }
+        Shader s = RblLoadLitShader(desc);
+        RT_CHECK(RblIsLitShaderValid(s), "variant lights=%d normalMap=%d instanced=%d failed", lights[li], nm, inst);
+        RT_CHECK(s.id != 0 && s.locs != NULL, "variant lights=%d normalMap=%d instanced=%d came back empty", lights[li], nm, inst);
+        if (s.id == 0 || s.locs == NULL) continue;
+        RT_CHECK(s.id != rlGetShaderIdDefault(), "variant fell back to raylib's default shader");
+        RT_CHECK(rlGetLocationUniform(s.id, "rblLightPosition") != -1 && rlGetLocationUniform(s.id, "rblAmbient") != -1 &&
+                 rlGetLocationUniform(s.id, "rblAlphaCutoff") != -1, "uniform locations missing");
+        // The tangent is only an active attribute where a normal map uses it; then at raylib's location 4
+        if (nm && !inst) RT_CHECK(s.locs[SHADER_LOC_VERTEX_TANGENT] == 4, "vertexTangent not at raylib's location 4 (%d)", s.locs[SHADER_LOC_VERTEX_TANGENT]);
+        RT_CHECK((s.locs[SHADER_LOC_MAP_NORMAL] != -1) == (nm != 0), "normal map slot should exist only in the normal-map variant");
+        RblUnloadLitShader(&s);
+        RT_CHECK(s.id == 0 && s.locs == NULL, "RblUnloadLitShader did not zero the holder");
+    }
+}
+
+static void test_shaders_compile_failure_is_reported_not_replaced_by_the_default(void)
+{
+    warnings = 0;
+    const char *const broken[] = { "void main() { this is not glsl; }\n", NULL };
+    const char *const *const parts[2] = { broken, NULL };
+    Shader bad = rbl__loadShaderVariant(rbl__pass_lit_vs, parts, "");
+    RT_CHECK(bad.id == 0, "a broken shader must come back invalid, not as raylib's default (id %u)", bad.id);
+    // The internal step records why; its public caller logs that once under its own name
+    RT_CHECK(warnings == 0 && strstr(rbl__state.problem, "failed to compile") != NULL, "internal step logged %d lines or recorded '%s'", warnings, rbl__state.problem);
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = RBL_MAX_LIGHTS + 1;
+    RT_CHECK(!RblIsLitShaderValid(RblLoadLitShader(desc)), "too many light slots must be refused");
+    desc.maxLights = -1;
+    RT_CHECK(!RblIsLitShaderValid(RblLoadLitShader(desc)), "negative light slots must be refused");
+}
+
+// ---- the lit billboard ---------------------------------------------------------------------------
+static void test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u(void)
+{
+    Camera3D cam = frontCamera();
+    const float tilt[2] = { 0.6f, -0.6f };      // the map tilts toward +U, then the mirrored map
+    for (int k = 0; k < 2; k++)
+    {
+        Scene s = sceneLoad(WHITE, normalTexel(tilt[k], 0.0f, 0.8f), true);
+        int lum[2];
+        for (int side = 0; side < 2; side++)
+        {
+            RblLight l = rtPointLight((Vector3){ side? -3.0f : 3.0f, 0.0f, 1.0f }, 6.0f);
+            RT_CHECK(renderSetLights(&l, 1, BLACK), "scene rejected");
+            Image img = renderOne(&s, cam, centredQuad());
+            lum[side] = luminance(rtPixel(img, TARGET/2, TARGET/2));
+            if (rtFailuresInCurrentTest() > 0) rtSaveImage(img, side? "minusU" : "plusU");
+            UnloadImage(img);
+        }
+        if (k == 0) RT_CHECK(lum[0] > lum[1] + 30, "tilt +U: lit from +U %d should beat lit from -U %d", lum[0], lum[1]);
+        else RT_CHECK(lum[1] > lum[0] + 30, "tilt -U: lit from -U %d should beat lit from +U %d", lum[1], lum[0]);
+        sceneUnload(s);
+    }
+    // The map's +Y is image-up: a map tilting up is brighter lit from above
+    Scene s = sceneLoad(WHITE, normalTexel(0.0f, 0.6f, 0.8f), true);
+    int lum[2];
+    for (int side = 0; side < 2; side++)
+    {
+        RblLight l = rtPointLight((Vector3){ 0.0f, side? -3.0f : 3.0f, 1.0f }, 6.0f);
+        RT_CHECK(renderSetLights(&l, 1, BLACK), "scene rejected");
+        Image img = renderOne(&s, cam, centredQuad());
+        lum[side] = luminance(rtPixel(img, TARGET/2, TARGET/2));
+        UnloadImage(img);
+    }
+    RT_CHECK(lum[0] > lum[1] + 30, "tilt image-up: lit from above %d should beat from below %d", lum[0], lum[1]);
+    sceneUnload(s);
+}
+
+// Double-precision Lambert at the world point seen through pixel (px, py) of the front camera
+static double refLambertChannel(int px, int py, Vector3 lightPos, double lightColor, double intensity, double range,
+                                double ambient, double albedo, const double nTangent[3])
+{
+    // Unproject the pixel centre onto the billboard plane z = 0 (camera at z = 5, fovy 45, square target)
+    double t = tan(45.0*PI/360.0);
+    double ndcX = ((px + 0.5)/TARGET)*2.0 - 1.0, ndcY = 1.0 - ((py + 0.5)/TARGET)*2.0;
+    D3 p = d3(ndcX*t*5.0, ndcY*t*5.0, 0.0);
+    // Tangent frame of an unflipped camera-facing quad: T = +X, +V = -Y (so image-up = +Y), N = +Z
+    D3 n = dNorm(d3(nTangent[0], nTangent[1], nTangent[2]));
+    D3 l = dSub(d3f(lightPos), p);
+    double d2 = dDot(l, l);
+    double ndotl = fmax(dDot(n, dNorm(l)), 0.0);
+    double window = 1.0;
+    if (range > 0.0) { double x2 = d2/(range*range); window = fmin(fmax(1.0 - x2*x2, 0.0), 1.0); window *= window; }
+    // Colours are sRGB-authored: decoded to linear light, lit, encoded back for the RGBA8 target
+    double e = srgbDecode(lightColor)*intensity*ndotl*window/fmax(d2, 1e-4);
+    return srgbEncode(srgbDecode(albedo)*(srgbDecode(ambient) + e))*255.0;
+}
+
+static void test_lit_flat_normal_map_matches_analytic_lambert_within_2_of_255(void)
+{
+    Camera3D cam = frontCamera();
+    const Color albedo = { 230, 180, 120, 255 };
+    Color flat = normalTexel(0.0f, 0.0f, 1.0f);      // (128,128,255): decodes to a 0.3 degree tilt
+    double decoded[3] = { flat.r/255.0*2.0 - 1.0, flat.g/255.0*2.0 - 1.0, flat.b/255.0*2.0 - 1.0 };
+    double vertexOnly[3] = { 0.0, 0.0, 1.0 };
+    for (int nm = 0; nm < 2; nm++)
+    {
+        Scene s = sceneLoad(albedo, flat, nm);
+        RblLight l = rtPointLight((Vector3){ 0.7f, 0.4f, 1.5f }, 1.6f);
+        l.color = (Color){ 255, 220, 160, 255 };
+        l.range = 6.0f;
+        Color ambient = { 30, 30, 30, 255 };
+        RT_CHECK(renderSetLights(&l, 1, ambient), "lights rejected");
+        Image img = renderOne(&s, cam, centredQuad());
+        double worst = 0.0;
+        const int probes[5][2] = { { 32, 32 }, { 31, 31 }, { 20, 40 }, { 44, 24 }, { 28, 36 } };
+        for (int i = 0; i < 5; i++)
+        {
+            int px = probes[i][0], py = probes[i][1];
+            Color c = rtPixel(img, px, py);
+            const unsigned char got[3] = { c.r, c.g, c.b };
+            const double lc[3] = { l.color.r/255.0, l.color.g/255.0, l.color.b/255.0 };
+            const double al[3] = { albedo.r/255.0, albedo.g/255.0, albedo.b/255.0 };
+            for (int ch = 0; ch < 3; ch++)
+            {
+                double ref = refLambertChannel(px, py, l.position, lc[ch], l.intensity, l.range, ambient.r/255.0, al[ch], nm? decoded : vertexOnly);
+                double err = fabs(got[ch] - fmin(ref, 255.0));
+                if (err > worst) worst = err;
+                RT_CHECK(ref > 20.0 && ref < 235.0, "reference %f outside the informative range", ref);
+            }
+        }
+        RT_CHECK(worst <= 2.0, "normalMap=%d: worst error %.2f/255 against the analytic Lambert", nm, worst);
+        if (rtFailuresInCurrentTest() > 0) rtSaveImage(img, nm? "flatmap" : "vertexnormal");
+        UnloadImage(img);
+        sceneUnload(s);
+    }
+}
+
+// Under every flip and rotated frame a map tilted toward +U lights the world side the tangent names
+static void test_lit_flips_and_rotated_frames_light_the_plus_u_side(void)
+{
+    Camera3D cam = frontCamera();
+    Scene s = sceneLoad(WHITE, normalTexel(0.6f, 0.0f, 0.8f), true);
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    for (int mask = 0; mask < 16; mask++)
+    {
+        RblBillboard b = centredQuad();
+        if (mask & 1) b.size.x = -2.0f;
+        if (mask & 2) b.size.y = -2.0f;
+        if (mask & 4) b.source = (Rectangle){ 0, 0, -4, 4 };
+        if (mask & 8) b.flags = RBL_FRAME_ROTATED;
+        RblVertex q[4];
+        RblBillboardVertices(&view, 4, 4, &b, q);
+        Vector3 T = { q[0].tangent[0], q[0].tangent[1], q[0].tangent[2] };
+        int lum[2];
+        for (int side = 0; side < 2; side++)
+        {
+            float k = side? -3.0f : 3.0f;
+            RblLight l = rtPointLight((Vector3){ T.x*k, T.y*k, 1.0f }, 6.0f);
+            RT_CHECK(renderSetLights(&l, 1, BLACK), "scene rejected");
+            Image img = renderOne(&s, cam, b);
+            lum[side] = luminance(rtPixel(img, TARGET/2, TARGET/2));
+            UnloadImage(img);
+        }
+        RT_CHECK(lum[0] > lum[1] + 30, "mask %d (T = %.0f,%.0f,%.0f): +U side %d should beat -U side %d", mask, T.x, T.y, T.z, lum[0], lum[1]);
+    }
+    sceneUnload(s);
+}
+
+static void test_lit_bad_lights_are_rejected_and_change_nothing(void)
+{
+    Scene s = sceneLoad(WHITE, normalTexel(0, 0, 1), false);        // 2 light slots
+    RblLight good = rtPointLight((Vector3){ 0, 0, 2 }, 2.0f);
+    RT_CHECK(renderSetLights(&good, 1, BLACK), "good light rejected");
+    Image before = renderOne(&s, frontCamera(), centredQuad());
+    RblLight bad[5] = { good, good, good, good, good };
+    bad[0].position.x = NAN; bad[1].intensity = -1.0f; bad[2].range = INFINITY; bad[3].intensity = NAN; bad[4].range = -2.0f;
+    for (int i = 0; i < 5; i++)
+    {
+        warnings = 0;
+        RT_CHECK(!renderSetLights(&bad[i], 1, WHITE), "bad light %d accepted", i);
+        RT_CHECK(warnings == 1, "bad light %d: %d warnings", i, warnings);
+    }
+    // A bad light past the program's slots still rejects the scene (the G-buffer lights every one)
+    RblLight tail[3] = { good, good, bad[0] };
+    warnings = 0;
+    RT_CHECK(!renderSetLights(tail, 3, WHITE), "bad light after the slots accepted");
+    RT_CHECK(warnings == 1, "bad light after the slots: %d warnings", warnings);
+    warnings = 0;
+    RT_CHECK(!renderSetLights(&good, -1, WHITE), "negative light count accepted");
+    RT_CHECK(!renderSetLights(NULL, 1, WHITE), "NULL lights accepted");
+    RT_CHECK(warnings == 2, "%d warnings", warnings);
+    Image after = renderOne(&s, frontCamera(), centredQuad());
+    Color a = rtPixel(before, 32, 32), b = rtPixel(after, 32, 32);
+    RT_CHECK(a.r == b.r && a.g == b.g && a.b == b.b, "rejected lights changed the image (%d vs %d)", a.r, b.r);
+    // More lights than slots is no error: the program lights the first maxLights (here the good light
+    // and a dark one, so the image is unchanged), the rest are ignored with one (info) log line naming it
+    RblLight three[3] = { good, good, rtPointLight((Vector3){ 0.5f, 0.5f, 0.5f }, 50.0f) };
+    three[1].intensity = 0.0f;
+    char programName[32];
+    snprintf(programName, sizeof(programName), "program %u ", s.lit.id);
+    warnings = 0;
+    lastWarning[0] = '\0';
+    SetTraceLogLevel(LOG_INFO);
+    RT_CHECK(renderSetLights(three, 3, BLACK), "more lights than slots rejected");
+    SetTraceLogLevel(LOG_WARNING);
+    RT_CHECK(warnings == 1 && strstr(lastWarning, programName) != NULL, "lights beyond the slots: %d log lines, want 1 naming %s(%s)", warnings, programName, lastWarning);
+    Image capped = renderOne(&s, frontCamera(), centredQuad());
+    Color c = rtPixel(capped, 32, 32);
+    RT_CHECK(a.r == c.r && a.g == c.g && a.b == c.b, "a light beyond the slots changed the image (%d vs %d)", a.r, c.r);
+    // Zero lights: ambient only; a light a hair in front of the surface hits the distance clamp and saturates
+    RT_CHECK(renderSetLights(NULL, 0, (Color){ 64, 64, 64, 255 }), "zero lights rejected");
+    Image amb = renderOne(&s, frontCamera(), centredQuad());
+    RT_CHECK(abs(rtPixel(amb, 32, 32).r - 64) <= 1, "ambient only: %d", rtPixel(amb, 32, 32).r);
+    RblLight onSurface = rtPointLight((Vector3){ 0.0f, 0.0f, 1e-3f }, 1.0f);
+    RT_CHECK(renderSetLights(&onSurface, 1, BLACK), "light on the surface rejected");
+    Image hot = renderOne(&s, frontCamera(), centredQuad());
+    RT_CHECK(rtPixel(hot, 32, 32).r == 255, "light on the surface should saturate, got %d", rtPixel(hot, 32, 32).r);
+    UnloadImage(before); UnloadImage(after); UnloadImage(capped); UnloadImage(amb); UnloadImage(hot);
+    sceneUnload(s);
+}
+
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_LIGHTING_TESTS \
+    RT_TEST(test_shaders_every_lit_variant_compiles_and_links), \
+    RT_TEST(test_shaders_compile_failure_is_reported_not_replaced_by_the_default), \
+    RT_TEST(test_lit_normal_map_tilted_toward_plus_u_is_brighter_lit_from_plus_u), \
+    RT_TEST(test_lit_flat_normal_map_matches_analytic_lambert_within_2_of_255), \
+    RT_TEST(test_lit_flips_and_rotated_frames_light_the_plus_u_side), \
+    RT_TEST(test_lit_bad_lights_are_rejected_and_change_nothing), \
     RT_TEST(test_lighting_every_variant_compiles_and_each_handle_owns_its_program), \
     RT_TEST(test_lighting_bad_descs_and_lights_are_rejected_with_a_log_line), \
     RT_TEST(test_lighting_matrix_matches_the_double_reference_within_2_of_255), \

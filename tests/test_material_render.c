@@ -8,7 +8,7 @@ static Shader litVariant(RblMaterialLayout layout, int lights, bool linearOutput
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = lights;
     desc.material = layout;
-    desc.linearOutput = linearOutput;
+    desc.shading.linearOutput = linearOutput;
     desc.debugOutput = debugOutput;
     return RblLoadLitShader(desc);
 }
@@ -157,7 +157,7 @@ static void test_materials_occlusion_dims_ambient_only(void)
         s.material.maps[MATERIAL_MAP_NORMAL].texture = k? half : none;
         RT_CHECK(renderSetLights(NULL, 0, (Color){ 188, 188, 188, 255 }), "lights rejected");      // sRGB 188 = linear 0.5
         Image a = renderWith(&lit, s.material, centredQuad());
-        RblLight l = pointLight((Vector3){ 0, 0, 2 }, 2.0f);
+        RblLight l = rtPointLight((Vector3){ 0, 0, 2 }, 2.0f);
         RT_CHECK(renderSetLights(&l, 1, BLACK), "lights rejected");
         Image d = renderWith(&lit, s.material, centredQuad());
         px[k][0] = rtPixel(a, 32, 32).r; px[k][1] = rtPixel(d, 32, 32).r;
@@ -208,7 +208,7 @@ static void test_materials_packed_atlas_renders_like_its_separate_maps(void)
     Material m = LoadMaterialDefault();
     RT_CHECK(RblLoadPackedTextures(&packed, &m), "upload failed");
     Shader lit = litVariant(packed.layout, 1, false, 0);
-    RblLight l = pointLight((Vector3){ 2, 1, 2 }, 6.0f);
+    RblLight l = rtPointLight((Vector3){ 2, 1, 2 }, 6.0f);
     RT_CHECK(renderSetLights(&l, 1, (Color){ 60, 60, 60, 255 }), "lights rejected");
     Image img = renderWith(&lit, m, centredQuad());
 

@@ -168,7 +168,7 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
     lights[0].color = lights[1].color = WHITE;
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 2; desc.lightFeatures = RblLightFeatures(lights, 2); desc.shadowMaps = 2;
+    desc.maxLights = 2; desc.shading.lightFeatures = RblGetLightFeatures(lights, 2); desc.shading.shadowMaps = 2;
     Shader lit = RblLoadLitShader(desc);
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
@@ -258,7 +258,7 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
     {
         RblGBufferDesc gd;
         memset(&gd, 0, sizeof(gd));
-        gd.width = OM_VIEW; gd.height = OM_VIEW; gd.lightFeatures = desc.lightFeatures; gd.shadowMaps = 2;
+        gd.width = OM_VIEW; gd.height = OM_VIEW; gd.shading.lightFeatures = desc.shading.lightFeatures; gd.shading.shadowMaps = 2;
         RblGBuffer g = RblLoadGBuffer(gd);
         RblLitShaderDesc ld;
         memset(&ld, 0, sizeof(ld));
@@ -354,7 +354,7 @@ static bool csLoad(CsRig *r, int cascades, int tile, float blend)
     r->sun.color = WHITE;
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = RblLightFeatures(&r->sun, 1); desc.shadowMaps = 1;
+    desc.maxLights = 1; desc.shading.lightFeatures = RblGetLightFeatures(&r->sun, 1); desc.shading.shadowMaps = 1;
     r->lit = RblLoadLitShader(desc);
     r->white = solidTexture(WHITE);
     r->m = LoadMaterialDefault();

@@ -243,7 +243,7 @@ static void test_polygon_lit_normal_mapped_pixels_equal_the_quads_flat_and_round
     {
         if ((inst == 1) && !rtGlsl3()) break;
         RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
-        desc.instanced = (inst == 1); desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.material.normalEncoding = RBL_NORMAL_RGB;
+        desc.instanced = (inst == 1); desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.material.normalEncoding = RBL_NORMAL_RGB;
         Shader lit = RblLoadLitShader(desc);
         Material m = LoadMaterialDefault();
         m.shader = lit;

@@ -139,7 +139,7 @@ static bool ssRigLoadMaps(SsRig *r, int lightFeatures, int mapSize, bool omni)
     memset(r, 0, sizeof(*r));
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = lightFeatures; desc.shadowMaps = 1;
+    desc.maxLights = 1; desc.shading.lightFeatures = lightFeatures; desc.shading.shadowMaps = 1;
     desc.material.normalEncoding = RBL_NORMAL_RGB;
     r->lit = RblLoadLitShader(desc);
     r->albedo = solidTexture(WHITE);
@@ -398,7 +398,7 @@ static void test_shadows_sprites_never_shadow_themselves_in_a_sweep_of_every_lig
         int lightType = ssTypes[type];
         SsRig rig;
         RblLight probe = ssLight(lightType, ssToLight(0, 45));
-        RT_CHECK(ssRigLoadMaps(&rig, RblLightFeatures(&probe, 1), SS_MAP, lightType == RBL_LIGHT_POINT), "rig failed to load");
+        RT_CHECK(ssRigLoadMaps(&rig, RblGetLightFeatures(&probe, 1), SS_MAP, lightType == RBL_LIGHT_POINT), "rig failed to load");
         int typeSelf[4][2][2] = { { { 0 } } }, typeWorst[4][2][2] = { { { 0 } } };
         for (int el = 5; el <= 85; el += 20)
             for (int az = 0; az < 360; az += step)
@@ -559,7 +559,7 @@ static void test_shadows_sprite_receives_a_crates_shadow_and_never_its_own_in_th
 {
     SsRig rig;
     RblLight probe = ssLight(RBL_LIGHT_DIRECTIONAL, ssToLight(90, 37));
-    RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), 512), "rig failed to load");
+    RT_CHECK(ssRigLoad(&rig, RblGetLightFeatures(&probe, 1), 512), "rig failed to load");
     SsCrate crate;
     crate.size = 1.0f;
     crate.model = LoadModelFromMesh(GenMeshCube(crate.size, crate.size, crate.size));
@@ -620,7 +620,7 @@ static void test_shadows_sprite_receives_a_crates_shadow_under_a_point_light(voi
 {
     SsRig rig;
     RblLight probe = ssLight(RBL_LIGHT_POINT, ssToLight(90, 37));
-    RT_CHECK(ssRigLoadMaps(&rig, RblLightFeatures(&probe, 1), 512, true), "rig failed to load");
+    RT_CHECK(ssRigLoadMaps(&rig, RblGetLightFeatures(&probe, 1), 512, true), "rig failed to load");
     SsCrate crate;
     crate.size = 0.5f;          // its shadow, magnified by the lamp's perspective, covers part of the card
     crate.model = LoadModelFromMesh(GenMeshCube(crate.size, crate.size, crate.size));
@@ -689,7 +689,7 @@ static void test_shadows_light_over_an_axis_sprite_moves_its_shadow_continuously
 {
     SsRig rig;
     RblLight probe = ssLight(RBL_LIGHT_DIRECTIONAL, ssToLight(0, 45));
-    RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
+    RT_CHECK(ssRigLoad(&rig, RblGetLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
     for (int cam = 0; cam < 2; cam++)
         for (int path = 0; path < 2; path++)        // over the front and back (azimuth 0 / 180), over the sides (90 / 270)
         {
@@ -798,7 +798,7 @@ static void test_shadows_caster_identity_is_the_same_on_every_path_and_in_any_or
     if (!rtGlsl3()) return;
     SsRig rig;
     RblLight probe = ssLight(RBL_LIGHT_DIRECTIONAL, ssToLight(0, 45));
-    RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
+    RT_CHECK(ssRigLoad(&rig, RblGetLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
     Vector3 L = ssToLight(35, 30);
     RblLight light = ssLight(RBL_LIGHT_DIRECTIONAL, L);
     RblInstance row[9];
@@ -866,7 +866,7 @@ static void test_shadows_self_shadow_option_drops_the_identities(void)
 {
     SsRig rig;
     RblLight probe = ssLight(RBL_LIGHT_DIRECTIONAL, ssToLight(0, 45));
-    RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
+    RT_CHECK(ssRigLoad(&rig, RblGetLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
     sd.size = SS_MAP; sd.selfShadow = true;
@@ -902,10 +902,10 @@ static void test_shadows_deferred_sprites_never_shadow_themselves_and_match_forw
 {
     SsRig rig;
     RblLight probe = ssLight(RBL_LIGHT_DIRECTIONAL, ssToLight(0, 45));
-    RT_CHECK(ssRigLoad(&rig, RblLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
+    RT_CHECK(ssRigLoad(&rig, RblGetLightFeatures(&probe, 1), SS_MAP), "rig failed to load");
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
-    gd.width = SS_VIEW; gd.height = SS_VIEW; gd.lightFeatures = RblLightFeatures(&probe, 1); gd.shadowMaps = 1;
+    gd.width = SS_VIEW; gd.height = SS_VIEW; gd.shading.lightFeatures = RblGetLightFeatures(&probe, 1); gd.shading.shadowMaps = 1;
     RblGBuffer g = RblLoadGBuffer(gd);
     RblLitShaderDesc ld;
     memset(&ld, 0, sizeof(ld));

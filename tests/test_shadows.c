@@ -75,10 +75,10 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = s->count;
-    desc.lightFeatures = RblLightFeatures(s->lights, s->count);
-    desc.brdf = s->brdf;
-    desc.shadowMaps = 1;
-    desc.shadowFilter = s->filter;
+    desc.shading.lightFeatures = RblGetLightFeatures(s->lights, s->count);
+    desc.shading.brdf = s->brdf;
+    desc.shading.shadowMaps = 1;
+    desc.shading.shadowFilter = s->filter;
     Shader lit = RblLoadLitShader(desc);
     RblShadowMap map = RblLoadShadowMap(s->shadow);
     RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(map), "receiver or shadow map failed to load");
@@ -115,12 +115,11 @@ static Image shRender(const ShSetup *s, ShCasters casters, void *ctx, Texture2D 
     }
     else
     {
-        RblGBufferDesc shading;
-        memset(&shading, 0, sizeof(shading));
-        shading.width = SH_TARGET; shading.height = SH_TARGET;
-        shading.brdf = desc.brdf; shading.lightFeatures = desc.lightFeatures;
-        shading.shadowMaps = desc.shadowMaps; shading.shadowFilter = desc.shadowFilter;
-        RblGBuffer g = RblLoadGBuffer(shading);
+        RblGBufferDesc gdesc;
+        memset(&gdesc, 0, sizeof(gdesc));
+        gdesc.width = SH_TARGET; gdesc.height = SH_TARGET;
+        gdesc.shading = desc.shading;
+        RblGBuffer g = RblLoadGBuffer(gdesc);
         desc.deferred = true;
         Shader geo = RblLoadLitShader(desc);
         RT_CHECK(RblIsGBufferValid(g) && RblIsLitShaderValid(geo), "G-buffer or geometry variant failed");
@@ -643,7 +642,7 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     // A receiver of every light type in the scene (so setting it logs nothing) and its floor
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.lightFeatures = RblLightFeatures(lights, 3); desc.maxLights = 3; desc.shadowMaps = 1;
+    desc.shading.lightFeatures = RblGetLightFeatures(lights, 3); desc.maxLights = 3; desc.shading.shadowMaps = 1;
     Shader lit = RblLoadLitShader(desc);
     RT_CHECK(RblIsLitShaderValid(lit), "receiver failed to load");
     Texture2D white = solidTexture(WHITE);
@@ -700,9 +699,9 @@ static void test_shadows_bad_input_is_refused_with_a_log_line_and_changes_nothin
     }
     // Descs outside the limits
     warnings = 0;
-    desc.shadowMaps = RBL_MAX_SHADOWS + 1;
+    desc.shading.shadowMaps = RBL_MAX_SHADOWS + 1;
     RT_CHECK(!RblIsLitShaderValid(RblLoadLitShader(desc)) && warnings == 1, "shadowMaps above RBL_MAX_SHADOWS accepted");
-    desc.shadowMaps = 1; desc.shadowFilter = RBL_SHADOW_MAX_FILTER + 1;
+    desc.shading.shadowMaps = 1; desc.shading.shadowFilter = RBL_SHADOW_MAX_FILTER + 1;
     warnings = 0;
     RT_CHECK(!RblIsLitShaderValid(RblLoadLitShader(desc)) && warnings == 1, "shadowFilter above the maximum accepted");
     // A Model drawn outside a pass (0.3: RblDrawModelShadow, refused) is a colour draw: no log line, it
@@ -790,7 +789,7 @@ static void test_shadows_hard_cases_stay_finite(void)
         // Linear float output: finite everywhere
         RblLitShaderDesc desc;
         memset(&desc, 0, sizeof(desc));
-        desc.maxLights = 1; desc.lightFeatures = RblLightFeatures(s.lights, 1); desc.shadowMaps = 1; desc.linearOutput = true; desc.brdf = RBL_BRDF_GGX;
+        desc.maxLights = 1; desc.shading.lightFeatures = RblGetLightFeatures(s.lights, 1); desc.shading.shadowMaps = 1; desc.shading.linearOutput = true; desc.shading.brdf = RBL_BRDF_GGX;
         Shader lit = RblLoadLitShader(desc);
         RblShadowMap map = RblLoadShadowMap(s.shadow);
         Material cm = LoadMaterialDefault();

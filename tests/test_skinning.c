@@ -23,8 +23,8 @@ static RblLitShaderDesc skDesc(bool skinning)
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.maxLights = 1;
-    d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
-    d.brdf = RBL_BRDF_BLINN_PHONG;
+    d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+    d.shading.brdf = RBL_BRDF_BLINN_PHONG;
     d.skinning = skinning;
     return d;
 }

@@ -123,7 +123,7 @@ static RblLitShaderDesc tdDesc(bool instanced, bool deferred)
     d.maxLights = 2;
     d.instanced = instanced;
     d.deferred = deferred;
-    d.shadowMaps = 1;
+    d.shading.shadowMaps = 1;
     return d;
 }
 

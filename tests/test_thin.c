@@ -91,7 +91,7 @@ static void test_thin_transmission_behind_an_occluder_is_shadowed(void)
     RblLight light = litDirectional((Vector3){ 0.5f, 0.3f, 1.0f }, 1.0f);        // travels +Z: behind the card
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shadowMaps = 1; desc.transmission = true;
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shading.shadowMaps = 1; desc.transmission = true;
     Shader lit = RblLoadLitShader(desc);
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
@@ -175,7 +175,7 @@ static Image thinRenderRelief(int f, Vector3 dir, float depth, int steps)
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
     desc.maxLights = 1;
-    desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+    desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
     desc.material.height = RBL_CHANNEL_A;
     desc.relief = steps > 0;
     desc.reliefSteps = steps;
@@ -313,7 +313,7 @@ static Image thinBlendRender(int path, int mode, bool receiverReads)
     RblLight light = litDirectional((Vector3){ 0.5f, 0.3f, -1.0f }, 1.0f);
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shadowMaps = 1;
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shading.shadowMaps = 1;
     desc.shadowTransmittance = receiverReads;
     Shader lit = RblLoadLitShader(desc);
     RblShadowDesc sd;

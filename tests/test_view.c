@@ -153,10 +153,10 @@ static ViewError viewCompareSphere(const ViewSphere *vs, const ViewMesh *mesh, I
     memset(&e, 0, sizeof(e));
     RefParams d;
     memset(&d, 0, sizeof(d));
-    d.brdf = vs->desc.brdf;
+    d.brdf = vs->desc.shading.brdf;
     d.specular = vs->values.specular; d.shininess = vs->values.shininess; d.specularColor = vs->values.specularColor;
     d.roughness = vs->values.roughness; d.metalness = vs->values.metalness;
-    d.fog = vs->fog; d.tonemap = vs->desc.tonemap;
+    d.fog = vs->fog; d.tonemap = vs->desc.shading.tonemap;
     RefEnvironment env;
     memset(&env, 0, sizeof(env));
     env.ambient = vs->ambient;
@@ -193,8 +193,8 @@ static Image viewRenderSphere(const ViewSphere *vs, Model *model, int path, bool
 {
     RblLitShaderDesc desc = vs->desc;
     desc.maxLights = vs->count;
-    desc.lightFeatures = RblLightFeatures(vs->lights, vs->count);
-    desc.fog = vs->fog.mode;
+    desc.shading.lightFeatures = RblGetLightFeatures(vs->lights, vs->count);
+    desc.shading.fog = vs->fog.mode;
     RblGBuffer g;
     memset(&g, 0, sizeof(g));
     if (path == 2) { g = RblLoadGBuffer(defGBufferDesc(&desc, LIT_TARGET, LIT_TARGET)); desc.deferred = true; }
@@ -348,7 +348,7 @@ static void test_view_orthographic_sphere_model_matches_the_double_reference(voi
                 ViewSphere vs;
                 memset(&vs, 0, sizeof(vs));
                 vs.camera = proj? ortho : viewPerspective(ortho);
-                vs.desc.brdf = materials[mi].brdf;
+                vs.desc.shading.brdf = materials[mi].brdf;
                 vs.values.shininess = materials[mi].shininess;
                 vs.values.roughness = materials[mi].roughness;
                 vs.values.metalness = materials[mi].metalness;
@@ -579,7 +579,7 @@ static void test_view_culling_is_off_only_for_draws_that_show_a_back_and_restore
 static Image viewRenderShadowedCard(const LitScene *sc, bool deferred, bool *ok)
 {
     RblLitShaderDesc desc = litProgramDesc(sc, 0);
-    desc.shadowMaps = 1;
+    desc.shading.shadowMaps = 1;
     RblGBufferDesc gdesc = defGBufferDesc(&desc, LIT_TARGET, LIT_TARGET);
     desc.deferred = deferred;
     Shader lit = RblLoadLitShader(desc);

@@ -438,7 +438,7 @@ static int ValuesOnlyMaterials(void)
     BenchApiResult before, after;
     CountRegistry(&before);
     RblLitShaderDesc desc = { 0 };
-    desc.brdf = RBL_BRDF_GGX;
+    desc.shading.brdf = RBL_BRDF_GGX;
     Shader shaders[VALUES_MATERIALS];
     Material materials[VALUES_MATERIALS];
     for (int i = 0; i < VALUES_MATERIALS; i++)

@@ -363,11 +363,11 @@ static void BrdfPassLoad(BrdfPass *p, int brdf, Texture2D albedo)
     RblGBufferDesc gd;
     memset(&gd, 0, sizeof(gd));
     gd.width = FRAME_W; gd.height = FRAME_H;
-    gd.brdf = brdf;                         // point lights (the default light features), no fog, sRGB
+    gd.shading.brdf = brdf;                         // point lights (the default light features), no fog, sRGB
     p->g = RblLoadGBuffer(gd);
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.brdf = brdf;
+    d.shading.brdf = brdf;
     d.deferred = true;
     p->geo = RblLoadLitShader(d);
     p->mat = LoadMaterialDefault();
@@ -513,7 +513,7 @@ static bool RefRender(const RefView *v, RefCase c, Model *sphere, Texture2D albe
 {
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.brdf = c.brdf; d.maxLights = 2; d.lightFeatures = RblLightFeatures(v->lights, 2); d.deferred = true;
+    d.shading.brdf = c.brdf; d.maxLights = 2; d.shading.lightFeatures = RblGetLightFeatures(v->lights, 2); d.deferred = true;
     Shader geo = RblLoadLitShader(d);
     Material m = LoadMaterialDefault();
     m.shader = geo;
@@ -616,9 +616,9 @@ static bool ReferenceErrors(RefErr worst[REF_GROUPS][REF_TARGETS])
         {
             RblGBufferDesc gd;
             memset(&gd, 0, sizeof(gd));
-            gd.width = REF_SIZE; gd.height = REF_SIZE; gd.brdf = b;
-            gd.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
-            gd.linearOutput = (k == 1);
+            gd.width = REF_SIZE; gd.height = REF_SIZE; gd.shading.brdf = b;
+            gd.shading.lightFeatures = RBL_LIGHT_FEATURE_POINT | RBL_LIGHT_FEATURE_DIRECTIONAL;
+            gd.shading.linearOutput = (k == 1);
             g[b][k] = RblLoadGBuffer(gd);
             ok = ok && RblIsGBufferValid(g[b][k]);
         }
@@ -976,7 +976,7 @@ int main(void)
 
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.brdf = BENCH_BRDF;
+    desc.shading.brdf = BENCH_BRDF;
     for (int c = 0; c < COUNTS; c++)
     {
         RblLitShaderDesc d = desc;
@@ -997,7 +997,7 @@ int main(void)
     RblGBufferDesc gbufferDesc;
     memset(&gbufferDesc, 0, sizeof(gbufferDesc));
     gbufferDesc.width = FRAME_W; gbufferDesc.height = FRAME_H;
-    gbufferDesc.brdf = BENCH_BRDF;          // point lights (the default light features), no fog, sRGB
+    gbufferDesc.shading.brdf = BENCH_BRDF;          // point lights (the default light features), no fog, sRGB
     s->g = RblLoadGBuffer(gbufferDesc);
     bool deferredOk = RblIsGBufferValid(s->g) && RblIsLitShaderValid(s->geo);
     if (!deferredOk) { printf("bench_deferred: G-buffer or geometry variant failed to load: deferred rows skipped\n"); problems++; }

@@ -239,7 +239,7 @@ static bool MeasureAccuracy(RenderTexture2D target, Material material, int brdf,
     int count = AccuracyLights(lights);
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.brdf = brdf;
+    desc.shading.brdf = brdf;
     desc.maxLights = count;
     Shader lit = RblLoadLitShader(desc);
     if (!RblIsLitShaderValid(lit)) return false;
@@ -380,7 +380,7 @@ int main(void)
             RblLitShaderDesc desc;
             memset(&desc, 0, sizeof(desc));
             desc.maxLights = lightCounts[c];
-            desc.brdf = brdfs[b];
+            desc.shading.brdf = brdfs[b];
             rd.shader[i] = RblLoadLitShader(desc);
             memset(&rd.scene[i], 0, sizeof(rd.scene[i]));
             rd.scene[i].lights = grid[c];

@@ -69,9 +69,9 @@ int main(void)
     families[0].name = "forward_lambert";
     families[1].name = "forward_ggx_full";
     RblLitShaderDesc *full = &families[1].desc;
-    full->maxLights = 8; full->lightFeatures = 15; full->brdf = RBL_BRDF_GGX; full->fog = RBL_FOG_EXP2; full->tonemap = RBL_TONEMAP_ACES;
+    full->maxLights = 8; full->shading.lightFeatures = 15; full->shading.brdf = RBL_BRDF_GGX; full->shading.fog = RBL_FOG_EXP2; full->shading.tonemap = RBL_TONEMAP_ACES;
     full->material.normalEncoding = RBL_NORMAL_HEMIOCT; full->material.specular = true; full->material.occlusion = true;
-    full->material.emissive = RBL_EMISSIVE_RGB; full->shadowMaps = 4;
+    full->material.emissive = RBL_EMISSIVE_RGB; full->shading.shadowMaps = 4;
     families[2].name = "shadow_casters"; families[2].caster = true;
     families[3].name = "instanced_ggx_full"; families[3].desc = *full; families[3].desc.instanced = true; families[3].glsl3 = true;
     families[4].name = "deferred_geometry"; families[4].desc = *full; families[4].desc.deferred = true; families[4].glsl3 = true;

@@ -717,7 +717,7 @@ static bool SelfBenchRun(SelfBench *sb, PassScene *p, Receiver *r)
     light.type = RBL_LIGHT_DIRECTIONAL; light.color = WHITE; light.intensity = 1.0f; light.direction = (Vector3){ 0.0f, -1.0f, 0.0f };
     RblLitShaderDesc ld;
     memset(&ld, 0, sizeof(ld));
-    ld.maxLights = 1; ld.lightFeatures = RblLightFeatures(&light, 1); ld.shadowMaps = 1; ld.material.normalEncoding = RBL_NORMAL_RGB;
+    ld.maxLights = 1; ld.shading.lightFeatures = RblGetLightFeatures(&light, 1); ld.shading.shadowMaps = 1; ld.material.normalEncoding = RBL_NORMAL_RGB;
     Shader lit = RblLoadLitShader(ld);
     Image wi = GenImageColor(4, 4, WHITE), fi = GenImageColor(4, 4, (Color){ 128, 128, 255, 255 });
     Texture2D white = LoadTextureFromImage(wi), normal = SelfNormalTexture(), flat = LoadTextureFromImage(fi);
@@ -983,10 +983,10 @@ static int OmniCascadeBench(PassScene *p, Receiver *r, const char **why)
     RblLight both[2] = { ob->rxSun, ob->rxPoint };
     RblLitShaderDesc ld;
     memset(&ld, 0, sizeof(ld));
-    ld.maxLights = 1; ld.lightFeatures = RblLightFeatures(both, 2); ld.brdf = RBL_BRDF_LAMBERT;
+    ld.maxLights = 1; ld.shading.lightFeatures = RblGetLightFeatures(both, 2); ld.shading.brdf = RBL_BRDF_LAMBERT;
     for (int v = 0; v < 2; v++)
     {
-        ld.shadowMaps = v; ld.shadowFilter = v? 2 : 0;
+        ld.shading.shadowMaps = v; ld.shading.shadowFilter = v? 2 : 0;
         ob->shader[v] = RblLoadLitShader(ld);
         ob->material[v] = LoadMaterialDefault();
         ob->material[v].shader = ob->shader[v];
@@ -1145,8 +1145,8 @@ int main(void)
     RblLitShaderDesc pd;
     memset(&pd, 0, sizeof(pd));
     pd.maxLights = 1;
-    pd.lightFeatures = RblLightFeatures(&p->light, 1);
-    pd.shadowMaps = 1;
+    pd.shading.lightFeatures = RblGetLightFeatures(&p->light, 1);
+    pd.shading.shadowMaps = 1;
     p->lit = RblLoadLitShader(pd);
     pd.instanced = true;
     p->litInstanced = RblLoadLitShader(pd);
@@ -1242,14 +1242,14 @@ int main(void)
     RblLitShaderDesc rd;
     memset(&rd, 0, sizeof(rd));
     rd.maxLights = 1;
-    rd.lightFeatures = RblLightFeatures(&r->light, 1);
-    rd.brdf = RBL_BRDF_LAMBERT;
+    rd.shading.lightFeatures = RblGetLightFeatures(&r->light, 1);
+    rd.shading.brdf = RBL_BRDF_LAMBERT;
     r->ok[RX_RAYLIB] = true;
     for (int v = 1; v < RX_VARIANTS; v++)
     {
         RblLitShaderDesc d = rd;
-        d.shadowMaps = (v == RX_UNSHADOWED)? 0 : 1;
-        d.shadowFilter = (v == RX_UNSHADOWED)? 0 : ((v == RX_NOMAP)? RX_NOMAP_FILTER : rxFilters[v - RX_UNSHADOWED - 1]);
+        d.shading.shadowMaps = (v == RX_UNSHADOWED)? 0 : 1;
+        d.shading.shadowFilter = (v == RX_UNSHADOWED)? 0 : ((v == RX_NOMAP)? RX_NOMAP_FILTER : rxFilters[v - RX_UNSHADOWED - 1]);
         r->shader[v] = RblLoadLitShader(d);
         r->material[v] = LoadMaterialDefault();
         r->material[v].shader = r->shader[v];
@@ -1295,7 +1295,7 @@ int main(void)
     D3 eye = d3f(r->camera.position);
     RefParams rp;                       // the receivers' program and material: Lambert, every value default
     memset(&rp, 0, sizeof(rp));
-    rp.brdf = rd.brdf;
+    rp.brdf = rd.shading.brdf;
     RefRgb litRef = refFinish(&rp, refShade(&rp, &r->light, 1, &env, &surface, eye), surface.position, eye);
     RefRgb darkRef = refFinish(&rp, refShade(&rp, &r->light, 0, &env, &surface, eye), surface.position, eye);
     int litByte = (int)floor(litRef.r*255.0 + 0.5), darkByte = (int)floor(darkRef.r*255.0 + 0.5);

@@ -77,7 +77,7 @@ int main(void)
     if (backend == NULL) { printf("bench_skinning: no headless GL context, skipped\n"); return 0; }
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.brdf = RBL_BRDF_BLINN_PHONG;
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shading.brdf = RBL_BRDF_BLINN_PHONG;
     Shader plain = RblLoadLitShader(desc);
     desc.skinning = true;
     Shader skinned = RblLoadLitShader(desc);

@@ -316,7 +316,7 @@ static void interleaved(BenchRunFn fn, void *plainCtx, void *fadeCtx, int values
 
 static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, const RblInstance *instances, int n, RblInstanceBuffer *buf, Camera3D cam, Material instMat, BenchTiming timing)
 {
-    // Batch: the same 10000 frames, without and with a fade each (RblSpriteFade from its player)
+    // Batch: the same 10000 frames, without and with a fade each (the next frame over the same quad)
     RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
     Material plain = instMat, fade = instMat;
     plain.shader = RblLoadLitShader(desc);
@@ -331,7 +331,10 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
     {
         cards[i].position = instances[i].position;
         RblAtlasBillboard(anim, players[i].frame, 0.02f, &cards[i]);
-        RblSpriteFade(&players[i], anim, &fades[i]);
+        int next = players[i].frame;
+        fades[i].weight = RblSpriteBlend(&players[i], anim, &next);
+        fades[i].source = anim->frames[next].source;         // zero clips: over this frame's quad
+        fades[i].flags = anim->frames[next].flags & RBL_FRAME_ROTATED;
         if (fades[i].weight <= 0.0f) fades[i].weight = 0.5f;       // every billboard fades
     }
     RblBatch batch = RblLoadBatch(n);

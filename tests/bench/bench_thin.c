@@ -167,7 +167,7 @@ int main(void)
     {
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
-        d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+        d.maxLights = 1; d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
         d.material.height = RBL_CHANNEL_A;
         d.relief = stepsOf[v] > 0; d.reliefSteps = stepsOf[v];
         b->relief[v] = RblLoadLitShader(d);
@@ -177,7 +177,7 @@ int main(void)
     {
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
-        d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+        d.maxLights = 1; d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
         d.transmission = v > 0;
         b->tx[v] = RblLoadLitShader(d);
         ok = ok && RblIsLitShaderValid(b->tx[v]);

@@ -82,9 +82,9 @@ static bool lightingPicture(const char *dir)
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));
         d.maxLights = 3;
-        d.lightFeatures = RblLightFeatures(lights, 3);
-        d.brdf = row? RBL_BRDF_GGX : RBL_BRDF_BLINN_PHONG;
-        d.tonemap = RBL_TONEMAP_ACES;
+        d.shading.lightFeatures = RblGetLightFeatures(lights, 3);
+        d.shading.brdf = row? RBL_BRDF_GGX : RBL_BRDF_BLINN_PHONG;
+        d.shading.tonemap = RBL_TONEMAP_ACES;
         shaders[row] = RblLoadLitShader(d);
     }
     RblScene scene;
@@ -191,10 +191,10 @@ static bool shadowsPicture(const char *dir)
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
     d.maxLights = 2;
-    d.lightFeatures = RblLightFeatures(lights, 2);
-    d.brdf = RBL_BRDF_BLINN_PHONG;
-    d.tonemap = RBL_TONEMAP_ACES;
-    d.shadowMaps = 2;                                   // every receiver samples both maps
+    d.shading.lightFeatures = RblGetLightFeatures(lights, 2);
+    d.shading.brdf = RBL_BRDF_BLINN_PHONG;
+    d.shading.tonemap = RBL_TONEMAP_ACES;
+    d.shading.shadowMaps = 2;                                   // every receiver samples both maps
     Shader lit = RblLoadLitShader(d);
     const RtMaterialValues values = { .specular = 0.2f };   // every material: Blinn-Phong specular intensity 0.2
     RblShadowDesc sd;
@@ -328,7 +328,7 @@ static bool spriteShadowsPicture(const char *dir)
     sun.color = (Color){ 255, 236, 210, 255 }; sun.intensity = 1.0f;
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.shadowMaps = 1;
+    d.maxLights = 1; d.shading.lightFeatures = RblGetLightFeatures(&sun, 1); d.shading.shadowMaps = 1;
     Shader flat = RblLoadLitShader(d);
     d.material.normalEncoding = RBL_NORMAL_RGB;
     Shader bent = RblLoadLitShader(d);
@@ -425,7 +425,7 @@ static bool sweepPicture(const char *dir)
     sun.type = RBL_LIGHT_DIRECTIONAL; sun.color = (Color){ 255, 240, 220, 255 }; sun.intensity = 0.7f; sun.direction = (Vector3){ 0.0f, -1.0f, 0.0f };
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.shadowMaps = 1;
+    d.maxLights = 1; d.shading.lightFeatures = RblGetLightFeatures(&sun, 1); d.shading.shadowMaps = 1;
     Shader flat = RblLoadLitShader(d);
     d.material.normalEncoding = RBL_NORMAL_RGB;
     Shader bent = RblLoadLitShader(d);
@@ -522,7 +522,7 @@ static bool omniPicture(const char *dir)
     lamps[1].position = (Vector3){ 2.0f, 1.1f, -0.8f }; lamps[1].color = (Color){ 120, 170, 255, 255 }; lamps[1].intensity = 3.0f; lamps[1].range = 12.0f;
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 2; d.lightFeatures = RblLightFeatures(lamps, 2); d.shadowMaps = 2;
+    d.maxLights = 2; d.shading.lightFeatures = RblGetLightFeatures(lamps, 2); d.shading.shadowMaps = 2;
     Shader lit = RblLoadLitShader(d);
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
@@ -618,7 +618,7 @@ static bool cascadesPicture(const char *dir)
     sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ -0.55f, -0.6f, -0.35f }; sun.color = (Color){ 255, 236, 210, 255 }; sun.intensity = 1.0f;
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 1; d.lightFeatures = RblLightFeatures(&sun, 1); d.shadowMaps = 1;
+    d.maxLights = 1; d.shading.lightFeatures = RblGetLightFeatures(&sun, 1); d.shading.shadowMaps = 1;
     Shader lit = RblLoadLitShader(d);
     RblShadowDesc cd, od;
     memset(&cd, 0, sizeof(cd)); memset(&od, 0, sizeof(od));
@@ -736,7 +736,7 @@ static bool thinPictures(const char *dir)
     sun.color = (Color){ 255, 220, 160, 255 }; sun.intensity = 2.2f;
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.transmission = true; d.material.thickness = RBL_CHANNEL_A;
+    d.maxLights = 1; d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.transmission = true; d.material.thickness = RBL_CHANNEL_A;
     Shader lit = RblLoadLitShader(d);
     if (!RblIsLitShaderValid(lit)) { printf("pictures: transmission variant unavailable\n"); return false; }
     RblScene scene;
@@ -810,7 +810,7 @@ static bool thinPictures(const char *dir)
     for (int i = 0; i < 2; i++)
     {
         memset(&d, 0, sizeof(d));
-        d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+        d.maxLights = 1; d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
         d.material.normalEncoding = RBL_NORMAL_RGB; d.material.height = RBL_CHANNEL_A;
         d.relief = (i == 1);
         relief[i] = RblLoadLitShader(d);
@@ -877,9 +877,9 @@ static bool glassPicture(const char *dir)
     sun.color = (Color){ 255, 240, 220, 255 }; sun.intensity = 1.2f;
     RblLitShaderDesc d;
     memset(&d, 0, sizeof(d));
-    d.maxLights = 1; d.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.shadowMaps = 1; d.shadowTransmittance = true;
+    d.maxLights = 1; d.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; d.shading.shadowMaps = 1; d.shadowTransmittance = true;
     Shader lit = RblLoadLitShader(d);
-    d.shadowMaps = 0; d.shadowTransmittance = false;
+    d.shading.shadowMaps = 0; d.shadowTransmittance = false;
     Shader unshadowed = RblLoadLitShader(d);            // the smoke receives nothing (its light-facing caster would tint it)
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));

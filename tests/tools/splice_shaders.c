@@ -33,12 +33,12 @@ int main(int argc, char **argv)
     // Descs that switch every feature on and off between them (normalised as the loader does)
     RblLitShaderDesc cases[6];
     memset(cases, 0, sizeof(cases));
-    cases[1].maxLights = 8; cases[1].lightFeatures = 15; cases[1].brdf = RBL_BRDF_BLINN_PHONG; cases[1].fog = RBL_FOG_LINEAR;
-    cases[1].tonemap = RBL_TONEMAP_REINHARD; cases[1].material.normalEncoding = RBL_NORMAL_HEMIOCT; cases[1].material.specular = true;
-    cases[1].material.occlusion = true; cases[1].material.emissive = RBL_EMISSIVE_MASK; cases[1].shadowMaps = 4; cases[1].shadowFilter = 3;
-    cases[2] = cases[1]; cases[2].brdf = RBL_BRDF_GGX; cases[2].fog = RBL_FOG_EXP2; cases[2].tonemap = RBL_TONEMAP_ACES;
-    cases[2].material.normalEncoding = RBL_NORMAL_XY; cases[2].material.emissive = RBL_EMISSIVE_RGB; cases[2].gamma = 2.2f; cases[2].shadowMaps = 1;
-    cases[3] = cases[2]; cases[3].material.normalEncoding = RBL_NORMAL_RGB; cases[3].material.specular = false; cases[3].linearOutput = true; cases[3].debugOutput = RBL_DEBUG_OUTPUT_WORLD_NORMAL;
+    cases[1].maxLights = 8; cases[1].shading.lightFeatures = 15; cases[1].shading.brdf = RBL_BRDF_BLINN_PHONG; cases[1].shading.fog = RBL_FOG_LINEAR;
+    cases[1].shading.tonemap = RBL_TONEMAP_REINHARD; cases[1].material.normalEncoding = RBL_NORMAL_HEMIOCT; cases[1].material.specular = true;
+    cases[1].material.occlusion = true; cases[1].material.emissive = RBL_EMISSIVE_MASK; cases[1].shading.shadowMaps = 4; cases[1].shading.shadowFilter = 3;
+    cases[2] = cases[1]; cases[2].shading.brdf = RBL_BRDF_GGX; cases[2].shading.fog = RBL_FOG_EXP2; cases[2].shading.tonemap = RBL_TONEMAP_ACES;
+    cases[2].material.normalEncoding = RBL_NORMAL_XY; cases[2].material.emissive = RBL_EMISSIVE_RGB; cases[2].shading.gamma = 2.2f; cases[2].shading.shadowMaps = 1;
+    cases[3] = cases[2]; cases[3].material.normalEncoding = RBL_NORMAL_RGB; cases[3].material.specular = false; cases[3].shading.linearOutput = true; cases[3].debugOutput = RBL_DEBUG_OUTPUT_WORLD_NORMAL;
     cases[2].crossFade = true;      // with cases 3 and 5 (deferred) after it; 4 instanced
     cases[4] = cases[1]; cases[4].instanced = true; cases[4].crossFade = true;
     cases[5] = cases[2]; cases[5].deferred = true;
@@ -64,7 +64,7 @@ int main(int argc, char **argv)
             // Deferred light passes: the lighting desc of this case, with and without the light counter
             RblLitShaderDesc lighting = d;
             lighting.deferred = false; lighting.instanced = false;
-            if (cases[c].shadowMaps == 0) continue;
+            if (cases[c].shading.shadowMaps == 0) continue;
             rbl__litDefines(&lighting, defines, sizeof(defines));
             for (int counting = 0; counting < 2; counting++)
             {
