@@ -69,7 +69,7 @@ WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
-GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_batch.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_omni_cascades.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_sprite_buffer.c tests/test_cull.c tests/test_thin.c tests/test_deferred_thin.c tests/test_clustered.c
+GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_batch.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_omni_cascades.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_sprite_buffer.c tests/test_cull.c tests/test_thin.c tests/test_deferred_thin.c tests/test_clustered.c tests/test_polygon.c
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)
@@ -260,7 +260,7 @@ $(addprefix $(BUILD)/bench/bench_platforms_,$(GPU_CONTEXTS)): $(BUILD)/bench/ben
 	@mkdir -p $(@D)
 	$(CC) $(BENCH_CFLAGS) $(VARIANT_FLAGS) tests/bench/bench_platforms.c tests/harness.c -o $@ $(VARIANT_LIBS)
 
-bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_clustered $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_deferred_thin $(BUILD)/bench/bench_overdraw $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_api
+bench: $(BUILD)/bench/bench_blend $(addprefix $(BUILD)/bench/bench_platforms_,egl $(GPU_CONTEXTS)) $(BUILD)/bench/bench_geometry $(BUILD)/bench/bench_materials $(BUILD)/bench/bench_lighting $(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_clustered $(BUILD)/bench/bench_shadows $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_deferred_thin $(BUILD)/bench/bench_overdraw $(BUILD)/bench/bench_skinning $(BUILD)/bench/bench_sprites $(BUILD)/bench/bench_polygon $(BUILD)/bench/bench_api
 	@BUILD=$(BUILD) bash tests/bench/run.sh
 
 clean:

@@ -470,9 +470,20 @@
 *         (name, frame) finds the key; RblAtlasSliceBillboard/Instance draw it alone: its bounds
 *         clipped to the frame's trim, about its pivot (none: its bottom centre). When exactly one
 *         slice of an export has pivots, they are also the pivots of the frames its keys cover.
-*       - Polygons (TexturePacker): RblAtlasFrame.polygon holds the vertices (untrimmed-frame pixels),
-*         their sheet texels (inside the block) and triangles (indices < vertexCount), validated on
-*         load. The draw paths still draw the trimmed quad (the polygon's bounds and more).
+*       - Polygons (TexturePacker; tests/test_polygon.c): RblAtlasFrame.polygon holds the vertices
+*         (untrimmed-frame pixels), their sheet texels (inside the block) and triangles (indices <
+*         vertexCount), validated on load. Every path draws the triangles, not the trimmed quad: the
+*         batch, the immediate path, instanced draws, sprite buffers, shadow casters and the G-buffer.
+*         RblAtlasBillboard/Instance put the frame's polygon handle in flags (RBL_FRAME_POLYGON, bits
+*         4..23; the atlas owns it until RblUnloadAtlas, after which a billboard still naming it is
+*         refused with one line); the texels the file names place each vertex in the quad, so a
+*         vertex carries the quad's own position, texture coordinate, normal and tangent there (pixels
+*         inside equal the quad's, mirrors and rotated frames included). Rounded normals (roundness >
+*         0) use the triangles cut along the quad's diagonal (where its fields meet), flat ones the
+*         file's. Batches draw one quad slot per pair of triangles (RblBillboardQuads emits them);
+*         instanced draws and sprite buffers compile a polygon variant of the program at their first
+*         polygon and draw every instance with the draw's largest polygon's corners (quads use 6, the
+*         rest collapse to a point); draws without polygons run the plain program and pay nothing.
 *       - 9-slice: RblAtlasFrame.center (scale9Borders, libGDX split) and RblAtlasSlice.center, in
 *         canvas pixels (for raylib's DrawTextureNPatch and the like); billboards draw the frame whole.
 *       - Premultiplied pages (libGDX pma: RblAtlasPage.premultiplied): RblMaterialLayout
@@ -562,9 +573,12 @@
 *         changes the lights of the frame, not its ambient).
 *       - No image-based lighting: GGX ambient uses F0 as the environment's specular reflectance;
 *         metalness is one value per material (the packed layout has no channel for it).
-*       - Polygon atlas frames (TexturePacker polygon packing) draw as their trimmed quads on every
-*         path; their triangles are read and validated (RblAtlasFrame.polygon) but not drawn yet. A
-*         packer that interlocks polygons may leave another frame's texels inside a quad.
+*       - Polygon frames: a cross-fade (RblBatchAddFade, RblInstancedDesc.fades, crossFade programs on
+*         sprite buffers) draws the quad (the union of two frames' trims); 2^20 - 1 polygon handles
+*         are live at once (an atlas load beyond is refused); flags from 2^24 up carry no polygon (the
+*         instanced stage reads flags as a float). An instanced draw mixing small and large polygons
+*         runs the vertex stage for the largest on every instance; on llvmpipe the thinner triangles
+*         cost about as much as the fragments saved (make bench: polygon rows).
 *       - A draw that shows a quad's back turns face culling back on after itself (raylib's default):
 *         rlgl cannot report the caller's state.
 *       - Instanced draws share facing, up, axis and roundness; own FIXED frames go through a batch.
@@ -826,7 +840,8 @@ typedef enum {
 // Billboard flags
 typedef enum {
     RBL_FRAME_ROTATED = 1,          // Atlas frame stored rotated 90 degrees clockwise (texture packers)
-    RBL_ROUND_CYLINDER = 2          // Rounded normals bend around the up axis only (default: sphere)
+    RBL_ROUND_CYLINDER = 2,         // Rounded normals bend around the up axis only (default: sphere)
+    RBL_FRAME_POLYGON = 0xFFFFF0    // Bits 4..23: a loaded atlas's polygon frame (RblAtlasBillboard sets them; 0 = the quad), drawn as its triangles
 } RblBillboardFlags;
 
 // Cross-fade to a second atlas frame (a program with RblLitShaderDesc.crossFade mixes the two); zero = none
@@ -1265,7 +1280,7 @@ typedef struct RblAtlasFrame {
     int page;                       // Sheet (RblAtlas.pages) the frame lies in
     Rectangle block;                // Texels it occupies in its sheet (stored turned: the h x w block)
     Rectangle source;               // As RblBillboard.source takes it with flags (libGDX's counter-clockwise turn: both extents negated)
-    unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above)
+    unsigned int flags;             // RBL_FRAME_ROTATED when stored turned (clockwise, after the conversion above); a polygon frame's RBL_FRAME_POLYGON bits
     Rectangle trim;                 // Drawn (trimmed) part of the frame: pixels, top-left origin, upright
     Vector2 size;                   // Untrimmed frame size in pixels
     Vector2 pivot;                  // Pivot as fractions of size from the top-left (none given: 0.5, 1, the bottom centre)
@@ -1341,6 +1356,7 @@ RBLAPI const char *RblGetFailureReason(void);                                // 
 // Geometry (CPU, no GL needed; code: >>geometry)
 RBLAPI RblCameraFrame RblGetCameraFrame(Camera3D camera);                                   // Camera frame with degenerate cases resolved
 RBLAPI bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex out[4]); // Emit a quad (bottom-left, bottom-right, top-right, top-left); false = skipped, out untouched
+RBLAPI int RblBillboardQuads(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *billboard, RblVertex *out, int capacity); // Emit what a batch draws: quads of 4 vertices (triangles 0-1-2, 0-2-3; last vertex repeated = one triangle), a polygon frame's triangle pairs; returns the quads (capacity short or out NULL: the count, nothing written); -1 = skipped
 
 // Batched and immediate paths (GL; code: >>batch)
 RBLAPI RblBatch RblLoadBatch(int capacity);                                   // Load a batch reserving capacity billboards (0 = default)
@@ -1521,7 +1537,7 @@ typedef enum {
     RBL__U_G_ALBEDO, RBL__U_G_NORMAL, RBL__U_G_PARAMS, RBL__U_G_DEPTH, RBL__U_G_ACCUM, RBL__U_INV_VIEW, RBL__U_EYE, RBL__U_MVP,
     RBL__U_OUTPUT, RBL__U_OUTPUT_SCALE, RBL__U_DEPTH_LINEAR, RBL__U_INV_P, RBL__U_VIEW_AXIS,
     RBL__U_SOFT_DEPTH, RBL__U_SOFT_TEXEL, RBL__U_CASTER_ID_ON, RBL__U_CASTER_DEPTH, RBL__U_FRAME_TABLE, RBL__U_TRANSMISSION, RBL__U_RELIEF, RBL__U_CASTER_TINT,
-    RBL__U_G_THIN, RBL__U_RELIEF_INDEX, RBL__U_GRID_ORIGIN, RBL__U_GRID_DIMS,
+    RBL__U_G_THIN, RBL__U_RELIEF_INDEX, RBL__U_GRID_ORIGIN, RBL__U_GRID_DIMS, RBL__U_POLYGON, RBL__U_POLYGON_TABLE,
     RBL__U_COUNT
 } rbl__Uniform;
 
@@ -1534,7 +1550,7 @@ typedef struct rbl__ProgramKey {
     RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
-    int sprites;                    // 1: the resident-sprite variant (RBL_SPRITE_BUFFER) of an instanced program, the header's own
+    int sprites;                    // Header-owned variants of an instanced program: bit 1 resident sprites (RBL_SPRITE_BUFFER), bit 2 polygon frames (RBL_POLYGONS)
     int shadowKinds;                // Receivers: map k's compiled code in bits 4k..4k+3 (rbl__shadowCode; shadows.glsl)
     int gbufferRelief;              // 1: a G-buffer light pass reading the stored relief bits (RBL_GB_RELIEF)
 } rbl__ProgramKey;
@@ -1549,19 +1565,20 @@ typedef struct rbl__MaterialValues {
 // One entry of the program registry
 typedef struct rbl__Program {
     rbl__ProgramKey key;
-    Shader shader;                      // Program and the registry's own raylib locs (every draw reads these, never a Material's)
-    const int *handleLocs;              // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
-    int loc[RBL__U_COUNT];              // Uniform locations
-    int refs;                           // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
-    rbl__MaterialValues values;         // Last per-draw values uploaded
-    int fadeClipLoc;                    // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
-    int casterIdLoc;                    // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
+    Shader shader;                       // Program and the registry's own raylib locs (every draw reads these, never a Material's)
+    const int *handleLocs;               // Lit programs: the locs array handed out with it (compared, never read: raylib's UnloadShader frees it)
+    int loc[RBL__U_COUNT];               // Uniform locations
+    int refs;                            // Holders: 1 for a lit program (its handle); casters and passes: shadow maps, G-buffers
+    rbl__MaterialValues values;          // Last per-draw values uploaded
+    int fadeClipLoc;                     // Vertex-buffer crossFade programs: the rblFadeClip attribute (the linker's choice), else -1
+    int casterIdLoc;                     // Vertex-buffer programs with caster identities: the rblCasterId attribute (the linker's choice), else -1
     bool valuesValid;
-    bool raylibNoted;                   // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
-    struct rbl__Program *spriteVariant; // Instanced programs: the resident-sprite variant once compiled (goes with this one)
-    struct rbl__Program *shadowBase;    // A receiver's variant for other map kinds: the program it was compiled for (goes with it), else NULL
-    struct rbl__Program *shadowVariant; // A receiver: its variant drawn last (a cache; the registry holds every variant)
-    bool shadowVariantNoted;            // ... a variant failed to compile (said once)
+    bool raylibNoted;                    // raylib's DrawModel/DrawMesh was found to have drawn with it (said once)
+    struct rbl__Program *spriteVariant;  // Instanced programs: the resident-sprite variant once compiled (goes with this one)
+    struct rbl__Program *shadowBase;     // A receiver's variant for other map kinds: the program it was compiled for (goes with it), else NULL
+    struct rbl__Program *shadowVariant;  // A receiver: its variant drawn last (a cache; the registry holds every variant)
+    bool shadowVariantNoted;             // ... a variant failed to compile (said once)
+    struct rbl__Program *polygonVariant; // Instanced programs: the polygon-frame variant (a sprite variant's: sprites and polygons)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -1637,6 +1654,11 @@ typedef struct rbl__BatchState {
     unsigned int idVboId;           // GPU copy, created at the first identified RblEndBatch
     int idGpuCapacity;              // Billboards idVboId holds
     bool identified;                // ids[0..count) is filled
+    // Polygon frames (RBL_FRAME_POLYGON): a billboard takes one quad slot per pair of its triangles.
+    // From the first such billboard, every slot's sort key (its billboard's quad centre) is kept
+    float *centres;                 // 3 floats per slot while polygonal (capacity slots)
+    bool polygonal;                 // centres[0..count) is filled
+    int extraSlots;                 // Slots beyond one per billboard since RblBeginBatch() (count - extraSlots billboards)
 } rbl__BatchState;
 
 // An instance buffer's own data (RblInstanceBuffer.state)
@@ -1785,6 +1807,27 @@ typedef struct rbl__Live {
     const void *state;              // Its private state
 } rbl__Live;
 
+// A polygon frame as the draw paths read it (an atlas's, registered under RBL_FRAME_POLYGON handles)
+// The quad's two triangles meet on a diagonal of the frame, a = b or a + b = 1 in frame fractions
+// (which one follows the mirrors and rotation: rbl__polygonDiagonal). Rounded normals and their
+// tangents are affine over each of them (with a kink on the diagonal): a polygon is kept cut along
+// each diagonal (cuts 0, 1), so every triangle lies in one of the quad's and takes its fields exactly,
+// and as the file's triangles (cut 2) for flat billboards (constant normal and tangent: fewer, fatter
+// triangles)
+typedef struct rbl__Polygon {
+    const Vector2 *frac;            // Vertices as fractions (a along +u, b along +v) of the frame's source: the file's, then the cut points
+    const unsigned int *slots[3];   // Per cut, 4 vertices per slot drawn as a quad is: (0, 1, 2) and (0, 2, 3); a repeated last vertex = one triangle
+    int slotCount[3];               // Slots (a batch draws each as one quad)
+    int triangles[3];               // Triangles over all slots (the instanced stage's corners / 3)
+} rbl__Polygon;
+
+// Handles [first, first + count) of one atlas's polygons
+typedef struct rbl__PolyRange {
+    unsigned int first;
+    int count;
+    const rbl__Polygon *polygons;
+} rbl__PolyRange;
+
 // Everything the header keeps between calls (as rlgl's RLGL): zero-initialised, emptied by RblClose()
 typedef struct rbl__State {
     rbl__Program **programs;           // The one program registry (each entry allocated: pointers stay valid as it grows)
@@ -1821,6 +1864,15 @@ typedef struct rbl__State {
     rbl__Live *live;                   // Loaded batches, instance buffers, G-buffers and shadow maps by slot (id 0: free)
     int liveCount;                     // Slots used (free ones are reused)
     int liveCapacity;
+    rbl__PolyRange *polyRanges;        // Polygon handles of the loaded atlases, by first handle
+    int polyRangeCount;
+    int polyRangeCapacity;
+    unsigned int polyNext;             // Next handle handed out (handles of an unloaded atlas are reused only once 2^20 - 1 ran out)
+    unsigned int polyVersion;          // Changes with every range added or removed (the GPU table follows it)
+    unsigned int polyTableId;          // The instanced stage's polygon table (RGBA32F), built at the first draw that needs it
+    unsigned int polyTableVersion;     // polyVersion it was built at
+    unsigned int polyTableBase;        // Lowest handle it holds
+    int polyTableMaxCorners;           // Most corners (3 per triangle) of one polygon in it
 } rbl__State;
 
 static rbl__State rbl__state;
@@ -3032,11 +3084,33 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "uniform vec4 rblInstancing[7];\n",
     "#endif\n",
     "\n",
+    "#ifdef RBL_POLYGONS\n",
+    "// Polygon frames (the variant the header compiles for draws with RBL_FRAME_POLYGON instances or a\n",
+    "// sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest\n",
+    "// polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest\n",
+    "// handle in the polygon table. A polygon is kept cut along each frame diagonal (a = b, a + b = 1: the\n",
+    "// quad's two triangles meet on one of them; rounded draws) and uncut (flat draws), each cut as\n",
+    "// corners: pairs (a, b) of fractions of its frame's source, two a texel, 3 per triangle (each turning\n",
+    "// as the quad's (0, 1, 2) seen from the front). Its two header texels hold each cut's first corner\n",
+    "// texel and corner count; the plain variant finds them at texel 2 (handle - z) of rblPolygonTable, the\n",
+    "// resident-sprite variant at the frame table texel that frame k's texel 3k + 2 names in z (w: 1 + its\n",
+    "// most corners, 0 for a quad frame)\n",
+    "uniform vec4 rblPolygon;\n",
+    "#ifndef RBL_SPRITE_BUFFER\n",
+    "uniform highp sampler2D rblPolygonTable;\n",
+    "#endif\n",
+    "#endif\n",
+    "\n",
     "// The instance being expanded, from either layout (main reads it once)\n",
     "vec4 rblPivot;          // xyz pivot, w rotation in degrees\n",
     "vec4 rblSizeOrigin;     // size (negative mirrors), origin\n",
     "vec4 rblSource;         // texels (all zero = whole texture)\n",
     "float rblFlagBits;      // RblBillboardFlags\n",
+    "#ifdef RBL_POLYGONS\n",
+    "vec4 rblPolygonSpan;    // The instance's polygon header: both diagonal cuts' first corner texel and count\n",
+    "vec2 rblPolygonFlat;    // ... and the uncut triangles'\n",
+    "bool rblPolygonal;      // ... when it has one (else the quad)\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;\n",
     "float rblFadeWeight, rblFadeFlagBits;\n",
@@ -3278,6 +3352,73 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    tangent = vec4(tv, w);\n",
     "}\n",
     "\n",
+    "#ifdef RBL_POLYGONS\n",
+    "vec4 rblPolygonTexel(int i)\n",
+    "{\n",
+    "    int w = int(rblPolygon.y + 0.5);\n",
+    "#ifdef RBL_SPRITE_BUFFER\n",
+    "    return texelFetch(rblFrameTable, ivec2(i % w, i / w), 0);\n",
+    "#else\n",
+    "    return texelFetch(rblPolygonTable, ivec2(i % w, i / w), 0);\n",
+    "#endif\n",
+    "}\n",
+    "\n",
+    "// The instance's polygon as flat draws take it, or cut along the diagonal its quad's triangles meet\n",
+    "// on (rbl__billboardCut): first corner texel, corner count\n",
+    "vec2 rblPolygonCut()\n",
+    "{\n",
+    "    if (!(rblInstancing[1].w > 0.0)) return rblPolygonFlat;\n",
+    "    bool flipU = (rblSizeOrigin.x < 0.0) != (rblSource.z < 0.0);\n",
+    "    bool flipV = (rblSizeOrigin.y < 0.0) != (rblSource.w < 0.0);\n",
+    "    bool rotated = (int(rblFlagBits + 0.5) & 1) != 0;\n",
+    "    return ((flipU != flipV) != rotated)? rblPolygonSpan.xy : rblPolygonSpan.zw;\n",
+    "}\n",
+    "\n",
+    "// Corner k of the instance's polygon (its cut from first) with the quad's fields there: position and\n",
+    "// texture coordinate of the frame point, normal and tangent interpolated over the quad's triangle\n",
+    "// (0, 1, 2) or (0, 2, 3) holding it, as the rasteriser would over the quad (rbl__expandQuad, the CPU\n",
+    "// twin). A mirror turns the triangles over: corners 1 and 2 swap. Returns sprite (s right, t down).\n",
+    "vec2 rblPolygonVertex(int first, int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,\n",
+    "                      out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)\n",
+    "{\n",
+    "    int flags = int(rblFlagBits + 0.5);\n",
+    "    vec2 size = rblSizeOrigin.xy, origin = rblSizeOrigin.zw;\n",
+    "    vec4 src = rblSource;\n",
+    "    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);\n",
+    "    bool flipU = (size.x < 0.0) != (src.z < 0.0);\n",
+    "    bool flipV = (size.y < 0.0) != (src.w < 0.0);\n",
+    "    bool rotated = (flags & 1) != 0;\n",
+    "    int m = k - (k/3)*3;\n",
+    "    if (flipU != flipV) k += (m == 1)? 1 : ((m == 2)? -1 : 0);\n",
+    "    vec4 texel = rblPolygonTexel(first + k/2);\n",
+    "    vec2 ab = ((k & 1) != 0)? texel.zw : texel.xy;\n",
+    "    float s = rotated? ab.y : ab.x, t = rotated? 1.0 - ab.x : ab.y;\n",
+    "    if (flipU) s = 1.0 - s;\n",
+    "    if (flipV) t = 1.0 - t;\n",
+    "    float up = 1.0 - t;\n",
+    "    vec3 un = u;\n",
+    "    rblNormalizeTo(u, un);\n",
+    "    float ulen = length(u), sx = abs(size.x), sy = abs(size.y);\n",
+    "    float x = (-origin.x)*(1.0 - s) + (sx - origin.x)*s, y = (-origin.y)*(1.0 - up) + (sy*ulen - origin.y)*up;\n",
+    "    position = rblPivot.xyz + r*x + un*y;\n",
+    "    texCoord = (src.xy + ab*abs(src.zw))/textureSize;\n",
+    "    vec3 pc, n1, n2;\n",
+    "    vec2 tc;\n",
+    "    vec4 g1, g2;\n",
+    "    rblBillboardVertex(0, r, u, n, textureSize, roundness, pc, tc, normal, tangent);\n",
+    "    if (clamp(roundness, 0.0, 1.0) > 0.0)\n",
+    "    {\n",
+    "        bool lower = s >= up;\n",
+    "        vec3 w = lower? vec3(1.0 - s, s - up, up) : vec3(1.0 - up, s, up - s);\n",
+    "        rblBillboardVertex(lower? 1 : 2, r, u, n, textureSize, roundness, pc, tc, n1, g1);\n",
+    "        rblBillboardVertex(lower? 2 : 3, r, u, n, textureSize, roundness, pc, tc, n2, g2);\n",
+    "        normal = normal*w.x + n1*w.y + n2*w.z;\n",
+    "        tangent = vec4(tangent.xyz*w.x + g1.xyz*w.y + g2.xyz*w.z, tangent.w);\n",
+    "    }\n",
+    "    return vec2(s, t);\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "#ifdef RBL_CROSS_FADE\n",
     "// Texture coordinate of the corner at sprite (cs right, ct down) in frame src (all zero = the whole\n",
     "// texture), as rblBillboardVertex, and the frame's +U (T) and +V (V) in the quad's (right, up) plane\n",
@@ -3385,7 +3526,13 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblPivot = vec4(rblInstancePosition.xyz, word.x*(360.0/65536.0));\n",
     "    rblSizeOrigin = quad;\n",
     "    rblSource = rblTable(3*frame);\n",
-    "    rblFlagBits = rblTable(3*frame + 2).y + (((mode & 4u) != 0u)? 2.0 : 0.0);\n",
+    "    vec4 frameBits = rblTable(3*frame + 2);\n",
+    "    rblFlagBits = frameBits.y + (((mode & 4u) != 0u)? 2.0 : 0.0);\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    rblPolygonal = frameBits.w > 0.5;\n",
+    "    rblPolygonSpan = rblPolygonal? rblTable(int(frameBits.z + 0.5)) : vec4(0.0);\n",
+    "    rblPolygonFlat = rblPolygonal? rblTable(int(frameBits.z + 0.5) + 1).xy : vec2(0.0);\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "    rblFadeSource = rblTable(3*next);\n",
     "    rblFadeFlagBits = rblTable(3*next + 2).y;\n",
@@ -3405,6 +3552,25 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;\n",
     "    rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;\n",
     "#endif\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)\n",
+    "    uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;\n",
+    "    rblPolygonal = handle != 0u;\n",
+    "    int header = 2*(int(handle) - int(rblPolygon.z + 0.5));\n",
+    "    rblPolygonSpan = rblPolygonal? rblPolygonTexel(header) : vec4(0.0);\n",
+    "    rblPolygonFlat = rblPolygonal? rblPolygonTexel(header + 1).xy : vec2(0.0);\n",
+    "#endif\n",
+    "#endif\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    // Past the instance's corners (a quad's 6, or its polygon's): one point outside the view, so the\n",
+    "    // padding triangles have no area\n",
+    "    vec2 cut = rblPolygonal? rblPolygonCut() : vec2(0.0, 6.0);\n",
+    "    if (gl_VertexID >= int(cut.y + 0.5))\n",
+    "    {\n",
+    "        fragPosition = vec3(0.0); fragTexCoord = vec2(0.0); fragColor = vec4(0.0); fragNormal = vec3(0.0, 0.0, 1.0); fragTangent = vec4(1.0, 0.0, 0.0, 1.0);\n",
+    "        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);\n",
+    "        return;\n",
+    "    }\n",
     "#endif\n",
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
@@ -3441,6 +3607,13 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "        u = u*sc.y + nu*sc.x;\n",
     "    }\n",
     "    vec3 p;\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    vec2 polygonPoint = vec2(-1.0);\n",
+    "    if (rblPolygonal)\n",
+    "        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
+    "                                        p, fragTexCoord, fragNormal, fragTangent);\n",
+    "    else\n",
+    "#endif\n",
     "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
     "                       p, fragTexCoord, fragNormal, fragTangent);\n",
     "    p += shift;\n",
@@ -3451,6 +3624,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#ifdef RBL_CROSS_FADE\n",
     "    int corner = cornerOf[gl_VertexID % 6];\n",
     "    float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;\n",
+    "#ifdef RBL_POLYGONS\n",
+    "    if (polygonPoint.x >= 0.0) { cs = polygonPoint.x; ct = polygonPoint.y; }\n",
+    "#endif\n",
     "    vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;\n",
     "    rblFrameTexCoord(rblSource, (int(rblFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t1, v1);\n",
     "    fragTexCoord2 = rblFrameTexCoord(rblFadeSource, (int(rblFadeFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t2, v2);\n",
@@ -5006,7 +5182,124 @@ static void rbl__fadeVertices(const RblBillboard *b, const RblFade *fade, int te
     }
 }
 
-static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4]);
+// ---- polygon frames: handles, lookup --------------------------------------------------------------
+// A billboard's or instance's RBL_FRAME_POLYGON bits name one registered polygon (an atlas's frame).
+// Flags from 2^24 up carry none: the instanced stage reads flags as a float, exact below 2^24 only.
+#define RBL__POLYGON_SHIFT 4
+#define RBL__POLYGON_HANDLES 0xFFFFFu
+
+static inline unsigned int rbl__polygonHandle(unsigned int flags)
+{
+    return (flags < 0x1000000u)? (flags & (unsigned int)RBL_FRAME_POLYGON) >> RBL__POLYGON_SHIFT : 0u;
+}
+
+// The polygon of a handle, or NULL when no loaded atlas holds it (ranges sorted by first handle)
+static const rbl__Polygon *rbl__polygonAt(unsigned int handle)
+{
+    int lo = 0, hi = rbl__state.polyRangeCount;
+    while (lo < hi)
+    {
+        int mid = (lo + hi)/2;
+        const rbl__PolyRange *r = &rbl__state.polyRanges[mid];
+        if (r->first + (unsigned int)r->count <= handle) lo = mid + 1; else hi = mid;
+    }
+    if ((lo < rbl__state.polyRangeCount) && (rbl__state.polyRanges[lo].first <= handle)) return &rbl__state.polyRanges[lo].polygons[handle - rbl__state.polyRanges[lo].first];
+    return NULL;
+}
+
+// A billboard's polygon: *out NULL for the quad; false when its bits name no loaded polygon
+// The bits an atlas sets in a billboard's flags (the rest are the caller's)
+#define RBL__FRAME_BITS ((unsigned int)RBL_FRAME_ROTATED | (unsigned int)RBL_FRAME_POLYGON)
+
+static inline bool rbl__billboardPolygon(unsigned int flags, const rbl__Polygon **out)
+{
+    unsigned int h = rbl__polygonHandle(flags);
+    *out = (h != 0u)? rbl__polygonAt(h) : NULL;
+    return (h == 0u) || (*out != NULL);
+}
+
+#if !defined(RBL_NO_ATLAS)
+// Whether handles [first, first + count) are all free and valid
+static bool rbl__polygonRangeFree(unsigned int first, int count)
+{
+    if ((first == 0u) || ((unsigned int)count > RBL__POLYGON_HANDLES) || (first > RBL__POLYGON_HANDLES + 1u - (unsigned int)count)) return false;
+    for (int i = 0; i < rbl__state.polyRangeCount; i++)
+    {
+        const rbl__PolyRange *r = &rbl__state.polyRanges[i];
+        if ((first < r->first + (unsigned int)r->count) && (r->first < first + (unsigned int)count)) return false;
+    }
+    return true;
+}
+
+// Registers count polygons under consecutive handles: the first, or 0 when none are left or out of
+// memory. New handles follow the last ones handed out, so a billboard kept past its atlas's unload is
+// refused rather than drawn as another atlas's polygon (until 2^20 - 1 handles ran out: then reused)
+static unsigned int rbl__polygonRegister(const rbl__Polygon *polygons, int count)
+{
+    unsigned int first = (rbl__state.polyNext == 0u)? 1u : rbl__state.polyNext;
+    if (!rbl__polygonRangeFree(first, count))
+    {
+        first = 1u;
+        for (int i = 0; (i <= rbl__state.polyRangeCount) && !rbl__polygonRangeFree(first, count); i++)
+        {
+            if (i == rbl__state.polyRangeCount) { first = 0u; break; }
+            first = rbl__state.polyRanges[i].first + (unsigned int)rbl__state.polyRanges[i].count;
+        }
+        if ((first == 0u) || !rbl__polygonRangeFree(first, count)) return 0u;
+    }
+    if (rbl__state.polyRangeCount == rbl__state.polyRangeCapacity)
+    {
+        int cap = (rbl__state.polyRangeCapacity > 0)? 2*rbl__state.polyRangeCapacity : 8;
+        rbl__PolyRange *r = (rbl__PolyRange *)RBL_REALLOC(rbl__state.polyRanges, (size_t)cap*sizeof(rbl__PolyRange));
+        if (r == NULL) return 0u;
+        rbl__state.polyRanges = r;
+        rbl__state.polyRangeCapacity = cap;
+    }
+    int at = 0;
+    while ((at < rbl__state.polyRangeCount) && (rbl__state.polyRanges[at].first < first)) at++;
+    memmove(&rbl__state.polyRanges[at + 1], &rbl__state.polyRanges[at], (size_t)(rbl__state.polyRangeCount - at)*sizeof(rbl__PolyRange));
+    rbl__state.polyRanges[at].first = first;
+    rbl__state.polyRanges[at].count = count;
+    rbl__state.polyRanges[at].polygons = polygons;
+    rbl__state.polyRangeCount++;
+    rbl__state.polyNext = first + (unsigned int)count;
+    rbl__state.polyVersion++;
+    return first;
+}
+
+static void rbl__polygonUnregister(unsigned int first)
+{
+    for (int i = 0; i < rbl__state.polyRangeCount; i++)
+        if (rbl__state.polyRanges[i].first == first)
+        {
+            memmove(&rbl__state.polyRanges[i], &rbl__state.polyRanges[i + 1], (size_t)(rbl__state.polyRangeCount - i - 1)*sizeof(rbl__PolyRange));
+            rbl__state.polyRangeCount--;
+            rbl__state.polyVersion++;
+            return;
+        }
+}
+#endif
+
+// The frame diagonal the quad's triangles meet on for these mirrors and rotation: 0 (a = b) or 1
+// (a + b = 1); lit_instanced.vs.glsl's rblPolygonChoose is the twin
+static inline int rbl__polygonDiagonal(bool flipU, bool flipV, bool rotated) { return ((flipU != flipV) != rotated)? 0 : 1; }
+
+// The cut a billboard draws: flat, the file's triangles; rounded, those cut along its quad's diagonal
+static inline int rbl__billboardCut(const RblBillboard *b)
+{
+    if (!(b->roundness > 0.0f)) return 2;
+    return rbl__polygonDiagonal((b->size.x < 0.0f) != (b->source.width < 0.0f), (b->size.y < 0.0f) != (b->source.height < 0.0f), (b->flags & RBL_FRAME_ROTATED) != 0);
+}
+
+// Slots a billboard takes in a batch: 1 for the quad, one per slot of its polygon (0: nothing drawn)
+static inline int rbl__slotCount(const rbl__Polygon *poly, const RblBillboard *b) { return (poly != NULL)? poly->slotCount[rbl__billboardCut(b)] : 1; }
+
+static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3]);
+
+static inline bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+{
+    return rbl__expandQuad(view, cast, cache, textureWidth, textureHeight, b, NULL, out, NULL);
+}
 
 static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
@@ -5014,8 +5307,11 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
     return rbl__expandBillboard(view, cast, cache, textureWidth, textureHeight, b, out);
 }
 
-// rbl__billboardVertices once b is known good
-static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
+// rbl__billboardVertices once b is known good: the quad's four corners, or with poly its slots (4
+// vertices each) at the quad's own attributes: position, texture coordinate and (affine over each of
+// the quad's two triangles, as the rasteriser interpolates them) normal and tangent, and the quad's
+// centre (the sort key of each slot)
+static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3])
 {
     rbl__facingFrame(view, cast, b, cache);
     Vector3 R = cache->right, U = cache->up, N = cache->normal;
@@ -5119,9 +5415,11 @@ static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *ca
     bool cylinder = (b->flags & RBL_ROUND_CYLINDER) != 0;
     static const float dxs[4] = { -1.0f, 1.0f, 1.0f, -1.0f }, dys[4] = { -1.0f, -1.0f, 1.0f, 1.0f };
 
+    RblVertex corners[4];
+    RblVertex *q = (poly != NULL)? corners : out;
     for (int i = 0; i < 4; i++)
     {
-        RblVertex *v = &out[i];
+        RblVertex *v = &q[i];
         v->position[0] = p[i].x; v->position[1] = p[i].y; v->position[2] = p[i].z;
         v->texcoord[0] = uv[i][0]; v->texcoord[1] = uv[i][1];
         Vector3 n = N, tg = T;
@@ -5136,6 +5434,42 @@ static bool rbl__expandBillboard(const RblCameraFrame *view, const rbl__Cast *ca
         v->normal[0] = n.x; v->normal[1] = n.y; v->normal[2] = n.z;
         v->tangent[0] = tg.x; v->tangent[1] = tg.y; v->tangent[2] = tg.z; v->tangent[3] = w;
         memcpy(v->color, col, 4);
+    }
+    if (poly != NULL)
+    {
+        // A polygon vertex at frame fractions (a, b) of the source lies at sprite (s, t) (as the
+        // corners: a mirror swaps an axis's ends, a rotated frame holds sprite (s,t) at (1-t, s)),
+        // quad fraction (s, 1 - t) from the bottom-left. A mirror turns the triangles over: each
+        // slot is then walked the other way round, (A, D, C, B), a lone triangle (A, C, B, B), so
+        // they face as the quad does.
+        static const int back[2][4] = { { 0, 3, 2, 1 }, { 0, 2, 1, 1 } };
+        const bool reverse = flipU != flipV;
+        const int diagonal = (round > 0.0f)? rbl__polygonDiagonal(flipU, flipV, rotated) : 2;     // rbl__billboardCut
+        const float su = fabsf(src.width), sv = fabsf(src.height);
+        for (int e = 0; e < 3; e++) centre[e] = 0.25f*(q[0].position[e] + q[1].position[e] + q[2].position[e] + q[3].position[e]);
+        for (int k = 0; k < poly->slotCount[diagonal]; k++)
+            for (int c = 0; c < 4; c++)
+            {
+                const unsigned int *slot = poly->slots[diagonal] + 4*k;
+                const Vector2 f = poly->frac[slot[reverse? back[slot[2] == slot[3]][c] : c]];
+                float s = rotated? f.y : f.x, t = rotated? 1.0f - f.x : f.y;
+                if (flipU) s = 1.0f - s;
+                if (flipV) t = 1.0f - t;
+                const float up = 1.0f - t, x = x0*(1.0f - s) + x1*s, y = y0*(1.0f - up) + y1*up;
+                RblVertex *v = &out[4*k + c];
+                v->position[0] = P.x + R.x*x + U.x*y; v->position[1] = P.y + R.y*x + U.y*y; v->position[2] = P.z + R.z*x + U.z*y;
+                v->texcoord[0] = (src.x + f.x*su)*invW; v->texcoord[1] = (src.y + f.y*sv)*invH;
+                // Which of the quad's triangles (0,1,2) or (0,2,3) holds it, and its weights there
+                int i1 = (s >= up)? 1 : 2, i2 = (s >= up)? 2 : 3;
+                float w0 = (s >= up)? 1.0f - s : 1.0f - up, w1 = (s >= up)? s - up : s, w2 = (s >= up)? up : up - s;
+                for (int e = 0; e < 3; e++)
+                {
+                    v->normal[e] = (round > 0.0f)? q[0].normal[e]*w0 + q[i1].normal[e]*w1 + q[i2].normal[e]*w2 : q[0].normal[e];
+                    v->tangent[e] = (round > 0.0f)? q[0].tangent[e]*w0 + q[i1].tangent[e]*w1 + q[i2].tangent[e]*w2 : q[0].tangent[e];
+                }
+                v->tangent[3] = w;
+                memcpy(v->color, col, 4);
+            }
     }
     return true;
 }
@@ -5154,6 +5488,24 @@ bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int text
         return false;
     }
     return true;
+}
+
+int RblBillboardQuads(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex *out, int capacity)
+{
+    const char *bad = NULL;
+    const rbl__Polygon *poly = NULL;
+    if ((view == NULL) || (b == NULL) || (capacity < 0)) bad = "NULL view or billboard, or negative capacity";
+    else if (!rbl__bounded3(view->eye) || !rbl__unit3(view->right) || !rbl__unit3(view->up) || !rbl__unit3(view->back)) bad = "view is not a camera frame (NaN/Inf, huge eye or non-unit axes)";
+    else if (!rbl__billboardOk(b, textureWidth, textureHeight)) bad = "billboard skipped (NaN/Inf or huge input, bad facing or texture size)";
+    else if (!rbl__billboardPolygon(b->flags, &poly)) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
+    if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblBillboardQuads: %s", bad); return -1; }
+    const int quads = rbl__slotCount(poly, b);
+    if ((out == NULL) || (capacity < quads)) return quads;
+    rbl__FrameCache cache;
+    cache.facing = -1;
+    float centre[3];
+    rbl__expandQuad(view, NULL, &cache, textureWidth, textureHeight, b, poly, out, centre);
+    return quads;
 }
 
 //----------------------------------------------------------------------------------
@@ -5274,6 +5626,7 @@ static void rbl__freeBatchState(rbl__BatchState *b)
     RBL_FREE(b->fadeSorted);
     RBL_FREE(b->ids);
     RBL_FREE(b->idsSorted);
+    RBL_FREE(b->centres);
     RBL_FREE(b);
 }
 
@@ -5411,6 +5764,8 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->frame.facing = -1;      // the frame depends on the view
     batch->fading = false;
     batch->identified = false;
+    batch->polygonal = false;
+    batch->extraSlots = 0;
     batch->count = 0;
     batch->runCount = 0;
     batch->skipped = 0;
@@ -5449,6 +5804,12 @@ static bool rbl__growBatch(rbl__BatchState *batch)
         if (ids == NULL) return false;
         batch->ids = ids;
     }
+    if (batch->centres != NULL)
+    {
+        float *centres = (float *)RBL_REALLOC(batch->centres, (size_t)newCapacity*3*sizeof(float));
+        if (centres == NULL) return false;
+        batch->centres = centres;
+    }
     RblVertex *vertices = (RblVertex *)RBL_REALLOC(batch->vertices, (size_t)newCapacity*4*sizeof(RblVertex));
     if (vertices == NULL) return false;     // the caller logs the skip (a grown fade array is kept: capacity follows later)
     TraceLog(LOG_INFO, "RBL: batch grown from %i to %i billboards (reserve more in RblLoadBatch)", batch->capacity, newCapacity);
@@ -5475,7 +5836,7 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
     rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAdd");
     if (batch == NULL) return false;
     bool added = rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
-    pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
+    pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
 
@@ -5490,18 +5851,23 @@ bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billb
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: RblBatchAddFade: billboard skipped (%s); further skips this batch are not logged", (fade == NULL)? "NULL fade" : "fade weight outside 0..1, NaN/Inf or huge source, or bad clip");
     }
     else added = rbl__batchAdd(batch, &material, billboard, fade, "RblBatchAddFade");
-    pub->capacity = batch->capacity; pub->count = batch->count + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
+    pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
 
 // fade: NULL for a plain billboard (checked by the caller otherwise)
 static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
 {
-    if ((batch->count == batch->capacity) && !rbl__growBatch(batch))
-    {
-        if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", fn, batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
-        return false;
-    }
+    // A polygon frame takes its slots (a cross-fade draws the quad: the union of two frames' trims)
+    const rbl__Polygon *poly = NULL;
+    const bool polyKnown = (billboard == NULL) || (fade != NULL) || rbl__billboardPolygon(billboard->flags, &poly);
+    const int slots = (billboard != NULL)? rbl__slotCount(poly, billboard) : 1;
+    while (batch->count + slots > batch->capacity)
+        if (!rbl__growBatch(batch))
+        {
+            if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: batch full at %i billboards (limit %i or out of memory); further skips this batch are not logged", fn, batch->capacity, RBL_MAX_BATCH_BILLBOARDS);
+            return false;
+        }
 
     rbl__BatchRun *run = (batch->runCount > 0)? &batch->runs[batch->runCount - 1] : NULL;
     const bool newRun = (run == NULL) || !rbl__sameMaterial(&run->material, material);
@@ -5511,9 +5877,23 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     if ((bad == NULL) && newRun) rbl__albedoSize(material, &texW, &texH);       // the maps are read once the shader is known live
     else if (bad == NULL) { texW = run->textureWidth; texH = run->textureHeight; }   // the same maps (rbl__sameMaterial)
     if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
+    if ((bad == NULL) && !polyKnown) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
     if ((bad == NULL) && (batch->planeCount > 0) && rbl__culled(batch, billboard)) { batch->culled++; return true; }
-    if ((bad == NULL) && !rbl__expandBillboard(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, batch->vertices + (size_t)batch->count*4))
+    float centre[3] = { 0.0f, 0.0f, 0.0f };
+    if ((bad == NULL) && !rbl__expandQuad(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, poly, batch->vertices + (size_t)batch->count*4, centre))
         bad = "NaN/Inf or huge input, or bad facing";
+    if ((bad == NULL) && (poly != NULL) && !batch->polygonal)
+    {
+        // The sort keys of the slots so far: each a quad's own centre
+        if (batch->centres == NULL) batch->centres = (float *)RBL_MALLOC((size_t)batch->capacity*3*sizeof(float));
+        if (batch->centres == NULL) bad = "out of memory for the polygon slots' sort keys";
+        for (int i = 0; (bad == NULL) && (i < batch->count); i++)
+        {
+            const RblVertex *v = batch->vertices + (size_t)i*4;
+            for (int e = 0; e < 3; e++) batch->centres[3*i + e] = 0.25f*(v[0].position[e] + v[1].position[e] + v[2].position[e] + v[3].position[e]);
+        }
+        if (bad == NULL) batch->polygonal = true;
+    }
     if (bad != NULL)
     {
         if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (%s); further skips this batch are not logged", fn, bad);
@@ -5537,7 +5917,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         batch->identified = true;
         unsigned int id = rbl__casterId(billboard->position, billboard->size, billboard->origin);
         unsigned char *o = batch->ids + (size_t)batch->count*RBL__ID_BYTES;
-        for (int v = 0; v < 4; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
+        for (int v = 0; v < 4*slots; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
     }
     // The fade stream starts with the first faded billboard (earlier ones get weight 0); a clipped
     // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn).
@@ -5556,8 +5936,19 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         batch->fading = true;
         float *row = batch->fade + (size_t)batch->count*RBL__FADE_FLOATS;
         if (fade != NULL) rbl__fadeVertices(billboard, fade, texW, texH, row);
-        else memset(row, 0, RBL__FADE_FLOATS*sizeof(float));
+        else memset(row, 0, (size_t)slots*RBL__FADE_FLOATS*sizeof(float));
     }
+    if (batch->polygonal)
+        for (int i = 0; i < slots; i++)
+        {
+            float *c = batch->centres + 3*((size_t)batch->count + i);
+            if (poly != NULL) { c[0] = centre[0]; c[1] = centre[1]; c[2] = centre[2]; }
+            else
+            {
+                const RblVertex *v = batch->vertices + (size_t)batch->count*4;
+                for (int e = 0; e < 3; e++) c[e] = 0.25f*(v[0].position[e] + v[1].position[e] + v[2].position[e] + v[3].position[e]);
+            }
+        }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
     if (!batch->backFacing)
@@ -5581,8 +5972,9 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         run->count = 0;
         run->textureWidth = texW; run->textureHeight = texH;
     }
-    run->count++;
-    batch->count++;
+    run->count += slots;
+    batch->count += slots;
+    batch->extraSlots += slots - 1;
     return true;
 }
 
@@ -5735,6 +6127,7 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
             Vector3 c = { 0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
                           0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
                           0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]) };
+            if (batch->polygonal) c = rbl__v3(batch->centres[3*i], batch->centres[3*i + 1], batch->centres[3*i + 2]);   // a polygon's slots sort as its quad
             batch->keys[i].depth = -rbl__dot(rbl__sub(c, eye), back);
             batch->keys[i].index = i;
             batch->keys[i].run = r;
@@ -5931,10 +6324,17 @@ static void rbl__drawBillboard(Camera3D camera, Material material, const RblBill
     if (bad == NULL) rbl__albedoSize(&material, &texW, &texH);
     if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && (fade != NULL) && !rbl__fadeOk(fade, RBL__BILLBOARD_LIMIT_EXPONENT)) bad = "fade weight outside 0..1, NaN/Inf or huge source, or bad clip";
+    const rbl__Polygon *poly = NULL;
+    if ((bad == NULL) && (fade == NULL) && !rbl__billboardPolygon(billboard->flags, &poly)) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
+    if ((bad == NULL) && (rbl__slotCount(poly, billboard) > RBL_MAX_BATCH_BILLBOARDS)) bad = "its polygon has more triangle pairs than RBL_MAX_BATCH_BILLBOARDS";
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return; }
+    // One quad slot, or as many as the polygon's (the batch is made that large, without a growth line)
+    int slots = (bad == NULL)? rbl__slotCount(poly, billboard) : 1;
+    if (slots < 1) slots = 1;
+    if ((immediate->state != NULL) && (immediate->state->capacity < slots)) RblUnloadBatch(immediate);
     if (immediate->state == NULL)
     {
-        *immediate = RblLoadBatch(1);     // created on first use, released by RblClose()
+        *immediate = RblLoadBatch(slots);     // created on first use, released by RblClose()
         if (!RblIsBatchValid(*immediate)) return;
     }
     RblBeginBatch(immediate, camera);
@@ -5957,6 +6357,7 @@ static void rbl__tidyAfterClose(void)
     RBL_FREE(rbl__state.dead);
     RBL_FREE(rbl__state.programs);
     RBL_FREE(rbl__state.live);
+    RBL_FREE(rbl__state.polyRanges);
     memset(&rbl__state, 0, sizeof(rbl__state));
 }
 
@@ -5967,6 +6368,8 @@ void RblClose(void)
     // or after this, before or after CloseWindow
     if (rbl__state.immediate.state != NULL) RblUnloadBatch(&rbl__state.immediate);
     rbl__releaseCapture();
+    if ((rbl__state.polyTableId != 0) && rbl__glUsable()) rlUnloadTexture(rbl__state.polyTableId);
+    rbl__state.polyTableId = 0;
     RBL_FREE(rbl__state.scene.lights); RBL_FREE(rbl__state.scene.staging); RBL_FREE(rbl__state.scene.lightFeatures);
     rbl__freeLightGrid(&rbl__state.scene.grid);
     memset(&rbl__state.scene, 0, sizeof(rbl__state.scene));
@@ -6163,6 +6566,100 @@ static void rbl__bindInstanceFades(rbl__InstanceBufferState *buffer, const rbl__
     for (int i = 0; i < RBL__FADE_ATTRIBUTES; i++) { rlEnableVertexAttribute(rbl__fadeLocations[i]); rlSetVertexAttributeDivisor(rbl__fadeLocations[i], 1); }
 }
 
+// ---- polygon frames on the instanced stage -----------------------------------------------------------
+#define RBL__FRAME_TABLE_WIDTH 1024         // Texels per row of a frame or polygon table (rows: at most 2048, ES 3's least texture size)
+static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key);
+static void rbl__bindSceneTints(const rbl__Program *p);
+static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material);
+static void rbl__casterDepth(const rbl__Program *caster);
+
+// The polygon-frame variant (RBL_POLYGONS) of an instanced program (plain or resident-sprite): held
+// until its program goes; NULL (problem set) on failure. Draws without polygons never compile it.
+static rbl__Program *rbl__polygonVariant(rbl__Program *p)
+{
+    if (p->polygonVariant != NULL) return p->polygonVariant;
+    rbl__ProgramKey key = p->key;
+    key.sprites |= 2;
+    p->polygonVariant = rbl__compileProgram(&key);
+    return p->polygonVariant;
+}
+
+// A polygon's corners for the instanced stage (cut along diagonal d), 3 per triangle from its slots,
+// each pair (a, b) of frame fractions, two corners a texel (RGBA32F); returns the texels written
+static int rbl__polygonCorners(const rbl__Polygon *poly, int d, float *out)
+{
+    int k = 0;
+    for (int sl = 0; sl < poly->slotCount[d]; sl++)
+    {
+        const unsigned int *v = poly->slots[d] + 4*sl;
+        const unsigned int tri[6] = { v[0], v[1], v[2], v[0], v[2], v[3] };
+        for (int c = 0; c < ((v[2] == v[3])? 3 : 6); c++, k++) { out[2*k] = poly->frac[tri[c]].x; out[2*k + 1] = poly->frac[tri[c]].y; }
+    }
+    if (k & 1) { out[2*k] = out[2*k + 1] = 0.0f; }
+    return (k + 1)/2;
+}
+
+// The texels of a polygon's corners, both diagonals' (rbl__polygonCorners)
+static inline size_t rbl__polygonTexels(const rbl__Polygon *poly) { return (size_t)(3*poly->triangles[0] + 1)/2 + (size_t)(3*poly->triangles[1] + 1)/2 + (size_t)(3*poly->triangles[2] + 1)/2; }
+
+// The most corners of a polygon's two cuts
+static inline int rbl__polygonMaxCorners(const rbl__Polygon *poly)
+{
+    int t = (poly->triangles[0] > poly->triangles[1])? poly->triangles[0] : poly->triangles[1];
+    return 3*((poly->triangles[2] > t)? poly->triangles[2] : t);
+}
+
+// The header's polygon table for instanced draws, rebuilt when atlases came or went since: texels
+// 2(h - base) and 2(h - base) + 1 hold handle h's first corner texel and corner count for each cut,
+// then the corners (rbl__polygonCorners). false (problem set) when it cannot be made
+static bool rbl__polygonTable(void)
+{
+    if ((rbl__state.polyTableId != 0) && (rbl__state.polyTableVersion == rbl__state.polyVersion)) return true;
+    if (rbl__state.polyTableId != 0) { rlUnloadTexture(rbl__state.polyTableId); rbl__state.polyTableId = 0; }
+    if (rbl__state.polyRangeCount == 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "no polygons loaded"); return false; }
+    unsigned int base = rbl__state.polyRanges[0].first;
+    const rbl__PolyRange *last = &rbl__state.polyRanges[rbl__state.polyRangeCount - 1];
+    size_t texels = 2*(size_t)(last->first + (unsigned int)last->count - base);
+    for (int r = 0; r < rbl__state.polyRangeCount; r++)
+        for (int i = 0; i < rbl__state.polyRanges[r].count; i++) texels += rbl__polygonTexels(&rbl__state.polyRanges[r].polygons[i]);
+    size_t rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
+    if (rows > 2048) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "the loaded atlases' polygons need %zu texels, more than 1024 x 2048", texels); return false; }
+    float *table = (float *)RBL_CALLOC(rows*RBL__FRAME_TABLE_WIDTH*4, sizeof(float));
+    if (table == NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "out of memory for the polygon table"); return false; }
+    size_t at = 2*(size_t)(last->first + (unsigned int)last->count - base);
+    for (int r = 0; r < rbl__state.polyRangeCount; r++)
+        for (int i = 0; i < rbl__state.polyRanges[r].count; i++)
+        {
+            const rbl__Polygon *poly = &rbl__state.polyRanges[r].polygons[i];
+            float *h = table + 8*(size_t)(rbl__state.polyRanges[r].first + (unsigned int)i - base);
+            for (int d = 0; d < 3; d++)
+            {
+                h[2*d] = (float)at; h[2*d + 1] = (float)(3*poly->triangles[d]);
+                at += (size_t)rbl__polygonCorners(poly, d, table + 4*at);
+            }
+        }
+    rbl__state.polyTableId = rlLoadTexture(table, RBL__FRAME_TABLE_WIDTH, (int)rows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
+    RBL_FREE(table);
+    if (rbl__state.polyTableId == 0) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "polygon table texture could not be created"); return false; }
+    rlTextureParameters(rbl__state.polyTableId, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
+    rlTextureParameters(rbl__state.polyTableId, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
+    rbl__state.polyTableVersion = rbl__state.polyVersion;
+    rbl__state.polyTableBase = base;
+    return true;
+}
+
+// An instance's polygon bits: none, or a loaded polygon (its corners raise *corners); false when they
+// name none
+static inline bool rbl__instancePolygonOk(const RblInstance *in, int *corners)
+{
+    unsigned int h = rbl__polygonHandle(in->flags);
+    if (h == 0u) return true;
+    const rbl__Polygon *poly = rbl__polygonAt(h);
+    if (poly == NULL) return false;
+    if (rbl__polygonMaxCorners(poly) > *corners) *corners = rbl__polygonMaxCorners(poly);
+    return true;
+}
+
 // The per-draw frame of the instanced stage, rblInstancing[7] (layout in lit_instanced.vs.glsl); the
 // resident-sprite variant's [7] (frame[28..31]) zero here, set by its draw
 static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFrame *view, int texW, int texH, float frame[32])
@@ -6190,13 +6687,13 @@ static bool rbl__instancedDescOk(RblInstancedDesc *desc)
     return true;
 }
 
-typedef struct rbl__InstanceLayer { rbl__Program *program; const Material *material; int count; } rbl__InstanceLayer;
+typedef struct rbl__InstanceLayer { rbl__Program *program; const Material *material; int count, vertices; } rbl__InstanceLayer;   // vertices: 6, or a polygon draw's corners
 
 static void rbl__drawInstanceLayer(void *context)
 {
     const rbl__InstanceLayer *layer = (const rbl__InstanceLayer *)context;
     rbl__applyMaterialValues(layer->program, layer->material);
-    rlDrawVertexArrayInstanced(0, 6, layer->count);
+    rlDrawVertexArrayInstanced(0, layer->vertices, layer->count);
 }
 
 int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material, RblInstancedDesc desc, const RblInstance *instances, int count)
@@ -6252,8 +6749,12 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         buffer->fadeStaging = f;
         buffer->fadeStagingCapacity = buffer->capacity;
     }
+    // Polygon frames: the most corners one instance needs (0: quads only; with fades every instance is its quad)
+    int corners = 0;
+    int *cornersAt = (fades == NULL)? &corners : NULL;
     int n = 0;
-    while ((n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT))) n++;
+    while ((n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT)) &&
+           ((cornersAt == NULL) || rbl__instancePolygonOk(&instances[n], cornersAt))) n++;
     const RblInstance *upload = instances;
     const RblFade *fadeUpload = fades;
     pub->skipped = 0;
@@ -6263,7 +6764,8 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         if (fades != NULL) memcpy(buffer->fadeStaging, fades, (size_t)n*sizeof(RblFade));
         for (int i = n; i < count; i++)
         {
-            if (rbl__instanceOk(&instances[i]) && ((fades == NULL) || rbl__fadeOk(&fades[i], RBL__INSTANCE_LIMIT_EXPONENT)))
+            if (rbl__instanceOk(&instances[i]) && ((fades == NULL) || rbl__fadeOk(&fades[i], RBL__INSTANCE_LIMIT_EXPONENT)) &&
+                ((cornersAt == NULL) || rbl__instancePolygonOk(&instances[i], cornersAt)))
             {
                 if (fades != NULL) buffer->fadeStaging[n] = fades[i];
                 buffer->staging[n++] = instances[i];
@@ -6272,13 +6774,33 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
         }
         upload = buffer->staging;
         if (fades != NULL) fadeUpload = buffer->fadeStaging;
-        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36, or a fade weight outside 0..1)", pub->skipped);
+        TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36, a fade weight outside 0..1, or RBL_FRAME_POLYGON bits of no loaded atlas)", pub->skipped);
     }
     if (n == 0) return 0;
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
     if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, fades != NULL, "RblDrawInstanced", &program)) return 0;
+    if (corners > 0)
+    {
+        // Polygon frames: the program's polygon variant, each instance drawn with the draw's most
+        // corners (a quad's 6 at least; the rest collapse to one point outside the view)
+        rbl__Program *variant = program->key.desc.crossFade? NULL : rbl__polygonVariant(program);
+        if ((variant == NULL) && program->key.desc.crossFade) corners = 0;      // cross-fade programs draw quads (the union of two frames)
+        else if ((variant == NULL) || !rbl__polygonTable()) { TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: polygon frames cannot be drawn (%s)", rbl__state.problem); return 0; }
+        else
+        {
+            program = variant;
+            material.shader = variant->shader;
+            if (rbl__state.shadowPass != NULL) rbl__casterDepth(variant);
+            else
+            {
+                if (variant->key.desc.softParticles) rbl__bindSoftDepth(variant, &material);
+                if (variant->key.desc.shadowTransmittance) rbl__bindSceneTints(variant);
+            }
+            if (corners < 6) corners = 6;
+        }
+    }
     if ((fades != NULL) && !rbl__reserveStream(&buffer->fadeVboId, &buffer->fadeGpuCapacity, buffer->capacity, (int)sizeof(RblFade), "RblDrawInstanced", "fade")) return 0;
     int sort = rbl__passSort(desc.sort);        // back to front by pivot depth where colour blends
     if (sort != RBL_SORT_NONE)
@@ -6312,13 +6834,24 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
+    const int vertices = (corners > 0)? corners : 6;
+    if (corners > 0)
+    {
+        const float poly[4] = { (float)corners, (float)RBL__FRAME_TABLE_WIDTH, (float)rbl__state.polyTableBase, 0.0f };
+        int unit = RBL_FRAME_TABLE_TEXTURE_UNIT;
+        rlSetUniform(program->loc[RBL__U_POLYGON], poly, SHADER_UNIFORM_VEC4, 1);
+        rlActiveTextureSlot(unit);
+        rlEnableTexture(rbl__state.polyTableId);
+        rlSetUniform(program->loc[RBL__U_POLYGON_TABLE], &unit, SHADER_UNIFORM_INT, 1);
+    }
 
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
     rbl__bindInstanceFades(buffer, program, fadeUpload, n);
     rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
-    rbl__InstanceLayer layer = { program, &material, n };
+    rbl__InstanceLayer layer = { program, &material, n, vertices };
     rbl__drawLayers(sort, 0.0f, rbl__drawInstanceLayer, &layer);     // hybrid: solid alpha 1, as a batch's default
+    if (corners > 0) { rlActiveTextureSlot(RBL_FRAME_TABLE_TEXTURE_UNIT); rlDisableTexture(); }
     rbl__markDrawn(program);
     if (fadeUpload != NULL) for (int i = 0; i < RBL__FADE_ATTRIBUTES; i++) rlDisableVertexAttribute(rbl__fadeLocations[i]);
     rlDisableVertexArray();
@@ -7548,7 +8081,7 @@ static const char *const rbl__uniformNames[RBL__U_COUNT] = {
     "rblAlphaCutoff", "rblSpecularColor", "rblRoughMetal", "rblEmissiveColor", "rblEmissiveIntensity", "rblInstancing",
     "rblGAlbedo", "rblGNormal", "rblGParams", "rblGDepth", "rblGAccum", "rblInvView", "rblEye", "mvp",
     "rblOutput", "rblOutputScale", "rblDepthLinear", "rblInvP", "rblViewAxis", "rblSoftDepth", "rblSoftDepthTexel", "rblCasterIdOn", "rblCasterDepth", "rblFrameTable",
-    "rblTransmission", "rblRelief", "rblCasterTint", "rblGThin", "rblReliefIndex", "rblGridOrigin", "rblGridDims" };
+    "rblTransmission", "rblRelief", "rblCasterTint", "rblGThin", "rblReliefIndex", "rblGridOrigin", "rblGridDims", "rblPolygon", "rblPolygonTable" };
 
 static bool rbl__finiteNonNegative(float x) { return rbl__finite(x) && (x >= 0.0f); }
 
@@ -7805,11 +8338,18 @@ static void rbl__removeProgram(rbl__Program *p)
         rbl__removeProgram(v);
         i = -1;                     // the registry was reordered
     }
-    if (p->key.sprites) { for (int i = 0; i < rbl__state.programCount; i++) if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL; }
-    else if (p->spriteVariant != NULL)
+    if (p->key.sprites)
+        for (int i = 0; i < rbl__state.programCount; i++)
+        {
+            if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL;
+            if (rbl__state.programs[i]->polygonVariant == p) rbl__state.programs[i]->polygonVariant = NULL;
+        }
+    rbl__Program *own[2] = { p->spriteVariant, p->polygonVariant };     // (a sprite variant's own polygon variant goes with it)
+    p->spriteVariant = NULL; p->polygonVariant = NULL;
+    for (int k = 0; k < 2; k++)
     {
-        rbl__Program *v = p->spriteVariant;
-        p->spriteVariant = NULL;
+        rbl__Program *v = own[k];
+        if (v == NULL) continue;
         if (rbl__glUsable() && rbl__glIsLive(RBL__GL_PROGRAM, v->shader.id)) rlUnloadShaderProgram(v->shader.id);
         rbl__removeProgram(v);
     }
@@ -7891,7 +8431,8 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shading.shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
-    if (key->sprites) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
+    if (key->sprites & 1) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
+    if (key->sprites & 2) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_POLYGONS\n"); }
     // The thin target (RT4): every geometry variant writes it where the context has 5 draw buffers;
     // light passes of a G-buffer with it read it
     bool thinPass = (key->kind == RBL__KIND_PASS) && (d->transmission || key->gbufferRelief);
@@ -10693,6 +11234,10 @@ typedef struct rbl__AtlasState {
     rbl__AtlasPolyRef *polygonRefs; int polygonRefCap;
     Vector2 *polyPoints; int polyPointCount, polyPointCap; // each polygon's vertices, then its uvs
     unsigned short *polyIndices; int polyIndexCount, polyIndexCap;
+    rbl__Polygon *polyDraw;                                // Per polygon, what the draw paths read (made at publication)
+    Vector2 *polyFrac;                                     // ... its vertices as fractions of the frame's source
+    unsigned int *polySlots;                               // ... its slots (4 vertices each), every cut's
+    unsigned int polyFirst;                                // Handle of polygon 0 (0 = none registered)
     char **pools; int poolCount, poolCap;                  // name storage: one block per parsed text (and per path), never moved
     char *pool; size_t poolUsed, poolSize;                 // the current block
     int format;
@@ -10726,6 +11271,8 @@ static void rbl__atlasErrorf(rbl__AtlasState *s, long at, const char *fmt, ...)
 static void rbl__atlasFree(rbl__AtlasState *s)
 {
     if (s == NULL) return;
+    if (s->polyFirst != 0u) rbl__polygonUnregister(s->polyFirst);
+    RBL_FREE(s->polyDraw); RBL_FREE(s->polyFrac); RBL_FREE(s->polySlots);
     for (int i = 0; i < s->poolCount; i++) RBL_FREE(s->pools[i]);
     RBL_FREE(s->pools); RBL_FREE(s->frames); RBL_FREE(s->tags); RBL_FREE(s->pages); RBL_FREE(s->slices);
     RBL_FREE(s->polygons); RBL_FREE(s->polygonRefs); RBL_FREE(s->polyPoints); RBL_FREE(s->polyIndices);
@@ -11834,12 +12381,210 @@ static bool rbl__atlasParse(rbl__AtlasState *s, const char *text, int size, int 
     return ok;
 }
 
+// Orders edges by their vertex pair (smaller first), then by triangle corner
+static int rbl__compareEdges(const void *a, const void *b)
+{
+    const unsigned int *p = (const unsigned int *)a, *q = (const unsigned int *)b;
+    for (int i = 0; i < 3; i++) if (p[i] != q[i]) return (p[i] < q[i])? -1 : 1;
+    return 0;
+}
+
+// Scratch of the polygon preparation (grown as needed, freed at its end)
+typedef struct rbl__PolyScratch {
+    Vector2 *frac; int fracCount, fracCap;       // every polygon's vertices, then its cut points
+    unsigned int *slots; int slotCount, slotCap; // every polygon's slots, both cuts
+    unsigned int *tri, *piece, *edges; int triCap, pieceCap, edgeCap;
+} rbl__PolyScratch;
+
+static bool rbl__polyReserve(void **array, int *cap, int need, size_t elem)
+{
+    if (need <= *cap) return true;
+    int n = (*cap > 0)? *cap : 64;
+    while (n < need) { if (n > 0x3FFFFFFF/2) return false; n *= 2; }
+    void *p = RBL_REALLOC(*array, (size_t)n*elem);
+    if (p == NULL) return false;
+    *array = p;
+    *cap = n;
+    return true;
+}
+
+// Triangles tri[0..n) (vertex indices from first), cut along diagonal d into pieces wholly on one
+// side (a new vertex where an edge crosses it, exactly on it), appended to x->piece; their count or -1
+static int rbl__polyCut(rbl__PolyScratch *x, int first, int n, int d)
+{
+    int count = 0;
+    for (int t = 0; t < n; t++)
+    {
+        const unsigned int *v = x->tri + 3*t;
+        double f[3];
+        int neg = 0, pos = 0;
+        for (int c = 0; c < 3; c++)
+        {
+            const Vector2 p = x->frac[first + (int)v[c]];
+            f[c] = (d == 0)? (double)p.x - p.y : (double)p.x + p.y - 1.0;
+            neg += f[c] < 0.0; pos += f[c] > 0.0;
+        }
+        unsigned int poly[2][4];
+        int len[2] = { 0, 0 };
+        if ((neg == 0) || (pos == 0)) { poly[0][0] = v[0]; poly[0][1] = v[1]; poly[0][2] = v[2]; len[0] = 3; }
+        else
+        {
+            // Walk the edges: each vertex to its side, a crossing to both (Sutherland-Hodgman)
+            for (int c = 0; c < 3; c++)
+            {
+                int e = (c + 1)%3;
+                if (f[c] >= 0.0) poly[0][len[0]++] = v[c];
+                if (f[c] <= 0.0) poly[1][len[1]++] = v[c];
+                if ((f[c] < 0.0) != (f[e] < 0.0) && (f[c] != 0.0) && (f[e] != 0.0))
+                {
+                    if (!rbl__polyReserve((void **)&x->frac, &x->fracCap, x->fracCount + 1, sizeof(Vector2))) return -1;
+                    const Vector2 p = x->frac[first + (int)v[c]], q = x->frac[first + (int)v[e]];
+                    double k = f[c]/(f[c] - f[e]), a = p.x + k*((double)q.x - p.x);
+                    x->frac[x->fracCount] = rbl__v2((float)a, (float)((d == 0)? a : 1.0 - a));   // on the diagonal
+                    unsigned int at = (unsigned int)(x->fracCount++ - first);
+                    poly[0][len[0]++] = at; poly[1][len[1]++] = at;
+                }
+            }
+        }
+        for (int h = 0; h < 2; h++)
+            for (int c = 1; c + 1 < len[h]; c++)
+            {
+                if (!rbl__polyReserve((void **)&x->piece, &x->pieceCap, 3*(count + 1), sizeof(unsigned int))) return -1;
+                unsigned int *o = x->piece + 3*count;
+                o[0] = poly[h][0]; o[1] = poly[h][c]; o[2] = poly[h][c + 1];
+                const Vector2 A = x->frac[first + (int)o[0]], B = x->frac[first + (int)o[1]], C = x->frac[first + (int)o[2]];
+                if (((double)B.x - A.x)*((double)C.y - A.y) - ((double)C.x - A.x)*((double)B.y - A.y) != 0.0) count++;
+            }
+    }
+    return count;
+}
+
+// Pieces x->piece[0..n) paired across shared edges into slots of two (a, b, c) + (a, c, d), the
+// unpaired alone (a, b, c, c), appended to x->slots; false when out of memory
+static bool rbl__polyPair(rbl__PolyScratch *x, int n)
+{
+    if (!rbl__polyReserve((void **)&x->edges, &x->edgeCap, 3*n*3 + 3, sizeof(unsigned int)) ||
+        !rbl__polyReserve((void **)&x->slots, &x->slotCap, 4*(x->slotCount + n), sizeof(unsigned int))) return false;
+    unsigned char *paired = (unsigned char *)RBL_MALLOC((size_t)n + 1);
+    if (paired == NULL) return false;
+    const unsigned int *tri = x->piece;
+    for (int t = 0; t < n; t++)
+    {
+        paired[t] = 0;
+        for (int e = 0; e < 3; e++)
+        {
+            unsigned int u = tri[3*t + e], w = tri[3*t + (e + 1)%3], *o = x->edges + 3*(3*t + e);
+            o[0] = (u < w)? u : w; o[1] = (u < w)? w : u; o[2] = (unsigned int)(3*t + e);
+        }
+    }
+    qsort(x->edges, (size_t)n*3, 3*sizeof(unsigned int), rbl__compareEdges);
+    for (int t = 0; t < n; t++)
+    {
+        if (paired[t]) continue;
+        paired[t] = 1;
+        unsigned int *o = x->slots + 4*x->slotCount++;
+        o[0] = tri[3*t]; o[1] = tri[3*t + 1]; o[2] = tri[3*t + 2]; o[3] = tri[3*t + 2];
+        // A neighbour across one of t's edges (u -> w in t, w -> u in it): the slot starts at w
+        for (int e = 0; e < 3; e++)
+        {
+            unsigned int u = tri[3*t + e], w = tri[3*t + (e + 1)%3], lo0 = (u < w)? u : w, hi0 = (u < w)? w : u;
+            int lo = 0, hi = 3*n;
+            while (lo < hi)
+            {
+                int mid = (lo + hi)/2;
+                const unsigned int *m = x->edges + 3*mid;
+                if ((m[0] < lo0) || ((m[0] == lo0) && (m[1] < hi0))) lo = mid + 1; else hi = mid;
+            }
+            int found = -1;
+            for (int k = lo; (k < 3*n) && (x->edges[3*k] == lo0) && (x->edges[3*k + 1] == hi0) && (found < 0); k++)
+            {
+                int other = (int)x->edges[3*k + 2]/3, oe = (int)x->edges[3*k + 2]%3;
+                if (paired[other] || (tri[3*other + oe] != w)) continue;       // taken, or the same way round (folded)
+                found = other;
+                o[3] = tri[3*other + (oe + 2)%3];
+            }
+            if (found < 0) continue;
+            paired[found] = 1;
+            // t from w: (w, x, u) with x its third vertex; the neighbour (w, u, d)
+            o[0] = w; o[1] = tri[3*t + (e + 2)%3]; o[2] = u;
+            break;
+        }
+    }
+    RBL_FREE(paired);
+    return true;
+}
+
+// The draw paths' form of every polygon (rbl__Polygon): vertices as fractions of the frame's source
+// (from the file's texels), triangles of zero area dropped, the rest wound as the quad's triangles are
+// (clockwise in texel space, y down: the quad's (0,1,2) seen upright), cut along each frame diagonal
+// (rbl__polyCut) and as they are, each paired into slots (rbl__polyPair); then registered
+static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
+{
+    if (s->polygonCount == 0) return true;
+    rbl__PolyScratch x;
+    memset(&x, 0, sizeof(x));
+    s->polyDraw = (rbl__Polygon *)RBL_CALLOC((size_t)s->polygonCount, sizeof(rbl__Polygon));
+    int *firstSlot = (int *)RBL_MALLOC((size_t)s->polygonCount*3*sizeof(int) + sizeof(int)), *firstFrac = (int *)RBL_MALLOC((size_t)s->polygonCount*sizeof(int) + sizeof(int));
+    bool ok = (s->polyDraw != NULL) && (firstSlot != NULL) && (firstFrac != NULL);
+    for (int i = 0; ok && (i < s->polygonCount); i++)
+    {
+        const RblAtlasPolygon *p = &s->polygons[i];
+        const RblAtlasFrame *f = &s->frames[s->polygonRefs[i].frame];
+        const int first = x.fracCount;
+        firstFrac[i] = first;
+        ok = rbl__polyReserve((void **)&x.frac, &x.fracCap, first + p->vertexCount, sizeof(Vector2)) &&
+             rbl__polyReserve((void **)&x.tri, &x.triCap, p->indexCount, sizeof(unsigned int));
+        if (!ok) break;
+        const double sx = f->source.x, sy = f->source.y, sw = fabs((double)f->source.width), sh = fabs((double)f->source.height);
+        for (int v = 0; v < p->vertexCount; v++)
+        {
+            double a = (sw > 0.0)? ((double)p->uvs[v].x - sx)/sw : 0.0, b = (sh > 0.0)? ((double)p->uvs[v].y - sy)/sh : 0.0;
+            x.frac[first + v] = rbl__v2((float)fmin(fmax(a, 0.0), 1.0), (float)fmin(fmax(b, 0.0), 1.0));
+        }
+        x.fracCount += p->vertexCount;
+        int n = 0;
+        for (int t = 0; t < p->indexCount/3; t++)
+        {
+            unsigned int c0 = p->indices[3*t], c1 = p->indices[3*t + 1], c2 = p->indices[3*t + 2];
+            const Vector2 A = x.frac[first + (int)c0], B = x.frac[first + (int)c1], C = x.frac[first + (int)c2];
+            double area2 = ((double)B.x - A.x)*((double)C.y - A.y) - ((double)C.x - A.x)*((double)B.y - A.y);
+            if (area2 == 0.0) continue;
+            x.tri[3*n] = c0; x.tri[3*n + 1] = (area2 < 0.0)? c1 : c2; x.tri[3*n + 2] = (area2 < 0.0)? c2 : c1;
+            n++;
+        }
+        for (int d = 0; ok && (d < 3); d++)
+        {
+            int pieces = (d < 2)? rbl__polyCut(&x, first, n, d) : n;
+            if ((d == 2) && rbl__polyReserve((void **)&x.piece, &x.pieceCap, 3*n + 3, sizeof(unsigned int))) memcpy(x.piece, x.tri, 3*(size_t)n*sizeof(unsigned int));
+            else if (d == 2) pieces = -1;
+            firstSlot[3*i + d] = x.slotCount;
+            ok = (pieces >= 0) && rbl__polyPair(&x, pieces);
+            if (ok) { s->polyDraw[i].triangles[d] = pieces; s->polyDraw[i].slotCount[d] = x.slotCount - firstSlot[3*i + d]; }
+        }
+    }
+    if (ok)
+    {
+        // The scratch becomes the atlas's (the rows stopped moving)
+        s->polyFrac = x.frac; s->polySlots = x.slots;
+        x.frac = NULL; x.slots = NULL;
+        for (int i = 0; i < s->polygonCount; i++)
+        {
+            s->polyDraw[i].frac = s->polyFrac + firstFrac[i];
+            for (int d = 0; d < 3; d++) s->polyDraw[i].slots[d] = s->polySlots + 4*(size_t)firstSlot[3*i + d];
+        }
+    }
+    RBL_FREE(x.frac); RBL_FREE(x.slots); RBL_FREE(x.tri); RBL_FREE(x.piece); RBL_FREE(x.edges);
+    RBL_FREE(firstSlot); RBL_FREE(firstFrac);
+    if (!ok) { rbl__atlasErrorf(s, -1, "out of memory for %d polygons", s->polygonCount); return false; }
+    s->polyFirst = rbl__polygonRegister(s->polyDraw, s->polygonCount);
+    if (s->polyFirst == 0u) { rbl__atlasErrorf(s, -1, "no room for %d more polygon frames (%d handles, RBL_FRAME_POLYGON) or out of memory", s->polygonCount, (int)RBL__POLYGON_HANDLES); return false; }
+    return true;
+}
+
 static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
 {
     RblAtlas a;
     memset(&a, 0, sizeof(a));
-    a.id = rbl__liveAdd(s);
-    if (a.id == 0) return a;            // out of memory: the caller fails the load
     s->format = format;
     // the tables stopped moving: polygons point into their rows, frames at their polygons
     for (int i = 0; i < s->polygonCount; i++)
@@ -11851,6 +12596,10 @@ static RblAtlas rbl__atlasPublish(rbl__AtlasState *s, int format)
         p->indices = s->polyIndices + r->index;
         s->frames[r->frame].polygon = p;
     }
+    if (!rbl__atlasPolygonsPrepare(s)) return a;
+    for (int i = 0; i < s->polygonCount; i++) s->frames[s->polygonRefs[i].frame].flags |= (s->polyFirst + (unsigned int)i) << RBL__POLYGON_SHIFT;
+    a.id = rbl__liveAdd(s);
+    if (a.id == 0) return a;            // out of memory: the caller fails the load
     a.format = format;
     a.frameCount = s->frameCount; a.tagCount = s->tagCount; a.pageCount = s->pageCount; a.sliceCount = s->sliceCount;
     a.frames = s->frames; a.tags = s->tags; a.pages = s->pages; a.slices = s->slices;
@@ -12017,7 +12766,7 @@ bool RblAtlasBillboard(const RblAtlas *atlas, int frame, float worldScale, RblBi
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasQuad(atlas, frame, worldScale, "RblAtlasBillboard", &src, &size, &origin, &flags)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
-    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->flags = (billboard->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -12027,7 +12776,7 @@ bool RblAtlasInstance(const RblAtlas *atlas, int frame, float worldScale, RblIns
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasQuad(atlas, frame, worldScale, "RblAtlasInstance", &src, &size, &origin, &flags)) return false;
     instance->source = src; instance->size = size; instance->origin = origin;
-    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    instance->flags = (instance->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -12101,7 +12850,7 @@ bool RblAtlasBillboardFade(const RblAtlas *atlas, int frame, int nextFrame, floa
     Rectangle src; Vector2 size, origin; unsigned int flags; RblFade f;
     if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasBillboardFade", &src, &size, &origin, &flags, &f)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
-    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->flags = (billboard->flags & ~RBL__FRAME_BITS) | flags;
     *fade = f;
     return true;
 }
@@ -12112,7 +12861,7 @@ bool RblAtlasInstanceFade(const RblAtlas *atlas, int frame, int nextFrame, float
     Rectangle src; Vector2 size, origin; unsigned int flags; RblFade f;
     if (!rbl__atlasFadeQuad(atlas, frame, nextFrame, weight, worldScale, "RblAtlasInstanceFade", &src, &size, &origin, &flags, &f)) return false;
     instance->source = src; instance->size = size; instance->origin = origin;
-    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    instance->flags = (instance->flags & ~RBL__FRAME_BITS) | flags;
     *fade = f;
     return true;
 }
@@ -12148,7 +12897,7 @@ static bool rbl__atlasSliceQuad(const RblAtlas *atlas, int slice, int frame, flo
     *source = rbl__atlasSubSource(f, (l - t.x)/t.width, (r - t.x)/t.width, (top - t.y)/t.height, (bottom - t.y)/t.height);
     *size = rbl__v2((float)((r - l)*k), (float)((bottom - top)*k));
     *origin = rbl__v2((float)((key->pivot.x - l)*k), (float)((bottom - key->pivot.y)*k));
-    *flags = f->flags;
+    *flags = f->flags & RBL_FRAME_ROTATED;
     return true;
 }
 
@@ -12158,7 +12907,7 @@ bool RblAtlasSliceBillboard(const RblAtlas *atlas, int slice, int frame, float w
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceBillboard", &src, &size, &origin, &flags)) return false;
     billboard->source = src; billboard->size = size; billboard->origin = origin;
-    billboard->flags = (billboard->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    billboard->flags = (billboard->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -12168,7 +12917,7 @@ bool RblAtlasSliceInstance(const RblAtlas *atlas, int slice, int frame, float wo
     Rectangle src; Vector2 size, origin; unsigned int flags;
     if (!rbl__atlasSliceQuad(atlas, slice, frame, worldScale, "RblAtlasSliceInstance", &src, &size, &origin, &flags)) return false;
     instance->source = src; instance->size = size; instance->origin = origin;
-    instance->flags = (instance->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+    instance->flags = (instance->flags & ~RBL__FRAME_BITS) | flags;
     return true;
 }
 
@@ -12353,7 +13102,7 @@ int RblUpdateSpriteInstances(RblSpritePlayer *players, RblInstance *instances, i
         unsigned int flags;
         const RblAtlasFrame *f = &s->frames[players[i].frame];
         rbl__atlasFrameQuad(f, unit[f->page], &in->source, &in->size, &in->origin, &flags);
-        in->flags = (in->flags & ~(unsigned int)RBL_FRAME_ROTATED) | flags;
+        in->flags = (in->flags & ~RBL__FRAME_BITS) | flags;
         done++;
     }
     if (skipped > 0) TraceLog(LOG_WARNING, "RBL: RblUpdateSpriteInstances: %i players skipped (instances untouched): %s", skipped, why);
@@ -12416,7 +13165,6 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
 // Module Functions Definition: resident sprite buffers   >>sprites
 //----------------------------------------------------------------------------------
 #define RBL__SPRITE_CHUNK 256               // Sprites per culling chunk (bounds kept per chunk)
-#define RBL__FRAME_TABLE_WIDTH 1024         // Texels per frame-table row (rows: at most 2048, ES 3's least texture size)
 
 typedef struct rbl__SpriteBufferState {
     RblSpriteInstance *sprites;     // CPU copy: chunk bounds are rebuilt from it after an update
@@ -12426,6 +13174,7 @@ typedef struct rbl__SpriteBufferState {
     int frameCount, tagCount;       // Of the atlas the table was built from (what updates are checked against)
     float radius;                   // Farthest quad corner from the pivot over every frame, per unit of scale
     int tableWidth;
+    int corners;                    // Most corners of a polygon frame (0: the atlas has none, quads only)
     unsigned int vaoId, vboId, tableId;
 } rbl__SpriteBufferState;
 
@@ -12470,9 +13219,11 @@ static int rbl__spriteTimeline(int from, int to, int dir, int *out)
 }
 
 // The frame table of lit_instanced.vs.glsl (RGBA32F texels, layout documented there); NULL when out
-// of memory. *texels: texels used; *radius: farthest quad corner from the pivot per unit of scale
-static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float *radius)
+// of memory. *texels: texels used; *radius: farthest quad corner from the pivot per unit of scale;
+// *corners: the most corners of a polygon frame (0: none)
+static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float *radius, int *corners)
 {
+    *corners = 0;
     int entries = 0;
     for (int t = -1; t < s->tagCount; t++)
     {
@@ -12481,7 +13232,12 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
         entries += rbl__spriteTimeline(from, to, dir, NULL);
     }
     int base = 3*s->frameCount, entryBase = base + 2*(s->tagCount + 1);
-    int n = entryBase + entries;
+    int n = entryBase + entries, polygonBase = n;
+    for (int k = 0; k < s->frameCount; k++)
+    {
+        const rbl__Polygon *poly = (s->frames[k].polygon != NULL)? &s->polyDraw[s->frames[k].polygon - s->polygons] : NULL;
+        if (poly != NULL) n += 2 + (int)rbl__polygonTexels(poly);     // its header (each cut's first texel and count), its corners
+    }
     float *table = (float *)RBL_CALLOC((size_t)n*4, sizeof(float));
     int *order = (int *)RBL_MALLOC((size_t)(2*s->frameCount + 2)*sizeof(int));
     if ((table == NULL) || (order == NULL)) { RBL_FREE(table); RBL_FREE(order); return NULL; }
@@ -12495,6 +13251,21 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
         t[0] = src.x; t[1] = src.y; t[2] = src.width; t[3] = src.height;
         t[4] = size.x; t[5] = size.y; t[6] = origin.x; t[7] = origin.y;
         t[8] = (float)rbl__spriteDuration(s, k); t[9] = (float)(flags & RBL_FRAME_ROTATED);
+        if (f->polygon != NULL)
+        {
+            // A polygon frame: its two header texels (each cut's first corner texel and count, as the
+            // polygon table's), then its corners (lit_instanced.vs.glsl's rblPolygonSpan)
+            const rbl__Polygon *poly = &s->polyDraw[f->polygon - s->polygons];
+            float *h = table + (size_t)polygonBase*4;
+            t[10] = (float)polygonBase; t[11] = (float)(1 + rbl__polygonMaxCorners(poly));
+            polygonBase += 2;
+            for (int d = 0; d < 3; d++)
+            {
+                h[2*d] = (float)polygonBase; h[2*d + 1] = (float)(3*poly->triangles[d]);
+                polygonBase += rbl__polygonCorners(poly, d, table + (size_t)polygonBase*4);
+            }
+            if (rbl__polygonMaxCorners(poly) > *corners) *corners = rbl__polygonMaxCorners(poly);
+        }
         // Either flip mirrors the quad about the pivot: the corner reach is the same
         double x = fmax(fabs((double)origin.x), fabs((double)size.x - origin.x)), y = fmax(fabs((double)origin.y), fabs((double)size.y - origin.y));
         far = fmax(far, sqrt(x*x + y*y));
@@ -12551,9 +13322,9 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     if ((capacity < 0) || (capacity > RBL_MAX_INSTANCES)) { TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: capacity %i outside 0..%i", capacity, RBL_MAX_INSTANCES); return buffer; }
     if (rbl__needsGlsl3("sprite buffers") != NULL) { TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: %s", rbl__state.problem); return buffer; }
     if (capacity == 0) capacity = RBL_BATCH_DEFAULT_CAPACITY;
-    int texels = 0;
+    int texels = 0, corners = 0;
     float radius = 0.0f;
-    float *table = rbl__buildFrameTable(s, &texels, &radius);
+    float *table = rbl__buildFrameTable(s, &texels, &radius, &corners);
     int rows = (texels + RBL__FRAME_TABLE_WIDTH - 1)/RBL__FRAME_TABLE_WIDTH;
     if ((table != NULL) && (rows > 2048)) { RBL_FREE(table); TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: frame table of %i texels exceeds 1024 x 2048", texels); return buffer; }
     int chunks = (capacity + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
@@ -12577,6 +13348,7 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     RBL_FREE(table);
     b->capacity = capacity; b->chunks = chunks; b->radius = radius;
     b->frameCount = s->frameCount; b->tagCount = s->tagCount; b->tableWidth = RBL__FRAME_TABLE_WIDTH;
+    b->corners = corners;
     b->tableId = rlLoadTexture(padded, RBL__FRAME_TABLE_WIDTH, rows, RL_PIXELFORMAT_UNCOMPRESSED_R32G32B32A32, 1);
     RBL_FREE(padded);
     if (b->tableId != 0)
@@ -12783,6 +13555,15 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     // stage pays nothing for reading sprites
     rbl__Program *variant = rbl__spriteVariant(program);
     if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: resident-sprite variant unavailable (%s)", rbl__state.problem); return 0; }
+    // A polygon sheet: the sprite variant's polygon variant, each sprite drawn with the sheet's most
+    // corners (cross-fade programs draw quads: the union of two frames)
+    int vertices = 6;
+    if ((b->corners > 0) && !variant->key.desc.crossFade)
+    {
+        variant = rbl__polygonVariant(variant);
+        if (variant == NULL) { TraceLog(LOG_WARNING, "RBL: RblDrawSpriteBuffer: polygon variant unavailable (%s)", rbl__state.problem); return 0; }
+        vertices = (b->corners > 6)? b->corners : 6;
+    }
     program = variant;
     material.shader = variant->shader;
     if (rbl__state.shadowPass != NULL) rbl__casterDepth(variant);
@@ -12817,13 +13598,18 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     rlActiveTextureSlot(unit);
     rlEnableTexture(b->tableId);
     rlSetUniform(program->loc[RBL__U_FRAME_TABLE], &unit, SHADER_UNIFORM_INT, 1);
+    if (program->key.sprites & 2)
+    {
+        const float poly[4] = { (float)vertices, (float)b->tableWidth, 0.0f, 0.0f };
+        rlSetUniform(program->loc[RBL__U_POLYGON], poly, SHADER_UNIFORM_VEC4, 1);
+    }
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(b->vaoId);
     int drawn = 0;
     for (int r = 0; r < runs; r++)
     {
         rbl__spriteAttributes(b, b->runs[2*r]);
-        rlDrawVertexArrayInstanced(0, 6, b->runs[2*r + 1]);
+        rlDrawVertexArrayInstanced(0, vertices, b->runs[2*r + 1]);
         drawn += b->runs[2*r + 1];
     }
     if (b->runs[0] != 0) rbl__spriteAttributes(b, 0);

@@ -55,11 +55,33 @@ uniform highp sampler2D rblFrameTable;
 uniform vec4 rblInstancing[7];
 #endif
 
+#ifdef RBL_POLYGONS
+// Polygon frames (the variant the header compiles for draws with RBL_FRAME_POLYGON instances or a
+// sprite buffer of a polygon sheet): rblPolygon x: vertices drawn per instance (the draw's largest
+// polygon's corners, 6 at least; a quad uses 6, the rest collapse), y: table width in texels, z: lowest
+// handle in the polygon table. A polygon is kept cut along each frame diagonal (a = b, a + b = 1: the
+// quad's two triangles meet on one of them; rounded draws) and uncut (flat draws), each cut as
+// corners: pairs (a, b) of fractions of its frame's source, two a texel, 3 per triangle (each turning
+// as the quad's (0, 1, 2) seen from the front). Its two header texels hold each cut's first corner
+// texel and corner count; the plain variant finds them at texel 2 (handle - z) of rblPolygonTable, the
+// resident-sprite variant at the frame table texel that frame k's texel 3k + 2 names in z (w: 1 + its
+// most corners, 0 for a quad frame)
+uniform vec4 rblPolygon;
+#ifndef RBL_SPRITE_BUFFER
+uniform highp sampler2D rblPolygonTable;
+#endif
+#endif
+
 // The instance being expanded, from either layout (main reads it once)
 vec4 rblPivot;          // xyz pivot, w rotation in degrees
 vec4 rblSizeOrigin;     // size (negative mirrors), origin
 vec4 rblSource;         // texels (all zero = whole texture)
 float rblFlagBits;      // RblBillboardFlags
+#ifdef RBL_POLYGONS
+vec4 rblPolygonSpan;    // The instance's polygon header: both diagonal cuts' first corner texel and count
+vec2 rblPolygonFlat;    // ... and the uncut triangles'
+bool rblPolygonal;      // ... when it has one (else the quad)
+#endif
 #ifdef RBL_CROSS_FADE
 vec4 rblFadeSource, rblFadeClip0, rblFadeClip1;
 float rblFadeWeight, rblFadeFlagBits;
@@ -301,6 +323,73 @@ void rblBillboardVertex(int corner, vec3 r, vec3 u, vec3 n, vec2 textureSize, fl
     tangent = vec4(tv, w);
 }
 
+#ifdef RBL_POLYGONS
+vec4 rblPolygonTexel(int i)
+{
+    int w = int(rblPolygon.y + 0.5);
+#ifdef RBL_SPRITE_BUFFER
+    return texelFetch(rblFrameTable, ivec2(i % w, i / w), 0);
+#else
+    return texelFetch(rblPolygonTable, ivec2(i % w, i / w), 0);
+#endif
+}
+
+// The instance's polygon as flat draws take it, or cut along the diagonal its quad's triangles meet
+// on (rbl__billboardCut): first corner texel, corner count
+vec2 rblPolygonCut()
+{
+    if (!(rblInstancing[1].w > 0.0)) return rblPolygonFlat;
+    bool flipU = (rblSizeOrigin.x < 0.0) != (rblSource.z < 0.0);
+    bool flipV = (rblSizeOrigin.y < 0.0) != (rblSource.w < 0.0);
+    bool rotated = (int(rblFlagBits + 0.5) & 1) != 0;
+    return ((flipU != flipV) != rotated)? rblPolygonSpan.xy : rblPolygonSpan.zw;
+}
+
+// Corner k of the instance's polygon (its cut from first) with the quad's fields there: position and
+// texture coordinate of the frame point, normal and tangent interpolated over the quad's triangle
+// (0, 1, 2) or (0, 2, 3) holding it, as the rasteriser would over the quad (rbl__expandQuad, the CPU
+// twin). A mirror turns the triangles over: corners 1 and 2 swap. Returns sprite (s right, t down).
+vec2 rblPolygonVertex(int first, int k, vec3 r, vec3 u, vec3 n, vec2 textureSize, float roundness,
+                      out vec3 position, out vec2 texCoord, out vec3 normal, out vec4 tangent)
+{
+    int flags = int(rblFlagBits + 0.5);
+    vec2 size = rblSizeOrigin.xy, origin = rblSizeOrigin.zw;
+    vec4 src = rblSource;
+    if (src == vec4(0.0)) src = vec4(0.0, 0.0, textureSize);
+    bool flipU = (size.x < 0.0) != (src.z < 0.0);
+    bool flipV = (size.y < 0.0) != (src.w < 0.0);
+    bool rotated = (flags & 1) != 0;
+    int m = k - (k/3)*3;
+    if (flipU != flipV) k += (m == 1)? 1 : ((m == 2)? -1 : 0);
+    vec4 texel = rblPolygonTexel(first + k/2);
+    vec2 ab = ((k & 1) != 0)? texel.zw : texel.xy;
+    float s = rotated? ab.y : ab.x, t = rotated? 1.0 - ab.x : ab.y;
+    if (flipU) s = 1.0 - s;
+    if (flipV) t = 1.0 - t;
+    float up = 1.0 - t;
+    vec3 un = u;
+    rblNormalizeTo(u, un);
+    float ulen = length(u), sx = abs(size.x), sy = abs(size.y);
+    float x = (-origin.x)*(1.0 - s) + (sx - origin.x)*s, y = (-origin.y)*(1.0 - up) + (sy*ulen - origin.y)*up;
+    position = rblPivot.xyz + r*x + un*y;
+    texCoord = (src.xy + ab*abs(src.zw))/textureSize;
+    vec3 pc, n1, n2;
+    vec2 tc;
+    vec4 g1, g2;
+    rblBillboardVertex(0, r, u, n, textureSize, roundness, pc, tc, normal, tangent);
+    if (clamp(roundness, 0.0, 1.0) > 0.0)
+    {
+        bool lower = s >= up;
+        vec3 w = lower? vec3(1.0 - s, s - up, up) : vec3(1.0 - up, s, up - s);
+        rblBillboardVertex(lower? 1 : 2, r, u, n, textureSize, roundness, pc, tc, n1, g1);
+        rblBillboardVertex(lower? 2 : 3, r, u, n, textureSize, roundness, pc, tc, n2, g2);
+        normal = normal*w.x + n1*w.y + n2*w.z;
+        tangent = vec4(tangent.xyz*w.x + g1.xyz*w.y + g2.xyz*w.z, tangent.w);
+    }
+    return vec2(s, t);
+}
+#endif
+
 #ifdef RBL_CROSS_FADE
 // Texture coordinate of the corner at sprite (cs right, ct down) in frame src (all zero = the whole
 // texture), as rblBillboardVertex, and the frame's +U (T) and +V (V) in the quad's (right, up) plane
@@ -408,7 +497,13 @@ void rblReadSprite()
     rblPivot = vec4(rblInstancePosition.xyz, word.x*(360.0/65536.0));
     rblSizeOrigin = quad;
     rblSource = rblTable(3*frame);
-    rblFlagBits = rblTable(3*frame + 2).y + (((mode & 4u) != 0u)? 2.0 : 0.0);
+    vec4 frameBits = rblTable(3*frame + 2);
+    rblFlagBits = frameBits.y + (((mode & 4u) != 0u)? 2.0 : 0.0);
+#ifdef RBL_POLYGONS
+    rblPolygonal = frameBits.w > 0.5;
+    rblPolygonSpan = rblPolygonal? rblTable(int(frameBits.z + 0.5)) : vec4(0.0);
+    rblPolygonFlat = rblPolygonal? rblTable(int(frameBits.z + 0.5) + 1).xy : vec2(0.0);
+#endif
 #ifdef RBL_CROSS_FADE
     rblFadeSource = rblTable(3*next);
     rblFadeFlagBits = rblTable(3*next + 2).y;
@@ -428,6 +523,25 @@ void main()
     rblFadeSource = rblInstanceFadeSource; rblFadeWeight = rblInstanceFadeWeight; rblFadeFlagBits = rblInstanceFadeFlags;
     rblFadeClip0 = rblInstanceFadeClip; rblFadeClip1 = rblInstanceFadeClip2;
 #endif
+#ifdef RBL_POLYGONS
+    // The handle in flags bits 4..23 (flags from 2^24 up hold none: the float is exact below it)
+    uint handle = (rblFlagBits < 16777216.0)? (uint(rblFlagBits + 0.5) >> 4) & 0xFFFFFu : 0u;
+    rblPolygonal = handle != 0u;
+    int header = 2*(int(handle) - int(rblPolygon.z + 0.5));
+    rblPolygonSpan = rblPolygonal? rblPolygonTexel(header) : vec4(0.0);
+    rblPolygonFlat = rblPolygonal? rblPolygonTexel(header + 1).xy : vec2(0.0);
+#endif
+#endif
+#ifdef RBL_POLYGONS
+    // Past the instance's corners (a quad's 6, or its polygon's): one point outside the view, so the
+    // padding triangles have no area
+    vec2 cut = rblPolygonal? rblPolygonCut() : vec2(0.0, 6.0);
+    if (gl_VertexID >= int(cut.y + 0.5))
+    {
+        fragPosition = vec3(0.0); fragTexCoord = vec2(0.0); fragColor = vec4(0.0); fragNormal = vec3(0.0, 0.0, 1.0); fragTangent = vec4(1.0, 0.0, 0.0, 1.0);
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
 #endif
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     vec3 eye = rblInstancing[0].xyz;
@@ -464,6 +578,13 @@ void main()
         u = u*sc.y + nu*sc.x;
     }
     vec3 p;
+#ifdef RBL_POLYGONS
+    vec2 polygonPoint = vec2(-1.0);
+    if (rblPolygonal)
+        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
+                                        p, fragTexCoord, fragNormal, fragTangent);
+    else
+#endif
     rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
                        p, fragTexCoord, fragNormal, fragTangent);
     p += shift;
@@ -474,6 +595,9 @@ void main()
 #ifdef RBL_CROSS_FADE
     int corner = cornerOf[gl_VertexID % 6];
     float cs = (corner == 1 || corner == 2)? 1.0 : 0.0, ct = (corner < 2)? 1.0 : 0.0;
+#ifdef RBL_POLYGONS
+    if (polygonPoint.x >= 0.0) { cs = polygonPoint.x; ct = polygonPoint.y; }
+#endif
     vec2 textureSize = vec2(rblInstancing[2].w, rblInstancing[3].w), t1, v1, t2, v2;
     rblFrameTexCoord(rblSource, (int(rblFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t1, v1);
     fragTexCoord2 = rblFrameTexCoord(rblFadeSource, (int(rblFadeFlagBits + 0.5) & 1) != 0, rblSizeOrigin.xy, cs, ct, textureSize, t2, v2);

@@ -26,6 +26,7 @@
 #include "test_deferred_thin.c"
 #include "test_cull.c"
 #include "test_clustered.c"
+#include "test_polygon.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_BATCH_TESTS,
@@ -48,6 +49,7 @@ static const RtTest rblGpuTests[] = {
         RBL_DEFERRED_THIN_TESTS,
         RBL_CULL_TESTS,
         RBL_CLUSTERED_TESTS,
+        RBL_POLYGON_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

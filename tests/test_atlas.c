@@ -699,7 +699,8 @@ static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_vali
     // "rot": flat arrays; the frame is stored turned clockwise in the 8x16 block at (40, 0): upright
     // (x, y) lies at texel (40 + 8 - y, x)
     p = a.frames[1].polygon;
-    RT_CHECK(p != NULL && p->vertexCount == 3 && p->indexCount == 3 && a.frames[1].flags == RBL_FRAME_ROTATED, "rot: polygon");
+    RT_CHECK(p != NULL && p->vertexCount == 3 && p->indexCount == 3 && (a.frames[1].flags & ~(unsigned int)RBL_FRAME_POLYGON) == RBL_FRAME_ROTATED, "rot: polygon");
+    RT_CHECK((a.frames[0].flags & RBL_FRAME_POLYGON) != 0 && (a.frames[1].flags & RBL_FRAME_POLYGON) != 0 && (a.frames[0].flags & RBL_FRAME_POLYGON) != (a.frames[1].flags & RBL_FRAME_POLYGON), "polygon handles %#x %#x", a.frames[0].flags, a.frames[1].flags);
     bad = 0;
     for (int i = 0; p != NULL && i < 3; i++) bad += (p->uvs[i].x != 40.0f + 8.0f - p->vertices[i].y) || (p->uvs[i].y != p->vertices[i].x);
     RT_CHECK(p != NULL && bad == 0 && p->indices[0] == 0 && p->indices[1] == 1 && p->indices[2] == 2 && fabs(triArea2(p->vertices[0], p->vertices[1], p->vertices[2]))/2.0 == 64.0, "rot: %d texels off its mapping", bad);
@@ -746,6 +747,138 @@ static void test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_vali
         RT_CHECK(!RblIsAtlasValid(a) && atlasWarnLines == 1, "broken polygon %d: valid %d, %d lines (%s)", i, RblIsAtlasValid(a), atlasWarnLines, atlasLastLine);
     }
     atlasLogEnd();
+}
+
+#include "polygon_fixture.h"
+
+// Twice the signed area of (p, q, r) projected on n
+static double polyArea2On(const float *p, const float *q, const float *r, const double n[3])
+{
+    double u[3] = { (double)q[0] - p[0], (double)q[1] - p[1], (double)q[2] - p[2] }, v[3] = { (double)r[0] - p[0], (double)r[1] - p[1], (double)r[2] - p[2] };
+    double c[3] = { u[1]*v[2] - u[2]*v[1], u[2]*v[0] - u[0]*v[2], u[0]*v[1] - u[1]*v[0] };
+    return c[0]*n[0] + c[1]*n[1] + c[2]*n[2];
+}
+
+// Polygon frames as the batch draws them (RblBillboardQuads) against a double-precision reference
+// built from the quad (RblBillboardVertices, itself checked against one): each vertex sits where the
+// quad puts the texel the file names (sprite (s,t) from the frame fractions (a,b): upright s = a,
+// t = b; stored turned s = b, t = 1 - a; a mirror flips its axis), with the quad's normal and tangent
+// there (affine over the quad's triangle holding it); the triangles face as the quad does, with
+// rounded normals each lies in one of the quad's two triangles (cut along its diagonal; flat ones
+// keep the file's), and they cover the hand-derived area
+static void test_atlas_polygon_quads_match_a_double_reference_of_the_quads_fields(void)
+{
+    RblAtlas a = atlasFromText(polyFixture);
+    RT_CHECK(RblIsAtlasValid(a) && a.frameCount == 3, "fixture");
+    if (!RblIsAtlasValid(a) || a.frameCount != 3) { RblUnloadAtlas(&a); return; }
+    Camera3D cam; memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 3, 4, 9 }; cam.target = (Vector3){ 0.5f, 0.2f, 0 }; cam.up = (Vector3){ 0, 1, 0 }; cam.fovy = 45; cam.projection = CAMERA_PERSPECTIVE;
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    int configs = 0, badPos = 0, badFrame = 0, badTex = 0, badFace = 0, badArea = 0, badCount = 0, badSide = 0, mostQuads = 0;
+    double worstPos = 0.0, worstFrame = 0.0;
+    for (int k = 0; k < 3; k++)
+        for (int facing = 0; facing < 4; facing++)
+            for (int mirror = 0; mirror < 4; mirror++)
+                for (int variant = 0; variant < 3; variant++)
+                {
+                    RblBillboard b; memset(&b, 0, sizeof(b));
+                    RT_CHECK(RblAtlasBillboard(&a, k, 0.05f, &b), "billboard");
+                    b.position = (Vector3){ 0.3f*k, 0.1f*mirror, -0.2f*facing };
+                    b.facing = facing;
+                    if (facing == RBL_FACING_FIXED) { b.axis = (Vector3){ 0.3f, 0.2f, 1 }; b.up = (Vector3){ 0, 1, 0.1f }; }
+                    if (mirror & 1) b.size.x = -b.size.x;
+                    if (mirror & 2) b.size.y = -b.size.y;
+                    b.rotation = (variant == 1)? 37.0f : 0.0f;
+                    b.roundness = (variant == 0)? 0.0f : 0.6f;
+                    if (variant == 2) b.flags |= RBL_ROUND_CYLINDER;
+                    RblVertex q[4], v[16];
+                    int n = RblBillboardQuads(&view, POLY_SHEET, POLY_SHEET, &b, NULL, 0);
+                    if (!RblBillboardVertices(&view, POLY_SHEET, POLY_SHEET, &b, q) || (n < 1) || (n > 16) || (RblBillboardQuads(&view, POLY_SHEET, POLY_SHEET, &b, v, 16) != n)) { badCount++; continue; }
+                    if (n > mostQuads) mostQuads = n;
+                    configs++;
+                    const RblAtlasFrame *f = &a.frames[k];
+                    const RblAtlasPolygon *poly = f->polygon;
+                    bool rotated = (f->flags & RBL_FRAME_ROTATED) != 0, flipU = b.size.x < 0, flipV = b.size.y < 0;
+                    double qn[3];
+                    {
+                        double e1[3], e3[3];
+                        for (int e = 0; e < 3; e++) { e1[e] = (double)q[1].position[e] - q[0].position[e]; e3[e] = (double)q[3].position[e] - q[0].position[e]; }
+                        qn[0] = e1[1]*e3[2] - e1[2]*e3[1]; qn[1] = e1[2]*e3[0] - e1[0]*e3[2]; qn[2] = e1[0]*e3[1] - e1[1]*e3[0];
+                    }
+                    double extent = fabs(b.size.x) + fabs(b.size.y) + 1.0, area = 0.0;
+                    int tris = 0;
+                    double side[16][4];
+                    for (int i = 0; i < 4*n; i++)
+                    {
+                        // the texel is the file's vertex, or a point of a polygon edge on a frame diagonal (a cut)
+                        double tu = v[i].texcoord[0]*(double)POLY_SHEET, tv = v[i].texcoord[1]*(double)POLY_SHEET;
+                        double fa = (tu - f->block.x)/f->block.width, fb = (tv - f->block.y)/f->block.height;
+                        int match = -1;
+                        for (int j = 0; j < poly->vertexCount; j++) if ((fabs(tu - poly->uvs[j].x) < 1e-4) && (fabs(tv - poly->uvs[j].y) < 1e-4)) match = j;
+                        bool onDiagonal = (fabs(fa - fb) < 1e-6) || (fabs(fa + fb - 1.0) < 1e-6);
+                        if ((match < 0) && !onDiagonal) { badTex++; continue; }
+                        double s = rotated? fb : fa, t = rotated? 1.0 - fa : fb;
+                        if (flipU) s = 1.0 - s;
+                        if (flipV) t = 1.0 - t;
+                        double up = 1.0 - t;
+                        side[i/4][i%4] = s - up;
+                        int i1 = (s >= up)? 1 : 2, i2 = (s >= up)? 2 : 3;
+                        double w0 = (s >= up)? 1.0 - s : 1.0 - up, w1 = (s >= up)? s - up : s, w2 = (s >= up)? up : up - s;
+                        for (int e = 0; e < 3; e++)
+                        {
+                            double pr = q[0].position[e] + s*((double)q[1].position[e] - q[0].position[e]) + up*((double)q[3].position[e] - q[0].position[e]);
+                            double nr = w0*q[0].normal[e] + w1*q[i1].normal[e] + w2*q[i2].normal[e];
+                            double tr = w0*q[0].tangent[e] + w1*q[i1].tangent[e] + w2*q[i2].tangent[e];
+                            worstPos = fmax(worstPos, fabs(v[i].position[e] - pr)/extent);
+                            worstFrame = fmax(worstFrame, fmax(fabs(v[i].normal[e] - nr), fabs(v[i].tangent[e] - tr)));
+                        }
+                        badFrame += (v[i].tangent[3] != q[0].tangent[3]) || (memcmp(v[i].color, q[0].color, 4) != 0);
+                    }
+                    for (int sl = 0; sl < n; sl++)
+                    {
+                        const RblVertex *o = v + 4*sl;
+                        for (int t = 0; t < 2; t++)
+                        {
+                            const RblVertex *c1 = &o[1 + t], *c2 = &o[2 + t];
+                            if ((t == 1) && (memcmp(o[2].position, o[3].position, sizeof(o[2].position)) == 0) && (memcmp(o[2].texcoord, o[3].texcoord, sizeof(o[2].texcoord)) == 0)) continue;   // a lone triangle
+                            tris++;
+                            badFace += !(polyArea2On(o[0].position, c1->position, c2->position, qn) > 0.0);
+                            // wholly in one of the quad's triangles: s - up of one sign (or zero)
+                            double lo = fmin(side[sl][0], fmin(side[sl][1 + t], side[sl][2 + t])), hi = fmax(side[sl][0], fmax(side[sl][1 + t], side[sl][2 + t]));
+                            badSide += (b.roundness > 0.0f) && (lo < -1e-6) && (hi > 1e-6);      // flat draws keep the file's triangles
+                            double ax = o[0].texcoord[0]*(double)POLY_SHEET, ay = o[0].texcoord[1]*(double)POLY_SHEET;
+                            area += fabs((c1->texcoord[0]*(double)POLY_SHEET - ax)*(c2->texcoord[1]*(double)POLY_SHEET - ay) - (c2->texcoord[0]*(double)POLY_SHEET - ax)*(c1->texcoord[1]*(double)POLY_SHEET - ay))/2.0;
+                        }
+                    }
+                    badArea += (fabs(area - polyFixtureArea[k]) > 1e-3) || (tris < polyFixtureTriangles[k]);
+                }
+    badPos = worstPos > 2e-6;
+    badFrame += worstFrame > 2e-6;
+    RT_CHECK(configs == 144 && badCount == 0, "%d of 144 configurations emitted (%d refused or wrong count)", configs, badCount);
+    RT_CHECK(badPos == 0 && badTex == 0, "positions off the quad's by %.3g of the extent; %d texels not the file's", worstPos, badTex);
+    RT_CHECK(badFrame == 0, "normal/tangent off the quad's field by %.3g (or handedness/colour differ)", worstFrame);
+    RT_CHECK(badFace == 0 && badArea == 0, "%d triangles face away from the quad; %d configurations with area or triangle count off", badFace, badArea);
+    RT_CHECK(badSide == 0, "%d triangles cross the quad's diagonal", badSide);
+    printf("      144 configurations (at most %d quads): positions within %.2g of the extent, normal/tangent within %.2g of the quad's field\n", mostQuads, worstPos, worstFrame);
+    // a frame without a polygon takes the quad (one slot) and clears the bits a polygon frame left
+    RblBillboard b; memset(&b, 0, sizeof(b));
+    RblAtlasBillboard(&a, 0, 0.05f, &b);
+    unsigned int handle = b.flags & RBL_FRAME_POLYGON;
+    RblAtlas plain = atlasFromText("{\"frames\": {\"a\": {\"frame\": {\"x\":0,\"y\":0,\"w\":4,\"h\":4}}}, \"meta\": {\"size\": {\"w\":8,\"h\":8}}}");
+    RblAtlasBillboard(&plain, 0, 0.05f, &b);
+    RT_CHECK(handle != 0 && (b.flags & RBL_FRAME_POLYGON) == 0 && RblBillboardQuads(&view, 8, 8, &b, NULL, 0) == 1, "plain frame after a polygon frame: flags %#x", b.flags);
+    RblUnloadAtlas(&plain);
+    // kept past its atlas's unload, a polygon billboard is refused with one line (its handle is not reused)
+    RblAtlasBillboard(&a, 2, 0.05f, &b);
+    RblUnloadAtlas(&a);
+    RblAtlas again = atlasFromText(polyFixture);
+    atlasLogBegin();
+    RblVertex v[16];
+    int n = RblBillboardQuads(&view, POLY_SHEET, POLY_SHEET, &b, v, 16);
+    RT_CHECK(n == -1 && atlasWarnLines == 1 && strstr(atlasLastLine, "RblBillboardQuads") != NULL, "stale polygon billboard: %d quads, %d lines (%s)", n, atlasWarnLines, atlasLastLine);
+    atlasLogEnd();
+    RT_CHECK(RblIsAtlasValid(again) && (again.frames[2].flags & RBL_FRAME_POLYGON) != (b.flags & RBL_FRAME_POLYGON), "reloaded atlas reuses a handle");
+    RblUnloadAtlas(&again);
 }
 
 // The pixels a billboard's texture coordinates put on an upright w x h picture (nearest texel, as

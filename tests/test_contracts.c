@@ -285,6 +285,31 @@ static void c_vertices_null_and_sizes(void)
     ck(memcmp(out, sentinel, sizeof(out)) == 0, "refused calls wrote to out");
 }
 
+// What a batch draws of a billboard: refused alone for NULLs, a negative capacity, a bad frame or
+// billboard and polygon bits no loaded atlas holds (out untouched); a plain billboard's one quad
+static void c_quads_null_sizes_and_stale_polygons(void)
+{
+    RblCameraFrame f = RblGetCameraFrame(camera()), bad = f;
+    bad.right.x = NAN;
+    RblBillboard b = billboard();
+    RblVertex out[4], sentinel[4];
+    memset(out, 0x5a, sizeof(out)); memcpy(sentinel, out, sizeof(out));
+    EXPECT_REFUSED(RblBillboardQuads(NULL, 4, 4, &b, out, 1) >= 0);
+    EXPECT_REFUSED(RblBillboardQuads(&f, 4, 4, NULL, out, 1) >= 0);
+    EXPECT_REFUSED(RblBillboardQuads(&f, 4, 4, &b, out, -1) >= 0);
+    EXPECT_REFUSED(RblBillboardQuads(&bad, 4, 4, &b, out, 1) >= 0);
+    EXPECT_REFUSED(RblBillboardQuads(&f, 0, 4, &b, out, 1) >= 0);
+    RblBillboard p = b; p.facing = 9; EXPECT_REFUSED(RblBillboardQuads(&f, 4, 4, &p, out, 1) >= 0);
+    p = b; p.size.x = NAN; EXPECT_REFUSED(RblBillboardQuads(&f, 4, 4, &p, out, 1) >= 0);
+    p = b; p.flags = 0xFFFFF0u; EXPECT_REFUSED(RblBillboardQuads(&f, 4, 4, &p, out, 1) >= 0);    // no atlas holds that polygon
+    ck(memcmp(out, sentinel, sizeof(out)) == 0, "refused calls wrote to out");
+    warnings = 0;
+    int n = RblBillboardQuads(&f, 4, 4, &b, NULL, 0), m = RblBillboardQuads(&f, 4, 4, &b, out, 1);
+    p = b; p.flags = 0x1000000u | 0xFFFFF0u;            // from 2^24 up flags carry no polygon
+    int k = RblBillboardQuads(&f, 4, 4, &p, NULL, 0);
+    ck((n == 1) && (m == 1) && (k == 1) && (warnings == 0) && allFinite(out[0].position, 3), "plain billboard: %d, %d, %d quads, %d lines", n, m, k, warnings);
+}
+
 static void c_vertices_every_float_field(void)
 {
     RblCameraFrame f = RblGetCameraFrame(camera());
@@ -2382,6 +2407,7 @@ static const Case cases[] = {
     { "RblGetCameraFrame", "NaN/Inf/huge in every camera field", c_frame_bad_camera, "floats" },
     { "RblGetCameraFrame", "degenerate cameras: no log, orthonormal", c_frame_degenerate_cameras_are_fine, "floats" },
     { "RblBillboardVertices", "NULL pointers, sizes, facing", c_vertices_null_and_sizes, "null counts" },
+    { "RblBillboardQuads", "NULL pointers, capacity, bad frame and billboard, stale polygon bits; out untouched", c_quads_null_sizes_and_stale_polygons, "null stale-header counts floats" },
     { "RblBillboardVertices", "every float field x every facing", c_vertices_every_float_field, "floats" },
     { "RblBillboardVertices", "NaN/Inf camera frame", c_vertices_bad_frame, "floats" },
     { "RblLoadBatch", "negative and huge capacities", c_batch_load_counts, "counts" },

@@ -75,6 +75,7 @@ int main(int argc, char **argv)
         RT_TEST(test_atlas_meta_scale_as_string_or_number_draws_every_export_at_one_world_size),
         RT_TEST(test_atlas_zero_negative_fractional_or_non_finite_page_sizes_are_refused),
         RT_TEST(test_atlas_polygon_frames_keep_their_vertices_uvs_and_triangles_validated),
+        RT_TEST(test_atlas_polygon_quads_match_a_double_reference_of_the_quads_fields),
         RT_TEST(test_atlas_libgdx_any_quarter_turn_colon_names_pma_split_and_pad),
         RT_TEST(test_atlas_aseprite_slices_are_sub_frames_with_their_own_pivots),
         RT_TEST(test_atlas_frames_without_a_pivot_stand_on_their_position),

@@ -52,6 +52,10 @@ echo "== bench_sprites"
 RBL_TEST_CONTEXT=egl BENCH_CSV="$csv" "$BUILD/bench/bench_sprites"
 
 echo
+echo "== bench_polygon"
+RBL_TEST_CONTEXT=egl BENCH_CSV="$csv" "$BUILD/bench/bench_polygon"
+
+echo
 echo "== bench_platforms (GL 3.3 core, strict ES 3.0, ES 2.0, GL 2.1)"
 # Cold compilations (what a page or a first run pays): Mesa's on-disk shader cache off
 export MESA_SHADER_CACHE_DISABLE=true

@@ -3,8 +3,8 @@
 // clang -fsanitize=fuzzer,address,undefined; `make test` runs each for a bounded time over
 // tests/fuzz/corpus/<format>/ (hand-written seeds). Beyond the sanitizers, it aborts when a refused
 // input does not log exactly one line, or an accepted one yields a frame table whose frames, tags or
-// billboard fields break the documented invariants (pages, polygons, 9-slice centres, slice keys and
-// their sub-frames among them), or the player leaves its tag. LOG_INFO lines (what an accepted atlas
+// billboard fields break the documented invariants (pages, polygons and what a batch draws of them,
+// 9-slice centres, slice keys and their sub-frames among them), or the player leaves its tag. LOG_INFO lines (what an accepted atlas
 // leaves unread) are at most one per load, and never on a refusal.
 // Built in two parts so the header's implementation is instrumented once for the three targets:
 // -DFUZZ_IMPL compiles only the implementation; the targets include the declarations.
@@ -73,6 +73,29 @@ static void check(const RblAtlas *a)
             for (int v = 0; v < poly->vertexCount; v++)
                 expect(inside(poly->vertices[v], 0, 0, f->size.x, f->size.y) && inside(poly->uvs[v], f->block.x, f->block.y, f->block.width, f->block.height), "polygon point outside its frame");
             for (int k = 0; k < poly->indexCount; k++) expect(poly->indices[k] < poly->vertexCount, "polygon index");
+        }
+        // What a batch draws of it: the polygon's quads (its RBL_FRAME_POLYGON bits name it) or the one
+        // quad, flat, rounded and mirrored; every vertex finite, its texel inside the frame's block
+        expect(((b.flags & RBL_FRAME_POLYGON) != 0) == (poly != NULL), "polygon bits");
+        for (int variant = 0; variant < 3; variant++)
+        {
+            RblBillboard d = b;
+            if (variant > 0) d.roundness = 0.5f;
+            if (variant == 2) { d.size.x = -d.size.x; d.rotation = 33.0f; }
+            static const RblCameraFrame view = { { 0.0f, 0.0f, 5.0f }, { 1.0f, 0.0f, 0.0f }, { 0.0f, 1.0f, 0.0f }, { 0.0f, 0.0f, 1.0f }, false };
+            int w = (p->width > 0)? p->width : 65536, h = (p->height > 0)? p->height : 65536, before = lines;
+            int n = RblBillboardQuads(&view, w, h, &d, NULL, 0);
+            expect((lines == before) && (n >= 0) && ((poly != NULL) || (n == 1)) && ((poly == NULL) || (n <= poly->indexCount*3)), "quad count");
+            RblVertex *v = (RblVertex *)malloc((size_t)(n > 0? n : 1)*4*sizeof(RblVertex));
+            expect(v != NULL && RblBillboardQuads(&view, w, h, &d, v, n) == n, "quads emitted");
+            for (int q = 0; q < 4*n; q++)
+            {
+                bool finite = true;
+                for (int e = 0; e < 3; e++) finite = finite && isfinite(v[q].position[e]) && isfinite(v[q].normal[e]) && isfinite(v[q].tangent[e]);
+                float tu = v[q].texcoord[0]*(float)w, tv = v[q].texcoord[1]*(float)h, tol = 1e-3f*(1.0f + f->block.x + f->block.width + f->block.y + f->block.height);
+                expect(finite && (tu >= f->block.x - tol) && (tu <= f->block.x + f->block.width + tol) && (tv >= f->block.y - tol) && (tv <= f->block.y + f->block.height + tol), "quad vertex outside its frame or not finite");
+            }
+            free(v);
         }
     }
     for (int t = 0; t < a->tagCount; t++)
