@@ -963,6 +963,111 @@ static bool glassPicture(const char *dir)
     return ok;
 }
 
+
+// Many lights: 256 small coloured lights over two floors with smoke puffs above them; the left
+// floor's programs have 64 light slots (the scene's first 64 lights, wherever they are), the right
+// floor's are clustered (every light of the scene through the light grid), smoke included
+static bool clusteredPicture(const char *dir)
+{
+    const int w = 800, h = 360, count = 256;
+    RblLight *lights = (RblLight *)MemAlloc(count*sizeof(RblLight));
+    unsigned int seed = 12345u;
+    for (int i = 0; i < count; i++)
+    {
+        seed = seed*1664525u + 1013904223u; float u = (float)(seed >> 8)/16777216.0f;
+        seed = seed*1664525u + 1013904223u; float v = (float)(seed >> 8)/16777216.0f;
+        seed = seed*1664525u + 1013904223u; unsigned int hue = seed >> 29;
+        static const Color palette[8] = { { 255, 90, 60, 255 }, { 255, 180, 60, 255 }, { 90, 255, 120, 255 }, { 60, 160, 255, 255 },
+                                          { 200, 90, 255, 255 }, { 255, 255, 200, 255 }, { 60, 255, 230, 255 }, { 255, 120, 200, 255 } };
+        lights[i].position = (Vector3){ (i & 1)? 0.4f + u*5.2f : -5.6f + u*5.2f, 0.25f, -2.6f + v*5.2f };
+        lights[i].color = palette[hue];
+        lights[i].intensity = 0.12f;
+        lights[i].range = 1.0f;
+    }
+    Camera3D cam;
+    memset(&cam, 0, sizeof(cam));
+    cam.position = (Vector3){ 0.0f, 6.5f, 7.0f };
+    cam.target = (Vector3){ 0.0f, 0.0f, 0.0f };
+    cam.up = (Vector3){ 0.0f, 1.0f, 0.0f };
+    cam.fovy = 45.0f;
+    cam.projection = CAMERA_PERSPECTIVE;
+    Shader floorShader[2], smokeShader[2];
+    for (int k = 0; k < 2; k++)
+    {
+        RblLitShaderDesc d;
+        memset(&d, 0, sizeof(d));
+        d.maxLights = 64;
+        d.clustered = (k == 1);
+        d.shading.tonemap = RBL_TONEMAP_ACES;
+        floorShader[k] = RblLoadLitShader(d);
+        d.shading.brdf = RBL_BRDF_LAMBERT;
+        smokeShader[k] = RblLoadLitShader(d);
+    }
+    Image puff = GenImageGradientRadial(64, 64, 0.0f, (Color){ 235, 235, 235, 220 }, (Color){ 235, 235, 235, 0 });
+    Texture2D puffTexture = LoadTextureFromImage(puff);
+    UnloadImage(puff);
+    SetTextureFilter(puffTexture, TEXTURE_FILTER_BILINEAR);
+    Model floor = LoadModelFromMesh(GenMeshPlane(5.6f, 5.6f, 1, 1));
+    Material floorDefault = floor.materials[0];
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = lights;
+    scene.lightCount = count;
+    scene.ambient = (Color){ 14, 14, 18, 255 };
+    bool ok = RblSetScene(&scene);
+    RenderTexture2D rt = LoadRenderTexture(w, h);
+    BeginTextureMode(rt);
+    ClearBackground((Color){ 8, 8, 12, 255 });
+    BeginMode3D(cam);
+    for (int k = 0; k < 2; k++)
+    {
+        ok = ok && RblIsLitShaderValid(floorShader[k]) && RblIsLitShaderValid(smokeShader[k]);
+        Material fm = LoadMaterialDefault();
+        fm.shader = floorShader[k];
+        fm.maps[MATERIAL_MAP_ALBEDO].color = (Color){ 200, 200, 200, 255 };
+        floor.materials[0] = fm;
+        RblDrawModel(floor, (Vector3){ k? 3.0f : -3.0f, 0.0f, 0.0f }, 1.0f, WHITE);
+        MemFree(fm.maps);
+    }
+    for (int k = 0; k < 2; k++)
+    {
+        Material sm = LoadMaterialDefault();
+        sm.shader = smokeShader[k];
+        sm.maps[MATERIAL_MAP_ALBEDO].texture = puffTexture;
+        sm.params[RBL_PARAM_ALPHA_CUTOFF] = -1.0f;          // never cut: soft edges blend
+        rlDisableDepthMask();
+        for (int j = 0; j < 9; j++)
+        {
+            RblBillboard b;
+            memset(&b, 0, sizeof(b));
+            b.position = (Vector3){ (k? 3.0f : -3.0f) + (float)(j%3 - 1)*1.6f, 0.45f, (float)(j/3 - 1)*1.6f };
+            b.size = (Vector2){ 1.3f, 1.3f };
+            b.origin = (Vector2){ 0.65f, 0.65f };
+            b.roundness = 1.0f;
+            RblDrawBillboard(cam, sm, b);
+        }
+        rlEnableDepthMask();
+        MemFree(sm.maps);
+    }
+    EndMode3D();
+    DrawText("64 light slots: the scene's first 64 of 256 lights", 8, 6, 10, RAYWHITE);
+    DrawText("desc.clustered: all 256 (the floor and the smoke over it)", w/2 + 8, 6, 10, RAYWHITE);
+    EndTextureMode();
+    Image img = rtReadTarget(rt);
+    char path[512];
+    snprintf(path, sizeof(path), "%s/rbl_clustered.png", dir);
+    ok = ok && ExportOpaque(img, path);
+    printf("pictures: %s %s\n", ok? "wrote" : "could not write", path);
+    UnloadImage(img);
+    UnloadRenderTexture(rt);
+    floor.materials[0] = floorDefault;
+    UnloadModel(floor);
+    UnloadTexture(puffTexture);
+    for (int k = 0; k < 2; k++) { RblUnloadLitShader(&floorShader[k]); RblUnloadLitShader(&smokeShader[k]); }
+    MemFree(lights);
+    return ok;
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = (argc > 1)? argv[1] : "examples/resources";
@@ -1045,6 +1150,7 @@ int main(int argc, char **argv)
     if (!cascadesPicture(dir)) return 1;
     if (!thinPictures(dir)) return 1;
     if (!glassPicture(dir)) return 1;
+    if (!clusteredPicture(dir)) return 1;
     UnloadTexture(sign); UnloadTexture(normals);
     MemFree(mat.maps);
     RblUnloadLitShader(&lit);
