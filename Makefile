@@ -217,6 +217,7 @@ quickstart: $(BUILD)/quickstart $(BUILD)/readme_run
 # the tests are named as extra prerequisites
 $(addprefix $(BUILD)/bench/bench_,lighting deferred shadows): tests/lighting_reference.h tests/reference.h
 $(BUILD)/bench/bench_skinning: tests/skin_rig.h
+$(BUILD)/bench/bench_deferred $(BUILD)/bench/bench_clustered: tests/bench/bench_floor.h
 $(BUILD)/bench/bench_thin $(BUILD)/bench/bench_deferred_thin: tests/relief_reference.h tests/reference.h
 $(BUILD)/bench/bench_%: tests/bench/bench_%.c tests/bench/bench.h $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)

@@ -35,6 +35,7 @@
 #include "raymath.h"
 #include "harness.h"
 #include "bench.h"
+#include "bench_floor.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -208,49 +209,6 @@ static int MaxDiff(Image a, Image b, int *pixels)
     return worst;
 }
 
-static bool FloorHit(Camera3D camera, float x, float y, Vector2 *out)
-{
-    Ray r = GetScreenToWorldRayEx((Vector2){ x, y }, camera, FRAME_W, FRAME_H);
-    if (!(r.direction.y < -1e-6f)) return false;
-    float t = -r.position.y/r.direction.y;
-    *out = (Vector2){ r.position.x + t*r.direction.x, r.position.z + t*r.direction.z };
-    return true;
-}
-
-static float Cross2(Vector2 a, Vector2 b, Vector2 p) { return (b.x - a.x)*(p.y - a.y) - (b.y - a.y)*(p.x - a.x); }
-
-// bench_deferred's scatter: n lights uniformly over the visible floor, range 0.3-0.8
-static bool ScatterLights(Scene *s, int n)
-{
-    Vector2 q[4];
-    const float corner[4][2] = { { 0.0f, 0.0f }, { FRAME_W, 0.0f }, { FRAME_W, FRAME_H }, { 0.0f, FRAME_H } };
-    for (int k = 0; k < 4; k++) if (!FloorHit(s->camera, corner[k][0], corner[k][1], &q[k])) return false;
-    float lo[2] = { q[0].x, q[0].y }, hi[2] = { q[0].x, q[0].y };
-    for (int k = 1; k < 4; k++)
-    {
-        lo[0] = fminf(lo[0], q[k].x); hi[0] = fmaxf(hi[0], q[k].x);
-        lo[1] = fminf(lo[1], q[k].y); hi[1] = fmaxf(hi[1], q[k].y);
-    }
-    float orient = Cross2(q[0], q[1], q[2]);
-    unsigned int seed = 20240601u;
-    for (int i = 0; i < n; )
-    {
-        Vector2 p = { rtRandomRange(&seed, lo[0], hi[0]), rtRandomRange(&seed, lo[1], hi[1]) };
-        bool inside = true;
-        for (int k = 0; k < 4; k++) inside = inside && (Cross2(q[k], q[(k + 1)%4], p)*orient >= 0.0f);
-        if (!inside) continue;
-        RblLight l;
-        memset(&l, 0, sizeof(l));
-        l.type = RBL_LIGHT_POINT;
-        l.range = rtRandomRange(&seed, 0.3f, 0.8f);
-        l.position = (Vector3){ p.x, l.range*rtRandomRange(&seed, 0.1f, 0.6f), p.y };
-        l.color = (Color){ (unsigned char)(96 + rtRandom(&seed)%160), (unsigned char)(96 + rtRandom(&seed)%160), (unsigned char)(96 + rtRandom(&seed)%160), 255 };
-        l.intensity = rtRandomRange(&seed, 0.01f, 0.04f);
-        s->lights[i++] = l;
-    }
-    return true;
-}
-
 static Material MaterialOf(Shader shader, Texture2D albedo)
 {
     Material m = LoadMaterialDefault();
@@ -283,7 +241,7 @@ int main(void)
     s->floor.facing = RBL_FACING_FIXED;
     s->floor.axis = (Vector3){ 0.0f, 1.0f, 0.0f };
     s->floor.up = (Vector3){ 0.0f, 0.0f, -1.0f };
-    if (!ScatterLights(s, MAX_N)) { printf("bench_clustered: a screen corner misses the floor\n"); rtCloseContext(); return 1; }
+    if (!benchScatterFloorLights(s->camera, FRAME_W, FRAME_H, s->lights, MAX_N)) { printf("bench_clustered: a screen corner misses the floor\n"); rtCloseContext(); return 1; }
     Image img = GenImageColor(4, 4, (Color){ 200, 160, 120, 255 });
     s->albedo = LoadTextureFromImage(img);
     UnloadImage(img);
