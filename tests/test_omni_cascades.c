@@ -161,6 +161,59 @@ static Camera3D omTop(void)
     return c;
 }
 
+// The floor drawn through a G-buffer of OM_VIEW pixels receiving the scene's two maps, resolved
+// into target (a failed G-buffer or geometry variant is a failed check and a blank image)
+static Image omDeferredFloor(int lightFeatures, const RblScene *scene, Material m, Camera3D top, RenderTexture2D target)
+{
+    RblGBufferDesc gd;
+    memset(&gd, 0, sizeof(gd));
+    gd.width = OM_VIEW; gd.height = OM_VIEW; gd.shading.lightFeatures = lightFeatures; gd.shading.shadowMaps = 2;
+    RblGBuffer g = RblLoadGBuffer(gd);
+    RblLitShaderDesc ld;
+    memset(&ld, 0, sizeof(ld));
+    ld.deferred = true;
+    Shader geo = RblLoadLitShader(ld);
+    Image def = GenImageColor(OM_VIEW, OM_VIEW, BLANK);
+    if (RblIsGBufferValid(g) && RblIsLitShaderValid(geo))
+    {
+        RT_CHECK(RblSetScene(scene), "scene rejected");
+        Material dm = m;
+        dm.shader = geo;
+        if (RblBeginGBuffer(&g, top))
+        {
+            RblDrawBillboard(top, dm, ssFloor());
+            RblEndGBuffer(&g);
+            RblDrawDeferredLights(&g);
+        }
+        BeginTextureMode(target);
+        ClearBackground(BLACK);
+        RblResolveGBuffer(&g);
+        EndTextureMode();
+        UnloadImage(def);
+        def = rtReadTarget(target);
+    }
+    else RT_CHECK(false, "G-buffer or geometry variant failed to load");
+    RblUnloadLitShader(&geo);
+    RblUnloadGBuffer(&g);
+    return def;
+}
+
+// Largest channel difference of two OM_VIEW images, and where
+static int omWorstChannel(Image a, Image b, int *wx, int *wy)
+{
+    int worst = 0;
+    for (int y = 0; y < OM_VIEW; y++)
+        for (int x = 0; x < OM_VIEW; x++)
+        {
+            Color p = rtPixel(a, x, y), q = rtPixel(b, x, y);
+            int d = abs((int)p.r - q.r);
+            if (abs((int)p.g - q.g) > d) d = abs((int)p.g - q.g);
+            if (abs((int)p.b - q.b) > d) d = abs((int)p.b - q.b);
+            if (d > worst) { worst = d; *wx = x; *wy = y; }
+        }
+    return worst;
+}
+
 static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward_and_deferred(void)
 {
     const Vector3 lpos[2] = { { -1.6f, 1.0f, 0.4f }, { 1.7f, 1.3f, -0.6f } };
@@ -256,50 +309,14 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
     // Deferred: the same floor through a G-buffer receiving both maps
     if (rbl__glsl() >= 300)
     {
-        RblGBufferDesc gd;
-        memset(&gd, 0, sizeof(gd));
-        gd.width = OM_VIEW; gd.height = OM_VIEW; gd.shading.lightFeatures = desc.shading.lightFeatures; gd.shading.shadowMaps = 2;
-        RblGBuffer g = RblLoadGBuffer(gd);
-        RblLitShaderDesc ld;
-        memset(&ld, 0, sizeof(ld));
-        ld.deferred = true;
-        Shader geo = RblLoadLitShader(ld);
-        if (RblIsGBufferValid(g) && RblIsLitShaderValid(geo))
-        {
-            scene.shadowMaps = maps; scene.shadowMapCount = 2; scene.lights = lights; scene.lightCount = 2;
-            RT_CHECK(RblSetScene(&scene), "scene rejected");
-            Material dm = m;
-            dm.shader = geo;
-            if (RblBeginGBuffer(&g, top))
-            {
-                RblDrawBillboard(top, dm, ssFloor());
-                RblEndGBuffer(&g);
-                RblDrawDeferredLights(&g);
-            }
-            BeginTextureMode(target);
-            ClearBackground(BLACK);
-            RblResolveGBuffer(&g);
-            EndTextureMode();
-            Image def = rtReadTarget(target);
-            int worst = 0, wx = 0, wy = 0;
-            for (int y = 0; y < OM_VIEW; y++)
-                for (int x = 0; x < OM_VIEW; x++)
-                {
-                    Color a = rtPixel(def, x, y), b = rtPixel(img[3], x, y);
-                    int d = abs((int)a.r - b.r);
-                    if (abs((int)a.g - b.g) > d) d = abs((int)a.g - b.g);
-                    if (abs((int)a.b - b.b) > d) d = abs((int)a.b - b.b);
-                    if (d > worst) { worst = d; wx = x; wy = y; }
-                }
-            printf("    deferred vs forward, two omni maps: worst %d/255 over %d pixels (at %d, %d: deferred %d, forward %d, unshadowed %d)\n", worst, OM_VIEW*OM_VIEW,
-                   wx, wy, rtPixel(def, wx, wy).r, rtPixel(img[3], wx, wy).r, rtPixel(img[0], wx, wy).r);
-            RT_CHECK(worst <= 2, "deferred vs forward with two omni maps: worst %d/255", worst);
-            if (worst > 2) rtSaveImage(def, "omni-deferred");
-            UnloadImage(def);
-        }
-        else RT_CHECK(false, "G-buffer or geometry variant failed to load");
-        RblUnloadLitShader(&geo);
-        RblUnloadGBuffer(&g);
+        scene.shadowMaps = maps; scene.shadowMapCount = 2; scene.lights = lights; scene.lightCount = 2;
+        Image def = omDeferredFloor(desc.shading.lightFeatures, &scene, m, top, target);
+        int wx = 0, wy = 0, worst = omWorstChannel(def, img[3], &wx, &wy);
+        printf("    deferred vs forward, two omni maps: worst %d/255 over %d pixels (at %d, %d: deferred %d, forward %d, unshadowed %d)\n", worst, OM_VIEW*OM_VIEW,
+               wx, wy, rtPixel(def, wx, wy).r, rtPixel(img[3], wx, wy).r, rtPixel(img[0], wx, wy).r);
+        RT_CHECK(worst <= 2, "deferred vs forward with two omni maps: worst %d/255", worst);
+        if (worst > 2) rtSaveImage(def, "omni-deferred");
+        UnloadImage(def);
     }
     for (int k = 0; k < 6; k++) UnloadImage(img[k]);
     RL_FREE(texels[0]); RL_FREE(texels[1]);
@@ -718,49 +735,13 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     // Deferred: the G-buffer's passes receiving the mixed scene pick their variant too
     if (rbl__glsl() >= 300)
     {
-        RblGBufferDesc gd;
-        memset(&gd, 0, sizeof(gd));
-        gd.width = OM_VIEW; gd.height = OM_VIEW; gd.shading.lightFeatures = desc.shading.lightFeatures; gd.shading.shadowMaps = 2;
-        RblGBuffer g = RblLoadGBuffer(gd);
-        RblLitShaderDesc ld;
-        memset(&ld, 0, sizeof(ld));
-        ld.deferred = true;
-        Shader geo = RblLoadLitShader(ld);
-        if (RblIsGBufferValid(g) && RblIsLitShaderValid(geo))
-        {
-            scene.shadowMaps = lists[1]; scene.shadowMapCount = 2;
-            RT_CHECK(RblSetScene(&scene), "scene rejected");
-            Material dm = m;
-            dm.shader = geo;
-            if (RblBeginGBuffer(&g, top))
-            {
-                RblDrawBillboard(top, dm, ssFloor());
-                RblEndGBuffer(&g);
-                RblDrawDeferredLights(&g);
-            }
-            BeginTextureMode(target);
-            ClearBackground(BLACK);
-            RblResolveGBuffer(&g);
-            EndTextureMode();
-            Image def = rtReadTarget(target);
-            int dworst = 0;
-            for (int y = 0; y < OM_VIEW; y++)
-                for (int x = 0; x < OM_VIEW; x++)
-                {
-                    Color a = rtPixel(def, x, y), b = rtPixel(img[1], x, y);
-                    int d = abs((int)a.r - b.r);
-                    if (abs((int)a.g - b.g) > d) d = abs((int)a.g - b.g);
-                    if (abs((int)a.b - b.b) > d) d = abs((int)a.b - b.b);
-                    if (d > dworst) dworst = d;
-                }
-            printf("    deferred vs forward, sun map + omni map: worst %d/255\n", dworst);
-            RT_CHECK(dworst <= 2, "deferred vs forward with a single and an omni map: worst %d/255", dworst);
-            if (dworst > 2) rtSaveImage(def, "mixed-deferred");
-            UnloadImage(def);
-        }
-        else RT_CHECK(false, "G-buffer or geometry variant failed to load");
-        RblUnloadGBuffer(&g);
-        RblUnloadLitShader(&geo);
+        scene.shadowMaps = lists[1]; scene.shadowMapCount = 2;
+        Image def = omDeferredFloor(desc.shading.lightFeatures, &scene, m, top, target);
+        int wx = 0, wy = 0, dworst = omWorstChannel(def, img[1], &wx, &wy);
+        printf("    deferred vs forward, sun map + omni map: worst %d/255\n", dworst);
+        RT_CHECK(dworst <= 2, "deferred vs forward with a single and an omni map: worst %d/255", dworst);
+        if (dworst > 2) rtSaveImage(def, "mixed-deferred");
+        UnloadImage(def);
     }
     for (int k = 0; k < 4; k++) UnloadImage(img[k]);
     UnloadRenderTexture(target);
