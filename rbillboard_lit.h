@@ -8178,6 +8178,23 @@ static int rbl__shadowKindsOf(const float (*uniforms)[48], int count, int maps)
     return kinds;
 }
 
+// Receiver defines: each map's kind and format (shadowKinds: rbl__shadowKindsOf), appended after
+// rbl__litDefines; returns the bytes written
+static size_t rbl__shadowDefines(int maps, int shadowKinds, char *out, size_t size)
+{
+    size_t used = 0;
+    bool omni = false, cascades = false;
+    for (int k = 0; (k < maps) && (used < size); k++)
+    {
+        int code = (shadowKinds >> (4*k)) & 15;
+        omni = omni || (code/4 == 1); cascades = cascades || (code/4 == 2);
+        used += (size_t)snprintf(out + used, size - used, "#define RBL_SHADOW_KIND%i %i\n#define RBL_SHADOW_FORMAT%i %i\n", k, code/4, k, code%4);
+    }
+    if (omni && (used < size)) used += (size_t)snprintf(out + used, size - used, "#define RBL_SHADOW_OMNI\n");
+    if (cascades && (used < size)) used += (size_t)snprintf(out + used, size - used, "#define RBL_SHADOW_CASCADES\n");
+    return (used < size)? used : size - 1;
+}
+
 // Variant defines: one line per compiled feature
 static void rbl__litDefines(const RblLitShaderDesc *d, char *out, size_t size)
 {
@@ -8417,16 +8434,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     char defines[1536];
     rbl__litDefines(d, defines, sizeof(defines));
     size_t used = strlen(defines);
-    // Receivers: each map's kind and format (the registry's variant for the scene's maps)
-    bool omni = false, cascades = false;
-    for (int k = 0; (k < d->shading.shadowMaps) && (used < sizeof(defines)); k++)
-    {
-        int code = (key->shadowKinds >> (4*k)) & 15;
-        omni = omni || (code/4 == 1); cascades = cascades || (code/4 == 2);
-        used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_SHADOW_KIND%i %i\n#define RBL_SHADOW_FORMAT%i %i\n", k, code/4, k, code%4);
-    }
-    if (omni && (used < sizeof(defines))) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_SHADOW_OMNI\n");
-    if (cascades && (used < sizeof(defines))) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_SHADOW_CASCADES\n");
+    used += rbl__shadowDefines(d->shading.shadowMaps, key->shadowKinds, defines + used, sizeof(defines) - used);
     if ((key->kind == RBL__KIND_CASTER) && (d->shading.shadowMaps == 0)) used += (size_t)snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_ID\n");
     if ((key->kind == RBL__KIND_CASTER) && (key->pass == 1) && (used < sizeof(defines))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_CASTER_TRANSMIT\n");
     // G-buffer passes read RT2 as RGBA8 (caster identity in ba) on ES, or where the G-buffer receives shadows
@@ -12569,8 +12577,9 @@ static bool rbl__atlasPolygonsPrepare(rbl__AtlasState *s)
         x.frac = NULL; x.slots = NULL;
         for (int i = 0; i < s->polygonCount; i++)
         {
-            s->polyDraw[i].frac = s->polyFrac + firstFrac[i];
-            for (int d = 0; d < 3; d++) s->polyDraw[i].slots[d] = s->polySlots + 4*(size_t)firstSlot[3*i + d];
+            // (no rows at all when every triangle is degenerate: NULL, never an offset from it)
+            s->polyDraw[i].frac = (s->polyFrac != NULL)? s->polyFrac + firstFrac[i] : NULL;
+            for (int d = 0; d < 3; d++) s->polyDraw[i].slots[d] = (s->polySlots != NULL)? s->polySlots + 4*(size_t)firstSlot[3*i + d] : NULL;
         }
     }
     RBL_FREE(x.frac); RBL_FREE(x.slots); RBL_FREE(x.tri); RBL_FREE(x.piece); RBL_FREE(x.edges);

@@ -53,8 +53,22 @@ int main(int argc, char **argv)
             RblLitShaderDesc d;
             if (rbl__normaliseLitDesc(cases[c], &d) != NULL) { printf("splice_shaders: case %d rejected\n", c); return 1; }
             if ((d.instanced || d.deferred) && (glsl < 300)) continue;
-            char defines[1024], name[64];
+            char defines[1536], name[64];
             rbl__litDefines(&d, defines, sizeof(defines));
+            size_t at = strlen(defines);
+            rbl__shadowDefines(d.shading.shadowMaps, rbl__shadowKindsOf(NULL, 0, d.shading.shadowMaps), defines + at, sizeof(defines) - at);
+            // The receivers' other map kinds: map 0 omni (perspective, casters target: code 7), then
+            // cascaded (orthographic, casters target: code 10)
+            for (int kind = 1; (kind <= 2) && (d.shading.shadowMaps > 0) && !d.deferred; kind++)
+            {
+                char other[1536];
+                rbl__litDefines(&d, other, sizeof(other));
+                size_t o = strlen(other);
+                int kinds = (rbl__shadowKindsOf(NULL, 0, d.shading.shadowMaps) & ~15) | ((kind == 1)? 7 : 10);
+                rbl__shadowDefines(d.shading.shadowMaps, kinds, other + o, sizeof(other) - o);
+                snprintf(name, sizeof(name), "lit-%d-%s", c, (kind == 1)? "omni" : "cascades");
+                writeStage(dir, glsl, name, false, other, rbl__pass_lit_fs);
+            }
             snprintf(name, sizeof(name), "lit-%d", c);
             writeStage(dir, glsl, name, true, defines, d.instanced? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs);
             writeStage(dir, glsl, name, false, defines, d.deferred? rbl__pass_gbuffer_fs : rbl__pass_lit_fs);
@@ -66,9 +80,11 @@ int main(int argc, char **argv)
             lighting.deferred = false; lighting.instanced = false;
             if (cases[c].shading.shadowMaps == 0) continue;
             rbl__litDefines(&lighting, defines, sizeof(defines));
+            at = strlen(defines);
+            rbl__shadowDefines(lighting.shading.shadowMaps, rbl__shadowKindsOf(NULL, 0, lighting.shading.shadowMaps), defines + at, sizeof(defines) - at);
             for (int counting = 0; counting < 2; counting++)
             {
-                char passDefines[1100];
+                char passDefines[1600];
                 snprintf(passDefines, sizeof(passDefines), "%s%s", defines, counting? "#define RBL_COUNT_LIGHTS\n" : "");
                 snprintf(name, sizeof(name), "fullscreen-%d-%d", c, counting); writeStage(dir, glsl, name, true, passDefines, rbl__pass_fullscreen_vs);
                 snprintf(name, sizeof(name), "volume-%d-%d", c, counting); writeStage(dir, glsl, name, true, passDefines, rbl__pass_volume_vs);
