@@ -8855,58 +8855,44 @@ static rbl__Program *rbl__findOwn(unsigned int id, int kind)
 
 static rbl__Program *rbl__findCaster(unsigned int id) { return rbl__findOwn(id, RBL__KIND_CASTER); }
 
-// The skinned caster, compiled on the first GPU-skinned mesh of a shadow pass and held (one holder)
-// until the last shadow map goes; NULL (problem set) when it cannot compile
+// An on-demand caster (held in casterIds[slot], one holder, until the last shadow map goes) of desc's
+// features and variant, compiled on first use; NULL (problem set) when it cannot be made
+static rbl__Program *rbl__heldCaster(int slot, RblLitShaderDesc desc, int variant)
+{
+    rbl__Program *caster = rbl__findCaster(rbl__state.casterIds[slot]);
+    if (caster != NULL) return caster;
+    RblLitShaderDesc normalised;
+    const char *bad = rbl__normaliseLitDesc(desc, &normalised);
+    if (bad != NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "%s", bad); return NULL; }
+    rbl__ProgramKey key;
+    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, variant, &key);
+    caster = rbl__acquireProgram(&key);
+    rbl__state.casterIds[slot] = (caster != NULL)? caster->shader.id : 0;
+    return caster;
+}
+
+// The skinned caster: the first GPU-skinned mesh of a shadow pass
 static rbl__Program *rbl__skinnedCaster(void)
 {
-    rbl__Program *caster = rbl__findCaster(rbl__state.casterIds[2]);
-    if (caster != NULL) return caster;
-    RblLitShaderDesc desc, normalised;
-    memset(&desc, 0, sizeof(desc));
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
     desc.skinning = true;
-    if (rbl__normaliseLitDesc(desc, &normalised) != NULL) { snprintf(rbl__state.problem, sizeof(rbl__state.problem), "GPU skinning is off (RBL_GPU_SKINNING)"); return NULL; }
-    rbl__ProgramKey key;
-    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
-    caster = rbl__acquireProgram(&key);
-    rbl__state.casterIds[2] = (caster != NULL)? caster->shader.id : 0;
-    return caster;
+    return rbl__heldCaster(2, desc, 0);
 }
 
-// The cross-fade casters (vertex buffers, instanced), compiled on the first faded billboard of a
-// shadow pass and held (one holder each) until the last shadow map goes; NULL (problem set) on failure
+// The cross-fade casters (vertex buffers, instanced): the first faded billboard of a shadow pass
 static rbl__Program *rbl__fadeCaster(bool instanced)
 {
-    unsigned int *id = &rbl__state.casterIds[instanced? 4 : 3];
-    rbl__Program *caster = rbl__findCaster(*id);
-    if (caster != NULL) return caster;
-    RblLitShaderDesc desc, normalised;
-    memset(&desc, 0, sizeof(desc));
-    desc.crossFade = true;
-    desc.instanced = instanced;
-    rbl__normaliseLitDesc(desc, &normalised);
-    rbl__ProgramKey key;
-    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 0, &key);
-    caster = rbl__acquireProgram(&key);
-    *id = (caster != NULL)? caster->shader.id : 0;
-    return caster;
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
+    desc.crossFade = true; desc.instanced = instanced;
+    return rbl__heldCaster(instanced? 4 : 3, desc, 0);
 }
 
-// The blended casters (vertex buffers, instanced: RblBeginShadowBlend), compiled on first use and held
-// (one holder each) until the last shadow map goes; NULL (problem set) on failure
+// The blended casters (vertex buffers, instanced): RblBeginShadowBlend's first draw
 static rbl__Program *rbl__blendCaster(bool instanced)
 {
-    unsigned int *id = &rbl__state.casterIds[instanced? 6 : 5];
-    rbl__Program *caster = rbl__findCaster(*id);
-    if (caster != NULL) return caster;
-    RblLitShaderDesc desc, normalised;
-    memset(&desc, 0, sizeof(desc));
+    RblLitShaderDesc desc; memset(&desc, 0, sizeof(desc));
     desc.instanced = instanced;
-    rbl__normaliseLitDesc(desc, &normalised);
-    rbl__ProgramKey key;
-    rbl__keyFromDesc(&normalised, RBL__KIND_CASTER, 1, &key);
-    caster = rbl__acquireProgram(&key);
-    *id = (caster != NULL)? caster->shader.id : 0;
-    return caster;
+    return rbl__heldCaster(instanced? 6 : 5, desc, 1);
 }
 
 // A shadowTransmittance program's per-draw inputs: map k's transmittance target on its unit (the

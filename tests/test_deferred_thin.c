@@ -8,24 +8,17 @@
 
 #define DT_SIZE 64
 
-// Forward or deferred frame of count overlapping instanced sprites; desc holds the compiled features
-static Image dtOverdrawFrame(const RblLitShaderDesc *desc, bool deferred, RblGBuffer *g, Camera3D camera, const RblInstance *in, int count, Material m)
+// One size x size frame drawn by draw(shaders, ctx) forward or into g and lit, read back
+typedef void (*DtDraw)(const Shader *shaders, void *ctx);
+
+static Image dtFrame(int size, bool deferred, RblGBuffer *g, Camera3D camera, DtDraw draw, const Shader *shaders, void *ctx)
 {
-    RblLitShaderDesc d = *desc;
-    d.instanced = true;
-    d.deferred = deferred;
-    Shader s = RblLoadLitShader(d);
-    RT_CHECK(RblIsLitShaderValid(s), "%s sprite variant failed to load", deferred? "deferred" : "forward");
-    m.shader = s;
-    RblInstanceBuffer ib = RblLoadInstanceBuffer(count);
-    RblInstancedDesc id;
-    memset(&id, 0, sizeof(id));
-    RenderTexture2D rt = LoadRenderTexture(DT_SIZE, DT_SIZE);
+    RenderTexture2D rt = LoadRenderTexture(size, size);
     bool ok = true;
     if (deferred)
     {
         ok = RblBeginGBuffer(g, camera);
-        if (ok) { RblDrawInstanced(&ib, camera, m, id, in, count); RblEndGBuffer(g); ok = RblDrawDeferredLights(g); }
+        if (ok) { draw(shaders, ctx); RblEndGBuffer(g); ok = RblDrawDeferredLights(g); }
         BeginTextureMode(rt);
         ClearBackground(BLANK);
         if (ok) RblResolveGBuffer(g);
@@ -36,13 +29,39 @@ static Image dtOverdrawFrame(const RblLitShaderDesc *desc, bool deferred, RblGBu
         BeginTextureMode(rt);
         ClearBackground(BLANK);
         BeginMode3D(camera);
-        RblDrawInstanced(&ib, camera, m, id, in, count);
+        draw(shaders, ctx);
         EndMode3D();
         EndTextureMode();
     }
     RT_CHECK(ok, "deferred frame refused");
     Image img = rtReadTarget(rt);
     UnloadRenderTexture(rt);
+    return img;
+}
+
+typedef struct DtOverdraw { RblInstanceBuffer *ib; Camera3D camera; Material m; const RblInstance *in; int count; } DtOverdraw;
+
+static void dtOverdrawDraw(const Shader *shaders, void *ctx)
+{
+    (void)shaders;
+    DtOverdraw *o = (DtOverdraw *)ctx;
+    RblInstancedDesc id;
+    memset(&id, 0, sizeof(id));
+    RblDrawInstanced(o->ib, o->camera, o->m, id, o->in, o->count);
+}
+
+// Forward or deferred frame of count overlapping instanced sprites; desc holds the compiled features
+static Image dtOverdrawFrame(const RblLitShaderDesc *desc, bool deferred, RblGBuffer *g, Camera3D camera, const RblInstance *in, int count, Material m)
+{
+    RblLitShaderDesc d = *desc;
+    d.instanced = true;
+    d.deferred = deferred;
+    Shader s = RblLoadLitShader(d);
+    RT_CHECK(RblIsLitShaderValid(s), "%s sprite variant failed to load", deferred? "deferred" : "forward");
+    m.shader = s;
+    RblInstanceBuffer ib = RblLoadInstanceBuffer(count);
+    DtOverdraw o = { &ib, camera, m, in, count };
+    Image img = dtFrame(DT_SIZE, deferred, g, camera, dtOverdrawDraw, NULL, &o);
     RblUnloadInstanceBuffer(&ib);
     RblUnloadLitShader(&s);
     return img;
@@ -121,37 +140,6 @@ static void test_deferred_overlapping_sprites_1k_and_10k_match_forward_ambient_o
 }
 
 // ---- thin sprites: forward against deferred ---------------------------------------------------
-// One frame drawn by draw(shaders, ctx) forward (fwd) or into g and lit (geo), read back
-typedef void (*DtDraw)(const Shader *shaders, void *ctx);
-
-static Image dtFrame(bool deferred, RblGBuffer *g, Camera3D camera, DtDraw draw, const Shader *shaders, void *ctx)
-{
-    RenderTexture2D rt = LoadRenderTexture(SH_TARGET, SH_TARGET);
-    bool ok = true;
-    if (deferred)
-    {
-        ok = RblBeginGBuffer(g, camera);
-        if (ok) { draw(shaders, ctx); RblEndGBuffer(g); ok = RblDrawDeferredLights(g); }
-        BeginTextureMode(rt);
-        ClearBackground(BLANK);
-        if (ok) RblResolveGBuffer(g);
-        EndTextureMode();
-    }
-    else
-    {
-        BeginTextureMode(rt);
-        ClearBackground(BLANK);
-        BeginMode3D(camera);
-        draw(shaders, ctx);
-        EndMode3D();
-        EndTextureMode();
-    }
-    RT_CHECK(ok, "deferred frame refused");
-    Image img = rtReadTarget(rt);
-    UnloadRenderTexture(rt);
-    return img;
-}
-
 // Both frames compared (and kept under build/test-output/ when the test has failed)
 static DefDiff dtCompare(Image fwd, Image def, const char *tag)
 {
@@ -230,10 +218,10 @@ static void test_deferred_transmission_matches_forward_within_1_of_255(void)
         RT_CHECK(RblIsLitShaderValid(fwd[0]) && RblIsLitShaderValid(fwd[1]) && RblIsLitShaderValid(geo[0]) && RblIsLitShaderValid(geo[1]) && RblIsGBufferValid(g),
                  "programs or the transmission G-buffer failed to load");
         leaf.transmission = 0.7f;
-        Image f = dtFrame(false, &g, shTopDown(), dtLeafDraw, fwd, &leaf);
-        Image df = dtFrame(true, &g, shTopDown(), dtLeafDraw, geo, &leaf);
+        Image f = dtFrame(SH_TARGET, false, &g, shTopDown(), dtLeafDraw, fwd, &leaf);
+        Image df = dtFrame(SH_TARGET, true, &g, shTopDown(), dtLeafDraw, geo, &leaf);
         leaf.transmission = 0.0f;
-        Image none = dtFrame(false, &g, shTopDown(), dtLeafDraw, fwd, &leaf);
+        Image none = dtFrame(SH_TARGET, false, &g, shTopDown(), dtLeafDraw, fwd, &leaf);
         DefDiff diff = dtCompare(f, df, "transmission");
         int through = litDifferingPixels(f, none);
         printf("    brdf %d: %d pixels, worst %d/255, mean %.3f/255, coverage differs in %d; %d pixels lit through the leaf; %d volumes + %d full-screen lights; %d bytes/pixel\n",
@@ -331,9 +319,9 @@ static void test_deferred_relief_matches_forward_within_1_of_255(void)
         Shader geo = RblLoadLitShader(d);
         RblGBuffer g = RblLoadGBuffer(dtGBufferDesc(&d));
         RT_CHECK(RblIsLitShaderValid(fwd) && RblIsLitShaderValid(flat) && RblIsLitShaderValid(geo) && RblIsGBufferValid(g), "programs or the relief G-buffer failed to load");
-        Image fi = dtFrame(false, &g, thinCamera(), dtReliefDraw, &fwd, &r);
-        Image di = dtFrame(true, &g, thinCamera(), dtReliefDraw, &geo, &r);
-        Image ni = dtFrame(false, &g, thinCamera(), dtReliefDraw, &flat, &r);
+        Image fi = dtFrame(SH_TARGET, false, &g, thinCamera(), dtReliefDraw, &fwd, &r);
+        Image di = dtFrame(SH_TARGET, true, &g, thinCamera(), dtReliefDraw, &geo, &r);
+        Image ni = dtFrame(SH_TARGET, false, &g, thinCamera(), dtReliefDraw, &flat, &r);
         DefDiff diff = dtCompare(fi, di, thinFieldNames[f]);
         int shadowed = litDifferingPixels(fi, ni);
         printf("    %-6s %d pixels, worst %d/255, mean %.3f/255, coverage differs in %d; %d pixels shadowed by relief; %d volumes + %d full-screen lights\n",
@@ -399,8 +387,8 @@ static void test_deferred_blended_casters_tint_like_forward_within_1_of_255(void
         RblEndShadowMap(&map);
         scene.shadowMaps = &map; scene.shadowMapCount = 1;
         RT_CHECK(RblSetScene(&scene), "scene rejected");
-        Image fi = dtFrame(false, &g, shTopDown(), dtFloorDraw, &fwd, &fl);
-        Image di = dtFrame(true, &g, shTopDown(), dtFloorDraw, &geo, &fl);
+        Image fi = dtFrame(SH_TARGET, false, &g, shTopDown(), dtFloorDraw, &fwd, &fl);
+        Image di = dtFrame(SH_TARGET, true, &g, shTopDown(), dtFloorDraw, &geo, &fl);
         DefDiff diff = dtCompare(fi, di, (kind == 0)? "tint-directional" : "tint-spot");
         int red = 0;
         for (int y = 0; y < SH_TARGET; y++)

@@ -161,6 +161,50 @@ static Camera3D omTop(void)
     return c;
 }
 
+// The floor rig of the omni tests: a white material on a lit program receiving shadowMaps maps of
+// the given lights, an OM_VIEW target and the scene seen from above (ambient 30)
+typedef struct OmRig { Shader lit; Texture2D white; Material m; RenderTexture2D target; Camera3D top; RblScene scene; } OmRig;
+
+static OmRig omRigLoad(RblLight *lights, int count, int shadowMaps)
+{
+    OmRig r;
+    memset(&r, 0, sizeof(r));
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = count; desc.shading.lightFeatures = RblGetLightFeatures(lights, count); desc.shading.shadowMaps = shadowMaps;
+    r.lit = RblLoadLitShader(desc);
+    RT_CHECK(RblIsLitShaderValid(r.lit), "lit program failed to load");
+    r.white = solidTexture(WHITE);
+    r.m = LoadMaterialDefault();
+    r.m.shader = r.lit;
+    r.m.maps[MATERIAL_MAP_ALBEDO].texture = r.white;
+    r.target = LoadRenderTexture(OM_VIEW, OM_VIEW);
+    r.top = omTop();
+    r.scene.lights = lights; r.scene.lightCount = count; r.scene.ambient = (Color){ 30, 30, 30, 255 };
+    return r;
+}
+
+// The floor drawn forward under the rig's scene as it stands, read back
+static Image omForwardFloor(OmRig *r)
+{
+    RT_CHECK(RblSetScene(&r->scene), "scene rejected");
+    BeginTextureMode(r->target);
+    ClearBackground(BLACK);
+    BeginMode3D(r->top);
+    RblDrawBillboard(r->top, r->m, ssFloor());
+    EndMode3D();
+    EndTextureMode();
+    return rtReadTarget(r->target);
+}
+
+static void omRigUnload(OmRig *r)
+{
+    UnloadRenderTexture(r->target);
+    MemFree(r->m.maps);
+    UnloadTexture(r->white);
+    RblUnloadLitShader(&r->lit);
+}
+
 // The floor drawn through a G-buffer of OM_VIEW pixels receiving the scene's two maps, resolved
 // into target (a failed G-buffer or geometry variant is a failed check and a blank image)
 static Image omDeferredFloor(int lightFeatures, const RblScene *scene, Material m, Camera3D top, RenderTexture2D target)
@@ -219,28 +263,19 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
     const Vector3 lpos[2] = { { -1.6f, 1.0f, 0.4f }, { 1.7f, 1.3f, -0.6f } };
     RblLight lights[2] = { litPoint(lpos[0], 0.8f, 12.0f), litPoint(lpos[1], 0.8f, 12.0f) };
     lights[0].color = lights[1].color = WHITE;
-    RblLitShaderDesc desc;
-    memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 2; desc.shading.lightFeatures = RblGetLightFeatures(lights, 2); desc.shading.shadowMaps = 2;
-    Shader lit = RblLoadLitShader(desc);
+    OmRig rig = omRigLoad(lights, 2, 2);
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
     sd.size = 256; sd.omni = true;
     RblShadowMap maps[2] = { RblLoadShadowMap(sd), RblLoadShadowMap(sd) };
-    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(maps[0]) && RblIsShadowMapValid(maps[1]), "rig failed to load");
-    Texture2D white = solidTexture(WHITE);
-    Material m = LoadMaterialDefault();
-    m.shader = lit;
-    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    RenderTexture2D target = LoadRenderTexture(OM_VIEW, OM_VIEW);
-    Camera3D top = omTop();
-    RblScene scene;
-    memset(&scene, 0, sizeof(scene));
-    scene.lights = lights; scene.lightCount = 2; scene.ambient = (Color){ 30, 30, 30, 255 };
+    RT_CHECK(RblIsShadowMapValid(maps[0]) && RblIsShadowMapValid(maps[1]), "maps failed to load");
+    Material m = rig.m;
+    Camera3D top = rig.top;
+    RblScene *scene = &rig.scene;
     for (int l = 0; l < 2; l++)
         for (int pass = 0; pass < RblShadowMapPasses(maps[l]); pass++)
         {
-            RT_CHECK(RblBeginShadowMapPass(&maps[l], &scene, l, pass, (Vector3){ 0 }, 0.0f), "light %d face %d refused", l, pass);
+            RT_CHECK(RblBeginShadowMapPass(&maps[l], scene, l, pass, (Vector3){ 0 }, 0.0f), "light %d face %d refused", l, pass);
             omDrawOccluders(top, m, lpos);
             RblEndShadowMap(&maps[l]);
         }
@@ -254,16 +289,9 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
         int n = 0;
         if ((k < 4) && (k & 1)) list[n++] = maps[0];
         if ((k < 4) && (k & 2)) list[n++] = maps[1];
-        scene.shadowMaps = list; scene.shadowMapCount = n;
-        scene.lights = (k == 5)? &lights[1] : lights; scene.lightCount = (k < 4)? 2 : 1;
-        RT_CHECK(RblSetScene(&scene), "scene rejected");
-        BeginTextureMode(target);
-        ClearBackground(BLACK);
-        BeginMode3D(top);
-        RblDrawBillboard(top, m, ssFloor());
-        EndMode3D();
-        EndTextureMode();
-        img[k] = rtReadTarget(target);
+        scene->shadowMaps = list; scene->shadowMapCount = n;
+        scene->lights = (k == 5)? &lights[1] : lights; scene->lightCount = (k < 4)? 2 : 1;
+        img[k] = omForwardFloor(&rig);
     }
     int judged[4] = { 0 }, wrong[4] = { 0 }, dark[4] = { 0 }, undecided = 0, seam = 0;
     for (int y = 0; y < OM_VIEW; y++)
@@ -309,8 +337,8 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
     // Deferred: the same floor through a G-buffer receiving both maps
     if (rbl__glsl() >= 300)
     {
-        scene.shadowMaps = maps; scene.shadowMapCount = 2; scene.lights = lights; scene.lightCount = 2;
-        Image def = omDeferredFloor(desc.shading.lightFeatures, &scene, m, top, target);
+        scene->shadowMaps = maps; scene->shadowMapCount = 2; scene->lights = lights; scene->lightCount = 2;
+        Image def = omDeferredFloor(RblGetLightFeatures(lights, 2), scene, m, top, rig.target);
         int wx = 0, wy = 0, worst = omWorstChannel(def, img[3], &wx, &wy);
         printf("    deferred vs forward, two omni maps: worst %d/255 over %d pixels (at %d, %d: deferred %d, forward %d, unshadowed %d)\n", worst, OM_VIEW*OM_VIEW,
                wx, wy, rtPixel(def, wx, wy).r, rtPixel(img[3], wx, wy).r, rtPixel(img[0], wx, wy).r);
@@ -321,11 +349,8 @@ static void test_shadows_two_omni_lights_match_a_double_precision_lookup_forward
     for (int k = 0; k < 6; k++) UnloadImage(img[k]);
     RL_FREE(texels[0]); RL_FREE(texels[1]);
     shClearScene();
-    UnloadRenderTexture(target);
-    MemFree(m.maps);
-    UnloadTexture(white);
     RblUnloadShadowMap(&maps[0]); RblUnloadShadowMap(&maps[1]);
-    RblUnloadLitShader(&lit);
+    omRigUnload(&rig);
 }
 
 // ---- cascades ------------------------------------------------------------------------------------
@@ -639,26 +664,17 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     const Vector3 lpos = { 1.4f, 1.3f, 0.6f };
     RblLight lights[2] = { litDirectional((Vector3){ 0.35f, -1.0f, 0.25f }, 0.45f), litPoint(lpos, 0.7f, 12.0f) };
     lights[1].color = WHITE;
-    RblLitShaderDesc desc;
-    memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 2; desc.shading.lightFeatures = RblGetLightFeatures(lights, 2); desc.shading.shadowMaps = 2;
-    Shader lit = RblLoadLitShader(desc);
+    OmRig rig = omRigLoad(lights, 2, 2);
+    Material m = rig.m;
+    Camera3D top = rig.top;
+    RblScene *scene = &rig.scene;
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
     sd.size = 256;
     RblShadowMap sun = RblLoadShadowMap(sd);
     sd.omni = true;
     RblShadowMap omni = RblLoadShadowMap(sd);
-    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(sun) && RblIsShadowMapValid(omni), "rig failed to load");
-    Texture2D white = solidTexture(WHITE);
-    Material m = LoadMaterialDefault();
-    m.shader = lit;
-    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    RenderTexture2D target = LoadRenderTexture(OM_VIEW, OM_VIEW);
-    Camera3D top = omTop();
-    RblScene scene;
-    memset(&scene, 0, sizeof(scene));
-    scene.lights = lights; scene.lightCount = 2; scene.ambient = (Color){ 30, 30, 30, 255 };
+    RT_CHECK(RblIsShadowMapValid(sun) && RblIsShadowMapValid(omni), "maps failed to load");
     // Casters: a card high up for the sun (its shadow lands left of the light), one under the point light
     RblBillboard cards[2];
     memset(cards, 0, sizeof(cards));
@@ -670,7 +686,7 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     }
     cards[0].position = (Vector3){ -2.0f, 1.5f, -1.0f };
     cards[1].position = (Vector3){ lpos.x + 0.3f, 0.7f, lpos.z - 0.2f };
-    if (RblBeginShadowMap(&sun, &scene, 0, (Vector3){ 0.0f, 0.5f, 0.0f }, 6.0f))
+    if (RblBeginShadowMap(&sun, scene, 0, (Vector3){ 0.0f, 0.5f, 0.0f }, 6.0f))
     {
         for (int c = 0; c < 2; c++) RblDrawBillboard(top, m, cards[c]);
         RblEndShadowMap(&sun);
@@ -678,7 +694,7 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     else RT_CHECK(false, "sun pass refused");
     for (int pass = 0; pass < RblShadowMapPasses(omni); pass++)
     {
-        RT_CHECK(RblBeginShadowMapPass(&omni, &scene, 1, pass, (Vector3){ 0 }, 0.0f), "omni face %d refused", pass);
+        RT_CHECK(RblBeginShadowMapPass(&omni, scene, 1, pass, (Vector3){ 0 }, 0.0f), "omni face %d refused", pass);
         for (int c = 0; c < 2; c++) RblDrawBillboard(top, m, cards[c]);
         RblEndShadowMap(&omni);
     }
@@ -686,18 +702,11 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     RblShadowMap lists[4][2] = { { sun }, { sun, omni }, { omni }, { sun } };
     const int counts[4] = { 1, 2, 1, 0 };
     Image img[4];
-    rbl__Program *base = rbl__findLit(lit.id), *drawn[4] = { NULL };
+    rbl__Program *base = rbl__findLit(rig.lit.id), *drawn[4] = { NULL };
     for (int k = 0; k < 4; k++)
     {
-        scene.shadowMaps = lists[k]; scene.shadowMapCount = counts[k];
-        RT_CHECK(RblSetScene(&scene), "scene %d rejected", k);
-        BeginTextureMode(target);
-        ClearBackground(BLACK);
-        BeginMode3D(top);
-        RblDrawBillboard(top, m, ssFloor());
-        EndMode3D();
-        EndTextureMode();
-        img[k] = rtReadTarget(target);
+        scene->shadowMaps = lists[k]; scene->shadowMapCount = counts[k];
+        img[k] = omForwardFloor(&rig);
         drawn[k] = (base != NULL)? rbl__shadowVariant(base) : NULL;     // what that draw used
     }
     RT_CHECK(base != NULL, "the lit program is not in the registry");
@@ -735,8 +744,8 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
     // Deferred: the G-buffer's passes receiving the mixed scene pick their variant too
     if (rbl__glsl() >= 300)
     {
-        scene.shadowMaps = lists[1]; scene.shadowMapCount = 2;
-        Image def = omDeferredFloor(desc.shading.lightFeatures, &scene, m, top, target);
+        scene->shadowMaps = lists[1]; scene->shadowMapCount = 2;
+        Image def = omDeferredFloor(RblGetLightFeatures(lights, 2), scene, m, top, rig.target);
         int wx = 0, wy = 0, dworst = omWorstChannel(def, img[1], &wx, &wy);
         printf("    deferred vs forward, sun map + omni map: worst %d/255\n", dworst);
         RT_CHECK(dworst <= 2, "deferred vs forward with a single and an omni map: worst %d/255", dworst);
@@ -744,11 +753,9 @@ static void test_shadows_single_map_receivers_hold_no_omni_or_cascade_code_and_m
         UnloadImage(def);
     }
     for (int k = 0; k < 4; k++) UnloadImage(img[k]);
-    UnloadRenderTexture(target);
-    UnloadTexture(white);
     RblUnloadShadowMap(&sun);
     RblUnloadShadowMap(&omni);
-    RblUnloadLitShader(&lit);
+    omRigUnload(&rig);
 }
 
 // An omni map without caster identities (RblShadowDesc.selfShadow: receivers read its depth texture,
@@ -760,10 +767,10 @@ static void test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_do
     const Vector3 lpos = { 0.3f, 1.4f, -0.2f };
     RblLight light = litPoint(lpos, 0.9f, 12.0f);
     light.color = WHITE;
-    RblLitShaderDesc desc;
-    memset(&desc, 0, sizeof(desc));
-    desc.maxLights = 1; desc.shading.lightFeatures = RblGetLightFeatures(&light, 1); desc.shading.shadowMaps = 1;
-    Shader lit = RblLoadLitShader(desc);
+    OmRig rig = omRigLoad(&light, 1, 1);
+    Material m = rig.m;
+    Camera3D top = rig.top;
+    RblScene *scene = &rig.scene;
     RblShadowDesc sd;
     memset(&sd, 0, sizeof(sd));
     sd.size = 256; sd.omni = true;
@@ -771,16 +778,7 @@ static void test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_do
     maps[0] = RblLoadShadowMap(sd);
     sd.selfShadow = true;
     maps[1] = RblLoadShadowMap(sd);
-    RT_CHECK(RblIsLitShaderValid(lit) && RblIsShadowMapValid(maps[0]) && RblIsShadowMapValid(maps[1]), "rig failed to load");
-    Texture2D white = solidTexture(WHITE);
-    Material m = LoadMaterialDefault();
-    m.shader = lit;
-    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
-    RenderTexture2D target = LoadRenderTexture(OM_VIEW, OM_VIEW);
-    Camera3D top = omTop();
-    RblScene scene;
-    memset(&scene, 0, sizeof(scene));
-    scene.lights = &light; scene.lightCount = 1; scene.ambient = (Color){ 30, 30, 30, 255 };
+    RT_CHECK(RblIsShadowMapValid(maps[0]) && RblIsShadowMapValid(maps[1]), "maps failed to load");
     RblBillboard card;
     memset(&card, 0, sizeof(card));
     card.facing = RBL_FACING_FIXED; card.axis = (Vector3){ 0.0f, 1.0f, 0.0f }; card.up = (Vector3){ 0.0f, 0.0f, -1.0f };
@@ -789,24 +787,17 @@ static void test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_do
     for (int k = 0; k < 2; k++)
         for (int pass = 0; pass < RblShadowMapPasses(maps[k]); pass++)
         {
-            RT_CHECK(RblBeginShadowMapPass(&maps[k], &scene, 0, pass, (Vector3){ 0 }, 0.0f), "map %d face %d refused", k, pass);
+            RT_CHECK(RblBeginShadowMapPass(&maps[k], scene, 0, pass, (Vector3){ 0 }, 0.0f), "map %d face %d refused", k, pass);
             RblDrawBillboard(top, m, card);
             RblEndShadowMap(&maps[k]);
         }
     Image img[3];
     int code[3] = { -1, -1, -1 };
-    rbl__Program *base = rbl__findLit(lit.id);
+    rbl__Program *base = rbl__findLit(rig.lit.id);
     for (int k = 0; k < 3; k++)
     {
-        scene.shadowMaps = (k < 2)? &maps[k] : NULL; scene.shadowMapCount = (k < 2)? 1 : 0;
-        RT_CHECK(RblSetScene(&scene), "scene %d rejected", k);
-        BeginTextureMode(target);
-        ClearBackground(BLACK);
-        BeginMode3D(top);
-        RblDrawBillboard(top, m, ssFloor());
-        EndMode3D();
-        EndTextureMode();
-        img[k] = rtReadTarget(target);
+        scene->shadowMaps = (k < 2)? &maps[k] : NULL; scene->shadowMapCount = (k < 2)? 1 : 0;
+        img[k] = omForwardFloor(&rig);
         rbl__Program *drawn = (base != NULL)? rbl__shadowVariant(base) : NULL;
         code[k] = (drawn != NULL)? (drawn->key.shadowKinds & 15) : -1;
     }
@@ -825,11 +816,9 @@ static void test_shadows_omni_depth_texture_maps_shadow_as_the_casters_target_do
     RT_CHECK(differ*20 <= dark[0], "%d pixels differ by more than 3/255 between the two formats (over 5%% of %d shadowed)", differ, dark[0]);
     if (rtFailuresInCurrentTest() > 0) { rtSaveImage(img[0], "casters"); rtSaveImage(img[1], "depth"); rtSaveImage(img[2], "none"); }
     for (int k = 0; k < 3; k++) UnloadImage(img[k]);
-    UnloadRenderTexture(target);
-    UnloadTexture(white);
     RblUnloadShadowMap(&maps[0]);
     RblUnloadShadowMap(&maps[1]);
-    RblUnloadLitShader(&lit);
+    omRigUnload(&rig);
 }
 
 // The tests of this file, in order (gpu_tests.h lists every file's)
