@@ -55,4 +55,17 @@ static inline ThinMarch thinMarch(int f, double tx, double ty, D3 d, double dept
     return m;
 }
 
+#if defined(RAYLIB_H)
+// Field f's heights in the alpha of a THIN_TEXELS square texture (RGB 0), as a relief material holds them
+static inline Texture2D thinHeightTexture(int f)
+{
+    Image heights = GenImageColor(THIN_TEXELS, THIN_TEXELS, BLANK);
+    for (int y = 0; y < THIN_TEXELS; y++)
+        for (int x = 0; x < THIN_TEXELS; x++) ImageDrawPixel(&heights, x, y, (Color){ 0, 0, 0, (unsigned char)thinHeight(f, x, y) });
+    Texture2D t = LoadTextureFromImage(heights);
+    UnloadImage(heights);
+    return t;
+}
+#endif
+
 #endif

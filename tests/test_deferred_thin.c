@@ -301,12 +301,8 @@ static void test_deferred_relief_matches_forward_within_1_of_255(void)
     RT_CHECK(renderSetLights(lights, 4, (Color){ 30, 30, 30, 255 }), "scene rejected");
     for (int f = THIN_DOME; f <= THIN_RIDGE; f++)
     {
-        Image heights = GenImageColor(THIN_TEXELS, THIN_TEXELS, BLANK);
-        for (int y = 0; y < THIN_TEXELS; y++)
-            for (int x = 0; x < THIN_TEXELS; x++) ImageDrawPixel(&heights, x, y, (Color){ 0, 0, 0, (unsigned char)thinHeight(f, x, y) });
         DtRelief r;
-        r.material = LoadTextureFromImage(heights);
-        UnloadImage(heights);
+        r.material = thinHeightTexture(f);
         r.albedo = solidTexture((Color){ 200, 190, 180, 255 });
         RblLitShaderDesc d;
         memset(&d, 0, sizeof(d));

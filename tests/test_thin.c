@@ -162,11 +162,7 @@ static Camera3D thinCamera(void)
 // light travelling along dir; steps 0 = a program without relief
 static Image thinRenderRelief(int f, Vector3 dir, float depth, int steps)
 {
-    Image heights = GenImageColor(THIN_TEXELS, THIN_TEXELS, BLANK);
-    for (int y = 0; y < THIN_TEXELS; y++)
-        for (int x = 0; x < THIN_TEXELS; x++) ImageDrawPixel(&heights, x, y, (Color){ 0, 0, 0, (unsigned char)thinHeight(f, x, y) });
-    Texture2D material = LoadTextureFromImage(heights);
-    UnloadImage(heights);
+    Texture2D material = thinHeightTexture(f);
     Texture2D albedo = solidTexture((Color){ 200, 200, 200, 255 });
     RblLitShaderDesc desc;
     memset(&desc, 0, sizeof(desc));

@@ -74,6 +74,28 @@ static inline int BenchMedianOfRuns(BenchRunFn fn, void *ctx, int valueCount, Be
     return runs;
 }
 
+// A frame timer: frame(ctx, i) draws and times case i (i < 0: the baseline frame), in ms
+typedef double (*BenchFrameFn)(void *ctx, int i);
+
+// One paired round: each case with ok[i] set timed once, right after a baseline frame. out[i] = ms,
+// out[cases + i] = ratio to the round's baseline (the median of its baseline frames, or one baseline
+// frame when no case runs); returns that baseline
+static inline double BenchPairedRound(BenchFrameFn frame, void *ctx, const bool *ok, int cases, double *out)
+{
+    double base[BENCH_MAX_VALUES];
+    int nb = 0;
+    for (int i = 0; (i < cases) && (i < BENCH_MAX_VALUES); i++)
+    {
+        out[i] = 0.0;
+        if (!ok[i]) continue;
+        base[nb++] = frame(ctx, -1);
+        out[i] = frame(ctx, i);
+    }
+    double roundBase = (nb > 0)? BenchMedian(base, nb) : frame(ctx, -1);
+    for (int i = 0; i < cases; i++) out[cases + i] = (roundBase > 0.0)? out[i]/roundBase : 0.0;
+    return roundBase;
+}
+
 // ---- CSV ------------------------------------------------------------------------------------
 static inline const char *BenchCsvPath(void)
 {

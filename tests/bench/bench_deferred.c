@@ -223,8 +223,9 @@ static void DrawCase(Scene *s, int i)
 }
 
 // One frame: glFinish, draw, glFinish (GPU work included); milliseconds. case -1 = baseline
-static double TimeFrame(Scene *s, int i)
+static double TimeFrame(void *ctx, int i)
 {
+    Scene *s = (Scene *)ctx;
     rtFinish();
     double t0 = BenchNowNs();
     if (i < 0) DrawBaseline(s); else DrawCase(s, i);
@@ -238,17 +239,7 @@ static double TimeFrame(Scene *s, int i)
 static void RoundRun(void *ctx, double *out)
 {
     Scene *s = (Scene *)ctx;
-    double base[CASES];
-    int nb = 0;
-    for (int i = 0; i < CASES; i++)
-    {
-        out[i] = 0.0;
-        if (!s->ok[i]) continue;
-        base[nb++] = TimeFrame(s, -1);
-        out[i] = TimeFrame(s, i);
-    }
-    double roundBase = (nb > 0)? BenchMedian(base, nb) : TimeFrame(s, -1);
-    for (int i = 0; i < CASES; i++) out[CASES + i] = (roundBase > 0.0)? out[i]/roundBase : 0.0;
+    double roundBase = BenchPairedRound(TimeFrame, s, s->ok, CASES, out);
     for (int c = 0; c < COUNTS; c++)
     {
         double vol = out[PIPE_VOLUMES*COUNTS + c], naive = out[PIPE_NAIVE*COUNTS + c];

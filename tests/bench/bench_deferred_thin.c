@@ -136,11 +136,7 @@ int main(void)
     Bench *b = &bench;
     memset(b, 0, sizeof(*b));
     b->target = LoadRenderTexture(FRAME, FRAME);
-    Image heights = GenImageColor(THIN_TEXELS, THIN_TEXELS, BLANK);
-    for (int y = 0; y < THIN_TEXELS; y++)
-        for (int x = 0; x < THIN_TEXELS; x++) ImageDrawPixel(&heights, x, y, (Color){ 0, 0, 0, (unsigned char)thinHeight(THIN_DOME, x, y) });
-    b->material = LoadTextureFromImage(heights);
-    UnloadImage(heights);
+    b->material = thinHeightTexture(THIN_DOME);
     Image img = GenImageColor(4, 4, (Color){ 200, 200, 200, 255 });
     b->albedo = LoadTextureFromImage(img);
     UnloadImage(img);
