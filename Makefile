@@ -69,7 +69,7 @@ WEB_PAGE_MODES := main "dpr --force-device-scale-factor=2" "gl1 --disable-webgl2
 HEADER    := rbillboard_lit.h
 HARNESS   := tests/harness.c tests/harness.h
 CPU_TESTS := tests/test_geometry.c tests/test_materials.c tests/test_shaders_source.c tests/reference.h tests/degenerate.h tests/test_atlas.c
-GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_batch.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_omni_cascades.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_sprite_buffer.c tests/test_cull.c tests/test_thin.c tests/test_deferred_thin.c tests/test_clustered.c tests/test_polygon.c
+GPU_TESTS := tests/gpu_tests.h tests/test_api.c tests/test_batch.c tests/test_instanced.c tests/test_material_render.c tests/test_lighting.c tests/test_deferred.c tests/test_view.c tests/test_shadows.c tests/test_self_shadow.c tests/test_omni_cascades.c tests/test_skinning.c tests/skin_rig.h tests/reference.h tests/lighting_reference.h tests/degenerate.h tests/tf_capture.h tests/test_translucent.c tests/test_atlas_render.c tests/test_fade.c tests/test_held.c tests/test_sprite_buffer.c tests/test_cull.c tests/test_thin.c tests/test_deferred_thin.c tests/test_clustered.c tests/test_polygon.c tests/test_records.c tests/batch_peek.h
 
 $(BUILD)/tests/test_cpu: tests/test_cpu_main.c $(CPU_TESTS) $(HARNESS) $(HEADER) $(BUILD)/raylib.mk
 	@mkdir -p $(@D)

@@ -1550,7 +1550,7 @@ typedef struct rbl__ProgramKey {
     RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
-    int sprites;                    // Header-owned variants of an instanced program: bit 1 resident sprites (RBL_SPRITE_BUFFER), bit 2 polygon frames (RBL_POLYGONS)
+    int sprites;                    // Header-owned variants: instanced bit 1 resident sprites (RBL_SPRITE_BUFFER), bit 2 polygon frames (RBL_POLYGONS); vertex-buffer bit 4 batch records (RBL_BATCH_RECORD)
     int shadowKinds;                // Receivers: map k's compiled code in bits 4k..4k+3 (rbl__shadowCode; shadows.glsl)
     int gbufferRelief;              // 1: a G-buffer light pass reading the stored relief bits (RBL_GB_RELIEF)
 } rbl__ProgramKey;
@@ -1579,6 +1579,7 @@ typedef struct rbl__Program {
     struct rbl__Program *shadowVariant;  // A receiver: its variant drawn last (a cache; the registry holds every variant)
     bool shadowVariantNoted;             // ... a variant failed to compile (said once)
     struct rbl__Program *polygonVariant; // Instanced programs: the polygon-frame variant (a sprite variant's: sprites and polygons)
+    struct rbl__Program *recordVariant;  // Vertex-buffer programs: the batch-record variant once compiled (goes with this one)
 } rbl__Program;
 
 // A lit program handle that died (unloaded by the header or by raylib): its copies are recognised
@@ -1615,7 +1616,7 @@ typedef struct rbl__FrameCache {
 
 // A batch's own data (RblBatch.state); capacity, count and skipped are mirrored into the RblBatch
 typedef struct rbl__BatchState {
-    RblVertex *vertices;            // 4 per billboard
+    RblVertex *vertices;            // 4 per billboard, or (records) an rbl__BatchRecord per billboard in the same memory
     RblVertex *sorted;              // Sorted copy of vertices (allocated at the first sorted RblEndBatch, grown with capacity)
     rbl__SortKey *keys;             // Per billboard: view depth, index, run (same lifetime as sorted)
     int sortCapacity;               // Billboards sorted and keys hold
@@ -1659,6 +1660,12 @@ typedef struct rbl__BatchState {
     float *centres;                 // 3 floats per slot while polygonal (capacity slots)
     bool polygonal;                 // centres[0..count) is filled
     int extraSlots;                 // Slots beyond one per billboard since RblBeginBatch() (count - extraSlots billboards)
+    // The compact stream: from the first billboard, where GLSL 3 and the header's programs draw
+    // every run, each billboard is a record; a billboard records cannot hold (a polygon, a fade, a
+    // user's shader) turns the batch back to vertices (rbl__recordsToVertices)
+    bool records;                   // vertices holds records [0, count)
+    bool vertexOnly;                // Never records (the immediate path's one-quad batch)
+    unsigned int recordVaoId;       // Vertex array of the record stream (instanced over the same buffer), made on first use
 } rbl__BatchState;
 
 // An instance buffer's own data (RblInstanceBuffer.state)
@@ -2951,11 +2958,23 @@ static const char *const rbl__shader_lit_vs[] = {
     "#include \"common.glsl\"\n",
     "#include \"skinning.glsl\"\n",
     "\n",
+    "#ifdef RBL_BATCH_RECORD\n",
+    "// The batch's compact stream (GLSL 3 only): one record per billboard (rbl__BatchRecord), read once\n",
+    "// per instance; gl_VertexID picks the corner of the quad's two triangles (0,1,2) (0,2,3). The CPU\n",
+    "// mirror of this expansion is rbl__recordVertices\n",
+    "layout(location = 10) in vec3 rblRecordCorner;     // corner 0 (bottom-left of the footprint)\n",
+    "layout(location = 11) in vec3 rblRecordRight;      // corner 1 - corner 0 (the rotated +R times the width)\n",
+    "layout(location = 12) in vec3 rblRecordUp;         // corner 3 - corner 0 (the rotated +U times the height)\n",
+    "layout(location = 13) in vec4 rblRecordUv;         // texture coordinates: xy at corner 0, zw at corner 2\n",
+    "layout(location = 14) in vec4 rblRecordColor;      // tint, normalised bytes\n",
+    "layout(location = 15) in vec2 rblRecordShape;      // x: roundness 0..1, y: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)\n",
+    "#else\n",
     "RBL_ATTRIBUTE vec3 vertexPosition;\n",
     "RBL_ATTRIBUTE vec2 vertexTexCoord;\n",
     "RBL_ATTRIBUTE vec3 vertexNormal;\n",
     "RBL_ATTRIBUTE vec4 vertexColor;\n",
     "RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "// The fade stream (raylib's texcoord2 location 5): xy the second frame's texture coordinate, z the\n",
     "// weight, w its tangent axes against the first's (material.glsl). Without the stream the attribute\n",
@@ -2995,9 +3014,51 @@ static const char *const rbl__shader_lit_vs[] = {
     "RBL_VARYING vec3 fragNormal;\n",
     "RBL_VARYING vec4 fragTangent;\n",
     "\n",
+    "#ifdef RBL_BATCH_RECORD\n",
+    "bool rblRecordBit(float bits, float bit) { return mod(floor(bits/bit), 2.0) == 1.0; }\n",
+    "\n",
+    "// Corner of the record's quad: position, texture coordinate, normal, tangent and handedness as\n",
+    "// rbl__expandQuad writes them (a zero edge draws nothing: its normal is never used)\n",
+    "void rblRecordVertex(out vec3 position, out vec2 uv, out vec3 normal, out vec4 tangent)\n",
+    "{\n",
+    "    int id = gl_VertexID;\n",
+    "    int c = (id < 3)? id : ((id == 3)? 0 : id - 2);\n",
+    "    bool s = (c == 1) || (c == 2), t = (c >= 2);\n",
+    "    position = rblRecordCorner + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));\n",
+    "    float bits = rblRecordShape.y;\n",
+    "    bool flipU = rblRecordBit(bits, 1.0), flipV = rblRecordBit(bits, 2.0), rotated = rblRecordBit(bits, 4.0), cylinder = rblRecordBit(bits, 8.0);\n",
+    "    // A rotated frame's u runs along the sprite's t (its v along s)\n",
+    "    bool su = rotated? t : s, sv = rotated? s : t;\n",
+    "    uv = vec2(su? rblRecordUv.z : rblRecordUv.x, sv? rblRecordUv.w : rblRecordUv.y);\n",
+    "    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = cross(R, U);\n",
+    "    vec3 T = rotated? (flipV? -U : U) : (flipU? -R : R);\n",
+    "    normal = N;\n",
+    "    vec3 tg = T;\n",
+    "    float roundness = rblRecordShape.x;\n",
+    "    if (roundness > 0.0)\n",
+    "    {\n",
+    "        // Corner normals lean outward from the centre (rbl__expandQuad)\n",
+    "        float dx = (s? 1.0 : -1.0)*roundness, dy = cylinder? 0.0 : (t? 1.0 : -1.0)*roundness;\n",
+    "        normal = normalize(N + R*dx + U*dy);\n",
+    "        vec3 p = T - normal*dot(T, normal);\n",
+    "        if (dot(p, p) > 1e-10*dot(T, T)) tg = normalize(p);\n",
+    "    }\n",
+    "    tangent = vec4(tg, (flipU != flipV)? 1.0 : -1.0);\n",
+    "}\n",
+    "#endif\n",
+    "\n",
     "void main()\n",
     "{\n",
+    "#ifdef RBL_BATCH_RECORD\n",
+    "    vec3 position, normal;\n",
+    "    vec2 vertexTexCoord;\n",
+    "    vec4 vertexTangent;\n",
+    "    rblRecordVertex(position, vertexTexCoord, normal, vertexTangent);\n",
+    "    vec3 tangent = vertexTangent.xyz;\n",
+    "    vec4 vertexColor = rblRecordColor;\n",
+    "#else\n",
     "    vec3 position = vertexPosition, normal = vertexNormal, tangent = vertexTangent.xyz;\n",
+    "#endif\n",
     "#ifdef RBL_SKINNING\n",
     "    rblSkin(position, normal, tangent);     // bind pose -> animated pose, in the model's space\n",
     "#endif\n",
@@ -5307,11 +5368,21 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
     return rbl__expandBillboard(view, cast, cache, textureWidth, textureHeight, b, out);
 }
 
-// rbl__billboardVertices once b is known good: the quad's four corners, or with poly its slots (4
-// vertices each) at the quad's own attributes: position, texture coordinate and (affine over each of
-// the quad's two triangles, as the rasteriser interpolates them) normal and tangent, and the quad's
-// centre (the sort key of each slot)
-static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3])
+// A quad's parts once b is known good: its frame (rotated), footprint, pivot (an AXIS caster's tilt
+// applied), texture corners, tangent, tint and roundness: what its vertices or its batch record hold
+typedef struct rbl__QuadParts {
+    Vector3 P, R, U, N, T;          // Pivot, rotated unit axes and normal (R x U = N), tangent (+U of the texture)
+    float x0, x1, y0, y1;           // Footprint along R and U from the pivot
+    float uv[4][2];                 // Texture coordinates at BL, BR, TR, TL
+    float w;                        // Handedness (cross(N, T)*w = +V)
+    float round;                    // Roundness clamped to 0..1
+    bool flipU, flipV, rotated, cylinder;
+    unsigned char col[4];           // Tint (zero = white)
+    Rectangle src;                  // Source frame (zero = whole texture filled in)
+    float invW, invH;               // 1/texture size
+} rbl__QuadParts;
+
+static void rbl__quadParts(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, rbl__QuadParts *q)
 {
     rbl__facingFrame(view, cast, b, cache);
     Vector3 R = cache->right, U = cache->up, N = cache->normal;
@@ -5358,15 +5429,6 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
             P = rbl__v3(P.x + d.x*h, P.y + d.y*h, P.z + d.z*h);
         }
     }
-    Vector3 p[4];
-    p[0] = rbl__v3(P.x + R.x*x0 + U.x*y0, P.y + R.y*x0 + U.y*y0, P.z + R.z*x0 + U.z*y0);
-    p[1] = rbl__v3(P.x + R.x*x1 + U.x*y0, P.y + R.y*x1 + U.y*y0, P.z + R.z*x1 + U.z*y0);
-    p[2] = rbl__v3(P.x + R.x*x1 + U.x*y1, P.y + R.y*x1 + U.y*y1, P.z + R.z*x1 + U.z*y1);
-    p[3] = rbl__v3(P.x + R.x*x0 + U.x*y1, P.y + R.y*x0 + U.y*y1, P.z + R.z*x0 + U.z*y1);
-    // No corner can overflow: rbl__billboardOk bounds the pivot, size and origin below 2^60 and
-    // CAMERA_PLANE's up below 2^30, R and U are unit and an AXIS caster's tilt moves the pivot by
-    // less than twice the footprint, so every sum stays below 2^93 (no check per corner here)
-
     // Source frame (zero = whole texture); flips mirror inside it. As raylib's DrawTexturePro, a
     // negative extent flips and the rectangle still starts at (x, y).
     Rectangle src = b->source;
@@ -5413,6 +5475,37 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
     if (round < 0.0f) round = 0.0f;
     if (round > 1.0f) round = 1.0f;
     bool cylinder = (b->flags & RBL_ROUND_CYLINDER) != 0;
+    q->P = P; q->R = R; q->U = U; q->N = N; q->T = T;
+    q->x0 = x0; q->x1 = x1; q->y0 = y0; q->y1 = y1;
+    memcpy(q->uv, uv, sizeof(uv));
+    q->w = w; q->round = round; q->cylinder = cylinder;
+    q->flipU = flipU; q->flipV = flipV; q->rotated = rotated;
+    memcpy(q->col, col, 4);
+    q->src = src; q->invW = invW; q->invH = invH;
+}
+
+// rbl__billboardVertices once b is known good: the quad's four corners, or with poly its slots (4
+// vertices each) at the quad's own attributes: position, texture coordinate and (affine over each of
+// the quad's two triangles, as the rasteriser interpolates them) normal and tangent, and the quad's
+// centre (the sort key of each slot)
+static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, const rbl__Polygon *poly, RblVertex *out, float centre[3])
+{
+    rbl__QuadParts parts;
+    rbl__quadParts(view, cast, cache, textureWidth, textureHeight, b, &parts);
+    const Vector3 P = parts.P, R = parts.R, U = parts.U, N = parts.N, T = parts.T;
+    const float x0 = parts.x0, x1 = parts.x1, y0 = parts.y0, y1 = parts.y1, w = parts.w, round = parts.round;
+    const bool flipU = parts.flipU, flipV = parts.flipV, rotated = parts.rotated, cylinder = parts.cylinder;
+    const Rectangle src = parts.src;
+    const float invW = parts.invW, invH = parts.invH;
+    Vector3 p[4];
+    p[0] = rbl__v3(P.x + R.x*x0 + U.x*y0, P.y + R.y*x0 + U.y*y0, P.z + R.z*x0 + U.z*y0);
+    p[1] = rbl__v3(P.x + R.x*x1 + U.x*y0, P.y + R.y*x1 + U.y*y0, P.z + R.z*x1 + U.z*y0);
+    p[2] = rbl__v3(P.x + R.x*x1 + U.x*y1, P.y + R.y*x1 + U.y*y1, P.z + R.z*x1 + U.z*y1);
+    p[3] = rbl__v3(P.x + R.x*x0 + U.x*y1, P.y + R.y*x0 + U.y*y1, P.z + R.z*x0 + U.z*y1);
+    // No corner can overflow: rbl__billboardOk bounds the pivot, size and origin below 2^60 and
+    // CAMERA_PLANE's up below 2^30, R and U are unit and an AXIS caster's tilt moves the pivot by
+    // less than twice the footprint, so every sum stays below 2^93 (no check per corner here)
+
     static const float dxs[4] = { -1.0f, 1.0f, 1.0f, -1.0f }, dys[4] = { -1.0f, -1.0f, 1.0f, 1.0f };
 
     RblVertex corners[4];
@@ -5421,7 +5514,7 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
     {
         RblVertex *v = &q[i];
         v->position[0] = p[i].x; v->position[1] = p[i].y; v->position[2] = p[i].z;
-        v->texcoord[0] = uv[i][0]; v->texcoord[1] = uv[i][1];
+        v->texcoord[0] = parts.uv[i][0]; v->texcoord[1] = parts.uv[i][1];
         Vector3 n = N, tg = T;
         if (round > 0.0f)
         {
@@ -5433,7 +5526,7 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
         }
         v->normal[0] = n.x; v->normal[1] = n.y; v->normal[2] = n.z;
         v->tangent[0] = tg.x; v->tangent[1] = tg.y; v->tangent[2] = tg.z; v->tangent[3] = w;
-        memcpy(v->color, col, 4);
+        memcpy(v->color, parts.col, 4);
     }
     if (poly != NULL)
     {
@@ -5468,10 +5561,71 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
                     v->tangent[e] = (round > 0.0f)? q[0].tangent[e]*w0 + q[i1].tangent[e]*w1 + q[i2].tangent[e]*w2 : q[0].tangent[e];
                 }
                 v->tangent[3] = w;
-                memcpy(v->color, col, 4);
+                memcpy(v->color, parts.col, 4);
             }
     }
     return true;
+}
+
+// A batched billboard in the batch's compact stream: one record instead of four vertices where the
+// context has GLSL 3 and the header's programs draw it (lit.vs.glsl RBL_BATCH_RECORD expands it)
+#define RBL__RECORD_FLIP_U 1
+#define RBL__RECORD_FLIP_V 2
+#define RBL__RECORD_ROTATED 4
+#define RBL__RECORD_CYLINDER 8
+typedef struct rbl__BatchRecord {
+    float corner[3];                // Corner 0 (bottom-left of the footprint)
+    float right[3];                 // Corner 1 - corner 0
+    float up[3];                    // Corner 3 - corner 0
+    float uv[4];                    // Texture coordinates at corner 0 (xy) and corner 2 (zw)
+    unsigned char color[4];         // Tint (zero = white applied)
+    float shape[2];                 // Roundness 0..1, RBL__RECORD_* bits
+} rbl__BatchRecord;
+
+// rbl__expandQuad's quad (no polygon) as a record
+static void rbl__writeRecord(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, rbl__BatchRecord *r)
+{
+    rbl__QuadParts q;
+    rbl__quadParts(view, cast, cache, textureWidth, textureHeight, b, &q);
+    const Vector3 P = q.P, R = q.R, U = q.U;
+    const float wx = q.x1 - q.x0, hy = q.y1 - q.y0;
+    r->corner[0] = P.x + R.x*q.x0 + U.x*q.y0; r->corner[1] = P.y + R.y*q.x0 + U.y*q.y0; r->corner[2] = P.z + R.z*q.x0 + U.z*q.y0;
+    r->right[0] = R.x*wx; r->right[1] = R.y*wx; r->right[2] = R.z*wx;
+    r->up[0] = U.x*hy; r->up[1] = U.y*hy; r->up[2] = U.z*hy;
+    r->uv[0] = q.uv[0][0]; r->uv[1] = q.uv[0][1]; r->uv[2] = q.uv[2][0]; r->uv[3] = q.uv[2][1];
+    memcpy(r->color, q.col, 4);
+    r->shape[0] = q.round;
+    r->shape[1] = (float)((q.flipU? RBL__RECORD_FLIP_U : 0) | (q.flipV? RBL__RECORD_FLIP_V : 0) | (q.rotated? RBL__RECORD_ROTATED : 0) | (q.cylinder? RBL__RECORD_CYLINDER : 0));
+}
+
+// The CPU mirror of lit.vs.glsl's rblRecordVertex: a record's four vertices (a batch that turns to
+// vertices part-way, for a billboard records cannot hold)
+static void rbl__recordVertices(const rbl__BatchRecord *r, RblVertex out[4])
+{
+    const int bits = (int)r->shape[1];
+    const bool flipU = (bits & RBL__RECORD_FLIP_U) != 0, flipV = (bits & RBL__RECORD_FLIP_V) != 0;
+    const bool rotated = (bits & RBL__RECORD_ROTATED) != 0, cylinder = (bits & RBL__RECORD_CYLINDER) != 0;
+    Vector3 right = rbl__v3(r->right[0], r->right[1], r->right[2]), up = rbl__v3(r->up[0], r->up[1], r->up[2]), R, U;
+    if (!rbl__normalizeTo(right, &R)) R = rbl__v3(1.0f, 0.0f, 0.0f);       // a zero edge draws nothing
+    if (!rbl__normalizeTo(up, &U)) U = rbl__v3(0.0f, 1.0f, 0.0f);
+    const Vector3 N = rbl__cross(R, U), T = rotated? (flipV? rbl__neg(U) : U) : (flipU? rbl__neg(R) : R);
+    for (int c = 0; c < 4; c++)
+    {
+        const bool s = (c == 1) || (c == 2), t = (c >= 2), su = rotated? t : s, sv = rotated? s : t;
+        RblVertex *v = &out[c];
+        for (int e = 0; e < 3; e++) v->position[e] = r->corner[e] + (s? r->right[e] : 0.0f) + (t? r->up[e] : 0.0f);
+        v->texcoord[0] = su? r->uv[2] : r->uv[0]; v->texcoord[1] = sv? r->uv[3] : r->uv[1];
+        Vector3 n = N, tg = T;
+        if (r->shape[0] > 0.0f)
+        {
+            const float dx = (s? 1.0f : -1.0f)*r->shape[0], dy = cylinder? 0.0f : (t? 1.0f : -1.0f)*r->shape[0];
+            rbl__normalizeTo(rbl__v3(N.x + R.x*dx + U.x*dy, N.y + R.y*dx + U.y*dy, N.z + R.z*dx + U.z*dy), &n);
+            if (!rbl__perpendicular(T, n, &tg)) tg = T;
+        }
+        v->normal[0] = n.x; v->normal[1] = n.y; v->normal[2] = n.z;
+        v->tangent[0] = tg.x; v->tangent[1] = tg.y; v->tangent[2] = tg.z; v->tangent[3] = (flipU != flipV)? 1.0f : -1.0f;
+        memcpy(v->color, r->color, 4);
+    }
 }
 
 bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
@@ -5520,7 +5674,7 @@ enum { RBL__PATH_BILLBOARD = 0, RBL__PATH_INSTANCED, RBL__PATH_MESH, RBL__PATH_S
 // Inside a shadow pass every billboard path draws casters, with the same calls and materials as the
 // colour pass; per-material values go with each draw (defined with the lit programs)
 static void rbl__shadowPassView(RblCameraFrame *view);
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program);
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, bool record, const char *fn, rbl__Program **program);
 static const char *rbl__materialProblem(const Material *material, int path, rbl__Program **program);
 static void rbl__applyMaterialValues(rbl__Program *p, const Material *material);
 static bool rbl__programAlive(const rbl__Program *p);
@@ -5558,13 +5712,14 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
-    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = 0;      // gone with the context
+    if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = batch->recordVaoId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
+    if (batch->recordVaoId != 0) rlUnloadVertexArray(batch->recordVaoId);
     if (batch->vboId != 0) rlUnloadVertexBuffer(batch->vboId);
     if (batch->eboId != 0) rlUnloadVertexBuffer(batch->eboId);
     if (batch->fadeVboId != 0) rlUnloadVertexBuffer(batch->fadeVboId);
     if (batch->idVboId != 0) rlUnloadVertexBuffer(batch->idVboId);
-    batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = 0;
+    batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = batch->recordVaoId = 0;
     batch->gpuCapacity = batch->fadeGpuCapacity = batch->idGpuCapacity = 0;
 }
 
@@ -5770,6 +5925,7 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->runCount = 0;
     batch->skipped = 0;
     batch->culled = 0;
+    batch->records = false;
     batch->begun = true;
     batch->pass = rbl__passNow();
     pub->count = 0; pub->skipped = 0; pub->culled = 0;
@@ -5855,6 +6011,26 @@ bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billb
     return added;
 }
 
+// Whether a run of program's material can draw from records (the header's vertex stage expands them):
+// GLSL 3, and a shadow pass (its casters draw every material) or a lit program without cross-fades
+static bool rbl__recordable(const rbl__Program *program)
+{
+    if (rbl__glsl() < 300) return false;
+    if (rbl__state.shadowPass != NULL) return true;
+    return (program != NULL) && !program->key.desc.crossFade && !program->key.desc.skinning;
+}
+
+// Turns the batch's records into vertices in place, last first (record i lies below vertex slot i)
+static void rbl__recordsToVertices(rbl__BatchState *batch)
+{
+    for (int i = batch->count - 1; i >= 0; i--)
+    {
+        rbl__BatchRecord r = ((const rbl__BatchRecord *)(const void *)batch->vertices)[i];
+        rbl__recordVertices(&r, batch->vertices + (size_t)i*4);
+    }
+    batch->records = false;
+}
+
 // fade: NULL for a plain billboard (checked by the caller otherwise)
 static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, const RblBillboard *billboard, const RblFade *fade, const char *fn)
 {
@@ -5880,7 +6056,13 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     if ((bad == NULL) && !polyKnown) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
     if ((bad == NULL) && (batch->planeCount > 0) && rbl__culled(batch, billboard)) { batch->culled++; return true; }
     float centre[3] = { 0.0f, 0.0f, 0.0f };
-    if ((bad == NULL) && !rbl__expandQuad(&batch->view, (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL, &batch->frame, texW, texH, billboard, poly, batch->vertices + (size_t)batch->count*4, centre))
+    // Records from the first billboard where every run can draw them; a billboard they cannot hold
+    // turns the batch back to vertices
+    if ((bad == NULL) && (batch->count == 0)) batch->records = !batch->vertexOnly && (poly == NULL) && (fade == NULL) && rbl__recordable(program);
+    else if ((bad == NULL) && batch->records && ((poly != NULL) || (fade != NULL) || (newRun && !rbl__recordable(program)))) rbl__recordsToVertices(batch);
+    const rbl__Cast *cast = (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL;
+    if ((bad == NULL) && batch->records) rbl__writeRecord(&batch->view, cast, &batch->frame, texW, texH, billboard, (rbl__BatchRecord *)(void *)batch->vertices + batch->count);
+    else if ((bad == NULL) && !rbl__expandQuad(&batch->view, cast, &batch->frame, texW, texH, billboard, poly, batch->vertices + (size_t)batch->count*4, centre))
         bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && (poly != NULL) && !batch->polygonal)
     {
@@ -6123,17 +6305,27 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
     for (int r = 0; r < batch->runCount; r++)
         for (int i = batch->runs[r].first; i < batch->runs[r].first + batch->runs[r].count; i++)
         {
-            const RblVertex *v = batch->vertices + (size_t)i*4;
-            Vector3 c = { 0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
-                          0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
-                          0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]) };
+            Vector3 c;
+            if (batch->records)
+            {
+                const rbl__BatchRecord *r = (const rbl__BatchRecord *)(const void *)batch->vertices + i;
+                c = rbl__v3(r->corner[0] + 0.5f*(r->right[0] + r->up[0]), r->corner[1] + 0.5f*(r->right[1] + r->up[1]), r->corner[2] + 0.5f*(r->right[2] + r->up[2]));
+            }
+            else
+            {
+                const RblVertex *v = batch->vertices + (size_t)i*4;
+                c = rbl__v3(0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
+                            0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
+                            0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]));
+            }
             if (batch->polygonal) c = rbl__v3(batch->centres[3*i], batch->centres[3*i + 1], batch->centres[3*i + 2]);   // a polygon's slots sort as its quad
             batch->keys[i].depth = -rbl__dot(rbl__sub(c, eye), back);
             batch->keys[i].index = i;
             batch->keys[i].run = r;
         }
     qsort(batch->keys, (size_t)batch->count, sizeof(rbl__SortKey), rbl__compareKeys);
-    for (int i = 0; i < batch->count; i++) memcpy(batch->sorted + (size_t)i*4, batch->vertices + (size_t)batch->keys[i].index*4, 4*sizeof(RblVertex));
+    const size_t each = batch->records? sizeof(rbl__BatchRecord) : 4*sizeof(RblVertex);
+    for (int i = 0; i < batch->count; i++) memcpy((unsigned char *)batch->sorted + (size_t)i*each, (const unsigned char *)batch->vertices + (size_t)batch->keys[i].index*each, each);
     if (batch->identified)
     {
         if (batch->idSortCapacity < batch->capacity)
@@ -6159,13 +6351,38 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
     return true;
 }
 
+// The record stream's vertex array (made on first use), bound; its pointers are set per draw
+#define RBL__RECORD_LOCATION 10         // lit.vs.glsl's rblRecord* inputs: 10..15
+static void rbl__bindRecordArray(rbl__BatchState *batch)
+{
+    if (batch->recordVaoId == 0) batch->recordVaoId = rlLoadVertexArray();
+    rlEnableVertexArray(batch->recordVaoId);
+}
+
+// Points the record inputs at records [first, ...) of the batch's buffer, one per instance
+static void rbl__setRecordLayout(const rbl__BatchState *batch, int first)
+{
+    static const struct { int size, type, offset; bool normalised; } in[6] = {
+        { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, corner), false }, { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, right), false },
+        { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, up), false }, { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, uv), false },
+        { 4, RL_UNSIGNED_BYTE, (int)offsetof(rbl__BatchRecord, color), true }, { 2, RL_FLOAT, (int)offsetof(rbl__BatchRecord, shape), false } };
+    rlEnableVertexBuffer(batch->vboId);
+    for (int a = 0; a < 6; a++)
+    {
+        const unsigned int loc = RBL__RECORD_LOCATION + (unsigned int)a;
+        rlSetVertexAttribute(loc, in[a].size, in[a].type, in[a].normalised, (int)sizeof(rbl__BatchRecord), (int)((size_t)first*sizeof(rbl__BatchRecord)) + in[a].offset);
+        rlSetVertexAttributeDivisor(loc, 1);
+        rlEnableVertexAttribute(loc);
+    }
+}
+
 // Draws quads [first, first + count) of the bound vertex buffer with run r's material
 static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, int count, const char *fn, unsigned int *bound)
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     Material material = batch->runs[r].material;
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, batch->fading, fn, &program)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_BILLBOARD, batch->fading, batch->records, fn, &program)) return;
     *bound |= rbl__bindMaterial(&material);
     if (program != NULL) rbl__applyMaterialValues(program, &material);
     if (!batch->fading && (program != NULL) && program->key.desc.crossFade)
@@ -6190,7 +6407,19 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
         rlSetUniform(program->loc[RBL__U_CASTER_ID_ON], &on, SHADER_UNIFORM_FLOAT, 1);
         if (!batch->identified) rlDisableVertexAttribute((unsigned int)program->casterIdLoc);
     }
-    for (int q = 0; q < count; q += RBL__QUADS_PER_CHUNK)
+    if (batch->records)
+    {
+        rbl__setRecordLayout(batch, first);
+        if (idLoc >= 0)
+        {
+            rlEnableVertexBuffer(batch->idVboId);
+            rlSetVertexAttribute((unsigned int)idLoc, 4, RL_UNSIGNED_BYTE, true, RBL__ID_BYTES, (int)((size_t)first*RBL__ID_BYTES));
+            rlSetVertexAttributeDivisor((unsigned int)idLoc, 1);
+            rlEnableVertexAttribute((unsigned int)idLoc);
+        }
+        rlDrawVertexArrayInstanced(0, 6, count);
+    }
+    for (int q = 0; !batch->records && (q < count); q += RBL__QUADS_PER_CHUNK)
     {
         int n = count - q;
         if (n > RBL__QUADS_PER_CHUNK) n = RBL__QUADS_PER_CHUNK;
@@ -6278,8 +6507,9 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
             TraceLog(LOG_WARNING, "RBL: %s: GPU buffers for %i billboards could not be created; nothing drawn", fn, batch->capacity);
             return;
         }
-        old.fadeVboId = 0;      // the fade and identity buffers are kept (sized below)
+        old.fadeVboId = 0;      // the fade and identity buffers are kept (sized below), and the record array
         old.idVboId = 0;
+        old.recordVaoId = 0;
         rbl__unloadBatchGpu(&old);
     }
     if (batch->fading && !rbl__reserveStream(&batch->fadeVboId, &batch->fadeGpuCapacity, batch->capacity, RBL__FADE_FLOATS*(int)sizeof(float), fn, "fade")) return;
@@ -6301,8 +6531,9 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     rlEnableVertexArray(batch->vaoId);
     if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
     if (batch->identified) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
-    rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*4*(int)sizeof(RblVertex), 0);
-    rlEnableVertexBufferElement(batch->eboId);
+    rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*(batch->records? (int)sizeof(rbl__BatchRecord) : 4*(int)sizeof(RblVertex)), 0);
+    if (batch->records) rbl__bindRecordArray(batch);
+    else rlEnableVertexBufferElement(batch->eboId);
     rbl__BatchLayer layer = { batch, sorted, fn, 0 };
     rbl__drawLayers(sort, pub->solidAlpha, rbl__drawBatchLayer, &layer);
     unsigned int bound = layer.bound;
@@ -6336,6 +6567,7 @@ static void rbl__drawBillboard(Camera3D camera, Material material, const RblBill
     {
         *immediate = RblLoadBatch(slots);     // created on first use, released by RblClose()
         if (!RblIsBatchValid(*immediate)) return;
+        immediate->state->vertexOnly = true;    // one quad: records would save nothing
     }
     RblBeginBatch(immediate, camera);
     rbl__batchAdd(immediate->state, &material, billboard, fade, fn);
@@ -6584,6 +6816,17 @@ static rbl__Program *rbl__polygonVariant(rbl__Program *p)
     return p->polygonVariant;
 }
 
+// The batch-record variant (RBL_BATCH_RECORD) of a vertex-buffer program (lit, G-buffer geometry or
+// caster): held until its program goes; NULL (problem set) on failure
+static rbl__Program *rbl__recordVariant(rbl__Program *p)
+{
+    if (p->recordVariant != NULL) return p->recordVariant;
+    rbl__ProgramKey key = p->key;
+    key.sprites |= 4;
+    p->recordVariant = rbl__compileProgram(&key);
+    return p->recordVariant;
+}
+
 // A polygon's corners for the instanced stage (cut along diagonal d), 3 per triangle from its slots,
 // each pair (a, b) of frame fractions, two corners a texel (RGBA32F); returns the texels written
 static int rbl__polygonCorners(const rbl__Polygon *poly, int d, float *out)
@@ -6780,7 +7023,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
 
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, fades != NULL, "RblDrawInstanced", &program)) return 0;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, fades != NULL, false, "RblDrawInstanced", &program)) return 0;
     if (corners > 0)
     {
         // Polygon frames: the program's polygon variant, each instance drawn with the draw's most
@@ -8360,10 +8603,11 @@ static void rbl__removeProgram(rbl__Program *p)
         {
             if (rbl__state.programs[i]->spriteVariant == p) rbl__state.programs[i]->spriteVariant = NULL;
             if (rbl__state.programs[i]->polygonVariant == p) rbl__state.programs[i]->polygonVariant = NULL;
+            if (rbl__state.programs[i]->recordVariant == p) rbl__state.programs[i]->recordVariant = NULL;
         }
-    rbl__Program *own[2] = { p->spriteVariant, p->polygonVariant };     // (a sprite variant's own polygon variant goes with it)
-    p->spriteVariant = NULL; p->polygonVariant = NULL;
-    for (int k = 0; k < 2; k++)
+    rbl__Program *own[3] = { p->spriteVariant, p->polygonVariant, p->recordVariant };     // (a sprite variant's own polygon variant goes with it)
+    p->spriteVariant = NULL; p->polygonVariant = NULL; p->recordVariant = NULL;
+    for (int k = 0; k < 3; k++)
     {
         rbl__Program *v = own[k];
         if (v == NULL) continue;
@@ -8441,6 +8685,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     if ((key->kind == RBL__KIND_PASS) && ((rbl__glsl() == 300) || (d->shading.shadowMaps > 0))) snprintf(defines + used, sizeof(defines) - used, "#define RBL_GB_PARAMS_RGBA\n");
     if (key->sprites & 1) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_SPRITE_BUFFER\n"); }
     if (key->sprites & 2) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_POLYGONS\n"); }
+    if (key->sprites & 4) { size_t l = strlen(defines); snprintf(defines + l, sizeof(defines) - l, "#define RBL_BATCH_RECORD\n"); }
     // The thin target (RT4): every geometry variant writes it where the context has 5 draw buffers;
     // light passes of a G-buffer with it read it
     bool thinPass = (key->kind == RBL__KIND_PASS) && (d->transmission || key->gbufferRelief);
@@ -8948,7 +9193,7 @@ static void rbl__casterDepth(const rbl__Program *caster)
     rlSetUniform(caster->loc[RBL__U_CASTER_DEPTH], depth, SHADER_UNIFORM_VEC4, 1);
 }
 
-static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, const char *fn, rbl__Program **program)
+static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CASTER_MAPS], int path, bool fade, bool record, const char *fn, rbl__Program **program)
 {
     const char *bad = rbl__materialProblem(material, path, program);
     if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: %s: %s", fn, bad); return false; }
@@ -8964,6 +9209,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
         if ((caster == NULL) && (path == RBL__PATH_SKINNED)) { TraceLog(LOG_WARNING, "RBL: %s: skinned shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if ((caster == NULL) && fade) { TraceLog(LOG_WARNING, "RBL: %s: cross-fade shadow caster unavailable (%s)", fn, rbl__state.problem); return false; }
         if (caster == NULL) { TraceLog(LOG_WARNING, "RBL: %s: shadow caster program missing", fn); return false; }
+        if (record && ((caster = rbl__recordVariant(caster)) == NULL)) { TraceLog(LOG_WARNING, "RBL: %s: batch-record caster unavailable (%s); not cast", fn, rbl__state.problem); return false; }
         rbl__casterDepth(caster);
         float tint = pass->coloured? 1.0f : 0.0f;
         if (caster->loc[RBL__U_CASTER_TINT] != -1) rlSetUniform(caster->loc[RBL__U_CASTER_TINT], &tint, SHADER_UNIFORM_FLOAT, 1);
@@ -8977,6 +9223,7 @@ static bool rbl__prepareDraw(Material *material, MaterialMap casterMaps[RBL__CAS
     if (*program == NULL) return true;
     rbl__checkRaylibDrew(*program);
     *program = rbl__shadowVariant(*program);    // the receiver compiled for the scene's map kinds
+    if (record && ((*program = rbl__recordVariant(*program)) == NULL)) { TraceLog(LOG_WARNING, "RBL: %s: batch-record variant unavailable (%s); not drawn", fn, rbl__state.problem); return false; }
     material->shader = (*program)->shader;      // the registry's locations: a handle's are the caller's to free
     if (rbl__state.scene.shadowDropped && ((*program)->key.desc.shading.shadowMaps > 0)) rbl__noteDroppedShadow();
     if ((*program)->key.desc.softParticles) rbl__bindSoftDepth(*program, material);
@@ -9620,7 +9867,7 @@ static void rbl__drawMesh(Mesh mesh, Material material, Matrix transform, int pa
 {
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *p = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, path, false, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
+    if (!rbl__prepareDraw(&material, casterMaps, path, false, false, (bones != NULL)? "RblDrawModel" : "RblDrawMesh", &p)) return;
     if (p != NULL)
     {
         rlEnableShader(material.shader.id);
@@ -13545,7 +13792,7 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     if (b->count == 0) return 0;
     MaterialMap casterMaps[RBL__CASTER_MAPS];
     rbl__Program *program = NULL;
-    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, false, "RblDrawSpriteBuffer", &program)) return 0;
+    if (!rbl__prepareDraw(&material, casterMaps, RBL__PATH_INSTANCED, false, false, "RblDrawSpriteBuffer", &program)) return 0;
     // The program's resident-sprite variant (compiled at its first sprite draw): the plain instanced
     // stage pays nothing for reading sprites
     rbl__Program *variant = rbl__spriteVariant(program);

@@ -6,6 +6,7 @@
 
 #include "reference.h"
 #include "gpu_common.h"
+#include "batch_peek.h"
 #include "test_batch.c"
 #include "test_api.c"
 #include "test_instanced.c"
@@ -27,6 +28,7 @@
 #include "test_cull.c"
 #include "test_clustered.c"
 #include "test_polygon.c"
+#include "test_records.c"
 
 static const RtTest rblGpuTests[] = {
         RBL_BATCH_TESTS,
@@ -50,6 +52,7 @@ static const RtTest rblGpuTests[] = {
         RBL_CULL_TESTS,
         RBL_CLUSTERED_TESTS,
         RBL_POLYGON_TESTS,
+        RBL_RECORD_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

@@ -47,6 +47,7 @@
 #include "rlgl.h"
 #include "harness.h"
 #include "bench.h"
+#include "batch_peek.h"
 #include "tf_capture.h"
 #include "bench_geometry_v03.h"
 
@@ -757,13 +758,18 @@ int main(int argc, char **argv)
 
             if (selected[PATH_BATCHED])
             {
-                // The batch still holds the last batched frame's vertices: exactly what was uploaded
+                // The batch still holds the last batched frame: its vertices, or its records expanded by
+                // the CPU mirror of the vertex stage (rbl__recordVertices)
                 if ((batch.count != counts[c]) || (batch.skipped != 0))
                 {
                     printf("bench_geometry: batch holds %d billboards (%d skipped), expected %d\n", batch.count, batch.skipped, counts[c]);
                     return 1;
                 }
-                CornerError(batch.state->vertices[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
+                RblVertex *corners = (RblVertex *)malloc((size_t)counts[c]*4*sizeof(RblVertex));
+                if (corners == NULL) return 1;
+                for (int i = 0; i < counts[c]; i++) rtBatchVertices(batch.state, i, corners + (size_t)i*4);
+                CornerError(corners[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
+                free(corners);
             }
         }
     }
@@ -854,12 +860,14 @@ int main(int argc, char **argv)
 
     // Upload volume and the memory-bandwidth floor. rlgl's batch uploads, per vertex, positions
     // (3 floats), texcoords (2 floats), normals (3 floats) and colours (4 bytes) in four
-    // glBufferSubData calls (indices are static); batched/immediate upload 4 RblVertex (52 bytes
-    // each), instanced one RblInstance (56 bytes).
+    // glBufferSubData calls (indices are static); immediate uploads 4 RblVertex (52 bytes each),
+    // batched one record (64 bytes; 4 RblVertex where the context has no GLSL 3), instanced one
+    // RblInstance (56 bytes).
+    const bool records = (batch.state != NULL) && batch.state->records;
     const double bytesPerBillboard[PATH_COUNT] = {
         4.0*(3*sizeof(float) + 2*sizeof(float) + 3*sizeof(float) + 4*sizeof(unsigned char)),
         4.0*sizeof(RblVertex),
-        4.0*sizeof(RblVertex),
+        records? (double)sizeof(rbl__BatchRecord) : 4.0*sizeof(RblVertex),
         (double)sizeof(RblInstance),
         4.0*(double)V03VertexSize()
     };

@@ -1,0 +1,255 @@
+// The batch's compact stream (GPU, headless): where the context has GLSL 3 and the header's programs
+// draw every run, a batch uploads one 64-byte record per billboard and the vertex stage expands it
+// (lit.vs.glsl RBL_BATCH_RECORD). Each case draws the same billboards twice, from records and from
+// vertices (the batch held to vertices), and compares the pixels: every facing, both mirrors, turned
+// and rotated frames, flat, sphere- and cylinder-rounded, lit with a normal map; cast into a shadow
+// map; in a G-buffer; sorted and blended; and a batch that turns to vertices part-way (a user's
+// shader after records). The vertices are rbl__expandQuad's (the reference every other test checks).
+// Included by gpu_tests.h.
+
+#define REC_RT 256
+
+static Image recNoise(unsigned int seed, bool normals)
+{
+    Image img = GenImageColor(16, 16, BLACK);
+    Color *px = (Color *)img.data;
+    for (int i = 0; i < 256; i++)
+    {
+        unsigned int r = rtRandom(&seed);
+        if (!normals) { px[i] = (Color){ (unsigned char)(60 + (r & 127)), (unsigned char)(60 + ((r >> 8) & 127)), (unsigned char)(60 + ((r >> 16) & 127)), 255 }; continue; }
+        double nx = ((r & 255) - 127.5)/400.0, ny = (((r >> 8) & 255) - 127.5)/400.0, nz = sqrt(1.0 - nx*nx - ny*ny);
+        px[i] = normalTexel((float)nx, (float)ny, (float)nz);
+    }
+    return img;
+}
+
+// The case set: 4 facings x 4 mirrors x turned or not x rotated frame or not x flat, sphere, cylinder
+#define REC_SET 192
+static void recSet(RblBillboard *set)
+{
+    for (int k = 0; k < REC_SET; k++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        b.facing = k%4;
+        b.size = (Vector2){ ((k/4) & 1)? -0.34f : 0.34f, ((k/4) & 2)? -0.3f : 0.3f };
+        b.origin = (Vector2){ 0.17f, 0.1f };
+        b.rotation = ((k/16) & 1)? 33.0f : 0.0f;
+        b.source = (Rectangle){ 2.0f, 3.0f, 11.0f, 9.0f };
+        if ((k/32) & 1) b.flags |= RBL_FRAME_ROTATED;
+        int r = (k/64)%3;
+        b.roundness = (r > 0)? 0.6f : 0.0f;
+        if (r == 2) b.flags |= RBL_ROUND_CYLINDER;
+        b.axis = (Vector3){ 0.2f, 1.0f, 0.1f };
+        b.up = (Vector3){ 0.1f, 1.0f, 0.3f };
+        b.tint = ((k % 5) == 0)? (Color){ 255, 200, 180, 255 } : BLANK;
+        b.position = (Vector3){ -2.1f + 0.3f*(float)(k%16), -1.7f + 0.3f*(float)(k/16), 0.05f*(float)(k%3) };
+        set[k] = b;
+    }
+}
+
+typedef struct RecWorst { int worst, differ, covered, records; } RecWorst;
+
+static void recCompare(Image a, Image b, RecWorst *w)
+{
+    for (int i = 0; i < a.width*a.height; i++)
+    {
+        Color p = ((const Color *)a.data)[i], q = ((const Color *)b.data)[i];
+        int d = abs(p.r - q.r);
+        if (abs(p.g - q.g) > d) d = abs(p.g - q.g);
+        if (abs(p.b - q.b) > d) d = abs(p.b - q.b);
+        if (abs(p.a - q.a) > d) d = abs(p.a - q.a);
+        w->covered += (q.r | q.g | q.b) != 0;
+        w->differ += d > 1;
+        if (d > w->worst) w->worst = d;
+    }
+}
+
+// Draws set through batch (held to vertices or not) with materials m[k % mats] into rt; whether the
+// batch held records when it ended
+static bool recDraw(RblBatch *batch, bool vertices, Camera3D cam, const Material *m, int mats, const RblBillboard *set, int n, int sort)
+{
+    rbl__BatchState *st = rbl__batchState(batch);
+    if (st == NULL) return false;
+    st->vertexOnly = vertices;
+    batch->sort = sort;
+    RblBeginBatch(batch, cam);
+    for (int k = 0; k < n; k++) RblBatchAdd(batch, m[(k/7) % mats], &set[k]);
+    bool records = st->records;
+    RblEndBatch(batch);
+    st->vertexOnly = false;
+    return records;
+}
+
+static Image recFrame(RenderTexture2D rt, RblBatch *batch, bool vertices, Camera3D cam, const Material *m, int mats, const RblBillboard *set, int n, int sort, bool *records)
+{
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(cam);
+    *records = recDraw(batch, vertices, cam, m, mats, set, n, sort);
+    EndMode3D();
+    EndTextureMode();
+    return rtReadTarget(rt);
+}
+
+static void test_batch_records_draw_what_vertices_draw_lit_mirrored_turned_and_rounded(void)
+{
+    Camera3D cam = frontCamera();
+    RblLight lights[2] = { litDirectional((Vector3){ -0.4f, -0.5f, -0.8f }, 0.9f), rtPointLight((Vector3){ 0.8f, 0.6f, 1.5f }, 3.0f) };
+    RT_CHECK(renderSetLights(lights, 2, (Color){ 30, 30, 40, 255 }), "scene rejected");
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 2; desc.shading.lightFeatures = RblGetLightFeatures(lights, 2); desc.material.normalEncoding = RBL_NORMAL_RGB;
+    Shader lit = RblLoadLitShader(desc);
+    Image ai = recNoise(11u, false), ni = recNoise(12u, true);
+    Texture2D albedo = LoadTextureFromImage(ai), normal = LoadTextureFromImage(ni);
+    UnloadImage(ai); UnloadImage(ni);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m.maps[MATERIAL_MAP_NORMAL].texture = normal;
+    static RblBillboard set[REC_SET];
+    recSet(set);
+    RblBatch batch = RblLoadBatch(REC_SET);
+    RenderTexture2D rt = LoadRenderTexture(REC_RT, REC_RT);
+    bool rec[2] = { false, false };
+    Image a = recFrame(rt, &batch, false, cam, &m, 1, set, REC_SET, RBL_SORT_NONE, &rec[0]);
+    Image b = recFrame(rt, &batch, true, cam, &m, 1, set, REC_SET, RBL_SORT_NONE, &rec[1]);
+    RecWorst w = { 0, 0, 0, 0 };
+    recCompare(a, b, &w);
+    printf("    %d billboards: from %s, worst %d/255 from vertices, %d of %d covered pixels differ by more than 1\n", REC_SET, rec[0]? "records" : "vertices", w.worst, w.differ, w.covered);
+    RT_CHECK(rec[0] == rtGlsl3() && !rec[1], "records %s on a GLSL %s context (held to vertices: %s)", rec[0]? "used" : "not used", rtGlsl3()? "3" : "1", rec[1]? "records" : "vertices");
+    RT_CHECK(w.covered > REC_RT*REC_RT/4, "only %d pixels covered (test setup)", w.covered);
+    RT_CHECK(w.worst <= 2 && w.differ*1000 <= w.covered, "records vs vertices: worst %d/255, %d pixels beyond 1/255", w.worst, w.differ);
+    if ((rtFailuresInCurrentTest() > 0) || (getenv("RBL_TEST_LOOK") != NULL)) { rtSaveImage(a, "records"); rtSaveImage(b, "vertices"); }
+    UnloadImage(a); UnloadImage(b);
+    UnloadRenderTexture(rt);
+    RblUnloadBatch(&batch);
+    MemFree(m.maps);
+    UnloadTexture(albedo); UnloadTexture(normal);
+    RblUnloadLitShader(&lit);
+}
+
+// Records in the other places a batch draws: cast into a shadow map (the floor's shadows compared),
+// in a G-buffer (resolved), sorted back to front and blended across two materials, and a batch that
+// turns to vertices when a raylib default material follows records (what it drew compared whole)
+static void test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_like_vertices(void)
+{
+    static RblBillboard set[REC_SET];
+    recSet(set);
+    RblBatch batch = RblLoadBatch(REC_SET);
+    RenderTexture2D rt = LoadRenderTexture(REC_RT, REC_RT);
+    Camera3D cam = frontCamera();
+    RblLight sun = litDirectional((Vector3){ -0.4f, -1.0f, -0.3f }, 1.0f);
+    Image ai = recNoise(21u, false);
+    Texture2D albedo = LoadTextureFromImage(ai), white = solidTexture(WHITE);
+    UnloadImage(ai);
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shading.shadowMaps = 1;
+    Shader receiver = RblLoadLitShader(desc);
+    desc.shading.shadowMaps = 0;
+    Shader lit = RblLoadLitShader(desc);
+    desc.deferred = true;
+    Shader geo = (rbl__glsl() >= 300)? RblLoadLitShader(desc) : (Shader){ 0 };
+    Material m[2] = { LoadMaterialDefault(), LoadMaterialDefault() };
+    m[0].shader = lit; m[0].maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    m[1].shader = lit; m[1].maps[MATERIAL_MAP_ALBEDO].texture = white; m[1].maps[MATERIAL_MAP_ALBEDO].color = (Color){ 120, 200, 255, 255 };
+    const char *names[4] = { "shadow casters", "G-buffer", "sorted, blended", "turned to vertices" }, *tags[4][2] = {
+        { "casters-records", "casters-vertices" }, { "gbuffer-records", "gbuffer-vertices" }, { "sorted-records", "sorted-vertices" }, { "mixed-records", "mixed-vertices" } };
+    for (int c = 0; c < 4; c++)
+    {
+        if ((c == 1) && (geo.id == 0)) continue;         // G-buffers need GLSL 3
+        Image img[2];
+        bool rec[2] = { false, false };
+        for (int v = 0; v < 2; v++)
+        {
+            if (c == 0)
+            {
+                // Cards 1 above the floor seen from the top; the floor drawn through the immediate path
+                static RblBillboard cards[REC_SET];
+                for (int k = 0; k < REC_SET; k++) { cards[k] = set[k]; cards[k].position = (Vector3){ set[k].position.x*1.5f, 1.0f + 0.1f*(float)(k%4), set[k].position.y*1.5f }; }
+                RblShadowDesc sd;
+                memset(&sd, 0, sizeof(sd));
+                sd.size = 256;
+                RblShadowMap map = RblLoadShadowMap(sd);
+                RblScene scene;
+                memset(&scene, 0, sizeof(scene));
+                scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 30, 30, 30, 255 };
+                if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 0.5f, 0.0f }, 5.0f))
+                {
+                    rec[v] = recDraw(&batch, v == 1, ssTopCamera(), m, 1, cards, REC_SET, RBL_SORT_NONE);
+                    RblEndShadowMap(&map);
+                }
+                scene.shadowMaps = &map; scene.shadowMapCount = 1;
+                RT_CHECK(RblSetScene(&scene), "scene rejected");
+                Material floor = m[0];
+                floor.shader = receiver;
+                BeginTextureMode(rt);
+                ClearBackground(BLACK);
+                BeginMode3D(ssTopCamera());
+                RblDrawBillboard(ssTopCamera(), floor, ssFloor());
+                EndMode3D();
+                EndTextureMode();
+                img[v] = rtReadTarget(rt);
+                RblUnloadShadowMap(&map);
+                shClearScene();
+            }
+            else if (c == 1)
+            {
+                RT_CHECK(renderSetLights(&sun, 1, (Color){ 30, 30, 30, 255 }), "scene rejected");
+                RblGBufferDesc gd;
+                memset(&gd, 0, sizeof(gd));
+                gd.width = REC_RT; gd.height = REC_RT; gd.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL;
+                RblGBuffer g = RblLoadGBuffer(gd);
+                Material gm = m[0];
+                gm.shader = geo;
+                if (RblBeginGBuffer(&g, cam))
+                {
+                    rec[v] = recDraw(&batch, v == 1, cam, &gm, 1, set, REC_SET, RBL_SORT_NONE);
+                    RblEndGBuffer(&g);
+                    RblDrawDeferredLights(&g);
+                }
+                BeginTextureMode(rt);
+                ClearBackground(BLANK);
+                RblResolveGBuffer(&g);
+                EndTextureMode();
+                img[v] = rtReadTarget(rt);
+                RblUnloadGBuffer(&g);
+            }
+            else
+            {
+                RT_CHECK(renderSetLights(&sun, 1, (Color){ 30, 30, 30, 255 }), "scene rejected");
+                static RblBillboard see[REC_SET];
+                Material mats[2] = { m[0], m[1] };
+                if (c == 3) mats[1] = LoadMaterialDefault();     // raylib's default shader: the batch turns to vertices
+                for (int k = 0; k < REC_SET; k++) { see[k] = set[k]; see[k].tint = (Color){ 255, 255, 255, (unsigned char)((c == 2)? 140 : 255) }; }
+                img[v] = recFrame(rt, &batch, v == 1, cam, mats, 2, see, REC_SET, (c == 2)? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE, &rec[v]);
+                if (c == 3) MemFree(mats[1].maps);
+            }
+        }
+        RecWorst w = { 0, 0, 0, 0 };
+        recCompare(img[0], img[1], &w);
+        bool want = rtGlsl3() && (c != 3);
+        printf("    %-18s: batch %s, worst %d/255 from vertices, %d of %d covered pixels differ by more than 1\n", names[c], rec[0]? "records" : "vertices", w.worst, w.differ, w.covered);
+        RT_CHECK(rec[0] == want && !rec[1], "%s: the batch ended with %s (expected %s)", names[c], rec[0]? "records" : "vertices", want? "records" : "vertices");
+        RT_CHECK(w.covered > REC_RT*REC_RT/8, "%s: only %d pixels covered (test setup)", names[c], w.covered);
+        int shadowed = 0;
+        for (int k = 0; (c == 0) && (k < REC_RT*REC_RT); k++) shadowed += luminance(((const Color *)img[0].data)[k]) < 3*50;
+        RT_CHECK((c != 0) || (shadowed > REC_RT*REC_RT/20), "the casters shadow only %d floor pixels (test setup)", shadowed);
+        RT_CHECK(w.worst <= 2 && w.differ*1000 <= w.covered, "%s: records vs vertices worst %d/255, %d pixels beyond 1/255", names[c], w.worst, w.differ);
+        if ((rtFailuresInCurrentTest() > 0) || (getenv("RBL_TEST_LOOK") != NULL)) { rtSaveImage(img[0], tags[c][0]); rtSaveImage(img[1], tags[c][1]); }
+        UnloadImage(img[0]); UnloadImage(img[1]);
+    }
+    UnloadRenderTexture(rt);
+    RblUnloadBatch(&batch);
+    MemFree(m[0].maps); MemFree(m[1].maps);
+    UnloadTexture(albedo); UnloadTexture(white);
+    RblUnloadLitShader(&lit); RblUnloadLitShader(&receiver);
+    if (geo.id != 0) RblUnloadLitShader(&geo);
+}
+
+// The tests of this file, in order (gpu_tests.h lists every file's)
+#define RBL_RECORD_TESTS \
+    RT_TEST(test_batch_records_draw_what_vertices_draw_lit_mirrored_turned_and_rounded), \
+    RT_TEST(test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_like_vertices)
