@@ -75,6 +75,14 @@ int main(int argc, char **argv)
             snprintf(name, sizeof(name), "caster-%d", c);
             writeStage(dir, glsl, name, false, defines, rbl__pass_shadow_caster_fs);
             if (glsl < 300) continue;
+            // The batch-record vertex stage (GLSL 3; programs without cross-fades, as rbl__recordable)
+            if (!d.instanced && !d.crossFade)
+            {
+                char record[1600];
+                snprintf(record, sizeof(record), "%s#define RBL_BATCH_RECORD\n", defines);
+                snprintf(name, sizeof(name), "record-%d", c);
+                writeStage(dir, glsl, name, true, record, rbl__pass_lit_vs);
+            }
             // Deferred light passes: the lighting desc of this case, with and without the light counter
             RblLitShaderDesc lighting = d;
             lighting.deferred = false; lighting.instanced = false;
