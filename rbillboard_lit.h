@@ -6479,6 +6479,31 @@ static void rbl__drawBatchLayer(void *context)
     rbl__drawBatchPass(layer->batch, layer->sorted, layer->fn, &layer->bound);
 }
 
+static rbl__Program *rbl__recordVariant(rbl__Program *p);
+static rbl__Program *rbl__shadowVariant(rbl__Program *p);
+static rbl__Program *rbl__findCaster(unsigned int id);
+static rbl__Program *rbl__blendCaster(bool instanced);
+
+// Whether the program every run will draw with has its record variant (compiled here on first need);
+// where one cannot be made the batch draws from vertices instead (a shadow pass's casters alike)
+static bool rbl__recordVariantsReady(const rbl__BatchState *batch)
+{
+    for (int r = 0; r < batch->runCount; r++)
+    {
+        rbl__Program *p = NULL;
+        if (rbl__state.shadowPass != NULL) p = rbl__state.shadowPass->state->blending? rbl__blendCaster(false) : rbl__findCaster(rbl__state.casterIds[0]);
+        else
+        {
+            Material m = batch->runs[r].material;
+            if (rbl__materialProblem(&m, RBL__PATH_BILLBOARD, &p) != NULL) continue;      // refused at the draw, as ever
+            p = rbl__shadowVariant(p);
+        }
+        if ((p != NULL) && (rbl__recordVariant(p) == NULL)) return false;
+        if (rbl__state.shadowPass != NULL) break;          // one caster for every run
+    }
+    return true;
+}
+
 static void rbl__endBatch(RblBatch *pub, const char *fn)
 {
     rbl__BatchState *batch = rbl__batchState(pub);
@@ -6514,6 +6539,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     }
     if (batch->fading && !rbl__reserveStream(&batch->fadeVboId, &batch->fadeGpuCapacity, batch->capacity, RBL__FADE_FLOATS*(int)sizeof(float), fn, "fade")) return;
     if (batch->identified && !rbl__reserveStream(&batch->idVboId, &batch->idGpuCapacity, batch->capacity, RBL__ID_BYTES, fn, "caster identity")) return;
+    if (batch->records && !rbl__recordVariantsReady(batch)) rbl__recordsToVertices(batch);
     int sort = rbl__passSort(pub->sort);
     if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
     {

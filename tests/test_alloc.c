@@ -288,6 +288,9 @@ static void test_alloc_growth_failures_keep_objects_valid(void)
     BeginMode3D(frontCamera());
     RblBillboard bb; memset(&bb, 0, sizeof(bb)); bb.size = (Vector2){ 1, 1 };
     RblBatch warm = RblLoadBatch(1);        // the live-object list exists from here on (freed by RblClose)
+    RblBeginBatch(&warm, frontCamera());    // and the lit program's batch-record variant (held by the program)
+    RblBatchAdd(&warm, m, &bb);
+    RblEndBatch(&warm);
     RblUnloadBatch(&warm);
     for (long n = 0; n < 64; n++)
     {
@@ -305,6 +308,29 @@ static void test_alloc_growth_failures_keep_objects_valid(void)
         RblUnloadBatch(&b);
         RT_CHECK(allocLive == liveBefore, "batch growth failure %ld: %ld allocations leaked", n, allocLive - liveBefore);
         if (!hit) { printf("    batch growth: %ld failing runs swept\n", n); break; }
+    }
+    // A lit program's batch-record variant is compiled at its first batch draw: where that fails, the
+    // batch draws from vertices (every billboard drawn, no line), and a later draw makes the variant
+    for (long n = 0; rtGlsl3() && (n < 64); n++)
+    {
+        long liveBefore = allocLive;
+        Material fresh = m;
+        fresh.shader = RblLoadLitShader((RblLitShaderDesc){ .maxLights = 2 });
+        RblBatch b = RblLoadBatch(8);
+        RblBeginBatch(&b, frontCamera());
+        for (int i = 0; i < 8; i++) RblBatchAdd(&b, fresh, &bb);
+        failAfter(n);
+        RblEndBatch(&b);
+        bool hit = injected();
+        allocFailAt = -1;
+        rbl__Program *p = rbl__findLit(fresh.shader.id);
+        RT_CHECK(RblIsBatchValid(b) && (b.count == 8) && (warnings == 0), "variant failure %ld: batch invalid, count %d or %d lines (%s)", n, b.count, warnings, lastWarning);
+        if (hit) RT_CHECK((p != NULL) && (p->recordVariant == NULL) && !b.state->records, "variant failure %ld: %s", n, (p == NULL)? "program gone" : "the batch kept records without a variant");
+        else RT_CHECK((p != NULL) && (p->recordVariant != NULL), "variant failure %ld: no variant made without a failure", n);
+        RblUnloadBatch(&b);
+        RblUnloadLitShader(&fresh.shader);
+        RT_CHECK(allocLive == liveBefore, "variant failure %ld: %ld allocations leaked", n, allocLive - liveBefore);
+        if (!hit) { printf("    batch-record variant: %ld failing runs swept\n", n); break; }
     }
     RblInstance in[40];
     memset(in, 0, sizeof(in));
@@ -352,6 +378,9 @@ static void test_alloc_fade_streams_fail_cleanly_and_keep_objects_valid(void)
     BeginMode3D(frontCamera());
     RblBillboard bb; memset(&bb, 0, sizeof(bb)); bb.size = (Vector2){ 1, 1 };
     RblBatch warm = RblLoadBatch(1);        // the live-object list exists from here on (freed by RblClose)
+    RblBeginBatch(&warm, frontCamera());    // and the lit program's batch-record variant (held by the program)
+    RblBatchAdd(&warm, m, &bb);
+    RblEndBatch(&warm);
     RblUnloadBatch(&warm);
     for (int sorted = 0; sorted < 2; sorted++)
         for (long n = 0; n < 64; n++)
