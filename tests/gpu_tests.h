@@ -52,7 +52,7 @@ static const RtTest rblGpuTests[] = {
         RBL_CULL_TESTS,
         RBL_CLUSTERED_TESTS,
         RBL_POLYGON_TESTS,
-        RBL_RECORD_TESTS,
+        RBL_RECORDS_TESTS,
     };
 #define RBL_GPU_TEST_COUNT ((int)(sizeof(rblGpuTests)/sizeof(rblGpuTests[0])))
 

@@ -250,6 +250,6 @@ static void test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_l
 }
 
 // The tests of this file, in order (gpu_tests.h lists every file's)
-#define RBL_RECORD_TESTS \
+#define RBL_RECORDS_TESTS \
     RT_TEST(test_batch_records_draw_what_vertices_draw_lit_mirrored_turned_and_rounded), \
     RT_TEST(test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_like_vertices)
