@@ -867,7 +867,7 @@ typedef struct RblBillboard {
     unsigned int flags;             // RblBillboardFlags
 } RblBillboard;
 
-// Vertex layout of the batched path (attribute locations are raylib's defaults)
+// Vertex layout of the batched path where it draws vertices (attribute locations are raylib's defaults)
 typedef struct RblVertex {
     float position[3];              // location 0: vertexPosition
     float texcoord[2];              // location 1: vertexTexCoord
