@@ -6351,12 +6351,17 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
     return true;
 }
 
-// The record stream's vertex array (made on first use), bound; its pointers are set per draw
+// The record stream's vertex array, made on first use (left unbound); false when it cannot be made.
+// Its pointers are set per draw
 #define RBL__RECORD_LOCATION 10         // lit.vs.glsl's rblRecord* inputs: 10..15
-static void rbl__bindRecordArray(rbl__BatchState *batch)
+static bool rbl__makeRecordArray(rbl__BatchState *batch)
 {
-    if (batch->recordVaoId == 0) batch->recordVaoId = rlLoadVertexArray();
-    rlEnableVertexArray(batch->recordVaoId);
+    if (batch->recordVaoId == 0)
+    {
+        batch->recordVaoId = rlLoadVertexArray();
+        rlDisableVertexArray();
+    }
+    return batch->recordVaoId != 0;
 }
 
 // Points the record inputs at records [first, ...) of the batch's buffer, one per instance
@@ -6539,7 +6544,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     }
     if (batch->fading && !rbl__reserveStream(&batch->fadeVboId, &batch->fadeGpuCapacity, batch->capacity, RBL__FADE_FLOATS*(int)sizeof(float), fn, "fade")) return;
     if (batch->identified && !rbl__reserveStream(&batch->idVboId, &batch->idGpuCapacity, batch->capacity, RBL__ID_BYTES, fn, "caster identity")) return;
-    if (batch->records && !rbl__recordVariantsReady(batch)) rbl__recordsToVertices(batch);
+    if (batch->records && (!rbl__recordVariantsReady(batch) || !rbl__makeRecordArray(batch))) rbl__recordsToVertices(batch);
     int sort = rbl__passSort(pub->sort);
     if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
     {
@@ -6558,7 +6563,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
     if (batch->identified) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
     rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*(batch->records? (int)sizeof(rbl__BatchRecord) : 4*(int)sizeof(RblVertex)), 0);
-    if (batch->records) rbl__bindRecordArray(batch);
+    if (batch->records) rlEnableVertexArray(batch->recordVaoId);
     else rlEnableVertexBufferElement(batch->eboId);
     rbl__BatchLayer layer = { batch, sorted, fn, 0 };
     rbl__drawLayers(sort, pub->solidAlpha, rbl__drawBatchLayer, &layer);
@@ -6831,27 +6836,23 @@ static void rbl__bindSceneTints(const rbl__Program *p);
 static void rbl__bindSoftDepth(const rbl__Program *p, const Material *material);
 static void rbl__casterDepth(const rbl__Program *caster);
 
-// The polygon-frame variant (RBL_POLYGONS) of an instanced program (plain or resident-sprite): held
-// until its program goes; NULL (problem set) on failure. Draws without polygons never compile it.
-static rbl__Program *rbl__polygonVariant(rbl__Program *p)
+// A header-owned variant of p: p's key with rbl__ProgramKey.sprites bit `bit`, compiled on first
+// need and held in *slot until p goes; NULL (problem set) on failure
+static rbl__Program *rbl__ownVariant(rbl__Program *p, rbl__Program **slot, int bit)
 {
-    if (p->polygonVariant != NULL) return p->polygonVariant;
+    if (*slot != NULL) return *slot;
     rbl__ProgramKey key = p->key;
-    key.sprites |= 2;
-    p->polygonVariant = rbl__compileProgram(&key);
-    return p->polygonVariant;
+    key.sprites |= bit;
+    *slot = rbl__compileProgram(&key);
+    return *slot;
 }
 
-// The batch-record variant (RBL_BATCH_RECORD) of a vertex-buffer program (lit, G-buffer geometry or
-// caster): held until its program goes; NULL (problem set) on failure
-static rbl__Program *rbl__recordVariant(rbl__Program *p)
-{
-    if (p->recordVariant != NULL) return p->recordVariant;
-    rbl__ProgramKey key = p->key;
-    key.sprites |= 4;
-    p->recordVariant = rbl__compileProgram(&key);
-    return p->recordVariant;
-}
+// The polygon-frame variant (RBL_POLYGONS) of an instanced program (plain or resident-sprite): draws
+// without polygons never compile it
+static rbl__Program *rbl__polygonVariant(rbl__Program *p) { return rbl__ownVariant(p, &p->polygonVariant, 2); }
+
+// The batch-record variant (RBL_BATCH_RECORD) of a vertex-buffer program (lit, G-buffer geometry or caster)
+static rbl__Program *rbl__recordVariant(rbl__Program *p) { return rbl__ownVariant(p, &p->recordVariant, 4); }
 
 // A polygon's corners for the instanced stage (cut along diagonal d), 3 per triangle from its slots,
 // each pair (a, b) of frame fractions, two corners a texel (RGBA32F); returns the texels written
@@ -13446,16 +13447,8 @@ typedef struct rbl__SpriteBufferState {
     unsigned int vaoId, vboId, tableId;
 } rbl__SpriteBufferState;
 
-// The resident-sprite variant of an instanced program (lit, G-buffer or caster): the registry's, or
-// compiled now (held until its program goes); NULL (problem set) on failure
-static rbl__Program *rbl__spriteVariant(rbl__Program *p)
-{
-    if (p->spriteVariant != NULL) return p->spriteVariant;
-    rbl__ProgramKey key = p->key;
-    key.sprites = 1;
-    p->spriteVariant = rbl__compileProgram(&key);
-    return p->spriteVariant;
-}
+// The resident-sprite variant of an instanced program (lit, G-buffer or caster)
+static rbl__Program *rbl__spriteVariant(rbl__Program *p) { return rbl__ownVariant(p, &p->spriteVariant, 1); }
 
 static rbl__SpriteBufferState *rbl__spriteState(const RblSpriteBuffer *buffer)
 {
