@@ -2962,12 +2962,12 @@ static const char *const rbl__shader_lit_vs[] = {
     "// The batch's compact stream (GLSL 3 only): one record per billboard (rbl__BatchRecord), read once\n",
     "// per instance; gl_VertexID picks the corner of the quad's two triangles (0,1,2) (0,2,3). The CPU\n",
     "// mirror of this expansion is rbl__recordVertices\n",
-    "layout(location = 10) in vec3 rblRecordCorner;     // corner 0 (bottom-left of the footprint)\n",
+    "layout(location = 10) in vec4 rblRecordCorner;     // xyz: corner 0 (bottom-left of the footprint), w: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)\n",
     "layout(location = 11) in vec3 rblRecordRight;      // corner 1 - corner 0 (the rotated +R times the width)\n",
     "layout(location = 12) in vec3 rblRecordUp;         // corner 3 - corner 0 (the rotated +U times the height)\n",
     "layout(location = 13) in vec4 rblRecordUv;         // texture coordinates: xy at corner 0, zw at corner 2\n",
     "layout(location = 14) in vec4 rblRecordColor;      // tint, normalised bytes\n",
-    "layout(location = 15) in vec2 rblRecordShape;      // x: roundness 0..1, y: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)\n",
+    "layout(location = 15) in vec4 rblRecordNormal;     // xyz: the frame's normal (not always R x U: a CAMERA_PLANE caller up), w: roundness 0..1\n",
     "#else\n",
     "RBL_ATTRIBUTE vec3 vertexPosition;\n",
     "RBL_ATTRIBUTE vec2 vertexTexCoord;\n",
@@ -3024,17 +3024,17 @@ static const char *const rbl__shader_lit_vs[] = {
     "    int id = gl_VertexID;\n",
     "    int c = (id < 3)? id : ((id == 3)? 0 : id - 2);\n",
     "    bool s = (c == 1) || (c == 2), t = (c >= 2);\n",
-    "    position = rblRecordCorner + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));\n",
-    "    float bits = rblRecordShape.y;\n",
+    "    position = rblRecordCorner.xyz + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));\n",
+    "    float bits = rblRecordCorner.w;\n",
     "    bool flipU = rblRecordBit(bits, 1.0), flipV = rblRecordBit(bits, 2.0), rotated = rblRecordBit(bits, 4.0), cylinder = rblRecordBit(bits, 8.0);\n",
     "    // A rotated frame's u runs along the sprite's t (its v along s)\n",
     "    bool su = rotated? t : s, sv = rotated? s : t;\n",
     "    uv = vec2(su? rblRecordUv.z : rblRecordUv.x, sv? rblRecordUv.w : rblRecordUv.y);\n",
-    "    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = cross(R, U);\n",
+    "    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = rblRecordNormal.xyz;\n",
     "    vec3 T = rotated? (flipV? -U : U) : (flipU? -R : R);\n",
     "    normal = N;\n",
     "    vec3 tg = T;\n",
-    "    float roundness = rblRecordShape.x;\n",
+    "    float roundness = rblRecordNormal.w;\n",
     "    if (roundness > 0.0)\n",
     "    {\n",
     "        // Corner normals lean outward from the centre (rbl__expandQuad)\n",
@@ -5574,12 +5574,12 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
 #define RBL__RECORD_ROTATED 4
 #define RBL__RECORD_CYLINDER 8
 typedef struct rbl__BatchRecord {
-    float corner[3];                // Corner 0 (bottom-left of the footprint)
+    float corner[4];                // Corner 0 (bottom-left of the footprint), RBL__RECORD_* bits
     float right[3];                 // Corner 1 - corner 0
     float up[3];                    // Corner 3 - corner 0
     float uv[4];                    // Texture coordinates at corner 0 (xy) and corner 2 (zw)
     unsigned char color[4];         // Tint (zero = white applied)
-    float shape[2];                 // Roundness 0..1, RBL__RECORD_* bits
+    float normal[4];                // The frame's normal (a CAMERA_PLANE caller up tilts the quad off it), roundness 0..1
 } rbl__BatchRecord;
 
 // rbl__expandQuad's quad (no polygon) as a record
@@ -5594,21 +5594,21 @@ static void rbl__writeRecord(const RblCameraFrame *view, const rbl__Cast *cast, 
     r->up[0] = U.x*hy; r->up[1] = U.y*hy; r->up[2] = U.z*hy;
     r->uv[0] = q.uv[0][0]; r->uv[1] = q.uv[0][1]; r->uv[2] = q.uv[2][0]; r->uv[3] = q.uv[2][1];
     memcpy(r->color, q.col, 4);
-    r->shape[0] = q.round;
-    r->shape[1] = (float)((q.flipU? RBL__RECORD_FLIP_U : 0) | (q.flipV? RBL__RECORD_FLIP_V : 0) | (q.rotated? RBL__RECORD_ROTATED : 0) | (q.cylinder? RBL__RECORD_CYLINDER : 0));
+    r->normal[0] = q.N.x; r->normal[1] = q.N.y; r->normal[2] = q.N.z; r->normal[3] = q.round;
+    r->corner[3] = (float)((q.flipU? RBL__RECORD_FLIP_U : 0) | (q.flipV? RBL__RECORD_FLIP_V : 0) | (q.rotated? RBL__RECORD_ROTATED : 0) | (q.cylinder? RBL__RECORD_CYLINDER : 0));
 }
 
 // The CPU mirror of lit.vs.glsl's rblRecordVertex: a record's four vertices (a batch that turns to
 // vertices part-way, for a billboard records cannot hold)
 static void rbl__recordVertices(const rbl__BatchRecord *r, RblVertex out[4])
 {
-    const int bits = (int)r->shape[1];
+    const int bits = (int)r->corner[3];
     const bool flipU = (bits & RBL__RECORD_FLIP_U) != 0, flipV = (bits & RBL__RECORD_FLIP_V) != 0;
     const bool rotated = (bits & RBL__RECORD_ROTATED) != 0, cylinder = (bits & RBL__RECORD_CYLINDER) != 0;
     Vector3 right = rbl__v3(r->right[0], r->right[1], r->right[2]), up = rbl__v3(r->up[0], r->up[1], r->up[2]), R, U;
     if (!rbl__normalizeTo(right, &R)) R = rbl__v3(1.0f, 0.0f, 0.0f);       // a zero edge draws nothing
     if (!rbl__normalizeTo(up, &U)) U = rbl__v3(0.0f, 1.0f, 0.0f);
-    const Vector3 N = rbl__cross(R, U), T = rotated? (flipV? rbl__neg(U) : U) : (flipU? rbl__neg(R) : R);
+    const Vector3 N = rbl__v3(r->normal[0], r->normal[1], r->normal[2]), T = rotated? (flipV? rbl__neg(U) : U) : (flipU? rbl__neg(R) : R);
     for (int c = 0; c < 4; c++)
     {
         const bool s = (c == 1) || (c == 2), t = (c >= 2), su = rotated? t : s, sv = rotated? s : t;
@@ -5616,9 +5616,9 @@ static void rbl__recordVertices(const rbl__BatchRecord *r, RblVertex out[4])
         for (int e = 0; e < 3; e++) v->position[e] = r->corner[e] + (s? r->right[e] : 0.0f) + (t? r->up[e] : 0.0f);
         v->texcoord[0] = su? r->uv[2] : r->uv[0]; v->texcoord[1] = sv? r->uv[3] : r->uv[1];
         Vector3 n = N, tg = T;
-        if (r->shape[0] > 0.0f)
+        if (r->normal[3] > 0.0f)
         {
-            const float dx = (s? 1.0f : -1.0f)*r->shape[0], dy = cylinder? 0.0f : (t? 1.0f : -1.0f)*r->shape[0];
+            const float dx = (s? 1.0f : -1.0f)*r->normal[3], dy = cylinder? 0.0f : (t? 1.0f : -1.0f)*r->normal[3];
             rbl__normalizeTo(rbl__v3(N.x + R.x*dx + U.x*dy, N.y + R.y*dx + U.y*dy, N.z + R.z*dx + U.z*dy), &n);
             if (!rbl__perpendicular(T, n, &tg)) tg = T;
         }
@@ -6368,9 +6368,9 @@ static bool rbl__makeRecordArray(rbl__BatchState *batch)
 static void rbl__setRecordLayout(const rbl__BatchState *batch, int first)
 {
     static const struct { int size, type, offset; bool normalised; } in[6] = {
-        { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, corner), false }, { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, right), false },
+        { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, corner), false }, { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, right), false },
         { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, up), false }, { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, uv), false },
-        { 4, RL_UNSIGNED_BYTE, (int)offsetof(rbl__BatchRecord, color), true }, { 2, RL_FLOAT, (int)offsetof(rbl__BatchRecord, shape), false } };
+        { 4, RL_UNSIGNED_BYTE, (int)offsetof(rbl__BatchRecord, color), true }, { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, normal), false } };
     rlEnableVertexBuffer(batch->vboId);
     for (int a = 0; a < 6; a++)
     {

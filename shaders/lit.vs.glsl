@@ -8,12 +8,12 @@
 // The batch's compact stream (GLSL 3 only): one record per billboard (rbl__BatchRecord), read once
 // per instance; gl_VertexID picks the corner of the quad's two triangles (0,1,2) (0,2,3). The CPU
 // mirror of this expansion is rbl__recordVertices
-layout(location = 10) in vec3 rblRecordCorner;     // corner 0 (bottom-left of the footprint)
+layout(location = 10) in vec4 rblRecordCorner;     // xyz: corner 0 (bottom-left of the footprint), w: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)
 layout(location = 11) in vec3 rblRecordRight;      // corner 1 - corner 0 (the rotated +R times the width)
 layout(location = 12) in vec3 rblRecordUp;         // corner 3 - corner 0 (the rotated +U times the height)
 layout(location = 13) in vec4 rblRecordUv;         // texture coordinates: xy at corner 0, zw at corner 2
 layout(location = 14) in vec4 rblRecordColor;      // tint, normalised bytes
-layout(location = 15) in vec2 rblRecordShape;      // x: roundness 0..1, y: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)
+layout(location = 15) in vec4 rblRecordNormal;     // xyz: the frame's normal (not always R x U: a CAMERA_PLANE caller up), w: roundness 0..1
 #else
 RBL_ATTRIBUTE vec3 vertexPosition;
 RBL_ATTRIBUTE vec2 vertexTexCoord;
@@ -70,17 +70,17 @@ void rblRecordVertex(out vec3 position, out vec2 uv, out vec3 normal, out vec4 t
     int id = gl_VertexID;
     int c = (id < 3)? id : ((id == 3)? 0 : id - 2);
     bool s = (c == 1) || (c == 2), t = (c >= 2);
-    position = rblRecordCorner + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));
-    float bits = rblRecordShape.y;
+    position = rblRecordCorner.xyz + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));
+    float bits = rblRecordCorner.w;
     bool flipU = rblRecordBit(bits, 1.0), flipV = rblRecordBit(bits, 2.0), rotated = rblRecordBit(bits, 4.0), cylinder = rblRecordBit(bits, 8.0);
     // A rotated frame's u runs along the sprite's t (its v along s)
     bool su = rotated? t : s, sv = rotated? s : t;
     uv = vec2(su? rblRecordUv.z : rblRecordUv.x, sv? rblRecordUv.w : rblRecordUv.y);
-    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = cross(R, U);
+    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = rblRecordNormal.xyz;
     vec3 T = rotated? (flipV? -U : U) : (flipU? -R : R);
     normal = N;
     vec3 tg = T;
-    float roundness = rblRecordShape.x;
+    float roundness = rblRecordNormal.w;
     if (roundness > 0.0)
     {
         // Corner normals lean outward from the centre (rbl__expandQuad)

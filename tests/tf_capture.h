@@ -62,14 +62,15 @@ static GLu tfShader(TfGl *gl, GLu type, const char *src)
     return sh;
 }
 
-// Program of the instanced vertex stage, capturing its outputs, in the context's dialect (as the
-// header's loader writes it). ES 3.0 links no program without a fragment stage: an empty one.
-static GLu tfProgram(TfGl *gl)
+// Program of a vertex stage (the instanced one, or the batch-record one), capturing its outputs,
+// in the context's dialect (as the header's loader writes it). ES 3.0 links no program without a
+// fragment stage: an empty one.
+static GLu tfStageProgram(TfGl *gl, const char *defines, const char *const *const *stage)
 {
     bool es = (rbl__glsl() == 300);
     char prologue[256];
-    rbl__stagePrologue(es? 300 : 330, true, "#define RBL_LIGHTS 1\n", prologue, sizeof(prologue));
-    char *vs = rbl__joinStage(prologue, rbl__pass_lit_instanced_vs);
+    rbl__stagePrologue(es? 300 : 330, true, defines, prologue, sizeof(prologue));
+    char *vs = rbl__joinStage(prologue, stage);
     GLu vsh = tfShader(gl, 0x8B31 /* GL_VERTEX_SHADER */, vs);
     RBL_FREE(vs);
     GLu fsh = tfShader(gl, 0x8B30 /* GL_FRAGMENT_SHADER */, es? "#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(0.0); }\n"
@@ -87,6 +88,9 @@ static GLu tfProgram(TfGl *gl)
     if (!ok) { gl->DeleteProgram(prog); return 0; }
     return prog;
 }
+
+static GLu tfProgram(TfGl *gl) { return tfStageProgram(gl, "#define RBL_LIGHTS 1\n", rbl__pass_lit_instanced_vs); }
+static GLu tfRecordProgram(TfGl *gl) { return tfStageProgram(gl, "#define RBL_LIGHTS 1\n#define RBL_BATCH_RECORD\n", rbl__pass_lit_vs); }
 
 // Shadow-pass fields of the captured frame (zero: a colour pass); the shadow tests set them
 static Vector4 tfLight;
@@ -130,6 +134,42 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
 
     float *out = (float *)malloc(bytes);
     // Mapped, not glGetBufferSubData: ES 3.0 has no buffer read-back call
+    const void *mapped = gl->MapBufferRange(0x8C8E, 0, (ptrdiff_t)bytes, 0x0001 /* GL_MAP_READ_BIT */);
+    if ((mapped != NULL) && (out != NULL)) memcpy(out, mapped, bytes);
+    else if (out != NULL) for (size_t i = 0; i < bytes/sizeof(float); i++) out[i] = NAN;
+    if (mapped != NULL) gl->UnmapBuffer(0x8C8E);
+    gl->DeleteBuffers(1, &tfb);
+    return out;
+}
+
+// Runs the batch-record vertex stage (tfRecordProgram) over the first n records a batch uploaded at
+// its last RblEndBatch and returns 6 captured vertices per record (corners 0, 1, 2, 0, 2, 3)
+static float *tfCaptureRecords(TfGl *gl, GLu prog, const rbl__BatchState *st, int n)
+{
+    RenderTexture2D scratch = LoadRenderTexture(4, 4);
+    BeginTextureMode(scratch);
+    rlEnableShader(prog);
+    rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
+    rlSetUniformMatrix(rlGetLocationUniform(prog, "matModel"), rbl__identity());
+    rlSetUniformMatrix(rlGetLocationUniform(prog, "matNormal"), rbl__identity());
+    size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
+    GLu tfb = 0;
+    gl->GenBuffers(1, &tfb);
+    gl->BindBuffer(0x8C8E /* GL_TRANSFORM_FEEDBACK_BUFFER */, tfb);
+    gl->BufferData(0x8C8E, (ptrdiff_t)bytes, NULL, 0x88E5 /* GL_STATIC_READ */);
+    gl->BindBufferBase(0x8C8E, 0, tfb);
+    rlEnableVertexArray(st->recordVaoId);
+    rbl__setRecordLayout(st, 0);
+    gl->Enable(0x8C89 /* GL_RASTERIZER_DISCARD */);
+    gl->BeginTransformFeedback(0x0004 /* GL_TRIANGLES */);
+    rlDrawVertexArrayInstanced(0, 6, n);
+    gl->EndTransformFeedback();
+    gl->Disable(0x8C89);
+    rlDisableVertexArray();
+    rlDisableShader();
+    EndTextureMode();
+    UnloadRenderTexture(scratch);
+    float *out = (float *)malloc(bytes);
     const void *mapped = gl->MapBufferRange(0x8C8E, 0, (ptrdiff_t)bytes, 0x0001 /* GL_MAP_READ_BIT */);
     if ((mapped != NULL) && (out != NULL)) memcpy(out, mapped, bytes);
     else if (out != NULL) for (size_t i = 0; i < bytes/sizeof(float); i++) out[i] = NAN;

@@ -555,6 +555,23 @@ static bool InstancedCorners(int n, int rotated, float *out)
     return true;
 }
 
+// The batch's corners: where it holds records, as the record vertex stage emits them (transform
+// feedback over the records its last RblEndBatch uploaded), else its vertices
+static void BatchedCorners(const rbl__BatchState *st, int n, RblVertex *out)
+{
+    TfGl gl;
+    GLu prog = (st->records && tfLoad(&gl))? tfRecordProgram(&gl) : 0;
+    float *gpu = (prog != 0)? tfCaptureRecords(&gl, prog, st, n) : NULL;
+    if (prog != 0) gl.DeleteProgram(prog);
+    const int vertexOf[4] = { 0, 1, 2, 5 };
+    for (int i = 0; i < n; i++)
+    {
+        if (gpu == NULL) { rtBatchVertices(st, i, out + (size_t)i*4); continue; }
+        for (int k = 0; k < 4; k++) memcpy(out[(size_t)i*4 + k].position, &gpu[((size_t)i*6 + vertexOf[k])*TF_FLOATS], 3*sizeof(float));
+    }
+    free(gpu);
+}
+
 //----------------------------------------------------------------------------------
 // memcpy bandwidth
 //----------------------------------------------------------------------------------
@@ -758,8 +775,8 @@ int main(int argc, char **argv)
 
             if (selected[PATH_BATCHED])
             {
-                // The batch still holds the last batched frame: its vertices, or its records expanded by
-                // the CPU mirror of the vertex stage (rbl__recordVertices)
+                // The batch still holds the last batched frame: its vertices, or its records (their
+                // corners as the record vertex stage emits them)
                 if ((batch.count != counts[c]) || (batch.skipped != 0))
                 {
                     printf("bench_geometry: batch holds %d billboards (%d skipped), expected %d\n", batch.count, batch.skipped, counts[c]);
@@ -767,7 +784,7 @@ int main(int argc, char **argv)
                 }
                 RblVertex *corners = (RblVertex *)malloc((size_t)counts[c]*4*sizeof(RblVertex));
                 if (corners == NULL) return 1;
-                for (int i = 0; i < counts[c]; i++) rtBatchVertices(batch.state, i, corners + (size_t)i*4);
+                BatchedCorners(batch.state, counts[c], corners);
                 CornerError(corners[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
                 free(corners);
             }
@@ -861,7 +878,7 @@ int main(int argc, char **argv)
     // Upload volume and the memory-bandwidth floor. rlgl's batch uploads, per vertex, positions
     // (3 floats), texcoords (2 floats), normals (3 floats) and colours (4 bytes) in four
     // glBufferSubData calls (indices are static); immediate uploads 4 RblVertex (52 bytes each),
-    // batched one record (64 bytes; 4 RblVertex where the context has no GLSL 3), instanced one
+    // batched one record (76 bytes; 4 RblVertex where the context has no GLSL 3), instanced one
     // RblInstance (56 bytes).
     const bool records = (batch.state != NULL) && batch.state->records;
     const double bytesPerBillboard[PATH_COUNT] = {
