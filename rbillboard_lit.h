@@ -5371,7 +5371,7 @@ static bool rbl__billboardVertices(const RblCameraFrame *view, const rbl__Cast *
 // A quad's parts once b is known good: its frame (rotated), footprint, pivot (an AXIS caster's tilt
 // applied), texture corners, tangent, tint and roundness: what its vertices or its batch record hold
 typedef struct rbl__QuadParts {
-    Vector3 P, R, U, N, T;          // Pivot, rotated unit axes and normal (R x U = N), tangent (+U of the texture)
+    Vector3 P, R, U, N, T;          // Pivot, rotated unit axes, the frame's normal (not R x U under a CAMERA_PLANE caller up), tangent (+U of the texture)
     float x0, x1, y0, y1;           // Footprint along R and U from the pivot
     float uv[4][2];                 // Texture coordinates at BL, BR, TR, TL
     float w;                        // Handedness (cross(N, T)*w = +V)
