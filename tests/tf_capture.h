@@ -98,84 +98,75 @@ static float tfMinCastSin;
 static int tfFacingFlags;           // added to the facing code: 8 light-facing casters (AXIS tilts turn the front face)
 static float tfOrthographic;        // 1: the frame of an orthographic camera (set by the orthographic tests)
 
-// Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
-static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
+// A capture's set-up: a scratch target (a complete framebuffer must be bound even with
+// rasterisation discarded: surfaceless has none), prog with identity matrices, and a feedback buffer
+// of bytes bound at index 0
+typedef struct { RenderTexture2D scratch; GLu buffer; size_t bytes; } TfRun;
+
+static TfRun tfBegin(TfGl *gl, GLu prog, size_t bytes)
 {
-    RblCameraFrame view = RblGetCameraFrame(cam);
-    // A complete framebuffer must be bound even with rasterisation discarded (surfaceless has none)
-    RenderTexture2D scratch = LoadRenderTexture(4, 4);
-    BeginTextureMode(scratch);
+    TfRun run;
+    run.scratch = LoadRenderTexture(4, 4);
+    run.bytes = bytes;
+    run.buffer = 0;
+    BeginTextureMode(run.scratch);
     rlEnableShader(prog);
     rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
-    const float frame[28] = {
-        view.eye.x, view.eye.y, view.eye.z, (float)(d.facing + tfFacingFlags), view.right.x, view.right.y, view.right.z, d.roundness,
-        view.up.x, view.up.y, view.up.z, (float)texW, view.back.x, view.back.y, view.back.z, (float)texH,
-        d.up.x, d.up.y, d.up.z, tfMinCastSin, d.axis.x, d.axis.y, d.axis.z, tfOrthographic, tfLight.x, tfLight.y, tfLight.z, tfLight.w };
-    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 7);
-
-    size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
-    GLu tfb = 0;
-    gl->GenBuffers(1, &tfb);
-    gl->BindBuffer(0x8C8E /* GL_TRANSFORM_FEEDBACK_BUFFER */, tfb);
+    rlSetUniformMatrix(rlGetLocationUniform(prog, "matModel"), rbl__identity());
+    rlSetUniformMatrix(rlGetLocationUniform(prog, "matNormal"), rbl__identity());
+    gl->GenBuffers(1, &run.buffer);
+    gl->BindBuffer(0x8C8E /* GL_TRANSFORM_FEEDBACK_BUFFER */, run.buffer);
     gl->BufferData(0x8C8E, (ptrdiff_t)bytes, NULL, 0x88E5 /* GL_STATIC_READ */);
-    gl->BindBufferBase(0x8C8E, 0, tfb);
+    gl->BindBufferBase(0x8C8E, 0, run.buffer);
+    return run;
+}
 
-    rlEnableVertexArray(buf->state->vaoId);
-    rlUpdateVertexBuffer(buf->state->vboId, in, n*(int)sizeof(RblInstance), 0);
+// Draws count vertices of each of n instances from the bound vertex array into the feedback buffer,
+// then reads it back (NaN where it cannot be mapped; NULL out of memory)
+static float *tfEnd(TfGl *gl, TfRun *run, int count, int n)
+{
     gl->Enable(0x8C89 /* GL_RASTERIZER_DISCARD */);
     gl->BeginTransformFeedback(0x0004 /* GL_TRIANGLES */);
-    rlDrawVertexArrayInstanced(0, 6, n);
+    rlDrawVertexArrayInstanced(0, count, n);
     gl->EndTransformFeedback();
     gl->Disable(0x8C89);
     rlDisableVertexArray();
     rlDisableShader();
     EndTextureMode();
-    UnloadRenderTexture(scratch);
-
-    float *out = (float *)malloc(bytes);
+    UnloadRenderTexture(run->scratch);
+    float *out = (float *)malloc(run->bytes);
     // Mapped, not glGetBufferSubData: ES 3.0 has no buffer read-back call
-    const void *mapped = gl->MapBufferRange(0x8C8E, 0, (ptrdiff_t)bytes, 0x0001 /* GL_MAP_READ_BIT */);
-    if ((mapped != NULL) && (out != NULL)) memcpy(out, mapped, bytes);
-    else if (out != NULL) for (size_t i = 0; i < bytes/sizeof(float); i++) out[i] = NAN;
+    const void *mapped = gl->MapBufferRange(0x8C8E, 0, (ptrdiff_t)run->bytes, 0x0001 /* GL_MAP_READ_BIT */);
+    if ((mapped != NULL) && (out != NULL)) memcpy(out, mapped, run->bytes);
+    else if (out != NULL) for (size_t i = 0; i < run->bytes/sizeof(float); i++) out[i] = NAN;
     if (mapped != NULL) gl->UnmapBuffer(0x8C8E);
-    gl->DeleteBuffers(1, &tfb);
+    gl->DeleteBuffers(1, &run->buffer);
     return out;
+}
+
+// Runs the instanced vertex stage over instances and returns 6 captured vertices per instance
+static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam, RblInstancedDesc d, int texW, int texH, const RblInstance *in, int n)
+{
+    RblCameraFrame view = RblGetCameraFrame(cam);
+    TfRun run = tfBegin(gl, prog, (size_t)n*6*TF_FLOATS*sizeof(float));
+    const float frame[28] = {
+        view.eye.x, view.eye.y, view.eye.z, (float)(d.facing + tfFacingFlags), view.right.x, view.right.y, view.right.z, d.roundness,
+        view.up.x, view.up.y, view.up.z, (float)texW, view.back.x, view.back.y, view.back.z, (float)texH,
+        d.up.x, d.up.y, d.up.z, tfMinCastSin, d.axis.x, d.axis.y, d.axis.z, tfOrthographic, tfLight.x, tfLight.y, tfLight.z, tfLight.w };
+    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 7);
+    rlEnableVertexArray(buf->state->vaoId);
+    rlUpdateVertexBuffer(buf->state->vboId, in, n*(int)sizeof(RblInstance), 0);
+    return tfEnd(gl, &run, 6, n);
 }
 
 // Runs the batch-record vertex stage (tfRecordProgram) over the first n records a batch uploaded at
 // its last RblEndBatch and returns 6 captured vertices per record (corners 0, 1, 2, 0, 2, 3)
 static float *tfCaptureRecords(TfGl *gl, GLu prog, const rbl__BatchState *st, int n)
 {
-    RenderTexture2D scratch = LoadRenderTexture(4, 4);
-    BeginTextureMode(scratch);
-    rlEnableShader(prog);
-    rlSetUniformMatrix(rlGetLocationUniform(prog, "mvp"), rbl__identity());
-    rlSetUniformMatrix(rlGetLocationUniform(prog, "matModel"), rbl__identity());
-    rlSetUniformMatrix(rlGetLocationUniform(prog, "matNormal"), rbl__identity());
-    size_t bytes = (size_t)n*6*TF_FLOATS*sizeof(float);
-    GLu tfb = 0;
-    gl->GenBuffers(1, &tfb);
-    gl->BindBuffer(0x8C8E /* GL_TRANSFORM_FEEDBACK_BUFFER */, tfb);
-    gl->BufferData(0x8C8E, (ptrdiff_t)bytes, NULL, 0x88E5 /* GL_STATIC_READ */);
-    gl->BindBufferBase(0x8C8E, 0, tfb);
+    TfRun run = tfBegin(gl, prog, (size_t)n*6*TF_FLOATS*sizeof(float));
     rlEnableVertexArray(st->recordVaoId);
     rbl__setRecordLayout(st, 0);
-    gl->Enable(0x8C89 /* GL_RASTERIZER_DISCARD */);
-    gl->BeginTransformFeedback(0x0004 /* GL_TRIANGLES */);
-    rlDrawVertexArrayInstanced(0, 6, n);
-    gl->EndTransformFeedback();
-    gl->Disable(0x8C89);
-    rlDisableVertexArray();
-    rlDisableShader();
-    EndTextureMode();
-    UnloadRenderTexture(scratch);
-    float *out = (float *)malloc(bytes);
-    const void *mapped = gl->MapBufferRange(0x8C8E, 0, (ptrdiff_t)bytes, 0x0001 /* GL_MAP_READ_BIT */);
-    if ((mapped != NULL) && (out != NULL)) memcpy(out, mapped, bytes);
-    else if (out != NULL) for (size_t i = 0; i < bytes/sizeof(float); i++) out[i] = NAN;
-    if (mapped != NULL) gl->UnmapBuffer(0x8C8E);
-    gl->DeleteBuffers(1, &tfb);
-    return out;
+    return tfEnd(gl, &run, 6, n);
 }
 
 #endif // RBL_TESTS_TF_CAPTURE_H
