@@ -208,7 +208,16 @@ static bool rtInitEgl(const char *kind)
     memcpy(&getPlatformDisplay, &f, sizeof(f));
     rtEglDisplay = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
     EGLint major = 0, minor = 0;
-    if ((rtEglDisplay == EGL_NO_DISPLAY) || !initialize(rtEglDisplay, &major, &minor)) { printf("    context: egl: surfaceless display unavailable\n"); return false; }
+    if ((rtEglDisplay == EGL_NO_DISPLAY) || !initialize(rtEglDisplay, &major, &minor))
+    {
+        // Drivers without Mesa's surfaceless platform (NVIDIA's) offer their first device instead
+        PFNEGLQUERYDEVICESEXTPROC queryDevices;
+        EGLDeviceEXT device; EGLint count = 0;
+        f = getProc("eglQueryDevicesEXT");
+        memcpy(&queryDevices, &f, sizeof(f));
+        rtEglDisplay = ((f != NULL) && queryDevices(1, &device, &count) && (count > 0))? getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, NULL) : EGL_NO_DISPLAY;
+        if ((rtEglDisplay == EGL_NO_DISPLAY) || !initialize(rtEglDisplay, &major, &minor)) { printf("    context: egl: no surfaceless or device display\n"); return false; }
+    }
     bool es = (strncmp(kind, "gles", 4) == 0), gl21 = (strcmp(kind, "gl21") == 0);
     if (!bindApi(es? EGL_OPENGL_ES_API : EGL_OPENGL_API)) { printf("    context: %s: API unavailable\n", kind); return false; }
     const EGLint core[] = { EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
@@ -254,7 +263,9 @@ const char *rtInitContext(int width, int height)
     typedef const unsigned char *(*RtGetString)(unsigned int);
     RtGetString getString; void *p = rtGlProc("glGetString"); memcpy(&getString, &p, sizeof(p));
     const unsigned char *version = (getString != NULL)? getString(0x1F02 /* GL_VERSION */) : NULL;
-    printf("    context: %s: GL_VERSION %s, rlGetVersion %i\n", name, (version != NULL)? (const char *)version : "?", rlGetVersion());
+    const unsigned char *renderer = (getString != NULL)? getString(0x1F01 /* GL_RENDERER */) : NULL;
+    printf("    context: %s: GL_VERSION %s, GL_RENDERER %s, rlGetVersion %i\n", name, (version != NULL)? (const char *)version : "?",
+           (renderer != NULL)? (const char *)renderer : "?", rlGetVersion());
     return name;
 }
 
