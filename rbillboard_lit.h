@@ -1550,7 +1550,7 @@ typedef struct rbl__ProgramKey {
     RblLitShaderDesc desc;          // Normalised (defaults applied, no padding garbage)
     int kind;                       // rbl__ProgramKind
     int pass;                       // G-buffer pass of a RBL__KIND_PASS program
-    int sprites;                    // Header-owned variants: instanced bit 1 resident sprites (RBL_SPRITE_BUFFER), bit 2 polygon frames (RBL_POLYGONS); vertex-buffer bit 4 batch records (RBL_BATCH_RECORD)
+    int sprites;                    // Header-owned variants: instanced bit 1 resident sprites (RBL_SPRITE_BUFFER), bit 2 polygon frames (RBL_POLYGONS); vertex-buffer bit 4 batch records (the instanced stage's RBL_BATCH_RECORD)
     int shadowKinds;                // Receivers: map k's compiled code in bits 4k..4k+3 (rbl__shadowCode; shadows.glsl)
     int gbufferRelief;              // 1: a G-buffer light pass reading the stored relief bits (RBL_GB_RELIEF)
 } rbl__ProgramKey;
@@ -1635,8 +1635,10 @@ typedef struct rbl__BatchState {
     int culled;                     // Billboards accepted but outside the view since RblBeginBatch() (not in count)
     int planeCount;                 // Culling planes in use: 0 (off), 4 (a shadow pass's sides) or 6 (a camera's frustum)
     float planes[6][4];             // Unit normal and offset of each: a point p is inside where n.p + d >= 0
+    Vector3 cullUp;                 // The last CAMERA_PLANE up culled and its length (the height's scale)
+    float cullUpLength;
     bool orthographic;              // The camera's projection (which side of a quad it sees)
-    bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
+    bool backFacing;                // A billboard seen from behind was added (records: looked for at the end): the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
     unsigned int pass;              // The pass it began in (rbl__passNow): added to and ended in that one only
     // The optional fade stream (16 floats per billboard: rbl__fadeVertices), allocated when the first
@@ -2958,23 +2960,11 @@ static const char *const rbl__shader_lit_vs[] = {
     "#include \"common.glsl\"\n",
     "#include \"skinning.glsl\"\n",
     "\n",
-    "#ifdef RBL_BATCH_RECORD\n",
-    "// The batch's compact stream (GLSL 3 only): one record per billboard (rbl__BatchRecord), read once\n",
-    "// per instance; gl_VertexID picks the corner of the quad's two triangles (0,1,2) (0,2,3). The CPU\n",
-    "// mirror of this expansion is rbl__recordVertices\n",
-    "layout(location = 10) in vec4 rblRecordCorner;     // xyz: corner 0 (bottom-left of the footprint), w: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)\n",
-    "layout(location = 11) in vec3 rblRecordRight;      // corner 1 - corner 0 (the rotated +R times the width)\n",
-    "layout(location = 12) in vec3 rblRecordUp;         // corner 3 - corner 0 (the rotated +U times the height)\n",
-    "layout(location = 13) in vec4 rblRecordUv;         // texture coordinates: xy at corner 0, zw at corner 2\n",
-    "layout(location = 14) in vec4 rblRecordColor;      // tint, normalised bytes\n",
-    "layout(location = 15) in vec4 rblRecordNormal;     // xyz: the frame's normal (not always R x U: a CAMERA_PLANE caller up), w: roundness 0..1\n",
-    "#else\n",
     "RBL_ATTRIBUTE vec3 vertexPosition;\n",
     "RBL_ATTRIBUTE vec2 vertexTexCoord;\n",
     "RBL_ATTRIBUTE vec3 vertexNormal;\n",
     "RBL_ATTRIBUTE vec4 vertexColor;\n",
     "RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)\n",
-    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "// The fade stream (raylib's texcoord2 location 5): xy the second frame's texture coordinate, z the\n",
     "// weight, w its tangent axes against the first's (material.glsl). Without the stream the attribute\n",
@@ -3014,51 +3004,9 @@ static const char *const rbl__shader_lit_vs[] = {
     "RBL_VARYING vec3 fragNormal;\n",
     "RBL_VARYING vec4 fragTangent;\n",
     "\n",
-    "#ifdef RBL_BATCH_RECORD\n",
-    "bool rblRecordBit(float bits, float bit) { return mod(floor(bits/bit), 2.0) == 1.0; }\n",
-    "\n",
-    "// Corner of the record's quad: position, texture coordinate, normal, tangent and handedness as\n",
-    "// rbl__expandQuad writes them (a zero edge draws nothing: its normal is never used)\n",
-    "void rblRecordVertex(out vec3 position, out vec2 uv, out vec3 normal, out vec4 tangent)\n",
-    "{\n",
-    "    int id = gl_VertexID;\n",
-    "    int c = (id < 3)? id : ((id == 3)? 0 : id - 2);\n",
-    "    bool s = (c == 1) || (c == 2), t = (c >= 2);\n",
-    "    position = rblRecordCorner.xyz + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));\n",
-    "    float bits = rblRecordCorner.w;\n",
-    "    bool flipU = rblRecordBit(bits, 1.0), flipV = rblRecordBit(bits, 2.0), rotated = rblRecordBit(bits, 4.0), cylinder = rblRecordBit(bits, 8.0);\n",
-    "    // A rotated frame's u runs along the sprite's t (its v along s)\n",
-    "    bool su = rotated? t : s, sv = rotated? s : t;\n",
-    "    uv = vec2(su? rblRecordUv.z : rblRecordUv.x, sv? rblRecordUv.w : rblRecordUv.y);\n",
-    "    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = rblRecordNormal.xyz;\n",
-    "    vec3 T = rotated? (flipV? -U : U) : (flipU? -R : R);\n",
-    "    normal = N;\n",
-    "    vec3 tg = T;\n",
-    "    float roundness = rblRecordNormal.w;\n",
-    "    if (roundness > 0.0)\n",
-    "    {\n",
-    "        // Corner normals lean outward from the centre (rbl__expandQuad)\n",
-    "        float dx = (s? 1.0 : -1.0)*roundness, dy = cylinder? 0.0 : (t? 1.0 : -1.0)*roundness;\n",
-    "        normal = normalize(N + R*dx + U*dy);\n",
-    "        vec3 p = T - normal*dot(T, normal);\n",
-    "        if (dot(p, p) > 1e-10*dot(T, T)) tg = normalize(p);\n",
-    "    }\n",
-    "    tangent = vec4(tg, (flipU != flipV)? 1.0 : -1.0);\n",
-    "}\n",
-    "#endif\n",
-    "\n",
     "void main()\n",
     "{\n",
-    "#ifdef RBL_BATCH_RECORD\n",
-    "    vec3 position, normal;\n",
-    "    vec2 vertexTexCoord;\n",
-    "    vec4 vertexTangent;\n",
-    "    rblRecordVertex(position, vertexTexCoord, normal, vertexTangent);\n",
-    "    vec3 tangent = vertexTangent.xyz;\n",
-    "    vec4 vertexColor = rblRecordColor;\n",
-    "#else\n",
     "    vec3 position = vertexPosition, normal = vertexNormal, tangent = vertexTangent.xyz;\n",
-    "#endif\n",
     "#ifdef RBL_SKINNING\n",
     "    rblSkin(position, normal, tangent);     // bind pose -> animated pose, in the model's space\n",
     "#endif\n",
@@ -3099,11 +3047,28 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "// An RblInstance, or in the resident-sprite variant (RBL_SPRITE_BUFFER, compiled by the header for\n",
     "// RblDrawSpriteBuffer) an RblSpriteInstance whose 32 bytes the same locations read as: 10 pivot,\n",
     "// scale; 11 start (x); 12 rotation, frame, speed (half-float bits), mode, as unsigned shorts; 13 tint\n",
+    "#ifdef RBL_BATCH_RECORD\n",
+    "// The batch-record variant (RblBatch on GLSL 3 with the header's programs): one record per\n",
+    "// billboard, the RblBillboard as added (flags: its rotated-frame and cylinder bits; a FIXED or AXIS\n",
+    "// up and axis tamed as the CPU tames them). Its facing, up, axis and roundness are its own, not the\n",
+    "// draw's. Locations 6..9 are the cross-fade's elsewhere: record programs have no cross-fade\n",
+    "layout(location = 10) in vec3 rblRecordPosition;    // pivot\n",
+    "layout(location = 11) in vec4 rblRecordSizeOrigin;  // xy: size (negative mirrors), zw: origin\n",
+    "layout(location = 12) in float rblRecordRotation;   // degrees\n",
+    "layout(location = 13) in vec4 rblRecordSource;      // x, y, width, height in texels (all zero = whole texture)\n",
+    "layout(location = 14) in vec4 rblRecordTint;        // normalised bytes (all zero = white)\n",
+    "layout(location = 15) in float rblRecordFacing;     // RblFacing\n",
+    "layout(location = 6) in vec3 rblRecordUp;           // as RblInstancedDesc.up\n",
+    "layout(location = 7) in vec3 rblRecordAxis;         // as RblInstancedDesc.axis\n",
+    "layout(location = 8) in float rblRecordRoundness;   // as RblInstancedDesc.roundness\n",
+    "layout(location = 9) in float rblRecordFlags;       // RBL_FRAME_ROTATED, RBL_ROUND_CYLINDER\n",
+    "#else\n",
     "layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees\n",
     "layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin\n",
     "layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)\n",
     "layout(location = 13) in vec4 rblInstanceTint;      // normalised bytes (all zero = white)\n",
     "layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags\n",
+    "#endif\n",
     "#ifdef RBL_CROSS_FADE\n",
     "// RblInstancedDesc.fades, a second per-instance buffer (without it: constant, weight 0)\n",
     "layout(location = 15) in vec4 rblInstanceFadeSource; // the second frame, as rblInstanceSource\n",
@@ -3123,7 +3088,9 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "uniform mat4 mvp;\n",
     "// Per-draw frame, one upload (uniform calls cost more than the data in most drivers):\n",
     "//   [0] eye, facing code: RblFacing + 8 in a shadow pass with light-facing casters (AXIS tilts turn\n",
-    "//       the front face to the light)\n",
+    "//       the front face to the light); the batch-record variant's facing is each record's, the code\n",
+    "//       adds 8 as above and 16 in an omni pass with light-facing casters (its CAMERA_PLANE cards\n",
+    "//       face the light's position, rbl__castFacing)\n",
     "//   [1] right, roundness   [2] up, texture width   [3] back, texture height\n",
     "//   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass\n",
     "//       minimum sine at which the light sees an AXIS billboard (0 = no tilt)\n",
@@ -3607,6 +3574,8 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "{\n",
     "#ifdef RBL_SPRITE_BUFFER\n",
     "    rblReadSprite();\n",
+    "#elif defined(RBL_BATCH_RECORD)\n",
+    "    rblPivot = vec4(rblRecordPosition, rblRecordRotation); rblSizeOrigin = rblRecordSizeOrigin; rblSource = rblRecordSource; rblFlagBits = rblRecordFlags;\n",
     "#else\n",
     "    rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;\n",
     "#ifdef RBL_CROSS_FADE\n",
@@ -3636,9 +3605,20 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);\n",
     "    vec3 eye = rblInstancing[0].xyz;\n",
     "    int code = int(rblInstancing[0].w + 0.5);\n",
+    "    vec3 facingUp = rblInstancing[4].xyz, facingAxis = rblInstancing[5].xyz;\n",
+    "    float roundness = rblInstancing[1].w;\n",
+    "#ifdef RBL_BATCH_RECORD\n",
+    "    vec4 tintIn = rblRecordTint;\n",
+    "    int facing = int(rblRecordFacing + 0.5);\n",
+    "    if (((code & 16) != 0) && (facing == 0)) facing = 1;\n",
+    "    code = facing + (code & 8);\n",
+    "    facingUp = rblRecordUp; facingAxis = rblRecordAxis; roundness = rblRecordRoundness;\n",
+    "#else\n",
+    "    vec4 tintIn = rblInstanceTint;\n",
+    "#endif\n",
     "    vec3 r, u, n;\n",
     "    rblFacingBasis(code, rblPivot.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,\n",
-    "                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
+    "                   rblInstancing[3].xyz, facingUp, facingAxis, rblInstancing[4].w, rblInstancing[6], r, u, n);\n",
     "    // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the\n",
     "    // axis (rbl__billboardVertices)\n",
     "    vec3 shift = vec3(0.0);\n",
@@ -3647,7 +3627,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    if (((code & 3) == 2) && (rblInstancing[4].w > 0.0))\n",
     "    {\n",
     "        vec3 a = vec3(0.0, 1.0, 0.0), l = a;\n",
-    "        if (dot(rblInstancing[5].xyz, rblInstancing[5].xyz) > 1e-24) rblNormalizeTo(rblInstancing[5].xyz, a);\n",
+    "        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);\n",
     "        vec3 d = a - u;\n",
     "        vec4 light = rblInstancing[6];\n",
     "        if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblPivot.xyz*light.w, l))\n",
@@ -3671,11 +3651,11 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "#ifdef RBL_POLYGONS\n",
     "    vec2 polygonPoint = vec2(-1.0);\n",
     "    if (rblPolygonal)\n",
-    "        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
+    "        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), roundness,\n",
     "                                        p, fragTexCoord, fragNormal, fragTangent);\n",
     "    else\n",
     "#endif\n",
-    "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,\n",
+    "    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), roundness,\n",
     "                       p, fragTexCoord, fragNormal, fragTangent);\n",
     "    p += shift;\n",
     "    fragPosition = p;\n",
@@ -3696,7 +3676,7 @@ static const char *const rbl__shader_lit_instanced_vs[] = {
     "    vec2 picture = vec2((rblSizeOrigin.x < 0.0)? 1.0 - cs : cs, (rblSizeOrigin.y < 0.0)? 1.0 - ct : ct);\n",
     "    fragFadeClip = vec4(rblFadeClipLocal(rblFadeClip0, picture), rblFadeClipLocal(rblFadeClip1, picture));\n",
     "#endif\n",
-    "    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;\n",
+    "    vec4 tint = (tintIn == vec4(0.0))? vec4(1.0) : tintIn;\n",
     "    fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex\n",
     "#ifdef RBL_VIEW_VECTOR\n",
     "    fragEye = eye;\n",
@@ -5567,65 +5547,23 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
     return true;
 }
 
-// A batched billboard in the batch's compact stream: one record instead of four vertices where the
-// context has GLSL 3 and the header's programs draw it (lit.vs.glsl RBL_BATCH_RECORD expands it)
-#define RBL__RECORD_FLIP_U 1
-#define RBL__RECORD_FLIP_V 2
-#define RBL__RECORD_ROTATED 4
-#define RBL__RECORD_CYLINDER 8
-typedef struct rbl__BatchRecord {
-    float corner[4];                // Corner 0 (bottom-left of the footprint), RBL__RECORD_* bits
-    float right[3];                 // Corner 1 - corner 0
-    float up[3];                    // Corner 3 - corner 0
-    float uv[4];                    // Texture coordinates at corner 0 (xy) and corner 2 (zw)
-    unsigned char color[4];         // Tint (zero = white applied)
-    float normal[4];                // The frame's normal (a CAMERA_PLANE caller up tilts the quad off it), roundness 0..1
-} rbl__BatchRecord;
+// A batched billboard in the batch's compact stream: where the context has GLSL 3 and the header's
+// programs draw every run, the billboard itself instead of its four vertices; the vertex stage
+// (lit_instanced.vs.glsl RBL_BATCH_RECORD) builds its frame and corners as the instanced path does
+typedef RblBillboard rbl__BatchRecord;
 
-// rbl__expandQuad's quad (no polygon) as a record
-static void rbl__writeRecord(const RblCameraFrame *view, const rbl__Cast *cast, rbl__FrameCache *cache, int textureWidth, int textureHeight, const RblBillboard *b, rbl__BatchRecord *r)
-{
-    rbl__QuadParts q;
-    rbl__quadParts(view, cast, cache, textureWidth, textureHeight, b, &q);
-    const Vector3 P = q.P, R = q.R, U = q.U;
-    const float wx = q.x1 - q.x0, hy = q.y1 - q.y0;
-    r->corner[0] = P.x + R.x*q.x0 + U.x*q.y0; r->corner[1] = P.y + R.y*q.x0 + U.y*q.y0; r->corner[2] = P.z + R.z*q.x0 + U.z*q.y0;
-    r->right[0] = R.x*wx; r->right[1] = R.y*wx; r->right[2] = R.z*wx;
-    r->up[0] = U.x*hy; r->up[1] = U.y*hy; r->up[2] = U.z*hy;
-    r->uv[0] = q.uv[0][0]; r->uv[1] = q.uv[0][1]; r->uv[2] = q.uv[2][0]; r->uv[3] = q.uv[2][1];
-    memcpy(r->color, q.col, 4);
-    r->normal[0] = q.N.x; r->normal[1] = q.N.y; r->normal[2] = q.N.z; r->normal[3] = q.round;
-    r->corner[3] = (float)((q.flipU? RBL__RECORD_FLIP_U : 0) | (q.flipV? RBL__RECORD_FLIP_V : 0) | (q.rotated? RBL__RECORD_ROTATED : 0) | (q.cylinder? RBL__RECORD_CYLINDER : 0));
-}
+static inline bool rbl__beyond(Vector3 v, float m) { return (fabsf(v.x) > m) || (fabsf(v.y) > m) || (fabsf(v.z) > m); }
 
-// The CPU mirror of lit.vs.glsl's rblRecordVertex: a record's four vertices (a batch that turns to
-// vertices part-way, for a billboard records cannot hold)
-static void rbl__recordVertices(const rbl__BatchRecord *r, RblVertex out[4])
+// b (checked by rbl__billboardOk) as its record: the flags the stage reads, a FIXED or AXIS up and
+// axis tamed as rbl__facingBasis tames them (their length does not matter there; a GPU squaring a
+// huge one would overflow)
+static inline void rbl__writeRecord(const RblBillboard *b, rbl__BatchRecord *r)
 {
-    const int bits = (int)r->corner[3];
-    const bool flipU = (bits & RBL__RECORD_FLIP_U) != 0, flipV = (bits & RBL__RECORD_FLIP_V) != 0;
-    const bool rotated = (bits & RBL__RECORD_ROTATED) != 0, cylinder = (bits & RBL__RECORD_CYLINDER) != 0;
-    Vector3 right = rbl__v3(r->right[0], r->right[1], r->right[2]), up = rbl__v3(r->up[0], r->up[1], r->up[2]), R, U;
-    if (!rbl__normalizeTo(right, &R)) R = rbl__v3(1.0f, 0.0f, 0.0f);       // a zero edge draws nothing
-    if (!rbl__normalizeTo(up, &U)) U = rbl__v3(0.0f, 1.0f, 0.0f);
-    const Vector3 N = rbl__v3(r->normal[0], r->normal[1], r->normal[2]), T = rotated? (flipV? rbl__neg(U) : U) : (flipU? rbl__neg(R) : R);
-    for (int c = 0; c < 4; c++)
-    {
-        const bool s = (c == 1) || (c == 2), t = (c >= 2), su = rotated? t : s, sv = rotated? s : t;
-        RblVertex *v = &out[c];
-        for (int e = 0; e < 3; e++) v->position[e] = r->corner[e] + (s? r->right[e] : 0.0f) + (t? r->up[e] : 0.0f);
-        v->texcoord[0] = su? r->uv[2] : r->uv[0]; v->texcoord[1] = sv? r->uv[3] : r->uv[1];
-        Vector3 n = N, tg = T;
-        if (r->normal[3] > 0.0f)
-        {
-            const float dx = (s? 1.0f : -1.0f)*r->normal[3], dy = cylinder? 0.0f : (t? 1.0f : -1.0f)*r->normal[3];
-            rbl__normalizeTo(rbl__v3(N.x + R.x*dx + U.x*dy, N.y + R.y*dx + U.y*dy, N.z + R.z*dx + U.z*dy), &n);
-            if (!rbl__perpendicular(T, n, &tg)) tg = T;
-        }
-        v->normal[0] = n.x; v->normal[1] = n.y; v->normal[2] = n.z;
-        v->tangent[0] = tg.x; v->tangent[1] = tg.y; v->tangent[2] = tg.z; v->tangent[3] = (flipU != flipV)? 1.0f : -1.0f;
-        memcpy(v->color, r->color, 4);
-    }
+    *r = *b;
+    r->flags &= RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER;
+    if (b->facing == RBL_FACING_CAMERA_PLANE) return;
+    if (rbl__beyond(b->up, 1e12f)) r->up = rbl__tame(b->up);
+    if (rbl__beyond(b->axis, 1e12f)) r->axis = rbl__tame(b->axis);
 }
 
 bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
@@ -5879,16 +5817,17 @@ static int rbl__cullPlanes(const RblCameraFrame *view, bool shadowPass, float pl
 // corners lie within the sphere about the pivot through the farthest footprint corner (rotation
 // turns the footprint about the pivot; CAMERA_PLANE's caller up scales its height; a shadow pass's
 // AXIS tilt moves it by at most twice that, so its sphere is three times as large)
-static bool rbl__culled(const rbl__BatchState *batch, const RblBillboard *b)
+static bool rbl__culled(rbl__BatchState *batch, const RblBillboard *b)
 {
     float ulen = 1.0f;
     if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
     {
-        if ((batch->frame.facing == RBL_FACING_CAMERA_PLANE) && rbl__sameBits3(&batch->frame.key, &b->up)) ulen = batch->frame.upLength;
-        else ulen = sqrtf(rbl__len2(b->up));
+        if (!rbl__sameBits3(&batch->cullUp, &b->up)) { batch->cullUp = b->up; batch->cullUpLength = sqrtf(rbl__len2(b->up)); }
+        ulen = batch->cullUpLength;
     }
     float sx = fabsf(b->size.x), sy = fabsf(b->size.y)*ulen;
-    float ex = fmaxf(fabsf(b->origin.x), fabsf(sx - b->origin.x)), ey = fmaxf(fabsf(b->origin.y), fabsf(sy - b->origin.y));
+    float ax = fabsf(b->origin.x), bx = fabsf(sx - b->origin.x), ay = fabsf(b->origin.y), by = fabsf(sy - b->origin.y);
+    float ex = (ax > bx)? ax : bx, ey = (ay > by)? ay : by;
     float r2 = (ex*ex + ey*ey)*(((batch->planeCount == 4) && (b->facing == RBL_FACING_AXIS))? 9.0f : 1.0f);
     r2 *= 1.0f + 1e-5f;        // rounding of the corners' own sums
     const Vector3 c = b->position;
@@ -6011,6 +5950,54 @@ bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billb
     return added;
 }
 
+// Whether the camera sees the back of a quad of this facing at any of n pivots (stride bytes apart),
+// up and axis tamed: CAMERA_PLANE only with a caller up (N = right x up), FIXED cards, AXIS under an
+// orthographic camera (it turns toward the camera's position, which a parallel view does not look
+// from); CAMERA_POSITION, and AXIS in perspective, face the eye by construction. Culling would drop
+// such a quad: its draw turns culling off
+static bool rbl__showsBack(const RblCameraFrame *view, int facing, Vector3 up, Vector3 axis, const Vector3 *pivots, int n, size_t stride)
+{
+    Vector3 a = axis;
+    bool noAxis = (a.x == 0.0f) && (a.y == 0.0f) && (a.z == 0.0f);
+    if (facing == RBL_FACING_CAMERA_PLANE)
+    {
+        if ((up.x == 0.0f) && (up.y == 0.0f) && (up.z == 0.0f)) return false;
+        a = rbl__cross(view->right, up);
+    }
+    else if (facing == RBL_FACING_FIXED) { if (noAxis) a = rbl__v3(0.0f, 0.0f, 1.0f); }
+    else if ((facing == RBL_FACING_AXIS) && view->orthographic) { if (noAxis) a = rbl__v3(0.0f, 1.0f, 0.0f); }
+    else return false;
+    if (view->orthographic && (facing != RBL_FACING_AXIS)) return rbl__dot(a, view->back) < 0.0f;
+    for (int i = 0; i < n; i++)
+    {
+        const Vector3 p = *(const Vector3 *)(const void *)((const unsigned char *)pivots + (size_t)i*stride);
+        Vector3 toEye = rbl__sub(view->eye, p), normal = a;
+        if (facing == RBL_FACING_AXIS)
+        {
+            // The eye direction off the axis (its degenerate fallbacks face the view)
+            float k = rbl__dot(a, toEye)/rbl__dot(a, a);
+            normal = rbl__v3(toEye.x - a.x*k, toEye.y - a.y*k, toEye.z - a.z*k);
+        }
+        if (rbl__dot(normal, view->orthographic? view->back : toEye) < 0.0f) return true;
+    }
+    return false;
+}
+
+// Whether the batch's records show the camera a back (rbl__showsBack over each stretch of records
+// sharing a facing, up and axis)
+static bool rbl__recordsShowBack(const rbl__BatchState *batch)
+{
+    const rbl__BatchRecord *rec = (const rbl__BatchRecord *)(const void *)batch->vertices;
+    for (int i = 0; i < batch->count; )
+    {
+        int j = i + 1;
+        while ((j < batch->count) && (rec[j].facing == rec[i].facing) && rbl__sameBits3(&rec[j].up, &rec[i].up) && rbl__sameBits3(&rec[j].axis, &rec[i].axis)) j++;
+        if (rbl__showsBack(&batch->view, rec[i].facing, rec[i].up, rec[i].axis, &rec[i].position, j - i, sizeof(*rec))) return true;
+        i = j;
+    }
+    return false;
+}
+
 // Whether a run of program's material can draw from records (the header's vertex stage expands them):
 // GLSL 3, and a shadow pass (its casters draw every material) or a lit program without cross-fades
 static bool rbl__recordable(const rbl__Program *program)
@@ -6020,14 +6007,22 @@ static bool rbl__recordable(const rbl__Program *program)
     return (program != NULL) && !program->key.desc.crossFade && !program->key.desc.skinning;
 }
 
+// Record i (of run r) as the vertex path's four vertices (cache: the batch's frame, or a fresh one).
+// out may overlap the records: the record is read first
+static void rbl__recordVertices(const rbl__BatchState *batch, int r, int i, rbl__FrameCache *cache, RblVertex out[4])
+{
+    const rbl__BatchRecord b = ((const rbl__BatchRecord *)(const void *)batch->vertices)[i];
+    const rbl__Cast *cast = (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL;
+    rbl__expandQuad(&batch->view, cast, cache, batch->runs[r].textureWidth, batch->runs[r].textureHeight, &b, NULL, out, NULL);
+}
+
 // Turns the batch's records into vertices in place, last first (record i lies below vertex slot i)
 static void rbl__recordsToVertices(rbl__BatchState *batch)
 {
-    for (int i = batch->count - 1; i >= 0; i--)
-    {
-        rbl__BatchRecord r = ((const rbl__BatchRecord *)(const void *)batch->vertices)[i];
-        rbl__recordVertices(&r, batch->vertices + (size_t)i*4);
-    }
+    if (!batch->backFacing) batch->backFacing = rbl__recordsShowBack(batch);
+    for (int r = batch->runCount - 1; r >= 0; r--)
+        for (int i = batch->runs[r].first + batch->runs[r].count - 1; i >= batch->runs[r].first; i--)
+            rbl__recordVertices(batch, r, i, &batch->frame, batch->vertices + (size_t)i*4);
     batch->records = false;
 }
 
@@ -6061,7 +6056,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     if ((bad == NULL) && (batch->count == 0)) batch->records = !batch->vertexOnly && (poly == NULL) && (fade == NULL) && rbl__recordable(program);
     else if ((bad == NULL) && batch->records && ((poly != NULL) || (fade != NULL) || (newRun && !rbl__recordable(program)))) rbl__recordsToVertices(batch);
     const rbl__Cast *cast = (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL;
-    if ((bad == NULL) && batch->records) rbl__writeRecord(&batch->view, cast, &batch->frame, texW, texH, billboard, (rbl__BatchRecord *)(void *)batch->vertices + batch->count);
+    if ((bad == NULL) && batch->records) rbl__writeRecord(billboard, (rbl__BatchRecord *)(void *)batch->vertices + batch->count);
     else if ((bad == NULL) && !rbl__expandQuad(&batch->view, cast, &batch->frame, texW, texH, billboard, poly, batch->vertices + (size_t)batch->count*4, centre))
         bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && (poly != NULL) && !batch->polygonal)
@@ -6133,7 +6128,8 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
-    if (!batch->backFacing)
+    // (records: looked for at RblEndBatch)
+    if (!batch->backFacing && !batch->records)
     {
         Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
         if (rbl__dot(batch->frame.normal, toViewer) < 0.0f) batch->backFacing = true;
@@ -6305,19 +6301,13 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
     for (int r = 0; r < batch->runCount; r++)
         for (int i = batch->runs[r].first; i < batch->runs[r].first + batch->runs[r].count; i++)
         {
-            Vector3 c;
-            if (batch->records)
-            {
-                const rbl__BatchRecord *r = (const rbl__BatchRecord *)(const void *)batch->vertices + i;
-                c = rbl__v3(r->corner[0] + 0.5f*(r->right[0] + r->up[0]), r->corner[1] + 0.5f*(r->right[1] + r->up[1]), r->corner[2] + 0.5f*(r->right[2] + r->up[2]));
-            }
-            else
-            {
-                const RblVertex *v = batch->vertices + (size_t)i*4;
-                c = rbl__v3(0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
-                            0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
-                            0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]));
-            }
+            // A record's corners are the vertex stage's: the CPU's expansion gives the same centre
+            RblVertex corners[4];
+            const RblVertex *v = batch->vertices + (size_t)i*4;
+            if (batch->records) { rbl__recordVertices(batch, r, i, &batch->frame, corners); v = corners; }
+            Vector3 c = rbl__v3(0.25f*(v[0].position[0] + v[1].position[0] + v[2].position[0] + v[3].position[0]),
+                                0.25f*(v[0].position[1] + v[1].position[1] + v[2].position[1] + v[3].position[1]),
+                                0.25f*(v[0].position[2] + v[1].position[2] + v[2].position[2] + v[3].position[2]));
             if (batch->polygonal) c = rbl__v3(batch->centres[3*i], batch->centres[3*i + 1], batch->centres[3*i + 2]);   // a polygon's slots sort as its quad
             batch->keys[i].depth = -rbl__dot(rbl__sub(c, eye), back);
             batch->keys[i].index = i;
@@ -6353,7 +6343,6 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
 
 // The record stream's vertex array, made on first use (left unbound); false when it cannot be made.
 // Its pointers are set per draw
-#define RBL__RECORD_LOCATION 10         // lit.vs.glsl's rblRecord* inputs: 10..15
 static bool rbl__makeRecordArray(rbl__BatchState *batch)
 {
     if (batch->recordVaoId == 0)
@@ -6364,21 +6353,36 @@ static bool rbl__makeRecordArray(rbl__BatchState *batch)
     return batch->recordVaoId != 0;
 }
 
-// Points the record inputs at records [first, ...) of the batch's buffer, one per instance
+// Points the record inputs (lit_instanced.vs.glsl rblRecord*) at records [first, ...) of the
+// batch's buffer, one per instance; size and origin are read as one vec4
+typedef char rbl__sizeOriginAdjacent[(offsetof(RblBillboard, origin) == offsetof(RblBillboard, size) + 2*sizeof(float))? 1 : -1];
 static void rbl__setRecordLayout(const rbl__BatchState *batch, int first)
 {
-    static const struct { int size, type, offset; bool normalised; } in[6] = {
-        { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, corner), false }, { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, right), false },
-        { 3, RL_FLOAT, (int)offsetof(rbl__BatchRecord, up), false }, { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, uv), false },
-        { 4, RL_UNSIGNED_BYTE, (int)offsetof(rbl__BatchRecord, color), true }, { 4, RL_FLOAT, (int)offsetof(rbl__BatchRecord, normal), false } };
+    static const struct { unsigned int location; int size, type, offset; bool normalised; } in[10] = {
+        { 10, 3, RL_FLOAT, (int)offsetof(RblBillboard, position), false }, { 11, 4, RL_FLOAT, (int)offsetof(RblBillboard, size), false },
+        { 12, 1, RL_FLOAT, (int)offsetof(RblBillboard, rotation), false }, { 13, 4, RL_FLOAT, (int)offsetof(RblBillboard, source), false },
+        { 14, 4, RL_UNSIGNED_BYTE, (int)offsetof(RblBillboard, tint), true }, { 15, 1, 0x1404 /* GL_INT */, (int)offsetof(RblBillboard, facing), false },
+        { 6, 3, RL_FLOAT, (int)offsetof(RblBillboard, up), false }, { 7, 3, RL_FLOAT, (int)offsetof(RblBillboard, axis), false },
+        { 8, 1, RL_FLOAT, (int)offsetof(RblBillboard, roundness), false }, { 9, 1, 0x1405 /* GL_UNSIGNED_INT */, (int)offsetof(RblBillboard, flags), false } };
     rlEnableVertexBuffer(batch->vboId);
-    for (int a = 0; a < 6; a++)
+    for (int a = 0; a < 10; a++)
     {
-        const unsigned int loc = RBL__RECORD_LOCATION + (unsigned int)a;
-        rlSetVertexAttribute(loc, in[a].size, in[a].type, in[a].normalised, (int)sizeof(rbl__BatchRecord), (int)((size_t)first*sizeof(rbl__BatchRecord)) + in[a].offset);
-        rlSetVertexAttributeDivisor(loc, 1);
-        rlEnableVertexAttribute(loc);
+        rlSetVertexAttribute(in[a].location, in[a].size, in[a].type, in[a].normalised, (int)sizeof(rbl__BatchRecord), (int)((size_t)first*sizeof(rbl__BatchRecord)) + in[a].offset);
+        rlSetVertexAttributeDivisor(in[a].location, 1);
+        rlEnableVertexAttribute(in[a].location);
     }
+}
+
+static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFrame *view, int texW, int texH, float frame[32]);
+
+// The instanced stage's per-draw frame for run r's records: each record has its own facing, up, axis
+// and roundness; the code carries the pass's bits (lit_instanced.vs.glsl)
+static void rbl__recordFrame(const rbl__BatchState *batch, int r, float frame[32])
+{
+    RblInstancedDesc none;
+    memset(&none, 0, sizeof(none));
+    rbl__instancingFrame(&none, &batch->view, batch->runs[r].textureWidth, batch->runs[r].textureHeight, frame);
+    frame[3] = (float)((rbl__state.cast.faceLight? 8 : 0) + (rbl__state.cast.radial? 16 : 0));
 }
 
 // Draws quads [first, first + count) of the bound vertex buffer with run r's material
@@ -6414,14 +6418,10 @@ static void rbl__drawBatchQuads(const rbl__BatchState *batch, int r, int first, 
     }
     if (batch->records)
     {
+        float frame[32];
+        rbl__recordFrame(batch, r, frame);
+        rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
         rbl__setRecordLayout(batch, first);
-        if (idLoc >= 0)
-        {
-            rlEnableVertexBuffer(batch->idVboId);
-            rlSetVertexAttribute((unsigned int)idLoc, 4, RL_UNSIGNED_BYTE, true, RBL__ID_BYTES, (int)((size_t)first*RBL__ID_BYTES));
-            rlSetVertexAttributeDivisor((unsigned int)idLoc, 1);
-            rlEnableVertexAttribute((unsigned int)idLoc);
-        }
         rlDrawVertexArrayInstanced(0, 6, count);
     }
     for (int q = 0; !batch->records && (q < count); q += RBL__QUADS_PER_CHUNK)
@@ -6557,7 +6557,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     // Billboards seen from behind are drawn (two-sided, shaded on the side seen): culling goes off for
     // this draw and back on after (raylib's default; rlgl cannot report the caller's state). Shadow
     // passes keep it off throughout.
-    bool cullOff = batch->backFacing && (rbl__state.shadowPass == NULL);
+    bool cullOff = (rbl__state.shadowPass == NULL) && (batch->backFacing || (batch->records && rbl__recordsShowBack(batch)));
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
     if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
@@ -6748,37 +6748,6 @@ static inline bool rbl__instanceOk(const RblInstance *in)
     return rbl__exponentsBelow(&in->position, 12, RBL__INSTANCE_LIMIT_EXPONENT);
 }
 
-// Whether an instanced draw shows the camera the back of a quad (the batch's test, with each mode's
-// plane normal): CAMERA_PLANE only with a caller up (N = right x up), FIXED cards, AXIS under an
-// orthographic camera (it turns toward the camera's position, which a parallel view does not look
-// from); CAMERA_POSITION, and AXIS in perspective, face the eye by construction
-static bool rbl__instancesShowBack(const RblInstancedDesc *desc, const RblCameraFrame *view, bool orthographic, const RblInstance *in, int n)
-{
-    Vector3 a = desc->axis;
-    bool noAxis = (a.x == 0.0f) && (a.y == 0.0f) && (a.z == 0.0f);
-    if (desc->facing == RBL_FACING_CAMERA_PLANE)
-    {
-        if ((desc->up.x == 0.0f) && (desc->up.y == 0.0f) && (desc->up.z == 0.0f)) return false;
-        a = rbl__cross(view->right, desc->up);
-    }
-    else if (desc->facing == RBL_FACING_FIXED) { if (noAxis) a = rbl__v3(0.0f, 0.0f, 1.0f); }
-    else if ((desc->facing == RBL_FACING_AXIS) && orthographic) { if (noAxis) a = rbl__v3(0.0f, 1.0f, 0.0f); }
-    else return false;
-    if (orthographic && (desc->facing != RBL_FACING_AXIS)) return rbl__dot(a, view->back) < 0.0f;
-    for (int i = 0; i < n; i++)
-    {
-        Vector3 toEye = rbl__sub(view->eye, in[i].position), normal = a;
-        if (desc->facing == RBL_FACING_AXIS)
-        {
-            // The eye direction off the axis (its degenerate fallbacks face the view)
-            float k = rbl__dot(a, toEye)/rbl__dot(a, a);
-            normal = rbl__v3(toEye.x - a.x*k, toEye.y - a.y*k, toEye.z - a.z*k);
-        }
-        if (rbl__dot(normal, orthographic? view->back : toEye) < 0.0f) return true;
-    }
-    return false;
-}
-
 // Instances ordered back to front by their pivots' depth along the view axis, in buffer->sorted;
 // NULL when the scratch cannot be allocated
 static const RblInstance *rbl__sortInstances(rbl__InstanceBufferState *buffer, Camera3D camera, const RblInstance *in, int n)
@@ -6851,7 +6820,8 @@ static rbl__Program *rbl__ownVariant(rbl__Program *p, rbl__Program **slot, int b
 // without polygons never compile it
 static rbl__Program *rbl__polygonVariant(rbl__Program *p) { return rbl__ownVariant(p, &p->polygonVariant, 2); }
 
-// The batch-record variant (RBL_BATCH_RECORD) of a vertex-buffer program (lit, G-buffer geometry or caster)
+// The batch-record variant of a vertex-buffer program (lit, G-buffer geometry or caster): its
+// fragment stage behind the instanced vertex stage's RBL_BATCH_RECORD
 static rbl__Program *rbl__recordVariant(rbl__Program *p) { return rbl__ownVariant(p, &p->recordVariant, 4); }
 
 // A polygon's corners for the instanced stage (cut along diagonal d), 3 per triangle from its slots,
@@ -7100,7 +7070,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     float frame[32];
     rbl__instancingFrame(&desc, &view, texW, texH, frame);
     // Quads seen from behind are drawn, as in the batch: culling off for this draw only
-    bool cullOff = (rbl__state.shadowPass == NULL) && rbl__instancesShowBack(&desc, &view, camera.projection == CAMERA_ORTHOGRAPHIC, upload, n);
+    bool cullOff = (rbl__state.shadowPass == NULL) && rbl__showsBack(&view, desc.facing, desc.up, desc.axis, &upload[0].position, n, sizeof(RblInstance));
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
@@ -8743,7 +8713,7 @@ static rbl__Program *rbl__compileProgram(const rbl__ProgramKey *key)
     else
     {
         const char *const *const *fs = (key->kind == RBL__KIND_CASTER)? rbl__pass_shadow_caster_fs : (d->deferred? rbl__pass_gbuffer_fs : rbl__pass_lit_fs);
-        shader = rbl__loadShaderVariant(d->instanced? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs, fs, defines);
+        shader = rbl__loadShaderVariant((d->instanced || (key->sprites & 4))? rbl__pass_lit_instanced_vs : rbl__pass_lit_vs, fs, defines);
     }
     if (shader.id == 0) { RBL_FREE(p); return NULL; }
     // GL hands out the names of deleted programs again: an entry still holding this id was deleted

@@ -4,23 +4,11 @@
 #include "common.glsl"
 #include "skinning.glsl"
 
-#ifdef RBL_BATCH_RECORD
-// The batch's compact stream (GLSL 3 only): one record per billboard (rbl__BatchRecord), read once
-// per instance; gl_VertexID picks the corner of the quad's two triangles (0,1,2) (0,2,3). The CPU
-// mirror of this expansion is rbl__recordVertices
-layout(location = 10) in vec4 rblRecordCorner;     // xyz: corner 0 (bottom-left of the footprint), w: bits (1 mirror U, 2 mirror V, 4 rotated frame, 8 cylinder)
-layout(location = 11) in vec3 rblRecordRight;      // corner 1 - corner 0 (the rotated +R times the width)
-layout(location = 12) in vec3 rblRecordUp;         // corner 3 - corner 0 (the rotated +U times the height)
-layout(location = 13) in vec4 rblRecordUv;         // texture coordinates: xy at corner 0, zw at corner 2
-layout(location = 14) in vec4 rblRecordColor;      // tint, normalised bytes
-layout(location = 15) in vec4 rblRecordNormal;     // xyz: the frame's normal (not always R x U: a CAMERA_PLANE caller up), w: roundness 0..1
-#else
 RBL_ATTRIBUTE vec3 vertexPosition;
 RBL_ATTRIBUTE vec2 vertexTexCoord;
 RBL_ATTRIBUTE vec3 vertexNormal;
 RBL_ATTRIBUTE vec4 vertexColor;
 RBL_ATTRIBUTE vec4 vertexTangent;      // xyz: world +U direction, w: handedness (cross(N,T)*w = +V)
-#endif
 #ifdef RBL_CROSS_FADE
 // The fade stream (raylib's texcoord2 location 5): xy the second frame's texture coordinate, z the
 // weight, w its tangent axes against the first's (material.glsl). Without the stream the attribute
@@ -60,51 +48,9 @@ RBL_VARYING vec4 fragColor;
 RBL_VARYING vec3 fragNormal;
 RBL_VARYING vec4 fragTangent;
 
-#ifdef RBL_BATCH_RECORD
-bool rblRecordBit(float bits, float bit) { return mod(floor(bits/bit), 2.0) == 1.0; }
-
-// Corner of the record's quad: position, texture coordinate, normal, tangent and handedness as
-// rbl__expandQuad writes them (a zero edge draws nothing: its normal is never used)
-void rblRecordVertex(out vec3 position, out vec2 uv, out vec3 normal, out vec4 tangent)
-{
-    int id = gl_VertexID;
-    int c = (id < 3)? id : ((id == 3)? 0 : id - 2);
-    bool s = (c == 1) || (c == 2), t = (c >= 2);
-    position = rblRecordCorner.xyz + (s? rblRecordRight : vec3(0.0)) + (t? rblRecordUp : vec3(0.0));
-    float bits = rblRecordCorner.w;
-    bool flipU = rblRecordBit(bits, 1.0), flipV = rblRecordBit(bits, 2.0), rotated = rblRecordBit(bits, 4.0), cylinder = rblRecordBit(bits, 8.0);
-    // A rotated frame's u runs along the sprite's t (its v along s)
-    bool su = rotated? t : s, sv = rotated? s : t;
-    uv = vec2(su? rblRecordUv.z : rblRecordUv.x, sv? rblRecordUv.w : rblRecordUv.y);
-    vec3 R = normalize(rblRecordRight), U = normalize(rblRecordUp), N = rblRecordNormal.xyz;
-    vec3 T = rotated? (flipV? -U : U) : (flipU? -R : R);
-    normal = N;
-    vec3 tg = T;
-    float roundness = rblRecordNormal.w;
-    if (roundness > 0.0)
-    {
-        // Corner normals lean outward from the centre (rbl__expandQuad)
-        float dx = (s? 1.0 : -1.0)*roundness, dy = cylinder? 0.0 : (t? 1.0 : -1.0)*roundness;
-        normal = normalize(N + R*dx + U*dy);
-        vec3 p = T - normal*dot(T, normal);
-        if (dot(p, p) > 1e-10*dot(T, T)) tg = normalize(p);
-    }
-    tangent = vec4(tg, (flipU != flipV)? 1.0 : -1.0);
-}
-#endif
-
 void main()
 {
-#ifdef RBL_BATCH_RECORD
-    vec3 position, normal;
-    vec2 vertexTexCoord;
-    vec4 vertexTangent;
-    rblRecordVertex(position, vertexTexCoord, normal, vertexTangent);
-    vec3 tangent = vertexTangent.xyz;
-    vec4 vertexColor = rblRecordColor;
-#else
     vec3 position = vertexPosition, normal = vertexNormal, tangent = vertexTangent.xyz;
-#endif
 #ifdef RBL_SKINNING
     rblSkin(position, normal, tangent);     // bind pose -> animated pose, in the model's space
 #endif

@@ -9,11 +9,28 @@
 // An RblInstance, or in the resident-sprite variant (RBL_SPRITE_BUFFER, compiled by the header for
 // RblDrawSpriteBuffer) an RblSpriteInstance whose 32 bytes the same locations read as: 10 pivot,
 // scale; 11 start (x); 12 rotation, frame, speed (half-float bits), mode, as unsigned shorts; 13 tint
+#ifdef RBL_BATCH_RECORD
+// The batch-record variant (RblBatch on GLSL 3 with the header's programs): one record per
+// billboard, the RblBillboard as added (flags: its rotated-frame and cylinder bits; a FIXED or AXIS
+// up and axis tamed as the CPU tames them). Its facing, up, axis and roundness are its own, not the
+// draw's. Locations 6..9 are the cross-fade's elsewhere: record programs have no cross-fade
+layout(location = 10) in vec3 rblRecordPosition;    // pivot
+layout(location = 11) in vec4 rblRecordSizeOrigin;  // xy: size (negative mirrors), zw: origin
+layout(location = 12) in float rblRecordRotation;   // degrees
+layout(location = 13) in vec4 rblRecordSource;      // x, y, width, height in texels (all zero = whole texture)
+layout(location = 14) in vec4 rblRecordTint;        // normalised bytes (all zero = white)
+layout(location = 15) in float rblRecordFacing;     // RblFacing
+layout(location = 6) in vec3 rblRecordUp;           // as RblInstancedDesc.up
+layout(location = 7) in vec3 rblRecordAxis;         // as RblInstancedDesc.axis
+layout(location = 8) in float rblRecordRoundness;   // as RblInstancedDesc.roundness
+layout(location = 9) in float rblRecordFlags;       // RBL_FRAME_ROTATED, RBL_ROUND_CYLINDER
+#else
 layout(location = 10) in vec4 rblInstancePosition;  // xyz: pivot, w: rotation in degrees
 layout(location = 11) in vec4 rblInstanceSize;      // xy: size (negative mirrors), zw: origin
 layout(location = 12) in vec4 rblInstanceSource;    // x, y, width, height in texels (all zero = whole texture)
 layout(location = 13) in vec4 rblInstanceTint;      // normalised bytes (all zero = white)
 layout(location = 14) in float rblInstanceFlags;    // RblBillboardFlags
+#endif
 #ifdef RBL_CROSS_FADE
 // RblInstancedDesc.fades, a second per-instance buffer (without it: constant, weight 0)
 layout(location = 15) in vec4 rblInstanceFadeSource; // the second frame, as rblInstanceSource
@@ -33,7 +50,9 @@ RBL_FLAT RBL_VARYING vec2 fragCasterId;              // the instance's caster id
 uniform mat4 mvp;
 // Per-draw frame, one upload (uniform calls cost more than the data in most drivers):
 //   [0] eye, facing code: RblFacing + 8 in a shadow pass with light-facing casters (AXIS tilts turn
-//       the front face to the light)
+//       the front face to the light); the batch-record variant's facing is each record's, the code
+//       adds 8 as above and 16 in an omni pass with light-facing casters (its CAMERA_PLANE cards
+//       face the light's position, rbl__castFacing)
 //   [1] right, roundness   [2] up, texture width   [3] back, texture height
 //   [4] facing up (CAMERA_PLANE: caller up, zero = camera up; FIXED: up, zero = +Y), w: shadow pass
 //       minimum sine at which the light sees an AXIS billboard (0 = no tilt)
@@ -517,6 +536,8 @@ void main()
 {
 #ifdef RBL_SPRITE_BUFFER
     rblReadSprite();
+#elif defined(RBL_BATCH_RECORD)
+    rblPivot = vec4(rblRecordPosition, rblRecordRotation); rblSizeOrigin = rblRecordSizeOrigin; rblSource = rblRecordSource; rblFlagBits = rblRecordFlags;
 #else
     rblPivot = rblInstancePosition; rblSizeOrigin = rblInstanceSize; rblSource = rblInstanceSource; rblFlagBits = rblInstanceFlags;
 #ifdef RBL_CROSS_FADE
@@ -546,9 +567,20 @@ void main()
     const int cornerOf[6] = int[6](0, 1, 2, 0, 2, 3);
     vec3 eye = rblInstancing[0].xyz;
     int code = int(rblInstancing[0].w + 0.5);
+    vec3 facingUp = rblInstancing[4].xyz, facingAxis = rblInstancing[5].xyz;
+    float roundness = rblInstancing[1].w;
+#ifdef RBL_BATCH_RECORD
+    vec4 tintIn = rblRecordTint;
+    int facing = int(rblRecordFacing + 0.5);
+    if (((code & 16) != 0) && (facing == 0)) facing = 1;
+    code = facing + (code & 8);
+    facingUp = rblRecordUp; facingAxis = rblRecordAxis; roundness = rblRecordRoundness;
+#else
+    vec4 tintIn = rblInstanceTint;
+#endif
     vec3 r, u, n;
     rblFacingBasis(code, rblPivot.xyz, eye, rblInstancing[5].w, rblInstancing[1].xyz, rblInstancing[2].xyz,
-                   rblInstancing[3].xyz, rblInstancing[4].xyz, rblInstancing[5].xyz, rblInstancing[4].w, rblInstancing[6], r, u, n);
+                   rblInstancing[3].xyz, facingUp, facingAxis, rblInstancing[4].w, rblInstancing[6], r, u, n);
     // A tilted AXIS caster turns about its lowest edge, moving to mid-height as the light nears the
     // axis (rbl__billboardVertices)
     vec3 shift = vec3(0.0);
@@ -557,7 +589,7 @@ void main()
     if (((code & 3) == 2) && (rblInstancing[4].w > 0.0))
     {
         vec3 a = vec3(0.0, 1.0, 0.0), l = a;
-        if (dot(rblInstancing[5].xyz, rblInstancing[5].xyz) > 1e-24) rblNormalizeTo(rblInstancing[5].xyz, a);
+        if (dot(facingAxis, facingAxis) > 1e-24) rblNormalizeTo(facingAxis, a);
         vec3 d = a - u;
         vec4 light = rblInstancing[6];
         if ((dot(d, d) > 0.0) && rblNormalizeTo(light.xyz - rblPivot.xyz*light.w, l))
@@ -581,11 +613,11 @@ void main()
 #ifdef RBL_POLYGONS
     vec2 polygonPoint = vec2(-1.0);
     if (rblPolygonal)
-        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
+        polygonPoint = rblPolygonVertex(int(cut.x + 0.5), gl_VertexID, r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), roundness,
                                         p, fragTexCoord, fragNormal, fragTangent);
     else
 #endif
-    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), rblInstancing[1].w,
+    rblBillboardVertex(cornerOf[gl_VertexID % 6], r, u, n, vec2(rblInstancing[2].w, rblInstancing[3].w), roundness,
                        p, fragTexCoord, fragNormal, fragTangent);
     p += shift;
     fragPosition = p;
@@ -606,7 +638,7 @@ void main()
     vec2 picture = vec2((rblSizeOrigin.x < 0.0)? 1.0 - cs : cs, (rblSizeOrigin.y < 0.0)? 1.0 - ct : ct);
     fragFadeClip = vec4(rblFadeClipLocal(rblFadeClip0, picture), rblFadeClipLocal(rblFadeClip1, picture));
 #endif
-    vec4 tint = (rblInstanceTint == vec4(0.0))? vec4(1.0) : rblInstanceTint;
+    vec4 tint = (tintIn == vec4(0.0))? vec4(1.0) : tintIn;
     fragColor = vec4(rblSrgbToLinear(tint.rgb), tint.a);       // sRGB like every raylib Color: decoded once per vertex
 #ifdef RBL_VIEW_VECTOR
     fragEye = eye;

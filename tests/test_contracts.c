@@ -423,7 +423,8 @@ static void c_batch_add(void)
         if (ok && (b.state->count > before)) rtBatchVertices(b.state, before, v);
         // what the GPU reads: the vertices, or the record (its floats) and what the vertex stage makes of it
         if (ok && (b.state->count > before)) ck(allFinite(v[0].position, 3) && allFinite(v[2].position, 3) && allFinite(v[2].texcoord, 2) &&
-                                                (!b.state->records || allFinite((const float *)(const void *)((const rbl__BatchRecord *)(const void *)b.state->vertices + before), 14)),
+                                                (!b.state->records || (allFinite(&((const rbl__BatchRecord *)(const void *)b.state->vertices + before)->position.x, 12) &&
+                                                                       allFinite(&((const rbl__BatchRecord *)(const void *)b.state->vertices + before)->up.x, 7))),
                                                 "%s = %g accepted with non-finite vertices", billboardFloats[fi].name, badFloats[vi]);
         if (b.count >= RBL_MAX_BATCH_BILLBOARDS - 1) { RblEndBatch(&b); RblBeginBatch(&b, camera()); }
     }

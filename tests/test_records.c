@@ -249,10 +249,52 @@ static void test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_l
     if (geo.id != 0) RblUnloadLitShader(&geo);
 }
 
+// Billboards of the stage's hard inputs added to the set: FIXED and AXIS up and axis far beyond
+// what float squares (tamed as the CPU tames them), flag bits no path reads, far pivots
+static void recHardSet(RblBillboard *set)
+{
+    recSet(set);
+    for (int k = 0; k < REC_SET; k += 7) set[k].position = (Vector3){ 3000.5f + (float)k, -1200.25f, -40000.0f };    // far: large coordinates
+    for (int k = 3; k < REC_SET; k += 5)
+    {
+        if (set[k].facing != RBL_FACING_CAMERA_PLANE) { set[k].axis = (Vector3){ 2e30f, 1e36f, -3e29f }; set[k].up = (Vector3){ -1e33f, 4e37f, 5e35f }; }
+        set[k].flags |= 0x40000000u;
+    }
+}
+
+// The record stage's capture (tfCaptureRecords with the pass's frame, set by the caller) against the
+// CPU's vertices of the same batch (gathered in its pass); the worst position (relative to the
+// billboard's extent), uv and normal/tangent difference
+typedef struct RecStage { double pos, uv, frame; } RecStage;
+static RecStage recStageError(TfGl *gl, GLu prog, const rbl__BatchState *st, const RblBillboard *set, const RblVertex *cpu)
+{
+    RecStage e = { 0.0, 0.0, 0.0 };
+    float *gpu = tfCaptureRecords(gl, prog, st, REC_SET);
+    const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
+    for (int i = 0; (gpu != NULL) && (i < REC_SET); i++)
+    {
+        double scale = 1.0 + dLen(d3f(set[i].position)) + fabs(set[i].size.x) + fabs(set[i].size.y) + fabs(set[i].origin.x) + fabs(set[i].origin.y);
+        for (int v = 0; v < 6; v++)
+        {
+            const float *g = gpu + ((size_t)i*6 + v)*TF_FLOATS;
+            const RblVertex *c = &cpu[4*i + cornerOf[v]];
+            for (int k = 0; k < 3; k++) e.pos = fmax(e.pos, fabs(g[k] - c->position[k])/scale);
+            for (int k = 0; k < 2; k++) e.uv = fmax(e.uv, fabs(g[3 + k] - c->texcoord[k]));
+            for (int k = 0; k < 3; k++) e.frame = fmax(e.frame, fabs(g[5 + k] - c->normal[k]));
+            for (int k = 0; k < 4; k++) e.frame = fmax(e.frame, fabs(g[8 + k] - c->tangent[k]));
+        }
+    }
+    if (gpu == NULL) e.pos = e.uv = e.frame = INFINITY;
+    free(gpu);
+    return e;
+}
+
 // The record vertex stage's own output (transform feedback): per corner the position, texture
-// coordinate, normal and tangent the vertex path writes (rbl__expandQuad, through
-// RblBillboardVertices), for the 192-billboard set and a far one (positions relative to the
-// billboard's extent, as the instanced stage's test)
+// coordinate, normal and tangent the vertex path writes (rbl__expandQuad: RblBillboardVertices in a
+// colour pass, the batch's own expansion in a shadow pass), for the 192-billboard set with far ones,
+// huge FIXED/AXIS directions and stray flag bits: in a colour pass, and cast by a directional light
+// (light-facing, and facing the camera) and an omni light (light-facing: its CAMERA_PLANE cards turn
+// to CAMERA_POSITION; facing the camera) with AXIS tilts
 static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_normals_and_tangents(void)
 {
     TfGl gl;
@@ -261,8 +303,8 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
     RT_CHECK(prog != 0, "the record vertex stage did not link with transform feedback");
     if (prog == 0) return;
     static RblBillboard set[REC_SET];
-    recSet(set);
-    for (int k = 0; k < REC_SET; k += 7) set[k].position = (Vector3){ 3000.5f + (float)k, -1200.25f, -40000.0f };    // far: large coordinates
+    static RblVertex cpu[4*REC_SET];
+    recHardSet(set);
     Shader lit = RblLoadLitShader((RblLitShaderDesc){ .maxLights = 1 });
     Texture2D white = solidTexture(WHITE);
     Material m = LoadMaterialDefault();
@@ -282,29 +324,45 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
     RT_CHECK(records && (st != NULL) && (st->count == REC_SET), "the batch did not end with %d records", REC_SET);
     if (records && (st != NULL) && (st->count == REC_SET))
     {
-        float *gpu = tfCaptureRecords(&gl, prog, st, REC_SET);
         RblCameraFrame view = RblGetCameraFrame(cam);
-        const int cornerOf[6] = { 0, 1, 2, 0, 2, 3 };
-        double worstPos = 0.0, worstUv = 0.0, worstFrame = 0.0;
-        for (int i = 0; i < REC_SET; i++)
+        for (int i = 0; i < REC_SET; i++) RT_CHECK(RblBillboardVertices(&view, 4, 4, &set[i], cpu + 4*i), "billboard %d refused by the vertex path", i);
+        RecStage e = recStageError(&gl, prog, st, set, cpu);
+        printf("    record stage vs the vertex path (%d billboards, %d far, %d huge directions): position %.2e of the extent, uv %.2e, normal/tangent %.2e\n",
+               REC_SET, (REC_SET + 6)/7, (REC_SET + 1)/5, e.pos, e.uv, e.frame);
+        RT_CHECK(e.pos < 1e-6 && e.uv < 1e-6 && e.frame < 1e-6, "record stage vs vertex path: position %.3g, uv %.3g, normal/tangent %.3g", e.pos, e.uv, e.frame);
+    }
+
+        // Shadow passes: the batch's own CPU expansion and the capture, both in the pass
+    // The sun shines from behind the cards the camera faces: light-facing ones turn their fronts to it
+    RblLight lights[2] = { litDirectional((Vector3){ 0.3f, -0.5f, 0.8f }, 1.0f), rtPointLight((Vector3){ 0.5f, 2.5f, 1.0f }, 4.0f) };
+    const char *names[4] = { "directional, light-facing", "directional, camera-facing", "omni face 2, light-facing", "omni face 4, camera-facing" };
+    for (int c = 0; c < 4; c++)
+    {
+        RblShadowDesc sd;
+        memset(&sd, 0, sizeof(sd));
+        sd.size = 64; sd.omni = (c >= 2); sd.faceCamera = (c & 1) != 0;
+        RblShadowMap map = RblLoadShadowMap(sd);
+        RblScene scene;
+        memset(&scene, 0, sizeof(scene));
+        scene.lights = lights; scene.lightCount = 2;
+        bool cast = false, held = false;
+        RecStage e = { INFINITY, INFINITY, INFINITY };
+        if (RblBeginShadowMapPass(&map, &scene, (c >= 2)? 1 : 0, (c >= 2)? 2*(c - 1) : 0, (Vector3){ 0.0f, 0.0f, 0.0f }, 6.0f))
         {
-            RblVertex q[4];
-            RT_CHECK(RblBillboardVertices(&view, 4, 4, &set[i], q), "billboard %d refused by the vertex path", i);
-            double scale = 1.0 + dLen(d3f(set[i].position)) + fabs(set[i].size.x) + fabs(set[i].size.y) + fabs(set[i].origin.x) + fabs(set[i].origin.y);
-            for (int v = 0; v < 6; v++)
-            {
-                const float *g = gpu + ((size_t)i*6 + v)*TF_FLOATS;
-                const RblVertex *c = &q[cornerOf[v]];
-                for (int k = 0; k < 3; k++) worstPos = fmax(worstPos, fabs(g[k] - c->position[k])/scale);
-                for (int k = 0; k < 2; k++) worstUv = fmax(worstUv, fabs(g[3 + k] - c->texcoord[k]));
-                for (int k = 0; k < 3; k++) worstFrame = fmax(worstFrame, fabs(g[5 + k] - c->normal[k]));
-                for (int k = 0; k < 4; k++) worstFrame = fmax(worstFrame, fabs(g[8 + k] - c->tangent[k]));
-            }
+            cast = true;
+            RblBeginBatch(&batch, cam);
+            for (int k = 0; k < REC_SET; k++) RblBatchAdd(&batch, m, &set[k]);
+            held = st->records && (st->count == REC_SET);
+            for (int i = 0; held && (i < REC_SET); i++) rtBatchVertices(st, i, cpu + 4*i);
+            RblEndBatch(&batch);
+            if (held) e = recStageError(&gl, prog, st, set, cpu);
+            RblEndShadowMap(&map);
         }
-        free(gpu);
-        printf("    record stage vs the vertex path (%d billboards, %d far): position %.2e of the extent, uv %.2e, normal/tangent %.2e\n",
-               REC_SET, (REC_SET + 6)/7, worstPos, worstUv, worstFrame);
-        RT_CHECK(worstPos < 1e-6 && worstUv < 1e-6 && worstFrame < 1e-6, "record stage vs vertex path: position %.3g, uv %.3g, normal/tangent %.3g", worstPos, worstUv, worstFrame);
+        RblUnloadShadowMap(&map);
+        RT_CHECK(cast && held, "%s: no shadow pass, or the batch held no %d records", names[c], REC_SET);
+        if (!(cast && held)) continue;
+        printf("    cast, %-27s: position %.2e of the extent, uv %.2e, normal/tangent %.2e\n", names[c], e.pos, e.uv, e.frame);
+        RT_CHECK(e.pos < 1e-6 && e.uv < 1e-6 && e.frame < 1e-6, "%s: record stage vs vertex path: position %.3g, uv %.3g, normal/tangent %.3g", names[c], e.pos, e.uv, e.frame);
     }
     gl.DeleteProgram(prog);
     RblUnloadBatch(&batch);

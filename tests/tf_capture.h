@@ -90,7 +90,7 @@ static GLu tfStageProgram(TfGl *gl, const char *defines, const char *const *cons
 }
 
 static GLu tfProgram(TfGl *gl) { return tfStageProgram(gl, "#define RBL_LIGHTS 1\n", rbl__pass_lit_instanced_vs); }
-static GLu tfRecordProgram(TfGl *gl) { return tfStageProgram(gl, "#define RBL_LIGHTS 1\n#define RBL_BATCH_RECORD\n", rbl__pass_lit_vs); }
+static GLu tfRecordProgram(TfGl *gl) { return tfStageProgram(gl, "#define RBL_LIGHTS 1\n#define RBL_BATCH_RECORD\n", rbl__pass_lit_instanced_vs); }
 
 // Shadow-pass fields of the captured frame (zero: a colour pass); the shadow tests set them
 static Vector4 tfLight;
@@ -160,10 +160,14 @@ static float *tfCapture(TfGl *gl, GLu prog, RblInstanceBuffer *buf, Camera3D cam
 }
 
 // Runs the batch-record vertex stage (tfRecordProgram) over the first n records a batch uploaded at
-// its last RblEndBatch and returns 6 captured vertices per record (corners 0, 1, 2, 0, 2, 3)
+// its last RblEndBatch, with the frame its first run drew with (rbl__recordFrame: call it in the pass
+// the batch drew in), and returns 6 captured vertices per record (corners 0, 1, 2, 0, 2, 3)
 static float *tfCaptureRecords(TfGl *gl, GLu prog, const rbl__BatchState *st, int n)
 {
+    float frame[32];
+    rbl__recordFrame(st, 0, frame);
     TfRun run = tfBegin(gl, prog, (size_t)n*6*TF_FLOATS*sizeof(float));
+    rlSetUniform(rlGetLocationUniform(prog, "rblInstancing"), frame, SHADER_UNIFORM_VEC4, 7);
     rlEnableVertexArray(st->recordVaoId);
     rbl__setRecordLayout(st, 0);
     return tfEnd(gl, &run, 6, n);

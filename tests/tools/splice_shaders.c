@@ -81,7 +81,7 @@ int main(int argc, char **argv)
                 char record[1600];
                 snprintf(record, sizeof(record), "%s#define RBL_BATCH_RECORD\n", defines);
                 snprintf(name, sizeof(name), "record-%d", c);
-                writeStage(dir, glsl, name, true, record, rbl__pass_lit_vs);
+                writeStage(dir, glsl, name, true, record, rbl__pass_lit_instanced_vs);
             }
             // Deferred light passes: the lighting desc of this case, with and without the light counter
             RblLitShaderDesc lighting = d;
