@@ -1514,9 +1514,11 @@ typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256
 // Quads per indexed draw: 16-bit indices (rlDrawVertexArrayElements) address 65536 vertices
 #define RBL__QUADS_PER_CHUNK 16384
 
-// Validation reads runs of floats: RblBillboard position .. source and up .. roundness, RblInstance
-// position .. source
+// Validation reads runs of floats: RblBillboard position .. source (rotation the 8th) and up ..
+// roundness, RblInstance position .. source; a batch record reads size and origin as one vec4
 typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(Rectangle) - offsetof(RblBillboard, position) == 12*sizeof(float)) &&
+                                      (offsetof(RblBillboard, rotation) - offsetof(RblBillboard, position) == 7*sizeof(float)) &&
+                                      (offsetof(RblBillboard, origin) == offsetof(RblBillboard, size) + 2*sizeof(float)) &&
                                       (offsetof(RblBillboard, roundness) + sizeof(float) - offsetof(RblBillboard, up) == 7*sizeof(float)) &&
                                       (offsetof(RblInstance, tint) - offsetof(RblInstance, position) == 12*sizeof(float)))? 1 : -1];
 // A resident sprite is 32 bytes, read by lit_instanced.vs.glsl as four attributes: pivot and scale
@@ -1634,7 +1636,7 @@ typedef struct rbl__BatchState {
     int skipped;                    // Billboards skipped for bad input since RblBeginBatch()
     int culled;                     // Billboards accepted but outside the view since RblBeginBatch() (not in count)
     int planeCount;                 // Culling planes in use: 0 (off), 4 (a shadow pass's sides) or 6 (a camera's frustum)
-    float planes[6][4];             // Unit normal and offset of each: a point p is inside where n.p + d >= 0
+    float cull[4][8];               // The planes by component (unit normal x, y, z and offset d: p is inside where n.p + d >= 0), padded to 8 with planes that keep everything
     Vector3 cullUp;                 // The last CAMERA_PLANE up culled and its length (the height's scale)
     float cullUpLength;
     bool orthographic;              // The camera's projection (which side of a quad it sees)
@@ -1656,7 +1658,7 @@ typedef struct rbl__BatchState {
     int idSortCapacity;             // Billboards idsSorted holds
     unsigned int idVboId;           // GPU copy, created at the first identified RblEndBatch
     int idGpuCapacity;              // Billboards idVboId holds
-    bool identified;                // ids[0..count) is filled
+    bool identified;                // ids[0..count) is filled (records: due, written if they turn to vertices)
     // Polygon frames (RBL_FRAME_POLYGON): a billboard takes one quad slot per pair of its triangles.
     // From the first such billboard, every slot's sort key (its billboard's quad centre) is kept
     float *centres;                 // 3 floats per slot while polygonal (capacity slots)
@@ -5152,9 +5154,18 @@ static bool rbl__fadeOk(const RblFade *f, unsigned int limitExponent)
 static inline bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
-    // rotation is reduced exactly (fmod), so it may be as large as an instance's (2^120)
-    if (!rbl__exponentsBelow(&b->position, 7, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__exponentsBelow(&b->rotation, 1, RBL__INSTANCE_LIMIT_EXPONENT) ||
-        !rbl__exponentsBelow(&b->source, 4, RBL__BILLBOARD_LIMIT_EXPONENT) || !rbl__allFinite(&b->up, 7)) return false;
+    // The 12 floats position .. source each against its bound (rotation is reduced exactly, fmod, so
+    // it may be as large as an instance's: 2^120) in one pass of fixed length (compilers vectorise it)
+    #define RBL__BIAS(e) ((256u - (e)) << 23)
+    static const unsigned int bias[12] = { RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
+        RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
+        RBL__BIAS(RBL__INSTANCE_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
+        RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT) };
+    #undef RBL__BIAS
+    unsigned int word[12], carry = 0u;
+    memcpy(word, &b->position, sizeof(word));
+    for (int i = 0; i < 12; i++) carry |= (word[i] & 0x7f800000u) + bias[i];
+    if (((carry & 0x80000000u) != 0u) || !rbl__allFinite(&b->up, 7)) return false;
     // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
     if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
     return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED);
@@ -5830,14 +5841,15 @@ static bool rbl__culled(rbl__BatchState *batch, const RblBillboard *b)
     float ex = (ax > bx)? ax : bx, ey = (ay > by)? ay : by;
     float r2 = (ex*ex + ey*ey)*(((batch->planeCount == 4) && (b->facing == RBL_FACING_AXIS))? 9.0f : 1.0f);
     r2 *= 1.0f + 1e-5f;        // rounding of the corners' own sums
+    // Every plane, no early exit: compilers vectorise the eight
     const Vector3 c = b->position;
-    for (int k = 0; k < batch->planeCount; k++)
+    int out = 0;
+    for (int k = 0; k < 8; k++)
     {
-        const float *p = batch->planes[k];
-        float d = p[0]*c.x + p[1]*c.y + p[2]*c.z + p[3];
-        if ((d < 0.0f) && (d*d > r2)) return true;
+        float d = batch->cull[0][k]*c.x + batch->cull[1][k]*c.y + batch->cull[2][k]*c.z + batch->cull[3][k];
+        out |= (d < 0.0f) & (d*d > r2);
     }
-    return false;
+    return out != 0;
 }
 
 bool RblBeginBatch(RblBatch *pub, Camera3D camera)
@@ -5851,7 +5863,10 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     }
     if (!rbl__cameraOk(camera)) { TraceLog(LOG_WARNING, "RBL: RblBeginBatch: camera with NaN/Inf fields"); return false; }
     batch->view = rbl__cameraFrame(camera);
-    batch->planeCount = pub->noCull? 0 : rbl__cullPlanes(&batch->view, rbl__state.shadowPass != NULL, batch->planes);
+    float planes[6][4];
+    batch->planeCount = pub->noCull? 0 : rbl__cullPlanes(&batch->view, rbl__state.shadowPass != NULL, planes);
+    for (int k = 0; k < 8; k++)
+        for (int e = 0; e < 4; e++) batch->cull[e][k] = (k < batch->planeCount)? planes[k][e] : ((e == 3)? 1.0f : 0.0f);
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     batch->backFacing = false;
@@ -6016,10 +6031,20 @@ static void rbl__recordVertices(const rbl__BatchState *batch, int r, int i, rbl_
     rbl__expandQuad(&batch->view, cast, cache, batch->runs[r].textureWidth, batch->runs[r].textureHeight, &b, NULL, out, NULL);
 }
 
-// Turns the batch's records into vertices in place, last first (record i lies below vertex slot i)
+// Slot's caster identity for the vertex stream: per vertex its high and low bytes, two zero bytes
+static void rbl__writeCasterIds(unsigned char *o, const RblBillboard *b, int slots)
+{
+    unsigned int id = rbl__casterId(b->position, b->size, b->origin);
+    for (int v = 0; v < 4*slots; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
+}
+
+// Turns the batch's records into vertices in place, last first (record i lies below vertex slot i),
+// with their identities where the batch has the stream
 static void rbl__recordsToVertices(rbl__BatchState *batch)
 {
     if (!batch->backFacing) batch->backFacing = rbl__recordsShowBack(batch);
+    for (int i = 0; batch->identified && (i < batch->count); i++)
+        rbl__writeCasterIds(batch->ids + (size_t)i*RBL__ID_BYTES, (const rbl__BatchRecord *)(const void *)batch->vertices + i, 1);
     for (int r = batch->runCount - 1; r >= 0; r--)
         for (int i = batch->runs[r].first + batch->runs[r].count - 1; i >= batch->runs[r].first; i--)
             rbl__recordVertices(batch, r, i, &batch->frame, batch->vertices + (size_t)i*4);
@@ -6078,7 +6103,8 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     }
     // The identity stream starts with the first billboard cast into a casters target or drawn by a
     // shadow receiver (forward, or into a G-buffer that receives shadows); earlier ones get 0 (their
-    // programs read none). Continuing runs had their program checked when they started.
+    // programs read none). Continuing runs had their program checked when they started. Records
+    // leave it unwritten (the record stage hashes each billboard itself) until they turn to vertices.
     const RblShadowMap *pass = rbl__state.shadowPass;
     const RblGBuffer *gpass = rbl__state.gbufferPass;
     if (batch->identified || ((pass != NULL)? !pass->desc.selfShadow : (gpass != NULL)? (gpass->desc.shading.shadowMaps > 0) :
@@ -6090,11 +6116,9 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
             if (batch->skipped++ == 0) TraceLog(LOG_WARNING, "RBL: %s: billboard skipped (out of memory for the caster identities); further skips this batch are not logged", fn);
             return false;
         }
-        if (!batch->identified) memset(batch->ids, 0, (size_t)batch->count*RBL__ID_BYTES);
+        if (!batch->identified && !batch->records) memset(batch->ids, 0, (size_t)batch->count*RBL__ID_BYTES);
         batch->identified = true;
-        unsigned int id = rbl__casterId(billboard->position, billboard->size, billboard->origin);
-        unsigned char *o = batch->ids + (size_t)batch->count*RBL__ID_BYTES;
-        for (int v = 0; v < 4*slots; v++) { o[4*v] = (unsigned char)(id >> 8); o[4*v + 1] = (unsigned char)(id & 255u); o[4*v + 2] = o[4*v + 3] = 0; }
+        if (!batch->records) rbl__writeCasterIds(batch->ids + (size_t)batch->count*RBL__ID_BYTES, billboard, slots);
     }
     // The fade stream starts with the first faded billboard (earlier ones get weight 0); a clipped
     // one at weight 0 needs it too (its quad is the union of two trims: only the first's is drawn).
@@ -6316,7 +6340,7 @@ static bool rbl__sortBatch(rbl__BatchState *batch)
     qsort(batch->keys, (size_t)batch->count, sizeof(rbl__SortKey), rbl__compareKeys);
     const size_t each = batch->records? sizeof(rbl__BatchRecord) : 4*sizeof(RblVertex);
     for (int i = 0; i < batch->count; i++) memcpy((unsigned char *)batch->sorted + (size_t)i*each, (const unsigned char *)batch->vertices + (size_t)batch->keys[i].index*each, each);
-    if (batch->identified)
+    if (batch->identified && !batch->records)
     {
         if (batch->idSortCapacity < batch->capacity)
         {
@@ -6354,8 +6378,7 @@ static bool rbl__makeRecordArray(rbl__BatchState *batch)
 }
 
 // Points the record inputs (lit_instanced.vs.glsl rblRecord*) at records [first, ...) of the
-// batch's buffer, one per instance; size and origin are read as one vec4
-typedef char rbl__sizeOriginAdjacent[(offsetof(RblBillboard, origin) == offsetof(RblBillboard, size) + 2*sizeof(float))? 1 : -1];
+// batch's buffer, one per instance
 static void rbl__setRecordLayout(const rbl__BatchState *batch, int first)
 {
     static const struct { unsigned int location; int size, type, offset; bool normalised; } in[10] = {
@@ -6543,8 +6566,9 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         rbl__unloadBatchGpu(&old);
     }
     if (batch->fading && !rbl__reserveStream(&batch->fadeVboId, &batch->fadeGpuCapacity, batch->capacity, RBL__FADE_FLOATS*(int)sizeof(float), fn, "fade")) return;
-    if (batch->identified && !rbl__reserveStream(&batch->idVboId, &batch->idGpuCapacity, batch->capacity, RBL__ID_BYTES, fn, "caster identity")) return;
     if (batch->records && (!rbl__recordVariantsReady(batch) || !rbl__makeRecordArray(batch))) rbl__recordsToVertices(batch);
+    const bool idStream = batch->identified && !batch->records;
+    if (idStream && !rbl__reserveStream(&batch->idVboId, &batch->idGpuCapacity, batch->capacity, RBL__ID_BYTES, fn, "caster identity")) return;
     int sort = rbl__passSort(pub->sort);
     if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
     {
@@ -6561,7 +6585,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
     if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
-    if (batch->identified) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
+    if (idStream) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
     rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*(batch->records? (int)sizeof(rbl__BatchRecord) : 4*(int)sizeof(RblVertex)), 0);
     if (batch->records) rlEnableVertexArray(batch->recordVaoId);
     else rlEnableVertexBufferElement(batch->eboId);

@@ -249,6 +249,59 @@ static void test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_l
     if (geo.id != 0) RblUnloadLitShader(&geo);
 }
 
+// A shadow receiver's batch of records leaves the identity stream unwritten (the record stage hashes
+// each billboard): turned to vertices part-way (a cross-fade added), every earlier billboard gets
+// its identity (rbl__casterId of its pivot, size and origin) on all four vertices; on GLSL 1 the
+// stream is written as billboards arrive
+static void test_batch_records_turned_to_vertices_carry_their_caster_identities(void)
+{
+    static RblBillboard set[REC_SET];
+    recSet(set);
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.shading.lightFeatures = RBL_LIGHT_FEATURE_DIRECTIONAL; desc.shading.shadowMaps = 1;
+    Shader receiver = RblLoadLitShader(desc);
+    Texture2D white = solidTexture(WHITE);
+    Material m = LoadMaterialDefault();
+    m.shader = receiver;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = white;
+    RblBatch batch = RblLoadBatch(REC_SET + 1);
+    batch.noCull = true;
+    Camera3D cam = frontCamera();
+    RenderTexture2D rt = LoadRenderTexture(64, 64);
+    BeginTextureMode(rt);
+    BeginMode3D(cam);
+    RblBeginBatch(&batch, cam);
+    for (int k = 0; k < REC_SET; k++) RblBatchAdd(&batch, m, &set[k]);
+    const rbl__BatchState *st = rbl__batchState(&batch);
+    bool heldRecords = (st != NULL) && st->records && st->identified;
+    RblFade fade;
+    memset(&fade, 0, sizeof(fade));
+    fade.weight = 0.5f;
+    RT_CHECK(RblBatchAddFade(&batch, m, &set[0], &fade), "the cross-fade billboard was refused");
+    int wrong = 0, checked = 0;
+    for (int i = 0; (st != NULL) && st->identified && !st->records && (i < REC_SET); i++)
+    {
+        unsigned int id = rbl__casterId(set[i].position, set[i].size, set[i].origin);
+        for (int v = 0; v < 4; v++, checked++)
+        {
+            const unsigned char *o = st->ids + (size_t)i*RBL__ID_BYTES + 4*v;
+            wrong += (o[0] != (id >> 8)) || (o[1] != (id & 255u)) || (o[2] != 0) || (o[3] != 0);
+        }
+    }
+    RblEndBatch(&batch);
+    EndMode3D();
+    EndTextureMode();
+    printf("    receiver batch: %s before the cross-fade, then vertices; %d of %d vertex identities wrong\n", heldRecords? "records" : "vertices", wrong, checked);
+    RT_CHECK(heldRecords == rtGlsl3(), "the receiver batch held %s before the cross-fade", heldRecords? "records" : "vertices");
+    RT_CHECK((checked == 4*REC_SET) && (wrong == 0), "%d of %d identities wrong after turning to vertices", wrong, checked);
+    UnloadRenderTexture(rt);
+    RblUnloadBatch(&batch);
+    MemFree(m.maps);
+    UnloadTexture(white);
+    RblUnloadLitShader(&receiver);
+}
+
 // Billboards of the stage's hard inputs added to the set: FIXED and AXIS up and axis far beyond
 // what float squares (tamed as the CPU tames them), flag bits no path reads, far pivots
 static void recHardSet(RblBillboard *set)
@@ -375,4 +428,5 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
 #define RBL_RECORDS_TESTS \
     RT_TEST(test_batch_records_draw_what_vertices_draw_lit_mirrored_turned_and_rounded), \
     RT_TEST(test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_like_vertices), \
+    RT_TEST(test_batch_records_turned_to_vertices_carry_their_caster_identities), \
     RT_TEST_GLSL3(test_batch_records_vertex_stage_emits_the_vertex_paths_corners_normals_and_tangents)
