@@ -1,6 +1,6 @@
 // The batch's compact stream (GPU, headless): where the context has GLSL 3 and the header's programs
-// draw every run, a batch uploads one 76-byte record per billboard and the vertex stage expands it
-// (lit.vs.glsl RBL_BATCH_RECORD). Each case draws the same billboards twice, from records and from
+// draw every run, a batch uploads each billboard as its record (the RblBillboard) and the instanced
+// vertex stage expands it (lit_instanced.vs.glsl RBL_BATCH_RECORD). Each case draws the same billboards twice, from records and from
 // vertices (the batch held to vertices), and compares the pixels: every facing, both mirrors, turned
 // and rotated frames, flat, sphere- and cylinder-rounded, lit with a normal map; cast into a shadow
 // map; in a G-buffer; sorted and blended; and a batch that turns to vertices part-way (a user's

@@ -878,7 +878,7 @@ int main(int argc, char **argv)
     // Upload volume and the memory-bandwidth floor. rlgl's batch uploads, per vertex, positions
     // (3 floats), texcoords (2 floats), normals (3 floats) and colours (4 bytes) in four
     // glBufferSubData calls (indices are static); immediate uploads 4 RblVertex (52 bytes each),
-    // batched one record (76 bytes; 4 RblVertex where the context has no GLSL 3), instanced one
+    // batched one record (the RblBillboard, 88 bytes; 4 RblVertex where the context has no GLSL 3), instanced one
     // RblInstance (56 bytes).
     const bool records = (batch.state != NULL) && batch.state->records;
     const double bytesPerBillboard[PATH_COUNT] = {
