@@ -6019,7 +6019,7 @@ static bool rbl__recordable(const rbl__Program *program)
 {
     if (rbl__glsl() < 300) return false;
     if (rbl__state.shadowPass != NULL) return true;
-    return (program != NULL) && !program->key.desc.crossFade && !program->key.desc.skinning;
+    return (program != NULL) && !program->key.desc.crossFade;        // (skinned programs never draw billboards)
 }
 
 // Record i (of run r) as the vertex path's four vertices (cache: the batch's frame, or a fresh one).
