@@ -4983,8 +4983,8 @@ static void rbl__sinCosDeg(float degrees, float *sinOut, float *cosOut)
 // 1e-12 counts as zero)
 static inline Vector3 rbl__tame(Vector3 v)
 {
+    if (!((fabsf(v.x) > 1e12f) || (fabsf(v.y) > 1e12f) || (fabsf(v.z) > 1e12f))) return v;     // the usual case: no library call
     float m = fmaxf(fabsf(v.x), fmaxf(fabsf(v.y), fabsf(v.z)));
-    if (!(m > 1e12f)) return v;
     int e;
     frexpf(m, &e);
     return rbl__v3(ldexpf(v.x, -e), ldexpf(v.y, -e), ldexpf(v.z, -e));
@@ -5155,7 +5155,7 @@ static inline bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
     // The 12 floats position .. source each against its bound (rotation is reduced exactly, fmod, so
-    // it may be as large as an instance's: 2^120) in one pass of fixed length (compilers vectorise it)
+    // it may be as large as an instance's: 2^120) in one pass of fixed length, no early exit
     #define RBL__BIAS(e) ((256u - (e)) << 23)
     static const unsigned int bias[12] = { RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
         RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
@@ -5563,8 +5563,6 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
 // (lit_instanced.vs.glsl RBL_BATCH_RECORD) builds its frame and corners as the instanced path does
 typedef RblBillboard rbl__BatchRecord;
 
-static inline bool rbl__beyond(Vector3 v, float m) { return (fabsf(v.x) > m) || (fabsf(v.y) > m) || (fabsf(v.z) > m); }
-
 // b (checked by rbl__billboardOk) as its record: the flags the stage reads, a FIXED or AXIS up and
 // axis tamed as rbl__facingBasis tames them (their length does not matter there; a GPU squaring a
 // huge one would overflow)
@@ -5573,8 +5571,8 @@ static inline void rbl__writeRecord(const RblBillboard *b, rbl__BatchRecord *r)
     *r = *b;
     r->flags &= RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER;
     if (b->facing == RBL_FACING_CAMERA_PLANE) return;
-    if (rbl__beyond(b->up, 1e12f)) r->up = rbl__tame(b->up);
-    if (rbl__beyond(b->axis, 1e12f)) r->axis = rbl__tame(b->axis);
+    r->up = rbl__tame(b->up);
+    r->axis = rbl__tame(b->axis);
 }
 
 bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
@@ -5841,7 +5839,7 @@ static bool rbl__culled(rbl__BatchState *batch, const RblBillboard *b)
     float ex = (ax > bx)? ax : bx, ey = (ay > by)? ay : by;
     float r2 = (ex*ex + ey*ey)*(((batch->planeCount == 4) && (b->facing == RBL_FACING_AXIS))? 9.0f : 1.0f);
     r2 *= 1.0f + 1e-5f;        // rounding of the corners' own sums
-    // Every plane, no early exit: compilers vectorise the eight
+    // Every plane, no early exit (a fixed loop of eight, no branch per plane)
     const Vector3 c = b->position;
     int out = 0;
     for (int k = 0; k < 8; k++)
