@@ -597,6 +597,11 @@
 *       #define RBL_NO_ATLAS
 *           Leaves out the sprite-sheet module (atlas readers, player, sectors: SPRITE SHEETS); the
 *           rest of the header does not depend on it.
+*       #define RBL_NO_MAPPED_BATCH
+*           Batches keep their records on the CPU and upload them at RblEndBatch (by default the adds
+*           write them into the mapped GPU buffer where the context maps buffers: GL 3.3, ES 3).
+*       #define RBL_NO_SIMD
+*           Billboard checks and culling in plain C (by default SSE2 where the compiler targets it).
 *       #define RBL_INSTRUMENTS
 *           Adds what the tests and benchmarks measure with: RblMeasureNormalEncoding, the G-buffer's
 *           naiveFullscreen baseline and forced-failure hooks (not for games).
@@ -1482,6 +1487,10 @@ RBLAPI bool RblAnimateSprite(RblSpriteInstance *sprite, int tag, int loops, floa
 #include <stdarg.h>     // va_list (atlas errors)
 #include <stddef.h>     // offsetof
 #include <stdlib.h>     // strtod, qsort, abs (atlas parsing)
+#if !defined(RBL_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && (_M_IX86_FP >= 2)))
+    #include <emmintrin.h>  // the batch's billboard checks and culling, four lanes at a time
+    #define RBL__SSE2 1
+#endif
 
 #if defined(RBL_MALLOC) || defined(RBL_CALLOC) || defined(RBL_REALLOC) || defined(RBL_FREE)
     #if !defined(RBL_MALLOC) || !defined(RBL_CALLOC) || !defined(RBL_REALLOC) || !defined(RBL_FREE)
@@ -1616,6 +1625,11 @@ typedef struct rbl__FrameCache {
     int facing;                      // Facing it was made for; -1 = empty
 } rbl__FrameCache;
 
+// A batched billboard in the batch's compact stream: where the context has GLSL 3 and the header's
+// programs draw every run, the billboard itself instead of its four vertices; the vertex stage
+// (lit_instanced.vs.glsl RBL_BATCH_RECORD) builds its frame and corners as the instanced path does
+typedef RblBillboard rbl__BatchRecord;
+
 // A batch's own data (RblBatch.state); capacity, count and skipped are mirrored into the RblBatch
 typedef struct rbl__BatchState {
     RblVertex *vertices;            // 4 per billboard, or (records) an rbl__BatchRecord per billboard in the same memory
@@ -1637,10 +1651,14 @@ typedef struct rbl__BatchState {
     int culled;                     // Billboards accepted but outside the view since RblBeginBatch() (not in count)
     int planeCount;                 // Culling planes in use: 0 (off), 4 (a shadow pass's sides) or 6 (a camera's frustum)
     float cull[4][8];               // The planes by component (unit normal x, y, z and offset d: p is inside where n.p + d >= 0), padded to 8 with planes that keep everything
-    Vector3 cullUp;                 // The last CAMERA_PLANE up culled and its length (the height's scale)
-    float cullUpLength;
+    // What a billboard's facing, up and axis give (rbl__facingKey), kept while they repeat
+    unsigned int keyWords[7];       // The facing, up and axis bits the values below were made for
+    bool keyValid;                  // keyWords holds a key (false from RblBeginBatch: the view changed)
+    float keyHeightScale;           // CAMERA_PLANE with a caller up: its length (the height's scale, as raylib), else 1
+    int backMode;                   // rbl__backMode of the up and axis as records hold them (tamed)
+    Vector3 backNormal;
     bool orthographic;              // The camera's projection (which side of a quad it sees)
-    bool backFacing;                // A billboard seen from behind was added (records: looked for at the end): the draw turns culling off
+    bool backFacing;                // A billboard seen from behind was added: the draw turns culling off
     bool begun;                     // Between RblBeginBatch() and RblEndBatch()
     unsigned int pass;              // The pass it began in (rbl__passNow): added to and ended in that one only
     // The optional fade stream (16 floats per billboard: rbl__fadeVertices), allocated when the first
@@ -1670,6 +1688,12 @@ typedef struct rbl__BatchState {
     bool records;                   // vertices holds records [0, count)
     bool vertexOnly;                // Never records (the immediate path's one-quad batch)
     unsigned int recordVaoId;       // Vertex array of the record stream (instanced over the same buffer), made on first use
+    // Records written straight into the GPU buffer: mapped from the first record to RblEndBatch where
+    // the draw keeps submission order; a step that must read them on the CPU reads them back first
+    rbl__BatchRecord *mapped;       // The mapped buffer while records are written there (NULL otherwise)
+    bool onGpu;                     // Records [0, count) are only in the GPU buffer (rbl__recordsToCpu reads them back)
+    bool mapOk;                     // This batch may map (set by RblBeginBatch)
+    int mapRest;                    // Batches left that keep records on the CPU after one had to read mapped records back
 } rbl__BatchState;
 
 // An instance buffer's own data (RblInstanceBuffer.state)
@@ -1852,6 +1876,9 @@ typedef struct rbl__State {
     int quarantineCapacity;
     void *glIs[3];                     // glIsProgram, glIsTexture, glIsVertexArray through raylib's loader (NULL: none)
     void *glGetUniformfv;              // ... and glGetUniformfv
+    void *glMapBufferRange;            // ... glMapBufferRange and glUnmapBuffer (batch records; NULL: none, or not looked up yet)
+    void *glUnmapBuffer;
+    bool mapLooked;                    // Those two were looked up
     bool glLooked;
     bool closed;                       // RblClose ran: the tables go with the last object the caller holds
     rbl__SceneCapture capture;         // RblBeginSceneDepth/RblEndSceneDepth: the header's scene target
@@ -5151,24 +5178,65 @@ static bool rbl__fadeOk(const RblFade *f, unsigned int limitExponent)
     return rbl__finite(f->weight) && (f->weight >= 0.0f) && (f->weight <= 1.0f) && rbl__exponentsBelow(&f->source, 4, limitExponent);
 }
 
+// A billboard's words position .. roundness (0..20) each against its bound: the exponent field of
+// float word i must stay below its limit e, which (field + 256 - e) << 23 carries into bit 31. Rotation
+// is reduced exactly (fmod), so it may be as large as an instance's (2^120); up, axis and roundness
+// need only be finite, but CAMERA_PLANE's up scales the quad's height by its length (as raylib) and
+// is bounded like a size. Tint and facing (words 12, 13) are not floats: masked out
+#define RBL__BIAS(e) ((256u - (e)) << 23)
+#define RBL__BB RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT)
+#define RBL__BF RBL__BIAS(255u)
+#define RBL__BU RBL__BIAS(RBL__UP_LIMIT_EXPONENT)
+#define RBL__EXP 0x7f800000u
+static const unsigned int rbl__billboardWordMask[21] = { RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP,
+    RBL__EXP, RBL__EXP, 0u, 0u, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP, RBL__EXP };
+static const unsigned int rbl__billboardWordBias[2][21] = {
+    { RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BIAS(RBL__INSTANCE_LIMIT_EXPONENT), RBL__BB, RBL__BB, RBL__BB, RBL__BB, 0u, 0u,
+      RBL__BF, RBL__BF, RBL__BF, RBL__BF, RBL__BF, RBL__BF, RBL__BF },           // other facings: up, axis and roundness finite
+    { RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BB, RBL__BIAS(RBL__INSTANCE_LIMIT_EXPONENT), RBL__BB, RBL__BB, RBL__BB, RBL__BB, 0u, 0u,
+      RBL__BU, RBL__BU, RBL__BU, RBL__BF, RBL__BF, RBL__BF, RBL__BF } };         // CAMERA_PLANE: up bounded
+#undef RBL__BIAS
+#undef RBL__BB
+#undef RBL__BF
+#undef RBL__BU
+#undef RBL__EXP
+typedef char rbl__billboardWords[((offsetof(RblBillboard, tint) == 12*4) && (offsetof(RblBillboard, facing) == 13*4) && (offsetof(RblBillboard, up) == 14*4) &&
+                                   (offsetof(RblBillboard, roundness) == 20*4) && (sizeof(RblBillboard) >= 21*4))? 1 : -1];
+
+// The words' check one at a time (the reference of the four-lane one below, and where there is none)
+static inline bool rbl__billboardWordsOkScalar(const RblBillboard *b)
+{
+    const unsigned int *bias = rbl__billboardWordBias[b->facing == RBL_FACING_CAMERA_PLANE];
+    unsigned int word[21], carry = 0u;
+    memcpy(word, b, sizeof(word));
+    for (int i = 0; i < 21; i++) carry |= (word[i] & rbl__billboardWordMask[i]) + bias[i];
+    return (carry & 0x80000000u) == 0u;
+}
+
+static inline bool rbl__billboardWordsOk(const RblBillboard *b)
+{
+#if defined(RBL__SSE2)
+    const unsigned int *bias = rbl__billboardWordBias[b->facing == RBL_FACING_CAMERA_PLANE];
+    const unsigned char *w = (const unsigned char *)b;
+    __m128i carry = _mm_setzero_si128();
+    for (int k = 0; k < 5; k++)
+    {
+        __m128i v = _mm_loadu_si128((const __m128i *)(const void *)(w + 16*k));
+        __m128i m = _mm_loadu_si128((const __m128i *)(const void *)(rbl__billboardWordMask + 4*k));
+        carry = _mm_or_si128(carry, _mm_add_epi32(_mm_and_si128(v, m), _mm_loadu_si128((const __m128i *)(const void *)(bias + 4*k))));
+    }
+    unsigned int last;
+    memcpy(&last, w + 80, sizeof(last));
+    return (_mm_movemask_ps(_mm_castsi128_ps(carry)) == 0) && ((((last & rbl__billboardWordMask[20]) + bias[20]) & 0x80000000u) == 0u);
+#else
+    return rbl__billboardWordsOkScalar(b);
+#endif
+}
+
 static inline bool rbl__billboardOk(const RblBillboard *b, int textureWidth, int textureHeight)
 {
     if ((textureWidth <= 0) || (textureHeight <= 0) || (textureWidth > RBL__MAX_TEXTURE_SIDE) || (textureHeight > RBL__MAX_TEXTURE_SIDE)) return false;
-    // The 12 floats position .. source each against its bound (rotation is reduced exactly, fmod, so
-    // it may be as large as an instance's: 2^120) in one pass of fixed length, no early exit
-    #define RBL__BIAS(e) ((256u - (e)) << 23)
-    static const unsigned int bias[12] = { RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
-        RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
-        RBL__BIAS(RBL__INSTANCE_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT), RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT),
-        RBL__BIAS(RBL__BILLBOARD_LIMIT_EXPONENT) };
-    #undef RBL__BIAS
-    unsigned int word[12], carry = 0u;
-    memcpy(word, &b->position, sizeof(word));
-    for (int i = 0; i < 12; i++) carry |= (word[i] & 0x7f800000u) + bias[i];
-    if (((carry & 0x80000000u) != 0u) || !rbl__allFinite(&b->up, 7)) return false;
-    // CAMERA_PLANE's up scales the quad's height by its length (as raylib): bounded like a size
-    if ((b->facing == RBL_FACING_CAMERA_PLANE) && !rbl__exponentsBelow(&b->up, 3, RBL__UP_LIMIT_EXPONENT)) return false;
-    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED);
+    return (b->facing >= RBL_FACING_CAMERA_PLANE) && (b->facing <= RBL_FACING_FIXED) && rbl__billboardWordsOk(b);
 }
 
 // A frame's +U (t) and +V (v) in the quad's (right, up) plane, for its mirrors and rotation (as the
@@ -5558,23 +5626,6 @@ static bool rbl__expandQuad(const RblCameraFrame *view, const rbl__Cast *cast, r
     return true;
 }
 
-// A batched billboard in the batch's compact stream: where the context has GLSL 3 and the header's
-// programs draw every run, the billboard itself instead of its four vertices; the vertex stage
-// (lit_instanced.vs.glsl RBL_BATCH_RECORD) builds its frame and corners as the instanced path does
-typedef RblBillboard rbl__BatchRecord;
-
-// b (checked by rbl__billboardOk) as its record: the flags the stage reads, a FIXED or AXIS up and
-// axis tamed as rbl__facingBasis tames them (their length does not matter there; a GPU squaring a
-// huge one would overflow)
-static inline void rbl__writeRecord(const RblBillboard *b, rbl__BatchRecord *r)
-{
-    *r = *b;
-    r->flags &= RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER;
-    if (b->facing == RBL_FACING_CAMERA_PLANE) return;
-    r->up = rbl__tame(b->up);
-    r->axis = rbl__tame(b->axis);
-}
-
 bool RblBillboardVertices(const RblCameraFrame *view, int textureWidth, int textureHeight, const RblBillboard *b, RblVertex out[4])
 {
     const char *bad = NULL;
@@ -5657,8 +5708,93 @@ static void rbl__loadBatchGpu(rbl__BatchState *batch)
     batch->gpuCapacity = quads;
 }
 
+// ---- records written into the mapped GPU buffer ----
+#define RBL__GL_ARRAY_BUFFER 0x8892
+#define RBL__GL_MAP_READ_BIT 0x0001
+#define RBL__GL_MAP_WRITE_BIT 0x0002
+#define RBL__GL_MAP_INVALIDATE_BUFFER_BIT 0x0008
+// Batches that keep their records on the CPU after one had to read mapped records back: a scene that
+// mixes a polygon or a fade into its batch every frame stops paying the read-back
+#define RBL__MAP_REST 64
+typedef void *(RBL__GLAPI *rbl__GlMapBufferRange)(unsigned int target, ptrdiff_t offset, ptrdiff_t length, unsigned int access);
+typedef unsigned char (RBL__GLAPI *rbl__GlUnmapBuffer)(unsigned int target);
+
+// Whether the context maps buffers (GL 3, ES 3 through raylib's loader; WebGL has no mapping)
+static bool rbl__canMap(void)
+{
+#if defined(RBL_NO_MAPPED_BATCH) || defined(__EMSCRIPTEN__)
+    return false;
+#else
+    if (!rbl__state.mapLooked && (rbl__glsl() >= 300) && (rlGetTextureIdDefault() != 0))
+    {
+        rbl__state.glMapBufferRange = rlGetProcAddress("glMapBufferRange");
+        rbl__state.glUnmapBuffer = rlGetProcAddress("glUnmapBuffer");
+        rbl__state.mapLooked = true;
+    }
+    return (rbl__state.glMapBufferRange != NULL) && (rbl__state.glUnmapBuffer != NULL);
+#endif
+}
+
+// bytes of the batch's buffer from its start as a pointer (read: for reading; else written whole,
+// the old contents dropped), or NULL; the buffer is left unbound
+static void *rbl__mapBatchBuffer(const rbl__BatchState *batch, size_t bytes, bool read)
+{
+    rbl__GlMapBufferRange map;
+    memcpy(&map, &rbl__state.glMapBufferRange, sizeof(map));      // ISO C: no cast between object and function pointers
+    rlEnableVertexBuffer(batch->vboId);
+    void *p = map(RBL__GL_ARRAY_BUFFER, 0, (ptrdiff_t)bytes, read? RBL__GL_MAP_READ_BIT : (RBL__GL_MAP_WRITE_BIT | RBL__GL_MAP_INVALIDATE_BUFFER_BIT));
+    rlDisableVertexBuffer();
+    return p;
+}
+
+// Ends a mapping of the batch's buffer; false when the system lost its contents meanwhile
+static bool rbl__unmapBatchBuffer(const rbl__BatchState *batch)
+{
+    rbl__GlUnmapBuffer unmap;
+    memcpy(&unmap, &rbl__state.glUnmapBuffer, sizeof(unmap));
+    rlEnableVertexBuffer(batch->vboId);
+    bool kept = (unmap(RBL__GL_ARRAY_BUFFER) != 0);
+    rlDisableVertexBuffer();
+    return kept;
+}
+
+// From the first record on, the adds write records into the GPU buffer (where it maps)
+static void rbl__mapRecords(rbl__BatchState *batch)
+{
+    batch->mapped = (rbl__BatchRecord *)rbl__mapBatchBuffer(batch, (size_t)batch->gpuCapacity*sizeof(rbl__BatchRecord), false);
+    batch->onGpu = (batch->mapped != NULL);
+}
+
+// Records that are only in the GPU buffer, read back into the CPU array before a step reads them
+// (turning to vertices, sorting, growing); a batch in progress stops mapping for a while. False when
+// the system lost them: the billboards added so far are dropped (logged)
+static bool rbl__recordsToCpu(rbl__BatchState *batch)
+{
+    if (!batch->onGpu) return true;
+    bool kept = (batch->mapped == NULL) || rbl__unmapBatchBuffer(batch);
+    batch->mapped = NULL;
+    batch->onGpu = false;
+    if (batch->begun) { batch->mapOk = false; batch->mapRest = RBL__MAP_REST; }
+    if (kept && (batch->count > 0))
+    {
+        const size_t bytes = (size_t)batch->count*sizeof(rbl__BatchRecord);
+        const void *p = rbl__mapBatchBuffer(batch, bytes, true);
+        if (p != NULL) memcpy(batch->vertices, p, bytes);
+        kept = (p != NULL) && rbl__unmapBatchBuffer(batch);
+    }
+    if (!kept)
+    {
+        TraceLog(LOG_WARNING, "RBL: batch: the GPU lost the records of %i billboards (its buffer was unmapped by the system); they are not drawn", batch->count);
+        batch->count = 0; batch->runCount = 0; batch->extraSlots = 0;
+    }
+    return kept;
+}
+
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
+    if ((batch->mapped != NULL) && rbl__glUsable()) rbl__unmapBatchBuffer(batch);
+    batch->mapped = NULL;
+    batch->onGpu = false;
     if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = batch->recordVaoId = 0;      // gone with the context
     if (batch->vaoId != 0) rlUnloadVertexArray(batch->vaoId);
     if (batch->recordVaoId != 0) rlUnloadVertexArray(batch->recordVaoId);
@@ -5822,32 +5958,74 @@ static int rbl__cullPlanes(const RblCameraFrame *view, bool shadowPass, float pl
     return count;
 }
 
-// Whether billboard b (checked by rbl__billboardOk) lies wholly outside one culling plane: its
+// Whether the sphere about c of squared radius r2 lies wholly outside one of the eight planes (by
+// component, rbl__BatchState.cull): every plane, no early exit. The scalar one is the reference of the
+// four-lane one, and runs where there is none; both sum in the same order
+static inline bool rbl__outsidePlanesScalar(const float cull[4][8], Vector3 c, float r2)
+{
+    int out = 0;
+    for (int k = 0; k < 8; k++)
+    {
+        float d = cull[0][k]*c.x + cull[1][k]*c.y + cull[2][k]*c.z + cull[3][k];
+        out |= (d < 0.0f) & (d*d > r2);
+    }
+    return out != 0;
+}
+
+static inline bool rbl__outsidePlanes(const float cull[4][8], Vector3 c, float r2)
+{
+#if defined(RBL__SSE2)
+    const __m128 x = _mm_set1_ps(c.x), y = _mm_set1_ps(c.y), z = _mm_set1_ps(c.z), r = _mm_set1_ps(r2), zero = _mm_setzero_ps();
+    __m128 out = zero;
+    for (int h = 0; h < 8; h += 4)
+    {
+        __m128 d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&cull[0][h]), x), _mm_mul_ps(_mm_loadu_ps(&cull[1][h]), y)),
+                                         _mm_mul_ps(_mm_loadu_ps(&cull[2][h]), z)), _mm_loadu_ps(&cull[3][h]));
+        out = _mm_or_ps(out, _mm_and_ps(_mm_cmplt_ps(d, zero), _mm_cmpgt_ps(_mm_mul_ps(d, d), r)));
+    }
+    return _mm_movemask_ps(out) != 0;
+#else
+    return rbl__outsidePlanesScalar(cull, c, r2);
+#endif
+}
+
+static int rbl__backMode(const RblCameraFrame *view, int facing, Vector3 up, Vector3 axis, Vector3 *n);
+
+// The batch's key for b (checked by rbl__billboardOk) before culling and storing it: what its facing,
+// up and axis give, made again only when they change
+static inline void rbl__facingKey(rbl__BatchState *batch, const RblBillboard *b)
+{
+    unsigned int w[7];
+    memcpy(w, &b->facing, sizeof(w));
+    const unsigned int *k = batch->keyWords;
+    if (batch->keyValid && (((w[0] ^ k[0]) | (w[1] ^ k[1]) | (w[2] ^ k[2]) | (w[3] ^ k[3]) | (w[4] ^ k[4]) | (w[5] ^ k[5]) | (w[6] ^ k[6])) == 0u)) return;
+    memcpy(batch->keyWords, w, sizeof(w));
+    batch->keyValid = true;
+    const float l2 = rbl__len2(b->up);
+    batch->keyHeightScale = ((b->facing == RBL_FACING_CAMERA_PLANE) && (l2 > 0.0f))? sqrtf(l2) : 1.0f;
+    const bool plane = (b->facing == RBL_FACING_CAMERA_PLANE);
+    batch->backMode = rbl__backMode(&batch->view, b->facing, plane? b->up : rbl__tame(b->up), plane? b->axis : rbl__tame(b->axis), &batch->backNormal);
+}
+typedef char rbl__facingKeyWords[(offsetof(RblBillboard, axis) + sizeof(Vector3) - offsetof(RblBillboard, facing) == 7*4)? 1 : -1];
+
+// Whether billboard b (after rbl__facingKey) lies wholly outside one culling plane: its
 // corners lie within the sphere about the pivot through the farthest footprint corner (rotation
 // turns the footprint about the pivot; CAMERA_PLANE's caller up scales its height; a shadow pass's
 // AXIS tilt moves it by at most twice that, so its sphere is three times as large)
-static bool rbl__culled(rbl__BatchState *batch, const RblBillboard *b)
+static bool rbl__culled(const rbl__BatchState *batch, const RblBillboard *b)
 {
-    float ulen = 1.0f;
-    if ((b->facing == RBL_FACING_CAMERA_PLANE) && (rbl__len2(b->up) > 0.0f))
-    {
-        if (!rbl__sameBits3(&batch->cullUp, &b->up)) { batch->cullUp = b->up; batch->cullUpLength = sqrtf(rbl__len2(b->up)); }
-        ulen = batch->cullUpLength;
-    }
-    float sx = fabsf(b->size.x), sy = fabsf(b->size.y)*ulen;
+    float sx = fabsf(b->size.x), sy = fabsf(b->size.y)*batch->keyHeightScale;
     float ax = fabsf(b->origin.x), bx = fabsf(sx - b->origin.x), ay = fabsf(b->origin.y), by = fabsf(sy - b->origin.y);
     float ex = (ax > bx)? ax : bx, ey = (ay > by)? ay : by;
     float r2 = (ex*ex + ey*ey)*(((batch->planeCount == 4) && (b->facing == RBL_FACING_AXIS))? 9.0f : 1.0f);
     r2 *= 1.0f + 1e-5f;        // rounding of the corners' own sums
-    // Every plane, no early exit (a fixed loop of eight, no branch per plane)
-    const Vector3 c = b->position;
-    int out = 0;
-    for (int k = 0; k < 8; k++)
-    {
-        float d = batch->cull[0][k]*c.x + batch->cull[1][k]*c.y + batch->cull[2][k]*c.z + batch->cull[3][k];
-        out |= (d < 0.0f) & (d*d > r2);
-    }
-    return out != 0;
+    return rbl__outsidePlanes(batch->cull, b->position, r2);
+}
+
+// Order matters only where colour blends: shadow and G-buffer passes draw in submission order
+static int rbl__passSort(int sort)
+{
+    return ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : sort;
 }
 
 bool RblBeginBatch(RblBatch *pub, Camera3D camera)
@@ -5868,6 +6046,7 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     if (rbl__state.shadowPass != NULL) rbl__shadowPassView(&batch->view);
     batch->orthographic = (camera.projection == CAMERA_ORTHOGRAPHIC);
     batch->backFacing = false;
+    batch->keyValid = false;
     batch->frame.facing = -1;      // the frame depends on the view
     batch->fading = false;
     batch->identified = false;
@@ -5878,6 +6057,12 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->skipped = 0;
     batch->culled = 0;
     batch->records = false;
+    if (batch->mapped != NULL) rbl__unmapBatchBuffer(batch);   // (a first record that was never counted)
+    batch->mapped = NULL;
+    batch->onGpu = false;
+    batch->mapOk = false;
+    if (batch->mapRest > 0) batch->mapRest--;
+    else batch->mapOk = !batch->vertexOnly && (rbl__passSort(pub->sort) == RBL_SORT_NONE) && (batch->vboId != 0) && (batch->capacity <= batch->gpuCapacity) && rbl__canMap();
     batch->begun = true;
     batch->pass = rbl__passNow();
     pub->count = 0; pub->skipped = 0; pub->culled = 0;
@@ -5939,11 +6124,99 @@ static inline rbl__BatchState *rbl__batchForAdd(RblBatch *pub, const char *fn)
     return batch;
 }
 
+// How the camera sees the back of a quad of this facing (up and axis tamed): CAMERA_PLANE only with
+// a caller up (N = right x up), FIXED cards, AXIS under an orthographic camera (it turns toward the
+// camera's position, which a parallel view does not look from); CAMERA_POSITION, and AXIS in
+// perspective, face the eye by construction. Culling would drop such a quad: its draw turns culling
+// off. n: the plane's normal (PLANE, orthographic: decided here) or the axis (AXIS)
+enum { RBL__BACK_NEVER = 0, RBL__BACK_ALWAYS, RBL__BACK_PLANE, RBL__BACK_AXIS };
+static int rbl__backMode(const RblCameraFrame *view, int facing, Vector3 up, Vector3 axis, Vector3 *n)
+{
+    Vector3 a = axis;
+    bool noAxis = (a.x == 0.0f) && (a.y == 0.0f) && (a.z == 0.0f);
+    if (facing == RBL_FACING_CAMERA_PLANE)
+    {
+        if ((up.x == 0.0f) && (up.y == 0.0f) && (up.z == 0.0f)) return RBL__BACK_NEVER;
+        a = rbl__cross(view->right, up);
+    }
+    else if (facing == RBL_FACING_FIXED) { if (noAxis) a = rbl__v3(0.0f, 0.0f, 1.0f); }
+    else if ((facing == RBL_FACING_AXIS) && view->orthographic) { *n = noAxis? rbl__v3(0.0f, 1.0f, 0.0f) : a; return RBL__BACK_AXIS; }
+    else return RBL__BACK_NEVER;
+    *n = a;
+    if (view->orthographic) return (rbl__dot(a, view->back) < 0.0f)? RBL__BACK_ALWAYS : RBL__BACK_NEVER;
+    return RBL__BACK_PLANE;
+}
+
+// Whether the camera sees the back at pivot p (mode and n from rbl__backMode)
+static inline bool rbl__backAt(const RblCameraFrame *view, int mode, Vector3 n, Vector3 p)
+{
+    if (mode == RBL__BACK_NEVER) return false;
+    if (mode == RBL__BACK_ALWAYS) return true;
+    Vector3 toEye = rbl__sub(view->eye, p);
+    if (mode == RBL__BACK_PLANE) return rbl__dot(n, toEye) < 0.0f;
+    // AXIS: the eye direction off the axis (its degenerate fallbacks face the view)
+    float k = rbl__dot(n, toEye)/rbl__dot(n, n);
+    return rbl__dot(rbl__v3(toEye.x - n.x*k, toEye.y - n.y*k, toEye.z - n.z*k), view->back) < 0.0f;
+}
+
+// Whether the camera sees the back of a quad of this facing at any of n pivots (stride bytes apart)
+static bool rbl__showsBack(const RblCameraFrame *view, int facing, Vector3 up, Vector3 axis, const Vector3 *pivots, int n, size_t stride)
+{
+    Vector3 a = { 0.0f, 0.0f, 0.0f };
+    const int mode = rbl__backMode(view, facing, up, axis, &a);
+    if ((mode == RBL__BACK_NEVER) || (mode == RBL__BACK_ALWAYS)) return mode == RBL__BACK_ALWAYS;
+    for (int i = 0; i < n; i++)
+        if (rbl__backAt(view, mode, a, *(const Vector3 *)(const void *)((const unsigned char *)pivots + (size_t)i*stride))) return true;
+    return false;
+}
+
+// b (after rbl__facingKey) as the batch's next record, in the mapped buffer or the CPU array: written
+// once, never read (a mapped buffer is write-only); only the flags the stage reads, a FIXED or AXIS
+// up and axis tamed as rbl__facingBasis tames them (their length does not matter there; a GPU
+// squaring a huge one would overflow)
+static inline void rbl__storeRecord(rbl__BatchState *batch, const RblBillboard *b)
+{
+    unsigned char *out = (unsigned char *)((batch->mapped != NULL)? batch->mapped : (rbl__BatchRecord *)(void *)batch->vertices) + (size_t)batch->count*sizeof(rbl__BatchRecord);
+    const bool plane = (b->facing == RBL_FACING_CAMERA_PLANE);
+    const Vector3 up = plane? b->up : rbl__tame(b->up), axis = plane? b->axis : rbl__tame(b->axis);
+    const unsigned int flags = b->flags & (RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER);
+    memcpy(out, b, offsetof(RblBillboard, up));
+    memcpy(out + offsetof(RblBillboard, up), &up, sizeof(up));
+    memcpy(out + offsetof(RblBillboard, axis), &axis, sizeof(axis));
+    memcpy(out + offsetof(RblBillboard, roundness), &b->roundness, sizeof(b->roundness));
+    memcpy(out + offsetof(RblBillboard, flags), &flags, sizeof(flags));
+    // A back seen turns culling off for the draw (a shadow pass draws with it off)
+    if (!batch->backFacing && (rbl__state.shadowPass == NULL)) batch->backFacing = rbl__backAt(&batch->view, batch->backMode, batch->backNormal, b->position);
+}
+
+// The batch's last run where billboards of material continue it as records, else NULL
+static inline rbl__BatchRun *rbl__recordRun(rbl__BatchState *batch, const Material *material)
+{
+    if (!batch->records || (batch->count == 0) || (batch->runCount == 0)) return NULL;
+    rbl__BatchRun *run = &batch->runs[batch->runCount - 1];
+    return rbl__sameMaterial(&run->material, material)? run : NULL;
+}
+
+// The common add, kept short: a plain billboard continuing run (rbl__recordRun), whose first add
+// settled the material, the stream and the identities. 1 = added, 0 = culled, -1 = not this case
+// (the general path takes it: a polygon frame, a full batch, bad input it logs)
+static inline int rbl__addToRecordRun(rbl__BatchState *batch, rbl__BatchRun *run, const RblBillboard *b)
+{
+    if ((rbl__polygonHandle(b->flags) != 0u) || (batch->count >= batch->capacity) || !rbl__billboardOk(b, run->textureWidth, run->textureHeight)) return -1;
+    rbl__facingKey(batch, b);
+    if ((batch->planeCount > 0) && rbl__culled(batch, b)) { batch->culled++; return 0; }
+    rbl__storeRecord(batch, b);
+    run->count++;
+    batch->count++;
+    return 1;
+}
+
 bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard)
 {
     rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAdd");
     if (batch == NULL) return false;
-    bool added = rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
+    rbl__BatchRun *run = (billboard != NULL)? rbl__recordRun(batch, &material) : NULL;
+    bool added = ((run != NULL) && (rbl__addToRecordRun(batch, run, billboard) >= 0)) || rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
     pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }
@@ -5961,54 +6234,6 @@ bool RblBatchAddFade(RblBatch *pub, Material material, const RblBillboard *billb
     else added = rbl__batchAdd(batch, &material, billboard, fade, "RblBatchAddFade");
     pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
-}
-
-// Whether the camera sees the back of a quad of this facing at any of n pivots (stride bytes apart),
-// up and axis tamed: CAMERA_PLANE only with a caller up (N = right x up), FIXED cards, AXIS under an
-// orthographic camera (it turns toward the camera's position, which a parallel view does not look
-// from); CAMERA_POSITION, and AXIS in perspective, face the eye by construction. Culling would drop
-// such a quad: its draw turns culling off
-static bool rbl__showsBack(const RblCameraFrame *view, int facing, Vector3 up, Vector3 axis, const Vector3 *pivots, int n, size_t stride)
-{
-    Vector3 a = axis;
-    bool noAxis = (a.x == 0.0f) && (a.y == 0.0f) && (a.z == 0.0f);
-    if (facing == RBL_FACING_CAMERA_PLANE)
-    {
-        if ((up.x == 0.0f) && (up.y == 0.0f) && (up.z == 0.0f)) return false;
-        a = rbl__cross(view->right, up);
-    }
-    else if (facing == RBL_FACING_FIXED) { if (noAxis) a = rbl__v3(0.0f, 0.0f, 1.0f); }
-    else if ((facing == RBL_FACING_AXIS) && view->orthographic) { if (noAxis) a = rbl__v3(0.0f, 1.0f, 0.0f); }
-    else return false;
-    if (view->orthographic && (facing != RBL_FACING_AXIS)) return rbl__dot(a, view->back) < 0.0f;
-    for (int i = 0; i < n; i++)
-    {
-        const Vector3 p = *(const Vector3 *)(const void *)((const unsigned char *)pivots + (size_t)i*stride);
-        Vector3 toEye = rbl__sub(view->eye, p), normal = a;
-        if (facing == RBL_FACING_AXIS)
-        {
-            // The eye direction off the axis (its degenerate fallbacks face the view)
-            float k = rbl__dot(a, toEye)/rbl__dot(a, a);
-            normal = rbl__v3(toEye.x - a.x*k, toEye.y - a.y*k, toEye.z - a.z*k);
-        }
-        if (rbl__dot(normal, view->orthographic? view->back : toEye) < 0.0f) return true;
-    }
-    return false;
-}
-
-// Whether the batch's records show the camera a back (rbl__showsBack over each stretch of records
-// sharing a facing, up and axis)
-static bool rbl__recordsShowBack(const rbl__BatchState *batch)
-{
-    const rbl__BatchRecord *rec = (const rbl__BatchRecord *)(const void *)batch->vertices;
-    for (int i = 0; i < batch->count; )
-    {
-        int j = i + 1;
-        while ((j < batch->count) && (rec[j].facing == rec[i].facing) && rbl__sameBits3(&rec[j].up, &rec[i].up) && rbl__sameBits3(&rec[j].axis, &rec[i].axis)) j++;
-        if (rbl__showsBack(&batch->view, rec[i].facing, rec[i].up, rec[i].axis, &rec[i].position, j - i, sizeof(*rec))) return true;
-        i = j;
-    }
-    return false;
 }
 
 // Whether a run of program's material can draw from records (the header's vertex stage expands them):
@@ -6040,7 +6265,7 @@ static void rbl__writeCasterIds(unsigned char *o, const RblBillboard *b, int slo
 // with their identities where the batch has the stream
 static void rbl__recordsToVertices(rbl__BatchState *batch)
 {
-    if (!batch->backFacing) batch->backFacing = rbl__recordsShowBack(batch);
+    rbl__recordsToCpu(batch);
     for (int i = 0; batch->identified && (i < batch->count); i++)
         rbl__writeCasterIds(batch->ids + (size_t)i*RBL__ID_BYTES, (const rbl__BatchRecord *)(const void *)batch->vertices + i, 1);
     for (int r = batch->runCount - 1; r >= 0; r--)
@@ -6056,6 +6281,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     const rbl__Polygon *poly = NULL;
     const bool polyKnown = (billboard == NULL) || (fade != NULL) || rbl__billboardPolygon(billboard->flags, &poly);
     const int slots = (billboard != NULL)? rbl__slotCount(poly, billboard) : 1;
+    if ((batch->count + slots > batch->capacity) && batch->onGpu) rbl__recordsToCpu(batch);      // the array grows with them
     while (batch->count + slots > batch->capacity)
         if (!rbl__growBatch(batch))
         {
@@ -6072,14 +6298,16 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
     else if (bad == NULL) { texW = run->textureWidth; texH = run->textureHeight; }   // the same maps (rbl__sameMaterial)
     if ((bad == NULL) && !rbl__billboardOk(billboard, texW, texH)) bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && !polyKnown) bad = "its RBL_FRAME_POLYGON bits name no loaded atlas's polygon (unloaded atlas?)";
+    if (bad == NULL) rbl__facingKey(batch, billboard);
     if ((bad == NULL) && (batch->planeCount > 0) && rbl__culled(batch, billboard)) { batch->culled++; return true; }
     float centre[3] = { 0.0f, 0.0f, 0.0f };
     // Records from the first billboard where every run can draw them; a billboard they cannot hold
     // turns the batch back to vertices
     if ((bad == NULL) && (batch->count == 0)) batch->records = !batch->vertexOnly && (poly == NULL) && (fade == NULL) && rbl__recordable(program);
     else if ((bad == NULL) && batch->records && ((poly != NULL) || (fade != NULL) || (newRun && !rbl__recordable(program)))) rbl__recordsToVertices(batch);
+    if ((bad == NULL) && (batch->count == 0) && batch->records && batch->mapOk && (batch->mapped == NULL)) rbl__mapRecords(batch);
     const rbl__Cast *cast = (rbl__state.shadowPass != NULL)? &rbl__state.cast : NULL;
-    if ((bad == NULL) && batch->records) rbl__writeRecord(billboard, (rbl__BatchRecord *)(void *)batch->vertices + batch->count);
+    if ((bad == NULL) && batch->records) rbl__storeRecord(batch, billboard);
     else if ((bad == NULL) && !rbl__expandQuad(&batch->view, cast, &batch->frame, texW, texH, billboard, poly, batch->vertices + (size_t)batch->count*4, centre))
         bad = "NaN/Inf or huge input, or bad facing";
     if ((bad == NULL) && (poly != NULL) && !batch->polygonal)
@@ -6150,7 +6378,7 @@ static bool rbl__batchAdd(rbl__BatchState *batch, const Material *material, cons
         }
     // The quad is planar: the camera sees its back when it lies behind the plane (perspective) or
     // looks along the normal (orthographic). Culling would drop it (FIXED cards, a reversed caller up)
-    // (records: looked for at RblEndBatch)
+    // (records: rbl__showsBack above)
     if (!batch->backFacing && !batch->records)
     {
         Vector3 toViewer = batch->orthographic? batch->view.back : rbl__sub(batch->view.eye, billboard->position);
@@ -6247,12 +6475,6 @@ static void rbl__endBatch(RblBatch *batch, const char *fn);
 void RblEndBatch(RblBatch *batch) { rbl__endBatch(batch, "RblEndBatch"); }
 
 // ---- the draw skeleton the batch and instanced paths share ----
-
-// Order matters only where colour blends: shadow and G-buffer passes draw in submission order
-static int rbl__passSort(int sort)
-{
-    return ((rbl__state.shadowPass != NULL) || (rbl__state.gbufferPass != NULL))? RBL_SORT_NONE : sort;
-}
 
 // A per-item stream made on first use (fades, caster identities), at least capacity items of
 // bytesEach; false when it cannot be created (logged; the old buffer kept, nothing drawn)
@@ -6540,11 +6762,20 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         return;
     }
     batch->begun = false;
+    if ((batch->mapped != NULL) && !rbl__unmapBatchBuffer(batch))
+    {
+        TraceLog(LOG_WARNING, "RBL: %s: the GPU lost the records of %i billboards (its buffer was unmapped by the system); they are not drawn", fn, batch->count);
+        batch->count = 0; batch->runCount = 0;
+    }
+    batch->mapped = NULL;
+    batch->onGpu = batch->onGpu && (batch->count > 0);
     if ((pub->sort < RBL_SORT_NONE) || (pub->sort > RBL_SORT_HYBRID) || !rbl__finite(pub->solidAlpha) || (pub->solidAlpha < 0.0f) || (pub->solidAlpha > 1.0f))
     {
         TraceLog(LOG_WARNING, "RBL: %s: sort mode %i unknown or solidAlpha %g outside 0..1; %i billboards not drawn", fn, pub->sort, pub->solidAlpha, batch->count);
         return;
     }
+    int sort = rbl__passSort(pub->sort);
+    if (batch->onGpu && ((sort != RBL_SORT_NONE) || (batch->capacity > batch->gpuCapacity))) rbl__recordsToCpu(batch);     // sorting reads them; a new buffer has none
     if (batch->count == 0) return;
     if (batch->capacity > batch->gpuCapacity)
     {
@@ -6567,7 +6798,6 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     if (batch->records && (!rbl__recordVariantsReady(batch) || !rbl__makeRecordArray(batch))) rbl__recordsToVertices(batch);
     const bool idStream = batch->identified && !batch->records;
     if (idStream && !rbl__reserveStream(&batch->idVboId, &batch->idGpuCapacity, batch->capacity, RBL__ID_BYTES, fn, "caster identity")) return;
-    int sort = rbl__passSort(pub->sort);
     if ((sort != RBL_SORT_NONE) && !rbl__sortBatch(batch))
     {
         TraceLog(LOG_WARNING, "RBL: %s: out of memory sorting %i billboards; drawn in submission order", fn, batch->count);
@@ -6579,12 +6809,12 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
     // Billboards seen from behind are drawn (two-sided, shaded on the side seen): culling goes off for
     // this draw and back on after (raylib's default; rlgl cannot report the caller's state). Shadow
     // passes keep it off throughout.
-    bool cullOff = (rbl__state.shadowPass == NULL) && (batch->backFacing || (batch->records && rbl__recordsShowBack(batch)));
+    bool cullOff = (rbl__state.shadowPass == NULL) && batch->backFacing;
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(batch->vaoId);
     if (batch->fading) rlUpdateVertexBuffer(batch->fadeVboId, sorted? batch->fadeSorted : batch->fade, batch->count*RBL__FADE_FLOATS*(int)sizeof(float), 0);
     if (idStream) rlUpdateVertexBuffer(batch->idVboId, sorted? batch->idsSorted : batch->ids, batch->count*RBL__ID_BYTES, 0);
-    rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*(batch->records? (int)sizeof(rbl__BatchRecord) : 4*(int)sizeof(RblVertex)), 0);
+    if (!batch->onGpu) rlUpdateVertexBuffer(batch->vboId, sorted? batch->sorted : batch->vertices, batch->count*(batch->records? (int)sizeof(rbl__BatchRecord) : 4*(int)sizeof(RblVertex)), 0);
     if (batch->records) rlEnableVertexArray(batch->recordVaoId);
     else rlEnableVertexBufferElement(batch->eboId);
     rbl__BatchLayer layer = { batch, sorted, fn, 0 };

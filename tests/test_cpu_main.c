@@ -3,6 +3,7 @@
 #include "rbillboard_lit.h"
 #include "harness.h"
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -31,6 +32,7 @@ int main(int argc, char **argv)
         RT_TEST(test_hard_far_from_origin_keeps_relative_precision),
         RT_TEST(test_hard_degenerate_source_and_texture_size),
         RT_TEST(test_hard_nan_or_inf_in_any_input_is_skipped),
+        RT_TEST(test_hard_billboard_checks_and_culling_four_lanes_equal_one_at_a_time),
         RT_TEST(test_geometry_batch_frame_reuse_is_bit_identical_to_single_billboards),
         RT_TEST(test_geometry_rotation_sin_cos_is_exact_at_quadrants_and_within_1_5e_7),
         RT_TEST(test_materials_encodings_round_trip_a_uniform_hemisphere_near_the_reference_errors),

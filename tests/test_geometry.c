@@ -599,3 +599,96 @@ static void test_geometry_rotation_sin_cos_is_exact_at_quadrants_and_within_1_5e
                  "%g degrees: sin %.9g cos %.9g", huge[i], s, c);
     }
 }
+
+// The batch's billboard checks and culling, four lanes at a time (SSE2 where the compiler targets it),
+// against the one-at-a-time versions and an independent reference: each float word of position ..
+// roundness below its bound (|x| < 2^(e - 127), NaN refused; rotation to 2^120, up and axis and
+// roundness finite, CAMERA_PLANE's up below 2^30), over words drawn from each bound's edges, NaN,
+// Inf, denormals and ordinary values; culling equal bit for bit (the same sums in the same order)
+static double geoWordValue(unsigned int *seed, int limitExponent)
+{
+    unsigned int r = rtRandom(seed);
+    float edge = ldexpf(1.0f, limitExponent - 127);        // the first value refused (the float's own max + 1 ulp for 255)
+    switch (r % 10u)
+    {
+        case 0: return (limitExponent >= 255)? INFINITY : (double)edge;
+        case 1: return (limitExponent >= 255)? (double)FLT_MAX : (double)nextafterf(edge, 0.0f);
+        case 2: return -(double)((limitExponent >= 255)? FLT_MAX : nextafterf(edge, 0.0f));
+        case 3: return NAN;
+        case 4: return -INFINITY;
+        case 5: return 1e-41;                               // denormal
+        case 6: return -0.0;
+        default: return (double)rtRandomRange(seed, -1000.0f, 1000.0f);
+    }
+}
+
+static void test_hard_billboard_checks_and_culling_four_lanes_equal_one_at_a_time(void)
+{
+    unsigned int seed = 0x5eed1234u;
+    int wrong = 0, wrongRef = 0, accepted = 0, refused = 0;
+    for (int n = 0; n < 200000; n++)
+    {
+        RblBillboard b;
+        memset(&b, 0, sizeof(b));
+        int facing = (int)(rtRandom(&seed) % 4u);
+        b.facing = facing;
+        float *w = (float *)(void *)&b;
+        bool ok = true;
+        for (int i = 0; i < 21; i++)
+        {
+            if ((i == 12) || (i == 13)) continue;           // tint, facing
+            int e = (i < 12)? ((i == 7)? 247 : 187) : ((facing == RBL_FACING_CAMERA_PLANE) && (i < 17))? 157 : 255;
+            // Mostly in range (one word per billboard at an edge or beyond), so both answers occur
+            double v = ((rtRandom(&seed) % 16u) == 0u)? geoWordValue(&seed, e) : (double)rtRandomRange(&seed, -100.0f, 100.0f);
+            w[i] = (float)v;
+            ok = ok && !isnan(w[i]) && (fabs((double)w[i]) < ldexp(1.0, e - 127));
+        }
+        b.tint = (Color){ (unsigned char)rtRandom(&seed), 255, 0, (unsigned char)rtRandom(&seed) };
+        b.flags = rtRandom(&seed);
+        bool lanes = rbl__billboardWordsOk(&b), one = rbl__billboardWordsOkScalar(&b);
+        wrong += lanes != one;
+        wrongRef += one != ok;
+        accepted += one; refused += !one;
+    }
+    int cullWrong = 0, outside = 0;
+    for (int n = 0; n < 200000; n++)
+    {
+        float cull[4][8];
+        for (int k = 0; k < 8; k++) for (int e = 0; e < 4; e++) cull[e][k] = (e == 3)? rtRandomRange(&seed, 20.0f, 110.0f) : rtRandomRange(&seed, -1.0f, 1.0f);
+        Vector3 c = { rtRandomRange(&seed, -60.0f, 60.0f), rtRandomRange(&seed, -60.0f, 60.0f), rtRandomRange(&seed, -60.0f, 60.0f) };
+        float r2 = rtRandomRange(&seed, 0.0f, 400.0f);
+        bool lanes = rbl__outsidePlanes((const float (*)[8])cull, c, r2), one = rbl__outsidePlanesScalar((const float (*)[8])cull, c, r2);
+        cullWrong += lanes != one;
+        outside += one;
+    }
+    // Spheres that touch a plane exactly (and one ulp either side): integer distances, axis normals
+    for (int n = 0; n < 3000; n++)
+    {
+        float cull[4][8];
+        for (int k = 0; k < 8; k++) for (int e = 0; e < 4; e++) cull[e][k] = (e == 3)? 1.0f : 0.0f;    // planes that keep everything
+        int k = n % 8, axis = (n/8) % 3;
+        cull[0][k] = cull[1][k] = cull[2][k] = 0.0f;
+        cull[axis][k] = ((n/24) & 1)? -1.0f : 1.0f;
+        cull[3][k] = (float)((int)(rtRandom(&seed) % 41u) - 20);
+        float coord[3] = { (float)((int)(rtRandom(&seed) % 81u) - 40), (float)((int)(rtRandom(&seed) % 81u) - 40), (float)((int)(rtRandom(&seed) % 81u) - 40) };
+        Vector3 c = { coord[0], coord[1], coord[2] };
+        float d = cull[axis][k]*coord[axis] + cull[3][k];
+        float r2 = d*d, pick = (float)(n % 3);
+        if (pick == 1.0f) r2 = nextafterf(r2, 0.0f);
+        if (pick == 2.0f) r2 = nextafterf(r2, INFINITY);
+        bool lanes = rbl__outsidePlanes((const float (*)[8])cull, c, r2), one = rbl__outsidePlanesScalar((const float (*)[8])cull, c, r2);
+        bool ref = (d < 0.0f) && ((double)d*(double)d > (double)r2);
+        cullWrong += (lanes != one) + (one != ref);
+        outside += one;
+    }
+#if defined(RBL__SSE2)
+    const char *kind = "SSE2";
+#else
+    const char *kind = "plain C (no SSE2 here: the two are one)";
+#endif
+    printf("    %s: 200000 billboards (%d accepted, %d refused): %d differ from one at a time, %d from the reference; 203000 spheres (%d outside, 3000 touching a plane): %d differ\n",
+           kind, accepted, refused, wrong, wrongRef, outside, cullWrong);
+    RT_CHECK((accepted > 20000) && (refused > 20000) && (outside > 20000) && (outside < 180000), "the draws do not reach both answers (test setup)");
+    RT_CHECK(wrong == 0 && wrongRef == 0, "billboard checks: %d four-lane answers differ from one at a time, %d from the reference", wrong, wrongRef);
+    RT_CHECK(cullWrong == 0, "culling: %d four-lane answers differ from one at a time or the reference", cullWrong);
+}

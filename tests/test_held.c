@@ -118,7 +118,7 @@ static void test_held_orthographic_facing_is_parallel_across_the_whole_view(void
     {
         RblBeginBatch(&batch, cam);
         for (int i = 0; i < N*3; i++) RblBatchAdd(&batch, m, &bb[0][i]);
-        const rbl__BatchState *st = rbl__batchState(&batch);
+        rbl__BatchState *st = rbl__batchState(&batch);
         for (int i = 0; (st != NULL) && (i < st->count); i++)
         {
             RblVertex q[4];

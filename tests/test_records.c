@@ -50,6 +50,16 @@ static void recSet(RblBillboard *set)
 
 typedef struct RecWorst { int worst, differ, covered, records; } RecWorst;
 
+// Whether batches of records write them into the mapped GPU buffer here (GL 3.3, ES 3; not WebGL)
+static bool recMaps(void)
+{
+#if defined(RBL_NO_MAPPED_BATCH) || defined(__EMSCRIPTEN__)
+    return false;
+#else
+    return rtGlsl3();
+#endif
+}
+
 static void recCompare(Image a, Image b, RecWorst *w)
 {
     for (int i = 0; i < a.width*a.height; i++)
@@ -273,7 +283,7 @@ static void test_batch_records_turned_to_vertices_carry_their_caster_identities(
     BeginMode3D(cam);
     RblBeginBatch(&batch, cam);
     for (int k = 0; k < REC_SET; k++) RblBatchAdd(&batch, m, &set[k]);
-    const rbl__BatchState *st = rbl__batchState(&batch);
+    rbl__BatchState *st = rbl__batchState(&batch);
     bool heldRecords = (st != NULL) && st->records && st->identified;
     RblFade fade;
     memset(&fade, 0, sizeof(fade));
@@ -300,6 +310,153 @@ static void test_batch_records_turned_to_vertices_carry_their_caster_identities(
     MemFree(m.maps);
     UnloadTexture(white);
     RblUnloadLitShader(&receiver);
+}
+
+static void recHardSet(RblBillboard *set);
+
+// One frame of set through batch into rt (cleared), billboard fadeAt (if >= 0) added with fade;
+// whether records were in the mapped buffer when the batch ended, and sort set after RblBeginBatch
+static Image recMappedFrame(RenderTexture2D rt, RblBatch *batch, Camera3D cam, const Material *m, const RblBillboard *set, int n, int lateSort, int fadeAt, const RblFade *fade, bool *mapped)
+{
+    rbl__BatchState *st = rbl__batchState(batch);
+    BeginTextureMode(rt);
+    ClearBackground(BLANK);
+    BeginMode3D(cam);
+    RblBeginBatch(batch, cam);
+    for (int k = 0; k < n; k++)
+    {
+        if (k == fadeAt) RblBatchAddFade(batch, *m, &set[k], fade);
+        else RblBatchAdd(batch, *m, &set[k]);
+    }
+    batch->sort = lateSort;
+    *mapped = (st != NULL) && (st->mapped != NULL);
+    RblEndBatch(batch);
+    batch->sort = RBL_SORT_NONE;
+    EndMode3D();
+    EndTextureMode();
+    return rtReadTarget(rt);
+}
+
+// Where the context maps buffers, a batch of records drawn in submission order writes each record
+// straight into its GPU buffer (nothing uploaded at RblEndBatch): read back after the draw, every
+// record is the billboard as the record stage reads it (flags masked to the rotated and cylinder
+// bits, FIXED and AXIS directions tamed), bit for bit. A step that must read them on the CPU reads
+// them back first, and draws exactly what a batch that kept them on the CPU draws: growing past its
+// capacity, a sort mode set after RblBeginBatch, a cross-fade that turns the batch to vertices. A
+// read-back while the batch is open rests mapping for the next RBL__MAP_REST batches; a batch
+// unloaded while mapped leaves GL without an error
+static void test_batch_records_mapped_read_back_bit_for_bit_and_draw_as_kept_ones(void)
+{
+    static RblBillboard set[REC_SET];
+    recHardSet(set);
+    Shader lit = RblLoadLitShader((RblLitShaderDesc){ .maxLights = 1 });
+    Image ai = recNoise(31u, false);
+    Texture2D albedo = LoadTextureFromImage(ai);
+    UnloadImage(ai);
+    Material m = LoadMaterialDefault();
+    m.shader = lit;
+    m.maps[MATERIAL_MAP_ALBEDO].texture = albedo;
+    Camera3D cam = frontCamera();
+    RenderTexture2D rt = LoadRenderTexture(REC_RT, REC_RT);
+    const bool maps = recMaps();
+
+    // Bit for bit, after the draw
+    RblBatch batch = RblLoadBatch(REC_SET);
+    batch.noCull = true;                    // every billboard takes its slot, in order
+    rbl__BatchState *st = rbl__batchState(&batch);
+    bool mapped = false;
+    Image kept = recMappedFrame(rt, &batch, cam, &m, set, REC_SET, RBL_SORT_NONE, -1, NULL, &mapped);
+    bool onGpu = st->onGpu, read = rbl__recordsToCpu(st);
+    int differ = 0;
+    for (int i = 0; read && (i < st->count); i++)
+    {
+        rbl__BatchRecord e = set[i];
+        e.flags &= RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER;
+        if (e.facing != RBL_FACING_CAMERA_PLANE) { e.up = rbl__tame(set[i].up); e.axis = rbl__tame(set[i].axis); }
+        differ += memcmp(&e, (const rbl__BatchRecord *)(const void *)st->vertices + i, sizeof(e)) != 0;
+    }
+    printf("    %d records %s, %d differ from the billboards as the stage reads them\n", st->count, onGpu? "written into the mapped buffer, read back" : "kept on the CPU", differ);
+    RT_CHECK((mapped == maps) && (onGpu == maps), "records in the mapped buffer: %s while open, %s after the draw (expected: %s)", mapped? "yes" : "no", onGpu? "yes" : "no", maps? "yes" : "no");
+    RT_CHECK(read && (st->count == REC_SET) && (differ == 0), "%d of %d records read back differ (read back: %s)", differ, st->count, read? "yes" : "no");
+    UnloadImage(kept);
+
+    // The references: the same frames with mapping rested (records kept on the CPU)
+    RblFade fade;
+    memset(&fade, 0, sizeof(fade));
+    fade.source = (Rectangle){ 4.0f, 1.0f, 9.0f, 11.0f }; fade.weight = 0.5f;
+    const char *names[3] = { "grown past its capacity", "sorted after RblBeginBatch", "turned to vertices by a cross-fade" };
+    for (int c = 0; c < 3; c++)
+    {
+        RblBatch a = RblLoadBatch((c == 0)? 8 : REC_SET), b = RblLoadBatch(REC_SET);
+        a.noCull = b.noCull = true;
+        rbl__BatchState *sa = rbl__batchState(&a), *sb = rbl__batchState(&b);
+        sb->mapRest = 1;
+        int sort = (c == 1)? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE, fadeAt = (c == 2)? REC_SET/2 : -1;
+        bool mappedA = false, mappedB = false;
+        Image ia = recMappedFrame(rt, &a, cam, &m, set, REC_SET, sort, fadeAt, &fade, &mappedA);
+        Image ib = recMappedFrame(rt, &b, cam, &m, set, REC_SET, sort, fadeAt, &fade, &mappedB);
+        RecWorst w = { 0, 0, 0, 0 };
+        recCompare(ia, ib, &w);
+        // Mapped at the first record; still open at the end only where nothing read them back before
+        const bool openAtEnd = maps && (c == 1), rested = maps && (c != 1);
+        printf("    %-34s: %s, worst %d/255 from the kept batch's (%d pixels covered), mapping %s\n", names[c], maps? "read back" : "kept on the CPU", w.worst, w.covered,
+               (sa->mapRest == RBL__MAP_REST)? "rested" : "not rested");
+        RT_CHECK((mappedA == openAtEnd) && !mappedB, "%s: mapped at the end %s (expected %s), reference %s", names[c], mappedA? "yes" : "no", openAtEnd? "yes" : "no", mappedB? "mapped" : "kept");
+        RT_CHECK((sa->count == REC_SET) && (sa->mapRest == (rested? RBL__MAP_REST : 0)), "%s: %d billboards drawn, mapping rests %d batches", names[c], sa->count, sa->mapRest);
+        RT_CHECK(w.covered > REC_RT*REC_RT/16, "%s: only %d pixels covered (test setup)", names[c], w.covered);
+        RT_CHECK(w.worst == 0, "%s: %d pixels differ from the kept batch's (worst %d/255)", names[c], w.differ, w.worst);
+        if ((rtFailuresInCurrentTest() > 0) || (getenv("RBL_TEST_LOOK") != NULL)) { rtSaveImage(ia, "read-back"); rtSaveImage(ib, "kept"); }
+        UnloadImage(ia); UnloadImage(ib);
+        if (c == 0)
+        {
+            // Resting: the next RBL__MAP_REST batches keep their records on the CPU, then mapping resumes
+            int mappedFrames = 0;
+            for (int f = 0; f <= RBL__MAP_REST; f++)
+            {
+                BeginTextureMode(rt);
+                BeginMode3D(cam);
+                RblBeginBatch(&a, cam);
+                RblBatchAdd(&a, m, &set[0]);
+                mappedFrames += (sa->mapped != NULL)? ((f == RBL__MAP_REST)? 1 : 1000) : 0;
+                RblEndBatch(&a);
+                EndMode3D();
+                EndTextureMode();
+            }
+            RT_CHECK(mappedFrames == (maps? 1 : 0), "after a read-back: mapped in %d of %d batches' rest, in the next %s", mappedFrames/1000, RBL__MAP_REST, (mappedFrames % 1000)? "yes" : "no");
+        }
+        RblUnloadBatch(&a); RblUnloadBatch(&b);
+    }
+
+    // Unloaded while mapped, then a batch drawn as before
+    unsigned int (*getError)(void) = NULL;
+    void *e = rtGlProc("glGetError");
+    memcpy(&getError, &e, sizeof(e));
+    for (int k = 0; (getError != NULL) && (k < 16) && (getError() != 0u); k++) { }     // errors of earlier steps
+    RblBatch open = RblLoadBatch(16);
+    rbl__BatchState *so = rbl__batchState(&open);
+    BeginTextureMode(rt);
+    BeginMode3D(cam);
+    RblBeginBatch(&open, cam);
+    for (int k = 0; k < 5; k++) RblBatchAdd(&open, m, &set[k]);
+    bool openMapped = (so != NULL) && (so->mapped != NULL);
+    RblUnloadBatch(&open);
+    EndMode3D();
+    EndTextureMode();
+    unsigned int error = (getError != NULL)? getError() : 0u;
+    Image again = recMappedFrame(rt, &batch, cam, &m, set, REC_SET, RBL_SORT_NONE, -1, NULL, &mapped);
+    st->mapRest = 1;
+    Image cpu = recMappedFrame(rt, &batch, cam, &m, set, REC_SET, RBL_SORT_NONE, -1, NULL, &mapped);
+    RecWorst w = { 0, 0, 0, 0 };
+    recCompare(again, cpu, &w);
+    RT_CHECK((openMapped == maps) && (error == 0u), "a batch unloaded while %s: GL error 0x%x", openMapped? "mapped" : "not mapped", error);
+    RT_CHECK((w.worst == 0) && (w.covered > REC_RT*REC_RT/16), "after it, a mapped batch differs from a kept one in %d pixels (worst %d/255, %d covered)", w.differ, w.worst, w.covered);
+    UnloadImage(again); UnloadImage(cpu);
+
+    RblUnloadBatch(&batch);
+    UnloadRenderTexture(rt);
+    MemFree(m.maps);
+    UnloadTexture(albedo);
+    RblUnloadLitShader(&lit);
 }
 
 // Billboards of the stage's hard inputs added to the set: FIXED and AXIS up and axis far beyond
@@ -373,8 +530,9 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
     EndMode3D();
     EndTextureMode();
     UnloadRenderTexture(rt);
-    const rbl__BatchState *st = rbl__batchState(&batch);
+    rbl__BatchState *st = rbl__batchState(&batch);
     RT_CHECK(records && (st != NULL) && (st->count == REC_SET), "the batch did not end with %d records", REC_SET);
+    RT_CHECK((st != NULL) && (st->onGpu == recMaps()), "records %s the GPU buffer (mapping expected: %s)", ((st != NULL) && st->onGpu)? "written into" : "uploaded to", recMaps()? "yes" : "no");
     if (records && (st != NULL) && (st->count == REC_SET))
     {
         RblCameraFrame view = RblGetCameraFrame(cam);
@@ -405,9 +563,10 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
             cast = true;
             RblBeginBatch(&batch, cam);
             for (int k = 0; k < REC_SET; k++) RblBatchAdd(&batch, m, &set[k]);
+            RblEndBatch(&batch);
+            // After the draw, still in the pass: records the adds wrote into the mapped buffer are read back
             held = st->records && (st->count == REC_SET);
             for (int i = 0; held && (i < REC_SET); i++) rtBatchVertices(st, i, cpu + 4*i);
-            RblEndBatch(&batch);
             if (held) e = recStageError(&gl, prog, st, set, cpu);
             RblEndShadowMap(&map);
         }
@@ -429,4 +588,5 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
     RT_TEST(test_batch_records_draw_what_vertices_draw_lit_mirrored_turned_and_rounded), \
     RT_TEST(test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_like_vertices), \
     RT_TEST(test_batch_records_turned_to_vertices_carry_their_caster_identities), \
-    RT_TEST_GLSL3(test_batch_records_vertex_stage_emits_the_vertex_paths_corners_normals_and_tangents)
+    RT_TEST_GLSL3(test_batch_records_vertex_stage_emits_the_vertex_paths_corners_normals_and_tangents), \
+    RT_TEST_GLSL3(test_batch_records_mapped_read_back_bit_for_bit_and_draw_as_kept_ones)

@@ -557,7 +557,7 @@ static bool InstancedCorners(int n, int rotated, float *out)
 
 // The batch's corners: where it holds records, as the record vertex stage emits them (transform
 // feedback over the records its last RblEndBatch uploaded), else its vertices
-static void BatchedCorners(const rbl__BatchState *st, int n, RblVertex *out)
+static void BatchedCorners(rbl__BatchState *st, int n, RblVertex *out)
 {
     TfGl gl;
     GLu prog = (st->records && tfLoad(&gl))? tfRecordProgram(&gl) : 0;

@@ -70,7 +70,7 @@ case "$mode" in
     else echo "  FAIL  README API index differs from the header (make api-index rewrites it):"; diff <(printf '%s\n' "$have") <(printf '%s\n' "$gen") | head -20; fail=$((fail + 1)); fi
     # Configuration: code defaults vs the doc block's CONFIGURATION list
     # (defaults: #ifndef RBL_X; switches: RBL_X tested with defined(), listed without a value)
-    code=$( { sed -n 's/^#ifndef \(RBL_[A-Z0-9_]*\)$/\1/p' "$header"; grep -E '^ *# *(if|elif)' "$header" | grep -o 'defined(RBL_[A-Z0-9_]*)' | grep -o 'RBL_[A-Z0-9_]*'; } | sort -u)
+    code=$( { sed -n 's/^#ifndef \(RBL_[A-Z0-9_]*\)$/\1/p' "$header"; grep -E '^ *# *(if|elif)' "$header" | grep -o 'defined(RBL_[A-Z0-9_]*)' | grep -o 'RBL_[A-Z0-9_]*'; } | grep -v '^RBL__' | sort -u)
     doc=$(sed -n '/^\*   CONFIGURATION:/,/^\*   [A-Z ]*:$/p' "$header" | grep '^\*       #define ' | grep -o 'RBL_[A-Z0-9_]*' | sort -u)
     missing=$(comm -23 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | tr '\n' ' ')
     stale=$(comm -13 <(printf '%s\n' "$code") <(printf '%s\n' "$doc") | grep -v -E '^RBL_(MALLOC|CALLOC|REALLOC|FREE)$' | tr '\n' ' ')
