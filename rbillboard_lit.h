@@ -1370,7 +1370,7 @@ RBLAPI void RblUnloadBatch(RblBatch *batch);                                  //
 RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  // Start collecting billboards seen by camera; false = rejected (billboards still pending, bad camera)
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
 RBLAPI bool RblBatchAddFade(RblBatch *batch, Material material, const RblBillboard *billboard, const RblFade *fade); // Add one billboard cross-faded to a second frame (a crossFade program draws it); false = skipped (bad input)
-RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once and draw each material run
+RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once (unless the adds wrote the mapped GPU buffer) and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
 RBLAPI void RblDrawBillboardFade(Camera3D camera, Material material, RblBillboard billboard, RblFade fade); // Draw one cross-faded billboard now (immediate path)
 
@@ -1487,6 +1487,14 @@ RBLAPI bool RblAnimateSprite(RblSpriteInstance *sprite, int tag, int loops, floa
 #include <stdarg.h>     // va_list (atlas errors)
 #include <stddef.h>     // offsetof
 #include <stdlib.h>     // strtod, qsort, abs (atlas parsing)
+// The batch's per-billboard steps, inlined into RblBatchAdd's loop body whatever the compiler's own limits
+#if defined(__GNUC__) || defined(__clang__)
+    #define RBL__FORCE_INLINE static inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+    #define RBL__FORCE_INLINE static __forceinline
+#else
+    #define RBL__FORCE_INLINE static inline
+#endif
 #if !defined(RBL_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && (_M_IX86_FP >= 2)))
     #include <emmintrin.h>  // the batch's billboard checks and culling, four lanes at a time
     #define RBL__SSE2 1
@@ -5213,7 +5221,7 @@ static inline bool rbl__billboardWordsOkScalar(const RblBillboard *b)
     return (carry & 0x80000000u) == 0u;
 }
 
-static inline bool rbl__billboardWordsOk(const RblBillboard *b)
+RBL__FORCE_INLINE bool rbl__billboardWordsOk(const RblBillboard *b)
 {
 #if defined(RBL__SSE2)
     const unsigned int *bias = rbl__billboardWordBias[b->facing == RBL_FACING_CAMERA_PLANE];
@@ -5972,7 +5980,7 @@ static inline bool rbl__outsidePlanesScalar(const float cull[4][8], Vector3 c, f
     return out != 0;
 }
 
-static inline bool rbl__outsidePlanes(const float cull[4][8], Vector3 c, float r2)
+RBL__FORCE_INLINE bool rbl__outsidePlanes(const float cull[4][8], Vector3 c, float r2)
 {
 #if defined(RBL__SSE2)
     const __m128 x = _mm_set1_ps(c.x), y = _mm_set1_ps(c.y), z = _mm_set1_ps(c.z), r = _mm_set1_ps(r2), zero = _mm_setzero_ps();
@@ -5993,7 +6001,7 @@ static int rbl__backMode(const RblCameraFrame *view, int facing, Vector3 up, Vec
 
 // The batch's key for b (checked by rbl__billboardOk) before culling and storing it: what its facing,
 // up and axis give, made again only when they change
-static inline void rbl__facingKey(rbl__BatchState *batch, const RblBillboard *b)
+RBL__FORCE_INLINE void rbl__facingKey(rbl__BatchState *batch, const RblBillboard *b)
 {
     unsigned int w[7];
     memcpy(w, &b->facing, sizeof(w));
@@ -6012,7 +6020,7 @@ typedef char rbl__facingKeyWords[(offsetof(RblBillboard, axis) + sizeof(Vector3)
 // corners lie within the sphere about the pivot through the farthest footprint corner (rotation
 // turns the footprint about the pivot; CAMERA_PLANE's caller up scales its height; a shadow pass's
 // AXIS tilt moves it by at most twice that, so its sphere is three times as large)
-static bool rbl__culled(const rbl__BatchState *batch, const RblBillboard *b)
+RBL__FORCE_INLINE bool rbl__culled(const rbl__BatchState *batch, const RblBillboard *b)
 {
     float sx = fabsf(b->size.x), sy = fabsf(b->size.y)*batch->keyHeightScale;
     float ax = fabsf(b->origin.x), bx = fabsf(sx - b->origin.x), ay = fabsf(b->origin.y), by = fabsf(sy - b->origin.y);
@@ -6174,7 +6182,7 @@ static bool rbl__showsBack(const RblCameraFrame *view, int facing, Vector3 up, V
 // once, never read (a mapped buffer is write-only); only the flags the stage reads, a FIXED or AXIS
 // up and axis tamed as rbl__facingBasis tames them (their length does not matter there; a GPU
 // squaring a huge one would overflow)
-static inline void rbl__storeRecord(rbl__BatchState *batch, const RblBillboard *b)
+RBL__FORCE_INLINE void rbl__storeRecord(rbl__BatchState *batch, const RblBillboard *b)
 {
     unsigned char *out = (unsigned char *)((batch->mapped != NULL)? batch->mapped : (rbl__BatchRecord *)(void *)batch->vertices) + (size_t)batch->count*sizeof(rbl__BatchRecord);
     const bool plane = (b->facing == RBL_FACING_CAMERA_PLANE);
@@ -6190,7 +6198,7 @@ static inline void rbl__storeRecord(rbl__BatchState *batch, const RblBillboard *
 }
 
 // The batch's last run where billboards of material continue it as records, else NULL
-static inline rbl__BatchRun *rbl__recordRun(rbl__BatchState *batch, const Material *material)
+RBL__FORCE_INLINE rbl__BatchRun *rbl__recordRun(rbl__BatchState *batch, const Material *material)
 {
     if (!batch->records || (batch->count == 0) || (batch->runCount == 0)) return NULL;
     rbl__BatchRun *run = &batch->runs[batch->runCount - 1];
@@ -6200,9 +6208,10 @@ static inline rbl__BatchRun *rbl__recordRun(rbl__BatchState *batch, const Materi
 // The common add, kept short: a plain billboard continuing run (rbl__recordRun), whose first add
 // settled the material, the stream and the identities. 1 = added, 0 = culled, -1 = not this case
 // (the general path takes it: a polygon frame, a full batch, bad input it logs)
-static inline int rbl__addToRecordRun(rbl__BatchState *batch, rbl__BatchRun *run, const RblBillboard *b)
+RBL__FORCE_INLINE int rbl__addToRecordRun(rbl__BatchState *batch, rbl__BatchRun *run, const RblBillboard *b)
 {
-    if ((rbl__polygonHandle(b->flags) != 0u) || (batch->count >= batch->capacity) || !rbl__billboardOk(b, run->textureWidth, run->textureHeight)) return -1;
+    // (the run's texture size passed rbl__billboardOk with its first billboard)
+    if ((rbl__polygonHandle(b->flags) != 0u) || (batch->count >= batch->capacity) || (b->facing < RBL_FACING_CAMERA_PLANE) || (b->facing > RBL_FACING_FIXED) || !rbl__billboardWordsOk(b)) return -1;
     rbl__facingKey(batch, b);
     if ((batch->planeCount > 0) && rbl__culled(batch, b)) { batch->culled++; return 0; }
     rbl__storeRecord(batch, b);
