@@ -58,8 +58,9 @@
 *            sprite.position = p; sprite.size = CLITERAL(Vector2){ 1, 2 };
 *            RblDrawBillboard(camera, mat, sprite); // in BeginMode3D
 *          At exit: UnloadMaterial(mat), RblClose(), CloseWindow() (see OWNERSHIP).
-*       2. Many billboards: consecutive billboards with the same Material form one run; RblEndBatch
-*          uploads once and draws once per run (and reads the materials' values then).
+*       2. Many billboards: consecutive billboards with the same Material (shader, maps array,
+*          params) form one run; RblEndBatch uploads once and draws once per run (and reads the
+*          maps' values then).
 *            RblBatch batch = RblLoadBatch(0);     // RBL_BATCH_DEFAULT_CAPACITY; grows (log line)
 *            RblBeginBatch(&batch, camera);        // inside BeginMode3D
 *            for (int i = 0; i < n; i++) RblBatchAdd(&batch, mat, &billboards[i]);   // false: skipped
@@ -6077,15 +6078,16 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     return true;
 }
 
-// Whether b continues a's run: compares pointers before reading a's maps (b's are the same array)
+// Whether material b continues a's run: the same shader, the same maps array (its contents are read
+// when the run draws) and the same params, the per-material values the run draws with (a copy of a
+// Material with another alpha cutoff is another material, as for raylib's DrawMesh)
 static inline bool rbl__sameMaterial(const Material *a, const Material *b)
 {
-    if ((a->shader.id != b->shader.id) || (a->shader.locs != b->shader.locs) || (a->maps != b->maps) || (a->maps == NULL)) return false;
-    const Color ca = a->maps[MATERIAL_MAP_ALBEDO].color, cb = b->maps[MATERIAL_MAP_ALBEDO].color;
-    return (a->maps[MATERIAL_MAP_ALBEDO].texture.id == b->maps[MATERIAL_MAP_ALBEDO].texture.id) &&
-           (a->maps[MATERIAL_MAP_METALNESS].texture.id == b->maps[MATERIAL_MAP_METALNESS].texture.id) &&
-           (a->maps[MATERIAL_MAP_NORMAL].texture.id == b->maps[MATERIAL_MAP_NORMAL].texture.id) &&
-           (ca.r == cb.r) && (ca.g == cb.g) && (ca.b == cb.b) && (ca.a == cb.a);
+    unsigned int pa[4], pb[4];
+    memcpy(pa, a->params, sizeof(pa));
+    memcpy(pb, b->params, sizeof(pb));
+    return (a->shader.id == b->shader.id) && (a->shader.locs == b->shader.locs) && (a->maps == b->maps) && (a->maps != NULL) &&
+           (((pa[0] ^ pb[0]) | (pa[1] ^ pb[1]) | (pa[2] ^ pb[2]) | (pa[3] ^ pb[3])) == 0u);
 }
 
 // Grow CPU storage by doubling; the GPU buffer follows at the next RblEndBatch()

@@ -69,6 +69,71 @@ static void test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_im
     sceneUnload(s);
 }
 
+// A Material is a value: a copy that shares the shader and maps but holds other params (here the
+// alpha cutoff) starts its own run and draws with its own values, as raylib's DrawMesh would; the
+// batch draws what the immediate path draws billboard by billboard
+static Image batchParamsFrame(RenderTexture2D rt, Camera3D cam, RblBatch *batch, const Material *mats, const RblBillboard *set, int n)
+{
+    BeginTextureMode(rt);
+    ClearBackground(BLACK);
+    BeginMode3D(cam);
+    if (batch != NULL)
+    {
+        RblBeginBatch(batch, cam);
+        for (int i = 0; i < n; i++) RblBatchAdd(batch, mats[i], &set[i]);
+        RblEndBatch(batch);
+    }
+    else for (int i = 0; i < n; i++) RblDrawBillboard(cam, mats[i], set[i]);
+    EndMode3D();
+    EndTextureMode();
+    return rtReadTarget(rt);
+}
+
+static void test_batch_material_copies_with_other_params_draw_with_their_own(void)
+{
+    Camera3D cam = frontCamera();
+    Scene s = sceneLoad((Color){ 200, 150, 100, 128 }, normalTexel(0, 0, 1), false);       // every texel half transparent
+    RblLight l = rtPointLight((Vector3){ 1, 1, 3 }, 8.0f);
+    RT_CHECK(renderSetLights(&l, 1, (Color){ 20, 20, 20, 255 }), "scene rejected");
+    Material keep = s.material, cut = s.material;        // the same shader and maps array
+    keep.params[RBL_PARAM_ALPHA_CUTOFF] = 0.25f;         // keeps the texels (alpha 0.5)
+    cut.params[RBL_PARAM_ALPHA_CUTOFF] = 0.75f;          // discards them
+    RblBillboard set[6];
+    Material mats[6], allKeep[6];
+    for (int i = 0; i < 6; i++)
+    {
+        set[i] = centredQuad();
+        set[i].size = (Vector2){ 0.8f, 0.8f }; set[i].origin = (Vector2){ 0.4f, 0.4f };
+        set[i].position = (Vector3){ -1.5f + 0.6f*(float)i, 0.0f, 0.0f };
+        mats[i] = (i < 3)? keep : cut;
+        allKeep[i] = keep;
+    }
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    RblBatch batch = RblLoadBatch(8);
+    Image batched = batchParamsFrame(rt, cam, &batch, mats, set, 6);
+    int runs = (batch.state != NULL)? batch.state->runCount : -1;
+    Image immediate = batchParamsFrame(rt, cam, NULL, mats, set, 6);
+    Image kept = batchParamsFrame(rt, cam, NULL, allKeep, set, 6);
+    int differing = 0, litBatched = 0, litKept = 0;
+    for (int y = 0; y < TARGET; y++)
+    for (int x = 0; x < TARGET; x++)
+    {
+        Color a = rtPixel(batched, x, y), b = rtPixel(immediate, x, y), k = rtPixel(kept, x, y);
+        differing += (a.r != b.r) || (a.g != b.g) || (a.b != b.b);
+        litBatched += a.r > 0; litKept += k.r > 0;
+    }
+    printf("    2 materials sharing shader and maps, alpha cutoff 0.25 / 0.75: %d runs, %d lit pixels (all kept: %d), %d differ from the immediate path\n",
+           runs, litBatched, litKept, differing);
+    RT_CHECK(runs == 2, "%d runs for two material values (expected 2)", runs);
+    RT_CHECK((litBatched > 200) && (litBatched < litKept - 200), "lit pixels %d, with every billboard kept %d (test setup: the cutoff must cut)", litBatched, litKept);
+    RT_CHECK(differing == 0, "%d pixels differ between batched and immediate", differing);
+    if (rtFailuresInCurrentTest() > 0) { rtSaveImage(batched, "batched"); rtSaveImage(immediate, "immediate"); }
+    UnloadImage(batched); UnloadImage(immediate); UnloadImage(kept);
+    RblUnloadBatch(&batch);
+    UnloadRenderTexture(rt);
+    sceneUnload(s);
+}
+
 // ---- parity with raylib ---------------------------------------------------------------------------
 // raylib's own DrawBillboardPro output, captured from an rlgl batch before it is drawn
 static void test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro(void)
@@ -132,4 +197,5 @@ static void test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboa
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_BATCH_TESTS \
     RT_TEST(test_batch_grows_with_a_log_line_skips_bad_input_once_and_matches_immediate), \
+    RT_TEST(test_batch_material_copies_with_other_params_draw_with_their_own), \
     RT_TEST(test_parity_camera_plane_positions_and_uvs_equal_raylib_draw_billboard_pro)
