@@ -1533,8 +1533,11 @@ typedef char rbl__maxBonesInRange[((RBL_MAX_BONES >= 1) && (RBL_MAX_BONES <= 256
 #define RBL__QUADS_PER_CHUNK 16384
 
 // Validation reads runs of floats: RblBillboard position .. source (rotation the 8th) and up ..
-// roundness, RblInstance position .. source; a batch record reads size and origin as one vec4
-typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, source) + sizeof(Rectangle) - offsetof(RblBillboard, position) == 12*sizeof(float)) &&
+// roundness as words 0..20 (tint 12, facing 13), RblInstance position .. source; the batch's facing
+// key reads facing .. axis as 7 words; a batch record reads size and origin as one vec4
+typedef char rbl__billboardFloatRuns[((offsetof(RblBillboard, position) == 0) && (offsetof(RblBillboard, tint) == 12*4) && (offsetof(RblBillboard, facing) == 13*4) &&
+                                      (offsetof(RblBillboard, up) == 14*4) && (offsetof(RblBillboard, axis) == 17*4) && (offsetof(RblBillboard, roundness) == 20*4) &&
+                                      (offsetof(RblBillboard, source) + sizeof(Rectangle) - offsetof(RblBillboard, position) == 12*sizeof(float)) &&
                                       (offsetof(RblBillboard, rotation) - offsetof(RblBillboard, position) == 7*sizeof(float)) &&
                                       (offsetof(RblBillboard, origin) == offsetof(RblBillboard, size) + 2*sizeof(float)) &&
                                       (offsetof(RblBillboard, roundness) + sizeof(float) - offsetof(RblBillboard, up) == 7*sizeof(float)) &&
@@ -5209,8 +5212,6 @@ static const unsigned int rbl__billboardWordBias[2][21] = {
 #undef RBL__BF
 #undef RBL__BU
 #undef RBL__EXP
-typedef char rbl__billboardWords[((offsetof(RblBillboard, tint) == 12*4) && (offsetof(RblBillboard, facing) == 13*4) && (offsetof(RblBillboard, up) == 14*4) &&
-                                   (offsetof(RblBillboard, roundness) == 20*4) && (sizeof(RblBillboard) >= 21*4))? 1 : -1];
 
 // The words' check one at a time (the reference of the four-lane one below, and where there is none)
 static inline bool rbl__billboardWordsOkScalar(const RblBillboard *b)
@@ -6010,12 +6011,11 @@ RBL__FORCE_INLINE void rbl__facingKey(rbl__BatchState *batch, const RblBillboard
     if (batch->keyValid && (((w[0] ^ k[0]) | (w[1] ^ k[1]) | (w[2] ^ k[2]) | (w[3] ^ k[3]) | (w[4] ^ k[4]) | (w[5] ^ k[5]) | (w[6] ^ k[6])) == 0u)) return;
     memcpy(batch->keyWords, w, sizeof(w));
     batch->keyValid = true;
-    const float l2 = rbl__len2(b->up);
-    batch->keyHeightScale = ((b->facing == RBL_FACING_CAMERA_PLANE) && (l2 > 0.0f))? sqrtf(l2) : 1.0f;
     const bool plane = (b->facing == RBL_FACING_CAMERA_PLANE);
+    const float l2 = rbl__len2(b->up);
+    batch->keyHeightScale = (plane && (l2 > 0.0f))? sqrtf(l2) : 1.0f;
     batch->backMode = rbl__backMode(&batch->view, b->facing, plane? b->up : rbl__tame(b->up), plane? b->axis : rbl__tame(b->axis), &batch->backNormal);
 }
-typedef char rbl__facingKeyWords[(offsetof(RblBillboard, axis) + sizeof(Vector3) - offsetof(RblBillboard, facing) == 7*4)? 1 : -1];
 
 // Whether billboard b (after rbl__facingKey) lies wholly outside one culling plane: its
 // corners lie within the sphere about the pivot through the farthest footprint corner (rotation
