@@ -65,6 +65,8 @@
 *            RblBeginBatch(&batch, camera);        // inside BeginMode3D
 *            for (int i = 0; i < n; i++) RblBatchAdd(&batch, mat, &billboards[i]);   // false: skipped
 *            RblEndBatch(&batch);
+*          An array of one material goes in one call, the same as the loop at less cost a billboard:
+*            RblBatchAddMany(&batch, mat, billboards, n);   // returns how many were not skipped
 *       3. Packed maps: albedo + one RGBA8 material texture (+ emissive); the reported layout selects
 *          the program variant, so absent maps are never sampled (MATERIAL LAYOUT).
 *            RblMaterialSource src = RBL_ZERO;
@@ -1370,6 +1372,7 @@ RBLAPI bool RblIsBatchValid(RblBatch batch);                                  //
 RBLAPI void RblUnloadBatch(RblBatch *batch);                                  // Unload batch buffers
 RBLAPI bool RblBeginBatch(RblBatch *batch, Camera3D camera);                  // Start collecting billboards seen by camera; false = rejected (billboards still pending, bad camera)
 RBLAPI bool RblBatchAdd(RblBatch *batch, Material material, const RblBillboard *billboard); // Add one billboard; false = skipped (bad input)
+RBLAPI int RblBatchAddMany(RblBatch *batch, Material material, const RblBillboard *billboards, int count); // Add count billboards of one material, as count RblBatchAdd calls would (the same skips and log line) at less cost a billboard; returns how many were not skipped
 RBLAPI bool RblBatchAddFade(RblBatch *batch, Material material, const RblBillboard *billboard, const RblFade *fade); // Add one billboard cross-faded to a second frame (a crossFade program draws it); false = skipped (bad input)
 RBLAPI void RblEndBatch(RblBatch *batch);                                     // Upload once (unless the adds wrote the mapped GPU buffer) and draw each material run
 RBLAPI void RblDrawBillboard(Camera3D camera, Material material, RblBillboard billboard); // Draw one billboard now (immediate path)
@@ -1907,6 +1910,8 @@ typedef struct rbl__State {
     bool gbufferForceFailure;          // Test hook: pretend MRT / float targets are unavailable
     bool gbufferFourDrawBuffers;       // Test hook: pretend GL_MAX_DRAW_BUFFERS is 4 (ES 3 / WebGL2's minimum)
     bool gbufferDriverDepth;           // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
+    long long stretchFours;            // Tests' count: fours RblBatchAddMany took four lanes at a time
+    long long stretchSingles;          // ... and billboards its stretches took one at a time
 #endif
     char problem[512];                 // Why the last internal step failed (its public caller logs it once)
     char failure[512];                 // The last refusal line without "RBL: " (RblGetFailureReason)
@@ -6228,6 +6233,242 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
     if (batch == NULL) return false;
     rbl__BatchRun *run = (billboard != NULL)? rbl__recordRun(batch, &material) : NULL;
     bool added = ((run != NULL) && (rbl__addToRecordRun(batch, run, billboard) >= 0)) || rbl__batchAdd(batch, &material, billboard, NULL, "RblBatchAdd");
+    pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
+    return added;
+}
+
+#define RBL__STRETCH_AHEAD 1024      // Bytes ahead of the stretch's reads and writes that it prefetches
+
+// A stretch of billboards continuing run while their facing, up and axis repeat the batch's key
+// (rbl__facingKey made it from a billboard that passed every check): rbl__addToRecordRun's steps,
+// the key's own checks (facing range, its words' bounds, up and axis stored as given) done once for
+// the stretch and what every billboard reads kept in locals (records written through a char pointer
+// could alias the batch). Returns how many it took, added or culled; stops at the first the general
+// steps must take (another key, a polygon frame, bad input), at most room
+RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run, const RblBillboard *b, int room, int *culledOut)
+{
+    unsigned int key[7];
+    memcpy(key, batch->keyWords, sizeof(key));
+    const bool plane = ((int)key[0] == RBL_FACING_CAMERA_PLANE);
+    Vector3 up, axis;
+    memcpy(&up, key + 1, sizeof(up));
+    memcpy(&axis, key + 4, sizeof(axis));
+    if (!plane && ((fabsf(up.x) > 1e12f) || (fabsf(up.y) > 1e12f) || (fabsf(up.z) > 1e12f) ||
+                   (fabsf(axis.x) > 1e12f) || (fabsf(axis.y) > 1e12f) || (fabsf(axis.z) > 1e12f))) return 0;   // rbl__tame would change them
+    unsigned char *out = (unsigned char *)((batch->mapped != NULL)? batch->mapped : (rbl__BatchRecord *)(void *)batch->vertices) + (size_t)batch->count*sizeof(rbl__BatchRecord);
+    const bool cull = (batch->planeCount > 0);
+    const float heightScale = batch->keyHeightScale, sphereScale = ((batch->planeCount == 4) && ((int)key[0] == RBL_FACING_AXIS))? 9.0f : 1.0f;
+    const int backMode = batch->backMode;
+    const Vector3 backNormal = batch->backNormal, eye = batch->view.eye;
+    bool seekBack = !batch->backFacing && (rbl__state.shadowPass == NULL) && (backMode != RBL__BACK_NEVER);
+    const unsigned int *bias = rbl__billboardWordBias[plane];
+    int taken = 0, stored = 0, culled = 0;
+#if defined(RBL_INSTRUMENTS)
+    const long long foursBefore = rbl__state.stretchFours;
+#endif
+#if defined(RBL__SSE2)
+    // Words 13..19 equal the key's, checked when it was made; 12 (tint) is not a float: words 0..11
+    // and 20 (roundness) are left to check
+    const __m128i expBits = _mm_set1_epi32(0x7f800000), bias0 = _mm_loadu_si128((const __m128i *)(const void *)bias),
+                  bias1 = _mm_loadu_si128((const __m128i *)(const void *)(bias + 4)), bias2 = _mm_loadu_si128((const __m128i *)(const void *)(bias + 8));
+    const __m128i keyA = _mm_set_epi32((int)key[2], (int)key[1], (int)key[0], 0), keyB = _mm_loadu_si128((const __m128i *)(const void *)(key + 3));
+    const __m128i tailKeep = _mm_set_epi32(0, 0, (int)(RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER), -1);
+    const unsigned int bias20 = bias[20];
+    __m128 planes[4][2];
+    for (int e = 0; e < 4; e++) for (int h = 0; h < 2; h++) planes[e][h] = _mm_loadu_ps(&batch->cull[e][4*h]);
+    // Four billboards at a time, one per lane for culling and the back test (the same sums, in the
+    // same order, as one at a time); a four holding one the stretch stops at goes one at a time
+    const int planeCount = cull? batch->planeCount : 0;
+    __m128 planeLanes[6][4];
+    for (int k = 0; k < planeCount; k++) for (int e = 0; e < 4; e++) planeLanes[k][e] = _mm_set1_ps(batch->cull[e][k]);
+    const __m128 absBits = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), zeroLanes = _mm_setzero_ps(),
+                 heightLanes = _mm_set1_ps(heightScale), sphereLanes = _mm_set1_ps(sphereScale), slackLanes = _mm_set1_ps(1.0f + 1e-5f),
+                 eyeX = _mm_set1_ps(eye.x), eyeY = _mm_set1_ps(eye.y), eyeZ = _mm_set1_ps(eye.z),
+                 normalX = _mm_set1_ps(backNormal.x), normalY = _mm_set1_ps(backNormal.y), normalZ = _mm_set1_ps(backNormal.z);
+    const bool laneBack = (backMode == RBL__BACK_PLANE) || (backMode == RBL__BACK_ALWAYS);
+    const __m128i tailExp = _mm_set_epi32(0, 0, 0, 0x7f800000), tailBias = _mm_set_epi32(0, 0, 0, (int)bias[20]), tintLane = _mm_set_epi32(0, 0, 0, -1);
+    static const unsigned char rbl__laneCount[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+    while ((taken + 4 <= room) && (!seekBack || laneBack))
+    {
+        const unsigned char *in = (const unsigned char *)b;
+        // The hardware's stream prefetch alone leaves the loop waiting on memory (both streams)
+        for (int line = 0; line < 4*(int)sizeof(RblBillboard); line += 64)
+        {
+            _mm_prefetch((const char *)(in + RBL__STRETCH_AHEAD + line), _MM_HINT_T0);
+            _mm_prefetch((const char *)(out + RBL__STRETCH_AHEAD + line), _MM_HINT_T0);
+        }
+        // Lanes: pivot x, y, z and size x, y, origin x, y of the four
+        __m128 x = _mm_loadu_ps((const float *)(const void *)in), y = _mm_loadu_ps((const float *)(const void *)(in + sizeof(RblBillboard))),
+               z = _mm_loadu_ps((const float *)(const void *)(in + 2*sizeof(RblBillboard))), sizeX = _mm_loadu_ps((const float *)(const void *)(in + 3*sizeof(RblBillboard)));
+        _MM_TRANSPOSE4_PS(x, y, z, sizeX);
+        __m128 outside = zeroLanes;
+        if (planeCount > 0)
+        {
+            __m128 again = _mm_loadu_ps((const float *)(const void *)(in + 12)), sizeY = _mm_loadu_ps((const float *)(const void *)(in + sizeof(RblBillboard) + 12)),
+                   originX = _mm_loadu_ps((const float *)(const void *)(in + 2*sizeof(RblBillboard) + 12)), originY = _mm_loadu_ps((const float *)(const void *)(in + 3*sizeof(RblBillboard) + 12));
+            _MM_TRANSPOSE4_PS(again, sizeY, originX, originY);      // (again: size x)
+            const __m128 sx = _mm_and_ps(sizeX, absBits), sy = _mm_mul_ps(_mm_and_ps(sizeY, absBits), heightLanes);
+            const __m128 ex = _mm_max_ps(_mm_and_ps(originX, absBits), _mm_and_ps(_mm_sub_ps(sx, originX), absBits)),
+                         ey = _mm_max_ps(_mm_and_ps(originY, absBits), _mm_and_ps(_mm_sub_ps(sy, originY), absBits));
+            const __m128 r2 = _mm_mul_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(ex, ex), _mm_mul_ps(ey, ey)), sphereLanes), slackLanes);
+            for (int k = 0; k < planeCount; k++)
+            {
+                const __m128 d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(planeLanes[k][0], x), _mm_mul_ps(planeLanes[k][1], y)), _mm_mul_ps(planeLanes[k][2], z)), planeLanes[k][3]);
+                outside = _mm_or_ps(outside, _mm_and_ps(_mm_cmplt_ps(d, zeroLanes), _mm_cmpgt_ps(_mm_mul_ps(d, d), r2)));
+            }
+        }
+        const int outMask = _mm_movemask_ps(outside);
+        // Each is checked and written where the next record goes; a culled one is written over by
+        // the next, and a four that fails a check is not counted (the slots past count are free)
+        __m128i carry = _mm_setzero_si128(), same = _mm_set1_epi32(-1);
+        unsigned int polygon = 0u;
+        unsigned char *o = out;
+        for (int l = 0; l < 4; l++)
+        {
+            const unsigned char *q = in + (size_t)l*sizeof(RblBillboard);
+            const __m128i v0 = _mm_loadu_si128((const __m128i *)(const void *)q), v1 = _mm_loadu_si128((const __m128i *)(const void *)(q + 16)),
+                          v2 = _mm_loadu_si128((const __m128i *)(const void *)(q + 32)), v3 = _mm_loadu_si128((const __m128i *)(const void *)(q + 48)),
+                          v4 = _mm_loadu_si128((const __m128i *)(const void *)(q + 64)), tail = _mm_loadl_epi64((const __m128i *)(const void *)(q + 80));
+            unsigned int flags;
+            memcpy(&flags, q + offsetof(RblBillboard, flags), sizeof(flags));
+            carry = _mm_or_si128(carry, _mm_or_si128(_mm_or_si128(_mm_add_epi32(_mm_and_si128(v0, expBits), bias0), _mm_add_epi32(_mm_and_si128(v1, expBits), bias1)),
+                                                     _mm_or_si128(_mm_add_epi32(_mm_and_si128(v2, expBits), bias2), _mm_add_epi32(_mm_and_si128(tail, tailExp), tailBias))));
+            same = _mm_and_si128(same, _mm_and_si128(_mm_or_si128(_mm_cmpeq_epi32(v3, keyA), tintLane), _mm_cmpeq_epi32(v4, keyB)));
+            polygon |= rbl__polygonHandle(flags);
+            _mm_storeu_si128((__m128i *)(void *)o, v0);
+            _mm_storeu_si128((__m128i *)(void *)(o + 16), v1);
+            _mm_storeu_si128((__m128i *)(void *)(o + 32), v2);
+            _mm_storeu_si128((__m128i *)(void *)(o + 48), v3);
+            _mm_storeu_si128((__m128i *)(void *)(o + 64), v4);
+            _mm_storel_epi64((__m128i *)(void *)(o + 80), _mm_and_si128(tail, tailKeep));
+            o += ((outMask >> l) & 1)? 0 : sizeof(rbl__BatchRecord);
+        }
+        if ((_mm_movemask_ps(_mm_castsi128_ps(carry)) != 0) || (_mm_movemask_epi8(same) != 0xffff) || (polygon != 0u)) break;
+        const int kept = 4 - rbl__laneCount[outMask];
+        out = o;
+        stored += kept;
+        culled += 4 - kept;
+        if (seekBack && (kept > 0))
+        {
+            // rbl__backAt's PLANE test: n . (eye - p) < 0, in rbl__dot's order
+            const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(normalX, _mm_sub_ps(eyeX, x)), _mm_mul_ps(normalY, _mm_sub_ps(eyeY, y))), _mm_mul_ps(normalZ, _mm_sub_ps(eyeZ, z)));
+            const int backMask = ((backMode == RBL__BACK_ALWAYS)? 15 : _mm_movemask_ps(_mm_cmplt_ps(d, zeroLanes))) & ~outMask;
+            if (backMask != 0) { batch->backFacing = true; seekBack = false; }
+        }
+        taken += 4;
+        b += 4;
+#if defined(RBL_INSTRUMENTS)
+        rbl__state.stretchFours++;
+#endif
+    }
+#endif
+    for (; taken < room; taken++, b++)
+    {
+        const unsigned char *in = (const unsigned char *)b;
+        Vector3 position;
+        Vector2 size, origin;
+        memcpy(&position, in + offsetof(RblBillboard, position), sizeof(position));
+        memcpy(&size, in + offsetof(RblBillboard, size), sizeof(size));
+        memcpy(&origin, in + offsetof(RblBillboard, origin), sizeof(origin));
+#if defined(RBL__SSE2)
+        const __m128i v0 = _mm_loadu_si128((const __m128i *)(const void *)in), v1 = _mm_loadu_si128((const __m128i *)(const void *)(in + 16)),
+                      v2 = _mm_loadu_si128((const __m128i *)(const void *)(in + 32)), v3 = _mm_loadu_si128((const __m128i *)(const void *)(in + 48)),
+                      v4 = _mm_loadu_si128((const __m128i *)(const void *)(in + 64)), tail = _mm_loadl_epi64((const __m128i *)(const void *)(in + 80));
+        const __m128i carry = _mm_or_si128(_mm_or_si128(_mm_add_epi32(_mm_and_si128(v0, expBits), bias0), _mm_add_epi32(_mm_and_si128(v1, expBits), bias1)),
+                                           _mm_add_epi32(_mm_and_si128(v2, expBits), bias2));
+        const unsigned int roundness = (unsigned int)_mm_cvtsi128_si32(tail), flags = (unsigned int)_mm_cvtsi128_si32(_mm_srli_si128(tail, 4));
+        const int same = (_mm_movemask_epi8(_mm_cmpeq_epi32(v3, keyA)) | 0xf) & _mm_movemask_epi8(_mm_cmpeq_epi32(v4, keyB));
+        if ((same != 0xffff) || (_mm_movemask_ps(_mm_castsi128_ps(carry)) != 0) || ((((roundness & 0x7f800000u) + bias20) & 0x80000000u) != 0u) ||
+            (rbl__polygonHandle(flags) != 0u)) break;
+#else
+        unsigned int w[7], flags;
+        memcpy(w, in + offsetof(RblBillboard, facing), sizeof(w));
+        memcpy(&flags, in + offsetof(RblBillboard, flags), sizeof(flags));
+        if ((((w[0] ^ key[0]) | (w[1] ^ key[1]) | (w[2] ^ key[2]) | (w[3] ^ key[3]) | (w[4] ^ key[4]) | (w[5] ^ key[5]) | (w[6] ^ key[6])) != 0u) ||
+            (rbl__polygonHandle(flags) != 0u) || !rbl__billboardWordsOk(b)) break;
+#endif
+        if (cull)
+        {
+            // rbl__culled's sums, in its order
+            float sx = fabsf(size.x), sy = fabsf(size.y)*heightScale;
+            float ax = fabsf(origin.x), bx = fabsf(sx - origin.x), ay = fabsf(origin.y), by = fabsf(sy - origin.y);
+            float ex = (ax > bx)? ax : bx, ey = (ay > by)? ay : by;
+            float r2 = (ex*ex + ey*ey)*sphereScale;
+            r2 *= 1.0f + 1e-5f;
+#if defined(RBL__SSE2)
+            const __m128 x = _mm_set1_ps(position.x), y = _mm_set1_ps(position.y), z = _mm_set1_ps(position.z), r = _mm_set1_ps(r2), zero = _mm_setzero_ps();
+            __m128 outside = zero;
+            for (int h = 0; h < 2; h++)
+            {
+                __m128 d = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(planes[0][h], x), _mm_mul_ps(planes[1][h], y)), _mm_mul_ps(planes[2][h], z)), planes[3][h]);
+                outside = _mm_or_ps(outside, _mm_and_ps(_mm_cmplt_ps(d, zero), _mm_cmpgt_ps(_mm_mul_ps(d, d), r)));
+            }
+            if (_mm_movemask_ps(outside) != 0) { culled++; continue; }
+#else
+            if (rbl__outsidePlanesScalar(batch->cull, position, r2)) { culled++; continue; }
+#endif
+        }
+#if defined(RBL__SSE2)
+        _mm_storeu_si128((__m128i *)(void *)out, v0);
+        _mm_storeu_si128((__m128i *)(void *)(out + 16), v1);
+        _mm_storeu_si128((__m128i *)(void *)(out + 32), v2);
+        _mm_storeu_si128((__m128i *)(void *)(out + 48), v3);
+        _mm_storeu_si128((__m128i *)(void *)(out + 64), v4);
+        _mm_storel_epi64((__m128i *)(void *)(out + 80), _mm_and_si128(tail, tailKeep));
+#else
+        flags &= (RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER);
+        memcpy(out, in, offsetof(RblBillboard, flags));
+        memcpy(out + offsetof(RblBillboard, flags), &flags, sizeof(flags));
+#endif
+        out += sizeof(rbl__BatchRecord);
+        stored++;
+        if (seekBack)
+        {
+            // rbl__backAt's test, its PLANE case with the values in locals
+            const bool back = (backMode == RBL__BACK_ALWAYS) ||
+                              ((backMode == RBL__BACK_PLANE)? (rbl__dot(backNormal, rbl__sub(eye, position)) < 0.0f) : rbl__backAt(&batch->view, backMode, backNormal, position));
+            if (back) { batch->backFacing = true; seekBack = false; }
+        }
+    }
+    run->count += stored;
+    batch->count += stored;
+    *culledOut += culled;
+#if defined(RBL_INSTRUMENTS)
+    rbl__state.stretchSingles += taken - 4*(rbl__state.stretchFours - foursBefore);
+#endif
+    return taken;
+}
+
+int RblBatchAddMany(RblBatch *pub, Material material, const RblBillboard *billboards, int count)
+{
+    rbl__BatchState *batch = rbl__batchForAdd(pub, "RblBatchAddMany");
+    if (batch == NULL) return 0;
+    if ((count < 0) || ((count > 0) && (billboards == NULL)))
+    {
+        TraceLog(LOG_WARNING, "RBL: RblBatchAddMany: %s", (count < 0)? "negative count" : "NULL billboards");
+        return 0;
+    }
+    int added = 0;
+    for (int i = 0; i < count; )
+    {
+        rbl__BatchRun *run = rbl__recordRun(batch, &material);
+        int r = (run != NULL)? rbl__addToRecordRun(batch, run, &billboards[i]) : -1;
+        if (r < 0) r = rbl__batchAdd(batch, &material, &billboards[i], NULL, "RblBatchAddMany")? 1 : 0;
+        else r = 1;
+        added += r;
+        i++;
+        // The billboards after it that repeat its key go in one stretch
+        run = ((i < count) && batch->keyValid)? rbl__recordRun(batch, &material) : NULL;
+        if (run != NULL)
+        {
+            int room = batch->capacity - batch->count, culled = 0;
+            if (room > count - i) room = count - i;
+            int taken = rbl__addStretch(batch, run, &billboards[i], room, &culled);
+            batch->culled += culled;
+            added += taken;
+            i += taken;
+        }
+    }
     pub->capacity = batch->capacity; pub->count = batch->count - batch->extraSlots + batch->culled; pub->skipped = batch->skipped; pub->culled = batch->culled;
     return added;
 }

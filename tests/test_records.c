@@ -583,10 +583,248 @@ static void test_batch_records_vertex_stage_emits_the_vertex_paths_corners_norma
     RblUnloadLitShader(&lit);
 }
 
+// ---- RblBatchAddMany ------------------------------------------------------------------------------
+// The case set for a bulk add: stretches of 1-40 billboards sharing a key (facing, up, axis; a new
+// key changes one word of it), pivots in and out of the view (culled at every lane of a four),
+// CAMERA_PLANE cards with a tilted caller up whose back some pivots see, FIXED cards facing away,
+// FIXED directions long enough to be tamed, flag bits the record drops, and bad billboards (each
+// checked word NaN, Inf or past its bound, one word of up or axis NaN or Inf, a bad facing, a
+// polygon handle no atlas has)
+static void manySet(unsigned int seed, RblBillboard *set, int n)
+{
+    RblBillboard b;
+    memset(&b, 0, sizeof(b));
+    b.size = (Vector2){ 0.3f, 0.4f }; b.origin = (Vector2){ 0.15f, 0.0f };
+    int left = 0;
+    for (int k = 0; k < n; k++)
+    {
+        if (left-- <= 0)
+        {
+            left = 1 + (int)(rtRandom(&seed)%40u);
+            unsigned int change = rtRandom(&seed)%9u;
+            if (change == 0) b.facing = (int)(rtRandom(&seed)%4u);
+            else if (change < 4) ((float *)&b.up)[change - 1] = (rtRandom(&seed)%3u == 0)? 0.0f : rtRandomRange(&seed, -1.0f, 1.0f);
+            else if (change < 7) ((float *)&b.axis)[change - 4] = rtRandomRange(&seed, -1.0f, 1.0f);
+            else if (change == 7) { b.facing = RBL_FACING_CAMERA_PLANE; b.up = (Vector3){ 0.0f, 1.0f, (rtRandom(&seed) & 1u)? 1.0f : -1.0f }; b.axis = (Vector3){ 0.0f, 0.0f, 0.0f }; }
+            else { b.facing = RBL_FACING_FIXED; b.axis = (Vector3){ 0.0f, 0.0f, -1.0f }; b.up = (Vector3){ 0.0f, (rtRandom(&seed) & 1u)? 3e12f : 1.0f, 0.0f }; }
+        }
+        RblBillboard c = b;
+        bool out = (rtRandom(&seed)%5u) == 0;
+        c.position = (Vector3){ rtRandomRange(&seed, -2.0f, 2.0f)*(out? 6.0f : 1.0f), rtRandomRange(&seed, -1.5f, 1.5f), rtRandomRange(&seed, -2.0f, 2.0f) };
+        c.size = (Vector2){ rtRandomRange(&seed, -0.5f, 0.5f), rtRandomRange(&seed, -0.5f, 0.5f) };
+        c.origin = (Vector2){ rtRandomRange(&seed, -0.3f, 0.3f), rtRandomRange(&seed, -0.3f, 0.3f) };
+        c.rotation = rtRandomRange(&seed, -400.0f, 400.0f);
+        c.source = (Rectangle){ 1.0f, 2.0f, 5.0f, 6.0f };
+        c.tint = (Color){ (unsigned char)rtRandom(&seed), 200, 100, 255 };
+        c.roundness = rtRandomRange(&seed, 0.0f, 1.0f);
+        c.flags = rtRandom(&seed) & (RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER | 12u | ((rtRandom(&seed)%7u == 0)? 0xff000000u : 0u));
+        unsigned int bad = rtRandom(&seed)%400u;
+        if (bad < 13)
+        {
+            // one checked word: 0..11 (pivot, size, origin, rotation, source) or 20 (roundness)
+            static const float wrong[4] = { 1e30f, -1e30f, 0.0f, 0.0f };
+            unsigned int word = (bad < 12)? bad : 20u, how = rtRandom(&seed)%4u;
+            float v = (how < 2)? wrong[how] : (how == 2)? NAN : INFINITY;
+            if ((word == 20u) && (how < 2)) v = NAN;          // roundness need only be finite
+            memcpy((unsigned char *)&c + 4u*word, &v, sizeof(v));
+        }
+        else if (bad == 13) c.facing = 9;
+        else if (bad == 14) c.flags |= 0x10u;                 // a polygon handle (no atlas loaded here)
+        else if (bad < 21)
+        {
+            // one word of the key (up, axis) NaN or Inf, the rest of it the stretch's
+            float v = (rtRandom(&seed) & 1u)? NAN : -INFINITY;
+            memcpy((unsigned char *)&c + offsetof(RblBillboard, up) + 4u*(bad - 15u), &v, sizeof(v));
+        }
+        set[k] = c;
+    }
+}
+
+// Runs of 8 CAMERA_POSITION billboards (every 200th onward) moved to the edge of the batch's culling
+// planes: each one's sphere (rbl__culled's) 1.000002-1.000008 of its radius outside one plane, where
+// only the culling sums' rounding slack keeps it
+static void manyEdges(const rbl__BatchState *st, unsigned int seed, RblBillboard *set, int n)
+{
+    if (st->planeCount == 0) return;
+    for (int i = 0; i + 8 <= n; i += 200)
+    for (int j = i; j < i + 8; j++)
+    {
+        RblBillboard *b = &set[j];
+        b->facing = RBL_FACING_CAMERA_POSITION; b->up = (Vector3){ 0.0f, 0.0f, 0.0f }; b->axis = b->up;
+        b->flags = 0u; b->roundness = 0.0f;
+        b->position = (Vector3){ 0.0f, 0.0f, 0.0f };
+        int k = (int)(rtRandom(&seed)%(unsigned int)st->planeCount);
+        float sx = fabsf(b->size.x), sy = fabsf(b->size.y);
+        float ax = fabsf(b->origin.x), bx = fabsf(sx - b->origin.x), ay = fabsf(b->origin.y), by = fabsf(sy - b->origin.y);
+        float ex = (ax > bx)? ax : bx, ey = (ay > by)? ay : by;
+        double r = sqrt((double)(ex*ex + ey*ey))*(1.0 + 2e-6*(double)(1 + (j % 4))), d = (double)st->cull[3][k];
+        double move = d + r;                       // n.p' + d = -r after p' = p - move n
+        b->position = (Vector3){ (float)(-move*st->cull[0][k]), (float)(-move*st->cull[1][k]), (float)(-move*st->cull[2][k]) };
+    }
+}
+
+typedef struct ManyRun { int added, count, skipped, culled, warned; } ManyRun;
+
+// One batch of set through RblBatchAdd (chunks NULL) or RblBatchAddMany in chunks of the given sizes
+// (cycled), materials m[(k/300) % mats]; left begun
+static ManyRun manyAdd(RblBatch *batch, Camera3D cam, const Material *m, int mats, const RblBillboard *set, int n, const int *chunks, int chunkCount)
+{
+    ManyRun r = { 0, 0, 0, 0, 0 };
+    int before = warnings;
+    RblBeginBatch(batch, cam);
+    for (int k = 0, c = 0; k < n; )
+    {
+        int size = (chunks == NULL)? 1 : chunks[c++ % chunkCount];
+        if (size > n - k) size = n - k;
+        if ((k/300) != ((k + size - 1)/300)) size = 300 - k%300;        // one material a call
+        const Material mat = m[(k/300) % mats];
+        if (chunks == NULL) r.added += RblBatchAdd(batch, mat, &set[k])? 1 : 0;
+        else r.added += RblBatchAddMany(batch, mat, &set[k], size);
+        k += size;
+    }
+    r.count = batch->count; r.skipped = batch->skipped; r.culled = batch->culled; r.warned = warnings - before;
+    return r;
+}
+
+// Slots [0, count) of two batches, their runs and flags: the first difference, or NULL
+static const char *manyDiffer(rbl__BatchState *a, rbl__BatchState *b, int *at)
+{
+    *at = -1;
+    if ((a->count != b->count) || (a->culled != b->culled) || (a->skipped != b->skipped)) return "counts";
+    if ((a->records != b->records) || (a->backFacing != b->backFacing) || (a->extraSlots != b->extraSlots)) return "records / back-facing / extra slots";
+    if (a->runCount != b->runCount) return "run count";
+    for (int r = 0; r < a->runCount; r++)
+        if ((a->runs[r].first != b->runs[r].first) || (a->runs[r].count != b->runs[r].count) || !rbl__sameMaterial(&a->runs[r].material, &b->runs[r].material)) { *at = r; return "a run"; }
+    if (a->records && (!rbl__recordsToCpu(a) || !rbl__recordsToCpu(b))) return "read back";
+    size_t slot = a->records? sizeof(rbl__BatchRecord) : 4*sizeof(RblVertex);
+    for (int i = 0; i < a->count; i++)
+        if (memcmp((const unsigned char *)a->vertices + (size_t)i*slot, (const unsigned char *)b->vertices + (size_t)i*slot, slot) != 0) { *at = i; return "slot bytes"; }
+    for (int i = 0; i < a->count*(int)slot/4; i++)
+    {
+        float v;
+        memcpy(&v, (const unsigned char *)b->vertices + 4u*(unsigned int)i, sizeof(v));
+        if (!a->records && !rtFinite(v)) { *at = i; return "a NaN/Inf in the vertices"; }
+    }
+    return NULL;
+}
+
+// RblBatchAddMany leaves a batch as the same billboards through RblBatchAdd one at a time do, bit
+// for bit: slots (records in the mapped buffer, on the CPU, or vertices), runs, counts, the
+// back-facing flag, the return (billboards not skipped) and one log line a batch; chunks of every
+// size from 1 (splitting fours at each lane) to the whole set, a batch growing during a call, two
+// materials; a perspective view (6 culling planes), no culling, an orthographic view (backs seen
+// everywhere or per axis), sorted (records kept on the CPU), a shadow pass (4 planes, AXIS
+// spheres widened), pivots at the planes' edges, and backs seen only on culled cards (no flag). Bad calls (NULL, negative count) log once and change nothing
+static void test_batch_add_many_equals_adding_one_at_a_time_bit_for_bit(void)
+{
+    enum { MANY = 3000 };
+    static RblBillboard set[MANY];
+    static const int chunks[] = { 1, 2, 3, 4, 5, 7, 8, 13, 64, 1, 1, 600, 3 }, whole[] = { MANY };
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1;
+    Shader lit = RblLoadLitShader(desc);
+    Material m[2] = { LoadMaterialDefault(), LoadMaterialDefault() };
+    m[0].shader = lit; m[1].shader = lit;
+    m[1].params[RBL_PARAM_ALPHA_CUTOFF] = 0.5f;
+    Camera3D persp = frontCamera(), ortho = frontCamera();
+    persp.position = (Vector3){ 0.5f, 1.0f, 6.0f };
+    ortho.projection = CAMERA_ORTHOGRAPHIC; ortho.fovy = 6.0f; ortho.position = (Vector3){ 1.0f, 2.0f, 6.0f };
+    RenderTexture2D rt = LoadRenderTexture(64, 64);
+    RblLight sun = litDirectional((Vector3){ -0.4f, -1.0f, -0.3f }, 1.0f);
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1;
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    const char *names[7] = { "perspective, culled", "no culling", "orthographic", "sorted", "shadow pass", "two materials, whole set", "backs seen only behind the eye" };
+    int compared = 0, mapped = 0, culledAll = 0, skippedAll = 0, backs = 0;
+    long long foursAll = 0, singlesAll = 0;
+    for (int c = 0; c < 7; c++)
+    for (int seedIndex = 0; seedIndex < 3; seedIndex++)
+    {
+        manySet(7u + 13u*(unsigned int)seedIndex + 101u*(unsigned int)c, set, MANY);
+        for (int k = 0; (c == 6) && (k < MANY); k++)
+        {
+            // front-facing cards, every 9th behind the eye (culled): the batch sees no back
+            set[k].facing = RBL_FACING_CAMERA_PLANE; set[k].up = (Vector3){ 0.0f, 1.0f, 0.0f }; set[k].axis = (Vector3){ 0.0f, 0.0f, 0.0f };
+            if (k % 9 == 0) set[k].position.z = 9.0f;
+        }
+        const bool grows = (seedIndex == 1);       // a read-back at growth keeps the rest on the CPU
+        RblBatch one = RblLoadBatch(grows? 64 : MANY), many = RblLoadBatch(grows? 64 : MANY);
+        one.noCull = many.noCull = (c == 1);
+        one.sort = many.sort = (c == 3)? RBL_SORT_BACK_TO_FRONT : RBL_SORT_NONE;
+        Camera3D cam = (c == 2)? ortho : persp;
+        ManyRun a = { 0 }, b = { 0 };
+        const char *why = "batches not loaded";
+        int at = -1;
+        bool shadow = (c == 4), wasMapped = false, manyBack = false;
+        if (shadow && !RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, 4.0f)) { RT_CHECK(false, "shadow pass refused"); continue; }
+        if (!shadow) { BeginTextureMode(rt); BeginMode3D(cam); }
+        rbl__BatchState *sa = rbl__batchState(&one), *sb = rbl__batchState(&many);
+        if ((sa != NULL) && (sb != NULL))
+        {
+            RblBeginBatch(&one, cam);
+            manyEdges(sa, 5u + (unsigned int)c, set, MANY);
+            RblEndBatch(&one);
+            a = manyAdd(&one, cam, m, (c == 5)? 2 : 1, set, MANY, NULL, 0);
+            long long fours = rbl__state.stretchFours, singles = rbl__state.stretchSingles;
+            b = manyAdd(&many, cam, m, (c == 5)? 2 : 1, set, MANY, (c == 5)? whole : chunks, (c == 5)? 1 : (int)(sizeof(chunks)/sizeof(chunks[0])));
+            wasMapped = sb->mapped != NULL;
+            foursAll += rbl__state.stretchFours - fours; singlesAll += rbl__state.stretchSingles - singles;
+            why = manyDiffer(sa, sb, &at);
+            backs += sb->backFacing;
+            manyBack = sb->backFacing;
+        }
+        RblEndBatch(&one); RblEndBatch(&many);
+        if (shadow) RblEndShadowMap(&map);
+        else { EndMode3D(); EndTextureMode(); }
+        RT_CHECK(why == NULL, "%s, seed %d: %s differ (at %d); one at a time %d added %d culled %d skipped, many %d / %d / %d",
+                 names[c], seedIndex, why, at, a.added, a.culled, a.skipped, b.added, b.culled, b.skipped);
+        RT_CHECK((a.added == b.added) && (a.added == a.count), "%s: returns %d vs %d (count %d, culled included)", names[c], a.added, b.added, a.count);
+        RT_CHECK((a.warned == 1) && (b.warned == 1), "%s: %d and %d log lines (one a batch)", names[c], a.warned, b.warned);
+        RT_CHECK(wasMapped == (recMaps() && (c != 3) && !grows), "%s, seed %d: mapped %d", names[c], seedIndex, wasMapped);
+        RT_CHECK((c != 6) || !manyBack, "%s: a culled card's back turned culling off", names[c]);
+        compared += (why == NULL); mapped += wasMapped; culledAll += a.culled; skippedAll += a.skipped;
+        RblUnloadBatch(&one); RblUnloadBatch(&many);
+    }
+    printf("    %d of 21 batches of %d equal bit for bit (%d mapped; %d culled, %d skipped in all; %d seen from behind)\n", compared, MANY, mapped, culledAll, skippedAll, backs);
+    RT_CHECK((culledAll > 3000) && (skippedAll > 1000) && (backs >= 6), "the set must cull, skip and show backs: %d / %d / %d", culledAll, skippedAll, backs);
+    // The stretches took most of them (else the comparison tested the general steps only): four lanes
+    // at a time where the build has SSE2, one at a time otherwise
+    printf("    stretches took %lld fours and %lld one at a time of %d\n", foursAll, singlesAll, 21*MANY);
+#if defined(RBL__SSE2)
+    RT_CHECK(4*foursAll > 21*MANY/2, "four-lane stretches took %lld of %d", 4*foursAll, 21*MANY);
+#else
+    RT_CHECK((foursAll == 0) && (singlesAll > 21*MANY/2), "stretches took %lld of %d", singlesAll, 21*MANY);
+#endif
+    // Bad calls: one line each, nothing added
+    RblBatch batch = RblLoadBatch(0);
+    BeginTextureMode(rt); BeginMode3D(persp);
+    RblBeginBatch(&batch, persp);
+    int before = warnings;
+    int r0 = RblBatchAddMany(&batch, m[0], NULL, 5), r1 = RblBatchAddMany(&batch, m[0], set, -1), r2 = RblBatchAddMany(&batch, m[0], set, 0);
+    RT_CHECK((r0 == 0) && (r1 == 0) && (r2 == 0) && (batch.count == 0) && (batch.skipped == 0) && (warnings - before == 2),
+             "bad calls: returns %d %d %d, count %d, skipped %d, %d lines (2 expected)", r0, r1, r2, batch.count, batch.skipped, warnings - before);
+    RblEndBatch(&batch);
+    before = warnings;
+    int r3 = RblBatchAddMany(&batch, m[0], set, 4);
+    RT_CHECK((r3 == 0) && (warnings - before == 1), "outside RblBeginBatch: %d added, %d lines", r3, warnings - before);
+    EndMode3D(); EndTextureMode();
+    RblUnloadBatch(&batch);
+    RblUnloadShadowMap(&map);
+    UnloadRenderTexture(rt);
+    MemFree(m[0].maps); MemFree(m[1].maps);
+    RblUnloadLitShader(&lit);
+}
+
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_RECORDS_TESTS \
     RT_TEST(test_batch_records_draw_what_vertices_draw_lit_mirrored_turned_and_rounded), \
     RT_TEST(test_batch_records_cast_fill_the_gbuffer_sort_and_turn_to_vertices_like_vertices), \
     RT_TEST(test_batch_records_turned_to_vertices_carry_their_caster_identities), \
     RT_TEST_GLSL3(test_batch_records_vertex_stage_emits_the_vertex_paths_corners_normals_and_tangents), \
-    RT_TEST_GLSL3(test_batch_records_mapped_read_back_bit_for_bit_and_draw_as_kept_ones)
+    RT_TEST_GLSL3(test_batch_records_mapped_read_back_bit_for_bit_and_draw_as_kept_ones), \
+    RT_TEST(test_batch_add_many_equals_adding_one_at_a_time_bit_for_bit)

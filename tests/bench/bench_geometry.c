@@ -2,6 +2,7 @@
 //   raylib     DrawBillboardPro() per billboard, then rlDrawRenderBatchActive()
 //   immediate  RblDrawBillboard() per billboard (one upload and one draw each)
 //   batched    RblBeginBatch(), RblBatchAdd() per billboard, RblEndBatch() (batch loaded once)
+//   batched_many  the same with one RblBatchAddMany() for the frame's array (its own batch)
 //   instanced  RblDrawInstanced() once for the frame's RblInstance array (buffer loaded once)
 //   v03_batched the batched path of the header's 0.3 (bench_geometry_v03.c: that header compiled in
 //              its own translation unit, its own lit program and batch; the same billboards)
@@ -35,8 +36,9 @@
 //   batched_cull90_<N>: over_visible, nocull_over_visible (median per-round ratios), culled (count);
 //   batched_visible_<N>: culled (the part of the bench's box outside the 64x64 view)
 //   <path>: bytes_per_billboard (uploaded), floor_ns_per_billboard (bytes / memcpy GB/s);
-//   <path>_<N>_<rot>: ratio_to_floor; memcpy_64MiB: bandwidth (GB/s, median of 7 copies)
-//   batched_<N>, immediate_<N>, instanced_<N> and raylib_<N>: max_corner_error (world units) against a double-precision
+//   <path>_<N>_<rot>: ratio_to_floor, excl_draw_over_floor (the CPU outside glDraw* over the floor);
+//   memcpy_64MiB: bandwidth (GB/s, median of 7 copies)
+//   batched_<N>, batched_many_<N>, immediate_<N>, instanced_<N> and raylib_<N>: max_corner_error (world units) against a double-precision
 //   DrawBillboardPro, over the unrotated and rotated sets; max_corner_rel_error = that error over
 //   the largest reference corner distance from the world origin (compare with FLT_EPSILON 1.19e-7)
 // Output: rows appended to $BENCH_CSV (see bench.h) and a summary table on stdout.
@@ -73,7 +75,7 @@
 //----------------------------------------------------------------------------------
 // Types and Structures Definition
 //----------------------------------------------------------------------------------
-typedef enum { PATH_RAYLIB = 0, PATH_IMMEDIATE, PATH_BATCHED, PATH_INSTANCED, PATH_V03, PATH_COUNT } BenchPath;
+typedef enum { PATH_RAYLIB = 0, PATH_IMMEDIATE, PATH_BATCHED, PATH_INSTANCED, PATH_V03, PATH_BATCHED_MANY, PATH_COUNT } BenchPath;
 
 // DrawBillboardPro() arguments of one billboard (up is (0,1,0) and tint WHITE for all)
 typedef struct RaylibBillboard {
@@ -128,7 +130,7 @@ typedef struct CaseResult {
 //----------------------------------------------------------------------------------
 // Global Variables Definition
 //----------------------------------------------------------------------------------
-static const char *pathNames[PATH_COUNT] = { "raylib", "immediate", "batched", "instanced", "v03_batched" };
+static const char *pathNames[PATH_COUNT] = { "raylib", "immediate", "batched", "instanced", "v03_batched", "batched_many" };
 static bool v03Available = false;           // the 0.3 baseline is built in and loaded
 static const int counts[] = { 1000, 10000, 100000 };
 #define COUNT_CASES ((int)(sizeof(counts)/sizeof(counts[0])))
@@ -139,6 +141,7 @@ static Texture2D atlas;
 static Shader lit, litInstanced;
 static Material material, materialInstanced;     // same atlas; vertex-buffer and instanced lit shaders
 static RblBatch batch;
+static RblBatch batchMany;           // the same billboards through RblBatchAddMany (its own batch: each maps its own buffer)
 static RblInstanceBuffer instanceBuffer;
 static RblInstancedDesc instancedDesc;
 static RaylibBillboard *raylibSet[2];       // [rotated]
@@ -339,6 +342,13 @@ static void RunFrame(BenchPath path, int n, int rotated, double *out)
             for (int i = 0; i < n; i++) RblBatchAdd(&batch, material, &bbs[i]);
             t1 = BenchNowNs();
             RblEndBatch(&batch);
+        } break;
+        case PATH_BATCHED_MANY:
+        {
+            RblBeginBatch(&batchMany, camera);
+            RblBatchAddMany(&batchMany, material, bbs, n);
+            t1 = BenchNowNs();
+            RblEndBatch(&batchMany);
         } break;
         case PATH_INSTANCED:
         {
@@ -659,7 +669,9 @@ int main(int argc, char **argv)
     v03Available = V03Init(atlas, MAX_BILLBOARDS, light.position, light.intensity, scene.ambient);
     if (!v03Available) printf("bench_geometry: the 0.3 baseline is not built in (no git history) or failed to load: its rows are left out\n");
     batch = RblLoadBatch(MAX_BILLBOARDS);     // enough for the largest case: never grows
+    batchMany = RblLoadBatch(MAX_BILLBOARDS);
     batch.noCull = true;                        // the same work as raylib and 0.3 (the culling rows turn it on)
+    batchMany.noCull = true;
     instanceBuffer = RblLoadInstanceBuffer(MAX_BILLBOARDS);
     if ((target.id == 0) || (atlas.id == 0) || !RblIsBatchValid(batch) || !RblIsInstanceBufferValid(instanceBuffer) || !BuildScene())
     {
@@ -680,7 +692,7 @@ int main(int argc, char **argv)
     // immediate case (seconds per frame) runs afterwards in 3 rounds of its own beside raylib.
     const BenchTiming timing = { 1, 5, 15, 3.0e9 }, slowTiming = { 0, 3, 3, 0.0 };
     char name[64];
-    double batchedError[COUNT_CASES] = { 0 }, batchedScale[COUNT_CASES] = { 0 };
+    double batchedError[COUNT_CASES] = { 0 }, batchedScale[COUNT_CASES] = { 0 }, manyError[COUNT_CASES] = { 0 }, manyScale[COUNT_CASES] = { 0 };
 
     for (int c = 0; c < COUNT_CASES; c++)
     {
@@ -788,6 +800,19 @@ int main(int argc, char **argv)
                 CornerError(corners[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &batchedError[c], &batchedScale[c]);
                 free(corners);
             }
+            if (selected[PATH_BATCHED_MANY])
+            {
+                if ((batchMany.count != counts[c]) || (batchMany.skipped != 0))
+                {
+                    printf("bench_geometry: RblBatchAddMany's batch holds %d billboards (%d skipped), expected %d\n", batchMany.count, batchMany.skipped, counts[c]);
+                    return 1;
+                }
+                RblVertex *corners = (RblVertex *)malloc((size_t)counts[c]*4*sizeof(RblVertex));
+                if (corners == NULL) return 1;
+                BatchedCorners(batchMany.state, counts[c], corners);
+                CornerError(corners[0].position, (int)(sizeof(RblVertex)/sizeof(float)), raylibSet[rotated], counts[c], &manyError[c], &manyScale[c]);
+                free(corners);
+            }
         }
     }
 
@@ -852,9 +877,9 @@ int main(int argc, char **argv)
             CornerError(captured[0][rotated], 3, raylibSet[rotated], counts[c], &pathError[0], &pathScale[0]);
             if (instancedCaptured) CornerError(captured[1][rotated], 3, raylibSet[rotated], counts[c], &pathError[1], &pathScale[1]);
         }
-        const char *rowPath[3] = { "batched", "immediate", "instanced" };
-        const double rowError[3] = { batchedError[c], pathError[0], pathError[1] }, rowScale[3] = { batchedScale[c], pathScale[0], pathScale[1] };
-        for (int k = 0; k < 3; k++)
+        const char *rowPath[4] = { "batched", "immediate", "instanced", "batched_many" };
+        const double rowError[4] = { batchedError[c], pathError[0], pathError[1], manyError[c] }, rowScale[4] = { batchedScale[c], pathScale[0], pathScale[1], manyScale[c] };
+        for (int k = 0; k < 4; k++)
         {
             if (rowScale[k] <= 0.0) continue;     // not run (filter) or not captured
             snprintf(name, sizeof(name), "%s_%d", rowPath[k], counts[c]);
@@ -868,7 +893,7 @@ int main(int argc, char **argv)
         {
             printf("  max corner error vs double reference (%d billboards, rot+norot; world units, relative to the largest corner distance):\n"
                    "    raylib %.3g (%.3g rel)", counts[c], raylibError, raylibError/raylibScale);
-            for (int k = 0; k < 3; k++)
+            for (int k = 0; k < 4; k++)
                 if (rowScale[k] > 0.0) printf(", %s %.3g (%.3g rel)", rowPath[k], rowError[k], rowError[k]/rowScale[k]);
             printf("; FLT_EPSILON 1.19e-07\n");
         }
@@ -880,13 +905,14 @@ int main(int argc, char **argv)
     // glBufferSubData calls (indices are static); immediate uploads 4 RblVertex (52 bytes each),
     // batched one record (the RblBillboard, 88 bytes; 4 RblVertex where the context has no GLSL 3), instanced one
     // RblInstance (56 bytes).
-    const bool records = (batch.state != NULL) && batch.state->records;
+    const bool records = (batch.state != NULL) && batch.state->records, manyRecords = (batchMany.state != NULL) && batchMany.state->records;
     const double bytesPerBillboard[PATH_COUNT] = {
         4.0*(3*sizeof(float) + 2*sizeof(float) + 3*sizeof(float) + 4*sizeof(unsigned char)),
         4.0*sizeof(RblVertex),
         records? (double)sizeof(rbl__BatchRecord) : 4.0*sizeof(RblVertex),
         (double)sizeof(RblInstance),
-        4.0*(double)V03VertexSize()
+        4.0*(double)V03VertexSize(),
+        manyRecords? (double)sizeof(rbl__BatchRecord) : 4.0*sizeof(RblVertex)
     };
     double gbps = MeasureMemcpyBandwidth();
     // Struct sizes: 0.3's billboard, this one's, and the cross-fade that now travels beside it
@@ -910,6 +936,7 @@ int main(int argc, char **argv)
                 if (!res->measured || (floorNs <= 0.0)) continue;
                 CaseName(name, sizeof(name), (BenchPath)p, counts[c], rotated);
                 BenchCsvRow(SUITE, name, "ratio_to_floor", res->nsPerBillboard/floorNs, "x");
+                if (driverTimed) BenchCsvRow(SUITE, name, "excl_draw_over_floor", res->exclDrawNs/floorNs, "x");
             }
         }
     }
@@ -917,8 +944,8 @@ int main(int argc, char **argv)
     // Summary
     printf("\ngeometry summary (ns per billboard, medians; x raylib = median per-round ratio; x floor = over\n"
            "bytes uploaded / memcpy %.2f GB/s; draw = inside glDraw*, excl-draw = total minus draw)\n", gbps);
-    printf("  %-10s %7s %-6s %10s %9s %8s %9s %10s %9s %9s\n", "path", "N", "rot", "total", "x raylib", "x floor",
-           "draw", "excl-draw", "x raylib", "bytes/bb");
+    printf("  %-12s %7s %-6s %10s %9s %8s %9s %10s %9s %9s %9s\n", "path", "N", "rot", "total", "x raylib", "x floor",
+           "draw", "excl-draw", "x raylib", "x floor", "bytes/bb");
     double worst[PATH_COUNT] = { 0 }, worstExcl[PATH_COUNT] = { 0 };
     for (int c = 0; c < COUNT_CASES; c++)
     {
@@ -932,20 +959,21 @@ int main(int argc, char **argv)
                 double floorRatio = (gbps > 0.0)? res->nsPerBillboard/(bytesPerBillboard[p]/gbps) : 0.0;
                 if (res->ratio > worst[p]) worst[p] = res->ratio;
                 if (res->ratioExclDraw > worstExcl[p]) worstExcl[p] = res->ratioExclDraw;
-                char ratioText[16] = "n/a", exclText[16] = "n/a", drawText[16] = "n/a", exclNsText[16] = "n/a";
+                char ratioText[16] = "n/a", exclText[16] = "n/a", drawText[16] = "n/a", exclNsText[16] = "n/a", exclFloorText[16] = "n/a";
                 if (res->ratio > 0.0) snprintf(ratioText, sizeof(ratioText), "%.3fx", res->ratio);
                 if (driverTimed)
                 {
                     snprintf(drawText, sizeof(drawText), "%.1f", res->drawNs);
                     snprintf(exclNsText, sizeof(exclNsText), "%.1f", res->exclDrawNs);
                     if (res->ratioExclDraw > 0.0) snprintf(exclText, sizeof(exclText), "%.3fx", res->ratioExclDraw);
+                    if (gbps > 0.0) snprintf(exclFloorText, sizeof(exclFloorText), "%.2fx", res->exclDrawNs/(bytesPerBillboard[p]/gbps));
                 }
-                printf("  %-10s %7d %-6s %10.1f %9s %7.1fx %9s %10s %9s %9.0f\n", pathNames[p], counts[c], rot,
-                       res->nsPerBillboard, ratioText, floorRatio, drawText, exclNsText, exclText, bytesPerBillboard[p]);
+                printf("  %-12s %7d %-6s %10.1f %9s %7.1fx %9s %10s %9s %9s %9.0f\n", pathNames[p], counts[c], rot,
+                       res->nsPerBillboard, ratioText, floorRatio, drawText, exclNsText, exclText, exclFloorText, bytesPerBillboard[p]);
             }
         }
     }
-    const double targets[PATH_COUNT] = { 0.0, 0.0, 0.25, 0.05, 0.0 };
+    const double targets[PATH_COUNT] = { 0.0, 0.0, 0.25, 0.05, 0.0, 0.25 };
     for (int p = PATH_BATCHED; p < PATH_COUNT; p++)
     {
         if ((worst[p] <= 0.0) || (targets[p] <= 0.0)) continue;
@@ -971,6 +999,7 @@ int main(int argc, char **argv)
     printf("bench_geometry: done in %.1f s, rows in %s\n", (BenchNowNs() - benchStart)*1e-9, BenchCsvPath());
 
     RblUnloadBatch(&batch);
+    RblUnloadBatch(&batchMany);
     RblUnloadInstanceBuffer(&instanceBuffer);
     RblUnloadLitShader(&lit);
     RblUnloadLitShader(&litInstanced);
