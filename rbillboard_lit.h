@@ -1912,6 +1912,7 @@ typedef struct rbl__State {
     bool gbufferDriverDepth;           // Test hook: keep rlLoadTextureDepth's depth format (no float depth)
     long long stretchFours;            // Tests' count: fours RblBatchAddMany took four lanes at a time
     long long stretchSingles;          // ... and billboards its stretches took one at a time
+    bool instanceNoMap;                // Test hook: RblDrawInstanced checks, then uploads (never maps)
 #endif
     char problem[512];                 // Why the last internal step failed (its public caller logs it once)
     char failure[512];                 // The last refusal line without "RBL: " (RblGetFailureReason)
@@ -5750,24 +5751,24 @@ static bool rbl__canMap(void)
 #endif
 }
 
-// bytes of the batch's buffer from its start as a pointer (read: for reading; else written whole,
+// bytes of vertex buffer vbo from its start as a pointer (read: for reading; else written whole,
 // the old contents dropped), or NULL; the buffer is left unbound
-static void *rbl__mapBatchBuffer(const rbl__BatchState *batch, size_t bytes, bool read)
+static void *rbl__mapBuffer(unsigned int vbo, size_t bytes, bool read)
 {
     rbl__GlMapBufferRange map;
     memcpy(&map, &rbl__state.glMapBufferRange, sizeof(map));      // ISO C: no cast between object and function pointers
-    rlEnableVertexBuffer(batch->vboId);
+    rlEnableVertexBuffer(vbo);
     void *p = map(RBL__GL_ARRAY_BUFFER, 0, (ptrdiff_t)bytes, read? RBL__GL_MAP_READ_BIT : (RBL__GL_MAP_WRITE_BIT | RBL__GL_MAP_INVALIDATE_BUFFER_BIT));
     rlDisableVertexBuffer();
     return p;
 }
 
-// Ends a mapping of the batch's buffer; false when the system lost its contents meanwhile
-static bool rbl__unmapBatchBuffer(const rbl__BatchState *batch)
+// Ends a mapping of vertex buffer vbo; false when the system lost its contents meanwhile
+static bool rbl__unmapBuffer(unsigned int vbo)
 {
     rbl__GlUnmapBuffer unmap;
     memcpy(&unmap, &rbl__state.glUnmapBuffer, sizeof(unmap));
-    rlEnableVertexBuffer(batch->vboId);
+    rlEnableVertexBuffer(vbo);
     bool kept = (unmap(RBL__GL_ARRAY_BUFFER) != 0);
     rlDisableVertexBuffer();
     return kept;
@@ -5776,7 +5777,7 @@ static bool rbl__unmapBatchBuffer(const rbl__BatchState *batch)
 // From the first record on, the adds write records into the GPU buffer (where it maps)
 static void rbl__mapRecords(rbl__BatchState *batch)
 {
-    batch->mapped = (rbl__BatchRecord *)rbl__mapBatchBuffer(batch, (size_t)batch->gpuCapacity*sizeof(rbl__BatchRecord), false);
+    batch->mapped = (rbl__BatchRecord *)rbl__mapBuffer(batch->vboId, (size_t)batch->gpuCapacity*sizeof(rbl__BatchRecord), false);
     batch->onGpu = (batch->mapped != NULL);
 }
 
@@ -5786,16 +5787,16 @@ static void rbl__mapRecords(rbl__BatchState *batch)
 static bool rbl__recordsToCpu(rbl__BatchState *batch)
 {
     if (!batch->onGpu) return true;
-    bool kept = (batch->mapped == NULL) || rbl__unmapBatchBuffer(batch);
+    bool kept = (batch->mapped == NULL) || rbl__unmapBuffer(batch->vboId);
     batch->mapped = NULL;
     batch->onGpu = false;
     if (batch->begun) { batch->mapOk = false; batch->mapRest = RBL__MAP_REST; }
     if (kept && (batch->count > 0))
     {
         const size_t bytes = (size_t)batch->count*sizeof(rbl__BatchRecord);
-        const void *p = rbl__mapBatchBuffer(batch, bytes, true);
+        const void *p = rbl__mapBuffer(batch->vboId, bytes, true);
         if (p != NULL) memcpy(batch->vertices, p, bytes);
-        kept = (p != NULL) && rbl__unmapBatchBuffer(batch);
+        kept = (p != NULL) && rbl__unmapBuffer(batch->vboId);
     }
     if (!kept)
     {
@@ -5807,7 +5808,7 @@ static bool rbl__recordsToCpu(rbl__BatchState *batch)
 
 static void rbl__unloadBatchGpu(rbl__BatchState *batch)
 {
-    if ((batch->mapped != NULL) && rbl__glUsable()) rbl__unmapBatchBuffer(batch);
+    if ((batch->mapped != NULL) && rbl__glUsable()) rbl__unmapBuffer(batch->vboId);
     batch->mapped = NULL;
     batch->onGpu = false;
     if (!rbl__glUsable()) batch->vaoId = batch->vboId = batch->eboId = batch->fadeVboId = batch->idVboId = batch->recordVaoId = 0;      // gone with the context
@@ -6071,7 +6072,7 @@ bool RblBeginBatch(RblBatch *pub, Camera3D camera)
     batch->skipped = 0;
     batch->culled = 0;
     batch->records = false;
-    if (batch->mapped != NULL) rbl__unmapBatchBuffer(batch);   // (a first record that was never counted)
+    if (batch->mapped != NULL) rbl__unmapBuffer(batch->vboId);   // (a first record that was never counted)
     batch->mapped = NULL;
     batch->onGpu = false;
     batch->mapOk = false;
@@ -6261,7 +6262,6 @@ RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run
     const int backMode = batch->backMode;
     const Vector3 backNormal = batch->backNormal, eye = batch->view.eye;
     bool seekBack = !batch->backFacing && (rbl__state.shadowPass == NULL) && (backMode != RBL__BACK_NEVER);
-    const unsigned int *bias = rbl__billboardWordBias[plane];
     int taken = 0, stored = 0, culled = 0;
 #if defined(RBL_INSTRUMENTS)
     const long long foursBefore = rbl__state.stretchFours;
@@ -6269,6 +6269,7 @@ RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run
 #if defined(RBL__SSE2)
     // Words 13..19 equal the key's, checked when it was made; 12 (tint) is not a float: words 0..11
     // and 20 (roundness) are left to check
+    const unsigned int *bias = rbl__billboardWordBias[plane];
     const __m128i expBits = _mm_set1_epi32(0x7f800000), bias0 = _mm_loadu_si128((const __m128i *)(const void *)bias),
                   bias1 = _mm_loadu_si128((const __m128i *)(const void *)(bias + 4)), bias2 = _mm_loadu_si128((const __m128i *)(const void *)(bias + 8));
     const __m128i keyA = _mm_set_epi32((int)key[2], (int)key[1], (int)key[0], 0), keyB = _mm_loadu_si128((const __m128i *)(const void *)(key + 3));
@@ -6405,7 +6406,7 @@ RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run
             }
             if (_mm_movemask_ps(outside) != 0) { culled++; continue; }
 #else
-            if (rbl__outsidePlanesScalar(batch->cull, position, r2)) { culled++; continue; }
+            if (rbl__outsidePlanesScalar((const float (*)[8])batch->cull, position, r2)) { culled++; continue; }
 #endif
         }
 #if defined(RBL__SSE2)
@@ -7014,7 +7015,7 @@ static void rbl__endBatch(RblBatch *pub, const char *fn)
         return;
     }
     batch->begun = false;
-    if ((batch->mapped != NULL) && !rbl__unmapBatchBuffer(batch))
+    if ((batch->mapped != NULL) && !rbl__unmapBuffer(batch->vboId))
     {
         TraceLog(LOG_WARNING, "RBL: %s: the GPU lost the records of %i billboards (its buffer was unmapped by the system); they are not drawn", fn, batch->count);
         batch->count = 0; batch->runCount = 0;
@@ -7404,6 +7405,90 @@ static inline bool rbl__instancePolygonOk(const RblInstance *in, int *corners)
     return true;
 }
 
+// The draw's instances that pass its checks (rbl__instanceOk; a polygon handle of a loaded atlas,
+// *corners raised to its most corners), copied in order into out (the mapped GPU buffer) with the bad
+// ones left out: each read once, written once, never read back. *back: whether the camera sees the
+// back of a kept one (backMode and n from rbl__backMode; NEVER: not looked for). Returns how many
+static int rbl__copyInstances(const RblInstance *in, int count, unsigned char *out, const RblCameraFrame *view, int backMode, Vector3 backNormal, int *corners, bool *back)
+{
+    int kept = 0, i = 0;
+    bool seekBack = (backMode != RBL__BACK_NEVER);
+#if defined(RBL__SSE2)
+    // Four at a time where the back test (if still looked for) fits four lanes: rbl__backAt's PLANE
+    // sums in its order; a four holding a bad instance goes one at a time
+    const __m128i expBits = _mm_set1_epi32(0x7f800000), bias = _mm_set1_epi32((int)((256u - RBL__INSTANCE_LIMIT_EXPONENT) << 23));
+    const __m128 zero = _mm_setzero_ps(), eyeX = _mm_set1_ps(view->eye.x), eyeY = _mm_set1_ps(view->eye.y), eyeZ = _mm_set1_ps(view->eye.z),
+                 normalX = _mm_set1_ps(backNormal.x), normalY = _mm_set1_ps(backNormal.y), normalZ = _mm_set1_ps(backNormal.z);
+    const bool laneBack = (backMode == RBL__BACK_PLANE) || (backMode == RBL__BACK_ALWAYS);
+#endif
+    while (i < count)
+    {
+#if defined(RBL__SSE2)
+        if ((i + 4 <= count) && (!seekBack || laneBack))
+        {
+            const unsigned char *p = (const unsigned char *)(in + i);
+            unsigned char *o = out + (size_t)kept*sizeof(RblInstance);
+            for (int line = 0; line < 4*(int)sizeof(RblInstance); line += 64)
+            {
+                _mm_prefetch((const char *)(p + RBL__STRETCH_AHEAD + line), _MM_HINT_T0);
+                _mm_prefetch((const char *)(o + RBL__STRETCH_AHEAD + line), _MM_HINT_T0);
+            }
+            __m128i carry = _mm_setzero_si128();
+            __m128 pivot[4];
+            unsigned int polygon = 0u;
+            for (int l = 0; l < 4; l++)
+            {
+                const unsigned char *q = p + (size_t)l*sizeof(RblInstance);
+                const __m128i v0 = _mm_loadu_si128((const __m128i *)(const void *)q), v1 = _mm_loadu_si128((const __m128i *)(const void *)(q + 16)),
+                              v2 = _mm_loadu_si128((const __m128i *)(const void *)(q + 32)), v3 = _mm_loadl_epi64((const __m128i *)(const void *)(q + 48));
+                unsigned int flags;
+                memcpy(&flags, q + offsetof(RblInstance, flags), sizeof(flags));
+                carry = _mm_or_si128(carry, _mm_or_si128(_mm_add_epi32(_mm_and_si128(v0, expBits), bias),
+                                                         _mm_or_si128(_mm_add_epi32(_mm_and_si128(v1, expBits), bias), _mm_add_epi32(_mm_and_si128(v2, expBits), bias))));
+                polygon |= rbl__polygonHandle(flags);
+                pivot[l] = _mm_castsi128_ps(v0);
+                _mm_storeu_si128((__m128i *)(void *)(o + (size_t)l*sizeof(RblInstance)), v0);
+                _mm_storeu_si128((__m128i *)(void *)(o + (size_t)l*sizeof(RblInstance) + 16), v1);
+                _mm_storeu_si128((__m128i *)(void *)(o + (size_t)l*sizeof(RblInstance) + 32), v2);
+                _mm_storel_epi64((__m128i *)(void *)(o + (size_t)l*sizeof(RblInstance) + 48), v3);
+            }
+            bool ok = (_mm_movemask_ps(_mm_castsi128_ps(carry)) == 0);
+            for (int l = 0; ok && (polygon != 0u) && (l < 4); l++) ok = rbl__instancePolygonOk(&in[i + l], corners);
+            if (ok)
+            {
+                if (seekBack)
+                {
+                    _MM_TRANSPOSE4_PS(pivot[0], pivot[1], pivot[2], pivot[3]);     // lanes: x, y, z, rotation
+                    const __m128 d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(normalX, _mm_sub_ps(eyeX, pivot[0])), _mm_mul_ps(normalY, _mm_sub_ps(eyeY, pivot[1]))),
+                                                _mm_mul_ps(normalZ, _mm_sub_ps(eyeZ, pivot[2])));
+                    if ((backMode == RBL__BACK_ALWAYS) || (_mm_movemask_ps(_mm_cmplt_ps(d, zero)) != 0)) { *back = true; seekBack = false; }
+                }
+                kept += 4;
+                i += 4;
+                continue;
+            }
+            // (the slots written are written again below)
+            for (int end = i + 4; i < end; i++)
+            {
+                if (!rbl__instanceOk(&in[i]) || !rbl__instancePolygonOk(&in[i], corners)) continue;
+                memcpy(out + (size_t)kept*sizeof(RblInstance), &in[i], sizeof(RblInstance));
+                kept++;
+                if (seekBack && rbl__backAt(view, backMode, backNormal, in[i].position)) { *back = true; seekBack = false; }
+            }
+            continue;
+        }
+#endif
+        if (rbl__instanceOk(&in[i]) && rbl__instancePolygonOk(&in[i], corners))
+        {
+            memcpy(out + (size_t)kept*sizeof(RblInstance), &in[i], sizeof(RblInstance));
+            kept++;
+            if (seekBack && rbl__backAt(view, backMode, backNormal, in[i].position)) { *back = true; seekBack = false; }
+        }
+        i++;
+    }
+    return kept;
+}
+
 // The per-draw frame of the instanced stage, rblInstancing[7] (layout in lit_instanced.vs.glsl); the
 // resident-sprite variant's [7] (frame[28..31]) zero here, set by its draw
 static void rbl__instancingFrame(const RblInstancedDesc *desc, const RblCameraFrame *view, int texW, int texH, float frame[32])
@@ -7497,12 +7582,34 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     int corners = 0;
     int *cornersAt = (fades == NULL)? &corners : NULL;
     int n = 0;
-    while ((n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT)) &&
+    // Where the context maps buffers and the draw keeps the array's order without fades, the checks
+    // copy each kept instance straight into the GPU buffer (nothing uploaded below); contents lost at
+    // the unmap (the system's), or no mapping: the checks and upload below
+    bool mappedUpload = false, mappedBack = false;
+    if ((count > 0) && (fades == NULL) && (rbl__passSort(desc.sort) == RBL_SORT_NONE) && !RBL__HOOK(instanceNoMap) && rbl__canMap())
+    {
+        const RblCameraFrame seen = rbl__cameraFrame(camera);
+        Vector3 backNormal = { 0.0f, 0.0f, 0.0f };
+        const int backMode = (rbl__state.shadowPass == NULL)? rbl__backMode(&seen, desc.facing, desc.up, desc.axis, &backNormal) : RBL__BACK_NEVER;
+        unsigned char *out = (unsigned char *)rbl__mapBuffer(buffer->vboId, (size_t)count*sizeof(RblInstance), false);
+        if (out != NULL)
+        {
+            n = rbl__copyInstances(instances, count, out, &seen, backMode, backNormal, &corners, &mappedBack);
+            mappedUpload = rbl__unmapBuffer(buffer->vboId);
+            if (!mappedUpload) { n = 0; corners = 0; mappedBack = false; }
+        }
+    }
+    if (mappedUpload)
+    {
+        pub->skipped = count - n;
+        if (n < count) TraceLog(LOG_WARNING, "RBL: RblDrawInstanced: %i instance(s) skipped (NaN/Inf or |value| >= 2^120 = 1.3e36, a fade weight outside 0..1, or RBL_FRAME_POLYGON bits of no loaded atlas)", pub->skipped);
+    }
+    while (!mappedUpload && (n < count) && rbl__instanceOk(&instances[n]) && ((fades == NULL) || rbl__fadeOk(&fades[n], RBL__INSTANCE_LIMIT_EXPONENT)) &&
            ((cornersAt == NULL) || rbl__instancePolygonOk(&instances[n], cornersAt))) n++;
     const RblInstance *upload = instances;
     const RblFade *fadeUpload = fades;
-    pub->skipped = 0;
-    if (n < count)
+    if (!mappedUpload) pub->skipped = 0;
+    if (!mappedUpload && (n < count))
     {
         memcpy(buffer->staging, instances, (size_t)n*sizeof(RblInstance));
         if (fades != NULL) memcpy(buffer->fadeStaging, fades, (size_t)n*sizeof(RblFade));
@@ -7574,7 +7681,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     float frame[32];
     rbl__instancingFrame(&desc, &view, texW, texH, frame);
     // Quads seen from behind are drawn, as in the batch: culling off for this draw only
-    bool cullOff = (rbl__state.shadowPass == NULL) && rbl__showsBack(&view, desc.facing, desc.up, desc.axis, &upload[0].position, n, sizeof(RblInstance));
+    bool cullOff = (rbl__state.shadowPass == NULL) && (mappedUpload? mappedBack : rbl__showsBack(&view, desc.facing, desc.up, desc.axis, &upload[0].position, n, sizeof(RblInstance)));
     rlDrawRenderBatchActive();
     unsigned int bound = rbl__bindMaterial(&material);
     rlSetUniform(program->loc[RBL__U_INSTANCING], frame, SHADER_UNIFORM_VEC4, 7);
@@ -7592,7 +7699,7 @@ int RblDrawInstanced(RblInstanceBuffer *pub, Camera3D camera, Material material,
     if (cullOff) rlDisableBackfaceCulling();
     rlEnableVertexArray(buffer->vaoId);
     rbl__bindInstanceFades(buffer, program, fadeUpload, n);
-    rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
+    if (!mappedUpload) rlUpdateVertexBuffer(buffer->vboId, upload, n*(int)sizeof(RblInstance), 0);
     rbl__InstanceLayer layer = { program, &material, n, vertices };
     rbl__drawLayers(sort, 0.0f, rbl__drawInstanceLayer, &layer);     // hybrid: solid alpha 1, as a batch's default
     if (corners > 0) { rlActiveTextureSlot(RBL_FRAME_TABLE_TEXTURE_UNIT); rlDisableTexture(); }

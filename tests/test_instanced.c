@@ -435,6 +435,124 @@ static void test_instanced_draw_matches_batched_pixels_and_skips_bad_instances(v
     MemFree(m.maps);
 }
 
+// Where the context maps buffers, RblDrawInstanced (no fades, array order) checks each instance and
+// copies it straight into the GPU buffer: the buffer then holds exactly what the checked upload
+// uploads (read back, bit for bit), with the same return, skipped count, one log line, and the same
+// back-face decision (pixels equal): sets of 1-203 instances with bad ones at every lane of a four
+// (each float word NaN, Inf or 2^120, an unknown polygon handle), FIXED cards facing the camera or
+// away (drawn only as backs), cards facing +x whose back only pivots late in the array see, in a
+// colour and a shadow pass
+static void test_instanced_mapped_upload_equals_the_checked_upload(void)
+{
+    enum { MAXN = 203 };
+    static RblInstance set[MAXN];
+    RblLitShaderDesc desc;
+    memset(&desc, 0, sizeof(desc));
+    desc.maxLights = 1; desc.instanced = true;
+    Shader inst = RblLoadLitShader(desc);
+    Material m = LoadMaterialDefault();
+    m.shader = inst;
+    RenderTexture2D rt = LoadRenderTexture(TARGET, TARGET);
+    RblInstanceBuffer buf = RblLoadInstanceBuffer(MAXN);
+    Camera3D cam = frontCamera();
+    RblLight sun;
+    memset(&sun, 0, sizeof(sun));
+    sun.type = RBL_LIGHT_DIRECTIONAL; sun.direction = (Vector3){ -0.4f, -1.0f, -0.3f }; sun.color = WHITE; sun.intensity = 1.0f;
+    RblScene scene;
+    memset(&scene, 0, sizeof(scene));
+    scene.lights = &sun; scene.lightCount = 1; scene.ambient = (Color){ 40, 40, 40, 255 };
+    RT_CHECK(RblSetScene(&scene), "scene rejected");
+    RblShadowDesc sd;
+    memset(&sd, 0, sizeof(sd));
+    sd.size = 64;
+    RblShadowMap map = RblLoadShadowMap(sd);
+    static unsigned char bytes[2][MAXN*sizeof(RblInstance)];
+    const bool maps = (rbl__glsl() >= 300) && rbl__canMap();
+    int cases = 0, equal = 0, skippedAll = 0;
+    unsigned int seed = 404u;
+    for (int c = 0; c < 40; c++)
+    {
+        const int n = (c < 8)? 1 + c : 1 + (int)(rtRandom(&seed)%MAXN);
+        const bool shadow = (c % 10) == 9;
+        RblInstancedDesc d;
+        memset(&d, 0, sizeof(d));
+        d.facing = (c % 3 == 0)? RBL_FACING_FIXED : RBL_FACING_CAMERA_POSITION;
+        d.axis = (Vector3){ 0.3f, 0.2f, (c % 2)? 1.0f : -1.0f };         // FIXED: facing the camera or away (culled unless seen as backs)
+        if (c % 6 == 3) d.axis = (Vector3){ 1.0f, 0.0f, 0.0f };         // facing +x: pivots right of the eye show their backs
+        for (int i = 0; i < n; i++)
+        {
+            RblInstance in;
+            memset(&in, 0, sizeof(in));
+            in.position = (Vector3){ rtRandomRange(&seed, -1.5f, 1.5f), rtRandomRange(&seed, -1.5f, 1.5f), rtRandomRange(&seed, -1.0f, 1.0f) };
+            // facing +x: the first half left of the eye (fronts), the rest anywhere
+            if ((c % 6 == 3) && (i <= n/2)) in.position.x = rtRandomRange(&seed, -1.5f, -0.1f);
+            in.rotation = rtRandomRange(&seed, -180.0f, 180.0f);
+            in.size = (Vector2){ rtRandomRange(&seed, -0.6f, 0.6f), 0.5f };
+            in.origin = (Vector2){ 0.2f, 0.25f };
+            in.source = (Rectangle){ 0.0f, 0.0f, 1.0f, 1.0f };
+            in.tint = (Color){ 200, (unsigned char)rtRandom(&seed), 150, 255 };
+            in.flags = rtRandom(&seed) & (RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER | 12u);
+            unsigned int bad = rtRandom(&seed)%40u;
+            if (bad < 12)
+            {
+                float v = (bad % 3 == 0)? NAN : (bad % 3 == 1)? -INFINITY : 1.329228e36f;      // 2^120
+                memcpy((unsigned char *)&in + 4u*bad, &v, sizeof(v));
+            }
+            else if (bad == 12) in.flags |= 0x20u;        // a polygon handle no atlas has
+            set[i] = in;
+        }
+        int drawn[2] = { 0, 0 }, skipped[2] = { 0, 0 }, lines[2] = { 0, 0 };
+        Image img[2] = { { 0 }, { 0 } };
+        bool read[2] = { false, false };
+        for (int v = 0; v < 2; v++)
+        {
+            rbl__state.instanceNoMap = (v == 1);
+            int before = warnings;
+            if (shadow)
+            {
+                if (RblBeginShadowMap(&map, &scene, 0, (Vector3){ 0.0f, 0.0f, 0.0f }, 3.0f))
+                {
+                    drawn[v] = RblDrawInstanced(&buf, cam, m, d, set, n);
+                    RblEndShadowMap(&map);
+                }
+            }
+            else
+            {
+                BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
+                drawn[v] = RblDrawInstanced(&buf, cam, m, d, set, n);
+                EndMode3D(); EndTextureMode();
+                img[v] = rtReadTarget(rt);
+            }
+            skipped[v] = buf.skipped; lines[v] = warnings - before;
+            rbl__InstanceBufferState *st = rbl__instanceState(&buf);
+            const void *p = (maps && (st != NULL) && (drawn[v] > 0))? rbl__mapBuffer(st->vboId, (size_t)drawn[v]*sizeof(RblInstance), true) : NULL;
+            if (p != NULL) { memcpy(bytes[v], p, (size_t)drawn[v]*sizeof(RblInstance)); read[v] = rbl__unmapBuffer(st->vboId); }
+        }
+        rbl__state.instanceNoMap = false;
+        int differ = 0;
+        for (int i = 0; !shadow && (i < TARGET*TARGET); i++)
+        {
+            Color a = ((const Color *)img[0].data)[i], b = ((const Color *)img[1].data)[i];
+            differ += (a.r != b.r) || (a.g != b.g) || (a.b != b.b) || (a.a != b.a);
+        }
+        bool same = (drawn[0] == drawn[1]) && (skipped[0] == skipped[1]) && (drawn[0] + skipped[0] == n) && (differ == 0) &&
+                    (!maps || (read[0] && read[1] && (memcmp(bytes[0], bytes[1], (size_t)drawn[0]*sizeof(RblInstance)) == 0)));
+        RT_CHECK(same, "case %d (%d instances%s): drawn %d / %d, skipped %d / %d, %d pixels differ, read back %d %d", c, n, shadow? ", shadow pass" : "",
+                 drawn[0], drawn[1], skipped[0], skipped[1], differ, read[0], read[1]);
+        RT_CHECK(lines[0] == lines[1] && lines[0] == ((skipped[0] > 0)? 1 : 0), "case %d: %d and %d log lines for %d skipped", c, lines[0], lines[1], skipped[0]);
+        cases++; equal += same; skippedAll += skipped[0];
+        if (!same && !shadow) { rtSaveImage(img[0], "mapped"); rtSaveImage(img[1], "checked"); }
+        if (!shadow) { UnloadImage(img[0]); UnloadImage(img[1]); }
+    }
+    printf("    %d of %d draws equal (%s; %d instances skipped in all)\n", equal, cases, maps? "GPU buffers read back" : "no mapping here: both upload", skippedAll);
+    RT_CHECK(skippedAll > 50, "the sets must hold bad instances (%d skipped)", skippedAll);
+    RblUnloadShadowMap(&map);
+    RblUnloadInstanceBuffer(&buf);
+    UnloadRenderTexture(rt);
+    RblUnloadLitShader(&inst);
+    MemFree(m.maps);
+}
+
 // The instance check rejects exactly NaN, Inf and |value| >= 2^120 in each of the 12 float fields
 // (values the GPU could overflow when it combines them), and nothing in the tint or flags
 static void test_instanced_validation_bound_is_2_to_the_120_in_every_float_field(void)
@@ -578,4 +696,5 @@ static void test_instanced_location_cache_survives_program_id_reuse(void)
     RT_TEST_GLSL3(test_instanced_rotation_agrees_with_the_cpu_at_any_angle), \
     RT_TEST_GLSL3(test_instanced_draw_matches_batched_pixels_and_skips_bad_instances), \
     RT_TEST_GLSL3(test_instanced_validation_bound_is_2_to_the_120_in_every_float_field), \
+    RT_TEST_GLSL3(test_instanced_mapped_upload_equals_the_checked_upload), \
     RT_TEST_GLSL3(test_instanced_location_cache_survives_program_id_reuse)
