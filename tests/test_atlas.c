@@ -1351,3 +1351,74 @@ static void test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets(
     UnloadImage(gs);
     RblUnloadAtlas(&gdx);
 }
+
+// A sprite update's branch-free check accepts exactly what rbl__spriteProblem accepts, and the
+// four-lane chunk bounds equal the one-at-a-time ones bit for bit: 400,000 sprites with each field
+// on its bound's edges (position and start at 2^120, NaN, Inf; scale -0, 0, 1e15 and the next
+// float, negative, NaN; half-float speeds Inf, NaN, the largest finite, negative zero; mode bits
+// 4..7; frames and tags at and past the atlas's counts, tag 0xFFFF), and 300 chunks of valid sprites
+// with hidden ones (scale 0 and -0), repeated coordinates, chunks whose least or greatest
+// coordinate is a tie of +0 and -0, chunks partly filled and all hidden
+static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_ones(void)
+{
+    rbl__SpriteBufferState b;
+    memset(&b, 0, sizeof(b));
+    b.frameCount = 7; b.tagCount = 3;
+    const float edgeF[] = { 0.0f, -0.0f, 1.0f, -3.5f, 1.3292279e36f, -1.3292279e36f, 1.329228e36f, -1.329228e36f, NAN, INFINITY, -INFINITY, 1e-40f };
+    const float scaleF[] = { 0.0f, -0.0f, 1.0f, 1e15f, 1.0000001e15f, -1e-30f, NAN, INFINITY, 3e-39f, 0.01f };
+    const unsigned short speedH[] = { 0x0000, 0x3C00, 0x7BFF, 0x7C00, 0x7E00, 0x8000, 0xFC00, 0x03FF, 0x7C01 };
+    const unsigned short modeH[] = { 0x00, RBL_SPRITE_ANIMATED, RBL_SPRITE_ANIMATED | 0x0300, 0x10, 0x80, RBL_SPRITE_FLIP_X, 0xFF00, 0x40 | RBL_SPRITE_ANIMATED };
+    const unsigned short frameH[] = { 0, 2, 3, 6, 7, 0xFFFF, 0xFFFE, 100 };
+    unsigned int seed = 99u;
+    int disagree = 0, accepted = 0;
+    for (int i = 0; i < 400000; i++)
+    {
+        RblSpriteInstance p;
+        memset(&p, 0, sizeof(p));
+        // each field on an edge one time in three, else an ordinary value
+        #define SPR_EDGE(ordinary, edges, n) ((rtRandom(&seed)%3u == 0u)? (edges)[rtRandom(&seed)%(n)] : (ordinary))
+        p.position = (Vector3){ SPR_EDGE(1.0f, edgeF, 12u), SPR_EDGE(-2.0f, edgeF, 12u), SPR_EDGE(0.5f, edgeF, 12u) };
+        p.scale = SPR_EDGE(0.25f, scaleF, 10u);
+        p.start = SPR_EDGE(3.0f, edgeF, 12u);
+        p.speed = SPR_EDGE((unsigned short)0x3C00, speedH, 9u);
+        p.mode = SPR_EDGE((unsigned short)0, modeH, 8u);
+        p.frame = SPR_EDGE((unsigned short)1, frameH, 8u);
+        #undef SPR_EDGE
+        p.rotation = (unsigned short)rtRandom(&seed);
+        bool fast = rbl__spriteOk(&b, &p), slow = (rbl__spriteProblem(&b, &p) == NULL);
+        disagree += (fast != slow);
+        accepted += slow;
+    }
+    printf("    checks: %d of 400000 disagree (%d accepted)\n", disagree, accepted);
+    RT_CHECK((disagree == 0) && (accepted > 40000) && (accepted < 360000), "%d disagree, %d accepted", disagree, accepted);
+
+    enum { CHUNKS = 300 };
+    b.capacity = b.count = CHUNKS*RBL__SPRITE_CHUNK - 37;
+    b.sprites = (RblSpriteInstance *)calloc((size_t)b.capacity, sizeof(RblSpriteInstance));
+    float *lanes = (float *)calloc((size_t)CHUNKS*7, sizeof(float)), *one = (float *)calloc((size_t)CHUNKS*7, sizeof(float));
+    if ((b.sprites == NULL) || (lanes == NULL) || (one == NULL)) { RT_CHECK(false, "out of memory"); free(b.sprites); free(lanes); free(one); return; }
+    const float coordF[] = { 0.0f, -0.0f, 1.5f, -1.5f, 2.0f, -7.25f, 1e30f, -1e30f };
+    for (int i = 0; i < b.count; i++)
+    {
+        RblSpriteInstance *p = &b.sprites[i];
+        int c = i/RBL__SPRITE_CHUNK;
+        for (int k = 0; k < 3; k++) ((float *)&p->position)[k] = (rtRandom(&seed)%3u)? rtRandomRange(&seed, -50.0f, 50.0f) : coordF[rtRandom(&seed)%8u];
+        // chunks whose least (or greatest) coordinate is a tie of +0 and -0: the first seen stays
+        for (int k = 0; ((c % 5) == 1) && (k < 3); k++) ((float *)&p->position)[k] = coordF[rtRandom(&seed)%3u];
+        for (int k = 0; ((c % 5) == 2) && (k < 3); k++) ((float *)&p->position)[k] = -coordF[rtRandom(&seed)%3u];
+        unsigned int h = rtRandom(&seed)%5u;
+        p->scale = ((c % 7) == 3)? 0.0f : (h == 0)? 0.0f : (h == 1)? -0.0f : rtRandomRange(&seed, 0.001f, 4.0f);
+    }
+    int differ = 0, empty = 0;
+    for (int c = 0; c < CHUNKS; c++)
+    {
+        b.bounds = lanes; rbl__spriteChunkBounds(&b, c);
+        b.bounds = one; rbl__spriteChunkBoundsScalar(&b, c);
+        differ += memcmp(lanes + 7*c, one + 7*c, 7*sizeof(float)) != 0;
+        empty += one[7*c + 6] < 0.0f;
+    }
+    printf("    chunk bounds: %d of %d differ (%d with nothing visible)\n", differ, CHUNKS, empty);
+    RT_CHECK((differ == 0) && (empty > 30), "%d chunks' bounds differ, %d empty", differ, empty);
+    free(b.sprites); free(lanes); free(one);
+}
+

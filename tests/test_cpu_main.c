@@ -83,6 +83,7 @@ int main(int argc, char **argv)
         RT_TEST(test_atlas_frames_without_a_pivot_stand_on_their_position),
         RT_TEST(test_atlas_premultiplied_pages_pack_mips_as_the_alpha_weighted_mean_kept_premultiplied),
         RT_TEST(test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets),
+        RT_TEST(test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_ones),
     };
     SetTraceLogLevel(LOG_WARNING);
     return rtRun("cpu", tests, (int)(sizeof(tests)/sizeof(tests[0])), argc, argv);

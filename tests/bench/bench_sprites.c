@@ -434,16 +434,18 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
 }
 
 // ---- resident sprite buffers (RblSpriteBuffer) vs re-uploaded instances -------------------------
-// Four ways to draw n sprites each frame: resident and unchanged; resident and animated on the GPU
+// Five ways to draw n sprites each frame: resident and unchanged; resident and animated on the GPU
 // (the clock moves); re-uploaded (RblDrawInstanced, 56 B an instance, unchanged); animated on the
-// CPU (RblUpdateSpriteInstances + RblDrawInstanced). Rounds interleave the four (order rotating),
+// CPU (RblUpdateSpriteInstances + RblDrawInstanced); resident and written whole each frame
+// (RblUpdateSprites of all n, 32 B a sprite, then the draw). Rounds interleave the five (order rotating),
 // medians per way. Values: CPU ns per sprite, the same excluding glDraw* (llvmpipe does its vertex
 // work there), and microseconds per draw excluding glDraw*.
-enum { RES_STATIC = 0, RES_GPU_ANIM, RES_REUPLOAD, RES_CPU_ANIM, RES_WAYS };
-static const char *const resNames[RES_WAYS] = { "resident", "resident_gpu_animated", "reuploaded", "cpu_animated" };
+enum { RES_STATIC = 0, RES_GPU_ANIM, RES_REUPLOAD, RES_CPU_ANIM, RES_UPDATED, RES_WAYS };
+static const char *const resNames[RES_WAYS] = { "resident", "resident_gpu_animated", "reuploaded", "cpu_animated", "resident_updated" };
 typedef struct {
     int way, n;
-    RblSpriteBuffer *still, *moving;
+    RblSpriteBuffer *still, *moving, *updated;
+    const RblSpriteInstance *sprites;       // RES_UPDATED: written whole each frame (RblUpdateSprites), then drawn
     RblInstanceBuffer *buffer;
     RblInstance *instances;
     RblSpritePlayer *players;
@@ -464,6 +466,10 @@ static void runResident(void *ctx, double *out)
         case RES_STATIC: RblDrawSpriteBuffer(c->still, c->camera, c->material, d, c->clock); break;
         case RES_GPU_ANIM: c->clock += 1.0f/60.0f; RblDrawSpriteBuffer(c->moving, c->camera, c->material, d, c->clock); break;
         case RES_REUPLOAD: RblDrawInstanced(c->buffer, c->camera, c->material, d, c->instances, c->n); break;
+        case RES_UPDATED:
+            if (!RblUpdateSprites(c->updated, 0, c->n, c->sprites)) { printf("bench_sprites: update refused\n"); exit(1); }
+            RblDrawSpriteBuffer(c->updated, c->camera, c->material, d, c->clock);
+            break;
         default:
             RblUpdateSpriteInstances(c->players, c->instances, c->n, c->atlas, 1.0f/60.0f, 0.005f);
             RblDrawInstanced(c->buffer, c->camera, c->material, d, c->instances, c->n);
@@ -523,11 +529,11 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
     // Its own target and 3D mode: the rows before leave other matrices behind
     RenderTexture2D rt = LoadRenderTexture(256, 256);
     BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
-    const double bytesWritten[RES_WAYS] = { 0.0, 0.0, (double)sizeof(RblInstance), (double)(sizeof(RblInstance) + 36 + sizeof(RblSpritePlayer)) };
+    const double bytesWritten[RES_WAYS] = { 0.0, 0.0, (double)sizeof(RblInstance), (double)(sizeof(RblInstance) + 36 + sizeof(RblSpritePlayer)), (double)sizeof(RblSpriteInstance) };
     for (int s = 0; s < 3; s++)
     {
         int n = sizes[s];
-        RblSpriteBuffer sb = RblLoadSpriteBuffer(anim, n), mb = RblLoadSpriteBuffer(anim, n);
+        RblSpriteBuffer sb = RblLoadSpriteBuffer(anim, n), mb = RblLoadSpriteBuffer(anim, n), ub = RblLoadSpriteBuffer(anim, n);
         RblInstanceBuffer ib = RblLoadInstanceBuffer(n);
         if (!RblUpdateSprites(&sb, 0, n, still) || !RblUpdateSprites(&mb, 0, n, moving)) { printf("bench_sprites: sprites refused\n"); exit(1); }
         RblSpritePlayer *pl = (RblSpritePlayer *)malloc((size_t)n*sizeof(RblSpritePlayer));
@@ -538,7 +544,7 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
         for (int w = 0; w < RES_WAYS; w++)
         {
             memset(&c[w], 0, sizeof(c[w]));
-            c[w].way = w; c[w].n = n; c[w].still = &sb; c[w].moving = &mb; c[w].buffer = &ib;
+            c[w].way = w; c[w].n = n; c[w].still = &sb; c[w].moving = &mb; c[w].updated = &ub; c[w].sprites = still; c[w].buffer = &ib;
             c[w].instances = (w == RES_CPU_ANIM)? in : inst; c[w].players = pl; c[w].atlas = anim; c[w].camera = cam; c[w].material = m;
         }
         double v[RES_WAYS][3][RES_ROUNDS], out[3];
@@ -596,7 +602,7 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
         snprintf(name, sizeof(name), "resident_gpu_animated_%d", n);
         BenchCsvRow("sprites", name, "excl_draw_over_cpu_animated", med[RES_GPU_ANIM][1]/med[RES_CPU_ANIM][1], "x");
         free(pl); free(in);
-        RblUnloadSpriteBuffer(&sb); RblUnloadSpriteBuffer(&mb); RblUnloadInstanceBuffer(&ib);
+        RblUnloadSpriteBuffer(&sb); RblUnloadSpriteBuffer(&mb); RblUnloadSpriteBuffer(&ub); RblUnloadInstanceBuffer(&ib);
     }
     // Culling: 100000 resident sprites all in view, and the same with 90 % moved far to the side
     // (in buffer order, as tiles of a level would lie); wall time with glFinish (llvmpipe's vertex
