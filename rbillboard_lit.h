@@ -6240,6 +6240,26 @@ bool RblBatchAdd(RblBatch *pub, Material material, const RblBillboard *billboard
 
 #define RBL__STRETCH_AHEAD 1024      // Bytes ahead of the stretch's reads and writes that it prefetches
 
+#if defined(RBL__SSE2)
+// A billboard's 88 bytes as five vectors and its last 8 (roundness, flags)
+typedef struct rbl__BillboardWords { __m128i v[5]; __m128i tail; } rbl__BillboardWords;
+
+RBL__FORCE_INLINE rbl__BillboardWords rbl__loadBillboardWords(const unsigned char *q)
+{
+    rbl__BillboardWords w;
+    for (int k = 0; k < 5; k++) w.v[k] = _mm_loadu_si128((const __m128i *)(const void *)(q + 16*k));
+    w.tail = _mm_loadl_epi64((const __m128i *)(const void *)(q + 80));
+    return w;
+}
+
+// w as the record at o, its flags masked by keep (the bits the record stage reads)
+RBL__FORCE_INLINE void rbl__storeBillboardWords(unsigned char *o, const rbl__BillboardWords *w, __m128i keep)
+{
+    for (int k = 0; k < 5; k++) _mm_storeu_si128((__m128i *)(void *)(o + 16*k), w->v[k]);
+    _mm_storel_epi64((__m128i *)(void *)(o + 80), _mm_and_si128(w->tail, keep));
+}
+#endif
+
 // A stretch of billboards continuing run while their facing, up and axis repeat the batch's key
 // (rbl__facingKey made it from a billboard that passed every check): rbl__addToRecordRun's steps,
 // the key's own checks (facing range, its words' bounds, up and axis stored as given) done once for
@@ -6327,21 +6347,14 @@ RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run
         for (int l = 0; l < 4; l++)
         {
             const unsigned char *q = in + (size_t)l*sizeof(RblBillboard);
-            const __m128i v0 = _mm_loadu_si128((const __m128i *)(const void *)q), v1 = _mm_loadu_si128((const __m128i *)(const void *)(q + 16)),
-                          v2 = _mm_loadu_si128((const __m128i *)(const void *)(q + 32)), v3 = _mm_loadu_si128((const __m128i *)(const void *)(q + 48)),
-                          v4 = _mm_loadu_si128((const __m128i *)(const void *)(q + 64)), tail = _mm_loadl_epi64((const __m128i *)(const void *)(q + 80));
+            const rbl__BillboardWords w = rbl__loadBillboardWords(q);
             unsigned int flags;
             memcpy(&flags, q + offsetof(RblBillboard, flags), sizeof(flags));
-            carry = _mm_or_si128(carry, _mm_or_si128(_mm_or_si128(_mm_add_epi32(_mm_and_si128(v0, expBits), bias0), _mm_add_epi32(_mm_and_si128(v1, expBits), bias1)),
-                                                     _mm_or_si128(_mm_add_epi32(_mm_and_si128(v2, expBits), bias2), _mm_add_epi32(_mm_and_si128(tail, tailExp), tailBias))));
-            same = _mm_and_si128(same, _mm_and_si128(_mm_or_si128(_mm_cmpeq_epi32(v3, keyA), tintLane), _mm_cmpeq_epi32(v4, keyB)));
+            carry = _mm_or_si128(carry, _mm_or_si128(_mm_or_si128(_mm_add_epi32(_mm_and_si128(w.v[0], expBits), bias0), _mm_add_epi32(_mm_and_si128(w.v[1], expBits), bias1)),
+                                                     _mm_or_si128(_mm_add_epi32(_mm_and_si128(w.v[2], expBits), bias2), _mm_add_epi32(_mm_and_si128(w.tail, tailExp), tailBias))));
+            same = _mm_and_si128(same, _mm_and_si128(_mm_or_si128(_mm_cmpeq_epi32(w.v[3], keyA), tintLane), _mm_cmpeq_epi32(w.v[4], keyB)));
             polygon |= rbl__polygonHandle(flags);
-            _mm_storeu_si128((__m128i *)(void *)o, v0);
-            _mm_storeu_si128((__m128i *)(void *)(o + 16), v1);
-            _mm_storeu_si128((__m128i *)(void *)(o + 32), v2);
-            _mm_storeu_si128((__m128i *)(void *)(o + 48), v3);
-            _mm_storeu_si128((__m128i *)(void *)(o + 64), v4);
-            _mm_storel_epi64((__m128i *)(void *)(o + 80), _mm_and_si128(tail, tailKeep));
+            rbl__storeBillboardWords(o, &w, tailKeep);
             o += ((outMask >> l) & 1)? 0 : sizeof(rbl__BatchRecord);
         }
         if ((_mm_movemask_ps(_mm_castsi128_ps(carry)) != 0) || (_mm_movemask_epi8(same) != 0xffff) || (polygon != 0u)) break;
@@ -6372,13 +6385,11 @@ RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run
         memcpy(&size, in + offsetof(RblBillboard, size), sizeof(size));
         memcpy(&origin, in + offsetof(RblBillboard, origin), sizeof(origin));
 #if defined(RBL__SSE2)
-        const __m128i v0 = _mm_loadu_si128((const __m128i *)(const void *)in), v1 = _mm_loadu_si128((const __m128i *)(const void *)(in + 16)),
-                      v2 = _mm_loadu_si128((const __m128i *)(const void *)(in + 32)), v3 = _mm_loadu_si128((const __m128i *)(const void *)(in + 48)),
-                      v4 = _mm_loadu_si128((const __m128i *)(const void *)(in + 64)), tail = _mm_loadl_epi64((const __m128i *)(const void *)(in + 80));
-        const __m128i carry = _mm_or_si128(_mm_or_si128(_mm_add_epi32(_mm_and_si128(v0, expBits), bias0), _mm_add_epi32(_mm_and_si128(v1, expBits), bias1)),
-                                           _mm_add_epi32(_mm_and_si128(v2, expBits), bias2));
-        const unsigned int roundness = (unsigned int)_mm_cvtsi128_si32(tail), flags = (unsigned int)_mm_cvtsi128_si32(_mm_srli_si128(tail, 4));
-        const int same = (_mm_movemask_epi8(_mm_cmpeq_epi32(v3, keyA)) | 0xf) & _mm_movemask_epi8(_mm_cmpeq_epi32(v4, keyB));
+        const rbl__BillboardWords w = rbl__loadBillboardWords(in);
+        const __m128i carry = _mm_or_si128(_mm_or_si128(_mm_add_epi32(_mm_and_si128(w.v[0], expBits), bias0), _mm_add_epi32(_mm_and_si128(w.v[1], expBits), bias1)),
+                                           _mm_add_epi32(_mm_and_si128(w.v[2], expBits), bias2));
+        const unsigned int roundness = (unsigned int)_mm_cvtsi128_si32(w.tail), flags = (unsigned int)_mm_cvtsi128_si32(_mm_srli_si128(w.tail, 4));
+        const int same = (_mm_movemask_epi8(_mm_cmpeq_epi32(w.v[3], keyA)) | 0xf) & _mm_movemask_epi8(_mm_cmpeq_epi32(w.v[4], keyB));
         if ((same != 0xffff) || (_mm_movemask_ps(_mm_castsi128_ps(carry)) != 0) || ((((roundness & 0x7f800000u) + bias20) & 0x80000000u) != 0u) ||
             (rbl__polygonHandle(flags) != 0u)) break;
 #else
@@ -6410,12 +6421,7 @@ RBL__FORCE_INLINE int rbl__addStretch(rbl__BatchState *batch, rbl__BatchRun *run
 #endif
         }
 #if defined(RBL__SSE2)
-        _mm_storeu_si128((__m128i *)(void *)out, v0);
-        _mm_storeu_si128((__m128i *)(void *)(out + 16), v1);
-        _mm_storeu_si128((__m128i *)(void *)(out + 32), v2);
-        _mm_storeu_si128((__m128i *)(void *)(out + 48), v3);
-        _mm_storeu_si128((__m128i *)(void *)(out + 64), v4);
-        _mm_storel_epi64((__m128i *)(void *)(out + 80), _mm_and_si128(tail, tailKeep));
+        rbl__storeBillboardWords(out, &w, tailKeep);
 #else
         flags &= (RBL_FRAME_ROTATED | RBL_ROUND_CYLINDER);
         memcpy(out, in, offsetof(RblBillboard, flags));
@@ -14304,9 +14310,12 @@ static const char *rbl__spriteProblem(const rbl__SpriteBufferState *b, const Rbl
 static inline bool rbl__spriteOk(const rbl__SpriteBufferState *b, const RblSpriteInstance *p)
 {
     const bool animated = (p->mode & RBL_SPRITE_ANIMATED) != 0u;
-    return rbl__exponentsBelow(&p->position, 3, RBL__INSTANCE_LIMIT_EXPONENT) & (p->scale >= 0.0f) & (p->scale <= 1e15f) &
-           rbl__exponentsBelow(&p->start, 1, RBL__INSTANCE_LIMIT_EXPONENT) & (((p->speed >> 10) & 31u) != 31u) & ((p->speed & 0x8000u) == 0u) &
-           ((p->mode & 0xF0u) == 0u) & (animated? ((p->frame == 0xFFFF) | (p->frame < b->tagCount)) : (p->frame < b->frameCount));
+    unsigned int ok = (unsigned int)rbl__exponentsBelow(&p->position, 3, RBL__INSTANCE_LIMIT_EXPONENT);
+    ok &= (unsigned int)rbl__exponentsBelow(&p->start, 1, RBL__INSTANCE_LIMIT_EXPONENT);
+    ok &= (unsigned int)(p->scale >= 0.0f) & (unsigned int)(p->scale <= 1e15f);
+    ok &= (unsigned int)(((p->speed >> 10) & 31u) != 31u) & (unsigned int)((p->speed & 0x8000u) == 0u) & (unsigned int)((p->mode & 0xF0u) == 0u);
+    ok &= animated? ((unsigned int)(p->frame == 0xFFFF) | (unsigned int)(p->frame < b->tagCount)) : (unsigned int)(p->frame < b->frameCount);
+    return ok != 0u;
 }
 
 // Chunk c's pivot bounds and largest scale from the CPU copy, one sprite at a time
@@ -14365,9 +14374,9 @@ bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSprit
         TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: range first %i count %i outside the capacity %i, or NULL sprites", first, count, b->capacity);
         return false;
     }
-    bool ok = true;
-    for (int i = 0; i < count; i++) ok &= rbl__spriteOk(b, &sprites[i]);
-    for (int i = 0; !ok && (i < count); i++)
+    unsigned int ok = 1u;
+    for (int i = 0; i < count; i++) ok &= (unsigned int)rbl__spriteOk(b, &sprites[i]);
+    for (int i = 0; (ok == 0u) && (i < count); i++)
     {
         const char *bad = rbl__spriteProblem(b, &sprites[i]);
         if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: sprite %i: %s (nothing written)", first + i, bad); return false; }
