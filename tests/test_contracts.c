@@ -448,6 +448,63 @@ static void c_batch_add(void)
     RblUnloadBatch(&b);
 }
 
+// RblBatchAddMany: what RblBatchAdd refuses, refused for the whole call or for each billboard it
+// holds (one line a batch), and an array with every bad float field leaves only finite slots
+static void c_batch_add_many(void)
+{
+    RblBatch zero; memset(&zero, 0, sizeof(zero));
+    RblBillboard bb = billboard();
+    EXPECT_REFUSED(RblBatchAddMany(NULL, material, &bb, 1) > 0);
+    EXPECT_REFUSED(RblBatchAddMany(&zero, material, &bb, 1) > 0);
+    RblBatch b = RblLoadBatch(4);
+    EXPECT_REFUSED(RblBatchAddMany(&b, material, &bb, 1) > 0);        // not begun
+    RblBeginBatch(&b, camera());
+    EXPECT_REFUSED(RblBatchAddMany(&b, material, NULL, 3) > 0);
+    EXPECT_REFUSED(RblBatchAddMany(&b, material, &bb, -1) > 0);
+    ck(RblBatchAddMany(&b, material, NULL, 0) == 0 && b.count == 0, "an empty call added %d", b.count);
+    // Every float field bad, each beside good billboards (so fours form around it): refused or
+    // finite; batches of 10 bad fields (60 billboards: the contracts build's batch limit is 64)
+    RblEndBatch(&b);
+    enum { EACH = 6, PER_BATCH = 10 };
+    RblBillboard set[PER_BATCH*EACH];
+    int cases = 0, batches = 0;
+    for (int first = 0; first < COUNT_OF(billboardFloats)*5; first += PER_BATCH)
+    {
+        int n = 0;
+        for (int c = first; (c < first + PER_BATCH) && (c < COUNT_OF(billboardFloats)*5); c++)
+        {
+            for (int k = 0; k < EACH; k++) set[n + k] = billboard();
+            SET_FIELD(set[n + c%EACH], billboardFloats[c/5], badFloats[c%5]);
+            n += EACH; cases++;
+        }
+        RblBeginBatch(&b, camera());
+        warnings = 0;
+        int added = RblBatchAddMany(&b, material, set, n);
+        ck((added == b.count) && (b.count + b.skipped == n) && (warnings == ((b.skipped > 0)? 1 : 0)),
+           "fields %d..: %d of %d added, %d skipped, %d lines (one a batch)", first, added, n, b.skipped, warnings);
+        bool finite = true;
+        for (int i = 0; i < b.state->count; i++)
+        {
+            RblVertex v[4];
+            rtBatchVertices(b.state, i, v);
+            finite = finite && allFinite(v[0].position, 3) && allFinite(v[2].position, 3) && allFinite(v[2].texcoord, 2) &&
+                     (!b.state->records || (allFinite(&((const rbl__BatchRecord *)(const void *)b.state->vertices + i)->position.x, 12) &&
+                                            allFinite(&((const rbl__BatchRecord *)(const void *)b.state->vertices + i)->up.x, 7)));
+        }
+        ck(finite, "fields %d..: a bad float reached a slot", first);
+        RblEndBatch(&b);
+        batches++;
+    }
+    ck(cases == COUNT_OF(billboardFloats)*5, "%d bad fields tried in %d batches", cases, batches);
+    // A zero material: every billboard skipped, one line
+    RblBeginBatch(&b, camera());
+    Material z; memset(&z, 0, sizeof(z));
+    EXPECT_REFUSED(RblBatchAddMany(&b, z, set, 5) > 0);
+    ck(b.skipped == 5 && b.count == 0, "zero material: %d skipped, %d kept", b.skipped, b.count);
+    RblEndBatch(&b);
+    RblUnloadBatch(&b);
+}
+
 static void c_batch_limit(void)
 {
     RblBatch b = RblLoadBatch(RBL_MAX_BATCH_BILLBOARDS);
@@ -2420,6 +2477,7 @@ static const Case cases[] = {
     { "RblUnloadBatch", "NULL, zero, double, stale", c_batch_unload, "null stale-header" },
     { "RblBeginBatch", "NULL, zero, stale, pending, bad camera", c_batch_begin, "null stale-header nesting floats" },
     { "RblBatchAdd", "NULL, not begun, bad floats, bad materials", c_batch_add, "null floats variants" },
+    { "RblBatchAddMany", "NULL, not begun, NULL array, negative count, bad floats among good ones, a zero material", c_batch_add_many, "null floats variants" },
     { "RblBatchAdd RblLoadBatch", "the billboard limit", c_batch_limit, "counts" },
     { "RblEndBatch", "NULL, zero, unbegun, twice, stale", c_batch_end, "null nesting stale-header" },
     { "RblDrawBillboard", "bad camera, materials, variants", c_draw_billboard, "floats variants" },
