@@ -7426,11 +7426,12 @@ static int rbl__copyInstances(const RblInstance *in, int count, unsigned char *o
     const __m128 zero = _mm_setzero_ps(), eyeX = _mm_set1_ps(view->eye.x), eyeY = _mm_set1_ps(view->eye.y), eyeZ = _mm_set1_ps(view->eye.z),
                  normalX = _mm_set1_ps(backNormal.x), normalY = _mm_set1_ps(backNormal.y), normalZ = _mm_set1_ps(backNormal.z);
     const bool laneBack = (backMode == RBL__BACK_PLANE) || (backMode == RBL__BACK_ALWAYS);
+    int single = 0;         // instances of a four that failed a check, left to take one at a time
 #endif
     while (i < count)
     {
 #if defined(RBL__SSE2)
-        if ((i + 4 <= count) && (!seekBack || laneBack))
+        if ((single == 0) && (i + 4 <= count) && (!seekBack || laneBack))
         {
             const unsigned char *p = (const unsigned char *)(in + i);
             unsigned char *o = out + (size_t)kept*sizeof(RblInstance);
@@ -7473,16 +7474,9 @@ static int rbl__copyInstances(const RblInstance *in, int count, unsigned char *o
                 i += 4;
                 continue;
             }
-            // (the slots written are written again below)
-            for (int end = i + 4; i < end; i++)
-            {
-                if (!rbl__instanceOk(&in[i]) || !rbl__instancePolygonOk(&in[i], corners)) continue;
-                memcpy(out + (size_t)kept*sizeof(RblInstance), &in[i], sizeof(RblInstance));
-                kept++;
-                if (seekBack && rbl__backAt(view, backMode, backNormal, in[i].position)) { *back = true; seekBack = false; }
-            }
-            continue;
+            single = 4;         // this four one at a time (the slots written are written again)
         }
+        if (single > 0) single--;
 #endif
         if (rbl__instanceOk(&in[i]) && rbl__instancePolygonOk(&in[i], corners))
         {
