@@ -1913,6 +1913,8 @@ typedef struct rbl__State {
     long long stretchFours;            // Tests' count: fours RblBatchAddMany took four lanes at a time
     long long stretchSingles;          // ... and billboards its stretches took one at a time
     bool instanceNoMap;                // Test hook: RblDrawInstanced checks, then uploads (never maps)
+    bool spriteNoMap;                  // Test hook: RblUpdateSprites uploads the caller's array (never maps)
+    long long spriteMapped;            // Tests' count: RblUpdateSprites calls that wrote the mapped store
 #endif
     char problem[512];                 // Why the last internal step failed (its public caller logs it once)
     char failure[512];                 // The last refusal line without "RBL: " (RblGetFailureReason)
@@ -14017,7 +14019,7 @@ int RblSpriteViewSector(Vector3 viewDirection, float facingDegrees, int directio
 #define RBL__SPRITE_CHUNK 256               // Sprites per culling chunk (bounds kept per chunk)
 
 typedef struct rbl__SpriteBufferState {
-    RblSpriteInstance *sprites;     // CPU copy: chunk bounds are rebuilt from it after an update
+    float *pivots;                  // Per sprite: pivot xyz and scale as last written (chunk bounds after a part of a chunk changes)
     float *bounds;                  // Per chunk: pivots' min xyz, max xyz, largest scale (-1: nothing to draw)
     int *runs;                      // Draw scratch: first sprite and count of each visible run of chunks
     int capacity, count, chunks;
@@ -14042,7 +14044,7 @@ static void rbl__freeSpriteState(rbl__SpriteBufferState *b)
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
     if (b->tableId != 0) rlUnloadTexture(b->tableId);
-    RBL_FREE(b->sprites);
+    RBL_FREE(b->pivots);
     RBL_FREE(b->bounds);
     RBL_FREE(b->runs);
     RBL_FREE(b);
@@ -14173,16 +14175,17 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     rbl__SpriteBufferState *b = (rbl__SpriteBufferState *)RBL_CALLOC(1, sizeof(rbl__SpriteBufferState));
     if (b != NULL)
     {
-        b->sprites = (RblSpriteInstance *)RBL_CALLOC((size_t)capacity, sizeof(RblSpriteInstance));
+        b->pivots = (float *)RBL_CALLOC((size_t)capacity*4, sizeof(float));
         b->bounds = (float *)RBL_MALLOC((size_t)chunks*7*sizeof(float));
         b->runs = (int *)RBL_MALLOC((size_t)chunks*2*sizeof(int));
     }
     float *padded = (table != NULL)? (float *)RBL_CALLOC((size_t)rows*RBL__FRAME_TABLE_WIDTH*4, sizeof(float)) : NULL;
-    if ((b == NULL) || (b->sprites == NULL) || (b->bounds == NULL) || (b->runs == NULL) || (padded == NULL))
+    void *zeros = RBL_CALLOC((size_t)capacity, sizeof(RblSpriteInstance));        // hidden sprites until written
+    if ((b == NULL) || (b->pivots == NULL) || (b->bounds == NULL) || (b->runs == NULL) || (padded == NULL) || (zeros == NULL))
     {
         TraceLog(LOG_WARNING, "RBL: RblLoadSpriteBuffer: out of memory for %i sprites", capacity);
-        if (b != NULL) { RBL_FREE(b->sprites); RBL_FREE(b->bounds); RBL_FREE(b->runs); RBL_FREE(b); }
-        RBL_FREE(table); RBL_FREE(padded);
+        if (b != NULL) { RBL_FREE(b->pivots); RBL_FREE(b->bounds); RBL_FREE(b->runs); RBL_FREE(b); }
+        RBL_FREE(table); RBL_FREE(padded); RBL_FREE(zeros);
         return buffer;
     }
     for (int c = 0; c < chunks; c++) b->bounds[c*7 + 6] = -1.0f;
@@ -14201,7 +14204,8 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
     }
     b->vaoId = rlLoadVertexArray();
     rlEnableVertexArray(b->vaoId);
-    b->vboId = rlLoadVertexBuffer(b->sprites, capacity*(int)sizeof(RblSpriteInstance), true);
+    b->vboId = rlLoadVertexBuffer(zeros, capacity*(int)sizeof(RblSpriteInstance), true);
+    RBL_FREE(zeros);
     rbl__spriteAttributes(b, 0);
     for (unsigned int i = 0; i < RBL__SPRITE_ATTRIBUTES; i++) { rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + i); rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + i, 1); }
     rlDisableVertexArray();
@@ -14312,7 +14316,43 @@ static inline bool rbl__spriteOk(const rbl__SpriteBufferState *b, const RblSprit
     return ok != 0u;
 }
 
-// Chunk c's pivot bounds and largest scale from the CPU copy, one sprite at a time
+// Every one of count sprites passes rbl__spriteOk: where SSE2 is, each sprite's two halves are tested
+// as lanes (a value past its limit carries into its lane's sign bit), the frame as integers
+static bool rbl__spritesOk(const rbl__SpriteBufferState *b, const RblSpriteInstance *sprites, int count)
+{
+#if defined(RBL__SSE2)
+    // First half: position xyz (exponent fields) and scale (magnitude at most 1e15's; its sign
+    // apart, as -0 passes). Second half, lanes moved to: start (exponent), speed | mode << 16 twice
+    // (speed's sign and mode bits 4..7; speed's exponent field all ones)
+    const int bias = (int)((256u - RBL__INSTANCE_LIMIT_EXPONENT) << 23);
+    const float most = 1e15f;
+    int mostBits;
+    memcpy(&mostBits, &most, sizeof(mostBits));
+    const __m128i firstMask = _mm_setr_epi32(0x7f800000, 0x7f800000, 0x7f800000, 0x7FFFFFFF), firstBias = _mm_setr_epi32(bias, bias, bias, 0x7FFFFFFF - mostBits);
+    const __m128i secondMask = _mm_setr_epi32(0x7f800000, 0x00F08000, 0x7C00, 0), secondBias = _mm_setr_epi32(bias, 0x7FFFFFFF, 0x7FFF8400, 0);
+    const __m128 zero = _mm_setzero_ps();
+    __m128i bad = _mm_setzero_si128();
+    __m128 negative = _mm_setzero_ps();
+    unsigned int badFrame = 0u;
+    const unsigned int frames = (unsigned int)b->frameCount, tags = (unsigned int)b->tagCount;
+    for (int i = 0; i < count; i++)
+    {
+        const __m128i *p = (const __m128i *)(const void *)&sprites[i];
+        const __m128i lo = _mm_loadu_si128(p), hi = _mm_shuffle_epi32(_mm_loadu_si128(p + 1), _MM_SHUFFLE(0, 3, 3, 0));
+        bad = _mm_or_si128(bad, _mm_or_si128(_mm_add_epi32(_mm_and_si128(lo, firstMask), firstBias), _mm_add_epi32(_mm_and_si128(hi, secondMask), secondBias)));
+        negative = _mm_or_ps(negative, _mm_cmplt_ps(_mm_castsi128_ps(lo), zero));
+        const unsigned int frame = sprites[i].frame, animated = (unsigned int)((sprites[i].mode & RBL_SPRITE_ANIMATED) != 0u);
+        badFrame |= (unsigned int)(frame >= (animated? tags : frames)) & ~(animated & (unsigned int)(frame == 0xFFFFu));
+    }
+    return ((_mm_movemask_ps(_mm_castsi128_ps(bad)) | (_mm_movemask_ps(negative) & 8)) == 0) && (badFrame == 0u);
+#else
+    unsigned int ok = 1u;
+    for (int i = 0; i < count; i++) ok &= (unsigned int)rbl__spriteOk(b, &sprites[i]);
+    return ok != 0u;
+#endif
+}
+
+// Chunk c's pivot bounds and largest scale from the pivot copy, one sprite at a time (+0 for -0)
 static inline void rbl__spriteChunkBoundsScalar(rbl__SpriteBufferState *b, int c)
 {
     float *o = b->bounds + (size_t)c*7;
@@ -14321,42 +14361,101 @@ static inline void rbl__spriteChunkBoundsScalar(rbl__SpriteBufferState *b, int c
     if (end > b->count) end = b->count;
     for (int i = c*RBL__SPRITE_CHUNK; i < end; i++)
     {
-        const RblSpriteInstance *p = &b->sprites[i];
-        if (p->scale == 0.0f) continue;                 // hidden
-        const float v[3] = { p->position.x, p->position.y, p->position.z };
-        if (o[6] < 0.0f) { for (int k = 0; k < 3; k++) o[k] = o[3 + k] = v[k]; o[6] = p->scale; continue; }
+        const float *v = b->pivots + (size_t)i*4;
+        if (v[3] == 0.0f) continue;                     // hidden
+        if (o[6] < 0.0f) { for (int k = 0; k < 3; k++) o[k] = o[3 + k] = v[k]; o[6] = v[3]; continue; }
         for (int k = 0; k < 3; k++) { if (v[k] < o[k]) o[k] = v[k]; if (v[k] > o[3 + k]) o[3 + k] = v[k]; }
-        if (p->scale > o[6]) o[6] = p->scale;
+        if (v[3] > o[6]) o[6] = v[3];
     }
+    for (int k = 0; (o[6] >= 0.0f) && (k < 6); k++) o[k] += 0.0f;
 }
 
-// Chunk c's pivot bounds and largest scale from the CPU copy: the same comparisons as one sprite at
-// a time, four lanes at once where SSE2 is (min/max and compares round nothing)
+#if defined(RBL__SSE2)
+// One pivot | scale lane set into the running bounds; a hidden sprite (scale 0) becomes all NaN
+// lanes, which min/max pass over (they return their second operand when one is NaN)
+static inline void rbl__boundsLanes(__m128 v, __m128 *lo, __m128 *hi)
+{
+    const __m128 w = _mm_or_ps(v, _mm_cmpeq_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3)), _mm_setzero_ps()));
+    *lo = _mm_min_ps(w, *lo);
+    *hi = _mm_max_ps(w, *hi);
+}
+
+// Chunk bounds from two sets of lanes: nothing visible when the largest scale is not above 0; +0
+// for -0 (two sets meet zeros of either sign in either order)
+static inline void rbl__storeBoundsLanes(float *o, __m128 lo, __m128 hi, __m128 lo2, __m128 hi2)
+{
+    float l[4], h[4];
+    _mm_storeu_ps(l, _mm_add_ps(_mm_min_ps(lo, lo2), _mm_setzero_ps()));
+    _mm_storeu_ps(h, _mm_add_ps(_mm_max_ps(hi, hi2), _mm_setzero_ps()));
+    if (!(h[3] > 0.0f)) { o[6] = -1.0f; return; }
+    for (int k = 0; k < 3; k++) { o[k] = l[k]; o[3 + k] = h[k]; }
+    o[6] = h[3];
+}
+#endif
+
+// Chunk c's pivot bounds and largest scale from the pivot copy: the same comparisons as one sprite
+// at a time, four lanes at once where SSE2 is (min/max and compares round nothing)
 static void rbl__spriteChunkBounds(rbl__SpriteBufferState *b, int c)
 {
 #if defined(RBL__SSE2)
-    float *o = b->bounds + (size_t)c*7;
     int end = (c + 1)*RBL__SPRITE_CHUNK;
     if (end > b->count) end = b->count;
-    // Lanes: pivot x, y, z and scale; a hidden sprite (scale 0) leaves both bounds as they are
-    const __m128 inf = _mm_set1_ps(INFINITY), zero = _mm_setzero_ps(), minusInf = _mm_sub_ps(zero, inf);
-    __m128 lo = inf, hi = minusInf;
-    for (int i = c*RBL__SPRITE_CHUNK; i < end; i++)
+    __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), lo2 = lo, hi2 = hi;
+    int i = c*RBL__SPRITE_CHUNK;
+    for (; i + 1 < end; i += 2)
     {
-        const __m128 v = _mm_loadu_ps((const float *)(const void *)&b->sprites[i]);
-        const __m128 hidden = _mm_cmpeq_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(3, 3, 3, 3)), zero);
-        lo = _mm_min_ps(_mm_or_ps(_mm_and_ps(hidden, inf), _mm_andnot_ps(hidden, v)), lo);
-        hi = _mm_max_ps(_mm_or_ps(_mm_and_ps(hidden, minusInf), _mm_andnot_ps(hidden, v)), hi);
+        rbl__boundsLanes(_mm_loadu_ps(b->pivots + (size_t)i*4), &lo, &hi);
+        rbl__boundsLanes(_mm_loadu_ps(b->pivots + (size_t)i*4 + 4), &lo2, &hi2);
     }
-    float l[4], h[4];
-    _mm_storeu_ps(l, lo);
-    _mm_storeu_ps(h, hi);
-    if (!(h[3] > 0.0f)) { o[6] = -1.0f; return; }       // nothing visible (scales are >= 0)
-    for (int k = 0; k < 3; k++) { o[k] = l[k]; o[3 + k] = h[k]; }
-    o[6] = h[3];
+    if (i < end) rbl__boundsLanes(_mm_loadu_ps(b->pivots + (size_t)i*4), &lo, &hi);
+    rbl__storeBoundsLanes(b->bounds + (size_t)c*7, lo, hi, lo2, hi2);
 #else
     rbl__spriteChunkBoundsScalar(b, c);
 #endif
+}
+
+// Sprites [from, to) of chunk c (checked) from src (sprite from's): into gpu (the mapped slot of
+// sprite from; NULL: uploaded apart) and the pivot copy, then the chunk's bounds (from the lanes
+// when the chunk is written whole, one pass over the input)
+static void rbl__writeSpriteChunk(rbl__SpriteBufferState *b, int c, int from, int to, const RblSpriteInstance *src, RblSpriteInstance *gpu)
+{
+    int end = (c + 1)*RBL__SPRITE_CHUNK;
+    if (end > b->count) end = b->count;
+    const bool whole = (from == c*RBL__SPRITE_CHUNK) && (to == end);
+#if defined(RBL__SSE2)
+    // The library's copy (the widest stores the machine has), then the pivots and bounds from the
+    // chunk while it is in the cache
+    if (gpu != NULL) memcpy(gpu, src, (size_t)(to - from)*sizeof(RblSpriteInstance));
+    __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), lo2 = lo, hi2 = hi;
+    __m128 *pivots = (__m128 *)(void *)(b->pivots + (size_t)from*4);
+    const float *in = (const float *)(const void *)src;
+    const int n = to - from;
+    int i = 0;
+    for (; i + 1 < n; i += 2)
+    {
+        const __m128 a = _mm_loadu_ps(in + 8*i), a2 = _mm_loadu_ps(in + 8*i + 8);
+        _mm_storeu_ps((float *)(pivots + i), a);
+        _mm_storeu_ps((float *)(pivots + i + 1), a2);
+        rbl__boundsLanes(a, &lo, &hi);
+        rbl__boundsLanes(a2, &lo2, &hi2);
+    }
+    if (i < n)
+    {
+        const __m128 a = _mm_loadu_ps(in + 8*i);
+        _mm_storeu_ps((float *)(pivots + i), a);
+        rbl__boundsLanes(a, &lo, &hi);
+    }
+    if (whole) { rbl__storeBoundsLanes(b->bounds + (size_t)c*7, lo, hi, lo2, hi2); return; }
+#else
+    if (gpu != NULL) memcpy(gpu, src, (size_t)(to - from)*sizeof(RblSpriteInstance));
+    for (int i = 0; i < to - from; i++)
+    {
+        float *v = b->pivots + (size_t)(from + i)*4;
+        v[0] = src[i].position.x; v[1] = src[i].position.y; v[2] = src[i].position.z; v[3] = src[i].scale;
+    }
+    (void)whole;
+#endif
+    rbl__spriteChunkBounds(b, c);
 }
 
 bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSpriteInstance *sprites)
@@ -14368,23 +14467,29 @@ bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSprit
         TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: range first %i count %i outside the capacity %i, or NULL sprites", first, count, b->capacity);
         return false;
     }
-    unsigned int ok = 1u;
-    for (int i = 0; i < count; i++) ok &= (unsigned int)rbl__spriteOk(b, &sprites[i]);
-    for (int i = 0; (ok == 0u) && (i < count); i++)
+    // Every sprite checked before anything is written: a bad one leaves the buffer as it was
+    const bool ok = rbl__spritesOk(b, sprites, count);
+    for (int i = 0; !ok && (i < count); i++)
     {
         const char *bad = rbl__spriteProblem(b, &sprites[i]);
         if (bad != NULL) { TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: sprite %i: %s (nothing written)", first + i, bad); return false; }
     }
     if (count == 0) return true;
     if (first + count > b->count) b->count = first + count;
-    // Chunk by chunk: its bounds read the copy just written (still in the cache)
+    // One pass over the input into the pivot copy and the bounds, and, when the whole buffer is
+    // written (where the context maps), into a fresh store of it (no wait on draws still reading the
+    // old one); a range is uploaded from the caller's array
+    const size_t size = sizeof(RblSpriteInstance);
+    RblSpriteInstance *gpu = ((first == 0) && (count == b->capacity) && !RBL__HOOK(spriteNoMap) && rbl__canMap())? (RblSpriteInstance *)rbl__mapBuffer(b->vboId, (size_t)count*size, false) : NULL;
     for (int c = first/RBL__SPRITE_CHUNK; c <= (first + count - 1)/RBL__SPRITE_CHUNK; c++)
     {
         const int from = (c*RBL__SPRITE_CHUNK > first)? c*RBL__SPRITE_CHUNK : first, to = ((c + 1)*RBL__SPRITE_CHUNK < first + count)? (c + 1)*RBL__SPRITE_CHUNK : first + count;
-        memcpy(b->sprites + from, sprites + (from - first), (size_t)(to - from)*sizeof(RblSpriteInstance));
-        rbl__spriteChunkBounds(b, c);
+        rbl__writeSpriteChunk(b, c, from, to, sprites + (from - first), (gpu != NULL)? gpu + (from - first) : NULL);
     }
-    rlUpdateVertexBuffer(b->vboId, sprites, count*(int)sizeof(RblSpriteInstance), first*(int)sizeof(RblSpriteInstance));
+    if ((gpu == NULL) || !rbl__unmapBuffer(b->vboId)) rlUpdateVertexBuffer(b->vboId, sprites, count*(int)size, first*(int)size);
+#if defined(RBL_INSTRUMENTS)
+    else rbl__state.spriteMapped++;
+#endif
     pub->count = b->count;
     return true;
 }

@@ -1352,26 +1352,31 @@ static void test_atlas_real_exporter_files_import_and_rebuild_from_their_sheets(
     RblUnloadAtlas(&gdx);
 }
 
-// A sprite update's branch-free check accepts exactly what rbl__spriteProblem accepts, and the
-// four-lane chunk bounds equal the one-at-a-time ones bit for bit: 400,000 sprites with each field
-// on its bound's edges (position and start at 2^120, NaN, Inf; scale -0, 0, 1e15 and the next
-// float, negative, NaN; half-float speeds Inf, NaN, the largest finite, negative zero; mode bits
-// 4..7; frames and tags at and past the atlas's counts, tag 0xFFFF), and 300 chunks of valid sprites
-// with hidden ones (scale 0 and -0), repeated coordinates, chunks whose least or greatest
-// coordinate is a tie of +0 and -0, chunks partly filled and all hidden
+// A sprite update's checks (branch-free one at a time, and lanes over a run) accept exactly what
+// rbl__spriteProblem accepts, and the four-lane chunk bounds equal the one-at-a-time ones bit for
+// bit: 400,000 sprites with each field on its bound's edges (position and start at 2^120, NaN, Inf;
+// scale -0, 0, 1e15 and the next float, negative, NaN; half-float speeds Inf, NaN, the largest
+// finite, negative zero; mode bits 4..7; frames and tags at and past the atlas's counts, tag
+// 0xFFFF), runs of them under three atlas sizes, and 300 chunks of valid sprites with hidden ones
+// (scale 0 and -0), repeated coordinates, chunks whose least or greatest coordinate is a tie of +0
+// and -0 (bounds keep +0), chunks partly filled, all hidden, and written in two parts
 static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_ones(void)
 {
     rbl__SpriteBufferState b;
     memset(&b, 0, sizeof(b));
     b.frameCount = 7; b.tagCount = 3;
     const float edgeF[] = { 0.0f, -0.0f, 1.0f, -3.5f, 1.3292279e36f, -1.3292279e36f, 1.329228e36f, -1.329228e36f, NAN, INFINITY, -INFINITY, 1e-40f };
-    const float scaleF[] = { 0.0f, -0.0f, 1.0f, 1e15f, 1.0000001e15f, -1e-30f, NAN, INFINITY, 3e-39f, 0.01f };
+    const float scaleF[] = { 0.0f, -0.0f, 1.0f, 1e15f, nextafterf(1e15f, INFINITY), -1e-30f, NAN, INFINITY, 3e-39f, 0.01f };
     const unsigned short speedH[] = { 0x0000, 0x3C00, 0x7BFF, 0x7C00, 0x7E00, 0x8000, 0xFC00, 0x03FF, 0x7C01 };
     const unsigned short modeH[] = { 0x00, RBL_SPRITE_ANIMATED, RBL_SPRITE_ANIMATED | 0x0300, 0x10, 0x80, RBL_SPRITE_FLIP_X, 0xFF00, 0x40 | RBL_SPRITE_ANIMATED };
     const unsigned short frameH[] = { 0, 2, 3, 6, 7, 0xFFFF, 0xFFFE, 100 };
     unsigned int seed = 99u;
     int disagree = 0, accepted = 0;
-    for (int i = 0; i < 400000; i++)
+    enum { EDGES = 400000 };
+    RblSpriteInstance *all = (RblSpriteInstance *)calloc(EDGES, sizeof(RblSpriteInstance));
+    bool *good = (bool *)calloc(EDGES, sizeof(bool));
+    if ((all == NULL) || (good == NULL)) { RT_CHECK(false, "out of memory"); free(all); free(good); return; }
+    for (int i = 0; i < EDGES; i++)
     {
         RblSpriteInstance p;
         memset(&p, 0, sizeof(p));
@@ -1385,40 +1390,95 @@ static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_o
         p.frame = SPR_EDGE((unsigned short)1, frameH, 8u);
         #undef SPR_EDGE
         p.rotation = (unsigned short)rtRandom(&seed);
-        bool fast = rbl__spriteOk(&b, &p), slow = (rbl__spriteProblem(&b, &p) == NULL);
-        disagree += (fast != slow);
+        bool fast = rbl__spriteOk(&b, &p), lanes = rbl__spritesOk(&b, &p, 1), slow = (rbl__spriteProblem(&b, &p) == NULL);
+        disagree += (fast != slow) + (lanes != slow);
         accepted += slow;
+        all[i] = p; good[i] = slow;
     }
-    printf("    checks: %d of 400000 disagree (%d accepted)\n", disagree, accepted);
+    printf("    checks: %d of %d disagree (%d accepted)\n", disagree, EDGES, accepted);
     RT_CHECK((disagree == 0) && (accepted > 40000) && (accepted < 360000), "%d disagree, %d accepted", disagree, accepted);
+    // Runs of 0..64 of them at once, accepted ones with (half the time) one rejected one put in:
+    // accepted exactly when every one is; the same under other atlas sizes (no frames at all, one
+    // tag; frame and tag counts past 16 bits)
+    int runsDiffer = 0, runsAccepted = 0, runs = 0;
+    const int sizes[3][2] = { { 7, 3 }, { 0, 1 }, { 70000, 65536 } };
+    int *pool[2] = { (int *)malloc(EDGES*sizeof(int)), (int *)malloc(EDGES*sizeof(int)) };
+    RblSpriteInstance run[64];
+    for (int k = 0; (k < 3) && (pool[0] != NULL) && (pool[1] != NULL); k++)
+    {
+        b.frameCount = sizes[k][0]; b.tagCount = sizes[k][1];
+        int counts[2] = { 0, 0 };
+        for (int i = 0; i < EDGES; i++) { int g = (rbl__spriteProblem(&b, &all[i]) == NULL); pool[g][counts[g]++] = i; }
+        for (int r = 0; (r < 20000) && (counts[0] > 0) && (counts[1] > 0); r++, runs++)
+        {
+            int n = (int)(rtRandom(&seed)%65u);
+            for (int i = 0; i < n; i++) run[i] = all[pool[1][rtRandom(&seed)%(unsigned int)counts[1]]];
+            if ((n > 0) && (rtRandom(&seed)%2u)) run[rtRandom(&seed)%(unsigned int)n] = all[pool[0][rtRandom(&seed)%(unsigned int)counts[0]]];
+            bool every = true;
+            for (int i = 0; i < n; i++) every = every && (rbl__spriteProblem(&b, &run[i]) == NULL);
+            runsDiffer += (rbl__spritesOk(&b, run, n) != every);
+            runsAccepted += every;
+        }
+    }
+    free(pool[0]); free(pool[1]);
+    b.frameCount = 7; b.tagCount = 3;
+    printf("    runs: %d of %d differ (%d accepted)\n", runsDiffer, runs, runsAccepted);
+    RT_CHECK((runsDiffer == 0) && (runsAccepted > runs/20) && (runsAccepted < runs - runs/20), "%d of %d runs differ, %d accepted", runsDiffer, runs, runsAccepted);
+    free(all); free(good);
 
+    // Chunk bounds: four lanes (two sets, either zero's sign) equal one sprite at a time, from the
+    // pivot copy and from a chunk's write (whole: from the write's own lanes; a part: from the copy)
     enum { CHUNKS = 300 };
     b.capacity = b.count = CHUNKS*RBL__SPRITE_CHUNK - 37;
-    b.sprites = (RblSpriteInstance *)calloc((size_t)b.capacity, sizeof(RblSpriteInstance));
-    float *lanes = (float *)calloc((size_t)CHUNKS*7, sizeof(float)), *one = (float *)calloc((size_t)CHUNKS*7, sizeof(float));
-    if ((b.sprites == NULL) || (lanes == NULL) || (one == NULL)) { RT_CHECK(false, "out of memory"); free(b.sprites); free(lanes); free(one); return; }
+    RblSpriteInstance *in = (RblSpriteInstance *)calloc((size_t)b.capacity, sizeof(RblSpriteInstance)), *gpu = (RblSpriteInstance *)calloc((size_t)b.capacity, sizeof(RblSpriteInstance));
+    float *pivots = (float *)calloc((size_t)b.capacity*4, sizeof(float));
+    float *lanes = (float *)calloc((size_t)CHUNKS*7, sizeof(float)), *one = (float *)calloc((size_t)CHUNKS*7, sizeof(float)), *written = (float *)calloc((size_t)CHUNKS*7, sizeof(float));
+    if ((in == NULL) || (gpu == NULL) || (pivots == NULL) || (lanes == NULL) || (one == NULL) || (written == NULL))
+    {
+        RT_CHECK(false, "out of memory"); free(in); free(gpu); free(pivots); free(lanes); free(one); free(written); return;
+    }
     const float coordF[] = { 0.0f, -0.0f, 1.5f, -1.5f, 2.0f, -7.25f, 1e30f, -1e30f };
     for (int i = 0; i < b.count; i++)
     {
-        RblSpriteInstance *p = &b.sprites[i];
+        RblSpriteInstance *p = &in[i];
         int c = i/RBL__SPRITE_CHUNK;
         for (int k = 0; k < 3; k++) ((float *)&p->position)[k] = (rtRandom(&seed)%3u)? rtRandomRange(&seed, -50.0f, 50.0f) : coordF[rtRandom(&seed)%8u];
-        // chunks whose least (or greatest) coordinate is a tie of +0 and -0: the first seen stays
+        // chunks whose least (or greatest) coordinate is a tie of +0 and -0
         for (int k = 0; ((c % 5) == 1) && (k < 3); k++) ((float *)&p->position)[k] = coordF[rtRandom(&seed)%3u];
         for (int k = 0; ((c % 5) == 2) && (k < 3); k++) ((float *)&p->position)[k] = -coordF[rtRandom(&seed)%3u];
         unsigned int h = rtRandom(&seed)%5u;
         p->scale = ((c % 7) == 3)? 0.0f : (h == 0)? 0.0f : (h == 1)? -0.0f : rtRandomRange(&seed, 0.001f, 4.0f);
+        p->start = (float)i; p->rotation = (unsigned short)i; p->frame = (unsigned short)(i%7); p->tint = (Color){ (unsigned char)i, 1, 2, 3 };
     }
-    int differ = 0, empty = 0;
+    // Written chunk by chunk: whole ones, and every 3rd in two parts (the second part's bounds then
+    // come from the copy, holding the first part)
+    b.pivots = pivots; b.bounds = written;
+    for (int c = 0; c < CHUNKS; c++)
+    {
+        int from = c*RBL__SPRITE_CHUNK, to = (c + 1)*RBL__SPRITE_CHUNK;
+        if (to > b.count) to = b.count;
+        int cut = ((c % 3) == 0)? from + 1 + (int)(rtRandom(&seed)%(unsigned int)(to - from - 1)) : from;
+        if (cut > from) rbl__writeSpriteChunk(&b, c, from, cut, in + from, gpu + from);
+        rbl__writeSpriteChunk(&b, c, cut, to, in + cut, gpu + cut);
+    }
+    int copyDiffer = 0;
+    for (int i = 0; i < b.count; i++)
+    {
+        const float want[4] = { in[i].position.x, in[i].position.y, in[i].position.z, in[i].scale };
+        copyDiffer += (memcmp(pivots + 4*i, want, sizeof(want)) != 0) + (memcmp(&gpu[i], &in[i], sizeof(RblSpriteInstance)) != 0);
+    }
+    int differ = 0, empty = 0, negativeZero = 0;
     for (int c = 0; c < CHUNKS; c++)
     {
         b.bounds = lanes; rbl__spriteChunkBounds(&b, c);
         b.bounds = one; rbl__spriteChunkBoundsScalar(&b, c);
-        differ += memcmp(lanes + 7*c, one + 7*c, 7*sizeof(float)) != 0;
-        empty += one[7*c + 6] < 0.0f;
+        bool seen = one[7*c + 6] >= 0.0f;
+        differ += (memcmp(lanes + 7*c, one + 7*c, (seen? 7 : 1)*sizeof(float)) != 0) + (memcmp(written + 7*c, one + 7*c, (seen? 7 : 1)*sizeof(float)) != 0);
+        for (int k = 0; seen && (k < 6); k++) negativeZero += (one[7*c + k] == 0.0f) && signbit(one[7*c + k]);
+        empty += !seen;
     }
-    printf("    chunk bounds: %d of %d differ (%d with nothing visible)\n", differ, CHUNKS, empty);
-    RT_CHECK((differ == 0) && (empty > 30), "%d chunks' bounds differ, %d empty", differ, empty);
-    free(b.sprites); free(lanes); free(one);
+    printf("    chunk bounds: %d of %d differ (%d with nothing visible), %d -0 bounds; %d copies differ\n", differ, 2*CHUNKS, empty, negativeZero, copyDiffer);
+    RT_CHECK((differ == 0) && (empty > 30) && (negativeZero == 0) && (copyDiffer == 0), "%d chunks' bounds differ, %d empty, %d -0, %d copies differ", differ, empty, negativeZero, copyDiffer);
+    free(in); free(gpu); free(pivots); free(lanes); free(one); free(written);
 }
 

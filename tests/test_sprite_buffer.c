@@ -477,10 +477,106 @@ static void test_sprite_buffer_casts_the_shadow_draw_instanced_casts(void)
     UnloadTexture(holed);
 }
 
+// RblUpdateSprites writing a whole buffer through a fresh mapped store equals the upload (test hook
+// spriteNoMap) and a CPU model: 100 updates of the whole buffer, ranges across chunks, parts of one
+// chunk, single sprites and nothing, every fifth holding one bad sprite (refused with one line,
+// nothing changed); after each: the GPU buffers read back bit for bit, the pivot copy, every chunk's
+// bounds against one sprite at a time over the model (hidden sprites, +/-0 pivots), the counts.
+static void test_sprite_buffer_mapped_update_equals_the_upload_and_a_model(void)
+{
+    RblAtlas atlas = sbAtlas();
+    enum { N = 7*RBL__SPRITE_CHUNK - 45, STEPS = 100 };
+    RblSpriteBuffer buf[2] = { RblLoadSpriteBuffer(&atlas, N), RblLoadSpriteBuffer(&atlas, N) };
+    RblSpriteInstance *model = (RblSpriteInstance *)calloc(N, sizeof(RblSpriteInstance)), *in = (RblSpriteInstance *)calloc(N, sizeof(RblSpriteInstance));
+    float *pivots = (float *)calloc((size_t)N*4, sizeof(float)), *bounds = (float *)calloc((size_t)N*7, sizeof(float));
+    if (!RblIsSpriteBufferValid(buf[0]) || !RblIsSpriteBufferValid(buf[1]) || (model == NULL) || (in == NULL) || (pivots == NULL) || (bounds == NULL))
+    {
+        RT_CHECK(false, "set-up failed");
+        RblUnloadSpriteBuffer(&buf[0]); RblUnloadSpriteBuffer(&buf[1]); free(model); free(in); free(pivots); free(bounds); RblUnloadAtlas(&atlas);
+        return;
+    }
+    const bool maps = rbl__canMap();
+    const long long mappedBefore = rbl__state.spriteMapped;
+    const float coords[] = { 0.0f, -0.0f, 3.5f, -3.5f };
+    unsigned int seed = 4242u;
+    int modelCount = 0, wrong = 0, refused = 0, readBack = 0;
+    for (int step = 0; step < STEPS; step++)
+    {
+        int kind = step%5, first = 0, count = N;
+        if (kind == 1) { first = (int)(rtRandom(&seed)%(unsigned int)N); count = (int)(rtRandom(&seed)%(unsigned int)(N - first + 1)); }
+        if (kind == 2) { first = (int)(rtRandom(&seed)%(unsigned int)N); count = (int)(rtRandom(&seed)%(unsigned int)(RBL__SPRITE_CHUNK - first%RBL__SPRITE_CHUNK)) + 1; if (count > N - first) count = N - first; }
+        if (kind == 3) { first = (int)(rtRandom(&seed)%(unsigned int)N); count = (step%10 == 3)? 0 : 1; }
+        for (int i = 0; i < count; i++)
+        {
+            Vector3 p = { rtRandomRange(&seed, -20.0f, 20.0f), rtRandomRange(&seed, -20.0f, 20.0f), rtRandomRange(&seed, -20.0f, 20.0f) };
+            for (int k = 0; k < 3; k++) if (rtRandom(&seed)%4u == 0u) ((float *)&p)[k] = coords[rtRandom(&seed)%4u];
+            unsigned int h = rtRandom(&seed)%6u;
+            float scale = (h == 0)? 0.0f : (h == 1)? -0.0f : rtRandomRange(&seed, 0.001f, 2.0f);
+            in[i] = RblMakeSprite(p, scale, 7.5f*(float)(rtRandom(&seed)%48u), (int)(rtRandom(&seed)%7u), (Color){ (unsigned char)rtRandom(&seed), 0, 0, 255 });
+            if (h == 1) in[i].scale = -0.0f;
+            if (rtRandom(&seed)%3u == 0u) RblAnimateSprite(&in[i], (int)(rtRandom(&seed)%9u) - 1, (int)(rtRandom(&seed)%4u) - 1, rtRandomRange(&seed, -3.0f, 3.0f), rtRandomRange(&seed, 0.0f, 4.0f));
+            in[i].mode = (unsigned short)(in[i].mode | (rtRandom(&seed) & 3u));
+        }
+        const bool bad = (step%5 == 4) && (count > 0);
+        if (bad)
+        {
+            int at = (int)(rtRandom(&seed)%(unsigned int)count);
+            if (step%10 == 4) in[at].position.z = NAN; else { in[at].mode = (unsigned short)(in[at].mode & ~RBL_SPRITE_ANIMATED); in[at].frame = 7; }     // NaN, or a frame the atlas has not
+        }
+        bool ok[2];
+        int lines[2];
+        for (int v = 0; v < 2; v++)
+        {
+            rbl__state.spriteNoMap = (v == 1);
+            warnings = 0;
+            ok[v] = RblUpdateSprites(&buf[v], first, count, in);
+            lines[v] = warnings;
+        }
+        rbl__state.spriteNoMap = false;
+        if (!bad)
+        {
+            memcpy(model + first, in, (size_t)count*sizeof(RblSpriteInstance));
+            if ((count > 0) && (first + count > modelCount)) modelCount = first + count;
+        }
+        refused += bad;
+        // The model's pivots and chunk bounds, one sprite at a time
+        rbl__SpriteBufferState ref;
+        memset(&ref, 0, sizeof(ref));
+        ref.pivots = pivots; ref.bounds = bounds; ref.count = modelCount;
+        for (int i = 0; i < N; i++) { pivots[4*i] = model[i].position.x; pivots[4*i + 1] = model[i].position.y; pivots[4*i + 2] = model[i].position.z; pivots[4*i + 3] = model[i].scale; }
+        const int chunks = (N + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
+        for (int c = 0; c < chunks; c++) rbl__spriteChunkBoundsScalar(&ref, c);
+        for (int v = 0; v < 2; v++)
+        {
+            const rbl__SpriteBufferState *st = rbl__spriteState(&buf[v]);
+            bool same = (ok[v] == !bad) && (lines[v] == (bad? 1 : 0)) && (buf[v].count == modelCount) && (st != NULL) && (st->count == modelCount);
+            same = same && (memcmp(st->pivots, pivots, (size_t)N*4*sizeof(float)) == 0);
+            for (int c = 0; same && (c < chunks); c++) same = memcmp(st->bounds + 7*c, bounds + 7*c, ((bounds[7*c + 6] >= 0.0f)? 7 : 1)*sizeof(float)) == 0;
+            if (same && maps)
+            {
+                const void *p = rbl__mapBuffer(st->vboId, (size_t)N*sizeof(RblSpriteInstance), true);
+                same = (p != NULL) && (memcmp(p, model, (size_t)N*sizeof(RblSpriteInstance)) == 0);
+                same = rbl__unmapBuffer(st->vboId) && same;
+                readBack++;
+            }
+            if (!same && (wrong++ < 5)) RT_CHECK(false, "step %d (%s first %d count %d%s): returned %d, %d lines, count %d / %d", step, v? "uploaded" : "mapped", first, count, bad? ", one bad" : "",
+                                                 (int)ok[v], lines[v], buf[v].count, modelCount);
+        }
+    }
+    const long long mapped = rbl__state.spriteMapped - mappedBefore;
+    printf("    %d updates x 2 buffers: %d wrong, %d refused, %d read back, %lld written through the mapped store%s\n", STEPS, wrong, refused, readBack, mapped, maps? "" : " (no mapping here)");
+    RT_CHECK(wrong == 0, "%d updates differ from the model", wrong);
+    RT_CHECK(!maps || ((readBack == 2*STEPS) && (mapped >= STEPS/5 - 2)), "mapped path not exercised: %d read back, %lld mapped", readBack, mapped);
+    RblUnloadSpriteBuffer(&buf[0]); RblUnloadSpriteBuffer(&buf[1]);
+    free(model); free(in); free(pivots); free(bounds);
+    RblUnloadAtlas(&atlas);
+}
+
 // The tests of this file, in order (gpu_tests.h lists every file's)
 #define RBL_SPRITE_BUFFER_TESTS \
     RT_TEST_GLSL3(test_sprite_buffer_gpu_animation_equals_the_cpu_player_at_every_step), \
     RT_TEST_GLSL3(test_sprite_buffer_draw_equals_draw_instanced_and_culls_what_the_view_cannot_see), \
     RT_TEST(test_sprite_buffer_range_updates_change_only_their_sprites), \
     RT_TEST(test_sprite_buffer_quantisation_is_within_half_a_step), \
-    RT_TEST_GLSL3(test_sprite_buffer_casts_the_shadow_draw_instanced_casts)
+    RT_TEST_GLSL3(test_sprite_buffer_casts_the_shadow_draw_instanced_casts), \
+    RT_TEST_GLSL3(test_sprite_buffer_mapped_update_equals_the_upload_and_a_model)

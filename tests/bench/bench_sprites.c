@@ -437,15 +437,17 @@ static void fadeBench(const RblAtlas *anim, const RblSpritePlayer *players, cons
 // Five ways to draw n sprites each frame: resident and unchanged; resident and animated on the GPU
 // (the clock moves); re-uploaded (RblDrawInstanced, 56 B an instance, unchanged); animated on the
 // CPU (RblUpdateSpriteInstances + RblDrawInstanced); resident and written whole each frame
-// (RblUpdateSprites of all n, 32 B a sprite, then the draw). Rounds interleave the five (order rotating),
-// medians per way. Values: CPU ns per sprite, the same excluding glDraw* (llvmpipe does its vertex
-// work there), and microseconds per draw excluding glDraw*.
-enum { RES_STATIC = 0, RES_GPU_ANIM, RES_REUPLOAD, RES_CPU_ANIM, RES_UPDATED, RES_WAYS };
-static const char *const resNames[RES_WAYS] = { "resident", "resident_gpu_animated", "reuploaded", "cpu_animated", "resident_updated" };
+// (RblUpdateSprites of all n, 32 B a sprite, then the draw); and a memcpy of those 32 B a sprite
+// (the floor in the same caches). Rounds interleave the six (order rotating), medians per way.
+// Values: CPU ns per sprite, the same excluding glDraw* (llvmpipe does its vertex work there), and
+// microseconds per draw excluding glDraw*.
+enum { RES_STATIC = 0, RES_GPU_ANIM, RES_REUPLOAD, RES_CPU_ANIM, RES_UPDATED, RES_COPY, RES_WAYS };
+static const char *const resNames[RES_WAYS] = { "resident", "resident_gpu_animated", "reuploaded", "cpu_animated", "resident_updated", "memcpy_32B" };
 typedef struct {
     int way, n;
     RblSpriteBuffer *still, *moving, *updated;
     const RblSpriteInstance *sprites;       // RES_UPDATED: written whole each frame (RblUpdateSprites), then drawn
+    RblSpriteInstance *copy;                // RES_COPY: the same bytes memcpy'd (the floor, in the same rounds)
     RblInstanceBuffer *buffer;
     RblInstance *instances;
     RblSpritePlayer *players;
@@ -466,6 +468,7 @@ static void runResident(void *ctx, double *out)
         case RES_STATIC: RblDrawSpriteBuffer(c->still, c->camera, c->material, d, c->clock); break;
         case RES_GPU_ANIM: c->clock += 1.0f/60.0f; RblDrawSpriteBuffer(c->moving, c->camera, c->material, d, c->clock); break;
         case RES_REUPLOAD: RblDrawInstanced(c->buffer, c->camera, c->material, d, c->instances, c->n); break;
+        case RES_COPY: memcpy(c->copy, c->sprites, (size_t)c->n*sizeof(RblSpriteInstance)); break;
         case RES_UPDATED:
             if (!RblUpdateSprites(c->updated, 0, c->n, c->sprites)) { printf("bench_sprites: update refused\n"); exit(1); }
             RblDrawSpriteBuffer(c->updated, c->camera, c->material, d, c->clock);
@@ -529,7 +532,7 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
     // Its own target and 3D mode: the rows before leave other matrices behind
     RenderTexture2D rt = LoadRenderTexture(256, 256);
     BeginTextureMode(rt); ClearBackground(BLACK); BeginMode3D(cam);
-    const double bytesWritten[RES_WAYS] = { 0.0, 0.0, (double)sizeof(RblInstance), (double)(sizeof(RblInstance) + 36 + sizeof(RblSpritePlayer)), (double)sizeof(RblSpriteInstance) };
+    const double bytesWritten[RES_WAYS] = { 0.0, 0.0, (double)sizeof(RblInstance), (double)(sizeof(RblInstance) + 36 + sizeof(RblSpritePlayer)), (double)sizeof(RblSpriteInstance), 0.0 };
     for (int s = 0; s < 3; s++)
     {
         int n = sizes[s];
@@ -540,11 +543,12 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
         RblInstance *in = (RblInstance *)malloc((size_t)n*sizeof(RblInstance));
         memcpy(pl, players, (size_t)n*sizeof(RblSpritePlayer));
         memcpy(in, inst, (size_t)n*sizeof(RblInstance));
+        RblSpriteInstance *copy = (RblSpriteInstance *)malloc((size_t)n*sizeof(RblSpriteInstance));
         ResCtx c[RES_WAYS];
         for (int w = 0; w < RES_WAYS; w++)
         {
             memset(&c[w], 0, sizeof(c[w]));
-            c[w].way = w; c[w].n = n; c[w].still = &sb; c[w].moving = &mb; c[w].updated = &ub; c[w].sprites = still; c[w].buffer = &ib;
+            c[w].way = w; c[w].n = n; c[w].still = &sb; c[w].moving = &mb; c[w].updated = &ub; c[w].sprites = still; c[w].copy = copy; c[w].buffer = &ib;
             c[w].instances = (w == RES_CPU_ANIM)? in : inst; c[w].players = pl; c[w].atlas = anim; c[w].camera = cam; c[w].material = m;
         }
         double v[RES_WAYS][3][RES_ROUNDS], out[3];
@@ -573,6 +577,15 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
                med[RES_GPU_ANIM][1]/med[RES_REUPLOAD][1], med[RES_CPU_ANIM][1]/med[RES_REUPLOAD][1], RES_ROUNDS);
         char name[48]; snprintf(name, sizeof(name), "resident_%d", n);
         BenchCsvRow("sprites", name, "excl_draw_over_reuploaded", med[RES_STATIC][1]/med[RES_REUPLOAD][1], "x");
+        // The whole-set update against a memcpy of its bytes in the same round (the same caches)
+        {
+            double ratio[RES_ROUNDS];
+            for (int r = 0; r < RES_ROUNDS; r++) ratio[r] = v[RES_UPDATED][1][r]/v[RES_COPY][1][r];
+            double q = BenchMedian(ratio, RES_ROUNDS);
+            snprintf(name, sizeof(name), "resident_updated_%d", n);
+            printf("  %-34s %8.2f x a memcpy of the same %d x 32 B in the same round (update + draw, excl draw calls; median of %d)\n", name, q, n, RES_ROUNDS);
+            BenchCsvRow("sprites", name, "excl_draw_over_round_memcpy", q, "x");
+        }
         // What of a resident draw is this header's own CPU (checks and chunk culling, no GL: the
         // camera turned away), and what any draw costs the driver (RblDrawInstanced of 1 instance)
         {
@@ -601,7 +614,7 @@ static void residentBench(RblAtlas *anim, Camera3D cam, Material m)
         }
         snprintf(name, sizeof(name), "resident_gpu_animated_%d", n);
         BenchCsvRow("sprites", name, "excl_draw_over_cpu_animated", med[RES_GPU_ANIM][1]/med[RES_CPU_ANIM][1], "x");
-        free(pl); free(in);
+        free(pl); free(in); free(copy);
         RblUnloadSpriteBuffer(&sb); RblUnloadSpriteBuffer(&mb); RblUnloadSpriteBuffer(&ub); RblUnloadInstanceBuffer(&ib);
     }
     // Culling: 100000 resident sprites all in view, and the same with 90 % moved far to the side
