@@ -512,11 +512,15 @@
 *         forever. Packing: position, scale and start float; rotation in 65536ths of a turn (0.0027
 *         degrees at most off), speed a half float (2^-11 relative); tags < 65535, frames < 65536;
 *         the clock is a float: keep it small (offset it per level) for millisecond steps past hours.
-*         Chunks of 256 sprites keep pivot bounds (updated by RblUpdateSprites); a draw tests them
-*         against the pass's clip volume grown by the farthest frame corner x the chunk's largest
-*         scale (x |up| for a long CAMERA_PLANE up, x 3 in shadow passes for the AXIS tilt) and draws
-*         the visible runs. Draws take no sort (buffer order) and no fades; back faces are drawn in
-*         the modes that can show them. Hidden sprites: scale 0.
+*         Updates: a range is checked whole, then uploaded; the whole buffer (first 0, count =
+*         capacity) is checked as it is written into a second GPU store made on the first such update
+*         (twice the GPU memory), swapped in when every sprite passed (draws still reading the other
+*         are not waited on; where the context maps buffers). Chunks of 256 sprites keep pivot
+*         bounds (updated by RblUpdateSprites); a draw tests them against the pass's clip volume
+*         grown by the farthest frame corner x the chunk's largest scale (x |up| for a long
+*         CAMERA_PLANE up, x 3 in shadow passes for the AXIS tilt) and draws the visible runs. Draws
+*         take no sort (buffer order) and no fades; back faces are drawn in the modes that can show
+*         them. Hidden sprites: scale 0.
 *       - Cross-fade (RblLitShaderDesc.crossFade; tests/test_fade.c): RblAtlasBillboardFade(&atlas,
 *         player.frame, next, w, scale, &billboard, &fade) with next and w from RblSpriteBlend, then
 *         RblBatchAddFade(&batch, mat, &billboard, &fade) or RblDrawBillboardFade (instances:
@@ -14028,6 +14032,10 @@ typedef struct rbl__SpriteBufferState {
     int tableWidth;
     int corners;                    // Most corners of a polygon frame (0: the atlas has none, quads only)
     unsigned int vaoId, vboId, tableId;
+    // The second store a whole-buffer update writes, checking as it goes, and swaps in on success
+    // (made on the first such update)
+    unsigned int spareVaoId, spareVboId;
+    float *sparePivots, *spareBounds;
 } rbl__SpriteBufferState;
 
 // The resident-sprite variant of an instanced program (lit, G-buffer or caster)
@@ -14040,12 +14048,16 @@ static rbl__SpriteBufferState *rbl__spriteState(const RblSpriteBuffer *buffer)
 
 static void rbl__freeSpriteState(rbl__SpriteBufferState *b)
 {
-    if (!rbl__glUsable()) b->vaoId = b->vboId = b->tableId = 0;      // gone with the context
+    if (!rbl__glUsable()) b->vaoId = b->vboId = b->tableId = b->spareVaoId = b->spareVboId = 0;      // gone with the context
     if (b->vaoId != 0) rlUnloadVertexArray(b->vaoId);
     if (b->vboId != 0) rlUnloadVertexBuffer(b->vboId);
+    if (b->spareVaoId != 0) rlUnloadVertexArray(b->spareVaoId);
+    if (b->spareVboId != 0) rlUnloadVertexBuffer(b->spareVboId);
     if (b->tableId != 0) rlUnloadTexture(b->tableId);
     RBL_FREE(b->pivots);
     RBL_FREE(b->bounds);
+    RBL_FREE(b->sparePivots);
+    RBL_FREE(b->spareBounds);
     RBL_FREE(b->runs);
     RBL_FREE(b);
 }
@@ -14146,15 +14158,26 @@ static float *rbl__buildFrameTable(const rbl__AtlasState *s, int *texels, float 
 // The GPU buffer's attributes (lit_instanced.vs.glsl's sprite reading) from sprite first on
 #define RBL__SPRITE_ATTRIBUTES 4        // position and scale, start, rotation/frame/tag/speed, tint
 
-static void rbl__spriteAttributes(const rbl__SpriteBufferState *b, int first)
+static void rbl__spriteAttributes(unsigned int vbo, int first)
 {
     const int stride = (int)sizeof(RblSpriteInstance), at = first*stride;
     const unsigned int loc = RBL__INSTANCE_LOCATION;
-    rlEnableVertexBuffer(b->vboId);
+    rlEnableVertexBuffer(vbo);
     rlSetVertexAttribute(loc + 0, 4, RL_FLOAT, false, stride, at + (int)offsetof(RblSpriteInstance, position));
     rlSetVertexAttribute(loc + 1, 1, RL_FLOAT, false, stride, at + (int)offsetof(RblSpriteInstance, start));
     rlSetVertexAttribute(loc + 2, 4, 0x1403 /* GL_UNSIGNED_SHORT, converted to float */, false, stride, at + (int)offsetof(RblSpriteInstance, rotation));
     rlSetVertexAttribute(loc + 3, 4, RL_UNSIGNED_BYTE, true, stride, at + (int)offsetof(RblSpriteInstance, tint));
+}
+
+// A vertex array over a new GPU store of capacity sprites (data: its contents, or NULL)
+static void rbl__loadSpriteStore(int capacity, const void *data, unsigned int *vao, unsigned int *vbo)
+{
+    *vao = rlLoadVertexArray();
+    rlEnableVertexArray(*vao);
+    *vbo = rlLoadVertexBuffer(data, capacity*(int)sizeof(RblSpriteInstance), true);
+    rbl__spriteAttributes(*vbo, 0);
+    for (unsigned int i = 0; i < RBL__SPRITE_ATTRIBUTES; i++) { rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + i); rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + i, 1); }
+    rlDisableVertexArray();
 }
 
 RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
@@ -14202,13 +14225,8 @@ RblSpriteBuffer RblLoadSpriteBuffer(const RblAtlas *atlas, int capacity)
         rlTextureParameters(b->tableId, RL_TEXTURE_MIN_FILTER, RL_TEXTURE_FILTER_NEAREST);
         rlTextureParameters(b->tableId, RL_TEXTURE_MAG_FILTER, RL_TEXTURE_FILTER_NEAREST);
     }
-    b->vaoId = rlLoadVertexArray();
-    rlEnableVertexArray(b->vaoId);
-    b->vboId = rlLoadVertexBuffer(zeros, capacity*(int)sizeof(RblSpriteInstance), true);
+    rbl__loadSpriteStore(capacity, zeros, &b->vaoId, &b->vboId);
     RBL_FREE(zeros);
-    rbl__spriteAttributes(b, 0);
-    for (unsigned int i = 0; i < RBL__SPRITE_ATTRIBUTES; i++) { rlEnableVertexAttribute(RBL__INSTANCE_LOCATION + i); rlSetVertexAttributeDivisor(RBL__INSTANCE_LOCATION + i, 1); }
-    rlDisableVertexArray();
     unsigned int id = ((b->vaoId != 0) && (b->vboId != 0) && (b->tableId != 0))? rbl__liveAdd(b) : 0;
     if (id == 0)
     {
@@ -14316,10 +14334,19 @@ static inline bool rbl__spriteOk(const rbl__SpriteBufferState *b, const RblSprit
     return ok != 0u;
 }
 
-// Every one of count sprites passes rbl__spriteOk: where SSE2 is, each sprite's two halves are tested
-// as lanes (a value past its limit carries into its lane's sign bit), the frame as integers
-static bool rbl__spritesOk(const rbl__SpriteBufferState *b, const RblSpriteInstance *sprites, int count)
+// What an update checks of each sprite (rbl__spriteOk), as lane constants where SSE2 is
+typedef struct rbl__SpriteChecks {
+#if defined(RBL__SSE2)
+    __m128i firstMask, firstBias, secondMask, secondBias;
+#endif
+    unsigned int frames, tags;
+} rbl__SpriteChecks;
+
+static rbl__SpriteChecks rbl__spriteChecks(const rbl__SpriteBufferState *b)
 {
+    rbl__SpriteChecks k;
+    memset(&k, 0, sizeof(k));
+    k.frames = (unsigned int)b->frameCount; k.tags = (unsigned int)b->tagCount;
 #if defined(RBL__SSE2)
     // First half: position xyz (exponent fields) and scale (magnitude at most 1e15's; its sign
     // apart, as -0 passes). Second half, lanes moved to: start (exponent), speed | mode << 16 twice
@@ -14328,23 +14355,41 @@ static bool rbl__spritesOk(const rbl__SpriteBufferState *b, const RblSpriteInsta
     const float most = 1e15f;
     int mostBits;
     memcpy(&mostBits, &most, sizeof(mostBits));
-    const __m128i firstMask = _mm_setr_epi32(0x7f800000, 0x7f800000, 0x7f800000, 0x7FFFFFFF), firstBias = _mm_setr_epi32(bias, bias, bias, 0x7FFFFFFF - mostBits);
-    const __m128i secondMask = _mm_setr_epi32(0x7f800000, 0x00F08000, 0x7C00, 0), secondBias = _mm_setr_epi32(bias, 0x7FFFFFFF, 0x7FFF8400, 0);
-    const __m128 zero = _mm_setzero_ps();
+    k.firstMask = _mm_setr_epi32(0x7f800000, 0x7f800000, 0x7f800000, 0x7FFFFFFF); k.firstBias = _mm_setr_epi32(bias, bias, bias, 0x7FFFFFFF - mostBits);
+    k.secondMask = _mm_setr_epi32(0x7f800000, 0x00F08000, 0x7C00, 0); k.secondBias = _mm_setr_epi32(bias, 0x7FFFFFFF, 0x7FFF8400, 0);
+#endif
+    return k;
+}
+
+#if defined(RBL__SSE2)
+// One sprite into the running failures: a value past its limit carries into its lane's sign bit
+// (bad), a negative scale sets lane 3 of negative; the frame as integers
+RBL__FORCE_INLINE void rbl__checkSprite(const rbl__SpriteChecks *k, const RblSpriteInstance *s, __m128i *bad, __m128 *negative, unsigned int *badFrame)
+{
+    const __m128i *p = (const __m128i *)(const void *)s;
+    const __m128i lo = _mm_loadu_si128(p), hi = _mm_shuffle_epi32(_mm_loadu_si128(p + 1), _MM_SHUFFLE(0, 3, 3, 0));
+    *bad = _mm_or_si128(*bad, _mm_or_si128(_mm_add_epi32(_mm_and_si128(lo, k->firstMask), k->firstBias), _mm_add_epi32(_mm_and_si128(hi, k->secondMask), k->secondBias)));
+    *negative = _mm_or_ps(*negative, _mm_cmplt_ps(_mm_castsi128_ps(lo), _mm_setzero_ps()));
+    const unsigned int frame = s->frame, animated = (unsigned int)((s->mode & RBL_SPRITE_ANIMATED) != 0u);
+    *badFrame |= (unsigned int)(frame >= (animated? k->tags : k->frames)) & ~(animated & (unsigned int)(frame == 0xFFFFu));
+}
+
+static inline bool rbl__checksPassed(__m128i bad, __m128 negative, unsigned int badFrame)
+{
+    return ((_mm_movemask_ps(_mm_castsi128_ps(bad)) | (_mm_movemask_ps(negative) & 8)) == 0) && (badFrame == 0u);
+}
+#endif
+
+// Every one of count sprites passes rbl__spriteOk (four lanes a sprite where SSE2 is)
+static bool rbl__spritesOk(const rbl__SpriteBufferState *b, const RblSpriteInstance *sprites, int count)
+{
+#if defined(RBL__SSE2)
+    const rbl__SpriteChecks k = rbl__spriteChecks(b);
     __m128i bad = _mm_setzero_si128();
     __m128 negative = _mm_setzero_ps();
     unsigned int badFrame = 0u;
-    const unsigned int frames = (unsigned int)b->frameCount, tags = (unsigned int)b->tagCount;
-    for (int i = 0; i < count; i++)
-    {
-        const __m128i *p = (const __m128i *)(const void *)&sprites[i];
-        const __m128i lo = _mm_loadu_si128(p), hi = _mm_shuffle_epi32(_mm_loadu_si128(p + 1), _MM_SHUFFLE(0, 3, 3, 0));
-        bad = _mm_or_si128(bad, _mm_or_si128(_mm_add_epi32(_mm_and_si128(lo, firstMask), firstBias), _mm_add_epi32(_mm_and_si128(hi, secondMask), secondBias)));
-        negative = _mm_or_ps(negative, _mm_cmplt_ps(_mm_castsi128_ps(lo), zero));
-        const unsigned int frame = sprites[i].frame, animated = (unsigned int)((sprites[i].mode & RBL_SPRITE_ANIMATED) != 0u);
-        badFrame |= (unsigned int)(frame >= (animated? tags : frames)) & ~(animated & (unsigned int)(frame == 0xFFFFu));
-    }
-    return ((_mm_movemask_ps(_mm_castsi128_ps(bad)) | (_mm_movemask_ps(negative) & 8)) == 0) && (badFrame == 0u);
+    for (int i = 0; i < count; i++) rbl__checkSprite(&k, &sprites[i], &bad, &negative, &badFrame);
+    return rbl__checksPassed(bad, negative, badFrame);
 #else
     unsigned int ok = 1u;
     for (int i = 0; i < count; i++) ok &= (unsigned int)rbl__spriteOk(b, &sprites[i]);
@@ -14414,48 +14459,90 @@ static void rbl__spriteChunkBounds(rbl__SpriteBufferState *b, int c)
 #endif
 }
 
-// Sprites [from, to) of chunk c (checked) from src (sprite from's): into gpu (the mapped slot of
-// sprite from; NULL: uploaded apart) and the pivot copy, then the chunk's bounds (from the lanes
-// when the chunk is written whole, one pass over the input)
-static void rbl__writeSpriteChunk(rbl__SpriteBufferState *b, int c, int from, int to, const RblSpriteInstance *src, RblSpriteInstance *gpu)
+// Sprites [from, to) of chunk c from src (sprite from's): into gpu (the mapped slot of sprite from;
+// NULL: uploaded apart) and pivots, then the chunk's bounds (of total sprites: from the lanes when
+// the chunk is written whole, else from b's pivot copy). checks: checked as they go (false: one
+// failed); NULL: checked before
+static bool rbl__writeSpriteChunk(rbl__SpriteBufferState *b, float *pivots, float *bounds, int total, int c, int from, int to, const RblSpriteInstance *src, RblSpriteInstance *gpu, const rbl__SpriteChecks *checks)
 {
     int end = (c + 1)*RBL__SPRITE_CHUNK;
-    if (end > b->count) end = b->count;
+    if (end > total) end = total;
     const bool whole = (from == c*RBL__SPRITE_CHUNK) && (to == end);
+    bool ok = true;
 #if defined(RBL__SSE2)
-    // The library's copy (the widest stores the machine has), then the pivots and bounds from the
-    // chunk while it is in the cache
-    if (gpu != NULL) memcpy(gpu, src, (size_t)(to - from)*sizeof(RblSpriteInstance));
-    __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), lo2 = lo, hi2 = hi;
-    __m128 *pivots = (__m128 *)(void *)(b->pivots + (size_t)from*4);
+    // Checked before: the library's copy (the widest stores the machine has), then pivots and
+    // bounds from the chunk while it is in the cache. Checked as it goes: each sprite stored beside
+    // its checks (the stores' misses overlap the checks' work)
+    if ((gpu != NULL) && (checks == NULL)) memcpy(gpu, src, (size_t)(to - from)*sizeof(RblSpriteInstance));
+    __m128i *store = (checks != NULL)? (__m128i *)(void *)gpu : NULL;
+    __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), lo2 = lo, hi2 = hi, negative = _mm_setzero_ps();
+    __m128i bad = _mm_setzero_si128();
+    unsigned int badFrame = 0u;
+    __m128 *out = (__m128 *)(void *)(pivots + (size_t)from*4);
     const float *in = (const float *)(const void *)src;
     const int n = to - from;
     int i = 0;
     for (; i + 1 < n; i += 2)
     {
+        if (checks != NULL) { rbl__checkSprite(checks, &src[i], &bad, &negative, &badFrame); rbl__checkSprite(checks, &src[i + 1], &bad, &negative, &badFrame); }
         const __m128 a = _mm_loadu_ps(in + 8*i), a2 = _mm_loadu_ps(in + 8*i + 8);
-        _mm_storeu_ps((float *)(pivots + i), a);
-        _mm_storeu_ps((float *)(pivots + i + 1), a2);
+        if (store != NULL)
+        {
+            _mm_storeu_ps((float *)(store + 2*i), a); _mm_storeu_si128(store + 2*i + 1, _mm_loadu_si128((const __m128i *)(const void *)(in + 8*i + 4)));
+            _mm_storeu_ps((float *)(store + 2*i + 2), a2); _mm_storeu_si128(store + 2*i + 3, _mm_loadu_si128((const __m128i *)(const void *)(in + 8*i + 12)));
+        }
+        _mm_storeu_ps((float *)(out + i), a);
+        _mm_storeu_ps((float *)(out + i + 1), a2);
         rbl__boundsLanes(a, &lo, &hi);
         rbl__boundsLanes(a2, &lo2, &hi2);
     }
     if (i < n)
     {
+        if (checks != NULL) rbl__checkSprite(checks, &src[i], &bad, &negative, &badFrame);
         const __m128 a = _mm_loadu_ps(in + 8*i);
-        _mm_storeu_ps((float *)(pivots + i), a);
+        if (store != NULL) { _mm_storeu_ps((float *)(store + 2*i), a); _mm_storeu_si128(store + 2*i + 1, _mm_loadu_si128((const __m128i *)(const void *)(in + 8*i + 4))); }
+        _mm_storeu_ps((float *)(out + i), a);
         rbl__boundsLanes(a, &lo, &hi);
     }
-    if (whole) { rbl__storeBoundsLanes(b->bounds + (size_t)c*7, lo, hi, lo2, hi2); return; }
+    if (checks != NULL) ok = rbl__checksPassed(bad, negative, badFrame);
+    if (whole) { rbl__storeBoundsLanes(bounds + (size_t)c*7, lo, hi, lo2, hi2); return ok; }
 #else
     if (gpu != NULL) memcpy(gpu, src, (size_t)(to - from)*sizeof(RblSpriteInstance));
+    unsigned int passed = 1u;
     for (int i = 0; i < to - from; i++)
     {
-        float *v = b->pivots + (size_t)(from + i)*4;
+        if (checks != NULL) passed &= (unsigned int)rbl__spriteOk(b, &src[i]);
+        float *v = pivots + (size_t)(from + i)*4;
         v[0] = src[i].position.x; v[1] = src[i].position.y; v[2] = src[i].position.z; v[3] = src[i].scale;
     }
-    (void)whole;
+    ok = passed != 0u;
+    if (whole)
+    {
+        // the one-at-a-time bounds over these pivots and bounds
+        rbl__SpriteBufferState view = *b;
+        view.pivots = pivots; view.bounds = bounds; view.count = total;
+        rbl__spriteChunkBoundsScalar(&view, c);
+        return ok;
+    }
 #endif
     rbl__spriteChunkBounds(b, c);
+    return ok;
+}
+
+// The second GPU store, pivot copy and bounds of a whole-buffer update, made on first use; false:
+// not made (the update takes the general way)
+static bool rbl__spareSpriteStore(rbl__SpriteBufferState *b)
+{
+    if (b->spareVboId != 0) return true;
+    b->sparePivots = (float *)RBL_CALLOC((size_t)b->capacity*4, sizeof(float));
+    b->spareBounds = (float *)RBL_MALLOC((size_t)b->chunks*7*sizeof(float));
+    if ((b->sparePivots != NULL) && (b->spareBounds != NULL)) rbl__loadSpriteStore(b->capacity, NULL, &b->spareVaoId, &b->spareVboId);
+    if ((b->spareVaoId != 0) && (b->spareVboId != 0)) return true;
+    if (b->spareVaoId != 0) rlUnloadVertexArray(b->spareVaoId);
+    if (b->spareVboId != 0) rlUnloadVertexBuffer(b->spareVboId);
+    RBL_FREE(b->sparePivots); RBL_FREE(b->spareBounds);
+    b->spareVaoId = b->spareVboId = 0; b->sparePivots = b->spareBounds = NULL;
+    return false;
 }
 
 bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSpriteInstance *sprites)
@@ -14467,6 +14554,39 @@ bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSprit
         TraceLog(LOG_WARNING, "RBL: RblUpdateSprites: range first %i count %i outside the capacity %i, or NULL sprites", first, count, b->capacity);
         return false;
     }
+    const size_t size = sizeof(RblSpriteInstance);
+    // The whole buffer (where the context maps): one pass over the input checks each sprite as it
+    // writes it into the second store, its pivots and bounds; swapped in when every one passed (the
+    // store drawn from is untouched otherwise, and the general way names the bad sprite)
+    if ((count > 0) && (first == 0) && (count == b->capacity) && !RBL__HOOK(spriteNoMap) && rbl__canMap() && rbl__spareSpriteStore(b))
+    {
+        RblSpriteInstance *gpu = (RblSpriteInstance *)rbl__mapBuffer(b->spareVboId, (size_t)count*size, false);
+        if (gpu != NULL)
+        {
+            const rbl__SpriteChecks checks = rbl__spriteChecks(b);
+            bool ok = true;
+            for (int c = 0; ok && (c < b->chunks); c++)
+            {
+                const int from = c*RBL__SPRITE_CHUNK, to = (from + RBL__SPRITE_CHUNK < count)? from + RBL__SPRITE_CHUNK : count;
+                ok = rbl__writeSpriteChunk(b, b->sparePivots, b->spareBounds, count, c, from, to, sprites + from, gpu + from, &checks);
+            }
+            const bool kept = rbl__unmapBuffer(b->spareVboId);
+            if (ok)
+            {
+                if (!kept) rlUpdateVertexBuffer(b->spareVboId, sprites, count*(int)size, 0);
+                unsigned int vao = b->vaoId, vbo = b->vboId;
+                float *pivots = b->pivots, *bounds = b->bounds;
+                b->vaoId = b->spareVaoId; b->vboId = b->spareVboId; b->pivots = b->sparePivots; b->bounds = b->spareBounds;
+                b->spareVaoId = vao; b->spareVboId = vbo; b->sparePivots = pivots; b->spareBounds = bounds;
+                b->count = count;
+                pub->count = b->count;
+#if defined(RBL_INSTRUMENTS)
+                rbl__state.spriteMapped++;
+#endif
+                return true;
+            }
+        }
+    }
     // Every sprite checked before anything is written: a bad one leaves the buffer as it was
     const bool ok = rbl__spritesOk(b, sprites, count);
     for (int i = 0; !ok && (i < count); i++)
@@ -14476,20 +14596,13 @@ bool RblUpdateSprites(RblSpriteBuffer *pub, int first, int count, const RblSprit
     }
     if (count == 0) return true;
     if (first + count > b->count) b->count = first + count;
-    // One pass over the input into the pivot copy and the bounds, and, when the whole buffer is
-    // written (where the context maps), into a fresh store of it (no wait on draws still reading the
-    // old one); a range is uploaded from the caller's array
-    const size_t size = sizeof(RblSpriteInstance);
-    RblSpriteInstance *gpu = ((first == 0) && (count == b->capacity) && !RBL__HOOK(spriteNoMap) && rbl__canMap())? (RblSpriteInstance *)rbl__mapBuffer(b->vboId, (size_t)count*size, false) : NULL;
+    // The pivot copy and bounds in one pass over the input; the range uploaded from the caller's array
     for (int c = first/RBL__SPRITE_CHUNK; c <= (first + count - 1)/RBL__SPRITE_CHUNK; c++)
     {
         const int from = (c*RBL__SPRITE_CHUNK > first)? c*RBL__SPRITE_CHUNK : first, to = ((c + 1)*RBL__SPRITE_CHUNK < first + count)? (c + 1)*RBL__SPRITE_CHUNK : first + count;
-        rbl__writeSpriteChunk(b, c, from, to, sprites + (from - first), (gpu != NULL)? gpu + (from - first) : NULL);
+        rbl__writeSpriteChunk(b, b->pivots, b->bounds, b->count, c, from, to, sprites + (from - first), NULL, NULL);
     }
-    if ((gpu == NULL) || !rbl__unmapBuffer(b->vboId)) rlUpdateVertexBuffer(b->vboId, sprites, count*(int)size, first*(int)size);
-#if defined(RBL_INSTRUMENTS)
-    else rbl__state.spriteMapped++;
-#endif
+    rlUpdateVertexBuffer(b->vboId, sprites, count*(int)size, first*(int)size);
     pub->count = b->count;
     return true;
 }
@@ -14603,11 +14716,11 @@ int RblDrawSpriteBuffer(RblSpriteBuffer *pub, Camera3D camera, Material material
     int drawn = 0;
     for (int r = 0; r < runs; r++)
     {
-        rbl__spriteAttributes(b, b->runs[2*r]);
+        rbl__spriteAttributes(b->vboId, b->runs[2*r]);
         rlDrawVertexArrayInstanced(0, vertices, b->runs[2*r + 1]);
         drawn += b->runs[2*r + 1];
     }
-    if (b->runs[0] != 0) rbl__spriteAttributes(b, 0);
+    if (b->runs[0] != 0) rbl__spriteAttributes(b->vboId, 0);
     rbl__markDrawn(program);
     rlDisableVertexArray();
     rlDisableVertexBuffer();

@@ -1403,10 +1403,14 @@ static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_o
     int runsDiffer = 0, runsAccepted = 0, runs = 0;
     const int sizes[3][2] = { { 7, 3 }, { 0, 1 }, { 70000, 65536 } };
     int *pool[2] = { (int *)malloc(EDGES*sizeof(int)), (int *)malloc(EDGES*sizeof(int)) };
-    RblSpriteInstance run[64];
+    RblSpriteInstance run[64], runCopy[64];
+    float runPivots[64*4], runBounds[7];
+    rbl__SpriteBufferState held = b;
     for (int k = 0; (k < 3) && (pool[0] != NULL) && (pool[1] != NULL); k++)
     {
         b.frameCount = sizes[k][0]; b.tagCount = sizes[k][1];
+        held.frameCount = b.frameCount; held.tagCount = b.tagCount;
+        const rbl__SpriteChecks checks = rbl__spriteChecks(&held);
         int counts[2] = { 0, 0 };
         for (int i = 0; i < EDGES; i++) { int g = (rbl__spriteProblem(&b, &all[i]) == NULL); pool[g][counts[g]++] = i; }
         for (int r = 0; (r < 20000) && (counts[0] > 0) && (counts[1] > 0); r++, runs++)
@@ -1417,6 +1421,8 @@ static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_o
             bool every = true;
             for (int i = 0; i < n; i++) every = every && (rbl__spriteProblem(&b, &run[i]) == NULL);
             runsDiffer += (rbl__spritesOk(&b, run, n) != every);
+            // checked as a whole chunk is written (a whole-buffer update's one pass)
+            if (n > 0) runsDiffer += (rbl__writeSpriteChunk(&held, runPivots, runBounds, n, 0, 0, n, run, runCopy, &checks) != every) + (memcmp(runCopy, run, (size_t)n*sizeof(RblSpriteInstance)) != 0);
             runsAccepted += every;
         }
     }
@@ -1458,8 +1464,8 @@ static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_o
         int from = c*RBL__SPRITE_CHUNK, to = (c + 1)*RBL__SPRITE_CHUNK;
         if (to > b.count) to = b.count;
         int cut = ((c % 3) == 0)? from + 1 + (int)(rtRandom(&seed)%(unsigned int)(to - from - 1)) : from;
-        if (cut > from) rbl__writeSpriteChunk(&b, c, from, cut, in + from, gpu + from);
-        rbl__writeSpriteChunk(&b, c, cut, to, in + cut, gpu + cut);
+        if (cut > from) rbl__writeSpriteChunk(&b, b.pivots, b.bounds, b.count, c, from, cut, in + from, gpu + from, NULL);
+        rbl__writeSpriteChunk(&b, b.pivots, b.bounds, b.count, c, cut, to, in + cut, gpu + cut, NULL);
     }
     int copyDiffer = 0;
     for (int i = 0; i < b.count; i++)

@@ -1886,7 +1886,27 @@ static void c_sprite_buffer_load(void)
     RblUnloadSpriteBuffer(&b);
 }
 
-// A refused update writes nothing: the buffer's copy and count stay as they were
+// The GPU store of a sprite buffer (read back where the context maps; else zeros), its pivot copy
+// and bounds: what a refused update must leave as they were
+typedef struct SpriteKept { RblSpriteInstance gpu[8]; float pivots[8*4], bounds[7]; int count; } SpriteKept;
+static SpriteKept spriteKept(const RblSpriteBuffer *b)
+{
+    SpriteKept k;
+    memset(&k, 0, sizeof(k));
+    if (rbl__canMap())
+    {
+        const void *p = rbl__mapBuffer(b->state->vboId, sizeof(k.gpu), true);
+        if (p != NULL) memcpy(k.gpu, p, sizeof(k.gpu));
+        rbl__unmapBuffer(b->state->vboId);
+    }
+    memcpy(k.pivots, b->state->pivots, sizeof(k.pivots));
+    memcpy(k.bounds, b->state->bounds, sizeof(k.bounds));
+    k.count = b->state->count;
+    return k;
+}
+
+// A refused update writes nothing: the buffer's GPU store, pivot copy, bounds and count stay as
+// they were, whether the range is a part (checked first) or the whole buffer (checked as written)
 static void c_sprite_buffer_update(void)
 {
     RblAtlas a = goodAtlas();
@@ -1895,8 +1915,7 @@ static void c_sprite_buffer_update(void)
     RblSpriteInstance s[8];
     for (int i = 0; i < 8; i++) s[i] = sprite();
     EXPECT_QUIET(RblUpdateSprites(&b, 0, 3, s), true);
-    RblSpriteInstance kept[8];
-    memcpy(kept, b.state->sprites, sizeof(kept));
+    const SpriteKept kept = spriteKept(&b);
     EXPECT_REFUSED(RblUpdateSprites(NULL, 0, 1, s));
     EXPECT_REFUSED(RblUpdateSprites(&zero, 0, 1, s));
     const int ranges[][2] = { { -1, 1 }, { 0, -1 }, { 0, 9 }, { 8, 1 }, { 7, 2 }, { 1, 2147483647 }, { 2147483647, 1 }, { -2147483647 - 1, 2 } };
@@ -1912,6 +1931,10 @@ static void c_sprite_buffer_update(void)
         RblSpriteInstance x[3] = { sprite(), sprite(), sprite() };
         memcpy((char *)&x[2] + floats[f], &badFloats[vi], sizeof(float));
         EXPECT_REFUSED(RblUpdateSprites(&b, 0, 3, x));
+        RblSpriteInstance all[8];
+        for (int i = 0; i < 8; i++) all[i] = sprite();
+        memcpy((char *)&all[7 - vi] + floats[f], &badFloats[vi], sizeof(float));
+        EXPECT_REFUSED(RblUpdateSprites(&b, 0, 8, all));
     }
     RblSpriteInstance x = sprite();
     x.scale = -0.05f; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
@@ -1921,7 +1944,8 @@ static void c_sprite_buffer_update(void)
     x = sprite(); x.mode = 0x10; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));
     x = sprite(); x.frame = 2; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));           // the atlas has frames 0, 1
     x = sprite(); RblAnimateSprite(&x, 0, 0, 0.0f, 1.0f); x.frame = 1; EXPECT_REFUSED(RblUpdateSprites(&b, 1, 1, &x));  // and tag 0
-    ck(memcmp(kept, b.state->sprites, sizeof(kept)) == 0 && b.count == 3 && b.state->count == 3, "a refused update changed the buffer");
+    const SpriteKept now = spriteKept(&b);
+    ck(memcmp(&kept, &now, sizeof(kept)) == 0 && b.count == 3 && b.state->count == 3, "a refused update changed the buffer");
     // at the capacity: accepted; scale 0 (hidden), every tag and the every-frame tag
     x = sprite(); x.scale = 0.0f; s[7] = x;
     RblAnimateSprite(&s[6], -1, -1, 0.0f, 65504.0f);
