@@ -37,6 +37,7 @@
 //   batched_visible_<N>: culled (the part of the bench's box outside the 64x64 view)
 //   <path>: bytes_per_billboard (uploaded), floor_ns_per_billboard (bytes / memcpy GB/s);
 //   <path>_<N>_<rot>: ratio_to_floor, excl_draw_over_floor (the CPU outside glDraw* over the floor);
+//   excl_draw_over_round_memcpy (over a memcpy of the same bytes in the same round: the same caches)
 //   memcpy_64MiB: bandwidth (GB/s, median of 7 copies)
 //   batched_<N>, batched_many_<N>, immediate_<N>, instanced_<N> and raylib_<N>: max_corner_error (world units) against a double-precision
 //   DrawBillboardPro, over the unrotated and rotated sets; max_corner_rel_error = that error over
@@ -109,7 +110,9 @@ typedef struct RoundCase {
 #define ROUND_RATIO_EXCL(p)     (PATH_COUNT*(FRAME_VALUES + 1) + (p))
 #define ROUND_BATCHED_OVER_V03       (PATH_COUNT*(FRAME_VALUES + 2))
 #define ROUND_BATCHED_OVER_V03_EXCL  (PATH_COUNT*(FRAME_VALUES + 2) + 1)
-#define ROUND_VALUES            (PATH_COUNT*(FRAME_VALUES + 2) + 2)
+#define ROUND_COPY_NS_PER_BYTE  (PATH_COUNT*(FRAME_VALUES + 2) + 2)   // A memcpy of the round's billboards
+#define ROUND_OVER_COPY(p)      (PATH_COUNT*(FRAME_VALUES + 2) + 3 + (p))   // Excl-draw ns / the copy's ns per byte
+#define ROUND_VALUES            (PATH_COUNT*(FRAME_VALUES + 3) + 3)
 
 // Medians of one case
 typedef struct CaseResult {
@@ -124,6 +127,7 @@ typedef struct CaseResult {
     double ratioExclDraw;   // The same for exclDrawNs
     double overV03;         // batched: median per-round ratio to v03_batched (0 = not run)
     double overV03Excl;     // The same excluding the draw calls
+    double overCopyBytes;   // Median per-round exclDrawNs over the same round's memcpy ns per byte (divided by the path's bytes: x floor)
     int frames;
 } CaseResult;
 
@@ -146,6 +150,7 @@ static RblInstanceBuffer instanceBuffer;
 static RblInstancedDesc instancedDesc;
 static RaylibBillboard *raylibSet[2];       // [rotated]
 static RblBillboard *rblSet[2];             // [rotated], the same billboards as RblBillboard
+static RblBillboard *copySet;               // Where each round's memcpy of the billboards goes
 static RblInstance *instanceSet[2];         // [rotated], the same billboards as RblInstance
 
 static CaseResult results[PATH_COUNT][COUNT_CASES][2];
@@ -242,6 +247,7 @@ static bool BuildScene(void)
     {
         raylibSet[r] = (RaylibBillboard *)calloc(MAX_BILLBOARDS, sizeof(RaylibBillboard));
         rblSet[r] = (RblBillboard *)calloc(MAX_BILLBOARDS, sizeof(RblBillboard));
+        if (r == 0) copySet = (RblBillboard *)calloc(MAX_BILLBOARDS, sizeof(RblBillboard));
         instanceSet[r] = (RblInstance *)calloc(MAX_BILLBOARDS, sizeof(RblInstance));
         if ((raylibSet[r] == NULL) || (rblSet[r] == NULL) || (instanceSet[r] == NULL)) return false;
     }
@@ -298,6 +304,7 @@ static bool BuildScene(void)
 static void FreeScene(void)
 {
     for (int r = 0; r < 2; r++) { free(raylibSet[r]); free(rblSet[r]); free(instanceSet[r]); }
+    free(copySet);
 }
 
 //----------------------------------------------------------------------------------
@@ -378,16 +385,29 @@ static void RunFrame(BenchPath path, int n, int rotated, double *out)
     out[FRAME_EXCL_DRAW] = (t2 - t0 - drawNs)/n;
 }
 
-// One frame of each selected path, starting with a different path each round
+static void *(*volatile benchCopy)(void *, const void *, size_t) = memcpy;   // not elided
+
+// ns per byte of a memcpy of the round's n billboards (88 B each), the floor in the same caches
+static double CopyFrame(int n, int rotated)
+{
+    rtFinish();
+    double t0 = BenchNowNs();
+    benchCopy(copySet, rblSet[rotated], (size_t)n*sizeof(RblBillboard));
+    return (BenchNowNs() - t0)/((double)n*sizeof(RblBillboard));
+}
+
+// One frame of each selected path and the memcpy, starting with a different one each round
 static void RunRound(void *ctx, double *out)
 {
     RoundCase *rc = (RoundCase *)ctx;
     for (int k = 0; k < ROUND_VALUES; k++) out[k] = 0.0;
-    for (int i = 0; i < PATH_COUNT; i++)
+    for (int i = 0; i <= PATH_COUNT; i++)
     {
-        int p = (rc->round + i)%PATH_COUNT;
-        if (rc->run[p]) RunFrame((BenchPath)p, rc->count, rc->rotated, &out[ROUND_FRAME(p)]);
+        int p = (rc->round + i)%(PATH_COUNT + 1);
+        if (p == PATH_COUNT) out[ROUND_COPY_NS_PER_BYTE] = CopyFrame(rc->count, rc->rotated);
+        else if (rc->run[p]) RunFrame((BenchPath)p, rc->count, rc->rotated, &out[ROUND_FRAME(p)]);
     }
+    for (int p = 0; p < PATH_COUNT; p++) out[ROUND_OVER_COPY(p)] = out[ROUND_FRAME(p) + FRAME_EXCL_DRAW]/out[ROUND_COPY_NS_PER_BYTE];
     if (rc->run[PATH_RAYLIB])
     {
         const double *base = &out[ROUND_FRAME(PATH_RAYLIB)];
@@ -585,7 +605,6 @@ static void BatchedCorners(rbl__BatchState *st, int n, RblVertex *out)
 //----------------------------------------------------------------------------------
 // memcpy bandwidth
 //----------------------------------------------------------------------------------
-static void *(*volatile benchCopy)(void *, const void *, size_t) = memcpy;   // not elided
 
 // Median GB/s (= bytes per ns) of copying MEMCPY_BYTES, 0 on allocation failure
 static double MeasureMemcpyBandwidth(void)
@@ -756,6 +775,7 @@ int main(int argc, char **argv)
                     bool againstV03 = (p == PATH_BATCHED) && rc.run[PATH_V03];
                     res->overV03 = againstV03? medians[ROUND_BATCHED_OVER_V03] : 0.0;
                     res->overV03Excl = againstV03? medians[ROUND_BATCHED_OVER_V03_EXCL] : 0.0;
+                    res->overCopyBytes = medians[ROUND_OVER_COPY(p)];
                     if (againstV03)
                     {
                         BenchCsvRow(SUITE, name, "over_v03", res->overV03, "x");
@@ -937,15 +957,17 @@ int main(int argc, char **argv)
                 CaseName(name, sizeof(name), (BenchPath)p, counts[c], rotated);
                 BenchCsvRow(SUITE, name, "ratio_to_floor", res->nsPerBillboard/floorNs, "x");
                 if (driverTimed) BenchCsvRow(SUITE, name, "excl_draw_over_floor", res->exclDrawNs/floorNs, "x");
+                if (driverTimed) BenchCsvRow(SUITE, name, "excl_draw_over_round_memcpy", res->overCopyBytes/bytesPerBillboard[p], "x");
             }
         }
     }
 
     // Summary
     printf("\ngeometry summary (ns per billboard, medians; x raylib = median per-round ratio; x floor = over\n"
-           "bytes uploaded / memcpy %.2f GB/s; draw = inside glDraw*, excl-draw = total minus draw)\n", gbps);
-    printf("  %-12s %7s %-6s %10s %9s %8s %9s %10s %9s %9s %9s\n", "path", "N", "rot", "total", "x raylib", "x floor",
-           "draw", "excl-draw", "x raylib", "x floor", "bytes/bb");
+           "bytes uploaded / memcpy %.2f GB/s; x copy = excl-draw over a memcpy of the same bytes in the same round,\n"
+           "median per-round ratio; draw = inside glDraw*, excl-draw = total minus draw)\n", gbps);
+    printf("  %-12s %7s %-6s %10s %9s %8s %9s %10s %9s %9s %8s %9s\n", "path", "N", "rot", "total", "x raylib", "x floor",
+           "draw", "excl-draw", "x raylib", "x floor", "x copy", "bytes/bb");
     double worst[PATH_COUNT] = { 0 }, worstExcl[PATH_COUNT] = { 0 };
     for (int c = 0; c < COUNT_CASES; c++)
     {
@@ -959,7 +981,7 @@ int main(int argc, char **argv)
                 double floorRatio = (gbps > 0.0)? res->nsPerBillboard/(bytesPerBillboard[p]/gbps) : 0.0;
                 if (res->ratio > worst[p]) worst[p] = res->ratio;
                 if (res->ratioExclDraw > worstExcl[p]) worstExcl[p] = res->ratioExclDraw;
-                char ratioText[16] = "n/a", exclText[16] = "n/a", drawText[16] = "n/a", exclNsText[16] = "n/a", exclFloorText[16] = "n/a";
+                char ratioText[16] = "n/a", exclText[16] = "n/a", drawText[16] = "n/a", exclNsText[16] = "n/a", exclFloorText[16] = "n/a", copyText[16] = "n/a";
                 if (res->ratio > 0.0) snprintf(ratioText, sizeof(ratioText), "%.3fx", res->ratio);
                 if (driverTimed)
                 {
@@ -967,9 +989,10 @@ int main(int argc, char **argv)
                     snprintf(exclNsText, sizeof(exclNsText), "%.1f", res->exclDrawNs);
                     if (res->ratioExclDraw > 0.0) snprintf(exclText, sizeof(exclText), "%.3fx", res->ratioExclDraw);
                     if (gbps > 0.0) snprintf(exclFloorText, sizeof(exclFloorText), "%.2fx", res->exclDrawNs/(bytesPerBillboard[p]/gbps));
+                    if (bytesPerBillboard[p] > 0.0) snprintf(copyText, sizeof(copyText), "%.2fx", res->overCopyBytes/bytesPerBillboard[p]);
                 }
-                printf("  %-12s %7d %-6s %10.1f %9s %7.1fx %9s %10s %9s %9s %9.0f\n", pathNames[p], counts[c], rot,
-                       res->nsPerBillboard, ratioText, floorRatio, drawText, exclNsText, exclText, exclFloorText, bytesPerBillboard[p]);
+                printf("  %-12s %7d %-6s %10.1f %9s %7.1fx %9s %10s %9s %9s %8s %9.0f\n", pathNames[p], counts[c], rot,
+                       res->nsPerBillboard, ratioText, floorRatio, drawText, exclNsText, exclText, exclFloorText, copyText, bytesPerBillboard[p]);
             }
         }
     }
