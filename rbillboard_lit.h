@@ -14438,8 +14438,8 @@ static inline void rbl__storeBoundsLanes(float *o, __m128 lo, __m128 hi, __m128 
 }
 #endif
 
-// Chunk c's pivot bounds and largest scale from the pivot copy: the same comparisons as one sprite
-// at a time, four lanes at once where SSE2 is (min/max and compares round nothing)
+// Chunk c's pivot bounds and largest scale from the pivot copy: the one-at-a-time bounds, four lanes
+// at once where SSE2 is (min/max round nothing; zeros come out +0 either way)
 static void rbl__spriteChunkBounds(rbl__SpriteBufferState *b, int c)
 {
 #if defined(RBL__SSE2)
