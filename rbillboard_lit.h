@@ -14397,16 +14397,17 @@ static bool rbl__spritesOk(const rbl__SpriteBufferState *b, const RblSpriteInsta
 #endif
 }
 
-// Chunk c's pivot bounds and largest scale from the pivot copy, one sprite at a time (+0 for -0)
-static inline void rbl__spriteChunkBoundsScalar(rbl__SpriteBufferState *b, int c)
+// Chunk c's pivot bounds and largest scale (into bounds) from the pivots of count sprites, one
+// sprite at a time (+0 for -0)
+static inline void rbl__spriteChunkBoundsScalar(const float *pivots, float *bounds, int count, int c)
 {
-    float *o = b->bounds + (size_t)c*7;
+    float *o = bounds + (size_t)c*7;
     o[6] = -1.0f;
     int end = (c + 1)*RBL__SPRITE_CHUNK;
-    if (end > b->count) end = b->count;
+    if (end > count) end = count;
     for (int i = c*RBL__SPRITE_CHUNK; i < end; i++)
     {
-        const float *v = b->pivots + (size_t)i*4;
+        const float *v = pivots + (size_t)i*4;
         if (v[3] == 0.0f) continue;                     // hidden
         if (o[6] < 0.0f) { for (int k = 0; k < 3; k++) o[k] = o[3 + k] = v[k]; o[6] = v[3]; continue; }
         for (int k = 0; k < 3; k++) { if (v[k] < o[k]) o[k] = v[k]; if (v[k] > o[3 + k]) o[3 + k] = v[k]; }
@@ -14438,32 +14439,32 @@ static inline void rbl__storeBoundsLanes(float *o, __m128 lo, __m128 hi, __m128 
 }
 #endif
 
-// Chunk c's pivot bounds and largest scale from the pivot copy: the one-at-a-time bounds, four lanes
-// at once where SSE2 is (min/max round nothing; zeros come out +0 either way)
-static void rbl__spriteChunkBounds(rbl__SpriteBufferState *b, int c)
+// Chunk c's pivot bounds and largest scale, as rbl__spriteChunkBoundsScalar's, four lanes at once
+// where SSE2 is (min/max round nothing; zeros come out +0 either way)
+static void rbl__spriteChunkBounds(const float *pivots, float *bounds, int count, int c)
 {
 #if defined(RBL__SSE2)
     int end = (c + 1)*RBL__SPRITE_CHUNK;
-    if (end > b->count) end = b->count;
+    if (end > count) end = count;
     __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY), lo2 = lo, hi2 = hi;
     int i = c*RBL__SPRITE_CHUNK;
     for (; i + 1 < end; i += 2)
     {
-        rbl__boundsLanes(_mm_loadu_ps(b->pivots + (size_t)i*4), &lo, &hi);
-        rbl__boundsLanes(_mm_loadu_ps(b->pivots + (size_t)i*4 + 4), &lo2, &hi2);
+        rbl__boundsLanes(_mm_loadu_ps(pivots + (size_t)i*4), &lo, &hi);
+        rbl__boundsLanes(_mm_loadu_ps(pivots + (size_t)i*4 + 4), &lo2, &hi2);
     }
-    if (i < end) rbl__boundsLanes(_mm_loadu_ps(b->pivots + (size_t)i*4), &lo, &hi);
-    rbl__storeBoundsLanes(b->bounds + (size_t)c*7, lo, hi, lo2, hi2);
+    if (i < end) rbl__boundsLanes(_mm_loadu_ps(pivots + (size_t)i*4), &lo, &hi);
+    rbl__storeBoundsLanes(bounds + (size_t)c*7, lo, hi, lo2, hi2);
 #else
-    rbl__spriteChunkBoundsScalar(b, c);
+    rbl__spriteChunkBoundsScalar(pivots, bounds, count, c);
 #endif
 }
 
 // Sprites [from, to) of chunk c from src (sprite from's): into gpu (the mapped slot of sprite from;
-// NULL: uploaded apart) and pivots, then the chunk's bounds (of total sprites: from the lanes when
-// the chunk is written whole, else from b's pivot copy). checks: checked as they go (false: one
-// failed); NULL: checked before
-static bool rbl__writeSpriteChunk(rbl__SpriteBufferState *b, float *pivots, float *bounds, int total, int c, int from, int to, const RblSpriteInstance *src, RblSpriteInstance *gpu, const rbl__SpriteChecks *checks)
+// NULL: uploaded apart) and pivots, then the chunk's bounds (of total sprites; from the lanes when
+// the chunk is written whole, else from pivots). checks: checked as they go (false: one failed);
+// NULL: checked before. b: the atlas's counts (checks without SSE2)
+static bool rbl__writeSpriteChunk(const rbl__SpriteBufferState *b, float *pivots, float *bounds, int total, int c, int from, int to, const RblSpriteInstance *src, RblSpriteInstance *gpu, const rbl__SpriteChecks *checks)
 {
     int end = (c + 1)*RBL__SPRITE_CHUNK;
     if (end > total) end = total;
@@ -14504,6 +14505,7 @@ static bool rbl__writeSpriteChunk(rbl__SpriteBufferState *b, float *pivots, floa
         _mm_storeu_ps((float *)(out + i), a);
         rbl__boundsLanes(a, &lo, &hi);
     }
+    (void)b;
     if (checks != NULL) ok = rbl__checksPassed(bad, negative, badFrame);
     if (whole) { rbl__storeBoundsLanes(bounds + (size_t)c*7, lo, hi, lo2, hi2); return ok; }
 #else
@@ -14516,16 +14518,9 @@ static bool rbl__writeSpriteChunk(rbl__SpriteBufferState *b, float *pivots, floa
         v[0] = src[i].position.x; v[1] = src[i].position.y; v[2] = src[i].position.z; v[3] = src[i].scale;
     }
     ok = passed != 0u;
-    if (whole)
-    {
-        // the one-at-a-time bounds over these pivots and bounds
-        rbl__SpriteBufferState view = *b;
-        view.pivots = pivots; view.bounds = bounds; view.count = total;
-        rbl__spriteChunkBoundsScalar(&view, c);
-        return ok;
-    }
+    (void)whole;
 #endif
-    rbl__spriteChunkBounds(b, c);
+    rbl__spriteChunkBounds(pivots, bounds, total, c);
     return ok;
 }
 

@@ -1476,8 +1476,8 @@ static void test_sprite_update_checks_and_chunk_bounds_equal_the_one_at_a_time_o
     int differ = 0, empty = 0, negativeZero = 0;
     for (int c = 0; c < CHUNKS; c++)
     {
-        b.bounds = lanes; rbl__spriteChunkBounds(&b, c);
-        b.bounds = one; rbl__spriteChunkBoundsScalar(&b, c);
+        rbl__spriteChunkBounds(b.pivots, lanes, b.count, c);
+        rbl__spriteChunkBoundsScalar(b.pivots, one, b.count, c);
         bool seen = one[7*c + 6] >= 0.0f;
         differ += (memcmp(lanes + 7*c, one + 7*c, (seen? 7 : 1)*sizeof(float)) != 0) + (memcmp(written + 7*c, one + 7*c, (seen? 7 : 1)*sizeof(float)) != 0);
         for (int k = 0; seen && (k < 6); k++) negativeZero += (one[7*c + k] == 0.0f) && signbit(one[7*c + k]);

@@ -540,12 +540,9 @@ static void test_sprite_buffer_mapped_update_equals_the_upload_and_a_model(void)
         }
         refused += bad;
         // The model's pivots and chunk bounds, one sprite at a time
-        rbl__SpriteBufferState ref;
-        memset(&ref, 0, sizeof(ref));
-        ref.pivots = pivots; ref.bounds = bounds; ref.count = modelCount;
         for (int i = 0; i < N; i++) { pivots[4*i] = model[i].position.x; pivots[4*i + 1] = model[i].position.y; pivots[4*i + 2] = model[i].position.z; pivots[4*i + 3] = model[i].scale; }
         const int chunks = (N + RBL__SPRITE_CHUNK - 1)/RBL__SPRITE_CHUNK;
-        for (int c = 0; c < chunks; c++) rbl__spriteChunkBoundsScalar(&ref, c);
+        for (int c = 0; c < chunks; c++) rbl__spriteChunkBoundsScalar(pivots, bounds, modelCount, c);
         for (int v = 0; v < 2; v++)
         {
             const rbl__SpriteBufferState *st = rbl__spriteState(&buf[v]);
